@@ -1,0 +1,89 @@
+#include "cases/arm_loader.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace armstudy::cases {
+
+core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int links_required) {
+  core::PlanarChain chain = fallback;
+  chain.gravity = root.number_or("gravity", fallback.gravity, NumberRule::range(0.0, 100.0, "m/s^2"));
+  if (std::isnan(chain.gravity)) chain.gravity = fallback.gravity;
+  auto arm = root.map("arm");
+  if (!arm) return chain;
+  const size_t errors_before = arm->diag().errors().size();
+
+  auto links = arm->seq("links");
+  if (!links) {
+    if (!arm->has("links")) arm->error_here("missing required key 'arm.links'; expected a list of links");
+    arm->number("payload", NumberRule::non_negative("kg"));
+    arm->seq("point_masses");
+    arm->finish();
+    return chain;
+  }
+  if (links->size() == 0 || links->size() > static_cast<size_t>(core::kMaxLinks) ||
+      (links_required > 0 && links->size() != static_cast<size_t>(links_required))) {
+    const std::string want = links_required > 0 ? std::to_string(links_required) + " links for this study"
+                                                : "1 to " + std::to_string(core::kMaxLinks) + " links";
+    arm->error("links", "'arm.links' has " + std::to_string(links->size()) + " links; expected " + want);
+  }
+  chain.links.clear();
+  chain.point_masses.clear();
+  chain.spinners.clear();
+  for (size_t i = 0; i < links->size(); ++i) {
+    auto lm = links->map_at(i);
+    core::Link l;
+    if (!lm) { chain.links.push_back(l); continue; }
+    l.length = lm->required_number("length", NumberRule::positive("m"));
+    l.mass = lm->required_number("mass", NumberRule::positive("kg"));
+    l.com = lm->number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, NumberRule::any("m"));
+    l.com_lateral = lm->number_or("com_lateral", 0.0, NumberRule::any("m"));
+    const YAML::Node in = lm->get("inertia");
+    if (!in.IsDefined() || (in.IsScalar() && in.Scalar() == "rod")) {
+      l.inertia = core::uniform_rod_inertia(l.mass, l.length);
+    } else {
+      const auto v = read_number(in, lm->diag(), "'" + lm->path_of("inertia") + "' (or 'rod')",
+                                 NumberRule::non_negative("kg m^2"));
+      l.inertia = v ? *v : 0.0;
+    }
+    const auto joint = lm->choice("joint", {"active", "passive"});
+    l.active = !joint || *joint == "active";
+    lm->finish();
+    chain.links.push_back(l);
+  }
+  const int n = static_cast<int>(chain.links.size());
+  const double payload = arm->number_or("payload", 0.0, NumberRule::non_negative("kg"));
+  if (auto pms = arm->seq("point_masses")) {
+    for (size_t i = 0; i < pms->size(); ++i) {
+      auto pm = pms->map_at(i);
+      if (!pm) continue;
+      core::PointMass p;
+      p.link = pm->integer_or("link", 1, 1, std::max(1, n)) - 1;
+      p.x = pm->required_number("at", NumberRule::any("m"));
+      p.y = pm->number_or("lateral", 0.0, NumberRule::any("m"));
+      p.mass = pm->required_number("mass", NumberRule::positive("kg"));
+      pm->finish();
+      chain.point_masses.push_back(p);
+    }
+  }
+  if (std::isfinite(payload) && payload > 0 && n > 0)
+    chain.point_masses.push_back({n - 1, chain.links.back().length, 0.0, payload});
+  arm->finish();
+  if (arm->diag().errors().size() != errors_before) return fallback;
+  try {
+    return core::make_chain(chain);
+  } catch (const std::invalid_argument& e) {
+    root.error("arm", std::string("arm: ") + e.what());
+    return fallback;
+  }
+}
+
+double payload_mass(const core::PlanarChain& chain) {
+  if (chain.point_masses.empty() || chain.links.empty()) return 0.0;
+  const core::PointMass& p = chain.point_masses.back();
+  const int last = chain.num_links() - 1;
+  if (p.link == last && p.x == chain.links[last].length && p.y == 0.0) return p.mass;
+  return 0.0;
+}
+
+}  // namespace armstudy::cases

@@ -1,0 +1,29 @@
+#pragma once
+/// What every case has, whatever its study.
+
+#include <string>
+
+namespace armstudy::cases {
+
+/// Frame rendering settings of a case (`render:` in YAML).
+struct RenderOptions {
+  int width = 640;    ///< px
+  int height = 480;   ///< px
+  int frames = 6;     ///< frames in a strip
+  bool shadows = false;
+};
+
+struct CaseInfo {
+  std::string name;         ///< `name:`, also the output folder name
+  std::string study;        ///< `study:`
+  std::string description;  ///< `description:` (optional)
+  std::string path;         ///< the case file as given
+  std::string sha256;       ///< of the file's bytes, hex
+  std::string yaml;         ///< the file's text
+  RenderOptions render;
+};
+
+/// SHA-256 of bytes, lowercase hex.
+std::string sha256_hex(const std::string& bytes);
+
+}  // namespace armstudy::cases

@@ -1,0 +1,138 @@
+#pragma once
+/// Typed, position-aware reading of YAML case files (yaml-cpp 0.7).
+///
+/// Every problem is recorded in Diagnostics with its file:line:column (yaml-cpp marks are
+/// 0-based; we add 1) and reading goes on, so a user sees every error of a file at once.
+/// yaml-cpp accepts duplicate and unknown keys silently: Map detects both itself.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "cases/case_error.hpp"
+
+namespace armstudy::cases {
+
+/// Collects the errors of one file.
+class Diagnostics {
+ public:
+  explicit Diagnostics(std::string path) : path_(std::move(path)) {}
+  const std::string& path() const { return path_; }
+  /// Records `message` at a yaml-cpp mark (0-based; a null mark records no position).
+  void error(const YAML::Mark& mark, std::string message);
+  bool empty() const { return errors_.empty(); }
+  const std::vector<CaseError>& errors() const { return errors_; }
+  /// @throws CaseErrors if any error was recorded.
+  void throw_if_any() const;
+
+ private:
+  std::string path_;
+  std::vector<CaseError> errors_;
+};
+
+/// Bounds a number must meet; `unit` is only for messages ("m", "kg", "deg").
+struct NumberRule {
+  enum class Sign { kAny, kPositive, kNonNegative } sign = Sign::kAny;
+  std::optional<double> min;  ///< inclusive
+  std::optional<double> max;  ///< inclusive
+  std::string unit;
+
+  static NumberRule positive(std::string unit) { return {Sign::kPositive, {}, {}, std::move(unit)}; }
+  static NumberRule non_negative(std::string unit) {
+    return {Sign::kNonNegative, {}, {}, std::move(unit)};
+  }
+  static NumberRule range(double lo, double hi, std::string unit) {
+    return {Sign::kAny, lo, hi, std::move(unit)};
+  }
+  static NumberRule any(std::string unit) { return {Sign::kAny, {}, {}, std::move(unit)}; }
+};
+
+/// Checks a finite number against a rule; returns the complaint or "".
+std::string violation(double value, const NumberRule& rule);
+
+/// Reads a scalar node as a finite number meeting `rule`; records an error at the node
+/// (naming `what`) and returns nullopt otherwise.
+std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std::string_view what,
+                                  const NumberRule& rule);
+
+class Seq;
+
+/// A YAML mapping being read. Every key asked for becomes known; finish() reports the
+/// rest as unknown, with a "did you mean" suggestion. Duplicate keys are errors.
+class Map {
+ public:
+  /// `context` names the mapping in messages, e.g. "arm.links[2]" ("" for the root).
+  Map(const YAML::Node& node, Diagnostics& diag, std::string context);
+
+  bool has(std::string_view key) const;
+  /// The key's value node (undefined node if missing); marks the key known.
+  YAML::Node get(std::string_view key);
+
+  std::optional<double> number(std::string_view key, const NumberRule& rule);
+  double number_or(std::string_view key, double fallback, const NumberRule& rule);
+  /// Records "missing required key" if absent; returns NaN then.
+  double required_number(std::string_view key, const NumberRule& rule);
+  std::optional<int> integer(std::string_view key, int min, int max);
+  int integer_or(std::string_view key, int fallback, int min, int max);
+  std::optional<std::string> string(std::string_view key);
+  std::string string_or(std::string_view key, std::string fallback);
+  std::optional<std::string> required_string(std::string_view key);
+  /// A string that must be one of `allowed`.
+  std::optional<std::string> choice(std::string_view key, const std::vector<std::string>& allowed);
+  std::optional<bool> boolean(std::string_view key);
+  bool boolean_or(std::string_view key, bool fallback);
+  /// A list of numbers; `size` 0 means any non-empty length.
+  std::optional<std::vector<double>> numbers(std::string_view key, const NumberRule& rule,
+                                             size_t size = 0);
+  std::optional<Map> map(std::string_view key);
+  std::optional<Seq> seq(std::string_view key);
+
+  /// Records an error at the key's value (or at the mapping if the key is missing).
+  void error(std::string_view key, std::string message);
+  /// Records an error at the mapping itself.
+  void error_here(std::string message);
+  /// Reports every key never asked for as unknown.
+  void finish();
+
+  const YAML::Node& node() const { return node_; }
+  Diagnostics& diag() const { return *diag_; }
+  const std::string& context() const { return context_; }
+  std::string path_of(std::string_view key) const;
+
+ private:
+  YAML::Node node_;
+  Diagnostics* diag_;
+  std::string context_;
+  std::vector<std::string> known_;
+  bool valid_ = false;
+};
+
+/// A YAML sequence being read.
+class Seq {
+ public:
+  Seq(const YAML::Node& node, Diagnostics& diag, std::string context);
+  size_t size() const { return node_.size(); }
+  YAML::Node at(size_t i) const { return node_[i]; }
+  /// Element i as a mapping (nullopt and an error if it is not one).
+  std::optional<Map> map_at(size_t i) const;
+  std::string path_at(size_t i) const;
+  Diagnostics& diag() const { return *diag_; }
+  const YAML::Node& node() const { return node_; }
+
+ private:
+  YAML::Node node_;
+  Diagnostics* diag_;
+  std::string context_;
+};
+
+/// Parses a YAML file; on a syntax error, an empty file or a non-mapping root, records the
+/// error and returns nullopt. `text` receives the file's bytes.
+std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text);
+
+/// The closest of `candidates` to `word` by edit distance, if close enough to suggest.
+std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& candidates);
+
+}  // namespace armstudy::cases

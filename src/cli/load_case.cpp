@@ -1,0 +1,55 @@
+#include <algorithm>
+#include <regex>
+
+#include "cli/pipeline.hpp"
+
+namespace armstudy::app {
+
+LoadedCase load_case(const std::string& path) {
+  cases::Diagnostics diag(path);
+  LoadedCase out;
+  out.info.path = path;
+  const auto root_node = cases::parse_file(path, diag, &out.info.yaml);
+  if (!root_node) diag.throw_if_any();
+  out.info.sha256 = cases::sha256_hex(out.info.yaml);
+
+  cases::Map root(*root_node, diag, "");
+  std::vector<std::string> studies;
+  for (const StudyEntry& e : study_registry()) studies.emplace_back(e.study);
+  const auto study = root.has("study") ? root.choice("study", studies) : std::nullopt;
+  if (!root.has("study")) {
+    root.get("study");
+    std::string list;
+    for (const auto& s : studies) list += (list.empty() ? "" : ", ") + s;
+    root.error_here("missing required key 'study'; expected one of: " + list);
+  }
+  if (const auto name = root.required_string("name")) {
+    // the name is a folder name: keep it portable
+    static const std::regex ok("[A-Za-z0-9][A-Za-z0-9._-]{0,99}");
+    if (!std::regex_match(*name, ok)) {
+      root.error("name", "'name' is '" + *name +
+                             "'; expected letters, digits, '.', '_' or '-' (at most 100, no spaces)");
+    } else {
+      out.info.name = *name;
+    }
+  }
+  out.info.description = root.string_or("description", "");
+  if (auto r = root.map("render")) {
+    out.info.render.width = r->integer_or("width", 640, 64, 4096);
+    out.info.render.height = r->integer_or("height", 480, 64, 4096);
+    out.info.render.frames = r->integer_or("frames", 6, 1, 24);
+    out.info.render.shadows = r->boolean_or("shadows", false);
+    r->finish();
+  }
+  if (study) {
+    out.info.study = *study;
+    const auto it = std::find_if(study_registry().begin(), study_registry().end(),
+                                 [&](const StudyEntry& e) { return e.study == *study; });
+    out.run = it->load(root, out.info);
+  }
+  if (study) root.finish();  // with no known study, its keys cannot be judged
+  diag.throw_if_any();
+  return out;
+}
+
+}  // namespace armstudy::app

@@ -1,0 +1,27 @@
+// Studies whose pipeline has not landed yet: loading such a case is a clear error
+// (exit 2), never a fake result. Each study's own <study>_pipeline.cpp replaces its entry.
+#include "cli/pipeline.hpp"
+
+namespace armstudy::app {
+namespace {
+template <const char* kName>
+std::unique_ptr<StudyRun> not_available(cases::Map& root, const cases::CaseInfo&) {
+  root.error("study", std::string("study '") + kName +
+                          "' is not available in this version of armstudy; expected another study");
+  for (const auto& kv : root.node()) root.get(kv.first.Scalar());
+  return nullptr;
+}
+constexpr char kPlacement[] = "placement";
+constexpr char kPendulum[] = "pendulum";
+constexpr char kThrowing[] = "throwing";
+constexpr char kTimeOptimal[] = "time_optimal";
+}  // namespace
+
+StudyEntry placement_entry() { return {"placement", "(not available yet)", &not_available<kPlacement>}; }
+StudyEntry pendulum_entry() { return {"pendulum", "(not available yet)", &not_available<kPendulum>}; }
+StudyEntry throwing_entry() { return {"throwing", "(not available yet)", &not_available<kThrowing>}; }
+StudyEntry time_optimal_entry() {
+  return {"time_optimal", "(not available yet)", &not_available<kTimeOptimal>};
+}
+
+}  // namespace armstudy::app

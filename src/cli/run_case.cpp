@@ -1,0 +1,109 @@
+#include "cli/run_case.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <stdexcept>
+
+#include "version.hpp"
+
+namespace armstudy::app {
+namespace fs = std::filesystem;
+
+void write_file_atomic(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, path);
+}
+
+nlohmann::json results_header(const cases::CaseInfo& info, studies::Status status,
+                              const std::string& message,
+                              const std::vector<studies::Check>& checks) {
+  nlohmann::json j;
+  j["armstudy_version"] = kVersion;
+  if (std::string(kGitCommit).size()) j["git_commit"] = kGitCommit;
+  j["study"] = info.study;
+  j["case"] = {{"name", info.name}, {"path", info.path}, {"sha256", info.sha256}};
+  if (!info.description.empty()) j["case"]["description"] = info.description;
+  j["status"] = status == studies::Status::kSolved ? "solved" : "unsolvable";
+  j["message"] = message;
+  nlohmann::json cj = nlohmann::json::array();
+  for (const auto& c : checks) {
+    cj.push_back({{"name", c.name}, {"description", c.description}, {"value", c.value},
+                  {"tolerance", c.tolerance}, {"passed", c.passed}});
+  }
+  j["checks"] = cj;
+  return j;
+}
+
+CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  CaseOutcome outcome;
+  const fs::path final_dir = options.out_dir / c.info.name;
+  outcome.folder = final_dir;
+  const std::string tag = std::to_string(::getpid());
+  const fs::path tmp_dir = options.out_dir / ("." + c.info.name + ".tmp-" + tag);
+  try {
+    fs::create_directories(options.out_dir);
+    fs::remove_all(tmp_dir);
+    fs::create_directories(tmp_dir);
+
+    // solve
+    const studies::Status status = c.run->solve(progress);
+    const auto checks = c.run->checks();
+    nlohmann::json j = results_header(c.info, status, c.run->message(), checks);
+    j[c.info.study] = c.run->results();
+    bool checks_ok = true;
+    std::string failed;
+    for (const auto& ch : checks) {
+      if (!ch.passed) {
+        checks_ok = false;
+        failed += (failed.empty() ? "" : ", ") + ch.name;
+      }
+    }
+    // render and report only what was solved
+    std::vector<std::string> frames;
+    if (status == studies::Status::kSolved && options.render) {
+      if (progress) progress(0.99, "rendering");
+      frames = c.run->render(tmp_dir, c.info);
+    }
+    j["frames"] = frames;
+    write_file_atomic(tmp_dir / "results.json", j.dump(2) + "\n");
+    c.run->report(tmp_dir, c.info, j);
+
+    // swap into place
+    if (fs::exists(final_dir)) {
+      const fs::path old_dir = options.out_dir / ("." + c.info.name + ".old-" + tag);
+      fs::remove_all(old_dir);
+      fs::rename(final_dir, old_dir);
+      fs::rename(tmp_dir, final_dir);
+      fs::remove_all(old_dir);
+    } else {
+      fs::rename(tmp_dir, final_dir);
+    }
+    if (status != studies::Status::kSolved) {
+      outcome.exit_code = 1;
+      outcome.message = "could not be solved: " + c.run->message();
+    } else if (!checks_ok) {
+      outcome.exit_code = 1;
+      outcome.message = "failed its checks: " + failed;
+    } else {
+      outcome.message = c.run->message();
+    }
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(tmp_dir, ec);
+    throw;
+  }
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return outcome;
+}
+
+}  // namespace armstudy::app

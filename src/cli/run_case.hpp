@@ -1,0 +1,41 @@
+#pragma once
+/// Runs one loaded case into DIR/<case name>/, atomically.
+
+#include <filesystem>
+#include <string>
+
+#include "cli/pipeline.hpp"
+#include "studies/common.hpp"
+
+namespace armstudy::app {
+
+struct RunOptions {
+  std::filesystem::path out_dir = "reports/out";
+  bool render = true;
+  bool pdf = false;
+};
+
+/// How one case ended. exit_code: 0 done, 1 unsolvable or a failed check, 3 a runtime
+/// failure (rendering, writing output, internal error).
+struct CaseOutcome {
+  int exit_code = 0;
+  std::string message;  ///< one line for the user
+  std::filesystem::path folder;
+  double seconds = 0;
+};
+
+/// Solves, renders and reports `c` into out_dir/<name>/: the output is built in a
+/// temporary sibling folder and renamed into place only when complete, so a failure
+/// leaves an earlier report untouched and writes nothing half-done. An unsolvable study
+/// still gets its results.json (status "unsolvable") so CI can read why.
+CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress);
+
+/// The fields of results.json every study shares (version, study, case, status, checks).
+nlohmann::json results_header(const cases::CaseInfo& info, studies::Status status,
+                              const std::string& message,
+                              const std::vector<studies::Check>& checks);
+
+/// Writes `text` to `path` through a temporary file and a rename.
+void write_file_atomic(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace armstudy::app

@@ -1,0 +1,21 @@
+#include "cli/pipeline.hpp"
+
+namespace armstudy::app {
+
+// each study's pipeline file (src/cli/<study>_pipeline.cpp) defines its entry
+StudyEntry placement_entry();
+StudyEntry pendulum_entry();
+StudyEntry throwing_entry();
+StudyEntry time_optimal_entry();
+
+const std::vector<StudyEntry>& study_registry() {
+  static const std::vector<StudyEntry> registry = {
+      placement_entry(),
+      pendulum_entry(),
+      throwing_entry(),
+      time_optimal_entry(),
+  };
+  return registry;
+}
+
+}  // namespace armstudy::app

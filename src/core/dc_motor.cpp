@@ -1,0 +1,30 @@
+#include "core/dc_motor.hpp"
+
+#include "core/check.hpp"
+
+namespace armstudy::core {
+namespace {
+double sign(double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); }
+}  // namespace
+
+MotorSample motor_sample(const DcMotor& m, double qd, double qdd, double tau) {
+  MotorSample s;
+  const double b3 = m.Ra / m.kt;
+  // eq. 5
+  s.voltage = (m.kv + b3 * m.Dm) * qd + b3 * m.Im * qdd + b3 * tau + b3 * m.tau_f * sign(qd);
+  // eq. 6
+  s.current = (s.voltage - m.kv * qd) / m.Ra;
+  s.power = s.voltage * s.current;
+  s.copper = m.Ra * s.current * s.current;
+  s.friction = (m.Dm * qd + m.tau_f * sign(qd)) * qd;
+  s.load = tau * qd;
+  return s;
+}
+
+double motor_acceleration(const DcMotor& m, double e, double qd, double tau) {
+  ARM_THROW_UNLESS(m.Im > 0, "motor rotor inertia " << m.Im << " kg m^2 should be > 0");
+  const double b3 = m.Ra / m.kt;
+  return (e - (m.kv + b3 * m.Dm) * qd - b3 * tau - b3 * m.tau_f * sign(qd)) / (b3 * m.Im);
+}
+
+}  // namespace armstudy::core
