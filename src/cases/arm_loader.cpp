@@ -30,12 +30,15 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
   chain.links.clear();
   chain.point_masses.clear();
   chain.spinners.clear();
+  std::vector<std::optional<Map>> link_maps;
   for (size_t i = 0; i < links->size(); ++i) {
     auto lm = links->map_at(i);
+    link_maps.push_back(lm);
     core::Link l;
     if (!lm) { chain.links.push_back(l); continue; }
     l.length = lm->required_number("length", NumberRule::positive("m"));
-    l.mass = lm->required_number("mass", NumberRule::positive("kg"));
+    // mass 0 is allowed only for a link that carries point masses (checked below)
+    l.mass = lm->required_number("mass", NumberRule::non_negative("kg"));
     l.com = lm->number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, NumberRule::any("m"));
     l.com_lateral = lm->number_or("com_lateral", 0.0, NumberRule::any("m"));
     const YAML::Node in = lm->get("inertia");
@@ -68,6 +71,17 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
   }
   if (std::isfinite(payload) && payload > 0 && n > 0)
     chain.point_masses.push_back({n - 1, chain.links.back().length, 0.0, payload});
+  // a massless link must carry a point mass: otherwise it is a typo, not a model
+  for (int i = 0; i < n; ++i) {
+    if (chain.links[i].mass != 0.0) continue;
+    bool carries = false;
+    for (const auto& p : chain.point_masses) carries |= p.link == i && p.mass > 0;
+    if (!carries && link_maps[i]) {
+      auto& lm = link_maps[i];
+      lm->error("mass", "'" + lm->path_of("mass") + "' is 0 kg for a massless link without a "
+                        "point mass; expected mass > 0 kg, or a point mass on this link");
+    }
+  }
   arm->finish();
   if (arm->diag().errors().size() != errors_before) return fallback;
   try {

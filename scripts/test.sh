@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# armstudy set-up and the whole test suite, command 2 of the README (.ci/run calls it):
+# installs the missing packages, builds in Release and runs every test with CTest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh --no-reports
+export LP_NUM_THREADS=1
+jobs=$(nproc 2>/dev/null || echo 2)
+ctest --test-dir build --output-on-failure -j"$jobs" --timeout 900

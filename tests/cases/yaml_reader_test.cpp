@@ -1,0 +1,71 @@
+#include "cases/yaml_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include "cases/arm_loader.hpp"
+
+namespace armstudy::cases {
+namespace {
+
+TEST(YamlReader, MarksAreOneBasedLineAndColumn) {
+  Diagnostics d("f.yaml");
+  const YAML::Node n = YAML::Load("a: 1\nb:\n  c: -2\n");
+  Map root(n, d, "");
+  auto b = root.map("b");
+  ASSERT_TRUE(b);
+  b->number("c", NumberRule::positive("m"));
+  root.number("a", NumberRule::positive("m"));
+  root.finish();
+  ASSERT_EQ(d.errors().size(), 1u);
+  EXPECT_EQ(d.errors()[0].format(), "f.yaml:3:6: 'b.c' is -2; should be > 0 m");
+}
+
+TEST(YamlReader, DuplicateAndUnknownKeysAreReportedWithSuggestion) {
+  Diagnostics d("f.yaml");
+  const YAML::Node n = YAML::Load("mass: 1\nmass: 2\nlenght: 3\n");
+  Map root(n, d, "");
+  EXPECT_EQ(*root.number("mass", NumberRule::positive("kg")), 1.0);  // yaml-cpp keeps the first
+  root.number("length", NumberRule::positive("m"));
+  root.finish();
+  ASSERT_EQ(d.errors().size(), 2u);
+  EXPECT_EQ(d.errors()[0].format(), "f.yaml:2:1: duplicate key 'mass'; expected each key once");
+  EXPECT_EQ(d.errors()[1].format(), "f.yaml:3:1: unknown key 'lenght'; did you mean 'length'?");
+}
+
+TEST(YamlReader, ClosestSuggestsOnlyNearWords) {
+  EXPECT_EQ(closest("placemnet", {"placement", "pendulum"}).value_or(""), "placement");
+  EXPECT_FALSE(closest("zzzzzz", {"placement", "pendulum"}).has_value());
+}
+
+TEST(ArmLoader, RodShorthandPayloadAndDefaultsBuildTheChain) {
+  Diagnostics d("f.yaml");
+  const YAML::Node n = YAML::Load(
+      "arm:\n  links:\n    - {length: 0.4, mass: 4}\n    - {length: 0.2, mass: 2, inertia: 0.01, joint: passive}\n"
+      "  payload: 1.5\ngravity: 9.81\n");
+  Map root(n, d, "");
+  const core::PlanarChain c = load_arm(root, core::PlanarChain{}, 2);
+  root.finish();
+  ASSERT_TRUE(d.empty()) << d.errors()[0].format();
+  ASSERT_EQ(c.num_links(), 2);
+  EXPECT_DOUBLE_EQ(c.links[0].inertia, 4 * 0.16 / 12);
+  EXPECT_DOUBLE_EQ(c.links[0].com, 0.2);
+  EXPECT_DOUBLE_EQ(c.links[1].inertia, 0.01);
+  EXPECT_FALSE(c.links[1].active);
+  EXPECT_DOUBLE_EQ(c.gravity, 9.81);
+  EXPECT_DOUBLE_EQ(payload_mass(c), 1.5);
+}
+
+TEST(ArmLoader, MasslessLinkNeedsAPointMass) {
+  Diagnostics d("f.yaml");
+  const YAML::Node ok = YAML::Load(
+      "arm:\n  links:\n    - {length: 0.4, mass: 0}\n    - {length: 0.2, mass: 0}\n"
+      "  point_masses: [{link: 1, at: 0.4, mass: 1}]\n  payload: 1\n");
+  Map root(ok, d, "");
+  const core::PlanarChain c = load_arm(root, core::PlanarChain{}, 2);
+  root.finish();
+  EXPECT_TRUE(d.empty());
+  EXPECT_DOUBLE_EQ(c.total_mass(), 2.0);
+}
+
+}  // namespace
+}  // namespace armstudy::cases
