@@ -1,0 +1,148 @@
+// The armstudy command as a user runs it: help, version, usage errors, exit codes,
+// results.json contents and atomic output.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cases/case_info.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code;
+  std::string output;
+};
+
+CliRun run_cli(const std::string& args) {
+  const std::string cmd = std::string(ARMSTUDY_BINARY) + " " + args + " 2>&1";
+  CliRun r{-1, ""};
+  FILE* p = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf;
+  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+fs::path temp_dir(const std::string& tag) {
+  const fs::path d = fs::temp_directory_path() / ("armstudy_e2e_" + tag + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+const fs::path kSource = ARMSTUDY_SOURCE_DIR;
+
+TEST(Cli, HelpAndVersionExitZero) {
+  const CliRun help = run_cli("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("run"), std::string::npos);
+  EXPECT_NE(help.output.find("validate"), std::string::npos);
+  for (const char* sub : {"run --help", "validate --help"}) {
+    const CliRun r = run_cli(sub);
+    EXPECT_EQ(r.exit_code, 0) << sub;
+    EXPECT_NE(r.output.find("Usage"), std::string::npos) << sub;
+  }
+  const CliRun v = run_cli("--version");
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_EQ(v.output.rfind("armstudy ", 0), 0u) << v.output;
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run_cli("").exit_code, 2);
+  EXPECT_EQ(run_cli("run").exit_code, 2);                 // missing required cases
+  EXPECT_EQ(run_cli("run --bogus x.yaml").exit_code, 2);  // unknown option
+  EXPECT_EQ(run_cli("frobnicate").exit_code, 2);
+  EXPECT_EQ(run_cli("run /nonexistent/case.yaml").exit_code, 2);
+  EXPECT_EQ(run_cli("run --jobs 0 " + (kSource / "reports/cases/placement-example-1.yaml").string()).exit_code, 2);
+}
+
+TEST(Cli, ValidateAcceptsEveryBundledCase) {
+  for (const auto& e : fs::directory_iterator(kSource / "reports/cases")) {
+    if (e.path().extension() != ".yaml") continue;
+    const CliRun r = run_cli("validate " + e.path().string());
+    EXPECT_EQ(r.exit_code, 0) << e.path() << "\n" << r.output;
+  }
+}
+
+TEST(Cli, RunWritesResultsJsonWithProvenance) {
+  const fs::path out = temp_dir("results");
+  const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
+  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(read_text(out / "placement-example-1" / "results.json"));
+  EXPECT_EQ(j["study"], "placement");
+  EXPECT_FALSE(j["armstudy_version"].get<std::string>().empty());
+  EXPECT_EQ(j["case"]["name"], "placement-example-1");
+  EXPECT_EQ(j["case"]["path"], c.string());
+  EXPECT_EQ(j["case"]["sha256"], armstudy::cases::sha256_hex(read_text(c)));
+  EXPECT_TRUE(j.contains("placement"));
+  EXPECT_EQ(j["status"], "solved");
+  // nothing temporary is left beside the case folder
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".placement"), std::string::npos) << e.path();
+  fs::remove_all(out);
+}
+
+TEST(Cli, BadCaseLeavesAnEarlierReportUntouchedAndWritesNothing) {
+  const fs::path out = temp_dir("atomic");
+  const fs::path work = temp_dir("atomic_cases");
+  fs::create_directories(work);
+  const fs::path good = work / "case.yaml";
+  fs::copy_file(kSource / "reports/cases/placement-example-1.yaml", good);
+  ASSERT_EQ(run_cli("run --no-render --out " + out.string() + " " + good.string()).exit_code, 0);
+  const fs::path results = out / "placement-example-1" / "results.json";
+  const std::string before = read_text(results);
+
+  // same case name, but a bad value: exit 2 and the earlier report stays as it was
+  std::string text = read_text(good);
+  text += "\ngravity: -1\n";
+  std::ofstream(good, std::ios::trunc) << text;
+  const CliRun bad = run_cli("run --no-render --out " + out.string() + " " + good.string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find(good.string() + ":"), std::string::npos) << bad.output;
+  EXPECT_EQ(read_text(results), before);
+  size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(out)) { (void)e; ++entries; }
+  EXPECT_EQ(entries, 1u) << "only the earlier case folder may exist";
+  fs::remove_all(out);
+  fs::remove_all(work);
+}
+
+TEST(Cli, DuplicateCaseNamesAreRejectedBeforeAnythingRuns) {
+  const fs::path out = temp_dir("dupnames");
+  const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
+  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string() + " " + c.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("expected unique names"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, ProgressIsPlainLinesWithoutATerminal) {
+  const fs::path out = temp_dir("progress");
+  const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
+  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find('\r'), std::string::npos) << "no carriage returns in a log";
+  EXPECT_EQ(r.output.find("\033["), std::string::npos) << "no terminal escapes in a log";
+  EXPECT_NE(r.output.find("done: placement-example-1"), std::string::npos) << r.output;
+  fs::remove_all(out);
+}
+
+}  // namespace
