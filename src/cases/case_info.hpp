@@ -2,6 +2,8 @@
 /// What every case has, whatever its study.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace armstudy::cases {
 
@@ -21,6 +23,10 @@ struct CaseInfo {
   std::string sha256;       ///< of the file's bytes, hex
   std::string yaml;         ///< the file's text
   RenderOptions render;
+  /// `sweep:` of a case written by `armstudy sweep expand`: the sweep's name and the
+  /// point's values by parameter path (values as YAML text), in axis order.
+  std::string sweep_name;
+  std::vector<std::pair<std::string, std::string>> sweep_point;
 };
 
 /// SHA-256 of bytes, lowercase hex.

@@ -341,6 +341,10 @@ std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag,
   ss << in.rdbuf();
   const std::string bytes = ss.str();
   if (text) *text = bytes;
+  return parse_text(bytes, diag);
+}
+
+std::optional<YAML::Node> parse_text(const std::string& bytes, Diagnostics& diag) {
   YAML::Node root;
   try {
     root = YAML::Load(bytes);

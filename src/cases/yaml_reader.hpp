@@ -132,6 +132,9 @@ class Seq {
 /// error and returns nullopt. `text` receives the file's bytes.
 std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text);
 
+/// Parses YAML text like parse_file (errors recorded against diag's path).
+std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag);
+
 /// The closest of `candidates` to `word` by edit distance, if close enough to suggest.
 std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& candidates);
 

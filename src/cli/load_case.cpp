@@ -5,11 +5,34 @@
 
 namespace armstudy::app {
 
+namespace {
+
+LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnostics& diag,
+                     LoadedCase out);
+
+}  // namespace
+
 LoadedCase load_case(const std::string& path) {
   cases::Diagnostics diag(path);
   LoadedCase out;
   out.info.path = path;
   const auto root_node = cases::parse_file(path, diag, &out.info.yaml);
+  return load_root(root_node, diag, std::move(out));
+}
+
+LoadedCase load_case_text(const std::string& text, const std::string& path) {
+  cases::Diagnostics diag(path);
+  LoadedCase out;
+  out.info.path = path;
+  out.info.yaml = text;
+  const auto root_node = cases::parse_text(text, diag);
+  return load_root(root_node, diag, std::move(out));
+}
+
+namespace {
+
+LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnostics& diag,
+                     LoadedCase out) {
   if (!root_node) diag.throw_if_any();
   out.info.sha256 = cases::sha256_hex(out.info.yaml);
 
@@ -41,6 +64,18 @@ LoadedCase load_case(const std::string& path) {
     out.info.render.shadows = r->boolean_or("shadows", false);
     r->finish();
   }
+  if (auto sw = root.map("sweep")) {
+    out.info.sweep_name = sw->string_or("name", "");
+    if (auto point = sw->map("point")) {
+      for (const auto& kv : point->node()) {
+        const std::string key = kv.first.Scalar();
+        point->get(key);
+        out.info.sweep_point.emplace_back(key, YAML::Dump(kv.second));
+      }
+      point->finish();
+    }
+    sw->finish();
+  }
   if (study) {
     out.info.study = *study;
     const auto it = std::find_if(study_registry().begin(), study_registry().end(),
@@ -52,4 +87,5 @@ LoadedCase load_case(const std::string& path) {
   return out;
 }
 
+}  // namespace
 }  // namespace armstudy::app

@@ -10,14 +10,20 @@
 #include <atomic>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cases/case_error.hpp"
+#include "cli/merge.hpp"
 #include "cli/pipeline.hpp"
+#include "cli/sweep.hpp"
 #include "cli/progress.hpp"
 #include "cli/run_case.hpp"
 #include "version.hpp"
@@ -63,12 +69,68 @@ int cmd_validate(const std::vector<std::string>& paths) {
   return ok ? kExitDone : kExitBadInput;
 }
 
+// "I/N" with 0 <= I < N
+bool parse_shard(const std::string& text, int* index, int* count) {
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) return false;
+  try {
+    size_t used = 0;
+    *index = std::stoi(text.substr(0, slash), &used);
+    if (used != slash) return false;
+    *count = std::stoi(text.substr(slash + 1), &used);
+    if (used != text.size() - slash - 1) return false;
+  } catch (const std::exception&) {
+    return false;
+  }
+  return *count >= 1 && *index >= 0 && *index < *count;
+}
+
+// true if out_dir/<name>/results.json exists for the same case file contents
+bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c) {
+  const auto rj = out_dir / c.info.name / "results.json";
+  if (!std::filesystem::exists(rj)) return false;
+  try {
+    std::ifstream in(rj);
+    const auto j = nlohmann::json::parse(in);
+    return j.value("/case/sha256"_json_pointer, std::string()) == c.info.sha256;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
-            int jobs) {
+            int jobs, const std::string& shard, bool force) {
   std::vector<LoadedCase> cases;
   if (!load_all(paths, &cases)) {
     std::fprintf(stderr, "nothing was written: fix the case files above\n");
     return kExitBadInput;
+  }
+  // a stable subset: cases sorted by name, every N-th from I
+  std::sort(cases.begin(), cases.end(),
+            [](const LoadedCase& a, const LoadedCase& b) { return a.info.name < b.info.name; });
+  if (!shard.empty()) {
+    int index = 0, count = 1;
+    if (!parse_shard(shard, &index, &count)) {
+      std::fprintf(stderr, "--shard '%s': expected I/N with 0 <= I < N, e.g. 0/4\n", shard.c_str());
+      return kExitBadInput;
+    }
+    std::vector<LoadedCase> mine;
+    for (size_t i = 0; i < cases.size(); ++i)
+      if (static_cast<int>(i % count) == index) mine.push_back(std::move(cases[i]));
+    std::fprintf(stderr, "shard %d/%d: %zu of %zu case(s)\n", index, count, mine.size(), cases.size());
+    cases = std::move(mine);
+  }
+  if (!force) {
+    std::vector<LoadedCase> todo;
+    size_t skipped = 0;
+    for (auto& c : cases) {
+      if (already_done(options.out_dir, c)) ++skipped;
+      else todo.push_back(std::move(c));
+    }
+    if (skipped)
+      std::fprintf(stderr, "skipped %zu case(s) whose output exists for the same case file "
+                           "(--force redoes them)\n", skipped);
+    cases = std::move(todo);
   }
   armstudy::app::ProgressReporter progress(stderr, armstudy::app::stderr_is_terminal());
   std::atomic<size_t> next{0};
@@ -101,10 +163,76 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   worker();
   for (auto& t : pool) t.join();
   progress.finish();
+  // what CI reads, over every case in the output folder (not only this run's)
+  try {
+    std::vector<std::string> warnings;
+    const auto outputs = armstudy::app::collect_outputs({options.out_dir}, &warnings);
+    armstudy::app::write_merged(outputs, options.out_dir);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "armstudy: cannot write summary.md/junit.xml: %s\n", e.what());
+    worst = std::max(worst, kExitRuntime);
+  }
   if (worst == kExitDone)
     std::fprintf(stderr, "all %zu case(s) done; output in %s\n", cases.size(),
                  options.out_dir.c_str());
   return worst;
+}
+
+int cmd_sweep_expand(const std::string& sweep_path, const std::string& out) {
+  try {
+    const auto sw = armstudy::app::load_sweep(sweep_path);
+    const size_t written = armstudy::app::expand_sweep(sw, out);
+    std::fprintf(stderr, "sweep %s: %zu case(s), %zu file(s) written to %s\n", sw.name.c_str(),
+                 sw.points.size(), written, out.c_str());
+    return kExitDone;
+  } catch (const armstudy::cases::CaseErrors& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kExitBadInput;
+  }
+}
+
+// case files (*.yaml) directly in each folder, or files given directly
+std::vector<std::string> case_files(const std::vector<std::string>& items) {
+  std::vector<std::string> files;
+  for (const auto& it : items) {
+    if (std::filesystem::is_directory(it)) {
+      for (const auto& e : std::filesystem::directory_iterator(it))
+        if (e.path().extension() == ".yaml") files.push_back(e.path().string());
+    } else {
+      files.push_back(it);
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+int cmd_list(const std::vector<std::string>& items, bool as_json) {
+  std::vector<LoadedCase> cases;
+  const bool ok = load_all(case_files(items), &cases);
+  std::sort(cases.begin(), cases.end(),
+            [](const LoadedCase& a, const LoadedCase& b) { return a.info.name < b.info.name; });
+  if (as_json) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& c : cases)
+      j.push_back({{"id", c.info.name}, {"study", c.info.study}, {"path", c.info.path},
+                   {"sha256", c.info.sha256}});
+    std::printf("%s\n", j.dump(2).c_str());
+  } else {
+    for (const auto& c : cases) std::printf("%s\n", c.info.name.c_str());
+  }
+  return ok ? kExitDone : kExitBadInput;
+}
+
+int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
+  std::vector<std::filesystem::path> ds(dirs.begin(), dirs.end());
+  if (out.empty()) out = dirs.front();
+  std::vector<std::string> warnings;
+  const auto outputs = armstudy::app::collect_outputs(ds, &warnings);
+  for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  const size_t failed = armstudy::app::write_merged(outputs, out);
+  std::fprintf(stderr, "merged %zu case(s) into %s (%zu failed)\n", outputs.size(), out.c_str(),
+               failed);
+  return failed ? kExitUnsolved : kExitDone;
 }
 
 }  // namespace
@@ -134,6 +262,32 @@ int main(int argc, char** argv) {
   run->add_flag("--pdf", options.pdf, "Also print each report to report.pdf with headless Chromium");
   run->add_option("--jobs,-j", jobs, "Cases run in parallel")->check(CLI::Range(1, 64))
       ->capture_default_str();
+  std::string shard;
+  bool force = false;
+  run->add_option("--shard", shard,
+                  "Run only shard I of N (0 <= I < N) of the cases sorted by name, e.g. 0/4");
+  run->add_flag("--force", force,
+                "Redo cases whose output already exists for the same case file (default: skip)");
+
+  std::string sweep_file, sweep_out = "sweep-cases";
+  auto* sweep = app.add_subcommand("sweep", "Parameter sweeps over a base case");
+  sweep->require_subcommand(1);
+  auto* expand = sweep->add_subcommand("expand", "Write one case file per sweep point");
+  expand->add_option("sweep", sweep_file, "Sweep file (YAML)")->required()->check(CLI::ExistingFile);
+  expand->add_option("--out", sweep_out, "Folder for the generated case files")->capture_default_str();
+
+  std::vector<std::string> list_items;
+  bool list_json = false;
+  auto* list = app.add_subcommand("list", "Print the case ids of case files, in a stable order");
+  list->add_option("dirs", list_items, "Folders of case files (or case files)")->required();
+  list->add_flag("--json", list_json, "Print id, study, path and sha256 as JSON");
+
+  std::vector<std::string> merge_dirs;
+  std::string merge_out;
+  auto* merge = app.add_subcommand(
+      "merge", "Build summary.md, junit.xml and sweep tables from the results.json of output folders");
+  merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
+  merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
   auto* validate = app.add_subcommand("validate", "Check case files without running them");
   validate->add_option("cases", validate_paths, "Case files (YAML)")->required();
 
@@ -145,9 +299,12 @@ int main(int argc, char** argv) {
   }
   try {
     if (*validate) return cmd_validate(validate_paths);
+    if (*expand) return cmd_sweep_expand(sweep_file, sweep_out);
+    if (*list) return cmd_list(list_items, list_json);
+    if (*merge) return cmd_merge(merge_dirs, merge_out);
     options.out_dir = out_dir;
     options.render = !no_render;
-    return cmd_run(run_paths, options, jobs);
+    return cmd_run(run_paths, options, jobs, shard, force);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: internal error: %s\n", e.what());
     return kExitRuntime;

@@ -17,6 +17,13 @@
 
 namespace armstudy::app {
 
+/// A number a reader compares across cases.
+struct KeyFigure {
+  std::string name;  ///< stable identifier, e.g. "min_energy_J"
+  double value = 0;
+  std::string unit;  ///< e.g. "J", "s", "%", "" for none
+};
+
 /// One loaded case of some study, ready to solve. Stages are called in this order:
 /// solve, checks/results, render (unless --no-render), report.
 class StudyRun {
@@ -30,6 +37,9 @@ class StudyRun {
   virtual std::vector<studies::Check> checks() const { return {}; }
   /// The study's own section of results.json (SI; keys ending in _deg are degrees).
   virtual nlohmann::json results() const = 0;
+  /// The few numbers a reader compares across cases (summary tables, sweep tables),
+  /// e.g. {"energy_J[cycloidal,1]", 12.3, "J"}. Written to results.json "key_figures".
+  virtual std::vector<KeyFigure> key_figures() const { return {}; }
   /// Renders frames into `dir`; returns the file names written (relative to dir).
   /// @throws scene::SceneError when MuJoCo or OSMesa fails.
   virtual std::vector<std::string> render(const std::filesystem::path& dir,
@@ -60,5 +70,9 @@ struct LoadedCase {
 
 /// Loads and validates a case file. @throws cases::CaseErrors with every problem found.
 LoadedCase load_case(const std::string& path);
+
+/// Loads and validates case text; `path` names it in messages and results.
+/// @throws cases::CaseErrors with every problem found.
+LoadedCase load_case_text(const std::string& text, const std::string& path);
 
 }  // namespace armstudy::app

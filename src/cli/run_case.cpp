@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "cli/provenance.hpp"
 #include "version.hpp"
 
 namespace armstudy::app {
@@ -32,6 +33,12 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
   j["study"] = info.study;
   j["case"] = {{"name", info.name}, {"path", info.path}, {"sha256", info.sha256}};
   if (!info.description.empty()) j["case"]["description"] = info.description;
+  if (!info.sweep_name.empty() || !info.sweep_point.empty()) {
+    nlohmann::json point = nlohmann::json::object();
+    for (const auto& [path, value] : info.sweep_point) point[path] = value;
+    j["case"]["sweep"] = {{"name", info.sweep_name}, {"point", point}};
+  }
+  j["provenance"] = provenance();
   j["status"] = status == studies::Status::kSolved ? "solved" : "unsolvable";
   j["message"] = message;
   nlohmann::json cj = nlohmann::json::array();
@@ -60,6 +67,11 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     const auto checks = c.run->checks();
     nlohmann::json j = results_header(c.info, status, c.run->message(), checks);
     j[c.info.study] = c.run->results();
+    nlohmann::json kf = nlohmann::json::array();
+    if (status == studies::Status::kSolved)
+      for (const auto& k : c.run->key_figures())
+        kf.push_back({{"name", k.name}, {"value", k.value}, {"unit", k.unit}});
+    j["key_figures"] = kf;
     bool checks_ok = true;
     std::string failed;
     for (const auto& ch : checks) {
@@ -75,8 +87,10 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       frames = c.run->render(tmp_dir, c.info);
     }
     j["frames"] = frames;
-    write_file_atomic(tmp_dir / "results.json", j.dump(2) + "\n");
     c.run->report(tmp_dir, c.info, j);
+    // results.json last, listing every file written beside it with its sha256
+    j["files"] = list_files(tmp_dir, "results.json");
+    write_file_atomic(tmp_dir / "results.json", j.dump(2) + "\n");
 
     // swap into place
     if (fs::exists(final_dir)) {

@@ -1,0 +1,296 @@
+#include "cli/merge.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "cli/run_case.hpp"
+#include "report/number_format.hpp"
+
+namespace armstudy::app {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string xml_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&': o += "&amp;"; break;
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '"': o += "&quot;"; break;
+      case '\'': o += "&apos;"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += ' ';
+        else o += c;
+    }
+  }
+  return o;
+}
+
+std::string md_cell(std::string s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '|') o += "\\|";
+    else if (c == '\n') o += ' ';
+    else o += c;
+  }
+  return o;
+}
+
+std::string case_name(const json& r) { return r.value("/case/name"_json_pointer, std::string("?")); }
+
+std::string failure_text(const json& r) {
+  if (r.value("status", "") != "solved") return "could not be solved: " + r.value("message", std::string());
+  std::string s;
+  for (const auto& c : r.value("checks", json::array()))
+    if (!c.value("passed", false))
+      s += (s.empty() ? "failed checks: " : ", ") + c.value("name", std::string()) + " (" +
+           report::format_sig(c.value("value", 0.0), 4) + " > " +
+           report::format_sig(c.value("tolerance", 0.0), 4) + ")";
+  return s;
+}
+
+std::string csv_cell(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string o = "\"";
+  for (char c : s) o += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return o + "\"";
+}
+
+// key figure names of a study in first-seen order over the (sorted) cases
+std::vector<std::pair<std::string, std::string>> figure_columns(const std::vector<const CaseOutput*>& cases) {
+  std::vector<std::pair<std::string, std::string>> cols;
+  for (const auto* c : cases)
+    for (const auto& k : c->results.value("key_figures", json::array())) {
+      const std::string n = k.value("name", std::string());
+      if (std::none_of(cols.begin(), cols.end(), [&](auto& p) { return p.first == n; }))
+        cols.emplace_back(n, k.value("unit", std::string()));
+    }
+  return cols;
+}
+
+std::optional<double> figure(const json& r, const std::string& name) {
+  for (const auto& k : r.value("key_figures", json::array()))
+    if (k.value("name", std::string()) == name && k["value"].is_number()) return k["value"].get<double>();
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::vector<std::string>* warnings) {
+  std::map<std::string, CaseOutput> by_name;
+  for (const auto& dir : dirs) {
+    if (!fs::is_directory(dir)) {
+      if (warnings) warnings->push_back(dir.string() + ": not a folder");
+      continue;
+    }
+    std::vector<fs::path> folders;
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.is_directory() && e.path().filename().string()[0] != '.') folders.push_back(e.path());
+    std::sort(folders.begin(), folders.end());
+    for (const auto& f : folders) {
+      const fs::path rj = f / "results.json";
+      if (!fs::exists(rj)) continue;
+      try {
+        std::ifstream in(rj);
+        CaseOutput c{f, json::parse(in)};
+        const std::string n = case_name(c.results);
+        if (by_name.count(n)) {
+          if (warnings) warnings->push_back(rj.string() + ": case '" + n + "' already found in " + by_name[n].folder.string() + "; skipped");
+          continue;
+        }
+        by_name.emplace(n, std::move(c));
+      } catch (const std::exception& e) {
+        if (warnings) warnings->push_back(rj.string() + ": unreadable (" + e.what() + "); skipped");
+      }
+    }
+  }
+  std::vector<CaseOutput> out;
+  for (auto& [n, c] : by_name) out.push_back(std::move(c));
+  return out;
+}
+
+bool case_passed(const json& r) {
+  if (r.value("status", "") != "solved") return false;
+  for (const auto& c : r.value("checks", json::array()))
+    if (!c.value("passed", false)) return false;
+  return true;
+}
+
+std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_bytes) {
+  size_t failed = 0;
+  for (const auto& c : cases) failed += !case_passed(c.results);
+  std::ostringstream md;
+  md << "# armstudy: " << cases.size() << " case(s), " << failed << " failed\n\n";
+  if (failed) {
+    md << "## Failures\n\n| case | study | what failed |\n|---|---|---|\n";
+    for (const auto& c : cases)
+      if (!case_passed(c.results))
+        md << "| " << md_cell(case_name(c.results)) << " | " << md_cell(c.results.value("study", "")) << " | "
+           << md_cell(failure_text(c.results)) << " |\n";
+    md << "\n";
+  }
+  std::map<std::string, std::vector<const CaseOutput*>> by_study;
+  for (const auto& c : cases) by_study[c.results.value("study", std::string("?"))].push_back(&c);
+  for (const auto& [study, list] : by_study) {
+    const auto cols = figure_columns(list);
+    md << "## " << study << " (" << list.size() << ")\n\n| case | status | checks |";
+    for (const auto& [n, u] : cols) md << " " << md_cell(n) << (u.empty() ? "" : " (" + u + ")") << " |";
+    md << "\n|---|---|---|";
+    for (size_t i = 0; i < cols.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const auto* c : list) {
+      const auto& r = c->results;
+      size_t passed = 0, total = 0;
+      for (const auto& ch : r.value("checks", json::array())) { ++total; passed += ch.value("passed", false); }
+      md << "| " << md_cell(case_name(r)) << " | " << (case_passed(r) ? "ok" : "FAILED") << " | " << passed << "/"
+         << total << " |";
+      for (const auto& [n, u] : cols) {
+        const auto v = figure(r, n);
+        md << " " << (v ? report::format_sig(*v, 6) : "") << " |";
+      }
+      md << "\n";
+    }
+    md << "\n";
+  }
+  std::string s = md.str();
+  if (s.size() > max_bytes) {
+    const std::string note = "\n\n*Truncated: the full summary is larger than " + std::to_string(max_bytes) +
+                             " bytes; see junit.xml and each case's results.json.*\n";
+    s.resize(max_bytes - note.size());
+    s.resize(s.rfind('\n') + 1);
+    s += note;
+  }
+  return s;
+}
+
+std::string junit_xml(const std::vector<CaseOutput>& cases) {
+  std::map<std::string, std::vector<const CaseOutput*>> by_study;
+  for (const auto& c : cases) by_study[c.results.value("study", std::string("?"))].push_back(&c);
+  size_t tests = 0, failures = 0;
+  std::ostringstream body;
+  for (const auto& [study, list] : by_study) {
+    size_t st = 0, sf = 0;
+    std::ostringstream tc;
+    for (const auto* c : list) {
+      const auto& r = c->results;
+      const std::string cls = xml_escape(study + "." + case_name(r));
+      ++st;
+      tc << "    <testcase classname=\"" << cls << "\" name=\"solve\"";
+      if (r.value("status", "") != "solved") {
+        ++sf;
+        tc << "><failure message=\"" << xml_escape(r.value("message", std::string())) << "\"/></testcase>\n";
+      } else {
+        tc << "/>\n";
+      }
+      for (const auto& ch : r.value("checks", json::array())) {
+        ++st;
+        tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_escape(ch.value("name", std::string())) << "\"";
+        if (!ch.value("passed", false)) {
+          ++sf;
+          tc << "><failure message=\"" << xml_escape("value " + report::format_sig(ch.value("value", 0.0), 6) +
+                                                     " exceeds tolerance " + report::format_sig(ch.value("tolerance", 0.0), 6))
+             << "\">" << xml_escape(ch.value("description", std::string())) << "</failure></testcase>\n";
+        } else {
+          tc << "/>\n";
+        }
+      }
+    }
+    body << "  <testsuite name=\"" << xml_escape(study) << "\" tests=\"" << st << "\" failures=\"" << sf
+         << "\" errors=\"0\">\n" << tc.str() << "  </testsuite>\n";
+    tests += st;
+    failures += sf;
+  }
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"armstudy\" tests=\"" << tests
+    << "\" failures=\"" << failures << "\" errors=\"0\">\n" << body.str() << "</testsuites>\n";
+  return x.str();
+}
+
+namespace {
+struct SweepTable {
+  std::vector<std::string> params;
+  std::vector<std::pair<std::string, std::string>> figures;
+  std::vector<const CaseOutput*> rows;
+};
+
+SweepTable sweep_table(const std::vector<CaseOutput>& cases) {
+  SweepTable t;
+  for (const auto& c : cases) {
+    const auto sw = c.results.value("/case/sweep/point"_json_pointer, json());
+    if (!sw.is_object()) continue;
+    t.rows.push_back(&c);
+    for (auto it = sw.begin(); it != sw.end(); ++it)
+      if (std::find(t.params.begin(), t.params.end(), it.key()) == t.params.end()) t.params.push_back(it.key());
+  }
+  std::sort(t.params.begin(), t.params.end());
+  t.figures = figure_columns(t.rows);
+  return t;
+}
+}  // namespace
+
+std::string sweep_csv(const std::vector<CaseOutput>& cases) {
+  const SweepTable t = sweep_table(cases);
+  if (t.rows.empty()) return "";
+  std::ostringstream csv;
+  csv << "case,status";
+  for (const auto& p : t.params) csv << "," << csv_cell(p);
+  for (const auto& [n, u] : t.figures) csv << "," << csv_cell(u.empty() ? n : n + " (" + u + ")");
+  csv << "\n";
+  for (const auto* c : t.rows) {
+    const auto& r = c->results;
+    csv << csv_cell(case_name(r)) << "," << (case_passed(r) ? "ok" : "failed");
+    const auto point = r["case"]["sweep"]["point"];
+    for (const auto& p : t.params) csv << "," << csv_cell(point.contains(p) ? point[p].get<std::string>() : "");
+    for (const auto& [n, u] : t.figures) {
+      const auto v = figure(r, n);
+      csv << "," << (v ? report::format_sig(*v, 10) : "");
+    }
+    csv << "\n";
+  }
+  return csv.str();
+}
+
+json sweep_json(const std::vector<CaseOutput>& cases) {
+  const SweepTable t = sweep_table(cases);
+  json rows = json::array();
+  for (const auto* c : t.rows) {
+    const auto& r = c->results;
+    json row = {{"case", case_name(r)}, {"status", case_passed(r) ? "ok" : "failed"}};
+    json params = json::object();
+    const auto point = r["case"]["sweep"]["point"];
+    for (const auto& p : t.params) params[p] = point.contains(p) ? point[p] : json();
+    row["parameters"] = params;
+    json figs = json::object();
+    for (const auto& [n, u] : t.figures) {
+      const auto v = figure(r, n);
+      figs[n] = v ? json(*v) : json();
+    }
+    row["key_figures"] = figs;
+    rows.push_back(row);
+  }
+  json units = json::object();
+  for (const auto& [n, u] : t.figures) units[n] = u;
+  return {{"parameters", t.params}, {"units", units}, {"rows", rows}};
+}
+
+size_t write_merged(const std::vector<CaseOutput>& cases, const fs::path& out_dir) {
+  fs::create_directories(out_dir);
+  write_file_atomic(out_dir / "summary.md", summary_markdown(cases));
+  write_file_atomic(out_dir / "junit.xml", junit_xml(cases));
+  const std::string csv = sweep_csv(cases);
+  if (!csv.empty()) {
+    write_file_atomic(out_dir / "sweep.csv", csv);
+    write_file_atomic(out_dir / "sweep.json", sweep_json(cases).dump(2) + "\n");
+  }
+  size_t failed = 0;
+  for (const auto& c : cases) failed += !case_passed(c.results);
+  return failed;
+}
+
+}  // namespace armstudy::app

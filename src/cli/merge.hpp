@@ -1,0 +1,44 @@
+#pragma once
+/// Merging case outputs into what CI reads: summary.md (a job summary), junit.xml (one
+/// testcase per case and check) and, for sweeps, sweep.csv / sweep.json (one row per case:
+/// its point and key figures). Built from results.json files only, independent of the
+/// order in which cases ran or shards finished: rows are sorted by case name.
+
+#include <filesystem>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace armstudy::app {
+
+/// One case output found on disk.
+struct CaseOutput {
+  std::filesystem::path folder;  ///< DIR/<case name>
+  nlohmann::json results;        ///< its results.json
+};
+
+/// Every DIR/<case>/results.json under the given folders, sorted by case name (the first
+/// folder wins when a name appears twice). Unreadable files are skipped with a warning
+/// in `warnings`.
+std::vector<CaseOutput> collect_outputs(const std::vector<std::filesystem::path>& dirs,
+                                        std::vector<std::string>* warnings);
+
+/// True if the case solved and every one of its checks passed.
+bool case_passed(const nlohmann::json& results);
+
+/// GitHub-flavoured markdown: failures first, one table per study; at most max_bytes
+/// (truncated with a note).
+std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_bytes = 1 << 20);
+
+/// JUnit XML: one testsuite per study, a testcase "solve" per case and one per check.
+std::string junit_xml(const std::vector<CaseOutput>& cases);
+
+/// Sweep tables (CSV and JSON) of the cases that carry a sweep point; empty if none.
+std::string sweep_csv(const std::vector<CaseOutput>& cases);
+nlohmann::json sweep_json(const std::vector<CaseOutput>& cases);
+
+/// Writes summary.md, junit.xml and (if any case is a sweep point) sweep.csv and
+/// sweep.json into out_dir, each atomically. Returns the number of failed cases.
+size_t write_merged(const std::vector<CaseOutput>& cases, const std::filesystem::path& out_dir);
+
+}  // namespace armstudy::app

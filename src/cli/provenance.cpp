@@ -1,0 +1,63 @@
+#include "cli/provenance.hpp"
+
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "cases/case_info.hpp"
+#include "version.hpp"
+
+namespace armstudy::app {
+namespace fs = std::filesystem;
+
+namespace {
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  }
+  return "unknown";
+}
+}  // namespace
+
+nlohmann::json provenance() {
+  nlohmann::json p;
+  p["armstudy_version"] = kVersion;
+  if (std::string(kGitCommit).size()) p["git_commit"] = kGitCommit;
+  p["mujoco_version"] = mj_versionString();
+#if defined(__clang__)
+  p["compiler"] = std::string("clang ") + __clang_version__;
+#elif defined(__GNUC__)
+  p["compiler"] = std::string("gcc ") + __VERSION__;
+#else
+  p["compiler"] = "unknown";
+#endif
+  p["cpu_model"] = cpu_model();
+  return p;
+}
+
+nlohmann::json list_files(const fs::path& dir, const std::string& skip) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir));
+  std::sort(files.begin(), files.end());
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& rel : files) {
+    if (rel.generic_string() == skip) continue;
+    std::ifstream in(dir / rel, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    const std::string bytes = ss.str();
+    out.push_back({{"path", rel.generic_string()}, {"bytes", bytes.size()},
+                   {"sha256", cases::sha256_hex(bytes)}});
+  }
+  return out;
+}
+
+}  // namespace armstudy::app

@@ -1,0 +1,17 @@
+#pragma once
+/// Where a result came from: versions, compiler, machine, and the files written.
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+namespace armstudy::app {
+
+/// {armstudy_version, git_commit (if known), mujoco_version, compiler, cpu_model}.
+nlohmann::json provenance();
+
+/// Every regular file under `dir` (relative path, size, sha256), sorted by path,
+/// except `skip` (relative), e.g. results.json itself.
+nlohmann::json list_files(const std::filesystem::path& dir, const std::string& skip);
+
+}  // namespace armstudy::app

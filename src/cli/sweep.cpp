@@ -1,0 +1,223 @@
+#include "cli/sweep.hpp"
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "cases/case_info.hpp"
+#include "cases/yaml_reader.hpp"
+#include "cli/pipeline.hpp"
+#include "cli/run_case.hpp"
+
+namespace armstudy::app {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Segment {
+  std::string key;
+  int index = 0;  // 1-based list index, 0 if none
+};
+
+bool parse_path(const std::string& path, std::vector<Segment>* out) {
+  static const std::regex seg(R"(([A-Za-z_][A-Za-z0-9_]*)(\[([0-9]+)\])?)");
+  std::stringstream ss(path);
+  std::string part;
+  while (std::getline(ss, part, '.')) {
+    std::smatch m;
+    if (!std::regex_match(part, m, seg)) return false;
+    Segment s{m[1], m[3].matched ? std::stoi(m[3]) : 0};
+    if (m[3].matched && s.index < 1) return false;
+    out->push_back(s);
+  }
+  return !out->empty();
+}
+
+std::string scalar_text(const YAML::Node& n) {
+  YAML::Emitter e;
+  e << YAML::Flow << n;
+  return e.c_str();
+}
+
+}  // namespace
+
+std::string set_path(YAML::Node root, const std::string& path, const YAML::Node& value) {
+  std::vector<Segment> segs;
+  if (!parse_path(path, &segs)) return "'" + path + "' is not a parameter path like arm.links[2].length";
+  YAML::Node cur = root;
+  for (size_t i = 0; i < segs.size(); ++i) {
+    const Segment& s = segs[i];
+    const bool last = i + 1 == segs.size();
+    if (!cur.IsMap()) return "'" + s.key + "' is below a value that is not a mapping";
+    if (s.index == 0) {
+      if (last) {
+        cur[s.key] = YAML::Clone(value);
+        return "";
+      }
+      if (!cur[s.key]) cur[s.key] = YAML::Node(YAML::NodeType::Map);
+      cur.reset(cur[s.key]);
+      continue;
+    }
+    YAML::Node list = cur[s.key];
+    if (!list || !list.IsSequence())
+      return "'" + s.key + "' is not a list in the base case";
+    if (static_cast<size_t>(s.index) > list.size())
+      return "'" + s.key + "[" + std::to_string(s.index) + "]' is past the end of a list of " +
+             std::to_string(list.size());
+    if (last) {
+      list[s.index - 1] = YAML::Clone(value);
+      return "";
+    }
+    cur.reset(list[s.index - 1]);
+  }
+  return "";
+}
+
+Sweep load_sweep(const std::string& path) {
+  cases::Diagnostics diag(path);
+  std::string text;
+  const auto root_node = cases::parse_file(path, diag, &text);
+  if (!root_node) diag.throw_if_any();
+  Sweep sw;
+  sw.path = path;
+  cases::Map root(*root_node, diag, "");
+  sw.name = root.required_string("sweep").value_or("");
+  const auto base_rel = root.required_string("base");
+  const auto mode = root.choice("mode", {"grid", "zip"});
+  sw.zip = mode && *mode == "zip";
+  auto axes = root.seq("axes");
+  if (!axes && !root.has("axes")) root.error_here("missing required key 'axes'; expected a list of {path, values|range}");
+  if (axes && axes->size() == 0) root.error("axes", "'axes' is empty; expected at least one axis");
+  if (axes) {
+    for (size_t i = 0; i < axes->size(); ++i) {
+      auto a = axes->map_at(i);
+      if (!a) continue;
+      SweepAxis ax;
+      ax.mark = a->node().Mark();
+      ax.path = a->required_string("path").value_or("");
+      const bool has_values = a->has("values"), has_range = a->has("range");
+      if (has_values == has_range) {
+        a->get("values");
+        a->get("range");
+        a->error_here("axis " + std::to_string(i + 1) + " needs exactly one of 'values' or 'range'");
+      } else if (has_values) {
+        const YAML::Node v = a->get("values");
+        if (!v.IsSequence() || v.size() == 0)
+          a->error("values", "'" + a->path_of("values") + "' is not a non-empty list; expected a list of values");
+        else
+          for (const auto& x : v) ax.values.push_back(x);
+      } else if (auto r = a->map("range")) {
+        const double from = r->required_number("from", cases::NumberRule::any(""));
+        const double to = r->required_number("to", cases::NumberRule::any(""));
+        const int steps = r->integer_or("steps", 2, 1, 100000);
+        r->finish();
+        if (std::isfinite(from) && std::isfinite(to)) {
+          for (int k = 0; k < steps; ++k) {
+            const double x = steps == 1 ? from : from + (to - from) * k / (steps - 1);
+            std::ostringstream os;
+            os.imbue(std::locale::classic());
+            os.precision(12);
+            os << (k == steps - 1 ? to : x);
+            ax.values.push_back(YAML::Load(os.str()));
+          }
+        }
+      }
+      a->finish();
+      sw.axes.push_back(ax);
+    }
+  }
+  root.finish();
+  if (base_rel) {
+    const fs::path base = fs::path(path).parent_path() / *base_rel;
+    sw.base_path = base.lexically_normal().string();
+    cases::Diagnostics bd(sw.base_path);
+    const auto b = cases::parse_file(sw.base_path, bd, nullptr);
+    if (!b) root.error("base", "'base' names '" + sw.base_path + "', which cannot be read as a case: " +
+                                   (bd.errors().empty() ? "" : bd.errors()[0].message));
+    else sw.base = *b;
+  }
+  if (sw.zip && sw.axes.size() > 1) {
+    for (const auto& ax : sw.axes)
+      if (ax.values.size() != sw.axes[0].values.size())
+        diag.error(ax.mark, "zip axis '" + ax.path + "' has " + std::to_string(ax.values.size()) +
+                                " values; expected " + std::to_string(sw.axes[0].values.size()) +
+                                " like the first axis");
+  }
+  diag.throw_if_any();
+
+  // every point: a clone of the base with the axis values set
+  const std::string base_name = sw.base["name"] ? sw.base["name"].Scalar() : "case";
+  const std::string base_sha = cases::sha256_hex(YAML::Dump(sw.base));
+  size_t count = sw.zip ? sw.axes[0].values.size() : 1;
+  if (!sw.zip)
+    for (const auto& ax : sw.axes) count *= ax.values.size();
+  for (size_t k = 0; k < count; ++k) {
+    YAML::Node doc = YAML::Clone(sw.base);
+    std::string ident = base_sha;
+    YAML::Node point(YAML::NodeType::Map);
+    size_t rest = k;
+    std::vector<size_t> idx(sw.axes.size());
+    for (size_t a = sw.axes.size(); a-- > 0;) {
+      idx[a] = sw.zip ? k : rest % sw.axes[a].values.size();
+      if (!sw.zip) rest /= sw.axes[a].values.size();
+    }
+    bool ok = true;
+    for (size_t a = 0; a < sw.axes.size(); ++a) {
+      const SweepAxis& ax = sw.axes[a];
+      const YAML::Node& v = ax.values[idx[a]];
+      const std::string bad = set_path(doc, ax.path, v);
+      if (!bad.empty()) {
+        diag.error(ax.mark, "axis path '" + ax.path + "' names no parameter of the base case: " + bad);
+        ok = false;
+        continue;
+      }
+      point[ax.path] = YAML::Clone(v);
+      ident += "\n" + ax.path + "=" + scalar_text(v);
+    }
+    if (!ok) break;
+    const std::string name = base_name + "-" + cases::sha256_hex(ident).substr(0, 10);
+    doc["name"] = name;
+    YAML::Node swn(YAML::NodeType::Map);
+    swn["name"] = sw.name;
+    swn["point"] = point;
+    doc["sweep"] = swn;
+    YAML::Emitter e;
+    e << doc;
+    SweepPoint p{name, "# generated by armstudy sweep expand from " + sw.path + "; do not edit\n" +
+                           std::string(e.c_str()) + "\n"};
+    // the generated case must be valid: an error names the axis and the point
+    try {
+      load_case_text(p.yaml, name + ".yaml");
+    } catch (const cases::CaseErrors& errs) {
+      std::string what = errs.errors().empty() ? "" : errs.errors()[0].message;
+      std::string vals;
+      for (size_t a = 0; a < sw.axes.size(); ++a)
+        vals += (a ? ", " : "") + sw.axes[a].path + " = " + scalar_text(sw.axes[a].values[idx[a]]);
+      diag.error(sw.axes.empty() ? YAML::Mark() : sw.axes[0].mark,
+                 "the point (" + vals + ") gives an invalid case: " + what);
+      break;
+    }
+    sw.points.push_back(std::move(p));
+  }
+  diag.throw_if_any();
+  return sw;
+}
+
+size_t expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
+  fs::create_directories(out_dir);
+  size_t written = 0;
+  for (const SweepPoint& p : sweep.points) {
+    const fs::path f = out_dir / (p.case_name + ".yaml");
+    if (fs::exists(f)) {
+      std::ifstream in(f, std::ios::binary);
+      std::ostringstream ss;
+      ss << in.rdbuf();
+      if (ss.str() == p.yaml) continue;
+    }
+    write_file_atomic(f, p.yaml);
+    ++written;
+  }
+  return written;
+}
+
+}  // namespace armstudy::app

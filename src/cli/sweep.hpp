@@ -1,0 +1,60 @@
+#pragma once
+/// Parameter sweeps: a sweep file names a base case and axes over case parameters (by
+/// path, e.g. `arm.links[2].length`, 1-based list indices as in error messages); expand()
+/// writes one case file per point, named by a content hash, with the point recorded in
+/// the case's `sweep:` mapping.
+///
+/// ```yaml
+/// sweep: placement-link-ratio      # the sweep's name
+/// base: ../cases/placement-example-2.yaml   # relative to this file
+/// mode: grid                       # grid (every combination) or zip (i-th with i-th)
+/// axes:
+///   - path: arm.links[2].length
+///     values: [0.1, 0.2, 0.3]      # a list of values (any YAML), or
+///   - path: placement.length_fraction
+///     range: {from: 0.2, to: 0.8, steps: 7}   # evenly spaced numbers, ends included
+/// ```
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace armstudy::app {
+
+struct SweepAxis {
+  std::string path;
+  std::vector<YAML::Node> values;
+  YAML::Mark mark;  ///< of the axis in the sweep file
+};
+
+struct SweepPoint {
+  std::string case_name;  ///< base name + "-" + 10 hex of the content hash
+  std::string yaml;       ///< the case file's text
+};
+
+struct Sweep {
+  std::string name;
+  std::string path;       ///< the sweep file
+  std::string base_path;  ///< the base case file
+  YAML::Node base;
+  bool zip = false;
+  std::vector<SweepAxis> axes;
+  /// Every point's case, in axis order (grid: last axis fastest).
+  std::vector<SweepPoint> points;
+};
+
+/// Reads and validates a sweep file and every case it generates.
+/// @throws cases::CaseErrors (file:line:col), e.g. for a path that names no parameter.
+Sweep load_sweep(const std::string& path);
+
+/// Writes each point's case file to out_dir/<case_name>.yaml (existing files with the same
+/// content are left alone). Returns the number of files written.
+size_t expand_sweep(const Sweep& sweep, const std::filesystem::path& out_dir);
+
+/// Sets the value at `path` in a clone of `root` (missing mapping keys are created).
+/// Returns "" or a complaint ("'links[9]' is past the end of a list of 2").
+std::string set_path(YAML::Node root, const std::string& path, const YAML::Node& value);
+
+}  // namespace armstudy::app
