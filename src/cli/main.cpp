@@ -37,6 +37,8 @@ constexpr int kExitUnsolved = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitRuntime = 3;
 
+std::vector<std::string> case_files(const std::vector<std::string>& items);
+
 // Loads every case; prints every error of every file; false if any failed.
 bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* out) {
   bool ok = true;
@@ -255,7 +257,9 @@ int main(int argc, char** argv) {
   bool no_render = false;
   int jobs = 1;
   auto* run = app.add_subcommand("run", "Solve, render and report case files");
-  run->add_option("cases", run_paths, "Case files (YAML)")->required()->check(CLI::ExistingFile);
+  run->add_option("cases", run_paths, "Case files (YAML), or folders of case files")
+      ->required()
+      ->check(CLI::ExistingPath);
   run->add_option("--out", out_dir, "Output folder; each case goes to OUT/<case name>/")
       ->capture_default_str();
   run->add_flag("--no-render", no_render, "Skip MuJoCo frame rendering (everything else is made)");
@@ -304,7 +308,7 @@ int main(int argc, char** argv) {
     if (*merge) return cmd_merge(merge_dirs, merge_out);
     options.out_dir = out_dir;
     options.render = !no_render;
-    return cmd_run(run_paths, options, jobs, shard, force);
+    return cmd_run(case_files(run_paths), options, jobs, shard, force);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: internal error: %s\n", e.what());
     return kExitRuntime;

@@ -28,6 +28,7 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
                               const std::string& message,
                               const std::vector<studies::Check>& checks) {
   nlohmann::json j;
+  j["schema_version"] = 1;
   j["armstudy_version"] = kVersion;
   if (std::string(kGitCommit).size()) j["git_commit"] = kGitCommit;
   j["study"] = info.study;
