@@ -1,0 +1,76 @@
+// summary.md, junit.xml and sweep tables built from results.json data.
+#include "cli/merge.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+namespace armstudy::app {
+namespace {
+using nlohmann::json;
+
+CaseOutput make_case(const std::string& name, const std::string& study, bool solved,
+                     std::vector<std::pair<std::string, bool>> checks, double energy,
+                     const std::string& ratio = "") {
+  json r;
+  r["study"] = study;
+  r["case"] = {{"name", name}, {"path", name + ".yaml"}, {"sha256", std::string(64, 'a')}};
+  if (!ratio.empty()) r["case"]["sweep"] = {{"name", "s"}, {"point", {{"arm.links[2].length", ratio}}}};
+  r["status"] = solved ? "solved" : "unsolvable";
+  r["message"] = solved ? "ok" : "target is 0.12 m outside the annulus";
+  r["checks"] = json::array();
+  for (const auto& [n, p] : checks)
+    r["checks"].push_back({{"name", n}, {"description", "d <x>"}, {"value", p ? 0.0 : 2.0}, {"tolerance", 1.0}, {"passed", p}});
+  r["key_figures"] = json::array({{{"name", "min_energy_J"}, {"value", energy}, {"unit", "J"}}});
+  return {name, r};
+}
+
+TEST(Merge, SummaryListsFailuresFirstWithReasons) {
+  std::vector<CaseOutput> cases = {make_case("a", "placement", true, {{"work", true}}, 1.5),
+                                   make_case("b", "placement", false, {}, 0),
+                                   make_case("c", "time_optimal", true, {{"limits", false}}, 0.7)};
+  const std::string md = summary_markdown(cases);
+  EXPECT_EQ(md.rfind("# armstudy: 3 case(s), 2 failed", 0), 0u) << md;
+  const size_t failures = md.find("## Failures"), placement = md.find("## placement");
+  ASSERT_NE(failures, std::string::npos);
+  ASSERT_NE(placement, std::string::npos);
+  EXPECT_LT(failures, placement);
+  EXPECT_NE(md.find("could not be solved: target is 0.12 m outside the annulus"), std::string::npos);
+  EXPECT_NE(md.find("failed checks: limits (2 > 1)"), std::string::npos);
+  EXPECT_NE(md.find("min_energy_J (J)"), std::string::npos);
+}
+
+TEST(Merge, SummaryIsTruncatedWithANoteUnderTheLimit) {
+  std::vector<CaseOutput> cases;
+  for (int i = 0; i < 3000; ++i) cases.push_back(make_case("case-" + std::to_string(i), "placement", i % 2, {}, i));
+  const std::string md = summary_markdown(cases, 64 * 1024);
+  EXPECT_LE(md.size(), 64u * 1024);
+  EXPECT_NE(md.find("Truncated"), std::string::npos);
+}
+
+TEST(Merge, JunitCountsOneTestcasePerCaseAndCheck) {
+  std::vector<CaseOutput> cases = {make_case("a", "placement", true, {{"w", true}, {"x", false}}, 1),
+                                   make_case("b", "placement", false, {}, 0)};
+  const std::string x = junit_xml(cases);
+  EXPECT_NE(x.find("<testsuites name=\"armstudy\" tests=\"4\" failures=\"2\""), std::string::npos) << x;
+  EXPECT_NE(x.find("d &lt;x&gt;"), std::string::npos) << "descriptions are escaped";
+}
+
+TEST(Merge, SweepTablesDoNotDependOnCaseOrder) {
+  std::vector<CaseOutput> cases;
+  for (int i = 0; i < 20; ++i)
+    cases.push_back(make_case("p-" + std::to_string(100 + i), "placement", true, {}, 1.0 / (i + 1), std::to_string(0.1 + 0.01 * i)));
+  const std::string csv = sweep_csv(cases);
+  const std::string js = sweep_json(cases).dump();
+  std::mt19937 rng(3);
+  std::shuffle(cases.begin(), cases.end(), rng);
+  std::sort(cases.begin(), cases.end(), [](auto& a, auto& b) { return a.results["case"]["name"] < b.results["case"]["name"]; });
+  EXPECT_EQ(sweep_csv(cases), csv);
+  EXPECT_EQ(sweep_json(cases).dump(), js);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "case,status,arm.links[2].length,min_energy_J (J)");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 21);
+}
+
+}  // namespace
+}  // namespace armstudy::app
