@@ -1,6 +1,9 @@
 #include "cli/run_case.hpp"
 
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <chrono>
 #include <fstream>
@@ -51,6 +54,25 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
   return j;
 }
 
+namespace {
+// removes temporary siblings of a case folder left by a run that was killed
+// (.<name>.tmp-<pid> or .<name>.old-<pid> whose process no longer exists)
+void remove_stale_siblings(const fs::path& out_dir, const std::string& name) {
+  std::error_code ec;
+  if (!fs::is_directory(out_dir, ec)) return;
+  for (const auto& e : fs::directory_iterator(out_dir, ec)) {
+    const std::string f = e.path().filename().string();
+    for (const std::string tag : {"." + name + ".tmp-", "." + name + ".old-"}) {
+      if (f.rfind(tag, 0) != 0) continue;
+      const std::string pid_text = f.substr(tag.size());
+      if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+      const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+      if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(e.path(), ec);
+    }
+  }
+}
+}  // namespace
+
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   CaseOutcome outcome;
@@ -60,6 +82,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
   const fs::path tmp_dir = options.out_dir / ("." + c.info.name + ".tmp-" + tag);
   try {
     fs::create_directories(options.out_dir);
+    remove_stale_siblings(options.out_dir, c.info.name);
     fs::remove_all(tmp_dir);
     fs::create_directories(tmp_dir);
 

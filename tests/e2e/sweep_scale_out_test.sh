@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# The bundled sweep, expanded and run (a) in one run, (b) as 4 shards in a scrambled order
+# with one shard killed midway and re-run, (c) by GNU Parallel with 2 jobs, (d) through the
+# Slurm array script's body with the scheduler's variables set. Every way must merge into
+# byte-identical sweep tables; every results.json must validate against the schema and a
+# broken one must not.
+# usage: sweep_scale_out_test.sh SOURCE_DIR ARMSTUDY
+set -euo pipefail
+src=$1
+armstudy=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export LP_NUM_THREADS=1
+fail() { echo "FAIL: $*"; exit 1; }
+
+sweep="$src/reports/sweeps/placement-link-ratio.yaml"
+"$armstudy" sweep expand "$sweep" --out "$work/cases" 2>"$work/expand.log" || { cat "$work/expand.log"; fail "expand"; }
+n=$(ls "$work/cases"/*.yaml | wc -l)
+[ "$n" -ge 200 ] || fail "the bundled sweep has $n cases; expected at least 200"
+# expanding again writes nothing new and names are content hashes: stable
+"$armstudy" sweep expand "$sweep" --out "$work/cases" 2>"$work/expand2.log"
+grep -q ", 0 file(s) written" "$work/expand2.log" || fail "re-expansion rewrote files: $(cat "$work/expand2.log")"
+"$armstudy" list "$work/cases" >"$work/list1"
+"$armstudy" list "$work/cases" >"$work/list2"
+cmp -s "$work/list1" "$work/list2" || fail "list is not stable"
+[ "$(wc -l <"$work/list1")" -eq "$n" ] || fail "list printed $(wc -l <"$work/list1") ids for $n cases"
+sort -c "$work/list1" || fail "list is not sorted"
+
+# (a) one unsharded run
+"$armstudy" run "$work/cases" --no-render --jobs 2 --out "$work/one" 2>"$work/one.log" || { tail "$work/one.log"; fail "unsharded run"; }
+"$armstudy" merge "$work/one" 2>/dev/null
+[ -s "$work/one/sweep.csv" ] || fail "no sweep.csv"
+[ "$(($(wc -l <"$work/one/sweep.csv") - 1))" -eq "$n" ] || fail "sweep.csv rows != $n"
+
+# (b) 4 shards in the order 2, 0, 3, then shard 1 killed midway and run again
+for i in 2 0 3; do "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard "$i/4" 2>>"$work/shards.log"; done
+timeout -s KILL 1 "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 1/4 2>>"$work/shards.log" || true
+leftovers=$(find "$work/sharded" -maxdepth 1 -name '.*.tmp-*' | wc -l)
+"$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 1/4 2>"$work/rerun.log"
+"$armstudy" merge "$work/sharded" 2>/dev/null
+for f in sweep.csv sweep.json; do
+  cmp "$work/one/$f" "$work/sharded/$f" || fail "$f of the sharded run differs from the unsharded run"
+done
+# a re-run skips what exists
+"$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 0/4 2>"$work/skip.log"
+grep -q "skipped" "$work/skip.log" || fail "a re-run did not skip finished cases: $(cat "$work/skip.log")"
+left=$(find "$work/sharded" -maxdepth 1 -name ".*.tmp-*" | wc -l)
+[ "$left" -eq 0 ] || fail "$left temporary folder(s) of the killed shard remain after the re-run"
+echo "killed shard left $leftovers temporary folder(s); the re-run cleaned them and completed it"
+
+# (c) GNU Parallel, 2 jobs on this machine (the README's one-liner)
+parallel -j2 "$armstudy" run "$work/cases" --no-render --out "$work/par" --shard {}/2 ::: 0 1 2>"$work/par.log"
+"$armstudy" merge "$work/par" 2>/dev/null
+cmp "$work/one/sweep.csv" "$work/par/sweep.csv" || fail "GNU Parallel run differs"
+
+# (d) the Slurm array script's body, as the scheduler would run it for 2 tasks
+for task in 0 1; do
+  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=2 SLURM_CPUS_PER_TASK=1 \
+    ARMSTUDY="$armstudy" bash "$src/examples/slurm/sweep.sbatch" "$work/cases" "$work/slurm" 2>>"$work/slurm.log"
+done
+ARMSTUDY="$armstudy" bash "$src/examples/slurm/merge.sbatch" "$work/slurm" 2>/dev/null
+cmp "$work/one/sweep.csv" "$work/slurm/sweep.csv" || fail "Slurm run differs"
+
+# summary.md and junit.xml agree with the checks in results.json
+/usr/bin/python3 - "$work/one" <<'PY' || fail "summary/junit do not match results.json"
+import json, pathlib, sys, xml.etree.ElementTree as ET
+d = pathlib.Path(sys.argv[1])
+results = [json.loads(p.read_text()) for p in sorted(d.glob("*/results.json"))]
+expected = sum(1 + len(r["checks"]) for r in results)
+root = ET.parse(d / "junit.xml").getroot()
+cases = root.findall(".//testcase")
+assert len(cases) == expected == int(root.get("tests")), (len(cases), expected)
+fails = sum((r["status"] != "solved") + sum(not c["passed"] for c in r["checks"]) for r in results)
+assert int(root.get("failures")) == fails == len(root.findall(".//failure"))
+md = (d / "summary.md").read_text()
+assert md.startswith(f"# armstudy: {len(results)} case(s)"), md[:80]
+assert len(md.encode()) < 1 << 20
+PY
+
+# every results.json validates; a broken one does not
+/usr/bin/python3 "$src/scripts/validate_results.py" "$src/results.schema.json" "$work/one" >/dev/null || fail "schema"
+one=$(ls -d "$work/one"/*/ | head -1)
+mkdir -p "$work/broken/x" && sed 's/"status": "solved"/"status": "maybe"/' "$one/results.json" >"$work/broken/x/results.json"
+if /usr/bin/python3 "$src/scripts/validate_results.py" "$src/results.schema.json" "$work/broken" >/dev/null; then
+  fail "a broken results.json validated"
+fi
+echo "sweep of $n cases: unsharded, 4 shards (one killed and re-run), GNU Parallel and Slurm give identical tables"
