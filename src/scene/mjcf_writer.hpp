@@ -8,9 +8,18 @@
 /// that centre, parallel-axis theorem): exact for planar motion. Geoms are visual only
 /// (contype=conaffinity=0, no mass). Joint i gets a `motor` actuator with gear 1 if active;
 /// damping and armature are zero. A SpinningInertia acting on one joint only becomes that
-/// joint's armature (I c^2); other spinners need extra bodies (see the scene of the study).
+/// joint's armature (I c^2). A spinner that couples several joints (the rolling ball of
+/// 003_a986fd825f31d3e2.txt: omega = (qd1+qd2+qd3) - (r4/r_b) qd4) becomes an extra body
+/// `spin<k>` hung on the deepest link k whose absolute rate leaves ONE joint in the spin:
+/// omega = (qd_1 + ... + qd_k) + d_j qd_j, so the extra hinge `spin<k>` turns by
+/// psi = d_j q_j, enforced in simulation by a joint equality constraint. MuJoCo's
+/// coordinates are then q_mj = J q (see chain_to_mujoco), and every chain quantity follows
+/// exactly: tau_chain = J^T qfrc_mj, M_chain = J^T M_mj J.
 
 #include <string>
+#include <vector>
+
+#include <Eigen/Dense>
 
 #include "core/planar_chain.hpp"
 
@@ -28,7 +37,38 @@ struct MjcfOptions {
   std::string tip_extra;
   /// Visual link thickness, m (0: 4% of the longest link).
   double link_radius = 0.0;
+  /// Link colour (RGBA), one per link; links beyond the list use the last entry.
+  std::vector<std::string> link_rgba = {"0.30 0.45 0.70 1"};
+  /// Per spinner (index as in chain.spinners): position of its body in the frame of the link
+  /// it hangs on, m, and extra XML inside its body (e.g. the ball's sphere and stripe).
+  std::vector<Eigen::Vector2d> spinner_pos;
+  std::vector<std::string> spinner_extra;
+  /// Extra XML inserted inside link i's body (index = link), e.g. a tray geom.
+  std::vector<std::string> link_extra;
+  /// Extra XML appended in <visual> (after global and quality), e.g. headlight settings.
+  std::string visual_extra;
+  /// Extra XML inserted in <asset>.
+  std::string asset_extra;
+  /// solref / solimp of the spinner equality constraints (stiff: the spin of a rolling ball).
+  std::string equality_solref = "0.002 1";
+  std::string equality_solimp = "0.9999 0.9999 0.001";
+  /// XML comment placed after the header (how the model represents the case).
+  std::string comment;
 };
+
+/// How one coupling spinner is represented in MuJoCo (see the header comment).
+struct SpinnerBody {
+  int spinner = 0;   ///< index in chain.spinners
+  int link = -1;     ///< link it hangs on (-1: the world)
+  int joint = -1;    ///< the one chain joint its hinge follows (-1: none, rigid with `link`)
+  double ratio = 0;  ///< psi = ratio * q[joint]
+  std::string body_name;   ///< "spin1", ...
+  std::string joint_name;  ///< "spin1_joint"
+};
+
+/// The spinners that need their own body (those coupling several joints), in order.
+/// @throws std::invalid_argument when no link leaves a single joint in the spin.
+std::vector<SpinnerBody> spinner_bodies(const core::PlanarChain& chain);
 
 /// Combined inertial of one link body: link plus point masses on it.
 struct LinkInertial {
@@ -42,11 +82,11 @@ struct LinkInertial {
 LinkInertial combined_inertial(const core::PlanarChain& chain, int link);
 
 /// Smallest inertia written to MJCF (MuJoCo rejects zero inertia on a moving body).
-inline constexpr double kMinMjcfInertia = 1e-12;
-inline constexpr double kMinMjcfMass = 1e-12;
+inline constexpr double kMinMjcfInertia = 1e-14;
+inline constexpr double kMinMjcfMass = 1e-14;
 
-/// The MJCF text of `chain`. @throws std::invalid_argument for a spinner that couples
-/// several joints.
+/// The MJCF text of `chain` (see the header comment for how spinners are represented).
+/// @throws std::invalid_argument for a spinner no extra body can express.
 std::string write_mjcf(const core::PlanarChain& chain, const MjcfOptions& options = {});
 
 }  // namespace armstudy::scene
