@@ -1,0 +1,401 @@
+#include "report/case_report.hpp"
+
+#include <kainjow/mustache.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "report/number_format.hpp"
+#include "report/page.hpp"
+#include "report/study_sections.hpp"
+
+namespace armstudy::report {
+namespace fs = std::filesystem;
+namespace mus = kainjow::mustache;
+
+namespace {
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + p.string());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  const fs::path tmp = p.string() + ".part";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, p);
+}
+
+// renders a template of template_dir(); {{x}} escapes html (& < > " '), {{{x}}} is never used
+std::string render_template(const std::string& name, const mus::data& data) {
+  mus::mustache tmpl{read_text(template_dir() / name)};
+  if (!tmpl.is_valid())
+    throw std::runtime_error("template " + name + ": " + tmpl.error_message());
+  std::string html = tmpl.render(data);
+  if (!tmpl.error_message().empty())
+    throw std::runtime_error("template " + name + ": " + tmpl.error_message());
+  return html;
+}
+
+// the template's stylesheet plus one swatch class per plot colour (the page's CSP forbids
+// inline styles, so a table row's colour is a class: .swatch.c0072b2)
+void copy_stylesheet(const fs::path& dir) {
+  std::string css = read_text(template_dir() / "report.css");
+  css += "\n/* plot colours, generated */\n";
+  for (const Rgb& c : palette_colours()) {
+    const std::string hex = css_colour(c);
+    css += ".swatch.c" + hex.substr(1) + " { background: " + hex + "; }\n";
+  }
+  write_text(dir / "report.css", css);
+}
+
+// the case file's values as rows of (dotted key path, value)
+void flatten_yaml(const YAML::Node& node, const std::string& path,
+                  std::vector<std::vector<std::string>>* rows) {
+  if (node.IsMap()) {
+    for (const auto& kv : node) {
+      const std::string key = kv.first.Scalar();
+      flatten_yaml(kv.second, path.empty() ? key : path + "." + key, rows);
+    }
+  } else if (node.IsSequence()) {
+    bool scalars = true;
+    for (const auto& e : node) scalars &= e.IsScalar();
+    if (scalars) {
+      std::string v = "[";
+      for (size_t i = 0; i < node.size(); ++i) v += (i ? ", " : "") + node[i].Scalar();
+      rows->push_back({path, v + "]"});
+    } else {
+      for (size_t i = 0; i < node.size(); ++i)
+        flatten_yaml(node[i], path + "[" + std::to_string(i) + "]", rows);
+    }
+  } else if (node.IsScalar()) {
+    rows->push_back({path, node.Scalar()});
+  } else {
+    rows->push_back({path, "~"});
+  }
+}
+
+Section case_section(const cases::CaseInfo& info) {
+  Section s;
+  s.id = "case";
+  s.heading = "The case";
+  s.new_page = false;
+  Table t;
+  t.caption = "Case parameters as written in " + fs::path(info.path).filename().string() +
+              " (keys carry their unit; the study sections list the defaults it filled in)";
+  t.header = {"key", "value"};
+  try {
+    const YAML::Node root = YAML::Load(info.yaml);
+    flatten_yaml(root, "", &t.rows);
+  } catch (const YAML::Exception& e) {
+    // the case was validated before it ran; show why it cannot be tabulated anyway
+    s.note(std::string("the case file could not be tabulated: ") + e.what());
+  }
+  if (!t.rows.empty()) s.table(std::move(t));
+  s.paragraph("The case file itself:");
+  s.code(info.yaml);
+  return s;
+}
+
+Section checks_section(const nlohmann::json& results) {
+  Section s;
+  s.id = "checks";
+  s.heading = "Checks the study ran on its answer";
+  Table t;
+  t.header = {"check", "what it verifies", "value", "tolerance", "result"};
+  if (results.contains("checks"))
+    for (const auto& c : results["checks"]) {
+      const bool passed = c.value("passed", false);
+      t.rows.push_back({jsonv::str(c, "name"), jsonv::str(c, "description"),
+                        jsonv::sig(c, "value", 4), jsonv::sig(c, "tolerance", 3),
+                        passed ? "passed" : "FAILED"});
+    }
+  if (t.rows.empty())
+    s.paragraph("The study reported no checks for this case.");
+  else
+    s.table(std::move(t));
+  return s;
+}
+
+Section frames_section(const nlohmann::json& results, const std::string& study) {
+  Section s;
+  s.id = "frames";
+  s.heading = "Frames of the motion (MuJoCo replay)";
+  Strip strip;
+  std::vector<double> times = jsonv::vec(results, "frame_times_s");
+  if (times.empty() && results.contains(study)) times = jsonv::vec(results[study], "frame_times_s");
+  if (results.contains("frames"))
+    for (const auto& f : results["frames"]) {
+      if (!f.is_string()) continue;
+      const size_t k = strip.files.size();
+      strip.files.push_back(f.get<std::string>());
+      strip.labels.push_back(k < times.size() ? "t = " + format_fixed(times[k], 3) + " s"
+                                              : "frame " + std::to_string(k + 1));
+    }
+  if (strip.files.empty()) {
+    s.paragraph("No frames were rendered for this case (run without --no-render to get them).");
+  } else {
+    strip.caption = "The solved motion replayed in the MuJoCo model of the arm, rendered "
+                    "off-screen; frames in time order.";
+    s.strip(std::move(strip));
+  }
+  return s;
+}
+
+Section provenance_section(const nlohmann::json& results, const cases::CaseInfo& info) {
+  Section s;
+  s.id = "provenance";
+  s.heading = "Provenance";
+  s.new_page = false;
+  Table t;
+  t.header = {"item", "value"};
+  t.rows.push_back({"armstudy version", jsonv::str(results, "armstudy_version")});
+  const std::string commit = jsonv::str(results, "git_commit");
+  t.rows.push_back({"git commit", commit.empty() ? "unknown" : commit});
+  t.rows.push_back({"case file", info.path});
+  t.rows.push_back({"case sha256", info.sha256});
+  t.rows.push_back({"machine-readable results", "results.json (in this folder)"});
+  s.table(std::move(t));
+  return s;
+}
+
+mus::data table_data(const Table& t) {
+  mus::data d;
+  d.set("caption", t.caption);
+  d.set("has_caption", !t.caption.empty());
+  mus::data header{mus::data::type::list};
+  for (const auto& h : t.header) header << mus::data{"cell", h};
+  d.set("header", header);
+  mus::data rows{mus::data::type::list};
+  for (size_t r = 0; r < t.rows.size(); ++r) {
+    mus::data row;
+    mus::data cells{mus::data::type::list};
+    for (size_t c = 0; c < t.rows[r].size(); ++c) {
+      mus::data cell;
+      cell.set("cell", t.rows[r][c]);
+      const std::string sw = (c == 0 && r < t.swatches.size()) ? t.swatches[r] : "";
+      // swatch colours come from css_colour (#rrggbb) only; checked anyway
+      const bool ok = sw.size() == 7 && sw[0] == '#' &&
+                      std::all_of(sw.begin() + 1, sw.end(), [](char ch) { return std::isxdigit(
+                                                                       static_cast<unsigned char>(ch)); });
+      cell.set("swatch", ok ? sw.substr(1) : "");
+      cell.set("has_swatch", ok);
+      cell.set("failed", t.rows[r][c] == "FAILED");
+      cells << cell;
+    }
+    row.set("cells", cells);
+    rows << row;
+  }
+  d.set("rows", rows);
+  return d;
+}
+
+mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
+  mus::data d;
+  d.set("title", page.title);
+  d.set("case_name", info.name);
+  d.set("study", page.study);
+  d.set("status", page.status);
+  d.set("solved", page.status == "solved");
+  d.set("message", page.message);
+  d.set("description", page.description);
+  d.set("has_description", !page.description.empty());
+  mus::data kf{mus::data::type::list};
+  for (const auto& [k, v] : page.key_figures) {
+    mus::data e;
+    e.set("label", k);
+    e.set("value", v);
+    kf << e;
+  }
+  d.set("key_figures", kf);
+  d.set("has_key_figures", !page.key_figures.empty());
+  mus::data toc{mus::data::type::list};
+  mus::data sections{mus::data::type::list};
+  for (const auto& s : page.sections) {
+    mus::data t;
+    t.set("id", s.id);
+    t.set("heading", s.heading);
+    toc << t;
+    mus::data sd;
+    sd.set("id", s.id);
+    sd.set("heading", s.heading);
+    sd.set("new_page", s.new_page);
+    mus::data blocks{mus::data::type::list};
+    for (const auto& b : s.blocks) {
+      mus::data bd;
+      switch (b.kind) {
+        case Block::Kind::kParagraph: bd.set("paragraph", b.text); break;
+        case Block::Kind::kNote: bd.set("note", b.text); break;
+        case Block::Kind::kCode: bd.set("code", b.text); break;
+        case Block::Kind::kTable: bd.set("table", table_data(b.table)); break;
+        case Block::Kind::kFigure: {
+          mus::data f;
+          f.set("src", b.figure.file);
+          f.set("caption", b.figure.caption);
+          bd.set("figure", f);
+          break;
+        }
+        case Block::Kind::kStrip: {
+          mus::data st;
+          st.set("caption", b.strip.caption);
+          mus::data imgs{mus::data::type::list};
+          for (size_t k = 0; k < b.strip.files.size(); ++k) {
+            mus::data im;
+            im.set("src", b.strip.files[k]);
+            im.set("label", k < b.strip.labels.size() ? b.strip.labels[k] : "");
+            imgs << im;
+          }
+          st.set("images", imgs);
+          bd.set("strip", st);
+          break;
+        }
+      }
+      blocks << bd;
+    }
+    sd.set("blocks", blocks);
+    sections << sd;
+  }
+  d.set("toc", toc);
+  d.set("sections", sections);
+  d.set("case_sha256", info.sha256);
+  return d;
+}
+
+}  // namespace
+
+fs::path template_dir() {
+  if (const char* env = std::getenv("ARMSTUDY_TEMPLATE_DIR"); env && *env) return env;
+  return ARMSTUDY_TEMPLATE_DIR;
+}
+
+std::vector<std::pair<std::string, std::string>> key_figures(const nlohmann::json& results) {
+  // the study's own choice, results.json "key_figures": [{name, value, unit}]
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!results.contains("key_figures") || !results["key_figures"].is_array()) return out;
+  for (const auto& k : results["key_figures"]) {
+    if (!k.is_object()) continue;
+    const std::string unit = jsonv::str(k, "unit");
+    out.emplace_back(jsonv::str(k, "name"), jsonv::sig(k, "value", 5) + (unit.empty() ? "" : " " + unit));
+  }
+  return out;
+}
+
+void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
+                       const nlohmann::json& results) {
+  CasePage page;
+  page.title = info.name;
+  page.study = info.study;
+  page.status = results.value("status", "unknown");
+  page.message = results.value("message", "");
+  page.description = info.description;
+  page.key_figures = key_figures(results);
+  page.sections.push_back(case_section(info));
+
+  FigureWriter figures(dir);
+  const bool solved = page.status == "solved";
+  const nlohmann::json section =
+      results.contains(info.study) ? results[info.study] : nlohmann::json::object();
+  if (!solved) {
+    Section s;
+    s.id = "unsolved";
+    s.heading = "Why the study has no answer";
+    s.new_page = false;
+    s.paragraph(page.message.empty() ? "The study could not be solved." : page.message);
+    page.sections.push_back(std::move(s));
+  }
+  if (info.study == "placement") {
+    placement_sections(results, figures, page);
+  } else if (info.study == "pendulum") {
+    pendulum_sections(results, figures, page);
+  } else if (info.study == "throwing") {
+    throwing_sections(results, figures, page);
+  } else if (info.study == "time_optimal") {
+    time_optimal_sections(results, figures, page);
+  } else {
+    generic_sections(section, figures, page);
+  }
+  if (solved) page.sections.push_back(frames_section(results, info.study));
+  page.sections.push_back(checks_section(results));
+  page.sections.push_back(provenance_section(results, info));
+
+  copy_stylesheet(dir);
+  write_text(dir / "index.html", render_template("case.html", page_data(page, info)));
+}
+
+int write_index(const fs::path& out_dir) {
+  struct Row {
+    std::string name;
+    nlohmann::json results;
+  };
+  std::vector<Row> rows;
+  if (fs::is_directory(out_dir))
+    for (const auto& e : fs::directory_iterator(out_dir)) {
+      const std::string name = e.path().filename().string();
+      if (!e.is_directory() || name.empty() || name[0] == '.') continue;
+      const fs::path rj = e.path() / "results.json";
+      if (!fs::exists(rj)) continue;
+      try {
+        rows.push_back({name, nlohmann::json::parse(read_text(rj))});
+      } catch (const nlohmann::json::exception&) {
+        rows.push_back({name, nlohmann::json{{"status", "unreadable results.json"}}});
+      }
+    }
+  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.name < b.name; });
+
+  mus::data d;
+  mus::data list{mus::data::type::list};
+  for (const auto& r : rows) {
+    mus::data e;
+    e.set("name", r.name);
+    e.set("study", r.results.value("study", ""));
+    const std::string status = r.results.value("status", "");
+    e.set("status", status);
+    e.set("solved", status == "solved");
+    e.set("message", r.results.value("message", ""));
+    mus::data kf{mus::data::type::list};
+    for (const auto& [k, v] : key_figures(r.results)) {
+      mus::data x;
+      x.set("label", k);
+      x.set("value", v);
+      kf << x;
+    }
+    e.set("key_figures", kf);
+    // thumbnail: first frame, else the first figure of the page
+    std::string thumb;
+    if (r.results.contains("frames") && r.results["frames"].is_array() &&
+        !r.results["frames"].empty() && r.results["frames"][0].is_string())
+      thumb = r.results["frames"][0].get<std::string>();
+    if (thumb.empty()) {
+      std::vector<std::string> svgs;
+      for (const auto& f : fs::directory_iterator(out_dir / r.name))
+        if (f.path().extension() == ".svg") svgs.push_back(f.path().filename().string());
+      std::sort(svgs.begin(), svgs.end());
+      if (!svgs.empty()) thumb = svgs.front();
+    }
+    const bool has_thumb = !thumb.empty() && fs::exists(out_dir / r.name / thumb);
+    e.set("has_thumb", has_thumb);
+    e.set("thumb", has_thumb ? r.name + "/" + thumb : "");
+    e.set("has_report", fs::exists(out_dir / r.name / "index.html"));
+    e.set("has_pdf", fs::exists(out_dir / r.name / "report.pdf"));
+    list << e;
+  }
+  d.set("cases", list);
+  d.set("count", std::to_string(rows.size()));
+  fs::create_directories(out_dir);
+  copy_stylesheet(out_dir);
+  write_text(out_dir / "index.html", render_template("index.html", d));
+  return static_cast<int>(rows.size());
+}
+
+}  // namespace armstudy::report

@@ -1,0 +1,59 @@
+#pragma once
+/// The study report of one case (DIR/<case>/index.html with its figures and stylesheet),
+/// the page of all cases (DIR/index.html) and the PDF print through headless Chromium.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cases/case_info.hpp"
+
+namespace armstudy::report {
+
+/// Writes the report of one case into `dir` (the case folder, which already holds
+/// results.json and the frames listed in results["frames"]): index.html, report.css and
+/// one SVG per plot. `results` is the case's results.json: the shared header (see
+/// app::results_header), the study's own section under results[info.study] and "frames".
+/// Reads the templates from template_dir().
+/// @throws std::runtime_error when a template is missing or a file cannot be written;
+/// std::invalid_argument when a plot cannot be drawn from the data.
+void write_case_report(const std::filesystem::path& dir, const cases::CaseInfo& info,
+                       const nlohmann::json& results);
+
+/// Writes `out_dir`/index.html (and its report.css): one row per case folder in out_dir that
+/// holds a results.json (folders starting with '.' are skipped), sorted by name, with the
+/// study, status, key figures, a thumbnail (the first frame, else the first figure) and a
+/// link to the case's report. Returns the number of cases listed.
+/// @throws std::runtime_error when out_dir/index.html cannot be written.
+int write_index(const std::filesystem::path& out_dir);
+
+/// Key figures of a case for the index and the page header (label, value with unit),
+/// read from its results.json.
+std::vector<std::pair<std::string, std::string>> key_figures(const nlohmann::json& results);
+
+/// The folder holding the templates: $ARMSTUDY_TEMPLATE_DIR if set, else the source tree's
+/// templates/ (compiled in).
+std::filesystem::path template_dir();
+
+/// Chromium could not be found or did not print.
+class PdfError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The Chromium executable: $ARMSTUDY_CHROMIUM if set, else the first of chromium,
+/// chromium-browser, google-chrome on PATH; empty when none is found.
+std::string find_chromium();
+
+/// Prints `html` (a local file) to `pdf` with headless Chromium (A4 from the page's print
+/// CSS, no header or footer, a fresh profile, no network services), writing through a
+/// temporary file. Gives up after `timeout_s` seconds.
+/// @throws PdfError naming the problem (Chromium missing: how to install it).
+void print_pdf(const std::filesystem::path& html, const std::filesystem::path& pdf,
+               double timeout_s = 120);
+
+}  // namespace armstudy::report

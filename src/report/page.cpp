@@ -1,0 +1,123 @@
+#include "report/page.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "report/number_format.hpp"
+
+namespace armstudy::report {
+
+void Section::paragraph(std::string text) {
+  Block b;
+  b.kind = Block::Kind::kParagraph;
+  b.text = std::move(text);
+  blocks.push_back(std::move(b));
+}
+
+void Section::note(std::string text) {
+  Block b;
+  b.kind = Block::Kind::kNote;
+  b.text = std::move(text);
+  blocks.push_back(std::move(b));
+}
+
+void Section::code(std::string text) {
+  Block b;
+  b.kind = Block::Kind::kCode;
+  b.text = std::move(text);
+  blocks.push_back(std::move(b));
+}
+
+void Section::table(Table t) {
+  Block b;
+  b.kind = Block::Kind::kTable;
+  b.table = std::move(t);
+  blocks.push_back(std::move(b));
+}
+
+void Section::figure(Figure f) {
+  Block b;
+  b.kind = Block::Kind::kFigure;
+  b.figure = std::move(f);
+  blocks.push_back(std::move(b));
+}
+
+void Section::strip(Strip s) {
+  Block b;
+  b.kind = Block::Kind::kStrip;
+  b.strip = std::move(s);
+  blocks.push_back(std::move(b));
+}
+
+std::string FigureWriter::next_name(const std::string& name) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "fig%02d_", ++count_);
+  std::string safe;
+  for (char c : name)
+    safe += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+  return buf + safe + ".svg";
+}
+
+Figure FigureWriter::line(const std::string& name, const LinePlot& plot, std::string caption) {
+  const std::string file = next_name(name);
+  write_line_plot(plot, dir_ / file);
+  return {file, std::move(caption)};
+}
+
+Figure FigureWriter::map(const std::string& name, const ShadedMap& map, std::string caption) {
+  const std::string file = next_name(name);
+  write_shaded_map(map, dir_ / file);
+  return {file, std::move(caption)};
+}
+
+namespace jsonv {
+
+bool has(const nlohmann::json& j, const char* key) { return j.is_object() && j.contains(key); }
+
+double num(const nlohmann::json& j, const char* key) {
+  if (!has(j, key) || !j[key].is_number()) return NAN;
+  return j[key].get<double>();
+}
+
+std::string str(const nlohmann::json& j, const char* key) {
+  if (!has(j, key)) return "";
+  const auto& v = j[key];
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (v.is_number()) return format_sig(v.get<double>(), 6);
+  return v.dump();
+}
+
+std::string sig(const nlohmann::json& j, const char* key, int digits) {
+  return format_sig(num(j, key), digits);
+}
+
+std::string fixed(const nlohmann::json& j, const char* key, int decimals) {
+  return format_fixed(num(j, key), decimals);
+}
+
+std::vector<double> vec(const nlohmann::json& j, const char* key) {
+  std::vector<double> out;
+  if (!has(j, key) || !j[key].is_array()) return out;
+  for (const auto& v : j[key]) out.push_back(v.is_number() ? v.get<double>() : NAN);
+  return out;
+}
+
+std::vector<double> column(const nlohmann::json& j, const char* key, size_t col, size_t n_rows) {
+  std::vector<double> out;
+  if (!has(j, key) || !j[key].is_array()) return out;
+  const auto& a = j[key];
+  auto as_num = [](const nlohmann::json& v) { return v.is_number() ? v.get<double>() : NAN; };
+  if (a.size() == n_rows && !a.empty() && a[0].is_array()) {
+    // rows of samples: [[q1, q2], [q1, q2], ...]
+    for (const auto& row : a) out.push_back(col < row.size() ? as_num(row[col]) : NAN);
+  } else if (col < a.size() && a[col].is_array()) {
+    // one array per joint: [[q1 ...], [q2 ...]]
+    for (const auto& v : a[col]) out.push_back(as_num(v));
+  }
+  return out;
+}
+
+}  // namespace jsonv
+
+}  // namespace armstudy::report

@@ -1,0 +1,114 @@
+#pragma once
+/// The content model of a report page (sections of paragraphs, tables, figures and notes)
+/// and the helpers that study sections use to fill it. Rendering to HTML happens in
+/// html.hpp through the mustache templates; every string here is plain text and is
+/// HTML-escaped there.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/plot.hpp"
+
+namespace armstudy::report {
+
+/// A table: a header row and body rows of plain-text cells.
+struct Table {
+  std::string caption;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  /// Optional colour swatch per row ("#rrggbb", empty for none), shown before the first cell:
+  /// ties a row to the colour of its curves in the plots.
+  std::vector<std::string> swatches;
+};
+
+/// A figure: an image file in the case folder (embedded as <img>, never inlined).
+struct Figure {
+  std::string file;     ///< relative to the case folder
+  std::string caption;  ///< what it shows; the alt text too
+};
+
+/// A strip of images (frames), each with a short label.
+struct Strip {
+  std::string caption;
+  std::vector<std::string> files;
+  std::vector<std::string> labels;
+};
+
+/// One element of a section, in reading order.
+struct Block {
+  enum class Kind { kParagraph, kNote, kTable, kFigure, kStrip, kCode };
+  Kind kind = Kind::kParagraph;
+  std::string text;  ///< paragraph, note or code text
+  Table table;
+  Figure figure;
+  Strip strip;
+};
+
+/// A section of the page (printed from a new page unless `new_page` is false).
+struct Section {
+  std::string id;  ///< HTML id (letters, digits, '-')
+  std::string heading;
+  bool new_page = true;
+  std::vector<Block> blocks;
+
+  void paragraph(std::string text);
+  /// An honest remark, e.g. where the source printed different numbers and why.
+  void note(std::string text);
+  void code(std::string text);
+  void table(Table t);
+  void figure(Figure f);
+  void strip(Strip s);
+};
+
+/// Everything a case page shows, filled by the generic writer and the study's section builder.
+struct CasePage {
+  std::string title;
+  std::string study;
+  std::string status;      ///< "solved" / "unsolvable"
+  std::string message;
+  std::string description;
+  std::vector<std::pair<std::string, std::string>> key_figures;  ///< for the header and index
+  std::vector<Section> sections;
+};
+
+/// Writes the figures of one page into its folder with stable, ordered names
+/// (fig01_<name>.svg, ...), so that the first figure can serve as the page's thumbnail.
+class FigureWriter {
+ public:
+  explicit FigureWriter(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  /// Draws `plot` into the folder and returns the figure (file name relative to the folder).
+  /// @throws what write_line_plot throws.
+  Figure line(const std::string& name, const LinePlot& plot, std::string caption);
+  /// Draws `map` into the folder and returns the figure. @throws what write_shaded_map throws.
+  Figure map(const std::string& name, const ShadedMap& map, std::string caption);
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::string next_name(const std::string& name);
+  std::filesystem::path dir_;
+  int count_ = 0;
+};
+
+/// Small readers of results.json values that tolerate missing keys.
+namespace jsonv {
+/// j[key] as a number, NaN when missing or not a number.
+double num(const nlohmann::json& j, const char* key);
+/// j[key] as a string ("" when missing); numbers and booleans are formatted.
+std::string str(const nlohmann::json& j, const char* key);
+/// j[key] formatted with `digits` significant digits, "n/a" when missing.
+std::string sig(const nlohmann::json& j, const char* key, int digits = 4);
+/// j[key] formatted with `decimals` decimals, "n/a" when missing.
+std::string fixed(const nlohmann::json& j, const char* key, int decimals);
+/// j[key] as a vector of numbers (empty when missing); nulls become NaN.
+std::vector<double> vec(const nlohmann::json& j, const char* key);
+/// Column `col` of j[key] when it is an array of arrays (rows of samples), or row `col` when
+/// it is an array of per-joint arrays whose length is not `n_rows`; empty when missing.
+std::vector<double> column(const nlohmann::json& j, const char* key, size_t col, size_t n_rows);
+/// true if j is an object holding key.
+bool has(const nlohmann::json& j, const char* key);
+}  // namespace jsonv
+
+}  // namespace armstudy::report

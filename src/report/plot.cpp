@@ -1,0 +1,507 @@
+#include "report/plot.hpp"
+
+#include <locale.h>
+#include <plplot/plstream.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+
+namespace armstudy::report {
+namespace fs = std::filesystem;
+namespace {
+
+// plplot keeps one global set of streams: one plot at a time in the whole process
+std::mutex& plplot_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// switches this thread to the C locale for the lifetime of the guard
+class CLocaleGuard {
+ public:
+  CLocaleGuard() : c_(newlocale(LC_ALL_MASK, "C", static_cast<locale_t>(0))) {
+    if (c_) old_ = uselocale(c_);
+  }
+  ~CLocaleGuard() {
+    if (c_) {
+      uselocale(old_);
+      freelocale(c_);
+    }
+  }
+  CLocaleGuard(const CLocaleGuard&) = delete;
+  CLocaleGuard& operator=(const CLocaleGuard&) = delete;
+
+ private:
+  locale_t c_;
+  locale_t old_ = static_cast<locale_t>(0);
+};
+
+// okabe-ito colour-blind-safe palette, then a few darker extras
+constexpr Rgb kPalette[] = {{0, 114, 178},   {213, 94, 0},   {0, 158, 115}, {204, 121, 167},
+                            {230, 159, 0},   {86, 180, 233}, {120, 94, 60}, {90, 90, 90},
+                            {150, 40, 160},  {40, 120, 40}};
+constexpr Rgb kBlack{0, 0, 0};
+constexpr Rgb kWhite{255, 255, 255};
+constexpr Rgb kGrey{110, 110, 110};
+
+// cmap0 slots: 0 background, 1 axes and text, 2.. per drawn item
+constexpr int kSlotBackground = 0;
+constexpr int kSlotInk = 1;
+constexpr int kFirstFreeSlot = 2;
+
+// text for plplot: '#' starts an escape sequence there, so a literal one is doubled
+std::string pl_text(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    out += c;
+    if (c == '#') out += '#';
+  }
+  return out;
+}
+
+// cairo repeats a ~300-byte style attribute on every path; a shaded map has thousands of
+// paths. Each distinct style becomes one css class in a <style> element of the svg, which
+// keeps the drawing identical and the file several times smaller.
+std::string compact_svg(const std::string& svg) {
+  static const std::string kOpen = " style=\"";
+  std::map<std::string, std::string> classes;
+  std::string body;
+  body.reserve(svg.size() / 2);
+  size_t pos = 0;
+  while (true) {
+    const size_t a = svg.find(kOpen, pos);
+    if (a == std::string::npos) break;
+    const size_t b = svg.find('"', a + kOpen.size());
+    if (b == std::string::npos) break;
+    const std::string style = svg.substr(a + kOpen.size(), b - a - kOpen.size());
+    auto [it, fresh] = classes.try_emplace(style, "s" + std::to_string(classes.size()));
+    body.append(svg, pos, a - pos);
+    body += " class=\"" + it->second + "\"";
+    pos = b + 1;
+  }
+  body.append(svg, pos, std::string::npos);
+  std::string css = "<style>";
+  for (const auto& [style, name] : classes) css += "." + name + "{" + style + "}\n";
+  css += "</style>\n";
+  // right after the opening <svg ...> tag
+  const size_t root = body.find("<svg");
+  const size_t end = root == std::string::npos ? root : body.find('>', root);
+  if (end == std::string::npos) return svg;
+  body.insert(end + 1, "\n" + css);
+  return body;
+}
+
+PLINT style_code(LineStyle s) {
+  switch (s) {
+    case LineStyle::kDashed: return 3;  // long dashes
+    case LineStyle::kDotted: return 2;  // short dashes
+    default: return 1;
+  }
+}
+
+// everything one plot needs from plplot: device, page, white background, colour slots
+class Page {
+ public:
+  Page(const fs::path& svg, int width_pt, int height_pt, int slots)
+      : lock_(plplot_mutex()), stream_(std::make_unique<plstream>()), p(*stream_) {
+    tmp_ = svg.string() + ".part";
+    p.sdev("svgcairo");
+    p.sfnam(tmp_.c_str());
+    p.spage(0, 0, width_pt, height_pt, 0, 0);
+    p.scolbg(kWhite.r, kWhite.g, kWhite.b);
+    p.scmap0n(std::max(16, kFirstFreeSlot + slots));
+    p.init();
+    p.scol0(kSlotBackground, kWhite.r, kWhite.g, kWhite.b);
+    p.scol0(kSlotInk, kBlack.r, kBlack.g, kBlack.b);
+    p.col0(kSlotInk);
+    p.adv(0);
+    p.schr(0, 0.85);
+  }
+  Page(const Page&) = delete;
+  Page& operator=(const Page&) = delete;
+
+  // a fresh cmap0 slot holding colour c
+  PLINT slot(const Rgb& c) {
+    const PLINT s = next_++;
+    p.scol0(s, c.r, c.g, c.b);
+    return s;
+  }
+
+  // closes the stream (which writes the file), compacts it and moves it into place
+  void finish(const fs::path& svg) {
+    stream_.reset();
+    std::string text;
+    {
+      std::ifstream in(tmp_, std::ios::binary);
+      std::stringstream ss;
+      ss << in.rdbuf();
+      text = ss.str();
+    }
+    if (text.find("</svg>") == std::string::npos)
+      throw std::runtime_error("plplot wrote no complete SVG to " + tmp_);
+    {
+      std::ofstream out(tmp_, std::ios::binary | std::ios::trunc);
+      out << compact_svg(text);
+      if (!out) throw std::runtime_error("cannot write " + tmp_);
+    }
+    fs::rename(tmp_, svg);
+  }
+
+ private:
+  std::lock_guard<std::mutex> lock_;
+  CLocaleGuard locale_;
+  std::unique_ptr<plstream> stream_;
+
+ public:
+  plstream& p;  // the open stream (valid until finish)
+
+ private:
+  std::string tmp_;
+  PLINT next_ = kFirstFreeSlot;
+};
+
+// draws x/y as polylines, split at non-finite points
+void draw_polyline(plstream& p, const std::vector<double>& x, const std::vector<double>& y, bool log_y) {
+  std::vector<PLFLT> px, py;
+  auto flush = [&] {
+    if (px.size() >= 2) p.line(static_cast<PLINT>(px.size()), px.data(), py.data());
+    px.clear();
+    py.clear();
+  };
+  for (size_t k = 0; k < x.size(); ++k) {
+    double yy = log_y ? (y[k] > 0 ? std::log10(y[k]) : NAN) : y[k];
+    if (!std::isfinite(x[k]) || !std::isfinite(yy)) {
+      flush();
+      continue;
+    }
+    px.push_back(x[k]);
+    py.push_back(yy);
+  }
+  flush();
+}
+
+void draw_markers(plstream& p, const std::vector<double>& x, const std::vector<double>& y, bool log_y) {
+  for (size_t k = 0; k < x.size(); ++k) {
+    PLFLT px = x[k], py = log_y ? (y[k] > 0 ? std::log10(y[k]) : NAN) : y[k];
+    if (std::isfinite(px) && std::isfinite(py)) p.poin(1, &px, &py, 4);
+  }
+}
+
+// legend entries, kept alive for pllegend's const char* arrays
+struct LegendEntries {
+  std::vector<PLINT> opt, text_colors, box_colors, box_patterns, line_colors, line_styles,
+      symbol_colors, symbol_numbers;
+  std::vector<PLFLT> box_scales, box_line_widths, line_widths, symbol_scales;
+  std::vector<std::string> text, symbols;
+
+  void add(const std::string& label, PLINT colour, PLINT kind, PLINT style, PLFLT width,
+           const char* symbol) {
+    opt.push_back(kind);
+    text.push_back(pl_text(label));
+    text_colors.push_back(kSlotInk);
+    box_colors.push_back(colour);
+    box_patterns.push_back(0);
+    box_scales.push_back(0.8);
+    box_line_widths.push_back(1);
+    line_colors.push_back(colour);
+    line_styles.push_back(style);
+    line_widths.push_back(width);
+    symbol_colors.push_back(colour);
+    symbol_scales.push_back(1.0);
+    symbol_numbers.push_back(1);
+    symbols.push_back(symbol);
+  }
+
+  void draw(plstream& p, PLINT position, PLFLT x, PLFLT y, PLINT columns) {
+    if (opt.empty()) return;
+    std::vector<const char*> t, s;
+    for (auto& e : text) t.push_back(e.c_str());
+    for (auto& e : symbols) s.push_back(e.c_str());
+    const PLINT n = static_cast<PLINT>(opt.size());
+    const PLINT rows = (n + columns - 1) / columns;
+    PLFLT w = 0, h = 0;
+    p.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX | PL_LEGEND_ROW_MAJOR,
+             position, x, y, 0.07, kSlotBackground, kSlotInk, 1, rows, columns, n, opt.data(),
+             0.8, 0.8, 2.0, 0.0, text_colors.data(), t.data(), box_colors.data(),
+             box_patterns.data(), box_scales.data(), box_line_widths.data(), line_colors.data(),
+             line_styles.data(), line_widths.data(), symbol_colors.data(), symbol_scales.data(),
+             symbol_numbers.data(), s.data());
+  }
+};
+
+void check_series(const Series& s) {
+  if (s.x.size() != s.y.size())
+    throw std::invalid_argument("plot series '" + s.label + "' has " +
+                                std::to_string(s.x.size()) + " x values and " +
+                                std::to_string(s.y.size()) + " y values; expected equal sizes");
+}
+
+// padded [lo, hi] that is never empty
+void widen(double* lo, double* hi, double pad_fraction) {
+  if (!(*hi > *lo)) {
+    const double m = std::max(1.0, std::abs(*lo)) * 0.05;
+    *lo -= m;
+    *hi += m;
+    return;
+  }
+  const double pad = (*hi - *lo) * pad_fraction;
+  *lo -= pad;
+  *hi += pad;
+}
+
+// the map being shaded, for plplot's "defined" callback (which carries no user data);
+// only touched while the plplot mutex is held
+const ShadedMap* g_defined_map = nullptr;
+
+PLINT map_defined(PLFLT x, PLFLT y) {
+  const ShadedMap& m = *g_defined_map;
+  const double dx = m.nx > 1 ? (m.x_max - m.x_min) / (m.nx - 1) : 1;
+  const double dy = m.ny > 1 ? (m.y_max - m.y_min) / (m.ny - 1) : 1;
+  const long i = std::lround((x - m.x_min) / dx);
+  const long j = std::lround((y - m.y_min) / dy);
+  if (i < 0 || j < 0 || i >= m.nx || j >= m.ny) return 0;
+  return std::isfinite(m.z[static_cast<size_t>(j) * m.nx + i]) ? 1 : 0;
+}
+
+// viridis, sampled at five points (perceptually uniform, prints in grey)
+void set_viridis(plstream& p) {
+  PLFLT pos[] = {0, 0.25, 0.5, 0.75, 1};
+  PLFLT r[] = {68 / 255.0, 59 / 255.0, 33 / 255.0, 94 / 255.0, 253 / 255.0};
+  PLFLT g[] = {1 / 255.0, 82 / 255.0, 145 / 255.0, 201 / 255.0, 231 / 255.0};
+  PLFLT b[] = {84 / 255.0, 139 / 255.0, 140 / 255.0, 98 / 255.0, 37 / 255.0};
+  p.scmap1n(256);
+  p.scmap1l(true, 5, pos, r, g, b, nullptr);
+}
+
+}  // namespace
+
+Rgb colour_for(std::string_view key) {
+  static const std::map<std::string, Rgb, std::less<>> known = {
+      {"cycloidal/1", kPalette[0]}, {"cycloidal/2", kPalette[1]},
+      {"poly345/1", kPalette[2]},   {"poly345/2", kPalette[3]},
+      {"reachability", kPalette[0]}, {"dp", kPalette[1]},
+      {"complex", kPalette[2]},     {"mvc", kBlack},
+      {"initial", kPalette[7]},     {"idp", kPalette[0]},
+      {"gradient", kPalette[1]},    {"joint1", kPalette[0]},
+      {"joint2", kPalette[1]},      {"joint3", kPalette[2]},
+      {"joint4", kPalette[3]},      {"limit", kGrey},
+      {"energy", kPalette[0]},      {"kinetic", kPalette[1]},
+      {"potential", kPalette[2]},   {"mechanical", kBlack},
+  };
+  if (auto it = known.find(key); it != known.end()) return it->second;
+  // fnv-1a: stable across runs and machines, unlike std::hash
+  std::uint32_t h = 2166136261u;
+  for (char ch : key) h = (h ^ static_cast<unsigned char>(ch)) * 16777619u;
+  return kPalette[4 + h % 6];
+}
+
+std::vector<Rgb> palette_colours() {
+  std::vector<Rgb> out(std::begin(kPalette), std::end(kPalette));
+  out.push_back(kBlack);
+  out.push_back(kGrey);
+  return out;
+}
+
+std::string css_colour(const Rgb& c) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+  return buf;
+}
+
+void write_line_plot(const LinePlot& plot, const fs::path& svg) {
+  double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
+  for (const auto& s : plot.series) {
+    check_series(s);
+    for (size_t k = 0; k < s.x.size(); ++k) {
+      const double y = plot.log_y ? (s.y[k] > 0 ? std::log10(s.y[k]) : NAN) : s.y[k];
+      if (!std::isfinite(s.x[k]) || !std::isfinite(y)) continue;
+      x_lo = std::min(x_lo, s.x[k]);
+      x_hi = std::max(x_hi, s.x[k]);
+      y_lo = std::min(y_lo, y);
+      y_hi = std::max(y_hi, y);
+    }
+  }
+  if (!std::isfinite(x_lo))
+    throw std::invalid_argument("plot '" + plot.title + "' has no finite point to draw");
+  for (const auto& r : plot.references) {
+    const double y = plot.log_y ? std::log10(r.y) : r.y;
+    if (std::isfinite(y)) {
+      y_lo = std::min(y_lo, y);
+      y_hi = std::max(y_hi, y);
+    }
+  }
+  if (!(x_hi > x_lo)) widen(&x_lo, &x_hi, 0);
+  widen(&y_lo, &y_hi, 0.06);
+
+  bool has_legend = false;
+  for (const auto& s : plot.series) has_legend |= !s.label.empty();
+  has_legend |= !plot.references.empty();
+
+  Page page(svg, plot.width_pt, plot.height_pt,
+            static_cast<int>(plot.series.size() + plot.references.size()));
+  plstream& p = page.p;
+  p.vpor(0.12, has_legend ? 0.70 : 0.96, 0.14, 0.90);
+  p.wind(x_lo, x_hi, y_lo, y_hi);
+  p.col0(kSlotInk);
+  p.width(0.8);
+  p.lsty(1);
+  p.box("bcnst", 0, 0, plot.log_y ? "bcnstvl" : "bcnstv", 0, 0);
+  // light grid for reading values off
+  p.scol0(kSlotBackground, kWhite.r, kWhite.g, kWhite.b);
+  p.lab(pl_text(plot.x_label).c_str(), pl_text(plot.y_label).c_str(), pl_text(plot.title).c_str());
+
+  LegendEntries legend;
+  for (const auto& s : plot.series) {
+    const PLINT c = page.slot(s.colour);
+    p.col0(c);
+    p.width(s.width);
+    p.lsty(style_code(s.style));
+    draw_polyline(p, s.x, s.y, plot.log_y);
+    if (s.markers) {
+      p.lsty(1);
+      draw_markers(p, s.x, s.y, plot.log_y);
+    }
+    if (!s.label.empty())
+      legend.add(s.label, c, PL_LEGEND_LINE | (s.markers ? PL_LEGEND_SYMBOL : 0),
+                 style_code(s.style), s.width, "#(229)");
+  }
+  for (const auto& r : plot.references) {
+    const PLINT c = page.slot(kGrey);
+    p.col0(c);
+    p.width(1.0);
+    p.lsty(2);
+    const double y = plot.log_y ? std::log10(r.y) : r.y;
+    if (!std::isfinite(y)) continue;
+    PLFLT xs[2] = {x_lo, x_hi}, ys[2] = {y, y};
+    p.line(2, xs, ys);
+    legend.add(r.label, c, PL_LEGEND_LINE, 2, 1.0, "");
+  }
+  p.lsty(1);
+  p.width(0.8);
+  legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_RIGHT, 0.02, 0.0, 1);
+  page.finish(svg);
+}
+
+void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
+  const size_t n = static_cast<size_t>(map.nx) * static_cast<size_t>(map.ny);
+  if (map.nx < 2 || map.ny < 2 || map.z.size() != n)
+    throw std::invalid_argument("map '" + map.title + "' needs nx, ny >= 2 and nx*ny z values");
+  for (const auto& r : map.regions)
+    if (r.mask.size() != n)
+      throw std::invalid_argument("map region '" + r.label + "' needs nx*ny mask values");
+  for (const auto& s : map.overlays) check_series(s);
+
+  double z_lo = INFINITY, z_hi = -INFINITY;
+  for (double z : map.z)
+    if (std::isfinite(z)) {
+      z_lo = std::min(z_lo, z);
+      z_hi = std::max(z_hi, z);
+    }
+  const bool has_values = std::isfinite(z_lo);
+  if (has_values && !(z_hi > z_lo)) widen(&z_lo, &z_hi, 0);
+
+  const double dx = (map.x_max - map.x_min) / (map.nx - 1);
+  const double dy = (map.y_max - map.y_min) / (map.ny - 1);
+  const double wx0 = map.x_min - dx / 2, wx1 = map.x_max + dx / 2;
+  const double wy0 = map.y_min - dy / 2, wy1 = map.y_max + dy / 2;
+
+  // plplot's matrices are a[i][j], i along x
+  auto grid = [&](const std::function<double(size_t)>& at) {
+    std::vector<PLFLT> data(n);
+    for (int i = 0; i < map.nx; ++i)
+      for (int j = 0; j < map.ny; ++j)
+        data[static_cast<size_t>(i) * map.ny + j] = at(static_cast<size_t>(j) * map.nx + i);
+    return data;
+  };
+  auto rows = [&](std::vector<PLFLT>& data) {
+    std::vector<const PLFLT*> r(map.nx);
+    for (int i = 0; i < map.nx; ++i) r[i] = data.data() + static_cast<size_t>(i) * map.ny;
+    return r;
+  };
+
+  Page page(svg, map.width_pt, map.height_pt,
+            static_cast<int>(map.regions.size() + map.overlays.size() + map.markers.size()));
+  plstream& p = page.p;
+  const double aspect = map.equal_aspect ? (wy1 - wy0) / (wx1 - wx0) : 0.8;
+  p.vpas(0.10, 0.80, 0.24, 0.92, aspect);
+  p.wind(wx0, wx1, wy0, wy1);
+  set_viridis(p);
+
+  LegendEntries legend;
+  // the value field, only where it is defined
+  std::vector<PLFLT> levels;
+  if (has_values) {
+    std::vector<PLFLT> zdata = grid([&](size_t k) { return std::isfinite(map.z[k]) ? map.z[k] : z_lo; });
+    auto zrows = rows(zdata);
+    const int nl = std::max(2, map.levels + 1);
+    for (int k = 0; k < nl; ++k) levels.push_back(z_lo + (z_hi - z_lo) * k / (nl - 1));
+    g_defined_map = &map;
+    p.shades(zrows.data(), map.nx, map.ny, map_defined, map.x_min, map.x_max, map.y_min,
+             map.y_max, levels.data(), nl, 1.0, 0, 0, plcallback::fill, 1, nullptr, nullptr);
+    g_defined_map = nullptr;
+  }
+  // flat regions over it (a mask's edge lies half a cell out, where the contour of 0.5 is)
+  for (const auto& r : map.regions) {
+    std::vector<PLFLT> mdata = grid([&](size_t k) { return r.mask[k] ? 1.0 : 0.0; });
+    auto mrows = rows(mdata);
+    const PLINT c = page.slot(r.colour);
+    p.shade(mrows.data(), map.nx, map.ny, nullptr, map.x_min, map.x_max, map.y_min, map.y_max,
+            0.5, 1.5, 0, c, 1.0, 0, 0, 0, 0, plcallback::fill, 1, nullptr, nullptr);
+    legend.add(r.label, c, PL_LEGEND_COLOR_BOX, 1, 1, "");
+  }
+  for (const auto& s : map.overlays) {
+    const PLINT c = page.slot(s.colour);
+    p.col0(c);
+    p.width(s.width);
+    p.lsty(style_code(s.style));
+    draw_polyline(p, s.x, s.y, false);
+    if (!s.label.empty()) legend.add(s.label, c, PL_LEGEND_LINE, style_code(s.style), s.width, "");
+  }
+  p.lsty(1);
+  for (const auto& m : map.markers) {
+    const PLINT c = page.slot(m.colour);
+    PLFLT x = m.x, y = m.y;
+    p.width(2.5);
+    p.col0(kSlotBackground);
+    p.ssym(0, 1.9);
+    p.poin(1, &x, &y, 4);
+    p.col0(c);
+    p.ssym(0, 1.5);
+    p.poin(1, &x, &y, 4);
+    p.poin(1, &x, &y, 5);
+    p.ssym(0, 1.0);
+    p.width(1.0);
+    legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, "#(850)");
+  }
+  p.col0(kSlotInk);
+  p.width(0.8);
+  p.box("bcnst", 0, 0, "bcnstv", 0, 0);
+  p.lab(pl_text(map.x_label).c_str(), pl_text(map.y_label).c_str(), pl_text(map.title).c_str());
+
+  if (has_values) {
+    PLINT label_opts[] = {PL_COLORBAR_LABEL_RIGHT};
+    const std::string z_label = pl_text(map.z_label);
+    const char* labels[] = {z_label.c_str()};
+    const char* axis_opts[] = {"bcvtm"};
+    PLFLT ticks[] = {0.0};
+    PLINT sub_ticks[] = {0};
+    PLINT n_values[] = {static_cast<PLINT>(levels.size())};
+    const PLFLT* values[] = {levels.data()};
+    PLFLT w = 0, h = 0;
+    p.colorbar(&w, &h, PL_COLORBAR_SHADE | PL_COLORBAR_SHADE_LABEL, 0, 0.015, 0.0, 0.04, 1.0,
+               kSlotBackground, kSlotInk, 1, 0.0, 0.0, 0, 0.0, 1, label_opts, labels, 1,
+               axis_opts, ticks, sub_ticks, n_values, values);
+  }
+  legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0, 0.13, 2);
+  page.finish(svg);
+}
+
+}  // namespace armstudy::report

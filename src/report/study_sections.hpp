@@ -1,0 +1,39 @@
+#pragma once
+/// Per-study parts of a case page: each reads its study's section of results.json and adds
+/// sections (method, results tables, plots, notes on the source document) to the page.
+/// Missing keys are tolerated (shown as "n/a" or left out), never invented.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/page.hpp"
+
+namespace armstudy::report {
+
+/// results[study] of a placement case -> sections. @throws what the plot writers throw.
+void placement_sections(const nlohmann::json& results, FigureWriter& figures, CasePage& page);
+/// results[study] of a pendulum case -> sections.
+void pendulum_sections(const nlohmann::json& results, FigureWriter& figures, CasePage& page);
+/// results[study] of a throwing case -> sections.
+void throwing_sections(const nlohmann::json& results, FigureWriter& figures, CasePage& page);
+/// results[study] of a time-optimal case -> sections.
+void time_optimal_sections(const nlohmann::json& results, FigureWriter& figures, CasePage& page);
+/// Any study section: its scalar results as a table and every time series found (an object
+/// with a "t_s" array) as plots. Used for studies without their own builder and for the
+/// parts of a section a builder does not know.
+void generic_sections(const nlohmann::json& section, FigureWriter& figures, CasePage& page);
+
+/// Plots of every time series below `node` (objects holding a "t_s" array): one plot per
+/// quantity, the series of different owners (optimum, solver, ...) overlaid in their
+/// colours. Keys in `skip` are not plotted. Returns the number of figures added.
+int time_series_figures(const nlohmann::json& node, const std::string& what, FigureWriter& figures,
+                        Section& section, const std::vector<std::string>& skip = {});
+
+/// Axis label of a results.json key by its unit suffix: "energy_J" -> "energy (J)",
+/// "q_rad" -> "q (rad)", "phi_deg" -> "phi (deg)".
+std::string label_from_key(const std::string& key);
+
+}  // namespace armstudy::report
