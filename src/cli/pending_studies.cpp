@@ -11,13 +11,11 @@ std::unique_ptr<StudyRun> not_available(cases::Map& root, const cases::CaseInfo&
   for (const auto& kv : root.node()) root.get(kv.first.Scalar());
   return nullptr;
 }
-constexpr char kPlacement[] = "placement";
 constexpr char kPendulum[] = "pendulum";
 constexpr char kThrowing[] = "throwing";
 constexpr char kTimeOptimal[] = "time_optimal";
 }  // namespace
 
-StudyEntry placement_entry() { return {"placement", "(not available yet)", &not_available<kPlacement>}; }
 StudyEntry pendulum_entry() { return {"pendulum", "(not available yet)", &not_available<kPendulum>}; }
 StudyEntry throwing_entry() { return {"throwing", "(not available yet)", &not_available<kThrowing>}; }
 StudyEntry time_optimal_entry() {

@@ -1,0 +1,163 @@
+#include "cases/placement_case.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "cases/arm_loader.hpp"
+#include "studies/placement/geometry.hpp"
+
+namespace armstudy::cases {
+namespace {
+constexpr double kDeg = core::kPi / 180.0;
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+}  // namespace
+
+core::PlanarChain placement_default_arm() {
+  core::PlanarChain c;
+  c.links = {{0.4, 4.0, 0.2, 0.0, core::uniform_rod_inertia(4.0, 0.4), true},
+             {0.2, 2.0, 0.1, 0.0, core::uniform_rod_inertia(2.0, 0.2), true}};
+  c.point_masses = {{1, 0.2, 0.0, 1.0}};
+  c.gravity = 0.0;
+  return core::make_chain(c);
+}
+
+studies::placement::Spec load_placement(Map& root) {
+  namespace pl = studies::placement;
+  pl::Spec spec;
+  spec.chain = load_arm(root, placement_default_arm(), 2);
+  if (spec.chain.gravity != 0.0) {
+    root.error("gravity", "'gravity' is " + fmt(spec.chain.gravity) +
+                              " m/s^2; expected 0: the placement study is a horizontal plane");
+  }
+  for (int i = 0; i < spec.chain.num_links(); ++i) {
+    if (!spec.chain.links[i].active) {
+      root.error("arm", "'arm.links[" + std::to_string(i + 1) +
+                            "]' has a passive joint; expected both joints active for a placement study");
+    }
+  }
+  const pl::Annulus an = pl::annulus(spec.chain.links[0].length, spec.chain.links[1].length);
+
+  auto p = root.map("placement");
+  if (!p) {
+    if (!root.has("placement"))
+      root.error_here("missing required key 'placement'; expected the placement task (length_fraction "
+                      "or length_m, ...)");
+    return spec;
+  }
+  // task: exactly one of length_fraction and length_m
+  const bool has_fraction = p->has("length_fraction"), has_length = p->has("length_m");
+  if (has_fraction && has_length) {
+    p->error("length_m", "'placement.length_m' and 'placement.length_fraction' are both given; "
+                         "expected exactly one of them");
+  } else if (!has_fraction && !has_length) {
+    p->error_here("missing required key 'placement.length_fraction' (or 'placement.length_m'); "
+                  "expected the line length");
+  }
+  if (has_fraction) {
+    if (const auto f = p->number("length_fraction", NumberRule::range(0.0, 1.0, ""))) {
+      if (*f <= 0) {
+        p->error("length_fraction", "'placement.length_fraction' is " + fmt(*f) + "; expected a fraction in (0, 1] of Lmax");
+      }
+      spec.length = *f * an.lmax;
+    }
+  }
+  if (has_length) {
+    if (const auto L = p->number("length_m", NumberRule::positive("m"))) {
+      spec.length = *L;
+      if (*L > an.lmax * (1 + 1e-12)) {
+        p->error("length_m", "'placement.length_m' is " + fmt(*L) + " m, longer than Lmax = 4 sqrt(L1 L2) = " +
+                                 fmt(an.lmax) + " m of this arm; expected 0 < length_m <= " + fmt(an.lmax));
+      }
+    }
+  }
+  spec.duration = p->number_or("duration_s", 1.0, NumberRule::positive("s"));
+
+  if (auto progs = p->seq("programs")) {
+    spec.programs.clear();
+    const auto names = core::program_names();
+    for (size_t i = 0; i < progs->size(); ++i) {
+      const YAML::Node n = progs->at(i);
+      const std::string name = n.IsScalar() ? n.Scalar() : "";
+      const auto prog = core::parse_program(name);
+      if (!prog) {
+        std::string list;
+        for (const auto& s : names) list += (list.empty() ? "" : ", ") + s;
+        std::string msg = "'" + progs->path_at(i) + "' is '" + name + "'; expected one of: " + list;
+        if (const auto c = closest(name, names)) msg += " (did you mean '" + *c + "'?)";
+        progs->diag().error(n.Mark(), msg);
+        continue;
+      }
+      spec.programs.push_back(*prog);
+    }
+    if (progs->size() == 0) p->error("programs", "'placement.programs' is empty; expected at least one program");
+  }
+  if (auto cfgs = p->numbers("configurations", NumberRule::range(1, 2, ""))) {
+    spec.configurations.clear();
+    for (size_t i = 0; i < cfgs->size(); ++i) {
+      const double c = (*cfgs)[i];
+      if (c != 1.0 && c != 2.0) {
+        p->error("configurations", "'placement.configurations[" + std::to_string(i + 1) + "]' is " + fmt(c) +
+                                       "; expected 1 or 2");
+        continue;
+      }
+      spec.configurations.push_back(int(c));
+    }
+  }
+  spec.nx_s = p->integer_or("nx_s", 50, 1, 10000);
+  spec.phi_step = p->number_or("phi_step_deg", 1.0, NumberRule::range(1e-3, 45.0, "deg")) * kDeg;
+  if (!(spec.phi_step > 0)) spec.phi_step = kDeg;  // an error was recorded
+  spec.samples = p->integer_or("samples", 401, 21, 100001);
+  spec.singularity_margin = p->number_or("singularity_margin_m", 0.01, NumberRule::positive("m"));
+  if (std::isfinite(spec.singularity_margin) && spec.singularity_margin >= (an.outer - an.inner) / 2) {
+    p->error("singularity_margin_m", "'placement.singularity_margin_m' is " + fmt(spec.singularity_margin) +
+                                         " m; expected less than half the annulus width, " +
+                                         fmt((an.outer - an.inner) / 2) + " m");
+  }
+  if (const auto t = p->numbers("torque_limits_Nm", NumberRule::positive("N m"), 2))
+    spec.torque_limit = std::array<double, 2>{(*t)[0], (*t)[1]};
+  if (const auto w = p->numbers("power_limits_W", NumberRule::positive("W"), 2))
+    spec.power_limit = std::array<double, 2>{(*w)[0], (*w)[1]};
+  spec.refine = p->boolean_or("refine", true);
+  if (auto m = p->map("map")) {
+    spec.map_nx = m->integer_or("nx", 200, 2, 1000);
+    spec.map_ny = m->integer_or("ny", 100, 2, 1000);
+    m->finish();
+  }
+  if (auto ev = p->seq("evaluate")) {
+    for (size_t i = 0; i < ev->size(); ++i) {
+      auto e = ev->map_at(i);
+      if (!e) continue;
+      pl::EvaluationSpec es;
+      es.label = e->string_or("label", "placement " + std::to_string(i + 1));
+      const bool line = e->has("x_s_m") || e->has("phi_deg"), rootxy = e->has("root_xy_m");
+      if (line && rootxy) {
+        e->error("root_xy_m", "'" + e->path_of("root_xy_m") +
+                                  "' and 'x_s_m'/'phi_deg' are both given; expected one placement");
+      } else if (rootxy) {
+        if (const auto r = e->numbers("root_xy_m", NumberRule::any("m"), 2)) {
+          const Eigen::Vector2d lp = pl::line_of_root({(*r)[0], (*r)[1]});
+          es.x_s = lp[0];
+          es.phi = lp[1];
+        }
+      } else if (line) {
+        es.x_s = e->required_number("x_s_m", NumberRule::positive("m"));
+        es.phi = e->required_number("phi_deg", NumberRule::range(-360.0, 360.0, "deg")) * kDeg;
+      } else {
+        e->error_here("'" + ev->path_at(i) + "' gives no placement; expected x_s_m and phi_deg, or root_xy_m");
+      }
+      e->finish();
+      spec.evaluations.push_back(es);
+    }
+  }
+  spec.threads = p->integer_or("threads", 0, 0, 256);
+  p->finish();
+  return spec;
+}
+
+}  // namespace armstudy::cases

@@ -1,0 +1,337 @@
+// The placement study in the pipeline: case -> studies::placement::solve -> results.json.
+//
+// results.json "placement" section (SI; keys ending in _deg are degrees):
+//   lmax_m, length_m, length_fraction, duration_s, samples, singularity_margin_m,
+//   annulus_m [inner, outer], torque_limits_Nm / power_limits_W (null when not given),
+//   thesis_intervals {x_s_case, x_s_init_m, x_s_fin_m},
+//   counts {total, unreachable, singular, clear, thesis_admitted, thesis_rejected_by_exact_check,
+//           exact_accepted_outside_thesis}: the geometric sweep (x_s grid x phi in [0, 180] deg),
+//   optima [{program, configuration, energy_J, x_s_m, phi_deg, root_xy_m [X, Y], grid_energy_J,
+//            grid_x_s_m, grid_phi_deg, min_abs_sin_elbow, boundary_distance_m,
+//            peak_torque_Nm [j1, j2], peak_power_W [j1, j2], signed_work_J, singular (false),
+//            refine_evaluations, line_start_m, line_end_m (arm frame), counts {...}, series}],
+//   unsolved [{program, configuration, reason}]: pairs without an admissible placement,
+//   thesis_search [{program, configuration, energy_J, x_s_m, phi_deg, root_xy_m, status,
+//                   singular, boundary_distance_m, min_abs_sin_elbow}]: the least energy among
+//                   the thesis's own candidates (4.7-4.13), whatever their status,
+//   evaluations [{label, program, configuration, x_s_m, phi_deg, root_xy_m, energy_J, status,
+//                 singular, boundary_distance_m, min_abs_sin_elbow, peak_torque_Nm,
+//                 saving_J, saving_percent, series}],
+//   curves [{program, configuration, x_s_m, phi_deg [...], energy_J [... null], status "..."}],
+//   pareto [{program, configuration, joint (1 or 2), peak_torque_Nm [[j1, j2] ...],
+//            energy_J [...], x_s_m [...], phi_deg [...], singular [...]}] (thinned to steps
+//            of >= 0.2 % in energy),
+//   maps [{program, configuration, x_m [...], y_m [...], optimum_xy_m, encoding,
+//          energy_J_rows ["e e e ...", ...], status_rows ["..sxo", ...]}]: row j is y_m[j];
+//          energies at 4 significant digits, '-' where unreachable; status characters
+//          '.' unreachable, 's' singular, 'x' over a limit, 'o' feasible. Maps are rows of
+//          text so that a 200 x 100 map stays ~100 kB and one line per row;
+//   convergence {program, configuration, rows [{samples, energy_J}]},
+//   solve_seconds, samples_evaluated.
+// series: {stride, t_s, q1_rad, q2_rad, qd1_rad_s, qd2_rad_s, qdd1_rad_s2, qdd2_rad_s2,
+//          tau1_Nm, tau2_Nm, power1_W, power2_W, energy_J} every `stride`-th sample (<= 101
+//          points; the full series is in the Result for the scene).
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "cases/placement_case.hpp"
+#include "cli/pipeline.hpp"
+#include "report/case_report.hpp"
+#include "core/motion_program.hpp"
+#include "studies/placement/solve.hpp"
+
+namespace armstudy::app {
+namespace {
+namespace pl = studies::placement;
+using nlohmann::json;
+constexpr double kDeg = core::kPi / 180.0;
+
+// a number rounded to `digits` significant digits (JSON stays short and stable)
+double sig(double v, int digits = 7) {
+  if (!std::isfinite(v) || v == 0.0) return v;
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return std::strtod(buf, nullptr);
+}
+
+json num(double v, int digits = 7) { return std::isfinite(v) ? json(sig(v, digits)) : json(nullptr); }
+
+json pair(const Eigen::Vector2d& v, int digits = 7) { return json::array({num(v.x(), digits), num(v.y(), digits)}); }
+
+json series_json(const pl::TimeSeries& s) {
+  json j;
+  const size_t n = s.t.size();
+  const size_t stride = n > 101 ? (n - 1 + 99) / 100 : 1;
+  j["stride"] = stride;
+  json t = json::array(), q1 = json::array(), q2 = json::array(), qd1 = json::array(), qd2 = json::array(),
+       a1 = json::array(), a2 = json::array(), u1 = json::array(), u2 = json::array(), p1 = json::array(),
+       p2 = json::array(), e = json::array();
+  for (size_t k = 0; k < n; k += stride) {
+    t.push_back(num(s.t[k], 6));
+    q1.push_back(num(s.q[k][0], 6));
+    q2.push_back(num(s.q[k][1], 6));
+    qd1.push_back(num(s.qd[k][0], 6));
+    qd2.push_back(num(s.qd[k][1], 6));
+    a1.push_back(num(s.qdd[k][0], 6));
+    a2.push_back(num(s.qdd[k][1], 6));
+    u1.push_back(num(s.tau[k][0], 6));
+    u2.push_back(num(s.tau[k][1], 6));
+    p1.push_back(num(s.power[k][0], 6));
+    p2.push_back(num(s.power[k][1], 6));
+    e.push_back(num(s.energy[k], 6));
+    if (k + stride >= n && k != n - 1) k = n - 1 - stride;  // always end on the last sample
+  }
+  j["t_s"] = t;
+  j["q1_rad"] = q1;
+  j["q2_rad"] = q2;
+  j["qd1_rad_s"] = qd1;
+  j["qd2_rad_s"] = qd2;
+  j["qdd1_rad_s2"] = a1;
+  j["qdd2_rad_s2"] = a2;
+  j["tau1_Nm"] = u1;
+  j["tau2_Nm"] = u2;
+  j["power1_W"] = p1;
+  j["power2_W"] = p2;
+  j["energy_J"] = e;
+  return j;
+}
+
+json counts_json(const pl::Counts& c) {
+  return {{"total", c.total},
+          {"unreachable", c.unreachable},
+          {"singular", c.singular},
+          {"over_limit", c.over_limit},
+          {"feasible", c.feasible},
+          {"thesis_admitted", c.thesis_total},
+          {"thesis_rejected_by_exact_check", c.thesis_rejected},
+          {"exact_accepted_outside_thesis", c.exact_outside_thesis}};
+}
+
+std::string prog(core::MotionProgram p) { return std::string(core::program_name(p)); }
+
+class PlacementRun final : public StudyRun {
+ public:
+  explicit PlacementRun(pl::Spec spec) : spec_(std::move(spec)) {}
+
+  studies::Status solve(const studies::ProgressFn& progress) override {
+    result_ = pl::solve(spec_, progress);
+    return result_.status;
+  }
+  std::string message() const override { return result_.message; }
+  std::vector<studies::Check> checks() const override { return result_.checks; }
+  // the study report (issue 7): one call, everything else is src/report's
+  void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
+              const nlohmann::json& results_json) override {
+    report::write_case_report(dir, info, results_json);
+  }
+  nlohmann::json results() const override;
+  // render(): the scene engineer replays result_.cases[i].series / placement here.
+
+ private:
+  pl::Spec spec_;
+  pl::Result result_;
+};
+
+json PlacementRun::results() const {
+  const pl::Result& r = result_;
+  json j;
+  j["lmax_m"] = num(r.lmax);
+  j["length_m"] = num(r.length);
+  j["length_fraction"] = num(r.lmax > 0 ? r.length / r.lmax : 0.0);
+  j["duration_s"] = num(spec_.duration);
+  j["samples"] = spec_.samples;
+  j["singularity_margin_m"] = num(spec_.singularity_margin);
+  j["annulus_m"] = json::array({num(r.inner), num(r.outer)});
+  j["torque_limits_Nm"] = spec_.torque_limit
+                              ? json::array({(*spec_.torque_limit)[0], (*spec_.torque_limit)[1]})
+                              : json(nullptr);
+  j["power_limits_W"] = spec_.power_limit
+                            ? json::array({(*spec_.power_limit)[0], (*spec_.power_limit)[1]})
+                            : json(nullptr);
+  j["thesis_intervals"] = {{"x_s_case", r.thesis_xs_case},
+                           {"x_s_init_m", num(r.xs_init)},
+                           {"x_s_fin_m", num(r.xs_fin)}};
+  if (!r.cases.empty()) {
+    const pl::Counts& c = r.cases.front().counts;
+    j["counts"] = {{"total", c.total},
+                   {"unreachable", c.unreachable},
+                   {"singular", c.singular},
+                   {"clear", c.feasible + c.over_limit},
+                   {"thesis_admitted", c.thesis_total},
+                   {"thesis_rejected_by_exact_check", c.thesis_rejected},
+                   {"exact_accepted_outside_thesis", c.exact_outside_thesis}};
+  }
+  json optima = json::array(), unsolved = json::array(), thesis = json::array(), curves = json::array(),
+       pareto = json::array(), maps = json::array();
+  for (const pl::ProgramConfig& pc : r.cases) {
+    const json id = {{"program", prog(pc.program)}, {"configuration", pc.configuration}};
+    if (pc.found) {
+      const pl::Candidate& c = pc.refined;
+      json o = id;
+      o["energy_J"] = num(c.metrics.energy);
+      o["x_s_m"] = num(c.x_s);
+      o["phi_deg"] = num(c.phi / kDeg);
+      o["root_xy_m"] = pair(c.root);
+      o["grid_energy_J"] = num(pc.grid.metrics.energy);
+      o["grid_x_s_m"] = num(pc.grid.x_s);
+      o["grid_phi_deg"] = num(pc.grid.phi / kDeg);
+      o["min_abs_sin_elbow"] = num(c.min_abs_sin);
+      o["boundary_distance_m"] = num(c.boundary_distance);
+      o["peak_torque_Nm"] = json::array({num(c.metrics.peak_torque[0]), num(c.metrics.peak_torque[1])});
+      o["peak_power_W"] = json::array({num(c.metrics.peak_power[0]), num(c.metrics.peak_power[1])});
+      o["signed_work_J"] = num(c.metrics.signed_work, 3);
+      o["singular"] = c.status != pl::CandidateStatus::kFeasible;
+      o["refine_evaluations"] = pc.refine_evaluations;
+      o["line_start_m"] = pair(pc.placement.start);
+      o["line_end_m"] = pair(pc.placement.end);
+      o["counts"] = counts_json(pc.counts);
+      o["series"] = series_json(pc.series);
+      optima.push_back(o);
+    } else {
+      json u = id;
+      u["reason"] = pc.reason;
+      u["counts"] = counts_json(pc.counts);
+      unsolved.push_back(u);
+    }
+    if (pc.thesis_found) {
+      const pl::Candidate& c = pc.thesis_best;
+      json t = id;
+      t["energy_J"] = num(c.metrics.energy);
+      t["x_s_m"] = num(c.x_s);
+      t["phi_deg"] = num(c.phi / kDeg);
+      t["root_xy_m"] = pair(c.root);
+      t["status"] = pl::status_name(c.status);
+      t["singular"] = c.status == pl::CandidateStatus::kSingular;
+      t["boundary_distance_m"] = num(c.boundary_distance, 4);
+      t["min_abs_sin_elbow"] = num(c.min_abs_sin, 4);
+      thesis.push_back(t);
+    }
+    {
+      json cj = id;
+      cj["x_s_m"] = num(pc.curve.x_s);
+      json phi = json::array(), e = json::array();
+      std::string st;
+      for (size_t k = 0; k < pc.curve.phi.size(); ++k) {
+        phi.push_back(num(pc.curve.phi[k] / kDeg, 6));
+        e.push_back(num(pc.curve.energy[k], 5));
+        st += pl::status_char(pc.curve.status[k]);
+      }
+      cj["phi_deg"] = phi;
+      cj["energy_J"] = e;
+      cj["status"] = st;
+      curves.push_back(cj);
+    }
+    for (int joint = 0; joint < 2; ++joint) {
+      json pj = id;
+      pj["joint"] = joint + 1;
+      json pk = json::array(), e = json::array(), xs = json::array(), ph = json::array(), sg = json::array();
+      const auto& front = pc.pareto[joint];
+      double last = std::numeric_limits<double>::infinity();
+      for (size_t k = 0; k < front.size(); ++k) {
+        // thin: keep the first, the last, and steps of >= 0.2 % in energy
+        if (k != 0 && k + 1 != front.size() && front[k].energy > last * (1 - 2e-3)) continue;
+        last = front[k].energy;
+        pk.push_back(json::array({num(front[k].peak_torque[0], 5), num(front[k].peak_torque[1], 5)}));
+        e.push_back(num(front[k].energy, 6));
+        xs.push_back(num(front[k].x_s, 6));
+        ph.push_back(num(front[k].phi / kDeg, 6));
+        sg.push_back(front[k].singular);
+      }
+      pj["peak_torque_Nm"] = pk;
+      pj["energy_J"] = e;
+      pj["x_s_m"] = xs;
+      pj["phi_deg"] = ph;
+      pj["singular"] = sg;
+      pareto.push_back(pj);
+    }
+    {
+      const pl::EnergyMap& m = pc.map;
+      json mj = id;
+      json x = json::array(), y = json::array(), er = json::array(), sr = json::array();
+      for (double v : m.x) x.push_back(num(v, 6));
+      for (double v : m.y) y.push_back(num(v, 6));
+      const size_t nx = m.x.size();
+      for (size_t row = 0; row < m.y.size(); ++row) {
+        std::string e, s;
+        for (size_t i = 0; i < nx; ++i) {
+          const float v = m.energy[row * nx + i];
+          if (i) e += ' ';
+          if (std::isfinite(v)) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.4g", double(v));
+            e += buf;
+          } else {
+            e += '-';
+          }
+          s += pl::status_char(m.status[row * nx + i]);
+        }
+        er.push_back(e);
+        sr.push_back(s);
+      }
+      mj["x_m"] = x;
+      mj["y_m"] = y;
+      mj["optimum_xy_m"] = pc.found ? pair(pc.refined.root) : json(nullptr);
+      mj["encoding"] =
+          "row j is y_m[j]; energy_J_rows: space-separated energies in J at 4 significant digits, "
+          "'-' where unreachable; status_rows: '.' unreachable, 's' singular, 'x' over a limit, "
+          "'o' feasible; Y < 0 is the mirror image with the configurations swapped";
+      mj["energy_J_rows"] = er;
+      mj["status_rows"] = sr;
+      maps.push_back(mj);
+    }
+  }
+  j["optima"] = optima;
+  j["unsolved"] = unsolved;
+  j["thesis_search"] = thesis;
+  json evals = json::array();
+  for (const pl::Evaluation& e : r.evaluations) {
+    json ej = {{"label", e.label}, {"program", prog(e.program)}, {"configuration", e.configuration}};
+    const pl::Candidate& c = e.candidate;
+    ej["x_s_m"] = num(c.x_s);
+    ej["phi_deg"] = num(c.phi / kDeg);
+    ej["root_xy_m"] = pair(c.root);
+    const bool reachable = c.status != pl::CandidateStatus::kUnreachable;
+    ej["energy_J"] = reachable ? num(c.metrics.energy) : json(nullptr);
+    ej["status"] = pl::status_name(c.status);
+    ej["singular"] = c.status == pl::CandidateStatus::kSingular;
+    ej["boundary_distance_m"] = num(c.boundary_distance, 5);
+    ej["min_abs_sin_elbow"] = num(c.min_abs_sin, 5);
+    ej["peak_torque_Nm"] = reachable ? json::array({num(c.metrics.peak_torque[0]), num(c.metrics.peak_torque[1])})
+                                     : json(nullptr);
+    ej["saving_J"] = e.has_saving ? num(e.saving) : json(nullptr);
+    ej["saving_percent"] = e.has_saving ? num(e.saving_percent, 5) : json(nullptr);
+    ej["line_start_m"] = pair(e.placement.start);
+    ej["line_end_m"] = pair(e.placement.end);
+    if (!e.series.t.empty()) ej["series"] = series_json(e.series);
+    evals.push_back(ej);
+  }
+  j["evaluations"] = evals;
+  j["curves"] = curves;
+  j["pareto"] = pareto;
+  j["maps"] = maps;
+  json conv = json::array();
+  for (const auto& row : r.convergence) conv.push_back({{"samples", row.samples}, {"energy_J", num(row.energy, 10)}});
+  for (const auto& pc : r.cases) {
+    if (!pc.found) continue;
+    j["convergence"] = {{"program", prog(pc.program)}, {"configuration", pc.configuration}, {"rows", conv}};
+    break;
+  }
+  j["solve_seconds"] = num(r.seconds, 3);
+  j["samples_evaluated"] = r.samples_evaluated;
+  return j;
+}
+
+std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
+  pl::Spec spec = cases::load_placement(root);
+  if (!root.diag().empty()) return nullptr;
+  return std::make_unique<PlacementRun>(std::move(spec));
+}
+
+}  // namespace
+
+StudyEntry placement_entry() {
+  return {"placement", "energy-optimal root location of a 2-link arm for a straight-line task", &load};
+}
+
+}  // namespace armstudy::app

@@ -1,0 +1,149 @@
+#pragma once
+/// The placement study's answer: plain data for the scene (replay of every optimum and
+/// evaluated placement) and the report (tables, maps, curves, Pareto front).
+///
+/// Frames (see geometry.hpp): the arm's frame A (root at the origin, the thesis's lines
+/// start at (x_s, 0)); the line frame P (origin at the line's start, X along the line).
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/motion_program.hpp"
+#include "studies/common.hpp"
+#include "studies/placement/arm2.hpp"
+
+namespace armstudy::studies::placement {
+
+/// Class of a candidate line, most severe first.
+enum class CandidateStatus : std::uint8_t {
+  kUnreachable,  ///< part of the line lies outside the annulus: no motion exists
+  kSingular,     ///< inside, but closer to a boundary than the singularity margin
+  kOverLimit,    ///< clear of the boundaries, but breaks a torque or power limit
+  kFeasible,     ///< an admissible placement
+};
+
+/// One character per status, as in the map rows: '.', 's', 'x', 'o'.
+char status_char(CandidateStatus s);
+/// "unreachable", "singular", "over_limit", "feasible".
+const char* status_name(CandidateStatus s);
+
+/// A candidate placement with its metrics (for one program and configuration).
+struct Candidate {
+  double x_s = 0;   ///< m
+  double phi = 0;   ///< rad
+  Eigen::Vector2d root = Eigen::Vector2d::Zero();  ///< m, root (X, Y) in the line frame (4.14)
+  CandidateStatus status = CandidateStatus::kUnreachable;
+  double boundary_distance = 0;  ///< m, exact (< 0: unreachable)
+  double min_abs_sin = 0;        ///< exact smallest |sin q2| along the line
+  LineMetrics metrics;           ///< energy, signed work, peaks (unset when unreachable)
+};
+
+/// Where the arm and the line are, for a renderer: everything in the arm's frame A.
+struct Placement {
+  Eigen::Vector2d start = Eigen::Vector2d::Zero();  ///< m, line start S
+  Eigen::Vector2d end = Eigen::Vector2d::Zero();    ///< m, line end F = S + L u (8.4)
+  Eigen::Vector2d root_in_line_frame = Eigen::Vector2d::Zero();  ///< m, (X, Y)
+};
+
+/// Candidate counts of one sweep.
+struct Counts {
+  int total = 0;        ///< candidates of the full sweep (x_s grid x phi in [0, 180] deg)
+  int unreachable = 0;
+  int singular = 0;
+  int over_limit = 0;
+  int feasible = 0;
+  int thesis_total = 0;     ///< candidates the thesis's intervals (4.7-4.13) generate
+  int thesis_rejected = 0;  ///< of those, rejected by the exact check (unreachable or singular)
+  int exact_outside_thesis = 0;  ///< full-sweep candidates the exact check accepts that lie
+                                 ///< outside the thesis's phi interval
+};
+
+/// The energy over root locations (X, Y) in the line frame, on a node grid; row-major,
+/// row j is Y = y[j], column i is X = x[i]. Y >= 0 only: the half-plane Y < 0 is the mirror
+/// image with configurations 1 and 2 swapped.
+struct EnergyMap {
+  std::vector<double> x, y;  ///< m, node coordinates
+  std::vector<float> energy;               ///< J (NaN where unreachable), ny * nx
+  std::vector<CandidateStatus> status;     ///< ny * nx
+  std::vector<float> peak_torque;          ///< N m, max over both joints (NaN if unreachable)
+};
+
+/// Energy versus direction angle at one start abscissa (the thesis's Fig. 9.11 etc.).
+struct PhiCurve {
+  double x_s = 0;              ///< m
+  std::vector<double> phi;     ///< rad
+  std::vector<double> energy;  ///< J (NaN where unreachable)
+  std::vector<CandidateStatus> status;
+};
+
+/// A point of a Pareto front: the least energy of any reachable candidate whose peak torque
+/// of the front's joint is at most peak_torque[joint].
+struct ParetoPoint {
+  double peak_torque[2] = {0, 0};  ///< N m, peak |tau| of joints 1 and 2 of this candidate
+  double energy = 0;       ///< J
+  double x_s = 0, phi = 0; ///< m, rad
+  bool singular = false;   ///< closer to a boundary than the margin (sampled peak: a lower bound)
+};
+
+/// Everything found for one motion program and configuration.
+struct ProgramConfig {
+  core::MotionProgram program = core::MotionProgram::kCycloidal;
+  int configuration = 1;
+  Counts counts;
+  bool found = false;      ///< an admissible optimum exists
+  std::string reason;      ///< why not, when !found
+  Candidate grid;          ///< best feasible candidate of the sweep
+  Candidate refined;       ///< after the local refinement (== grid when not refined)
+  int refine_evaluations = 0;
+  Placement placement;     ///< of the refined optimum
+  TimeSeries series;       ///< of the refined optimum
+  bool thesis_found = false;
+  Candidate thesis_best;   ///< least energy among the thesis's own candidates, any status
+  EnergyMap map;
+  PhiCurve curve;          ///< at the grid optimum's x_s (or the thesis's first x_s)
+  /// Pareto fronts of (peak torque of joint j, energy), j = 0 (root), 1 (elbow), over every
+  /// reachable candidate (margin ignored: the front shows what the margin costs); by
+  /// increasing peak torque of that joint and decreasing energy
+  std::array<std::vector<ParetoPoint>, 2> pareto;
+};
+
+/// A fixed placement the case asked for, with its saving against the optimum.
+struct Evaluation {
+  std::string label;
+  core::MotionProgram program = core::MotionProgram::kCycloidal;
+  int configuration = 1;
+  Candidate candidate;
+  Placement placement;
+  TimeSeries series;     ///< empty when unreachable
+  bool has_saving = false;
+  double saving = 0;         ///< J, energy minus the refined optimum's
+  double saving_percent = 0; ///< % of this placement's energy
+};
+
+/// One row of the convergence table: the optimum's energy with more samples.
+struct ConvergenceRow {
+  int samples = 0;
+  double energy = 0;  ///< J
+};
+
+struct Result {
+  Status status = Status::kSolved;
+  std::string message;
+  double lmax = 0;       ///< m, 4 sqrt(L1 L2) (4.6)
+  double length = 0;     ///< m
+  double inner = 0, outer = 0;  ///< m, annulus radii
+  double xs_init = 0, xs_fin = 0;  ///< m, the thesis's start-point interval
+  int thesis_xs_case = 0;
+  std::vector<ProgramConfig> cases;  ///< programs x configurations, in the spec's order
+  std::vector<Evaluation> evaluations;
+  std::vector<ConvergenceRow> convergence;  ///< of the first found optimum
+  std::vector<Check> checks;
+  double seconds = 0;  ///< wall time of the solve
+  long long samples_evaluated = 0;
+};
+
+}  // namespace armstudy::studies::placement

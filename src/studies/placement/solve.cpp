@@ -1,0 +1,533 @@
+#include "studies/placement/solve.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include <nlopt.hpp>
+
+#include "core/check.hpp"
+#include "studies/grid.hpp"
+#include "studies/placement/geometry.hpp"
+
+namespace armstudy::studies::placement {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kDeg = core::kPi / 180.0;
+constexpr double kTouch = 1e-9;  // m, a line this far outside the annulus touches it
+
+// which candidate set a geometric candidate belongs to
+enum class Set : std::uint8_t { kSweep, kThesis, kMap };
+
+struct GeoCandidate {
+  double x_s = 0, phi = 0;
+  Line line;
+  LineCheck check;
+  Set set = Set::kSweep;
+  int i = 0, j = 0;  // sweep: (x_s index, phi index); map: (X index, Y index)
+  bool thesis_admits = false;  // sweep only: phi inside the thesis's interval
+};
+
+std::string fmt(double v, int precision = 4) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(precision);
+  os << v;
+  return os.str();
+}
+
+// runs body(i) for i in [0, n) on `threads` threads in chunks; the calling thread works too
+// and is the only one that reports progress
+template <typename Body>
+void parallel_for(long n, int threads, const ProgressFn& progress, double p0, double p1,
+                  std::string_view stage, Body body) {
+  constexpr long kChunk = 32;
+  std::atomic<long> next{0};
+  std::atomic<long> done{0};
+  const auto work = [&](bool report) {
+    for (;;) {
+      const long b = next.fetch_add(kChunk);
+      if (b >= n) break;
+      const long e = std::min(n, b + kChunk);
+      for (long i = b; i < e; ++i) body(i);
+      const long d = done.fetch_add(e - b) + (e - b);
+      if (report && progress) progress(p0 + (p1 - p0) * double(d) / double(n), stage);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, false);
+  work(true);
+  for (auto& t : pool) t.join();
+}
+
+bool within_limits(const Spec& spec, const LineMetrics& m) {
+  if (spec.torque_limit) {
+    for (int j = 0; j < 2; ++j)
+      if (m.peak_torque[j] > (*spec.torque_limit)[j]) return false;
+  }
+  if (spec.power_limit) {
+    for (int j = 0; j < 2; ++j)
+      if (m.peak_power[j] > (*spec.power_limit)[j]) return false;
+  }
+  return true;
+}
+
+Placement placement_of(const Line& line, double L) {
+  Placement p;
+  p.start = line.start;
+  p.end = line.start + L * line.dir;
+  p.root_in_line_frame = Eigen::Vector2d(-line.start.dot(line.dir),
+                                         -line.start.dot(Eigen::Vector2d(-line.dir.y(), line.dir.x())));
+  return p;
+}
+
+}  // namespace
+
+char status_char(CandidateStatus s) {
+  switch (s) {
+    case CandidateStatus::kUnreachable: return '.';
+    case CandidateStatus::kSingular: return 's';
+    case CandidateStatus::kOverLimit: return 'x';
+    case CandidateStatus::kFeasible: return 'o';
+  }
+  return '?';
+}
+
+const char* status_name(CandidateStatus s) {
+  switch (s) {
+    case CandidateStatus::kUnreachable: return "unreachable";
+    case CandidateStatus::kSingular: return "singular";
+    case CandidateStatus::kOverLimit: return "over_limit";
+    case CandidateStatus::kFeasible: return "feasible";
+  }
+  return "?";
+}
+
+CandidateStatus classify(const Spec& spec, double boundary_distance, const LineMetrics& m) {
+  // a line that touches a boundary within roundoff (e.g. the thesis's (4.10) line) is on it
+  if (boundary_distance < -kTouch) return CandidateStatus::kUnreachable;
+  // a line closer to a boundary than the margin, or a sample at a folded/stretched elbow
+  if (boundary_distance < spec.singularity_margin || !m.finite()) return CandidateStatus::kSingular;
+  if (!within_limits(spec, m)) return CandidateStatus::kOverLimit;
+  return CandidateStatus::kFeasible;
+}
+
+Candidate evaluate_candidate(const Spec& spec, const Arm2& arm, const ProgramTable& table,
+                             int configuration, double x_s, double phi) {
+  Candidate c;
+  c.x_s = x_s;
+  c.phi = phi;
+  c.root = root_in_line_frame(x_s, phi);
+  const Line line = thesis_line(x_s, phi);
+  const LineCheck chk = check_line(arm.L1, arm.L2, line, spec.length);
+  c.boundary_distance = chk.boundary_distance;
+  c.min_abs_sin = chk.min_abs_sin;
+  if (chk.boundary_distance >= -kTouch) c.metrics = evaluate_line(arm, table, line, configuration);
+  c.status = classify(spec, chk.boundary_distance, c.metrics);
+  return c;
+}
+
+Result solve(const Spec& spec, const ProgressFn& progress) {
+  const auto t_start = std::chrono::steady_clock::now();
+  ARM_THROW_UNLESS(spec.samples >= 3, "samples per trajectory " << spec.samples << " should be >= 3");
+  ARM_THROW_UNLESS(spec.nx_s >= 1, "nx_s " << spec.nx_s << " should be >= 1");
+  ARM_THROW_UNLESS(spec.phi_step > 0, "phi step " << spec.phi_step << " rad should be > 0");
+  ARM_THROW_UNLESS(spec.singularity_margin > 0,
+                   "singularity margin " << spec.singularity_margin << " m should be > 0");
+  ARM_THROW_UNLESS(spec.map_nx >= 2 && spec.map_ny >= 2, "map needs >= 2 x 2 nodes");
+  const Arm2 arm = make_arm2(spec.chain);
+  const Annulus an = annulus(arm.L1, arm.L2);
+  const double L = spec.length;
+  Result res;
+  res.lmax = an.lmax;
+  res.length = L;
+  res.inner = an.inner;
+  res.outer = an.outer;
+  if (!(L > 0) || L > an.lmax * (1 + 1e-12)) {
+    res.status = Status::kUnsolvable;
+    res.message = "line length " + fmt(L) + " m exceeds the longest line the arm can follow, Lmax = 4 sqrt(L1 L2) = " +
+                  fmt(an.lmax) + " m";
+    return res;
+  }
+  const int threads = spec.threads > 0 ? spec.threads
+                                       : std::max(1u, std::thread::hardware_concurrency());
+  const XsInterval xsi = thesis_xs_interval(an, L);
+  res.xs_init = xsi.init;
+  res.xs_fin = xsi.fin;
+  res.thesis_xs_case = xsi.thesis_case;
+
+  // the thesis's start points: x_s from init down to fin in nx_s steps (step 3 of Ch. 4)
+  const std::vector<double> xs =
+      xsi.init == xsi.fin ? std::vector<double>{xsi.init} : linspace(xsi.init, xsi.fin, spec.nx_s + 1);
+  // the full sweep of direction angles: [0, pi] in steps of phi_step, pi included
+  std::vector<double> phis;
+  for (int k = 0; k * spec.phi_step < core::kPi - 1e-9; ++k) phis.push_back(k * spec.phi_step);
+  phis.push_back(core::kPi);
+
+  // geometric candidates: full sweep, the thesis's own phi grids, map nodes
+  std::vector<GeoCandidate> geo;
+  const auto add = [&](double x_s, double phi, Set set, int i, int j) {
+    GeoCandidate g;
+    g.x_s = x_s;
+    g.phi = phi;
+    g.line = thesis_line(x_s, phi);
+    g.check = check_line(arm.L1, arm.L2, g.line, L);
+    g.set = set;
+    g.i = i;
+    g.j = j;
+    geo.push_back(g);
+    return geo.size() - 1;
+  };
+  const double tiny = 1e-9;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    const PhiInterval pi = thesis_phi_interval(an, L, xs[i]);
+    for (size_t j = 0; j < phis.size(); ++j) {
+      const size_t k = add(xs[i], phis[j], Set::kSweep, int(i), int(j));
+      geo[k].thesis_admits = phis[j] >= pi.init - tiny && phis[j] <= pi.fin + tiny;
+    }
+    // the thesis's grid: phi_init + k dphi up to phi_fin, phi_fin included (steps 4-5)
+    if (pi.fin >= pi.init) {
+      int k = 0;
+      for (; pi.init + k * spec.phi_step < pi.fin - tiny; ++k)
+        add(xs[i], pi.init + k * spec.phi_step, Set::kThesis, int(i), k);
+      add(xs[i], pi.fin, Set::kThesis, int(i), k);
+    }
+  }
+  // map nodes over the region where both ends can be reached: X in [L - R, R], Y in [0, R]
+  const std::vector<double> mx = linspace(L - an.outer, an.outer, spec.map_nx);
+  const std::vector<double> my = linspace(0.0, an.outer, spec.map_ny);
+  const size_t map_begin = geo.size();
+  for (int j = 0; j < spec.map_ny; ++j) {
+    for (int i = 0; i < spec.map_nx; ++i) {
+      const Eigen::Vector2d lp = line_of_root({mx[i], my[j]});
+      add(lp[0], lp[1], Set::kMap, i, j);
+    }
+  }
+
+  // program tables and the (program, configuration) pairs
+  std::vector<ProgramTable> tables;
+  for (const auto p : spec.programs) tables.push_back(make_program_table(p, spec.duration, L, spec.samples));
+  struct Pc { int program; int configuration; };
+  std::vector<Pc> pcs;
+  for (size_t p = 0; p < spec.programs.size(); ++p)
+    for (const int c : spec.configurations) pcs.push_back({int(p), c});
+
+  // the sweep: every reachable geometric candidate for every pair, on all threads
+  std::vector<int> reachable;
+  for (size_t k = 0; k < geo.size(); ++k)
+    if (geo[k].check.boundary_distance >= -kTouch) reachable.push_back(int(k));
+  const long n_tasks = long(reachable.size()) * long(pcs.size());
+  std::vector<LineMetrics> metrics(geo.size() * pcs.size());
+  parallel_for(n_tasks, threads, progress, 0.0, 0.8, "placement sweep", [&](long t) {
+    const size_t pc = size_t(t / long(reachable.size()));
+    const int k = reachable[size_t(t % long(reachable.size()))];
+    metrics[pc * geo.size() + k] =
+        evaluate_line(arm, tables[pcs[pc].program], geo[k].line, pcs[pc].configuration);
+  });
+  res.samples_evaluated += n_tasks * spec.samples;
+
+  // per pair: classify, count, optimum, thesis's optimum, curve, map, Pareto front
+  for (size_t pc = 0; pc < pcs.size(); ++pc) {
+    ProgramConfig out;
+    out.program = spec.programs[pcs[pc].program];
+    out.configuration = pcs[pc].configuration;
+    const ProgramTable& table = tables[pcs[pc].program];
+    const auto metric = [&](size_t k) -> const LineMetrics& { return metrics[pc * geo.size() + k]; };
+    const auto candidate = [&](size_t k) {
+      Candidate c;
+      c.x_s = geo[k].x_s;
+      c.phi = geo[k].phi;
+      c.root = root_in_line_frame(c.x_s, c.phi);
+      c.boundary_distance = geo[k].check.boundary_distance;
+      c.min_abs_sin = geo[k].check.min_abs_sin;
+      if (c.boundary_distance >= -kTouch) c.metrics = metric(k);
+      c.status = classify(spec, c.boundary_distance, c.metrics);
+      return c;
+    };
+    std::vector<CandidateStatus> st(geo.size());
+    for (size_t k = 0; k < geo.size(); ++k) {
+      st[k] = classify(spec, geo[k].check.boundary_distance,
+                       geo[k].check.boundary_distance >= -kTouch ? metric(k) : LineMetrics{});
+    }
+    // counts: the full sweep, the thesis's candidates, and their disagreements
+    Counts& n = out.counts;
+    long best = -1, thesis_best = -1;
+    for (size_t k = 0; k < geo.size(); ++k) {
+      const bool accepted = st[k] == CandidateStatus::kFeasible || st[k] == CandidateStatus::kOverLimit;
+      if (geo[k].set == Set::kSweep) {
+        ++n.total;
+        switch (st[k]) {
+          case CandidateStatus::kUnreachable: ++n.unreachable; break;
+          case CandidateStatus::kSingular: ++n.singular; break;
+          case CandidateStatus::kOverLimit: ++n.over_limit; break;
+          case CandidateStatus::kFeasible: ++n.feasible; break;
+        }
+        if (accepted && !geo[k].thesis_admits) ++n.exact_outside_thesis;
+      } else if (geo[k].set == Set::kThesis) {
+        ++n.thesis_total;
+        if (!accepted) ++n.thesis_rejected;
+        if (st[k] != CandidateStatus::kUnreachable && metric(k).finite() &&
+            (thesis_best < 0 || metric(k).energy < metric(size_t(thesis_best)).energy))
+          thesis_best = long(k);
+      }
+      // the optimum: the least energy of every feasible candidate of every set
+      if (st[k] == CandidateStatus::kFeasible &&
+          (best < 0 || metric(k).energy < metric(size_t(best)).energy))
+        best = long(k);
+    }
+    if (thesis_best >= 0) {
+      out.thesis_found = true;
+      out.thesis_best = candidate(size_t(thesis_best));
+    }
+
+    // map
+    EnergyMap& map = out.map;
+    map.x = mx;
+    map.y = my;
+    map.energy.resize(size_t(spec.map_nx) * spec.map_ny);
+    map.status.resize(map.energy.size());
+    map.peak_torque.resize(map.energy.size());
+    for (size_t m = 0; m < map.energy.size(); ++m) {
+      const size_t k = map_begin + m;
+      map.status[m] = st[k];
+      const bool ok = st[k] != CandidateStatus::kUnreachable && metric(k).finite();
+      map.energy[m] = ok ? float(metric(k).energy) : float(kNaN);
+      map.peak_torque[m] =
+          ok ? float(std::max(metric(k).peak_torque[0], metric(k).peak_torque[1])) : float(kNaN);
+    }
+
+    // Pareto fronts of (peak torque of one joint, energy) over every reachable candidate
+    std::vector<size_t> order;
+    for (size_t k = 0; k < geo.size(); ++k)
+      if (st[k] != CandidateStatus::kUnreachable && metric(k).finite()) order.push_back(k);
+    for (int joint = 0; joint < 2; ++joint) {
+      std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return metric(a).peak_torque[joint] < metric(b).peak_torque[joint];
+      });
+      double e_min = kInf;
+      for (const size_t k : order) {
+        if (metric(k).energy < e_min * (1 - 1e-9)) {
+          e_min = metric(k).energy;
+          ParetoPoint pp;
+          pp.peak_torque[0] = metric(k).peak_torque[0];
+          pp.peak_torque[1] = metric(k).peak_torque[1];
+          pp.energy = e_min;
+          pp.x_s = geo[k].x_s;
+          pp.phi = geo[k].phi;
+          pp.singular = st[k] == CandidateStatus::kSingular;
+          out.pareto[joint].push_back(pp);
+        }
+      }
+    }
+
+    // energy versus phi at the optimum's start point (or the thesis's first)
+    int curve_i = 0;
+    if (best >= 0) {
+      double d_best = kInf;
+      for (size_t i = 0; i < xs.size(); ++i) {
+        if (std::abs(xs[i] - geo[size_t(best)].x_s) < d_best) {
+          d_best = std::abs(xs[i] - geo[size_t(best)].x_s);
+          curve_i = int(i);
+        }
+      }
+    }
+    out.curve.x_s = xs[size_t(curve_i)];
+    for (size_t k = 0; k < geo.size(); ++k) {
+      if (geo[k].set != Set::kSweep || geo[k].i != curve_i) continue;
+      out.curve.phi.push_back(geo[k].phi);
+      const bool ok = st[k] != CandidateStatus::kUnreachable && metric(k).finite();
+      out.curve.energy.push_back(ok ? metric(k).energy : kNaN);
+      out.curve.status.push_back(st[k]);
+    }
+
+    if (best < 0) {
+      out.found = false;
+      out.reason = "no candidate keeps the line " + fmt(spec.singularity_margin) +
+                   " m inside the reachable annulus [" + fmt(an.inner, 3) + ", " + fmt(an.outer, 3) +
+                   "] m" + (spec.torque_limit || spec.power_limit ? " within the actuator limits" : "") +
+                   " (" + std::to_string(n.singular) + " of " + std::to_string(n.total) +
+                   " sweep candidates singular, " + std::to_string(n.over_limit) + " over a limit)";
+      res.cases.push_back(std::move(out));
+      continue;
+    }
+    out.found = true;
+    out.grid = candidate(size_t(best));
+    out.refined = out.grid;
+
+    // local refinement of (x_s, phi) in a box of two grid spacings around the grid optimum
+    if (spec.refine) {
+      const double hx = std::max({xs.size() > 1 ? std::abs(xs[0] - xs[1]) : 0.0,
+                                  mx[1] - mx[0], my[1] - my[0], 1e-4});
+      const double hphi = std::max(spec.phi_step, hx / std::max(out.grid.x_s, 1e-3));
+      const double x0 = out.grid.x_s, p0 = out.grid.phi;
+      const std::vector<double> lb = {std::max(an.inner, x0 - 2 * hx), p0 - 2 * hphi};
+      const std::vector<double> ub = {std::min(an.outer, x0 + 2 * hx), p0 + 2 * hphi};
+      // scaled variables: u = (x_s - x0) / hx, v = (phi - p0) / hphi
+      struct Ctx {
+        const Spec* spec;
+        const Arm2* arm;
+        const ProgramTable* table;
+        int configuration;
+        double x0, p0, hx, hphi, barrier;
+        int evals;
+      } ctx{&spec, &arm, &table, out.configuration, x0, p0, hx, hphi,
+            10.0 * out.grid.metrics.energy + 1.0, 0};
+      nlopt::opt opt(nlopt::LN_SBPLX, 2);
+      opt.set_lower_bounds({(lb[0] - x0) / hx, (lb[1] - p0) / hphi});
+      opt.set_upper_bounds({(ub[0] - x0) / hx, (ub[1] - p0) / hphi});
+      opt.set_xtol_abs({0.1 * spec.refine_xtol / hx, 0.1 * spec.refine_phitol / hphi});
+      opt.set_initial_step({0.25, 0.25});
+      opt.set_maxeval(3000);
+      opt.set_min_objective(
+          [](const std::vector<double>& x, std::vector<double>&, void* data) {
+            auto* c = static_cast<Ctx*>(data);
+            ++c->evals;
+            const Candidate cand = evaluate_candidate(*c->spec, *c->arm, *c->table, c->configuration,
+                                                      c->x0 + x[0] * c->hx, c->p0 + x[1] * c->hphi);
+            // extreme barrier: only admissible placements compete
+            return cand.status == CandidateStatus::kFeasible ? cand.metrics.energy : c->barrier;
+          },
+          &ctx);
+      std::vector<double> x = {0.0, 0.0};
+      double f = 0;
+      try {
+        opt.optimize(x, f);
+      } catch (const std::exception&) {
+        // a roundoff-limited stop keeps the best point found, which x holds
+      }
+      const Candidate r = evaluate_candidate(spec, arm, table, out.configuration, x0 + x[0] * hx,
+                                             p0 + x[1] * hphi);
+      out.refine_evaluations = ctx.evals;
+      if (r.status == CandidateStatus::kFeasible && r.metrics.energy <= out.grid.metrics.energy)
+        out.refined = r;
+      res.samples_evaluated += long(ctx.evals) * spec.samples;
+    }
+    const Line line = thesis_line(out.refined.x_s, out.refined.phi);
+    out.placement = placement_of(line, L);
+    out.series = sample_series(arm, table, line, out.configuration);
+    res.cases.push_back(std::move(out));
+  }
+  if (progress) progress(0.85, "placement refinement");
+
+  // evaluations of fixed placements, with the saving of the optimum
+  for (const EvaluationSpec& ev : spec.evaluations) {
+    for (size_t pc = 0; pc < pcs.size(); ++pc) {
+      Evaluation e;
+      e.label = ev.label;
+      e.program = spec.programs[pcs[pc].program];
+      e.configuration = pcs[pc].configuration;
+      e.candidate = evaluate_candidate(spec, arm, tables[pcs[pc].program], e.configuration, ev.x_s, ev.phi);
+      const Line line = thesis_line(ev.x_s, ev.phi);
+      e.placement = placement_of(line, L);
+      if (e.candidate.status != CandidateStatus::kUnreachable)
+        e.series = sample_series(arm, tables[pcs[pc].program], line, e.configuration);
+      const ProgramConfig& opt = res.cases[pc];
+      if (opt.found && e.candidate.metrics.finite() && e.candidate.status != CandidateStatus::kUnreachable) {
+        e.has_saving = true;
+        e.saving = e.candidate.metrics.energy - opt.refined.metrics.energy;
+        e.saving_percent = 100.0 * e.saving / e.candidate.metrics.energy;
+      }
+      res.evaluations.push_back(std::move(e));
+    }
+  }
+
+  // convergence of the first optimum's energy with samples per trajectory
+  int found = 0;
+  for (const auto& c : res.cases) found += c.found;
+  for (const auto& c : res.cases) {
+    if (!c.found) continue;
+    const Line line = thesis_line(c.refined.x_s, c.refined.phi);
+    for (const int n : {51, 101, 201, 401, 801, 1601, 3201}) {
+      const ProgramTable t = make_program_table(c.program, spec.duration, L, n);
+      res.convergence.push_back({n, evaluate_line(arm, t, line, c.configuration).energy});
+    }
+    break;
+  }
+
+  // checks the study runs on its own answer
+  {
+    double max_work = 0;
+    int feasible = 0;
+    for (size_t pc = 0; pc < pcs.size(); ++pc) {
+      for (size_t k = 0; k < geo.size(); ++k) {
+        if (geo[k].check.boundary_distance < spec.singularity_margin) continue;
+        const LineMetrics& m = metrics[pc * geo.size() + k];
+        if (!m.finite()) continue;
+        max_work = std::max(max_work, std::abs(m.signed_work));
+        ++feasible;
+      }
+    }
+    res.checks.push_back(make_check(
+        "signed_work_rest_to_rest",
+        "largest |signed actuator work| of the " + std::to_string(feasible) +
+            " rest-to-rest candidates clear of the margin, J (no gravity: the kinetic energy "
+            "starts and ends at 0)",
+        max_work, 1e-9));
+    double worst_margin = 0;
+    for (const auto& c : res.cases)
+      if (c.found) worst_margin = std::max(worst_margin, spec.singularity_margin - c.refined.boundary_distance);
+    res.checks.push_back(make_check("optima_clear_of_singularities",
+                                    "largest amount by which an optimum's line comes closer to a "
+                                    "workspace boundary than the singularity margin, m",
+                                    worst_margin, 0.0));
+    double worse = 0;
+    for (const auto& c : res.cases)
+      if (c.found) worse = std::max(worse, c.refined.metrics.energy - c.grid.metrics.energy);
+    res.checks.push_back(make_check("refinement_not_worse",
+                                    "largest increase of an optimum's energy by the local refinement, J",
+                                    worse, 0.0));
+    if (res.convergence.size() >= 2) {
+      const double e_ref = res.convergence.back().energy;
+      double e_spec = kNaN;
+      for (const auto& c : res.cases) {
+        if (c.found) {
+          e_spec = c.refined.metrics.energy;
+          break;
+        }
+      }
+      res.checks.push_back(make_check(
+          "energy_converged",
+          "relative difference of the first optimum's energy at " + std::to_string(spec.samples) +
+              " samples from its value at " + std::to_string(res.convergence.back().samples) + " samples",
+          std::abs(e_spec - e_ref) / e_ref, 1e-3));
+    }
+  }
+
+  if (found == 0) {
+    res.status = Status::kUnsolvable;
+    std::string why = "no admissible placement: every candidate line comes closer than " +
+                      fmt(spec.singularity_margin, 3) + " m to a boundary of the reachable annulus [" +
+                      fmt(an.inner, 3) + ", " + fmt(an.outer, 3) + "] m";
+    if (spec.torque_limit || spec.power_limit) why += " or breaks an actuator limit";
+    const double longest = longest_line(an, spec.singularity_margin);
+    if (L > longest)
+      why += "; with this margin the longest line that fits is " + fmt(longest) + " m (L = " + fmt(L) +
+             " m, Lmax = " + fmt(an.lmax) + " m: a line of length Lmax only fits tangent to the inner circle "
+             "with both ends on the outer one, a singular motion)";
+    res.message = why;
+  } else {
+    const ProgramConfig* best = nullptr;
+    for (const auto& c : res.cases)
+      if (c.found && (!best || c.refined.metrics.energy < best->refined.metrics.energy)) best = &c;
+    std::ostringstream os;
+    os << "least energy " << fmt(best->refined.metrics.energy) << " J (" << core::program_name(best->program)
+       << ", configuration " << best->configuration << ") with the root at X = "
+       << fmt(best->refined.root.x()) << " m, Y = " << fmt(best->refined.root.y())
+       << " m from the line's start (x_s = " << fmt(best->refined.x_s, 5)
+       << " m, phi = " << fmt(best->refined.phi / kDeg, 3) << " deg)";
+    if (found < int(res.cases.size()))
+      os << "; " << (res.cases.size() - found) << " program/configuration pair(s) have no admissible placement";
+    res.message = os.str();
+  }
+  if (progress) progress(1.0, "placement done");
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return res;
+}
+
+}  // namespace armstudy::studies::placement

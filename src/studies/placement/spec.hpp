@@ -1,0 +1,46 @@
+#pragma once
+/// The placement study's input (000_bf165d3f0a5605ef.txt): where to put the root of a
+/// 2-link arm in a horizontal plane so that carrying a payload along a fixed straight line
+/// costs the least actuator energy. SI units and radians; filled and validated by
+/// cases::load_placement (src/cases/placement_case.hpp documents every key and default).
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/motion_program.hpp"
+#include "core/planar_chain.hpp"
+
+namespace armstudy::studies::placement {
+
+/// A fixed placement to evaluate: the thesis's line (x_s, phi) in the arm's frame.
+struct EvaluationSpec {
+  std::string label;   ///< a person's name for it ("" for none)
+  double x_s = 0;      ///< m, start point (x_s, 0) in the arm's frame
+  double phi = 0;      ///< rad, direction angle of the line
+};
+
+struct Spec {
+  core::PlanarChain chain;  ///< 2 active links, gravity 0
+  double length = 0;        ///< m, line length L (0 < L <= Lmax)
+  double duration = 1;      ///< s, T
+  std::vector<core::MotionProgram> programs = {core::MotionProgram::kCycloidal,
+                                               core::MotionProgram::kPoly345};
+  std::vector<int> configurations = {1, 2};
+  int nx_s = 50;                 ///< start-point steps: nx_s + 1 start points
+  double phi_step = 3.14159265358979323846 / 180;  ///< rad, direction-angle step (1 deg)
+  int samples = 401;             ///< samples per trajectory (uniform in time, both ends)
+  double singularity_margin = 0.01;  ///< m, least distance of the line to either boundary
+  std::optional<std::array<double, 2>> torque_limit;  ///< N m, per joint
+  std::optional<std::array<double, 2>> power_limit;   ///< W, per joint
+  std::vector<EvaluationSpec> evaluations;
+  int map_nx = 200;  ///< map nodes along X (line direction)
+  int map_ny = 100;  ///< map nodes along Y >= 0 (Y < 0 is the mirror image, configs swapped)
+  bool refine = true;
+  double refine_xtol = 1e-5;                                 ///< m
+  double refine_phitol = 1e-3 * 3.14159265358979323846 / 180;  ///< rad
+  int threads = 0;  ///< worker threads for the sweeps (0: all hardware threads)
+};
+
+}  // namespace armstudy::studies::placement
