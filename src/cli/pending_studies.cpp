@@ -11,13 +11,9 @@ std::unique_ptr<StudyRun> not_available(cases::Map& root, const cases::CaseInfo&
   for (const auto& kv : root.node()) root.get(kv.first.Scalar());
   return nullptr;
 }
-constexpr char kPendulum[] = "pendulum";
-constexpr char kThrowing[] = "throwing";
 constexpr char kTimeOptimal[] = "time_optimal";
 }  // namespace
 
-StudyEntry pendulum_entry() { return {"pendulum", "(not available yet)", &not_available<kPendulum>}; }
-StudyEntry throwing_entry() { return {"throwing", "(not available yet)", &not_available<kThrowing>}; }
 StudyEntry time_optimal_entry() {
   return {"time_optimal", "(not available yet)", &not_available<kTimeOptimal>};
 }

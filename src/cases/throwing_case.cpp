@@ -1,0 +1,141 @@
+#include "cases/throwing_case.hpp"
+
+#include <cmath>
+
+#include "core/types.hpp"
+
+namespace armstudy::cases {
+namespace {
+
+constexpr double kDeg = core::kPi / 180.0;
+
+// a number key that keeps `value` when absent or wrong (the error is recorded)
+void num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
+  if (const auto v = m.number(key, rule)) value = *v;
+}
+
+void read_link(Map& section, std::string_view key, double& length, double& mass, double& com,
+               double& inertia) {
+  auto m = section.map(key);
+  if (!m) return;
+  num(*m, "length_m", length, NumberRule::positive("m"));
+  num(*m, "mass_kg", mass, NumberRule::non_negative("kg"));
+  num(*m, "com_m", com, NumberRule::any("m"));
+  num(*m, "inertia_kg_m2", inertia, NumberRule::non_negative("kg m^2"));
+  m->finish();
+}
+
+}  // namespace
+
+void read_tray_arm(Map& section, studies::TrayArmParams& a, double* width) {
+  num(section, "gravity_m_s2", a.gravity, NumberRule::range(1e-3, 100.0, "m/s^2"));
+  read_link(section, "link1", a.l1, a.m1, a.r1, a.I1);
+  read_link(section, "link2", a.l2, a.m2, a.r2, a.I2);
+  if (auto t = section.map("tray")) {
+    num(*t, "circle_offset_m", a.circle_offset, NumberRule::positive("m"));
+    num(*t, "mass_kg", a.m3, NumberRule::non_negative("kg"));
+    num(*t, "com_m", a.r3, NumberRule::any("m"));
+    num(*t, "com_lateral_m", a.r3_lateral, NumberRule::any("m"));
+    num(*t, "inertia_kg_m2", a.I3, NumberRule::non_negative("kg m^2"));
+    if (width) {
+      if (const auto w = t->number("width_deg", NumberRule::range(1.0, 360.0, "deg")))
+        *width = *w * kDeg;
+    }
+    t->finish();
+  }
+  bool solid_sphere = true;
+  if (auto b = section.map("ball")) {
+    num(*b, "mass_kg", a.m4, NumberRule::positive("kg"));
+    num(*b, "circle_radius_m", a.r4, NumberRule::positive("m"));
+    num(*b, "radius_m", a.rb, NumberRule::positive("m"));
+    const YAML::Node in = b->get("inertia");
+    if (in.IsDefined() && !(in.IsScalar() && in.Scalar() == "solid_sphere")) {
+      const auto v = read_number(in, b->diag(), "'" + b->path_of("inertia") + "' (or 'solid_sphere')",
+                                 NumberRule::non_negative("kg m^2"));
+      if (v) {
+        a.Ib = *v;
+        solid_sphere = false;
+      }
+    }
+    b->finish();
+  }
+  if (solid_sphere) a.Ib = studies::solid_sphere_inertia(a.m4, a.rb);
+}
+
+studies::ThrowingSpec load_throwing_spec(Map& root) {
+  studies::ThrowingSpec s;
+  s.arm.Ib = studies::solid_sphere_inertia(s.arm.m4, s.arm.rb);
+  auto sec = root.map("throwing");
+  if (!sec) return s;
+  read_tray_arm(*sec, s.arm, &s.tray_width);
+  if (auto m = sec->map("motors")) {
+    num(*m, "kt_Nm_per_A", s.motor.kt, NumberRule::positive("N m/A"));
+    num(*m, "kv_V_s_per_rad", s.motor.kv, NumberRule::positive("V s/rad"));
+    num(*m, "resistance_ohm", s.motor.Ra, NumberRule::positive("ohm"));
+    num(*m, "viscous_Nm_s_per_rad", s.motor.Dm, NumberRule::non_negative("N m s/rad"));
+    num(*m, "coulomb_Nm", s.motor.tau_f, NumberRule::non_negative("N m"));
+    num(*m, "rotor_inertia_kg_m2", s.arm.rotor_inertia, NumberRule::non_negative("kg m^2"));
+    if (const auto mount = m->choice("motor2", {"on_link1", "on_base"}))
+      s.arm.motor2 = *mount == "on_base" ? studies::Motor2Mount::kOnBase
+                                         : studies::Motor2Mount::kOnLink1;
+    num(*m, "voltage_max_V", s.voltage_max, NumberRule::positive("V"));
+    num(*m, "current_max_A", s.current_max, NumberRule::positive("A"));
+    s.count_regeneration = m->boolean_or("count_regeneration", s.count_regeneration);
+    m->finish();
+  }
+  if (auto t = sec->map("task")) {
+    if (const auto v = t->numbers("start_deg", NumberRule::range(-360, 360, "deg"), 4)) {
+      s.start = {(*v)[0] * kDeg, (*v)[1] * kDeg};
+      s.theta3_start = (*v)[2] * kDeg;
+      s.theta4_start = (*v)[3] * kDeg;
+    }
+    if (const auto v = t->numbers("release_deg", NumberRule::range(-360, 360, "deg"), 3)) {
+      s.release = {(*v)[0] * kDeg, (*v)[1] * kDeg};
+      s.theta3_release = (*v)[2] * kDeg;
+    }
+    if (const auto v = t->numbers("release_rate_rad_s", NumberRule::range(-200, 200, "rad/s"), 2))
+      s.release_rate = {(*v)[0], (*v)[1]};
+    num(*t, "duration_s", s.tf, NumberRule::range(0.01, 60.0, "s"));
+    num(*t, "landing_height_m", s.landing_height, NumberRule::range(-100.0, 100.0, "m"));
+    t->finish();
+  }
+  if (auto c = sec->map("criterion")) {
+    num(*c, "k_tray_J_per_rad", s.k_tray, NumberRule::non_negative("J/rad"));
+    num(*c, "k_release_J_per_rad", s.k_release, NumberRule::non_negative("J/rad"));
+    num(*c, "k_voltage_J_per_V", s.k_voltage, NumberRule::non_negative("J/V"));
+    num(*c, "k_current_J_per_A", s.k_current, NumberRule::non_negative("J/A"));
+    c->finish();
+  }
+  if (auto i = sec->map("idp")) {
+    s.stages = i->integer_or("stages", s.stages, 2, 64);
+    s.steps_per_stage = i->integer_or("steps_per_stage", s.steps_per_stage, 1, 400);
+    s.idp.iterations = i->integer_or("iterations", s.idp.iterations, 1, 1000);
+    s.idp.passes = i->integer_or("passes", s.idp.passes, 1, 20);
+    num(*i, "restore", s.idp.restore, NumberRule::range(1e-3, 1.0, ""));
+    s.idp.candidates = i->integer_or("candidates", s.idp.candidates, 1, 200);
+    num(*i, "shrink", s.idp.shrink, NumberRule::range(1e-3, 0.999, ""));
+    if (const auto v = i->numbers("region_rad_s", NumberRule::positive("rad/s"), 2))
+      s.idp.region = {(*v)[0], (*v)[1]};
+    s.idp.seed = static_cast<unsigned>(i->integer_or("seed", static_cast<int>(s.idp.seed), 0, 2147483647));
+    i->finish();
+  }
+  if (auto n = sec->map("nlopt")) {
+    s.run_nlopt = n->boolean_or("enabled", s.run_nlopt);
+    s.nlopt.max_evaluations = n->integer_or("max_evaluations", s.nlopt.max_evaluations, 1, 10000);
+    num(*n, "max_time_s", s.nlopt.max_time, NumberRule::range(0.1, 3600.0, "s"));
+    num(*n, "fd_step_rad_s", s.nlopt.fd_step, NumberRule::range(1e-9, 1e-1, "rad/s"));
+    n->finish();
+  }
+  if (auto c = sec->map("checks")) {
+    if (const auto v = c->number("release_tolerance_deg", NumberRule::positive("deg")))
+      s.release_tolerance = *v * kDeg;
+    num(*c, "replay_tolerance_rad", s.replay_tolerance, NumberRule::positive("rad"));
+    c->finish();
+  }
+  s.threads = sec->integer_or("threads", s.threads, 1, 64);
+  s.nlopt.release_tolerance = std::min(s.nlopt.release_tolerance, s.release_tolerance);
+  sec->finish();
+  return s;
+}
+
+}  // namespace armstudy::cases

@@ -1,0 +1,247 @@
+#include "studies/throwing/simulate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "core/dynamics.hpp"
+#include "studies/throwing/integrators.hpp"
+
+namespace armstudy::studies {
+namespace {
+
+double sign(double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); }
+
+// one evaluation of the planning model at (t, x) inside a stage
+struct PointEval {
+  OdeState dx;
+  core::JointVector q, qd, qdd, tau;
+  Eigen::Vector2d tau_m, rate;
+  core::MotorSample ms[2];
+};
+
+class Planner {
+ public:
+  Planner(const ThrowSetup& s, const VelocityProfile& p) : s_(s), p_(p) {
+    B_ = motor_matrix(s.mount);
+    h_ = p.stage_length();
+    // angles at each stage start (trapezoids)
+    q_start_.resize(p.stages() + 1);
+    q_start_[0] = p.q0;
+    for (int k = 0; k < p.stages(); ++k)
+      q_start_[k + 1] = q_start_[k] + 0.5 * h_ * (p.v.col(k) + p.v.col(k + 1));
+  }
+
+  void eval(int stage, double t, const OdeState& x, PointEval& out) const {
+    const double tau = t - stage * h_;
+    const Eigen::Vector2d v0 = p_.v.col(stage);
+    const Eigen::Vector2d acc = (p_.v.col(stage + 1) - v0) / h_;
+    const Eigen::Vector2d qa = q_start_[stage] + v0 * tau + 0.5 * acc * tau * tau;
+    const Eigen::Vector2d qda = v0 + acc * tau;
+    out.q.resize(4);
+    out.qd.resize(4);
+    out.q << qa, x[0], x[1];
+    out.qd << qda, x[2], x[3];
+    core::JointVector qdd_active(4);
+    qdd_active << acc, 0.0, 0.0;
+    // passive joints from the dynamics, active torques that realise the motion
+    const core::MixedDynamics d =
+        core::passive_forward_dynamics(s_.chain, out.q, out.qd, qdd_active, core::JointVector::Zero(4));
+    out.qdd = d.qdd;
+    out.tau = d.tau;
+    out.tau_m = motor_torques(s_.mount, d.tau);
+    const Eigen::Matrix<double, 4, 1> qd4 = out.qd;
+    const Eigen::Matrix<double, 4, 1> qdd4 = out.qdd;
+    out.rate = B_ * qd4;
+    const Eigen::Vector2d acc_m = B_ * qdd4;
+    double power = 0.0;
+    // eq. 5-6 per motor; rotor inertia is in the chain, so the motors' Im is 0 here
+    for (int m = 0; m < 2; ++m) {
+      out.ms[m] = core::motor_sample(s_.motor[m], out.rate[m], acc_m[m], out.tau_m[m]);
+      power += s_.count_regeneration ? out.ms[m].power : std::max(0.0, out.ms[m].power);
+    }
+    out.dx.resize(5);
+    out.dx << x[2], x[3], d.qdd[2], d.qdd[3], power;  // eq. 7 integrand as the fifth state
+  }
+
+ private:
+  const ThrowSetup& s_;
+  const VelocityProfile& p_;
+  Eigen::Matrix<double, 2, 4> B_;
+  double h_ = 0;
+  std::vector<Eigen::Vector2d> q_start_;
+};
+
+void record(const PointEval& pe, int stage, double t, double energy, std::vector<ThrowSample>* out) {
+  ThrowSample s;
+  s.t = t;
+  s.stage = stage;
+  s.q = pe.q;
+  s.qd = pe.qd;
+  s.qdd = pe.qdd;
+  s.tau = pe.tau;
+  s.tau_m = pe.tau_m;
+  s.motor_rate = pe.rate;
+  s.motor[0] = pe.ms[0];
+  s.motor[1] = pe.ms[1];
+  s.energy = energy;
+  out->push_back(s);
+}
+
+}  // namespace
+
+ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                                   std::vector<ThrowSample>* samples) {
+  const Planner planner(setup, profile);
+  const int P = profile.stages();
+  const double h = profile.stage_length();
+  const int n = std::max(1, setup.steps_per_stage);
+  const double dt = h / n;
+  ProfileEvaluation ev;
+  OdeState x(5);
+  x << setup.theta3_0, setup.theta4_0, 0.0, 0.0, 0.0;
+  PointEval k1, k2, k3, k4;
+  ev.stage_theta4.assign(P, 0.0);
+  ev.stage_voltage.assign(P, 0.0);
+  ev.stage_current.assign(P, 0.0);
+  int stage = 0;
+  auto track = [&](const PointEval& pe) {
+    ev.stage_theta4[stage] = std::max(ev.stage_theta4[stage], std::abs(pe.q[3]));
+    for (int m = 0; m < 2; ++m) {
+      ev.stage_voltage[stage] = std::max(ev.stage_voltage[stage], std::abs(pe.ms[m].voltage));
+      ev.stage_current[stage] = std::max(ev.stage_current[stage], std::abs(pe.ms[m].current));
+    }
+  };
+  if (samples) samples->clear();
+  for (int k = 0; k < P && ev.finite; ++k) {
+    stage = k;
+    for (int j = 0; j < n; ++j) {
+      const double t = k * h + j * dt;
+      // classical rk4 inside stage k (the accelerations are constant there)
+      planner.eval(k, t, x, k1);
+      track(k1);
+      if (samples) record(k1, k, t, x[4], samples);
+      planner.eval(k, t + 0.5 * dt, OdeState(x + 0.5 * dt * k1.dx), k2);
+      planner.eval(k, t + 0.5 * dt, OdeState(x + 0.5 * dt * k2.dx), k3);
+      planner.eval(k, t + dt, OdeState(x + dt * k3.dx), k4);
+      x += (dt / 6.0) * (k1.dx + 2.0 * k2.dx + 2.0 * k3.dx + k4.dx);
+      if (!x.allFinite() || std::abs(x[2]) > 1e4 || std::abs(x[3]) > 1e4) {
+        ev.finite = false;
+        break;
+      }
+    }
+    if (!ev.finite) break;
+    // the end of the stage with this stage's accelerations (left limit at the node)
+    planner.eval(k, (k + 1) * h, x, k1);
+    track(k1);
+    if (samples) record(k1, k, (k + 1) * h, x[4], samples);
+  }
+  if (!ev.finite) {
+    ev.criterion = ev.energy = std::numeric_limits<double>::max() / 4;
+    return ev;
+  }
+  ev.max_abs_theta4 = *std::max_element(ev.stage_theta4.begin(), ev.stage_theta4.end());
+  ev.max_voltage = *std::max_element(ev.stage_voltage.begin(), ev.stage_voltage.end());
+  ev.max_current = *std::max_element(ev.stage_current.begin(), ev.stage_current.end());
+  ev.energy = x[4];
+  ev.theta3_final = x[0];
+  ev.theta4_final = x[1];
+  ev.theta3_rate_final = x[2];
+  ev.theta4_rate_final = x[3];
+  // eq. 9: the penalty keeps the ball in the tray; the others keep limits and the release
+  ev.criterion = ev.energy +
+                 setup.k_tray * std::max(0.0, ev.max_abs_theta4 - setup.half_width) +
+                 setup.k_release * std::abs(ev.theta3_final - setup.theta3_release) +
+                 setup.k_voltage * std::max(0.0, ev.max_voltage - setup.voltage_max) +
+                 setup.k_current * std::max(0.0, ev.max_current - setup.current_max);
+  return ev;
+}
+
+Eigen::Vector2d VoltageHistory::at(int st, double time) const {
+  // samples of this stage: contiguous
+  const auto lo = std::lower_bound(stage.begin(), stage.end(), st) - stage.begin();
+  const auto hi = std::upper_bound(stage.begin(), stage.end(), st) - stage.begin();
+  if (lo >= hi) throw std::invalid_argument("voltage history has no sample in a stage");
+  if (time <= t[lo]) return e[lo];
+  if (time >= t[hi - 1]) return e[hi - 1];
+  const auto it = std::upper_bound(t.begin() + lo, t.begin() + hi, time) - t.begin();
+  const size_t b = static_cast<size_t>(it), a = b - 1;
+  const double w = (time - t[a]) / (t[b] - t[a]);
+  return (1.0 - w) * e[a] + w * e[b];
+}
+
+VoltageHistory voltage_history(const std::vector<ThrowSample>& samples) {
+  VoltageHistory v;
+  for (const ThrowSample& s : samples) {
+    v.t.push_back(s.t);
+    v.stage.push_back(s.stage);
+    v.e.emplace_back(s.motor[0].voltage, s.motor[1].voltage);
+  }
+  if (!samples.empty()) {
+    v.tf = samples.back().t;
+    v.stages = samples.back().stage + 1;
+  }
+  return v;
+}
+
+ReplayResult replay_voltages(const ThrowSetup& setup, const VoltageHistory& voltages,
+                             const core::JointVector& q0, const core::JointVector& qd0,
+                             const std::vector<double>& times, double rtol, double atol,
+                             double sign_band) {
+  const Eigen::Matrix<double, 2, 4> B = motor_matrix(setup.mount);
+  ReplayResult out;
+  OdeState x(8);
+  x << q0, qd0;
+  Dopri5Options opt;
+  opt.rtol = rtol;
+  opt.atol = atol;
+  const double h = voltages.tf / voltages.stages;
+  size_t next = 0;
+  // requested times at t = 0
+  while (next < times.size() && times[next] <= 0.0) {
+    out.t.push_back(times[next++]);
+    out.q.push_back(x.head(4));
+    out.qd.push_back(x.tail(4));
+  }
+  for (int k = 0; k < voltages.stages; ++k) {
+    const double t_end = (k + 1) * h;
+    auto rhs = [&](double t, const OdeState& s) {
+      const core::JointVector q = s.head(4), qd = s.tail(4);
+      const Eigen::Matrix<double, 4, 1> qd4 = s.tail(4);
+      const Eigen::Vector2d rate = B * qd4;
+      const Eigen::Vector2d e = voltages.at(k, t);
+      Eigen::Vector2d tau_m;
+      // eq. 5 solved for the load torque (Im = 0: rotors are in the chain)
+      for (int m = 0; m < 2; ++m) {
+        const core::DcMotor& mo = setup.motor[m];
+        // coulomb friction smoothed over |qd_m| < sign_band: an exact sign makes the replay
+        // chatter wherever a joint comes to rest (sticking), which no ODE solver resolves
+        const double sg = sign_band > 0 ? std::tanh(rate[m] / sign_band) : sign(rate[m]);
+        tau_m[m] = (mo.kt / mo.Ra) * (e[m] - mo.kv * rate[m]) - mo.Dm * rate[m] - mo.tau_f * sg;
+      }
+      const core::JointVector qdd =
+          core::forward_dynamics(setup.chain, q, qd, joint_torques(setup.mount, tau_m));
+      OdeState dx(8);
+      dx << qd, qdd;
+      return dx;
+    };
+    std::vector<double> ts;
+    const size_t first = next;
+    while (next < times.size() && (times[next] < t_end || (k + 1 == voltages.stages && times[next] <= t_end + 1e-12)))
+      ts.push_back(times[next++]);
+    ts.push_back(t_end);
+    Dopri5Stats st;
+    const std::vector<OdeState> xs = integrate_dopri5(rhs, k * h, x, ts, opt, &st);
+    out.steps += st.accepted;
+    for (size_t i = 0; i + 1 < xs.size(); ++i) {
+      out.t.push_back(times[first + i]);
+      out.q.push_back(xs[i].head(4));
+      out.qd.push_back(xs[i].tail(4));
+    }
+    x = xs.back();
+  }
+  return out;
+}
+
+}  // namespace armstudy::studies

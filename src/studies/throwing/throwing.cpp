@@ -1,0 +1,206 @@
+#include "studies/throwing/throwing.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/kinematics.hpp"
+
+namespace armstudy::studies {
+namespace {
+
+std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a, b, c, d);
+  return buf;
+}
+
+}  // namespace
+
+ThrowSetup make_throw_setup(const ThrowingSpec& spec) {
+  ThrowSetup s;
+  s.chain = make_tray_arm(spec.arm);
+  s.mount = spec.arm.motor2;
+  // rotor inertia lives in the chain (tray_arm.hpp), so eq. 5 gets Im = 0
+  for (auto& m : s.motor) {
+    m = spec.motor;
+    m.Im = 0.0;
+  }
+  s.theta3_0 = spec.theta3_start;
+  s.theta4_0 = spec.theta4_start;
+  s.theta3_release = spec.theta3_release;
+  s.half_width = spec.tray_width / 2;
+  s.voltage_max = spec.voltage_max;
+  s.current_max = spec.current_max;
+  s.k_tray = spec.k_tray;
+  s.k_release = spec.k_release;
+  s.k_voltage = spec.k_voltage;
+  s.k_current = spec.k_current;
+  s.count_regeneration = spec.count_regeneration;
+  s.steps_per_stage = spec.steps_per_stage;
+  return s;
+}
+
+ThrowMotion record_motion(const ThrowSetup& setup, const ThrowingSpec& spec,
+                          const VelocityProfile& profile) {
+  ThrowMotion m;
+  m.profile = profile;
+  std::vector<ThrowSample> samples;
+  m.evaluation = simulate_profile(setup, profile, &samples);
+  ThrowSeries& s = m.series;
+  for (const ThrowSample& x : samples) {
+    s.t.push_back(x.t);
+    s.q.push_back(x.q);
+    s.qd.push_back(x.qd);
+    s.qdd.push_back(x.qdd);
+    s.tau_m.push_back(x.tau_m);
+    s.voltage.emplace_back(x.motor[0].voltage, x.motor[1].voltage);
+    s.current.emplace_back(x.motor[0].current, x.motor[1].current);
+    s.power.emplace_back(x.motor[0].power, x.motor[1].power);
+    s.energy.push_back(x.energy);
+    s.ball.push_back(ball_position(setup.chain, x.q));
+  }
+  // energy split by the trapezoid rule over the samples (eq. 7 and its parts)
+  for (size_t k = 1; k < samples.size(); ++k) {
+    const double dt = samples[k].t - samples[k - 1].t;
+    for (int j = 0; j < 2; ++j) {
+      const core::MotorSample& a = samples[k - 1].motor[j];
+      const core::MotorSample& b = samples[k].motor[j];
+      const double pa = setup.count_regeneration ? a.power : std::max(0.0, a.power);
+      const double pb = setup.count_regeneration ? b.power : std::max(0.0, b.power);
+      m.split.electrical += 0.5 * dt * (pa + pb);
+      m.split.mechanical += 0.5 * dt * (a.load + b.load);
+      m.split.copper += 0.5 * dt * (a.copper + b.copper);
+      m.split.friction += 0.5 * dt * (a.friction + b.friction);
+    }
+  }
+  m.split.rest = m.split.electrical - (m.split.mechanical + m.split.copper + m.split.friction);
+  if (!samples.empty()) {
+    const ThrowSample& f = samples.back();
+    m.angle_error << f.q[0] - spec.release[0], f.q[1] - spec.release[1],
+        f.q[2] - spec.theta3_release;
+    m.rate_error << f.qd[0] - spec.release_rate[0], f.qd[1] - spec.release_rate[1];
+  }
+  return m;
+}
+
+Flight ballistic_flight(const Eigen::Vector2d& p, const Eigen::Vector2d& v, double g, double h) {
+  Flight f;
+  f.release_position = p;
+  f.release_velocity = v;
+  // y(t) = y0 + vy t - g t^2 / 2; apex at t = vy / g if vy > 0
+  f.apex = v.y() > 0 ? p.y() + v.y() * v.y() / (2 * g) : p.y();
+  const double disc = v.y() * v.y() + 2 * g * (p.y() - h);
+  if (!(g > 0) || disc < 0) return f;
+  // the later root: the ball comes down to h (or rises through it first if it starts below)
+  f.duration = (v.y() + std::sqrt(disc)) / g;
+  if (f.duration < 0) return f;
+  f.reaches = true;
+  f.landing = {p.x() + v.x() * f.duration, h};
+  for (int k = 0; k <= 40; ++k) {
+    const double t = f.duration * k / 40.0;
+    f.path_t.push_back(t);
+    f.path.emplace_back(p.x() + v.x() * t, p.y() + v.y() * t - 0.5 * g * t * t);
+  }
+  return f;
+}
+
+ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progress) {
+  const auto t_start = std::chrono::steady_clock::now();
+  ThrowingResult r;
+  ThrowSetup setup;
+  VelocityProfile initial;
+  const Eigen::Vector2d delta = spec.release - spec.start;
+  try {
+    setup = make_throw_setup(spec);
+    initial = eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release, spec.release_rate,
+                          spec.tf, spec.stages);
+  } catch (const std::invalid_argument& e) {
+    r.message = std::string("invalid throwing set-up: ") + e.what();
+    return r;
+  }
+  if (progress) progress(0.0, "eq. 8 trajectory");
+  r.initial = record_motion(setup, spec, initial);
+  if (!r.initial.evaluation.finite) {
+    r.message = "the eq. 8 trajectory's simulation diverged; check the arm parameters";
+    return r;
+  }
+
+  // iterative dynamic programming from eq. 8
+  IdpSettings is = spec.idp;
+  is.threads = spec.threads;
+  r.idp_run = run_idp(setup, initial, delta, is, [&](double f, std::string_view s) {
+    if (progress) progress(0.05 + 0.55 * f, s);
+  });
+  r.idp = record_motion(setup, spec, r.idp_run.best);
+  r.saving_percent = 100.0 * (r.initial.evaluation.energy - r.idp.evaluation.energy) /
+                     std::abs(r.initial.evaluation.energy);
+
+  // the same problem by SLSQP on the same parameterisation
+  if (spec.run_nlopt) {
+    if (progress) progress(0.6, "SLSQP (NLopt)");
+    NloptSettings ns = spec.nlopt;
+    ns.threads = spec.threads;
+    r.nlopt_run = run_nlopt(setup, initial, delta, ns);
+    r.nlopt = record_motion(setup, spec,
+                            r.nlopt_run.feasible ? r.nlopt_run.best : r.nlopt_run.last);
+    r.nlopt_ran = true;
+  }
+  if (progress) progress(0.95, "open-loop replay");
+
+  // integration accuracy: the optimum with four times the rk4 steps
+  ThrowSetup fine = setup;
+  fine.steps_per_stage = 4 * setup.steps_per_stage;
+  std::vector<ThrowSample> fine_samples;
+  {
+    const ProfileEvaluation ef = simulate_profile(fine, r.idp.profile, &fine_samples);
+    r.rk4_energy_error = std::abs(ef.energy - r.idp.evaluation.energy) / std::abs(ef.energy);
+    r.rk4_theta3_error = std::abs(ef.theta3_final - r.idp.evaluation.theta3_final);
+  }
+  // the optimum's voltages (sampled densely, from the 4x simulation) applied open loop to
+  // the model with all four joints free, compared with the planned angles
+  {
+    const VoltageHistory vh = voltage_history(fine_samples);
+    std::vector<double> times = r.idp.series.t;
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    core::JointVector q0(4), qd0 = core::JointVector::Zero(4);
+    q0 << spec.start, spec.theta3_start, spec.theta4_start;
+    try {
+      const ReplayResult rr = replay_voltages(setup, vh, q0, qd0, times, 1e-10, 1e-12);
+      r.replay_t = rr.t;
+      r.replay_q = rr.q;
+      size_t j = 0;
+      for (size_t k = 0; k < r.idp.series.t.size(); ++k) {
+        while (j + 1 < rr.t.size() && rr.t[j] < r.idp.series.t[k] - 1e-12) ++j;
+        r.replay_error =
+            std::max(r.replay_error, (rr.q[j] - r.idp.series.q[k]).cwiseAbs().maxCoeff());
+      }
+    } catch (const std::runtime_error& e) {
+      r.replay_error = INFINITY;
+    }
+  }
+
+  // ballistic flight of the ball after release
+  const core::JointVector& qf = r.idp.series.q.back();
+  const core::JointVector& qdf = r.idp.series.qd.back();
+  r.flight = ballistic_flight(ball_position(setup.chain, qf), ball_velocity(setup.chain, qf, qdf),
+                              spec.arm.gravity, spec.landing_height);
+  r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  if (!r.flight.reaches) {
+    r.message = fmt("the ball never reaches the landing height %.3f m: its apex is %.3f m",
+                    spec.landing_height, r.flight.apex);
+    return r;
+  }
+  r.status = Status::kSolved;
+  r.message = fmt("IDP: %.3f J (eq. 8: %.3f J, saving %.1f %%); ball lands at x = %.3f m",
+                  r.idp.evaluation.energy, r.initial.evaluation.energy, r.saving_percent,
+                  r.flight.landing.x());
+  if (r.nlopt_ran)
+    r.message += fmt("; SLSQP: %.3f J%s", r.nlopt.evaluation.energy) +
+                 (r.nlopt_run.feasible ? "" : " (infeasible)");
+  return r;
+}
+
+}  // namespace armstudy::studies
