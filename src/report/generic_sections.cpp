@@ -159,12 +159,45 @@ int time_series_figures(const json& node, const std::string& what, FigureWriter&
     if (plot.series.empty()) continue;
     std::string caption = plot.title + (what.empty() ? "" : " — " + what) + ".";
     if (owners.size() > 1)
-      caption += " Colours distinguish " + std::string(owners.size() > 1 ? "the series' owners" : "") +
-                 "; solid lines are joint 1, dashed joint 2, dotted joint 3 and beyond.";
+      caption += " One colour per series (the same in every plot); solid lines are joint 1, "
+                 "dashed joint 2, dotted joint 3 and beyond.";
     section.figure(figures.line(key, plot, caption));
     ++added;
   }
   return added;
+}
+
+LinePlot owners_plot(const std::string& title, const std::string& y_label,
+                     const std::vector<Owner>& owners, const std::vector<std::string>& keys,
+                     const std::vector<std::string>& key_labels) {
+  LinePlot plot;
+  plot.title = title;
+  plot.x_label = "time (s)";
+  plot.y_label = y_label;
+  for (const Owner& o : owners) {
+    if (!o.series || !jsonv::has(*o.series, "t_s")) continue;
+    const auto t = jsonv::vec(*o.series, "t_s");
+    size_t curve = 0;
+    for (const auto& key : keys) {
+      if (!o.series->contains(key)) continue;
+      for (const auto& col : columns_of(*o.series, key, t.size())) {
+        Series s;
+        s.x = t;
+        s.y = col;
+        s.colour = colour_for(o.colour_key.empty() ? o.label : o.colour_key);
+        s.style = column_style(curve);
+        const std::string what = curve < key_labels.size() ? key_labels[curve] : label_from_key(key);
+        s.label = owners.size() > 1 ? o.label + ", " + what : what;
+        if (owners.size() == 1 && keys.size() + key_labels.size() > 2) {
+          // a single owner: colour per curve reads better than style alone
+          s.colour = colour_for("joint" + std::to_string(curve + 1));
+        }
+        plot.series.push_back(std::move(s));
+        ++curve;
+      }
+    }
+  }
+  return plot;
 }
 
 void generic_sections(const json& section, FigureWriter& figures, CasePage& page) {

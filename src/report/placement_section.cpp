@@ -1,10 +1,474 @@
-// the placement study of 000_bf165d3f0a5605ef.txt: optima, maps, phi curves, time series
+// the placement study of 000_bf165d3f0a5605ef.txt: optima, time series (figs. 9.1-9.5),
+// energy over direction angle (9.11), placement maps, root loci (9.30), pareto front
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
 #include "report/number_format.hpp"
 #include "report/study_sections.hpp"
 
 namespace armstudy::report {
+namespace {
 
 using nlohmann::json;
+
+constexpr Rgb kUnreachable{215, 215, 215};
+constexpr Rgb kSingular{238, 120, 120};
+constexpr Rgb kOverLimit{250, 200, 120};
+constexpr int kMaxMapCells = 120;  // per axis, drawn (the data keeps every node)
+
+std::string id_label(const json& o) {
+  return jsonv::str(o, "program") + ", conf. " + jsonv::str(o, "configuration");
+}
+std::string id_key(const json& o) {
+  return jsonv::str(o, "program") + "/" + jsonv::str(o, "configuration");
+}
+std::string pair_str(const json& o, const char* key, int digits) {
+  if (!jsonv::has(o, key) || !o[key].is_array() || o[key].size() != 2) return "n/a";
+  auto f = [&](const json& v) { return v.is_number() ? format_sig(v.get<double>(), digits) : "n/a"; };
+  return "(" + f(o[key][0]) + ", " + f(o[key][1]) + ")";
+}
+double at(const json& o, const char* key, size_t i) {
+  if (!jsonv::has(o, key) || !o[key].is_array() || i >= o[key].size() || !o[key][i].is_number())
+    return NAN;
+  return o[key][i].get<double>();
+}
+const json& arr(const json& j, const char* key) {
+  static const json empty = json::array();
+  return jsonv::has(j, key) && j[key].is_array() ? j[key] : empty;
+}
+
+Section task_section(const json& pl) {
+  Section s;
+  s.id = "task";
+  s.heading = "Task and search";
+  s.new_page = false;
+  Table t;
+  t.caption = "The task, the search and its limits (defaults filled in).";
+  t.header = {"quantity", "value"};
+  auto row = [&](const std::string& k, const std::string& v) { t.rows.push_back({k, v}); };
+  row("Lmax = 4 sqrt(L1 L2)", jsonv::sig(pl, "lmax_m", 5) + " m");
+  row("line length L", jsonv::sig(pl, "length_m", 5) + " m (" +
+                           jsonv::sig(pl, "length_fraction", 4) + " Lmax)");
+  row("duration T", jsonv::sig(pl, "duration_s", 4) + " s");
+  row("samples per trajectory", jsonv::str(pl, "samples"));
+  row("singularity margin", jsonv::sig(pl, "singularity_margin_m", 4) + " m");
+  row("workspace annulus", pair_str(pl, "annulus_m", 5) + " m");
+  row("torque limits [joint 1, joint 2]",
+      jsonv::has(pl, "torque_limits_Nm") && !pl["torque_limits_Nm"].is_null()
+          ? pair_str(pl, "torque_limits_Nm", 5) + " N m"
+          : "none");
+  row("power limits [joint 1, joint 2]",
+      jsonv::has(pl, "power_limits_W") && !pl["power_limits_W"].is_null()
+          ? pair_str(pl, "power_limits_W", 5) + " W"
+          : "none");
+  if (jsonv::has(pl, "thesis_intervals")) {
+    const json& ti = pl["thesis_intervals"];
+    row("thesis x_S interval (case " + jsonv::str(ti, "x_s_case") + " of 4.7-4.9)",
+        "[" + jsonv::sig(ti, "x_s_init_m", 5) + ", " + jsonv::sig(ti, "x_s_fin_m", 5) + "] m");
+  }
+  s.table(std::move(t));
+  if (jsonv::has(pl, "counts")) {
+    const json& c = pl["counts"];
+    Table ct;
+    ct.caption = "Candidates of the geometric sweep (x_S grid × φ in [0°, 180°]) and the "
+                 "thesis's own intervals against the exact annulus check.";
+    ct.header = {"candidates", "count"};
+    for (const auto& [k, label] : std::vector<std::pair<const char*, const char*>>{
+             {"total", "total"},
+             {"unreachable", "unreachable (part of the line outside the annulus)"},
+             {"singular", "singular (closer to a boundary than the margin)"},
+             {"clear", "clear of both boundaries"},
+             {"thesis_admitted", "admitted by the thesis's intervals (4.7-4.13)"},
+             {"thesis_rejected_by_exact_check", "of those, rejected by the exact check"},
+             {"exact_accepted_outside_thesis",
+              "accepted by the exact check outside the thesis's φ interval"}})
+      if (jsonv::has(c, k)) ct.rows.push_back({label, jsonv::str(c, k)});
+    s.table(std::move(ct));
+  }
+  return s;
+}
+
+Section optima_section(const json& pl, FigureWriter& figures) {
+  Section s;
+  s.id = "optima";
+  s.heading = "Optimal placements";
+  Table t;
+  t.caption = "Refined optimum per motion program and configuration (the grid optimum's "
+              "energy beside it). Root (X, Y) in the frame fixed to the line (4.14); peaks "
+              "are [joint 1, joint 2].";
+  t.header = {"program, configuration", "energy (J)", "grid energy (J)", "x_S (m)", "φ (deg)",
+              "root (X, Y) (m)", "min |sin q2|", "peak torque (N m)", "peak power (W)",
+              "signed work (J)"};
+  std::vector<Owner> owners;
+  for (const json& o : arr(pl, "optima")) {
+    t.rows.push_back({id_label(o), jsonv::sig(o, "energy_J", 6), jsonv::sig(o, "grid_energy_J", 6),
+                      jsonv::sig(o, "x_s_m", 6), jsonv::sig(o, "phi_deg", 6),
+                      pair_str(o, "root_xy_m", 5), jsonv::sig(o, "min_abs_sin_elbow", 3),
+                      pair_str(o, "peak_torque_Nm", 4), pair_str(o, "peak_power_W", 4),
+                      jsonv::sig(o, "signed_work_J", 3)});
+    t.swatches.push_back(css_colour(colour_for(id_key(o))));
+    if (jsonv::has(o, "series")) owners.push_back({id_label(o), id_key(o), &o["series"]});
+  }
+  if (t.rows.empty())
+    s.paragraph("No program and configuration has an admissible placement.");
+  else
+    s.table(std::move(t));
+  Table u;
+  u.caption = "Programs and configurations without an admissible placement.";
+  u.header = {"program, configuration", "why"};
+  for (const json& o : arr(pl, "unsolved")) u.rows.push_back({id_label(o), jsonv::str(o, "reason")});
+  if (!u.rows.empty()) s.table(std::move(u));
+
+  if (owners.empty()) return s;
+  struct Quantity {
+    const char* name;
+    const char* key1;
+    const char* key2;
+    const char* unit_label;
+    const char* thesis_fig;
+  };
+  const Quantity quantities[] = {
+      {"joint_angles", "q1_rad", "q2_rad", "joint angle (rad)", "9.1"},
+      {"joint_velocities", "qd1_rad_s", "qd2_rad_s", "joint velocity (rad/s)", "9.2"},
+      {"joint_accelerations", "qdd1_rad_s2", "qdd2_rad_s2", "joint acceleration (rad/s²)", "9.3"},
+      {"joint_torques", "tau1_Nm", "tau2_Nm", "joint torque (N m)", "9.4"},
+      {"joint_powers", "power1_W", "power2_W", "power (W)", "9.5"},
+  };
+  for (const Quantity& q : quantities) {
+    const std::string what = std::string(q.unit_label).substr(0, std::string(q.unit_label).find(" ("));
+    LinePlot plot = owners_plot(what + "s of the optima", q.unit_label, owners, {q.key1, q.key2},
+                                {"joint 1", "joint 2"});
+    if (plot.series.empty()) continue;
+    s.figure(figures.line(q.name, plot,
+                          what + "s over time for the optimum of each program and configuration "
+                                 "(the thesis's Figure " + q.thesis_fig +
+                                 " style). Solid: joint 1 (q1, link 1 from the base); dashed: "
+                                 "joint 2 (q2, the elbow, relative to link 1)."));
+  }
+  LinePlot energy = owners_plot("actuator energy of the optima", "energy used so far (J)", owners,
+                                {"energy_J"}, {"energy"});
+  if (!energy.series.empty())
+    s.figure(figures.line("energy", energy,
+                          "Actuator energy used up to each instant, ∫ |M1 dθ1| + |M2 d(θ2 - θ1)|; "
+                          "the end value is the optimum's energy."));
+  return s;
+}
+
+Section curves_section(const json& pl, FigureWriter& figures) {
+  Section s;
+  s.id = "direction-angle";
+  s.heading = "Energy versus direction angle";
+  LinePlot plot;
+  plot.title = "energy over the direction angle φ";
+  plot.x_label = "direction angle φ (deg)";
+  plot.y_label = "energy (J)";
+  std::string abscissae;
+  for (const json& c : arr(pl, "curves")) {
+    const auto phi = jsonv::vec(c, "phi_deg");
+    const auto e = jsonv::vec(c, "energy_J");
+    const std::string status = jsonv::str(c, "status");
+    if (phi.size() != e.size() || phi.empty()) continue;
+    // admissible points solid, singular or over-limit ones dotted
+    Series ok, excluded;
+    ok.label = id_label(c) + " (x_S = " + jsonv::sig(c, "x_s_m", 4) + " m)";
+    excluded.label = "";
+    ok.colour = excluded.colour = colour_for(id_key(c));
+    excluded.style = LineStyle::kDotted;
+    for (size_t k = 0; k < phi.size(); ++k) {
+      const char st = k < status.size() ? status[k] : 'o';
+      ok.x.push_back(phi[k]);
+      excluded.x.push_back(phi[k]);
+      ok.y.push_back(st == 'o' ? e[k] : NAN);
+      excluded.y.push_back(st == 's' || st == 'x' ? e[k] : NAN);
+      // join the dotted part to its solid neighbours
+      if (k > 0 && (st == 'o') != (k - 1 < status.size() && status[k - 1] == 'o')) {
+        if (st == 'o') excluded.y[k] = e[k];
+        else excluded.y[k - 1] = e[k - 1];
+      }
+    }
+    plot.series.push_back(std::move(ok));
+    plot.series.push_back(std::move(excluded));
+    abscissae += (abscissae.empty() ? "" : ", ") + id_label(c) + ": " + jsonv::sig(c, "x_s_m", 4) + " m";
+  }
+  bool any = false;
+  for (const auto& se : plot.series)
+    for (double y : se.y) any |= std::isfinite(y);
+  if (!any) {
+    s.paragraph("No energy-versus-direction curve has a reachable point.");
+    return s;
+  }
+  s.figure(figures.line("energy_vs_phi", plot,
+                        "Energy of the motion over the direction angle φ at the optimum's start "
+                        "abscissa x_S (" + abscissae +
+                            "), as the thesis's Figure 9.11. Solid: admissible; dotted: singular "
+                            "or over a limit (excluded from the optimum); gaps: unreachable."));
+  return s;
+}
+
+// one placement map (rows of text in results.json) as a shaded map
+bool map_figure(const json& pl, const json& m, FigureWriter& figures, Section& s) {
+  const auto xs = jsonv::vec(m, "x_m");
+  const auto ys = jsonv::vec(m, "y_m");
+  const json& er = arr(m, "energy_J_rows");
+  const json& sr = arr(m, "status_rows");
+  if (xs.size() < 2 || ys.size() < 2 || er.size() != ys.size() || sr.size() != ys.size())
+    return false;
+  const size_t nx = xs.size(), ny = ys.size();
+  std::vector<double> z(nx * ny, NAN);
+  std::vector<char> st(nx * ny, '.');
+  for (size_t j = 0; j < ny; ++j) {
+    std::istringstream in(er[j].is_string() ? er[j].get<std::string>() : "");
+    const std::string status = sr[j].is_string() ? sr[j].get<std::string>() : "";
+    std::string tok;
+    for (size_t i = 0; i < nx && (in >> tok); ++i) {
+      if (tok != "-") z[j * nx + i] = std::strtod(tok.c_str(), nullptr);
+      if (i < status.size()) st[j * nx + i] = status[i];
+    }
+  }
+  // thinned grid for drawing; a drawn cell takes the most severe status of its block
+  const size_t kx = (nx + kMaxMapCells - 1) / kMaxMapCells, ky = (ny + kMaxMapCells - 1) / kMaxMapCells;
+  const size_t mx = (nx - 1) / kx + 1, my = (ny - 1) / ky + 1;
+  ShadedMap map;
+  map.title = "energy over root locations, " + id_label(m);
+  map.x_label = "root X (m), along the line";
+  map.y_label = "root Y (m)";
+  map.z_label = "energy (J)";
+  map.nx = static_cast<int>(mx);
+  map.ny = static_cast<int>(my);
+  map.x_min = xs.front();
+  map.x_max = xs[(mx - 1) * kx];
+  map.y_min = ys.front();
+  map.y_max = ys[(my - 1) * ky];
+  map.z.assign(mx * my, NAN);
+  MapRegion unreachable{"unreachable", kUnreachable, std::vector<std::uint8_t>(mx * my, 0)};
+  MapRegion singular{"singular (within the margin)", kSingular, std::vector<std::uint8_t>(mx * my, 0)};
+  MapRegion over{"over a torque/power limit", kOverLimit, std::vector<std::uint8_t>(mx * my, 0)};
+  std::vector<double> feasible;
+  for (size_t j = 0; j < my; ++j)
+    for (size_t i = 0; i < mx; ++i) {
+      int worst = 3;  // 0 unreachable, 1 singular, 2 over, 3 feasible
+      for (size_t b = j * ky; b < std::min(ny, (j + 1) * ky); ++b)
+        for (size_t a = i * kx; a < std::min(nx, (i + 1) * kx); ++a) {
+          const char c = st[b * nx + a];
+          worst = std::min(worst, c == '.' ? 0 : c == 's' ? 1 : c == 'x' ? 2 : 3);
+        }
+      const size_t k = j * mx + i;
+      if (worst == 0) unreachable.mask[k] = 1;
+      else if (worst == 1) singular.mask[k] = 1;
+      else if (worst == 2) over.mask[k] = 1;
+      else {
+        map.z[k] = z[(j * ky) * nx + i * kx];
+        if (std::isfinite(map.z[k])) feasible.push_back(map.z[k]);
+      }
+    }
+  // colours saturate at the 95th percentile: near the margin the energy climbs steeply
+  std::string saturation;
+  if (feasible.size() > 20) {
+    std::vector<double> sorted = feasible;
+    std::sort(sorted.begin(), sorted.end());
+    const double cap = sorted[static_cast<size_t>(0.95 * (sorted.size() - 1))];
+    if (cap < sorted.back()) {
+      for (double& v : map.z)
+        if (std::isfinite(v)) v = std::min(v, cap);
+      saturation = " Colours saturate at the 95th percentile of the admissible energies (" +
+                   format_sig(cap, 4) + " J; the largest is " + format_sig(sorted.back(), 4) + " J).";
+    }
+  }
+  map.regions = {unreachable, singular, over};
+  Series line;
+  line.label = "task line";
+  line.colour = {0, 0, 0};
+  line.width = 2.5;
+  line.x = {0.0, jsonv::num(pl, "length_m")};
+  line.y = {0.0, 0.0};
+  if (std::isfinite(line.x[1])) map.overlays.push_back(line);
+  if (jsonv::has(m, "optimum_xy_m") && m["optimum_xy_m"].is_array())
+    map.markers.push_back({at(m, "optimum_xy_m", 0), at(m, "optimum_xy_m", 1), "optimum",
+                           colour_for(id_key(m))});
+  for (const json& th : arr(pl, "thesis_search"))
+    if (id_key(th) == id_key(m) && jsonv::has(th, "root_xy_m"))
+      map.markers.push_back({at(th, "root_xy_m", 0), at(th, "root_xy_m", 1),
+                             "thesis-interval best (" + jsonv::str(th, "status") + ")", {0, 0, 0},
+                             false});
+  const std::string name = "map_" + jsonv::str(m, "program") + "_" + jsonv::str(m, "configuration");
+  s.figure(figures.map(name, map,
+                       "Energy of the task over root locations (X, Y) in the frame fixed to the "
+                       "line (the line runs from the origin along X), " + id_label(m) +
+                           ", on a " + std::to_string(nx) + " × " + std::to_string(ny) +
+                           " grid (drawn " + std::to_string(mx) + " × " + std::to_string(my) +
+                           "). Only admissible placements are shaded; unreachable, singular and "
+                           "over-limit regions are flat colours; Y < 0 is the mirror image with "
+                           "the configurations swapped." + saturation));
+  return true;
+}
+
+Section maps_section(const json& pl, FigureWriter& figures) {
+  Section s;
+  s.id = "maps";
+  s.heading = "Placement maps";
+  int n = 0;
+  for (const json& m : arr(pl, "maps")) n += map_figure(pl, m, figures, s);
+  if (n == 0) s.paragraph("The result holds no placement map.");
+  return s;
+}
+
+Section loci_section(const json& pl, FigureWriter& figures) {
+  Section s;
+  s.id = "root-loci";
+  s.heading = "Optimal root locations and the torque trade-off";
+  const double length = jsonv::num(pl, "length_m");
+  const double r_in = at(pl, "annulus_m", 0), r_out = at(pl, "annulus_m", 1);
+  ShadedMap loci;
+  loci.title = "optimal root locations";
+  loci.x_label = "root X (m), along the line";
+  loci.y_label = "root Y (m)";
+  loci.nx = loci.ny = 2;
+  loci.z.assign(4, NAN);
+  double x_lo = std::min(0.0, length), x_hi = std::max(0.0, length), y_lo = 0, y_hi = 0;
+  auto grow = [&](double x, double y) {
+    if (!std::isfinite(x) || !std::isfinite(y)) return;
+    x_lo = std::min(x_lo, x);
+    x_hi = std::max(x_hi, x);
+    y_lo = std::min(y_lo, y);
+    y_hi = std::max(y_hi, y);
+  };
+  Series line;
+  line.label = "task line";
+  line.colour = {0, 0, 0};
+  line.width = 2.5;
+  line.x = {0.0, length};
+  line.y = {0.0, 0.0};
+  loci.overlays.push_back(line);
+  for (const json& o : arr(pl, "optima")) {
+    const double X = at(o, "root_xy_m", 0), Y = at(o, "root_xy_m", 1);
+    if (!std::isfinite(X) || !std::isfinite(Y)) continue;
+    loci.markers.push_back({X, Y, id_label(o), colour_for(id_key(o))});
+    grow(X, Y);
+    // the optimum's workspace: the line must lie inside the annulus
+    for (double r : {r_in, r_out}) {
+      if (!std::isfinite(r)) continue;
+      Series c;
+      c.colour = colour_for(id_key(o));
+      c.style = LineStyle::kDotted;
+      c.width = 1.0;
+      for (int k = 0; k <= 180; ++k) {
+        c.x.push_back(X + r * std::cos(k * M_PI / 90));
+        c.y.push_back(Y + r * std::sin(k * M_PI / 90));
+      }
+      loci.overlays.push_back(std::move(c));
+    }
+  }
+  for (const json& p : arr(pl, "pareto")) {
+    const auto xs = jsonv::vec(p, "x_s_m");
+    const auto ph = jsonv::vec(p, "phi_deg");
+    if (xs.size() != ph.size() || xs.size() < 2 || jsonv::str(p, "joint") != "1") continue;
+    Series locus;
+    locus.label = id_label(p) + ", Pareto locus";
+    locus.colour = colour_for(id_key(p));
+    locus.width = 1.2;
+    for (size_t k = 0; k < xs.size(); ++k) {
+      // root location in the line frame, eq. 4.14
+      locus.x.push_back(-xs[k] * std::cos(ph[k] * M_PI / 180));
+      locus.y.push_back(xs[k] * std::sin(ph[k] * M_PI / 180));
+      grow(locus.x.back(), locus.y.back());
+    }
+    loci.overlays.push_back(std::move(locus));
+  }
+  if (!loci.markers.empty()) {
+    const double pad = std::max(0.1, std::isfinite(r_out) ? 0.0 : 0.1);
+    const double reach = std::isfinite(r_out) ? r_out : 0;
+    double x0 = x_lo - pad, x1 = x_hi + pad, y0 = y_lo - pad, y1 = y_hi + pad;
+    for (const auto& mk : loci.markers) {
+      x0 = std::min(x0, mk.x - reach);
+      x1 = std::max(x1, mk.x + reach);
+      y0 = std::min(y0, mk.y - reach);
+      y1 = std::max(y1, mk.y + reach);
+    }
+    loci.x_min = x0;
+    loci.x_max = x1;
+    loci.y_min = y0;
+    loci.y_max = y1;
+    s.figure(figures.map("root_loci", loci,
+                         "Optimal root location of each program and configuration in the line's "
+                         "frame (the line starts at the origin), as the thesis's Figure 9.30, "
+                         "with each optimum's workspace annulus (dotted) and the locus of the "
+                         "least-energy root as the allowed peak torque grows (the Pareto front "
+                         "below, limit on joint 1)."));
+  }
+  for (int joint = 1; joint <= 2; ++joint) {
+    LinePlot plot;
+    plot.title = "least energy for an allowed peak torque of joint " + std::to_string(joint);
+    plot.x_label = "peak torque of joint " + std::to_string(joint) + " (N m)";
+    plot.y_label = "least energy (J)";
+    for (const json& p : arr(pl, "pareto")) {
+      if (jsonv::str(p, "joint") != std::to_string(joint)) continue;
+      Series se;
+      se.label = id_label(p);
+      se.colour = colour_for(id_key(p));
+      se.markers = arr(p, "energy_J").size() <= 40;
+      for (size_t k = 0; k < arr(p, "energy_J").size(); ++k) {
+        const json& pk = arr(p, "peak_torque_Nm");
+        if (k >= pk.size() || !pk[k].is_array() || pk[k].size() < 2 || !pk[k][joint - 1].is_number())
+          continue;
+        se.x.push_back(pk[k][joint - 1].get<double>());
+        se.y.push_back(at(p, "energy_J", k));
+      }
+      if (!se.x.empty()) plot.series.push_back(std::move(se));
+    }
+    bool any = false;
+    for (const auto& se : plot.series) any |= se.x.size() >= 1;
+    if (any)
+      s.figure(figures.line("pareto_joint" + std::to_string(joint), plot,
+                            "Trade-off: the least energy over all admissible placements whose "
+                            "peak torque of joint " + std::to_string(joint) +
+                                " stays below the abscissa — what a stronger motor buys."));
+  }
+  return s;
+}
+
+Section convergence_and_evaluations(const json& pl) {
+  Section s;
+  s.id = "convergence";
+  s.heading = "Convergence and evaluated placements";
+  if (jsonv::has(pl, "convergence")) {
+    const json& c = pl["convergence"];
+    Table t;
+    t.caption = "Energy of the optimum (" + id_label(c) +
+                ") as the samples per trajectory grow: the sampled integral converges.";
+    t.header = {"samples", "energy (J)"};
+    for (const json& r : arr(c, "rows")) t.rows.push_back({jsonv::str(r, "samples"), jsonv::sig(r, "energy_J", 10)});
+    if (!t.rows.empty()) s.table(std::move(t));
+  }
+  Table th;
+  th.caption = "Least energy among the thesis's own candidates (its intervals 4.7-4.13), "
+               "whatever their status: where this is singular, the thesis's method would have "
+               "reported a singular trajectory as the optimum.";
+  th.header = {"program, configuration", "energy (J)", "x_S (m)", "φ (deg)", "root (X, Y) (m)",
+               "status", "boundary distance (m)", "min |sin q2|"};
+  for (const json& o : arr(pl, "thesis_search")) {
+    th.rows.push_back({id_label(o), jsonv::sig(o, "energy_J", 6), jsonv::sig(o, "x_s_m", 5),
+                       jsonv::sig(o, "phi_deg", 5), pair_str(o, "root_xy_m", 4),
+                       jsonv::str(o, "status"), jsonv::sig(o, "boundary_distance_m", 3),
+                       jsonv::sig(o, "min_abs_sin_elbow", 3)});
+    th.swatches.push_back(css_colour(colour_for(id_key(o))));
+  }
+  if (!th.rows.empty()) s.table(std::move(th));
+  Table ev;
+  ev.caption = "Placements the case asked to evaluate, and what the optimum would save.";
+  ev.header = {"placement", "program, configuration", "x_S (m)", "φ (deg)", "energy (J)",
+               "status", "saving (J)", "saving (%)"};
+  for (const json& e : arr(pl, "evaluations"))
+    ev.rows.push_back({jsonv::str(e, "label"), id_label(e), jsonv::sig(e, "x_s_m", 5),
+                       jsonv::sig(e, "phi_deg", 5), jsonv::sig(e, "energy_J", 6),
+                       jsonv::str(e, "status"), jsonv::sig(e, "saving_J", 4),
+                       jsonv::sig(e, "saving_percent", 3)});
+  if (!ev.rows.empty()) s.table(std::move(ev));
+  if (s.blocks.empty()) s.paragraph("No convergence table or evaluations in the result.");
+  return s;
+}
+
+}  // namespace
 
 void placement_sections(const json& results, FigureWriter& figures, CasePage& page) {
   const json& pl = results.contains("placement") ? results["placement"] : json::object();
@@ -32,17 +496,12 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
       "arm is singular. This report computes from first principles and never presents a "
       "singular trajectory as an ordinary optimum, so its numbers differ from the thesis's.");
   page.sections.push_back(std::move(method));
-
-  Section res;
-  res.id = "results";
-  res.heading = "Results";
-  Table t;
-  t.header = {"quantity", "value"};
-  for (const auto& [k, v] : pl.items())
-    if (v.is_primitive() && !v.is_null()) t.rows.push_back({label_from_key(k), jsonv::str(pl, k.c_str())});
-  if (!t.rows.empty()) res.table(std::move(t));
-  time_series_figures(pl, "each optimum", figures, res);
-  page.sections.push_back(std::move(res));
+  page.sections.push_back(task_section(pl));
+  page.sections.push_back(optima_section(pl, figures));
+  page.sections.push_back(curves_section(pl, figures));
+  page.sections.push_back(maps_section(pl, figures));
+  page.sections.push_back(loci_section(pl, figures));
+  page.sections.push_back(convergence_and_evaluations(pl));
 }
 
 }  // namespace armstudy::report

@@ -257,6 +257,25 @@ void widen(double* lo, double* hi, double pad_fraction) {
   *hi += pad;
 }
 
+// a 1-2-5 step giving at most max_ticks intervals over range
+double nice_step(double range, double max_ticks) {
+  if (!(range > 0) || !(max_ticks >= 1)) return 0;
+  const double raw = range / max_ticks;
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * mag >= raw) return m * mag;
+  return 10 * mag;
+}
+
+// axes with at most one labelled tick per ~50 pt of viewport width, ~30 pt of height
+void draw_box(plstream& p, int width_pt, int height_pt, double x_range, double y_range, bool log_y) {
+  PLFLT vx0, vx1, vy0, vy1;
+  p.gvpd(vx0, vx1, vy0, vy1);
+  const double xt = nice_step(x_range, std::max(2.0, (vx1 - vx0) * width_pt / 50));
+  const double yt = log_y ? 0 : nice_step(y_range, std::max(2.0, (vy1 - vy0) * height_pt / 30));
+  p.box("bcnst", xt, 0, log_y ? "bcnstvl" : "bcnstv", yt, 0);
+}
+
 // the map being shaded, for plplot's "defined" callback (which carries no user data);
 // only touched while the plplot mutex is held
 const ShadedMap* g_defined_map = nullptr;
@@ -345,15 +364,23 @@ void write_line_plot(const LinePlot& plot, const fs::path& svg) {
   for (const auto& s : plot.series) has_legend |= !s.label.empty();
   has_legend |= !plot.references.empty();
 
-  Page page(svg, plot.width_pt, plot.height_pt,
+  // legend below the axes, two columns: its rows add to the page height
+  size_t entries = plot.references.size();
+  for (const auto& s : plot.series) entries += !s.label.empty();
+  const int columns = entries > 1 ? 2 : 1;
+  const int legend_rows = static_cast<int>((entries + columns - 1) / columns);
+  const double legend_pt = has_legend ? 14.0 * legend_rows + 14 : 0;
+  const int height_pt = plot.height_pt + static_cast<int>(legend_pt);
+  Page page(svg, plot.width_pt, height_pt,
             static_cast<int>(plot.series.size() + plot.references.size()));
   plstream& p = page.p;
-  p.vpor(0.12, has_legend ? 0.70 : 0.96, 0.14, 0.90);
+  const double bottom = (44.0 + legend_pt) / height_pt, top = 1 - 26.0 / height_pt;
+  p.vpor(0.11, 0.96, bottom, top);
   p.wind(x_lo, x_hi, y_lo, y_hi);
   p.col0(kSlotInk);
   p.width(0.8);
   p.lsty(1);
-  p.box("bcnst", 0, 0, plot.log_y ? "bcnstvl" : "bcnstv", 0, 0);
+  draw_box(p, plot.width_pt, height_pt, x_hi - x_lo, y_hi - y_lo, plot.log_y);
   // light grid for reading values off
   p.scol0(kSlotBackground, kWhite.r, kWhite.g, kWhite.b);
   p.lab(pl_text(plot.x_label).c_str(), pl_text(plot.y_label).c_str(), pl_text(plot.title).c_str());
@@ -386,7 +413,9 @@ void write_line_plot(const LinePlot& plot, const fs::path& svg) {
   }
   p.lsty(1);
   p.width(0.8);
-  legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_RIGHT, 0.02, 0.0, 1);
+  // offsets are fractions of the viewport: clear the axis numbers and label (~40 pt)
+  legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0,
+              40.0 / ((top - bottom) * height_pt), columns);
   page.finish(svg);
 }
 
@@ -466,24 +495,22 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     if (!s.label.empty()) legend.add(s.label, c, PL_LEGEND_LINE, style_code(s.style), s.width, "");
   }
   p.lsty(1);
-  for (const auto& m : map.markers) {
-    const PLINT c = page.slot(m.colour);
-    PLFLT x = m.x, y = m.y;
-    p.width(2.5);
-    p.col0(kSlotBackground);
-    p.ssym(0, 1.9);
-    p.poin(1, &x, &y, 4);
-    p.col0(c);
-    p.ssym(0, 1.5);
-    p.poin(1, &x, &y, 4);
-    p.poin(1, &x, &y, 5);
-    p.ssym(0, 1.0);
-    p.width(1.0);
-    legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, "#(850)");
-  }
+  // secondary markers first, the primary ones (optima) on top
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& m : map.markers) {
+      if (m.primary != (pass == 1)) continue;
+      const PLINT c = page.slot(m.colour);
+      PLFLT x = m.x, y = m.y;
+      const char* glyph = m.primary ? "⊗" : "□";
+      p.schr(0, m.primary ? 2.2 : 1.6);
+      p.col0(c);
+      p.string(1, &x, &y, glyph);
+      p.schr(0, 0.85);
+      legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, glyph);
+    }
   p.col0(kSlotInk);
   p.width(0.8);
-  p.box("bcnst", 0, 0, "bcnstv", 0, 0);
+  draw_box(p, map.width_pt, map.height_pt, wx1 - wx0, wy1 - wy0, false);
   p.lab(pl_text(map.x_label).c_str(), pl_text(map.y_label).c_str(), pl_text(map.title).c_str());
 
   if (has_values) {
@@ -500,7 +527,12 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
                kSlotBackground, kSlotInk, 1, 0.0, 0.0, 0, 0.0, 1, label_opts, labels, 1,
                axis_opts, ticks, sub_ticks, n_values, values);
   }
-  legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0, 0.13, 2);
+  {
+    PLFLT vx0, vx1, vy0, vy1;
+    p.gvpd(vx0, vx1, vy0, vy1);
+    legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0,
+                40.0 / ((vy1 - vy0) * map.height_pt), 2);
+  }
   page.finish(svg);
 }
 

@@ -73,6 +73,7 @@ struct Marker {
   double x = 0, y = 0;
   std::string label;
   Rgb colour;
+  bool primary = true;  ///< a large circled cross (an optimum), else a small square
 };
 
 /// A region of a map drawn in one flat colour (e.g. infeasible, singular), with a legend.

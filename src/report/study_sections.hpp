@@ -32,6 +32,21 @@ void generic_sections(const nlohmann::json& section, FigureWriter& figures, Case
 int time_series_figures(const nlohmann::json& node, const std::string& what, FigureWriter& figures,
                         Section& section, const std::vector<std::string>& skip = {});
 
+/// A named holder of a time series (an optimum, a solver, a motion) and its colour key.
+struct Owner {
+  std::string label;       ///< legend text, e.g. "cycloidal, configuration 1"
+  std::string colour_key;  ///< for colour_for, e.g. "cycloidal/1"
+  const nlohmann::json* series = nullptr;  ///< object with "t_s" and the keys plotted
+};
+
+/// One line plot over time of `keys` of every owner: colour per owner, line style per key
+/// (solid, dashed, dotted: joint 1, 2, 3), legend "<owner>, <key label>". Keys that hold
+/// one array per sample ([[j1, j2], ...]) contribute one curve per column, named by
+/// `key_labels` (one per key, or one per column of a single key).
+LinePlot owners_plot(const std::string& title, const std::string& y_label,
+                     const std::vector<Owner>& owners, const std::vector<std::string>& keys,
+                     const std::vector<std::string>& key_labels);
+
 /// Axis label of a results.json key by its unit suffix: "energy_J" -> "energy (J)",
 /// "q_rad" -> "q (rad)", "phi_deg" -> "phi (deg)".
 std::string label_from_key(const std::string& key);
