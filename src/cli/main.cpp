@@ -26,6 +26,7 @@
 #include "cli/sweep.hpp"
 #include "cli/progress.hpp"
 #include "cli/run_case.hpp"
+#include "report/case_report.hpp"
 #include "version.hpp"
 
 namespace {
@@ -107,6 +108,12 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::fprintf(stderr, "nothing was written: fix the case files above\n");
     return kExitBadInput;
   }
+  if (options.pdf && armstudy::report::find_chromium().empty()) {
+    std::fprintf(stderr, "armstudy: --pdf needs headless Chromium, and none was found (looked for "
+                         "$ARMSTUDY_CHROMIUM, then chromium, chromium-browser, google-chrome on "
+                         "PATH); install it with 'apt-get install chromium'; nothing was written\n");
+    return kExitRuntime;
+  }
   // a stable subset: cases sorted by name, every N-th from I
   std::sort(cases.begin(), cases.end(),
             [](const LoadedCase& a, const LoadedCase& b) { return a.info.name < b.info.name; });
@@ -165,6 +172,11 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   worker();
   for (auto& t : pool) t.join();
   progress.finish();
+  // the page of all cases and, with --pdf, every case's report.pdf
+  for (const auto& problem : armstudy::app::finish_reports(options, jobs)) {
+    std::fprintf(stderr, "armstudy: %s\n", problem.c_str());
+    worst = std::max(worst, kExitRuntime);
+  }
   // what CI reads, over every case in the output folder (not only this run's)
   try {
     std::vector<std::string> warnings;

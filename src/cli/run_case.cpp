@@ -5,11 +5,16 @@
 
 #include <cerrno>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <fstream>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "cli/provenance.hpp"
+#include "report/case_report.hpp"
 #include "version.hpp"
 
 namespace armstudy::app {
@@ -142,6 +147,46 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return outcome;
+}
+
+std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
+  std::vector<std::string> problems;
+  if (options.pdf) {
+    // every case page without an up-to-date pdf, including cases skipped as already done
+    std::vector<fs::path> todo;
+    if (fs::is_directory(options.out_dir))
+      for (const auto& e : fs::directory_iterator(options.out_dir)) {
+        const fs::path html = e.path() / "index.html", pdf = e.path() / "report.pdf";
+        if (!e.is_directory() || e.path().filename().string().starts_with(".") || !fs::exists(html))
+          continue;
+        if (!fs::exists(pdf) || fs::last_write_time(pdf) < fs::last_write_time(html))
+          todo.push_back(e.path());
+      }
+    std::sort(todo.begin(), todo.end());
+    std::atomic<size_t> next{0};
+    std::mutex mu;
+    auto worker = [&] {
+      for (size_t i = next++; i < todo.size(); i = next++) {
+        try {
+          report::print_pdf(todo[i] / "index.html", todo[i] / "report.pdf");
+        } catch (const std::exception& e) {
+          std::lock_guard<std::mutex> lock(mu);
+          problems.push_back(todo[i].filename().string() + ": no report.pdf: " + e.what());
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    const size_t n = std::min<size_t>(std::max(1, jobs), std::max<size_t>(1, todo.size()));
+    for (size_t k = 1; k < n; ++k) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+  }
+  try {
+    report::write_index(options.out_dir);
+  } catch (const std::exception& e) {
+    problems.push_back(std::string("cannot write the index page: ") + e.what());
+  }
+  return problems;
 }
 
 }  // namespace armstudy::app

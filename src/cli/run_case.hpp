@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "cli/pipeline.hpp"
 #include "studies/common.hpp"
@@ -34,6 +35,12 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
 nlohmann::json results_header(const cases::CaseInfo& info, studies::Status status,
                               const std::string& message,
                               const std::vector<studies::Check>& checks);
+
+/// After every case of a run: with options.pdf, prints each case report in out_dir that has
+/// no report.pdf at least as new as its index.html (headless Chromium, up to `jobs` at a
+/// time), then writes out_dir/index.html over every case folder there. Returns one line per
+/// problem (empty: all written).
+std::vector<std::string> finish_reports(const RunOptions& options, int jobs);
 
 /// Writes `text` to `path` through a temporary file and a rename.
 void write_file_atomic(const std::filesystem::path& path, const std::string& text);
