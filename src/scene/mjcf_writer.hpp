@@ -47,6 +47,8 @@ struct MjcfOptions {
   std::vector<std::string> link_extra;
   /// Extra XML appended in <visual> (after global and quality), e.g. headlight settings.
   std::string visual_extra;
+  /// Extra XML inserted right after <compiler> (e.g. <statistic>).
+  std::string top_extra;
   /// Extra XML inserted in <asset>.
   std::string asset_extra;
   /// solref / solimp of the spinner equality constraints (stiff: the spin of a rolling ball).

@@ -43,7 +43,7 @@ MujocoModel::MujocoModel(const std::string& mjcf, const std::string& source) {
   char err[1000] = "";
   mjModel* m = mj_loadXML(name, vfs.get(), err, sizeof err);
   mj_deleteVFS(vfs.get());
-  if (!m) throw SceneError(source + ": MuJoCo could not load the model: " + err);
+  if (!m) throw ModelError(source + ": MuJoCo could not load the model: " + err);
   model_.reset(m);
   data_.reset(mj_makeData(m));
   if (!data_) throw SceneError(source + ": MuJoCo could not allocate mjData");
@@ -53,7 +53,7 @@ MujocoModel MujocoModel::from_file(const std::string& path) {
   install_mujoco_handlers();
   char err[1000] = "";
   mjModel* m = mj_loadXML(path.c_str(), nullptr, err, sizeof err);
-  if (!m) throw SceneError(path + ": MuJoCo could not load the model: " + err);
+  if (!m) throw ModelError(path + ": MuJoCo could not load the model: " + err);
   MujocoModel out;
   out.model_.reset(m);
   out.data_.reset(mj_makeData(m));

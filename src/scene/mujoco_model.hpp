@@ -12,9 +12,10 @@ class MujocoModel {
  public:
   /// Compiles MJCF text (through MuJoCo's virtual file system; nothing touches disk).
   /// `source` names the model in error messages (e.g. the case file or "models/arm.xml").
-  /// @throws SceneError with MuJoCo's message and `source`.
+  /// @throws ModelError (a SceneError) with MuJoCo's message and `source`.
   MujocoModel(const std::string& mjcf, const std::string& source);
-  /// Loads an MJCF file. @throws SceneError with MuJoCo's message and the file name.
+  /// Loads an MJCF file. @throws ModelError (a SceneError) with MuJoCo's message and the
+  /// file name (a missing file included).
   static MujocoModel from_file(const std::string& path);
 
   const mjModel* model() const { return model_.get(); }

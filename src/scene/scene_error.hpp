@@ -11,6 +11,14 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A model file or generated MJCF that MuJoCo cannot load: bad input (exit code 2 at the
+/// CLI), where other SceneErrors are runtime failures (exit 3). The message holds MuJoCo's
+/// own text and the file.
+class ModelError : public SceneError {
+ public:
+  using SceneError::SceneError;
+};
+
 /// Installs mju_user_error / mju_user_warning handlers (once per process): MuJoCo errors
 /// throw SceneError instead of exiting the process (the 2.2.2 default); warnings are
 /// recorded and can be read with take_mujoco_warnings().

@@ -1,0 +1,230 @@
+#include "scene/arm_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <locale>
+#include <sstream>
+#include <stdexcept>
+
+#include "scene/mjcf_writer.hpp"
+
+namespace armstudy::scene {
+namespace {
+
+std::ostringstream xml() {
+  std::ostringstream x;
+  x.imbue(std::locale::classic());
+  x.precision(9);
+  return x;
+}
+
+double reach(const core::PlanarChain& chain) {
+  double r = 0;
+  for (const auto& l : chain.links) r += l.length;
+  return r;
+}
+
+double link_radius(const core::PlanarChain& chain) {
+  double longest = 0;
+  for (const auto& l : chain.links) longest = std::max(longest, l.length);
+  return 0.04 * longest;
+}
+
+// a light headlight-lit look without specular glare
+const char* kVisual =
+    "    <headlight ambient=\"0.45 0.45 0.45\" diffuse=\"0.55 0.55 0.55\" "
+    "specular=\"0.05 0.05 0.05\"/>\n"
+    "    <map znear=\"0.01\" zfar=\"60\"/>\n";
+
+}  // namespace
+
+ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor) {
+  ArmScene s;
+  s.chain = chain;
+  const double r = link_radius(chain);
+  const double R = reach(chain);
+  const Eigen::Vector2d b = chain.base;
+  // what to frame: the reach circle and the task
+  ViewBox v{b.x() - R, b.x() + R, b.y() - R, b.y() + R};
+  if (decor.task_start && decor.task_end) {
+    for (const Eigen::Vector2d& p : {*decor.task_start, *decor.task_end}) {
+      v.x_min = std::min(v.x_min, p.x() - 2 * r);
+      v.x_max = std::max(v.x_max, p.x() + 2 * r);
+      v.y_min = std::min(v.y_min, p.y() - 2 * r);
+      v.y_max = std::max(v.y_max, p.y() + 2 * r);
+    }
+  }
+  s.view = v;
+  const double cx = 0.5 * (v.x_min + v.x_max), cy = 0.5 * (v.y_min + v.y_max);
+  const double half = 2.0 * std::max(v.x_max - v.x_min, v.y_max - v.y_min);
+
+  MjcfOptions o;
+  o.model_name = "horizontal_arm";
+  o.offwidth = decor.offwidth;
+  o.offheight = decor.offheight;
+  o.link_radius = r;
+  o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.45 0.35 0.65 1"};
+  o.visual_extra = kVisual;
+  o.asset_extra =
+      "    <texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\"0.96 0.96 0.94\" "
+      "rgb2=\"0.96 0.96 0.94\" width=\"200\" height=\"200\" mark=\"edge\" "
+      "markrgb=\"0.80 0.80 0.78\"/>\n"
+      "    <material name=\"table\" texture=\"grid\" texrepeat=\"10 10\" texuniform=\"true\"/>\n";
+  o.comment =
+      "    The 2-link arm of 000_bf165d3f0a5605ef.txt in a horizontal plane (gravity 0): the\n"
+      "    table is the x-y plane seen from above (camera looking down -z), the root is the\n"
+      "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.1 m grid.\n"
+      "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
+      "    centres of mass and inertias are the case's; geoms are visual only.\n";
+  auto w = xml();
+  w << "    <geom name=\"table\" type=\"plane\" pos=\"" << cx << " " << cy << " " << -3 * r
+    << "\" size=\"" << half << " " << half << " 0.01\" material=\"table\"/>\n";
+  // root: pedestal and a cross on the table
+  w << "    <geom name=\"root\" type=\"cylinder\" pos=\"" << b.x() << " " << b.y() << " "
+    << -1.5 * r << "\" size=\"" << 2.2 * r << " " << 1.4 * r
+    << "\" rgba=\"0.20 0.20 0.22 1\"/>\n";
+  for (int k = 0; k < 2; ++k) {
+    const double dx = k == 0 ? 4 * r : 0, dy = k == 0 ? 0 : 4 * r;
+    w << "    <geom name=\"root_cross" << k << "\" type=\"capsule\" fromto=\"" << b.x() - dx << " "
+      << b.y() - dy << " " << -2.9 * r << " " << b.x() + dx << " " << b.y() + dy << " "
+      << -2.9 * r << "\" size=\"" << 0.25 * r << "\" rgba=\"0.20 0.20 0.22 1\"/>\n";
+  }
+  if (decor.task_start && decor.task_end) {
+    const Eigen::Vector2d& S = *decor.task_start;
+    const Eigen::Vector2d& F = *decor.task_end;
+    w << "    <geom name=\"task\" type=\"capsule\" fromto=\"" << S.x() << " " << S.y() << " "
+      << -2.6 * r << " " << F.x() << " " << F.y() << " " << -2.6 * r << "\" size=\"" << 0.35 * r
+      << "\" rgba=\"0.85 0.12 0.12 1\"/>\n"
+      << "    <geom name=\"task_start\" type=\"cylinder\" pos=\"" << S.x() << " " << S.y() << " "
+      << -2.6 * r << "\" size=\"" << 0.9 * r << " " << 0.3 * r
+      << "\" rgba=\"0.10 0.60 0.20 1\"/>\n"
+      << "    <geom name=\"task_end\" type=\"cylinder\" pos=\"" << F.x() << " " << F.y() << " "
+      << -2.6 * r << "\" size=\"" << 0.9 * r << " " << 0.3 * r
+      << "\" rgba=\"0.85 0.12 0.12 1\"/>\n";
+  }
+  o.world_extra = w.str();
+  // joints as dark discs
+  for (int i = 0; i < chain.num_links(); ++i) {
+    auto j = xml();
+    j << "      <geom name=\"joint" << i + 1 << "_disc\" type=\"cylinder\" pos=\"0 0 0\" size=\""
+      << 1.35 * r << " " << 1.1 * r << "\" rgba=\"0.25 0.25 0.28 1\"/>\n";
+    o.link_extra.push_back(j.str());
+  }
+  // payload: an orange sphere at the tip
+  auto t = xml();
+  t << "      <geom name=\"payload\" type=\"sphere\" pos=\"" << chain.links.back().length
+    << " 0 0\" size=\"" << 1.6 * r << "\" rgba=\"0.96 0.55 0.08 1\"/>\n";
+  o.tip_extra = t.str();
+  s.mjcf = write_mjcf(chain, o);
+  return s;
+}
+
+ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) {
+  const int n = chain.num_links();
+  if (n < 2) throw std::invalid_argument("tray_arm_scene: the chain needs a tray and a ball link");
+  ArmScene s;
+  s.chain = chain;
+  const double rb = decor.ball_radius;
+  const double r4 = chain.links[n - 1].length;
+  const double d = chain.links[n - 2].length;
+  const double R = reach(chain) + rb;
+  double r = 0;
+  for (int i = 0; i < n - 2; ++i) r = std::max(r, 0.04 * chain.links[i].length);
+  if (r == 0) r = 0.25 * rb;
+  const Eigen::Vector2d b = chain.base;
+  s.view = decor.view ? *decor.view : ViewBox{b.x() - R, b.x() + R, b.y() - R, b.y() + R};
+  const ViewBox& v = s.view;
+  const double cx = 0.5 * (v.x_min + v.x_max), cy = 0.5 * (v.y_min + v.y_max);
+  const double half = 2.0 * std::max(v.x_max - v.x_min, v.y_max - v.y_min);
+
+  MjcfOptions o;
+  o.model_name = "tray_arm";
+  o.offwidth = decor.offwidth;
+  o.offheight = decor.offheight;
+  o.link_radius = r;
+  o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.40 0.40 0.45 1",
+                 "0.85 0.15 0.15 0"};
+  if (n == 2) o.link_rgba = {"0.40 0.40 0.45 1", "0.85 0.15 0.15 0"};
+  o.visual_extra = kVisual;
+  o.asset_extra =
+      "    <texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\"0.97 0.97 0.98\" "
+      "rgb2=\"0.97 0.97 0.98\" width=\"200\" height=\"200\" mark=\"edge\" "
+      "markrgb=\"0.86 0.86 0.90\"/>\n"
+      "    <material name=\"wall\" texture=\"grid\" texrepeat=\"20 20\" texuniform=\"true\"/>\n";
+  o.comment =
+      "    The arm with a passive tray of 003_a986fd825f31d3e2.txt in a vertical plane: the\n"
+      "    x-y plane seen from +z (x right, y up), gravity along -y; a 0.05 m grid.\n"
+      "    Joints 1 and 2 are driven (motor actuators, gear 1), the tray's hinge is passive, and\n"
+      "    link N is a massless radius r4 about the cup's centre C carrying the ball's mass at\n"
+      "    its tip: the ball's centre moves on the circle of radius r4 about C.\n"
+      "    The rolling ball's SPIN is body spin1: the ball rolls without slip inside the cup,\n"
+      "    so its absolute rate is (theta1' + theta2' + theta3') - (r4/r_b) theta4' (a\n"
+      "    core::SpinningInertia with coefficients (1, 1, 1, -r4/r_b)). It couples several\n"
+      "    joints, so it cannot be armature (armature is diagonal) and no tree of rigid bodies\n"
+      "    with positive inertias reproduces I c c^T: spin1 hangs on link N with its own hinge\n"
+      "    spin1_joint, which must turn by psi = -(1 + r4/r_b) theta4, enforced by the joint\n"
+      "    equality spin1_rolls. Kinematic replay sets psi exactly; mj_inverse is exact after\n"
+      "    projecting onto the chain (tau_chain = J^T qfrc_inverse, q_mujoco = J q_chain);\n"
+      "    mj_step treats the stiff equality as MuJoCo's soft constraint (impedance 0.9999), which\n"
+      "    conserves energy to ~1e-7 relative (tests/scene/pendulum_mujoco_test.cpp).\n";
+  auto w = xml();
+  w << "    <geom name=\"wall\" type=\"plane\" pos=\"" << cx << " " << cy << " "
+    << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half
+    << " 0.01\" material=\"wall\"/>\n";
+  // base: a pedestal under joint 1 and a floor line
+  w << "    <geom name=\"pedestal\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 2.5 * r
+    << " " << -2 * r << "\" size=\"" << 2.2 * r << " " << 2.5 * r << " " << r
+    << "\" rgba=\"0.25 0.25 0.28 1\"/>\n"
+    << "    <geom name=\"floor\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 5.2 * r << " "
+    << -2 * r << "\" size=\"" << 8 * r << " " << 0.3 * r << " " << r
+    << "\" rgba=\"0.25 0.25 0.28 1\"/>\n";
+  o.world_extra = w.str();
+  // joints as discs; the tray's cup as an arc about C = (d, 0) in the tray's frame
+  o.link_extra.assign(n, "");
+  for (int i = 0; i < n - 1; ++i) {
+    auto j = xml();
+    j << "      <geom name=\"joint" << i + 1 << "_disc\" type=\"cylinder\" pos=\"0 0 0\" size=\""
+      << 1.35 * r << " " << 1.1 * r << "\" rgba=\"0.25 0.25 0.28 1\"/>\n";
+    o.link_extra[i] = j.str();
+  }
+  {
+    auto c = xml();
+    const int segments = 16;
+    const double rc = r4 + rb + 0.35 * r;
+    for (int k = 0; k < segments; ++k) {
+      const double a0 = -decor.cup_width / 2 + decor.cup_width * k / segments;
+      const double a1 = -decor.cup_width / 2 + decor.cup_width * (k + 1) / segments;
+      c << "      <geom name=\"cup" << k << "\" type=\"capsule\" fromto=\""
+        << d + rc * std::cos(a0) << " " << rc * std::sin(a0) << " 0 " << d + rc * std::cos(a1)
+        << " " << rc * std::sin(a1) << " 0\" size=\"" << 0.35 * r
+        << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
+    }
+    o.link_extra[n - 2] += c.str();
+  }
+  // the ball: drawn on the spin body of the ball's spinner (the one turning with the ball
+  // joint), which sits at the ball's centre (tip of link N); else at the tip
+  auto ball = xml();
+  ball << "      <geom name=\"ball\" type=\"sphere\" size=\"" << rb
+       << "\" rgba=\"0.86 0.14 0.14 1\"/>\n"
+       << "      <geom name=\"ball_stripe\" type=\"box\" pos=\"0 0 " << 0.5 * rb << "\" size=\""
+       << 0.9 * rb << " " << 0.18 * rb << " " << 0.6 * rb << "\" rgba=\"1 1 1 1\"/>\n";
+  bool ball_drawn = false;
+  o.spinner_pos.assign(chain.spinners.size(), Eigen::Vector2d::Zero());
+  o.spinner_extra.assign(chain.spinners.size(), "");
+  for (const SpinnerBody& sb : spinner_bodies(chain)) {
+    if (ball_drawn || sb.link != n - 1 || chain.spinners[sb.spinner].coeffs[n - 1] == 0.0) continue;
+    o.spinner_pos[sb.spinner] = Eigen::Vector2d(r4, 0);
+    o.spinner_extra[sb.spinner] = ball.str();
+    ball_drawn = true;
+  }
+  if (!ball_drawn) {
+    auto t = xml();
+    t << "      <body name=\"ball_visual\" pos=\"" << r4 << " 0 0\">\n" << ball.str()
+      << "      </body>\n";
+    o.tip_extra = t.str();
+  }
+  s.mjcf = write_mjcf(chain, o);
+  return s;
+}
+
+}  // namespace armstudy::scene

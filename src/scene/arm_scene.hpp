@@ -1,0 +1,52 @@
+#pragma once
+/// The MuJoCo scenes of the two arms, generated from the case's chain (so that masses,
+/// centres of mass and inertias are the case's): the horizontal 2-link arm on a table seen
+/// from above, with the straight-line task and the root marked; the tray arm in a vertical
+/// plane seen from the side, with the rolling ball.
+
+#include <optional>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "core/planar_chain.hpp"
+#include "scene/renderer.hpp"
+
+namespace armstudy::scene {
+
+/// A model to load and the rectangle its camera frames.
+struct ArmScene {
+  core::PlanarChain chain;
+  std::string mjcf;
+  ViewBox view;
+};
+
+/// What the horizontal arm's table shows besides the arm (world frame, m).
+struct TableDecor {
+  std::optional<Eigen::Vector2d> task_start;  ///< the straight-line task S -> F
+  std::optional<Eigen::Vector2d> task_end;
+  int offwidth = 640, offheight = 480;  ///< px, at least the frame size
+};
+
+/// The horizontal arm on a table (top view): links in blue and teal, the payload as an
+/// orange sphere at the tip, the task line in red with its start and end, the root as a
+/// dark pedestal with a cross; a 0.1 m grid on the table.
+ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor);
+
+/// What the tray arm's scene needs besides the chain.
+struct TrayDecor {
+  double ball_radius = 0.010;             ///< m (r_b)
+  double cup_width = 2.0;                 ///< rad, the tray's angular width (lambda of eq. 9)
+  int offwidth = 640, offheight = 480;    ///< px
+  std::optional<ViewBox> view;            ///< default: everything the arm can reach
+};
+
+/// The tray arm in a vertical plane (side view, gravity down the image): links 1 and 2
+/// driven, the tray (link N-1) a cup of radius r4 + r_b about the end of its axis, the ball
+/// (tip of link N) a red sphere with a white stripe that shows its spin. The ball's spin
+/// is an extra body with its own hinge coupled to the ball joint by a joint equality
+/// (mjcf_writer.hpp); the model's comment says so.
+/// @throws std::invalid_argument if the chain has fewer than 2 links.
+ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor);
+
+}  // namespace armstudy::scene

@@ -1,0 +1,109 @@
+#include "scene/frames.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/kinematics.hpp"
+#include "scene/scene_error.hpp"
+
+namespace armstudy::scene {
+
+std::string time_label(double t) {
+  char b[48];
+  std::snprintf(b, sizeof b, "t = %.3f s", t);
+  return b;
+}
+
+std::vector<double> even_times(double t0, double t1, int n) {
+  if (n <= 1) return {t0};
+  std::vector<double> out(n);
+  for (int k = 0; k < n; ++k) out[k] = t0 + (t1 - t0) * k / (n - 1);
+  return out;
+}
+
+int strip_columns(int n) { return std::clamp(n, 1, 3); }
+
+std::vector<PoseSample> resample(std::span<const double> t, std::span<const core::JointVector> q,
+                                 std::span<const core::JointVector> qd,
+                                 std::span<const double> at) {
+  if (t.empty() || q.size() != t.size()) throw SceneError("resample: no samples");
+  std::vector<PoseSample> out;
+  for (double ta : at) {
+    const double tc = std::clamp(ta, t.front(), t.back());
+    const size_t hi = std::min<size_t>(
+        t.size() - 1, static_cast<size_t>(std::lower_bound(t.begin(), t.end(), tc) - t.begin()));
+    const size_t lo = hi == 0 ? 0 : hi - 1;
+    const double span = t[hi] - t[lo];
+    const double w = span > 0 ? (tc - t[lo]) / span : 1.0;
+    PoseSample s;
+    s.t = ta;
+    s.q = (1 - w) * q[lo] + w * q[hi];
+    if (qd.size() == t.size()) s.qd = (1 - w) * qd[lo] + w * qd[hi];
+    out.push_back(s);
+  }
+  return out;
+}
+
+SceneRenderer::SceneRenderer(const ArmScene& scene, const std::string& source,
+                             const RenderSettings& settings)
+    : chain_(scene.chain),
+      model_(scene.mjcf, source),
+      map_(scene.chain, model_.model()),
+      renderer_(model_.model(), settings, scene.view) {}
+
+Image SceneRenderer::frame(const PoseSample& s, const FrameLabels& labels) {
+  set_pose(model_, map_, s);
+  return renderer_.render(model_.data(), labels);
+}
+
+Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::string& title,
+                           int columns) {
+  begin_replay(model_);
+  std::vector<Image> tiles;
+  for (size_t k = 0; k < samples.size(); ++k) {
+    FrameLabels l;
+    l.top_left = time_label(samples[k].t);
+    if (k == 0 && !title.empty()) l.bottom_left = title;
+    tiles.push_back(frame(samples[k], l));
+  }
+  return tile(tiles, columns, 8, Rgb{255, 255, 255});
+}
+
+Image SceneRenderer::locus(std::span<const PoseSample> samples,
+                           std::span<const Eigen::Vector2d> path,
+                           std::span<const Eigen::Vector2d> flight, const FrameLabels& labels,
+                           const LocusStyle& style) {
+  if (samples.empty()) throw SceneError("locus: no poses");
+  begin_replay(model_);
+  const int n = static_cast<int>(samples.size());
+  double r = 0;
+  for (const auto& l : chain_.links) r = std::max(r, 0.04 * l.length);
+  std::vector<mjvGeom> extra;
+  // older poses: colours blended toward white and pushed slightly away from the camera
+  for (int k = 0; k + 1 < n; ++k) {
+    set_pose(model_, map_, samples[k]);
+    const double weight = style.faintest + (1 - style.faintest) * k / std::max(1, n - 1);
+    for (mjvGeom g : renderer_.dynamic_geoms(model_.data())) {
+      if (g.rgba[3] == 0) continue;
+      for (int c = 0; c < 3; ++c)
+        g.rgba[c] = static_cast<float>(weight * g.rgba[c] + (1 - weight) * 1.0);
+      g.pos[2] -= static_cast<float>(0.05 * r * (n - 1 - k));
+      extra.push_back(g);
+    }
+  }
+  // the end-effector path on top of everything
+  const double top = 3.0 * r;
+  for (size_t k = 1; k < path.size(); ++k)
+    extra.push_back(segment_geom(Eigen::Vector3d(path[k - 1].x(), path[k - 1].y(), top),
+                                 Eigen::Vector3d(path[k].x(), path[k].y(), top), 0.3 * r,
+                                 style.path_rgba));
+  // the thrown object's flight: dots
+  for (size_t k = 0; k < flight.size(); ++k)
+    extra.push_back(sphere_geom(Eigen::Vector3d(flight[k].x(), flight[k].y(), top), 0.45 * r,
+                                style.flight_rgba));
+  set_pose(model_, map_, samples[n - 1]);
+  return renderer_.render(model_.data(), labels, extra);
+}
+
+}  // namespace armstudy::scene

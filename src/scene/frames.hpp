@@ -1,0 +1,79 @@
+#pragma once
+/// Frame strips (N poses at given times, one PNG, time labels) and stroboscopic loci
+/// (several poses superimposed, older ones fainter, the end-effector path traced).
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "scene/arm_scene.hpp"
+#include "scene/chain_map.hpp"
+#include "scene/image.hpp"
+#include "scene/mujoco_model.hpp"
+#include "scene/renderer.hpp"
+#include "scene/replay.hpp"
+
+namespace armstudy::scene {
+
+/// A loaded arm scene with its renderer: everything needed to draw poses of one motion.
+class SceneRenderer {
+ public:
+  /// Loads `scene` (source names it in errors) and opens a renderer of width x height px.
+  /// @throws SceneError (MuJoCo's message, OSMesa failures suggesting --no-render).
+  SceneRenderer(const ArmScene& scene, const std::string& source, const RenderSettings& settings);
+
+  /// One frame of pose `s` (kinematic replay) with labels.
+  Image frame(const PoseSample& s, const FrameLabels& labels);
+
+  /// A strip: one frame per sample, labelled "t = 0.130 s" (plus `title` on the first),
+  /// tiled `columns` per row. Begins a replay (mj_resetData) first.
+  Image strip(std::span<const PoseSample> samples, const std::string& title, int columns);
+
+  /// Colours of the locus's extra drawings (RGBA, 0-1).
+  struct LocusStyle {
+    float path_rgba[4] = {0.10f, 0.10f, 0.12f, 1.0f};
+    float flight_rgba[4] = {0.86f, 0.14f, 0.14f, 1.0f};
+    double faintest = 0.22;  ///< colour weight of the oldest pose (1: full colour)
+  };
+
+  /// A stroboscopic locus: every pose of `samples` superimposed, the oldest faintest and
+  /// the last in full colour, the end-effector `path` (world, m) traced as a dark line and
+  /// an optional `flight` (world, m) drawn as a dotted trail of the thrown object.
+  Image locus(std::span<const PoseSample> samples, std::span<const Eigen::Vector2d> path,
+              std::span<const Eigen::Vector2d> flight, const FrameLabels& labels,
+              const LocusStyle& style);
+  Image locus(std::span<const PoseSample> samples, std::span<const Eigen::Vector2d> path,
+              std::span<const Eigen::Vector2d> flight, const FrameLabels& labels) {
+    return locus(samples, path, flight, labels, LocusStyle{});
+  }
+
+  MujocoModel& model() { return model_; }
+  const ChainMap& map() const { return map_; }
+  Renderer& renderer() { return renderer_; }
+
+ private:
+  core::PlanarChain chain_;
+  MujocoModel model_;
+  ChainMap map_;
+  Renderer renderer_;
+};
+
+/// "t = 0.130 s".
+std::string time_label(double t);
+
+/// Samples at the given times from a motion sampled at increasing times `t` with states
+/// q, qd (nearest-neighbour in time when a time falls between samples is NOT used: states are
+/// linearly interpolated in q and qd). Times outside [t.front(), t.back()] are clamped.
+std::vector<PoseSample> resample(std::span<const double> t, std::span<const core::JointVector> q,
+                                 std::span<const core::JointVector> qd,
+                                 std::span<const double> at);
+
+/// n times spread evenly over [t0, t1] (both included; n >= 2, or {t0} for n == 1).
+std::vector<double> even_times(double t0, double t1, int n);
+
+/// Columns for a strip of n frames: up to 3 per row.
+int strip_columns(int n);
+
+}  // namespace armstudy::scene

@@ -1,0 +1,64 @@
+#include "scene/image.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+#include "scene/scene_error.hpp"
+
+namespace armstudy::scene {
+
+Image::Image(int w, int h, Rgb fill) : width(w), height(h), rgb(static_cast<size_t>(w) * h * 3) {
+  for (size_t i = 0; i < rgb.size(); i += 3) {
+    rgb[i] = fill.r; rgb[i + 1] = fill.g; rgb[i + 2] = fill.b;
+  }
+}
+
+void blit(const Image& src, Image* dst, int x, int y) {
+  const int x0 = std::max(0, x), x1 = std::min(dst->width, x + src.width);
+  if (x1 <= x0) return;
+  for (int row = std::max(0, y); row < std::min(dst->height, y + src.height); ++row) {
+    const size_t s = (static_cast<size_t>(row - y) * src.width + (x0 - x)) * 3;
+    const size_t d = (static_cast<size_t>(row) * dst->width + x0) * 3;
+    std::memcpy(&dst->rgb[d], &src.rgb[s], static_cast<size_t>(x1 - x0) * 3);
+  }
+}
+
+Image tile(const std::vector<Image>& tiles, int columns, int gap, Rgb background) {
+  if (tiles.empty()) return {};
+  const int w = tiles[0].width, h = tiles[0].height;
+  for (const Image& t : tiles)
+    if (t.width != w || t.height != h) throw SceneError("frame strip tiles differ in size");
+  columns = std::clamp(columns, 1, static_cast<int>(tiles.size()));
+  const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
+  Image out(columns * w + (columns + 1) * gap, rows * h + (rows + 1) * gap, background);
+  for (size_t k = 0; k < tiles.size(); ++k) {
+    const int c = static_cast<int>(k) % columns, r = static_cast<int>(k) / columns;
+    blit(tiles[k], &out, gap + c * (w + gap), gap + r * (h + gap));
+  }
+  return out;
+}
+
+PixelStats pixel_stats(const Image& image) {
+  PixelStats s;
+  const size_t n = static_cast<size_t>(image.width) * image.height;
+  if (n == 0) return s;
+  double sum = 0, sum2 = 0;
+  std::unordered_map<std::uint32_t, size_t> counts;
+  for (size_t i = 0; i < n; ++i) {
+    const std::uint8_t* p = &image.rgb[3 * i];
+    const double y = 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+    sum += y;
+    sum2 += y * y;
+    ++counts[(std::uint32_t(p[0]) << 16) | (std::uint32_t(p[1]) << 8) | p[2]];
+  }
+  size_t most = 0;
+  for (const auto& kv : counts) most = std::max(most, kv.second);
+  s.mean = sum / n;
+  s.stddev = std::sqrt(std::max(0.0, sum2 / n - s.mean * s.mean));
+  s.non_background = 1.0 - static_cast<double>(most) / n;
+  return s;
+}
+
+}  // namespace armstudy::scene

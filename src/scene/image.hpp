@@ -1,0 +1,47 @@
+#pragma once
+/// 8-bit RGB images (top row first) and the few operations the frame strips need.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace armstudy::scene {
+
+struct Rgb {
+  std::uint8_t r = 0, g = 0, b = 0;
+};
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;  ///< width * height * 3, row-major, top row first
+
+  Image() = default;
+  Image(int w, int h, Rgb fill = {255, 255, 255});
+  Rgb at(int x, int y) const {
+    const size_t i = (static_cast<size_t>(y) * width + x) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+  void set(int x, int y, Rgb c) {
+    const size_t i = (static_cast<size_t>(y) * width + x) * 3;
+    rgb[i] = c.r; rgb[i + 1] = c.g; rgb[i + 2] = c.b;
+  }
+};
+
+/// Copies `src` into `dst` with its top-left corner at (x, y) px (clipped).
+void blit(const Image& src, Image* dst, int x, int y);
+
+/// Tiles images of equal size in a grid of `columns` with `gap` px between them and an
+/// outer margin of `gap` px, on `background`. @throws SceneError if sizes differ.
+Image tile(const std::vector<Image>& tiles, int columns, int gap, Rgb background);
+
+/// Pixel statistics of an image: mean and standard deviation of the luminance (0-255)
+/// and the fraction of pixels that differ from the most common colour.
+struct PixelStats {
+  double mean = 0;
+  double stddev = 0;
+  double non_background = 0;
+};
+PixelStats pixel_stats(const Image& image);
+
+}  // namespace armstudy::scene

@@ -1,0 +1,49 @@
+#include "scene/osmesa_context.hpp"
+
+#include <GL/osmesa.h>
+
+#include <cstdlib>
+
+#include "scene/scene_error.hpp"
+
+namespace armstudy::scene {
+namespace {
+constexpr const char* kNoRender =
+    "; frames cannot be rendered on this machine: run with --no-render to produce everything "
+    "else";
+}  // namespace
+
+OsmesaContext::OsmesaContext(int width, int height, unsigned format)
+    : width_(width), height_(height) {
+  if (width <= 0 || height <= 0)
+    throw SceneError("OSMesa window size " + std::to_string(width) + " x " +
+                     std::to_string(height) + " px should be positive" + kNoRender);
+  // llvmpipe, never softpipe, unless the user chose a driver
+  ::setenv("GALLIUM_DRIVER", "llvmpipe", 0);
+  const GLenum fmt = format == 0 ? OSMESA_RGBA : static_cast<GLenum>(format);
+  OSMesaContext ctx = OSMesaCreateContextExt(fmt, 24, 8, 0, nullptr);
+  if (!ctx) throw SceneError(std::string("OSMesa could not create an OpenGL context") + kNoRender);
+  ctx_ = ctx;
+  buffer_.resize(static_cast<size_t>(width) * height * 4);
+  make_current();
+  const GLubyte* r = glGetString(GL_RENDERER);
+  renderer_ = r ? reinterpret_cast<const char*>(r) : "";
+  if (renderer_.find("softpipe") != std::string::npos) {
+    OSMesaDestroyContext(ctx);
+    ctx_ = nullptr;
+    throw SceneError("OSMesa runs the softpipe renderer ('" + renderer_ +
+                     "'), about 20x slower than llvmpipe; unset GALLIUM_DRIVER" + kNoRender);
+  }
+}
+
+void OsmesaContext::make_current() {
+  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(ctx_), buffer_.data(), GL_UNSIGNED_BYTE,
+                         width_, height_))
+    throw SceneError(std::string("OSMesa could not make its context current") + kNoRender);
+}
+
+OsmesaContext::~OsmesaContext() {
+  if (ctx_) OSMesaDestroyContext(static_cast<OSMesaContext>(ctx_));
+}
+
+}  // namespace armstudy::scene

@@ -1,0 +1,35 @@
+#pragma once
+/// A headless OpenGL context from OSMesa (llvmpipe), made current on the calling thread.
+/// MuJoCo renders into its own off-screen framebuffer inside this context.
+
+#include <string>
+#include <vector>
+
+namespace armstudy::scene {
+
+class OsmesaContext {
+ public:
+  /// Creates an RGBA context with a 24-bit depth and 8-bit stencil buffer and makes it
+  /// current with a width x height (px) window buffer. Sets GALLIUM_DRIVER=llvmpipe unless
+  /// the environment sets it (softpipe is ~20x slower); LP_NUM_THREADS is left to the
+  /// environment. `format` is the OSMesa pixel format (OSMESA_RGBA unless testing).
+  /// @throws SceneError that names the cause and suggests --no-render when OSMesa cannot
+  /// create or bind the context, or when the GL renderer is softpipe.
+  OsmesaContext(int width, int height, unsigned format = 0);
+  ~OsmesaContext();
+  OsmesaContext(const OsmesaContext&) = delete;
+  OsmesaContext& operator=(const OsmesaContext&) = delete;
+
+  /// Makes this context current on the calling thread again. @throws SceneError.
+  void make_current();
+  /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+  const std::string& renderer() const { return renderer_; }
+
+ private:
+  void* ctx_ = nullptr;  // OSMesaContext
+  std::vector<unsigned char> buffer_;
+  int width_ = 0, height_ = 0;
+  std::string renderer_;
+};
+
+}  // namespace armstudy::scene

@@ -1,0 +1,155 @@
+#include "scene/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "scene/scene_error.hpp"
+
+namespace armstudy::scene {
+namespace {
+constexpr int kMaxGeom = 6000;
+
+int font_scale(int height) {
+  if (height <= 400) return mjFONTSCALE_100;
+  if (height <= 640) return mjFONTSCALE_150;
+  if (height <= 960) return mjFONTSCALE_200;
+  return mjFONTSCALE_250;
+}
+}  // namespace
+
+Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox& view)
+    : model_(model), settings_(s) {
+  install_mujoco_handlers();
+  context_ = std::make_unique<OsmesaContext>(s.width, s.height);
+  mjv_defaultScene(&scene_);
+  mjv_defaultScene(&scratch_);
+  mjr_defaultContext(&con_);
+  mjv_defaultOption(&opt_);
+  mjv_defaultCamera(&cam_);
+  mjv_makeScene(model, &scene_, kMaxGeom);
+  mjv_makeScene(model, &scratch_, kMaxGeom);
+  mjr_makeContext(model, &con_, font_scale(s.height));
+  mjr_setBuffer(mjFB_OFFSCREEN, &con_);
+  if (con_.currentBuffer != mjFB_OFFSCREEN) {
+    mjr_freeContext(&con_);
+    mjv_freeScene(&scene_);
+    mjv_freeScene(&scratch_);
+    throw SceneError("MuJoCo's off-screen buffer is not available in the OSMesa context; run "
+                     "with --no-render");
+  }
+  if (con_.offWidth < s.width || con_.offHeight < s.height) {
+    const std::string msg = "MuJoCo's off-screen buffer is " + std::to_string(con_.offWidth) +
+                            " x " + std::to_string(con_.offHeight) + " px, smaller than the " +
+                            std::to_string(s.width) + " x " + std::to_string(s.height) +
+                            " px frame; expected <global offwidth offheight> of at least that";
+    mjr_freeContext(&con_);
+    mjv_freeScene(&scene_);
+    mjv_freeScene(&scratch_);
+    throw SceneError(msg);
+  }
+  // plain, fast, deterministic: no shadows unless asked, no reflection or skybox
+  scene_.flags[mjRND_SHADOW] = s.shadows ? 1 : 0;
+  scene_.flags[mjRND_REFLECTION] = 0;
+  scene_.flags[mjRND_SKYBOX] = 0;
+  // camera above the plane, looking down -z, x right and y up (azimuth 90, elevation -90)
+  const double m = s.margin;
+  const double w = (view.x_max - view.x_min) * (1 + 2 * m);
+  const double h = (view.y_max - view.y_min) * (1 + 2 * m);
+  const double aspect = static_cast<double>(s.width) / s.height;
+  const double half_h = 0.5 * std::max(h, w / aspect);
+  const double fovy = model->vis.global.fovy * mjPI / 180.0;
+  cam_.type = mjCAMERA_FREE;
+  cam_.lookat[0] = 0.5 * (view.x_min + view.x_max);
+  cam_.lookat[1] = 0.5 * (view.y_min + view.y_max);
+  cam_.lookat[2] = 0;
+  cam_.azimuth = 90;
+  cam_.elevation = -90;
+  cam_.distance = half_h / std::tan(fovy / 2);
+  pixels_.resize(static_cast<size_t>(s.width) * s.height * 3);
+}
+
+Renderer::~Renderer() {
+  mjr_freeContext(&con_);
+  mjv_freeScene(&scene_);
+  mjv_freeScene(&scratch_);
+}
+
+Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const mjvGeom> extra) {
+  context_->make_current();
+  mjv_updateScene(model_, data, &opt_, nullptr, &cam_, mjCAT_ALL, &scene_);
+  if (scene_.ngeom + static_cast<int>(extra.size()) > scene_.maxgeom)
+    throw SceneError("the scene has room for " + std::to_string(scene_.maxgeom) + " geoms, " +
+                     std::to_string(scene_.ngeom + extra.size()) + " asked");
+  for (const mjvGeom& g : extra) scene_.geoms[scene_.ngeom++] = g;
+  // mono rendering draws the average of the two eye cameras (mjr_render)
+  glcam_ = mjv_averageCamera(scene_.camera, scene_.camera + 1);
+  have_glcam_ = true;
+  const mjrRect viewport{0, 0, settings_.width, settings_.height};
+  mjr_setBuffer(mjFB_OFFSCREEN, &con_);
+  mjr_render(viewport, &scene_, &con_);
+  if (!labels.top_left.empty() || !labels.top_right.empty())
+    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, labels.top_left.c_str(), nullptr, &con_);
+  if (!labels.top_right.empty())
+    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPRIGHT, viewport, labels.top_right.c_str(), nullptr,
+                &con_);
+  if (!labels.bottom_left.empty())
+    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, labels.bottom_left.c_str(), nullptr,
+                &con_);
+  mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
+  // OpenGL rows run bottom-up
+  Image img(settings_.width, settings_.height);
+  const size_t row = static_cast<size_t>(settings_.width) * 3;
+  for (int y = 0; y < settings_.height; ++y)
+    std::memcpy(&img.rgb[y * row], &pixels_[(settings_.height - 1 - y) * row], row);
+  return img;
+}
+
+std::vector<mjvGeom> Renderer::dynamic_geoms(mjData* data) {
+  mjv_updateScene(model_, data, &opt_, nullptr, &cam_, mjCAT_DYNAMIC, &scratch_);
+  return std::vector<mjvGeom>(scratch_.geoms, scratch_.geoms + scratch_.ngeom);
+}
+
+Eigen::Vector2d Renderer::project(const Eigen::Vector3d& p) const {
+  if (!have_glcam_) throw SceneError("Renderer::project before the first render");
+  const Eigen::Vector3d pos(glcam_.pos[0], glcam_.pos[1], glcam_.pos[2]);
+  const Eigen::Vector3d fwd(glcam_.forward[0], glcam_.forward[1], glcam_.forward[2]);
+  const Eigen::Vector3d up(glcam_.up[0], glcam_.up[1], glcam_.up[2]);
+  const Eigen::Vector3d right = fwd.cross(up);
+  const Eigen::Vector3d v = p - pos;
+  const double z = v.dot(fwd);
+  // glFrustum(center -/+ halfwidth, bottom, top, near) as in mjr_render
+  const double aspect = static_cast<double>(settings_.width) / settings_.height;
+  const double halfwidth = 0.5 * aspect * (glcam_.frustum_top - glcam_.frustum_bottom);
+  const double xn = v.dot(right) * glcam_.frustum_near / z;
+  const double yn = v.dot(up) * glcam_.frustum_near / z;
+  const double ndc_x = (xn - glcam_.frustum_center) / halfwidth;
+  const double ndc_y = (2 * yn - glcam_.frustum_top - glcam_.frustum_bottom) /
+                       (glcam_.frustum_top - glcam_.frustum_bottom);
+  return {0.5 * (ndc_x + 1) * settings_.width, 0.5 * (1 - ndc_y) * settings_.height};
+}
+
+double Renderer::metres_per_pixel() const {
+  const double fovy = model_->vis.global.fovy * mjPI / 180.0;
+  return 2 * cam_.distance * std::tan(fovy / 2) / settings_.height;
+}
+
+mjvGeom segment_geom(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius,
+                     const float rgba[4]) {
+  mjvGeom g;
+  mjv_initGeom(&g, mjGEOM_CAPSULE, nullptr, nullptr, nullptr, rgba);
+  mjv_makeConnector(&g, mjGEOM_CAPSULE, radius, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
+  g.category = mjCAT_DECOR;
+  return g;
+}
+
+mjvGeom sphere_geom(const Eigen::Vector3d& p, double radius, const float rgba[4]) {
+  mjvGeom g;
+  const mjtNum size[3] = {radius, radius, radius};
+  const mjtNum pos[3] = {p.x(), p.y(), p.z()};
+  mjv_initGeom(&g, mjGEOM_SPHERE, size, pos, nullptr, rgba);
+  g.category = mjCAT_DECOR;
+  return g;
+}
+
+}  // namespace armstudy::scene

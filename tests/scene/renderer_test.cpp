@@ -1,0 +1,179 @@
+// Off-screen rendering: frames are not blank, the arm is where the kinematics says,
+// rendering is deterministic, and the OSMesa failure path suggests --no-render.
+
+#include <gtest/gtest.h>
+
+#include <GL/osmesa.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/ik2.hpp"
+#include "core/kinematics.hpp"
+#include "core/motion_program.hpp"
+#include "scene/arm_scene.hpp"
+#include "scene/frames.hpp"
+#include "scene/png_writer.hpp"
+#include "scene/scene_error.hpp"
+#include "testing/arms.hpp"
+
+namespace armstudy::scene {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path out_dir() {
+  const fs::path d = fs::temp_directory_path() / "armstudy_scene_test";
+  fs::create_directories(d);
+  return d;
+}
+
+// the thesis arm carrying its payload along a line with a cycloidal program, configuration 1
+struct LineMotion {
+  core::PlanarChain chain = testing::thesis_arm();
+  Eigen::Vector2d S{0.45, -0.15}, F{0.25, 0.35};
+  double T = 1.0;
+  PoseSample at(double t) const {
+    const double L = (F - S).norm();
+    const Eigen::Vector2d u = (F - S) / L;
+    const core::ProgramSample p = core::evaluate_program(core::MotionProgram::kCycloidal, t, T, L);
+    const auto ik = core::ik_2link_motion(0.4, 0.2, S + p.s * u, p.sd * u, p.sdd * u, 1);
+    EXPECT_TRUE(ik.has_value());
+    PoseSample s;
+    s.t = t;
+    s.q = core::JointVector(ik->q);
+    s.qd = core::JointVector(ik->qd);
+    return s;
+  }
+};
+
+ArmScene line_scene(const LineMotion& m) {
+  TableDecor d;
+  d.task_start = m.S;
+  d.task_end = m.F;
+  return horizontal_arm_scene(m.chain, d);
+}
+
+double colour_distance(Rgb a, Rgb b) {
+  return std::sqrt(std::pow(a.r - b.r, 2.0) + std::pow(a.g - b.g, 2.0) + std::pow(a.b - b.b, 2.0));
+}
+
+TEST(Renderer, FramesAreNotBlankAndConsecutiveFramesDiffer) {
+  const LineMotion m;
+  SceneRenderer sr(line_scene(m), "line", RenderSettings{});
+  Image previous;
+  for (int k = 0; k <= 4; ++k) {
+    const Image img = sr.frame(m.at(0.25 * k), {time_label(0.25 * k), "", ""});
+    ASSERT_EQ(img.width, 640);
+    ASSERT_EQ(img.height, 480);
+    const PixelStats st = pixel_stats(img);
+    EXPECT_GT(st.mean, 120.0) << "a light table";
+    EXPECT_GT(st.stddev, 10.0) << "something drawn on it";
+    EXPECT_GT(st.non_background, 0.03);
+    EXPECT_LT(st.non_background, 0.9);
+    if (k > 0) EXPECT_NE(img.rgb, previous.rgb) << "frame " << k;
+    previous = img;
+  }
+}
+
+TEST(Renderer, PayloadAppearsWhereKinematicsPutsTheEndEffector) {
+  const LineMotion m;
+  SceneRenderer sr(line_scene(m), "line", RenderSettings{});
+  const Rgb orange{245, 140, 20};
+  for (int k = 0; k <= 4; ++k) {
+    const PoseSample s = m.at(0.25 * k);
+    const Image img = sr.frame(s, {});
+    const Eigen::Vector2d tip = core::end_effector(m.chain, s.q);
+    const Eigen::Vector2d px = sr.renderer().project(Eigen::Vector3d(tip.x(), tip.y(), 0));
+    const Rgb c = img.at(static_cast<int>(px.x()), static_cast<int>(px.y()));
+    EXPECT_LT(colour_distance(c, orange), 60.0)
+        << "t " << s.t << " pixel (" << px.transpose() << ") is " << int(c.r) << "," << int(c.g)
+        << "," << int(c.b);
+    // and the root pedestal (dark) where the base is
+    const Eigen::Vector2d root = sr.renderer().project(Eigen::Vector3d(0, 0, 0));
+    const Rgb rc = img.at(static_cast<int>(root.x()), static_cast<int>(root.y()));
+    EXPECT_LT(rc.r + rc.g + rc.b, 3 * 90) << "root pixel " << int(rc.r);
+  }
+}
+
+TEST(Renderer, SameCaseRendersToByteIdenticalPngs) {
+  const LineMotion m;
+  std::vector<PoseSample> samples;
+  for (double t : even_times(0, 1, 6)) samples.push_back(m.at(t));
+  std::string first;
+  for (int run = 0; run < 2; ++run) {
+    SceneRenderer sr(line_scene(m), "line", RenderSettings{});
+    const std::string png = encode_png(sr.strip(samples, "cycloidal, configuration 1", 3));
+    if (run == 0) {
+      first = png;
+      std::ofstream(out_dir() / "strip_line.png", std::ios::binary) << png;
+    } else {
+      EXPECT_TRUE(png == first) << "the second rendering differs";
+    }
+  }
+}
+
+TEST(Renderer, LocusDrawsOlderPosesFainterAndThePath) {
+  const LineMotion m;
+  SceneRenderer sr(line_scene(m), "line", RenderSettings{});
+  std::vector<PoseSample> poses;
+  for (double t : even_times(0, 1, 7)) poses.push_back(m.at(t));
+  std::vector<Eigen::Vector2d> path;
+  for (double t : even_times(0, 1, 60)) path.push_back(core::end_effector(m.chain, m.at(t).q));
+  const Image img = sr.locus(poses, path, {}, {"locus", "", ""});
+  write_png(out_dir() / "locus_line.png", img);
+  // the path's midpoint is dark (it is drawn above the arm)
+  const double top = 3 * 0.04 * 0.4;
+  const Eigen::Vector2d mid = path[30];
+  const Eigen::Vector2d pm = sr.renderer().project(Eigen::Vector3d(mid.x(), mid.y(), top));
+  const Rgb c = img.at(static_cast<int>(std::lround(pm.x())), static_cast<int>(std::lround(pm.y())));
+  EXPECT_LT(c.r + c.g + c.b, 3 * 100) << int(c.r) << "," << int(c.g) << "," << int(c.b);
+  // around the first payload: a faint orange (blended toward white); around the last: full
+  auto count_near = [&](const Eigen::Vector2d& p, auto pred) {
+    int hits = 0;
+    const Eigen::Vector2d centre = sr.renderer().project(Eigen::Vector3d(p.x(), p.y(), 0));
+    const int rad = static_cast<int>(0.02 / sr.renderer().metres_per_pixel());
+    for (int y = -rad; y <= rad; ++y)
+      for (int x = -rad; x <= rad; ++x)
+        if (pred(img.at(static_cast<int>(centre.x()) + x, static_cast<int>(centre.y()) + y))) ++hits;
+    return hits;
+  };
+  auto faint_orange = [](Rgb q) { return q.r > 235 && q.g > 175 && q.g < 235 && q.b > 110 && q.b < q.g - 20; };
+  auto full_orange = [](Rgb q) { return q.r > 200 && q.g > 100 && q.g < 175 && q.b < 70; };
+  const Eigen::Vector2d first_tip = core::end_effector(m.chain, poses.front().q);
+  const Eigen::Vector2d last_tip = core::end_effector(m.chain, poses.back().q);
+  EXPECT_GT(count_near(first_tip, faint_orange), 10);
+  EXPECT_EQ(count_near(first_tip, full_orange), 0);
+  EXPECT_GT(count_near(last_tip, full_orange), 10);
+}
+
+TEST(Renderer, TooLargeFrameForTheModelsOffscreenBufferIsASceneError) {
+  const LineMotion m;
+  TableDecor d;
+  d.offwidth = 320;
+  d.offheight = 240;
+  try {
+    SceneRenderer sr(horizontal_arm_scene(m.chain, d), "small", RenderSettings{});
+    FAIL() << "no exception";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("offwidth"), std::string::npos) << e.what();
+  }
+}
+
+TEST(OsmesaContext, FailureSuggestsNoRender) {
+  try {
+    OsmesaContext ctx(64, 64, 0x7777 /* no such OSMesa format */);
+    FAIL() << "no exception";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("--no-render"), std::string::npos) << e.what();
+  }
+}
+
+TEST(OsmesaContext, RunsLlvmpipeNeverSoftpipe) {
+  OsmesaContext ctx(16, 16);
+  EXPECT_NE(ctx.renderer().find("llvmpipe"), std::string::npos) << ctx.renderer();
+}
+
+}  // namespace
+}  // namespace armstudy::scene
