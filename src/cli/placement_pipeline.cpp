@@ -126,6 +126,28 @@ class PlacementRun final : public StudyRun {
     report::write_case_report(dir, info, results_json);
   }
   nlohmann::json results() const override;
+
+  // per program and configuration: the refined optimum's energy and root location
+  std::vector<KeyFigure> key_figures() const override {
+    std::vector<KeyFigure> k;
+    double best = std::numeric_limits<double>::infinity();
+    for (const pl::ProgramConfig& pc : result_.cases) {
+      if (!pc.found) continue;
+      const std::string id = "[" + prog(pc.program) + "," + std::to_string(pc.configuration) + "]";
+      k.push_back({"energy_J" + id, pc.refined.metrics.energy, "J"});
+      k.push_back({"root_x_m" + id, pc.refined.root.x(), "m"});
+      k.push_back({"root_y_m" + id, pc.refined.root.y(), "m"});
+      best = std::min(best, pc.refined.metrics.energy);
+    }
+    if (std::isfinite(best)) k.insert(k.begin(), {"min_energy_J", best, "J"});
+    if (!result_.cases.empty()) {
+      const pl::Counts& c = result_.cases.front().counts;
+      k.push_back({"candidates_clear", double(c.feasible + c.over_limit), ""});
+      k.push_back({"candidates_singular", double(c.singular), ""});
+    }
+    return k;
+  }
+
   // render(): the scene engineer replays result_.cases[i].series / placement here.
 
  private:
