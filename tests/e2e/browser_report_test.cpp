@@ -1,0 +1,305 @@
+// Every bundled case's report, opened in a real browser (headless Chromium): the page loads
+// with no console message (CSP violations and script errors are console messages), every
+// img/link/object target exists on disk, a screenshot is not blank, and report.pdf has at
+// least one page per section that starts a new page, none of them blank.
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <sys/file.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// runs a shell command, returns its exit status; stdout and stderr go to files
+int run(const std::string& cmd) {
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+const char* kChromiumFlags =
+    " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+    " --disable-background-networking --disable-component-update --disable-sync"
+    " --disable-extensions --hide-scrollbars";
+
+// a chromium run with its own fresh profile; returns the exit status
+int chromium(const std::string& args, const fs::path& work, const std::string& tag) {
+  const fs::path profile = work / ("profile-" + tag);
+  fs::remove_all(profile);
+  const std::string cmd = "chromium" + std::string(kChromiumFlags) +
+                          " --user-data-dir=" + quote(profile.string()) + " " + args;
+  const int rc = run(cmd);
+  fs::remove_all(profile);
+  return rc;
+}
+
+std::string file_url(const fs::path& p) { return "file://" + fs::absolute(p).string(); }
+
+// the case names of the bundled case files ("name:" at the top level)
+std::vector<std::string> bundled_case_names() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(fs::path(ARMSTUDY_SOURCE_DIR) / "reports/cases")) {
+    if (e.path().extension() != ".yaml") continue;
+    std::istringstream in(slurp(e.path()));
+    std::string line;
+    while (std::getline(in, line))
+      if (line.rfind("name:", 0) == 0) {
+        std::string n = line.substr(5);
+        n.erase(0, n.find_first_not_of(" \t\"'"));
+        n.erase(n.find_last_not_of(" \t\"'\r") + 1);
+        names.push_back(n);
+        break;
+      }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// share of pixels that are not (near) white, over an RGBA image read with libpng
+double ink_fraction_png(const fs::path& png, size_t* distinct_colours) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, png.c_str())) return -1;
+  image.format = PNG_FORMAT_RGBA;
+  std::vector<png_byte> px(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, px.data(), 0, nullptr)) return -1;
+  size_t ink = 0;
+  std::set<uint32_t> colours;
+  const size_t n = static_cast<size_t>(image.width) * image.height;
+  for (size_t i = 0; i < n; ++i) {
+    const png_byte* p = &px[4 * i];
+    if (p[0] < 235 || p[1] < 235 || p[2] < 235) ++ink;
+    if (colours.size() < 100000) colours.insert((p[0] << 16) | (p[1] << 8) | p[2]);
+  }
+  *distinct_colours = colours.size();
+  return n ? static_cast<double>(ink) / n : -1;
+}
+
+// share of dark pixels of a binary PGM (P5) page from pdftoppm -gray
+double ink_fraction_pgm(const fs::path& pgm) {
+  std::ifstream in(pgm, std::ios::binary);
+  std::string magic;
+  int w = 0, h = 0, maxv = 0;
+  in >> magic >> w >> h >> maxv;
+  in.get();
+  if (magic != "P5" || w <= 0 || h <= 0 || maxv != 255) return -1;
+  std::vector<unsigned char> px(static_cast<size_t>(w) * h);
+  in.read(reinterpret_cast<char*>(px.data()), static_cast<std::streamsize>(px.size()));
+  size_t ink = 0;
+  for (unsigned char v : px) ink += v < 200;
+  return static_cast<double>(ink) / px.size();
+}
+
+// what the shared output was made from: the binary, the case files and the templates
+std::string input_stamp() {
+  std::ostringstream os;
+  auto add = [&](const fs::path& p) {
+    os << p.filename().string() << ' '
+       << fs::last_write_time(p).time_since_epoch().count() << '\n';
+  };
+  add(ARMSTUDY_BINARY);
+  for (const char* dir : {"reports/cases", "templates"}) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(fs::path(ARMSTUDY_SOURCE_DIR) / dir))
+      files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) add(f);
+  }
+  return os.str();
+}
+
+// runs fn(i) for i in [0, n) on two threads (chromium is slow to start, the machine has 2 cores)
+template <typename Fn>
+void for_each_parallel(size_t n, Fn fn) {
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i = next++; i < n; i = next++) fn(i);
+  };
+  std::thread other(worker);
+  worker();
+  other.join();
+}
+
+class BrowserReport : public ::testing::Test {
+ protected:
+  // the run over every bundled case is shared by the tests of this suite (ctest runs each
+  // test in its own process): made once per input change, under a file lock
+  static void SetUpTestSuite() {
+    const fs::path base = fs::path(ARMSTUDY_BINARY).parent_path() / "browser_e2e";
+    fs::create_directories(base);
+    out_ = base / "out";
+    work_ = base / ("work-" + std::to_string(::getpid()));
+    fs::remove_all(work_);
+    fs::create_directories(work_);
+    const int lock = ::open((base / ".lock").c_str(), O_CREAT | O_RDWR, 0644);
+    ASSERT_GE(lock, 0);
+    ::flock(lock, LOCK_EX);
+    const std::string stamp = input_stamp();
+    const fs::path stamp_file = base / "stamp", status_file = base / "status";
+    if (fs::exists(out_ / "index.html") && slurp(stamp_file) == stamp && fs::exists(status_file)) {
+      run_status_ = std::stoi(slurp(status_file));
+    } else {
+      fs::remove_all(out_);
+      fs::remove(stamp_file);
+      // every bundled case, with frames and PDFs, as CI runs them
+      const std::string cmd = std::string(ARMSTUDY_BINARY) + " run --pdf -j 2 --out " +
+                              quote(out_.string()) + " " +
+                              quote((fs::path(ARMSTUDY_SOURCE_DIR) / "reports/cases").string()) +
+                              " > " + quote((base / "run.log").string()) + " 2>&1";
+      run_status_ = run(cmd);
+      std::ofstream(status_file) << run_status_;
+      std::ofstream(stamp_file) << stamp;
+    }
+    run_log_ = slurp(base / "run.log");
+    ::flock(lock, LOCK_UN);
+    ::close(lock);
+  }
+  static void TearDownTestSuite() { fs::remove_all(work_); }
+
+  // every page: the index and each bundled case's report
+  static std::vector<fs::path> pages() {
+    std::vector<fs::path> p = {out_ / "index.html"};
+    for (const auto& n : bundled_case_names()) p.push_back(out_ / n / "index.html");
+    return p;
+  }
+
+  static fs::path work_, out_;
+  static int run_status_;
+  static std::string run_log_;
+};
+fs::path BrowserReport::work_, BrowserReport::out_;
+int BrowserReport::run_status_ = -1;
+std::string BrowserReport::run_log_;
+
+TEST_F(BrowserReport, RunWritesEveryBundledCaseReportWithPdfAndTheIndex) {
+  // 0 all solved; 1 some case is unsolvable by design (it still gets its report)
+  EXPECT_TRUE(run_status_ == 0 || run_status_ == 1) << run_log_;
+  const auto names = bundled_case_names();
+  ASSERT_GE(names.size(), 5u) << "the bundled cases are missing";
+  EXPECT_TRUE(fs::exists(out_ / "index.html"));
+  const std::string index = slurp(out_ / "index.html");
+  for (const auto& n : names) {
+    EXPECT_TRUE(fs::exists(out_ / n / "index.html")) << n;
+    EXPECT_TRUE(fs::exists(out_ / n / "report.pdf")) << n;
+    EXPECT_NE(index.find("href=\"" + n + "/index.html\""), std::string::npos) << n;
+  }
+}
+
+TEST_F(BrowserReport, PagesLoadWithoutConsoleMessagesOrMissingResources) {
+  static const std::regex kTarget(R"re(\b(?:src|href|data)="([^"]*)")re");
+  const auto all = pages();
+  std::vector<int> status(all.size(), -1);
+  for_each_parallel(all.size(), [&](size_t k) {
+    const fs::path dom = work_ / ("dom" + std::to_string(k) + ".html");
+    const fs::path log = work_ / ("console" + std::to_string(k) + ".log");
+    status[k] = chromium("--enable-logging=stderr --v=0 --dump-dom " + quote(file_url(all[k])) +
+                             " > " + quote(dom.string()) + " 2> " + quote(log.string()),
+                         work_, std::to_string(k));
+  });
+  for (size_t k = 0; k < all.size(); ++k) {
+    const fs::path& page = all[k];
+    ASSERT_TRUE(fs::exists(page)) << page;
+    const fs::path dom = work_ / ("dom" + std::to_string(k) + ".html");
+    const fs::path log = work_ / ("console" + std::to_string(k) + ".log");
+    ASSERT_EQ(status[k], 0) << page << ": " << slurp(log);
+    const std::string html = slurp(dom);
+    // the browser built the page (it did not stop at an error page)
+    EXPECT_NE(html.find("<h1>"), std::string::npos) << page;
+    EXPECT_NE(html.find("Content-Security-Policy"), std::string::npos) << page;
+    // console messages: CSP violations, script errors, failed resources
+    std::istringstream lines(slurp(log));
+    std::string line;
+    while (std::getline(lines, line))
+      EXPECT_EQ(line.find(":CONSOLE"), std::string::npos) << page << ": " << line;
+    // every referenced file exists beside the page; nothing points to the network
+    int targets = 0;
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), kTarget);
+         it != std::sregex_iterator(); ++it) {
+      const std::string t = (*it)[1];
+      if (t.empty() || t[0] == '#') continue;
+      EXPECT_EQ(t.find("://"), std::string::npos) << page << " points to " << t;
+      EXPECT_TRUE(fs::exists(page.parent_path() / t)) << page << ": missing " << t;
+      ++targets;
+    }
+    EXPECT_GE(targets, 2) << page << " links to nothing";
+  }
+}
+
+TEST_F(BrowserReport, ScreenshotsAreNotBlank) {
+  const auto all = pages();
+  std::vector<int> status(all.size(), -1);
+  for_each_parallel(all.size(), [&](size_t k) {
+    const fs::path png = work_ / ("shot" + std::to_string(k) + ".png");
+    status[k] = chromium("--window-size=1000,1400 --screenshot=" + quote(png.string()) + " " +
+                             quote(file_url(all[k])) + " > /dev/null 2>&1",
+                         work_, "s" + std::to_string(k));
+  });
+  for (size_t k = 0; k < all.size(); ++k) {
+    const fs::path png = work_ / ("shot" + std::to_string(k) + ".png");
+    ASSERT_EQ(status[k], 0) << all[k];
+    size_t colours = 0;
+    const double ink = ink_fraction_png(png, &colours);
+    EXPECT_GT(ink, 0.02) << all[k] << ": screenshot " << png << " is nearly blank";
+    EXPECT_GT(colours, 16u) << all[k] << ": screenshot " << png << " has almost no colours";
+  }
+}
+
+TEST_F(BrowserReport, PdfHasAPagePerSectionAndNoBlankPage) {
+  for (const auto& name : bundled_case_names()) {
+    const fs::path pdf = out_ / name / "report.pdf";
+    ASSERT_TRUE(fs::exists(pdf)) << name;
+    // each section marked new-page starts a page; the header and first sections fill one
+    const std::string html = slurp(out_ / name / "index.html");
+    int expected = 1;
+    for (size_t p = html.find("class=\"new-page\""); p != std::string::npos;
+         p = html.find("class=\"new-page\"", p + 1))
+      ++expected;
+    const fs::path info = work_ / (name + ".pdfinfo");
+    ASSERT_EQ(run("pdfinfo " + quote(pdf.string()) + " > " + quote(info.string()) + " 2>&1"), 0)
+        << slurp(info);
+    std::smatch m;
+    const std::string text = slurp(info);
+    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(Pages:\s+(\d+))"))) << text;
+    const int pages = std::stoi(m[1]);
+    EXPECT_GE(pages, expected) << name;
+    const fs::path prefix = work_ / ("pdf-" + name);
+    ASSERT_EQ(run("pdftoppm -gray -r 24 " + quote(pdf.string()) + " " + quote(prefix.string())), 0);
+    int rasterised = 0;
+    for (const auto& e : fs::directory_iterator(work_)) {
+      const std::string f = e.path().filename().string();
+      if (f.rfind("pdf-" + name + "-", 0) != 0 || e.path().extension() != ".pgm") continue;
+      ++rasterised;
+      EXPECT_GT(ink_fraction_pgm(e.path()), 0.003) << name << ": page " << f << " is blank";
+    }
+    EXPECT_EQ(rasterised, pages) << name;
+  }
+}
+
+}  // namespace
