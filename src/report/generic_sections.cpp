@@ -167,6 +167,33 @@ int time_series_figures(const json& node, const std::string& what, FigureWriter&
   return added;
 }
 
+namespace {
+void flatten_json(const json& j, const std::string& path, Table* t) {
+  if (j.is_object()) {
+    for (const auto& [k, v] : j.items()) flatten_json(v, path.empty() ? k : path + "." + k, t);
+  } else if (j.is_array()) {
+    std::string v = "[";
+    for (size_t i = 0; i < j.size(); ++i) {
+      if (j[i].is_string()) return;  // sentences: shown elsewhere
+      if (!j[i].is_primitive()) return;
+      v += (i ? ", " : "") + (j[i].is_number() ? format_sig(j[i].get<double>(), 6) : j[i].dump());
+    }
+    t->rows.push_back({path, v + "]"});
+  } else if (!j.is_null()) {
+    t->rows.push_back({path, j.is_number() ? format_sig(j.get<double>(), 6)
+                                           : j.is_string() ? j.get<std::string>() : j.dump()});
+  }
+}
+}  // namespace
+
+Table json_table(const json& obj, std::string caption) {
+  Table t;
+  t.caption = std::move(caption);
+  t.header = {"quantity", "value"};
+  flatten_json(obj, "", &t);
+  return t;
+}
+
 LinePlot owners_plot(const std::string& title, const std::string& y_label,
                      const std::vector<Owner>& owners, const std::vector<std::string>& keys,
                      const std::vector<std::string>& key_labels) {

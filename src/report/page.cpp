@@ -36,6 +36,8 @@ void Section::table(Table t) {
 }
 
 void Section::figure(Figure f) {
+  // captions are sentences
+  if (!f.caption.empty() && f.caption[0] >= 'a' && f.caption[0] <= 'z') f.caption[0] -= 'a' - 'A';
   Block b;
   b.kind = Block::Kind::kFigure;
   b.figure = std::move(f);

@@ -398,7 +398,7 @@ void write_line_plot(const LinePlot& plot, const fs::path& svg) {
     }
     if (!s.label.empty())
       legend.add(s.label, c, PL_LEGEND_LINE | (s.markers ? PL_LEGEND_SYMBOL : 0),
-                 style_code(s.style), s.width, "#(229)");
+                 style_code(s.style), s.width, "•");
   }
   for (const auto& r : plot.references) {
     const PLINT c = page.slot(kGrey);
@@ -409,7 +409,7 @@ void write_line_plot(const LinePlot& plot, const fs::path& svg) {
     if (!std::isfinite(y)) continue;
     PLFLT xs[2] = {x_lo, x_hi}, ys[2] = {y, y};
     p.line(2, xs, ys);
-    legend.add(r.label, c, PL_LEGEND_LINE, 2, 1.0, "");
+    if (!r.label.empty()) legend.add(r.label, c, PL_LEGEND_LINE, 2, 1.0, "");
   }
   p.lsty(1);
   p.width(0.8);
@@ -506,7 +506,7 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
       p.col0(c);
       p.string(1, &x, &y, glyph);
       p.schr(0, 0.85);
-      legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, glyph);
+      if (!m.label.empty()) legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, glyph);
     }
   p.col0(kSlotInk);
   p.width(0.8);

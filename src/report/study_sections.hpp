@@ -47,6 +47,10 @@ LinePlot owners_plot(const std::string& title, const std::string& y_label,
                      const std::vector<Owner>& owners, const std::vector<std::string>& keys,
                      const std::vector<std::string>& key_labels);
 
+/// A key/value table of a json object, nested keys joined with '.', arrays of numbers
+/// written as [a, b]; arrays of strings (e.g. "choices") are left out.
+Table json_table(const nlohmann::json& obj, std::string caption);
+
 /// Axis label of a results.json key by its unit suffix: "energy_J" -> "energy (J)",
 /// "q_rad" -> "q (rad)", "phi_deg" -> "phi (deg)".
 std::string label_from_key(const std::string& key);
