@@ -42,10 +42,10 @@
 ///     duration_s: 0.8                  # tf, > 0
 ///     landing_height_m: 0.0            # the flight ends at this height (y)
 ///   criterion:                         # eq. 9 and the release/limit penalties
-///     k_tray_J_per_rad: 100            # on max |theta4| - lambda/2 (> 0 part)
+///     k_tray_J_per_rad: 1000           # on max |theta4| - lambda/2 (> 0 part)
 ///     k_release_J_per_rad: 10          # on |theta3(tf) - release theta3|
-///     k_voltage_J_per_V: 10            # on max |e| - voltage_max_V (> 0 part)
-///     k_current_J_per_A: 10            # on max |i| - current_max_A (> 0 part)
+///     k_voltage_J_per_V: 1000          # on max |e| - voltage_max_V (> 0 part)
+///     k_current_J_per_A: 1000          # on max |i| - current_max_A (> 0 part)
 ///   idp:
 ///     stages: 16                       # P, 2..64
 ///     steps_per_stage: 20              # RK4 steps per stage, 1..400

@@ -129,7 +129,7 @@ class ThrowingRun final : public StudyRun {
                        std::abs(r.idp.angle_error[2]), spec_.release_tolerance),
         st::make_check("open_loop_replay",
                        "the optimum's voltages applied open loop to the core model (all joints "
-                       "free, DOPRI5) reproduce the planned angles: max error (rad)",
+                       "free, DOPRI5) reproduce the planned angles (4x-step plan): max error (rad)",
                        r.replay_error, spec_.replay_tolerance),
         st::make_check("rk4_accuracy",
                        "relative energy change of the optimum with 4x the RK4 steps",
@@ -248,8 +248,9 @@ class ThrowingRun final : public StudyRun {
     }
     j["replay"] = {{"max_error_rad", num(r.replay_error, 4)},
                    {"tolerance_rad", spec_.replay_tolerance},
-                   {"integrator", "DOPRI5 rtol 1e-10 atol 1e-12; voltages of the 4x-step simulation, linear "
-                                  "between samples within a stage; coulomb sign smoothed by tanh(qd / 1e-3 rad/s)"},
+                   {"integrator", "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
+                                  "with 4x the RK4 steps, linear between its samples within a stage; "
+                                  "error against that plan; coulomb sign smoothed by tanh(qd / 1e-4 rad/s)"},
                    {"t_s", rt}, {"q_rad", rq}};
     j["integration"] = {{"method", "classical RK4, fixed step, steps aligned with the stages"},
                         {"steps_per_stage", spec_.steps_per_stage},

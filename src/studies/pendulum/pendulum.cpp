@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
+#include <iomanip>
+#include <locale>
+#include <sstream>
 #include <cmath>
 #include <stdexcept>
 
@@ -118,11 +120,12 @@ PendulumResult solve_pendulum(const PendulumSpec& spec, const ProgressFn& progre
   if (r.energy_scale <= 0) r.energy_scale = std::abs(r.energy_initial) > 0 ? std::abs(r.energy_initial) : 1.0;
   r.energy_drift_rel = r.energy_drift / r.energy_scale;
   r.status = Status::kSolved;
-  char buf[200];
-  std::snprintf(buf, sizeof buf,
-                "pendulum simulated for %.3g s (%ld steps); energy drift %.2e of the %.4g J exchanged",
-                spec.duration, r.steps_accepted, r.energy_drift_rel, r.energy_scale);
-  r.message = buf;
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os << "pendulum simulated for " << spec.duration << " s (" << r.steps_accepted
+     << " steps); energy drift " << std::setprecision(3) << r.energy_drift_rel << " of the "
+     << std::setprecision(4) << r.energy_scale << " J exchanged";
+  r.message = os.str();
   r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   return r;
 }

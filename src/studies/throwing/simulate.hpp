@@ -33,10 +33,10 @@ struct ThrowSetup {
   double half_width = 0.0;                  ///< rad, lambda / 2: the ball stays in the tray
   double voltage_max = 24.0;                ///< V
   double current_max = 2.5;                 ///< A
-  double k_tray = 100.0;                    ///< J/rad, eq. 9's k on max |theta4| - lambda/2
-  double k_release = 1.0;                   ///< J/rad on |theta3(tf) - theta3_release|
-  double k_voltage = 10.0;                  ///< J/V on max |e| - voltage_max
-  double k_current = 10.0;                  ///< J/A on max |i| - current_max
+  double k_tray = 1000.0;                   ///< J/rad, eq. 9's k on max |theta4| - lambda/2
+  double k_release = 10.0;                  ///< J/rad on |theta3(tf) - theta3_release|
+  double k_voltage = 1000.0;                ///< J/V on max |e| - voltage_max
+  double k_current = 1000.0;                ///< J/A on max |i| - current_max
   bool count_regeneration = true;           ///< eq. 7 as printed (signed e i)
   int steps_per_stage = 40;                 ///< RK4 steps in each stage
 };

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
+#include <locale>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/kinematics.hpp"
@@ -11,10 +12,14 @@
 namespace armstudy::studies {
 namespace {
 
-std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b, c, d);
-  return buf;
+// v with `digits` decimals in the C locale
+std::string fixed(double v, int digits) {
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os.setf(std::ios::fixed);
+  os.precision(digits);
+  os << v;
+  return os.str();
 }
 
 }  // namespace
@@ -160,22 +165,29 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
     r.rk4_theta3_error = std::abs(ef.theta3_final - r.idp.evaluation.theta3_final);
   }
   // the optimum's voltages (sampled densely, from the 4x simulation) applied open loop to
-  // the model with all four joints free, compared with the planned angles
+  // the model with all four joints free, compared with the planned angles of that same
+  // simulation (the rk4 error of the coarse plan is checked apart, above)
   {
     const VoltageHistory vh = voltage_history(fine_samples);
-    std::vector<double> times = r.idp.series.t;
-    times.erase(std::unique(times.begin(), times.end()), times.end());
+    std::vector<double> times;
+    for (const ThrowSample& x : fine_samples)
+      if (times.empty() || x.t > times.back()) times.push_back(x.t);
     core::JointVector q0(4), qd0 = core::JointVector::Zero(4);
     q0 << spec.start, spec.theta3_start, spec.theta4_start;
     try {
-      const ReplayResult rr = replay_voltages(setup, vh, q0, qd0, times, 1e-10, 1e-12);
-      r.replay_t = rr.t;
-      r.replay_q = rr.q;
+      const ReplayResult rr = replay_voltages(setup, vh, q0, qd0, times, 1e-10, 1e-12, 1e-4);
       size_t j = 0;
-      for (size_t k = 0; k < r.idp.series.t.size(); ++k) {
-        while (j + 1 < rr.t.size() && rr.t[j] < r.idp.series.t[k] - 1e-12) ++j;
-        r.replay_error =
-            std::max(r.replay_error, (rr.q[j] - r.idp.series.q[k]).cwiseAbs().maxCoeff());
+      for (const ThrowSample& x : fine_samples) {
+        while (j + 1 < rr.t.size() && rr.t[j] < x.t - 1e-12) ++j;
+        r.replay_error = std::max(r.replay_error, (rr.q[j] - x.q).cwiseAbs().maxCoeff());
+      }
+      // keep the replay at the coarse series' times for the report
+      j = 0;
+      for (double t : r.idp.series.t) {
+        while (j + 1 < rr.t.size() && rr.t[j] < t - 1e-12) ++j;
+        if (!r.replay_t.empty() && r.replay_t.back() == rr.t[j]) continue;
+        r.replay_t.push_back(rr.t[j]);
+        r.replay_q.push_back(rr.q[j]);
       }
     } catch (const std::runtime_error& e) {
       r.replay_error = INFINITY;
@@ -189,16 +201,16 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
                               spec.arm.gravity, spec.landing_height);
   r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if (!r.flight.reaches) {
-    r.message = fmt("the ball never reaches the landing height %.3f m: its apex is %.3f m",
-                    spec.landing_height, r.flight.apex);
+    r.message = "the ball never reaches the landing height " + fixed(spec.landing_height, 3) +
+                " m: its apex is " + fixed(r.flight.apex, 3) + " m";
     return r;
   }
   r.status = Status::kSolved;
-  r.message = fmt("IDP: %.3f J (eq. 8: %.3f J, saving %.1f %%); ball lands at x = %.3f m",
-                  r.idp.evaluation.energy, r.initial.evaluation.energy, r.saving_percent,
-                  r.flight.landing.x());
+  r.message = "IDP: " + fixed(r.idp.evaluation.energy, 3) + " J (eq. 8: " +
+              fixed(r.initial.evaluation.energy, 3) + " J, saving " + fixed(r.saving_percent, 1) +
+              " %); ball lands at x = " + fixed(r.flight.landing.x(), 3) + " m";
   if (r.nlopt_ran)
-    r.message += fmt("; SLSQP: %.3f J%s", r.nlopt.evaluation.energy) +
+    r.message += "; SLSQP: " + fixed(r.nlopt.evaluation.energy, 3) + " J" +
                  (r.nlopt_run.feasible ? "" : " (infeasible)");
   return r;
 }

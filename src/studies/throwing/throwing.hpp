@@ -36,17 +36,17 @@ struct ThrowingSpec {
   double voltage_max = 24.0;         ///< V
   double current_max = 5.0;          ///< A
   double tray_width = 2 * core::kPi / 3;  ///< rad, lambda of eq. 9 (|theta4| <= lambda/2)
-  double k_tray = 100.0;             ///< J/rad
+  double k_tray = 1000.0;            ///< J/rad, exact penalty: far above the multiplier
   double k_release = 10.0;           ///< J/rad
-  double k_voltage = 10.0;           ///< J/V
-  double k_current = 10.0;           ///< J/A
+  double k_voltage = 1000.0;         ///< J/V
+  double k_current = 1000.0;         ///< J/A
   bool count_regeneration = true;    ///< eq. 7 as printed (signed e i)
   int stages = 16;                   ///< P
   int steps_per_stage = 20;          ///< RK4 steps per stage
   IdpSettings idp;
   bool run_nlopt = true;
   NloptSettings nlopt;
-  double release_tolerance = 0.0175; ///< rad, allowed |theta3(tf) - theta3_release| (check)
+  double release_tolerance = core::kPi / 180;  ///< rad, allowed |theta3(tf) - release| (check)
   double landing_height = 0.0;       ///< m, height (y) at which the flight ends
   double replay_tolerance = 2e-3;    ///< rad, open-loop replay vs plan (check)
   int threads = 2;                   ///< evaluation threads

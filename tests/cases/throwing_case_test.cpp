@@ -1,0 +1,96 @@
+// The `throwing:` section of case files (throwing_case.hpp): the bundled case spells out
+// exactly the documented defaults (Table 1, Sec. 4 of 003), degrees become radians, and
+// every user error names its file:line:col with what was expected.
+#include "cases/throwing_case.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/types.hpp"
+
+namespace armstudy::cases {
+namespace {
+
+studies::ThrowingSpec load_text(const std::string& text, Diagnostics& d) {
+  const auto root = parse_text(text, d);
+  EXPECT_TRUE(root.has_value());
+  Map m(*root, d, "");
+  m.get("study");
+  m.get("name");
+  m.get("description");
+  auto s = load_throwing_spec(m);
+  m.finish();
+  return s;
+}
+
+TEST(ThrowingCase, BundledCaseEqualsTheDocumentedDefaults) {
+  Diagnostics d(ARMSTUDY_SOURCE_DIR "/reports/cases/throwing.yaml");
+  std::string text;
+  const auto root = parse_file(d.path(), d, &text);
+  ASSERT_TRUE(root.has_value());
+  Map m(*root, d, "");
+  m.get("study");
+  m.get("name");
+  m.get("description");
+  const studies::ThrowingSpec s = load_throwing_spec(m);
+  m.finish();
+  ASSERT_TRUE(d.empty()) << d.errors()[0].format();
+  const studies::ThrowingSpec def;
+  EXPECT_NEAR(s.release[0], 13 * core::kPi / 36, 1e-12);
+  EXPECT_NEAR(s.release[1], -7 * core::kPi / 36, 1e-12);
+  EXPECT_NEAR(s.theta3_release, -7 * core::kPi / 24, 1e-12);
+  EXPECT_NEAR(s.start[0], def.start[0], 1e-12);
+  EXPECT_NEAR(s.tray_width, def.tray_width, 1e-12);
+  EXPECT_NEAR(s.release_tolerance, def.release_tolerance, 1e-6);
+  EXPECT_EQ(s.arm.l1, def.arm.l1);
+  EXPECT_EQ(s.arm.circle_offset, def.arm.circle_offset);
+  EXPECT_NEAR(s.arm.Ib, 4.8e-7, 1e-15);  // solid sphere = Table 1's figure
+  EXPECT_EQ(s.motor.Ra, def.motor.Ra);
+  EXPECT_EQ(s.current_max, def.current_max);
+  EXPECT_EQ(s.stages, def.stages);
+  EXPECT_EQ(s.idp.iterations, def.idp.iterations);
+  EXPECT_EQ(s.idp.passes, def.idp.passes);
+  EXPECT_EQ(s.nlopt.max_evaluations, def.nlopt.max_evaluations);
+  EXPECT_EQ(s.arm.motor2, studies::Motor2Mount::kOnLink1);
+}
+
+TEST(ThrowingCase, EmptySectionGivesDefaultsAndOnBaseMountIsRead) {
+  Diagnostics d("t.yaml");
+  const auto s = load_text("throwing:\n  motors:\n    motor2: on_base\n    rotor_inertia_kg_m2: 2.0e-6\n", d);
+  ASSERT_TRUE(d.empty()) << d.errors()[0].format();
+  EXPECT_EQ(s.arm.motor2, studies::Motor2Mount::kOnBase);
+  EXPECT_EQ(s.arm.rotor_inertia, 2.0e-6);
+  EXPECT_EQ(s.tf, 0.8);
+}
+
+TEST(ThrowingCase, ErrorsNameLineColumnAndWhatWasExpected) {
+  Diagnostics d("t.yaml");
+  load_text(
+      "throwing:\n"
+      "  ball:\n"
+      "    mass_kg: -0.01\n"
+      "    inertia: hollow\n"
+      "  motors:\n"
+      "    motor2: on_bse\n"
+      "  task:\n"
+      "    release_deg: [65, -35]\n"
+      "  idp:\n"
+      "    stages: 1\n"
+      "    candiates: 4\n",
+      d);
+  std::vector<std::string> msgs;
+  for (const auto& e : d.errors()) msgs.push_back(e.format());
+  ASSERT_EQ(msgs.size(), 6u) << ::testing::PrintToString(msgs);
+  EXPECT_EQ(msgs[0], "t.yaml:3:14: 'throwing.ball.mass_kg' is -0.01; should be > 0 kg");
+  EXPECT_NE(msgs[1].find("t.yaml:4:14: 'throwing.ball.inertia' (or 'solid_sphere') is 'hollow'"), std::string::npos);
+  EXPECT_NE(msgs[2].find("t.yaml:6:13:"), std::string::npos);
+  EXPECT_NE(msgs[2].find("did you mean 'on_base'?"), std::string::npos);
+  EXPECT_NE(msgs[3].find("t.yaml:8:18:"), std::string::npos);
+  EXPECT_NE(msgs[3].find("expected a list of 3 numbers"), std::string::npos);
+  EXPECT_NE(msgs[4].find("t.yaml:10:13: 'throwing.idp.stages' is 1; should be in [2, 64]"), std::string::npos);
+  EXPECT_EQ(msgs[5], "t.yaml:11:5: unknown key 'throwing.idp.candiates'; did you mean 'candidates'?");
+}
+
+}  // namespace
+}  // namespace armstudy::cases

@@ -1,0 +1,128 @@
+// The planning simulation of the tray arm (simulate.hpp): the motors' mechanical work is the
+// change of the arm's kinetic plus potential energy (passive joints do no work), eq. 7's
+// electrical energy splits exactly into work, copper and friction, the RK4 plan agrees with
+// an independent DOPRI5 integration, and the planned voltages replayed open loop through
+// the model with all joints free reproduce the planned motion.
+#include "studies/throwing/simulate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/dynamics.hpp"
+#include "studies/throwing/integrators.hpp"
+#include "studies/throwing/throwing.hpp"
+#include "testing/arms.hpp"
+
+namespace armstudy::studies {
+namespace {
+
+ThrowingSpec spec() { return ThrowingSpec{}; }
+
+VelocityProfile eq8(const ThrowingSpec& s, int stages) {
+  return eq8_profile(s.start, Eigen::Vector2d::Zero(), s.release, s.release_rate, s.tf, stages);
+}
+
+double mech_energy(const core::PlanarChain& c, const core::JointVector& q, const core::JointVector& qd) {
+  return core::kinetic_energy(c, q, qd) + core::potential_energy(c, q);
+}
+
+TEST(ThrowSimulation, MotorWorkEqualsTheChangeOfMechanicalEnergy) {
+  for (Motor2Mount mount : {Motor2Mount::kOnLink1, Motor2Mount::kOnBase}) {
+    ThrowingSpec s = spec();
+    s.arm.motor2 = mount;
+    s.arm.rotor_inertia = 2e-6;
+    s.steps_per_stage = 200;
+    const ThrowSetup setup = make_throw_setup(s);
+    const ThrowMotion m = record_motion(setup, s, eq8(s, 16));
+    const auto& sr = m.series;
+    const double dE = mech_energy(setup.chain, sr.q.back(), sr.qd.back()) -
+                      mech_energy(setup.chain, sr.q.front(), sr.qd.front());
+    // trapezoid over 0.25 ms samples: second order
+    EXPECT_TRUE(testing::near_rel(m.split.mechanical, dE, 1e-4))
+        << "mount " << static_cast<int>(mount);
+  }
+}
+
+TEST(ThrowSimulation, ElectricalEnergySplitsIntoWorkCopperAndFriction) {
+  const ThrowingSpec s = spec();
+  const ThrowSetup setup = make_throw_setup(s);
+  const ThrowMotion m = record_motion(setup, s, eq8(s, 16));
+  EXPECT_LT(std::abs(m.split.rest), 1e-10 * m.split.electrical);
+  EXPECT_GT(m.split.copper, 0.0);
+  EXPECT_GT(m.split.friction, 0.0);
+  // the rk4 quadrature state and the trapezoid over the samples agree
+  EXPECT_TRUE(testing::near_rel(m.split.electrical, m.evaluation.energy, 1e-3));
+}
+
+TEST(ThrowSimulation, Rk4PlanAgreesWithAnIndependentDopri5Integration) {
+  const ThrowingSpec s = spec();
+  const ThrowSetup setup = make_throw_setup(s);
+  const VelocityProfile p = eq8(s, 16);
+  const ProfileEvaluation ev = simulate_profile(setup, p);
+  // passive joints by dopri5 stage by stage (accelerations jump at the nodes)
+  OdeState x(4);
+  x << s.theta3_start, s.theta4_start, 0.0, 0.0;
+  const core::JointVector zero = core::JointVector::Zero(4);
+  const double h = p.stage_length();
+  Dopri5Options opt;
+  opt.rtol = 1e-11;
+  opt.atol = 1e-12;
+  for (int k = 0; k < p.stages(); ++k) {
+    auto f = [&](double t, const OdeState& y) {
+      const ActiveState a = evaluate_profile(p, k, t);
+      core::JointVector q(4), qd(4), qdd(4);
+      q << a.q, y[0], y[1];
+      qd << a.qd, y[2], y[3];
+      qdd << a.qdd, 0.0, 0.0;
+      const core::MixedDynamics d = core::passive_forward_dynamics(setup.chain, q, qd, qdd, zero);
+      OdeState dy(4);
+      dy << y[2], y[3], d.qdd[2], d.qdd[3];
+      return dy;
+    };
+    x = integrate_dopri5(f, k * h, x, {(k + 1) * h}, opt).back();
+  }
+  EXPECT_NEAR(ev.theta3_final, x[0], 1e-5);
+  EXPECT_NEAR(ev.theta4_final, x[1], 1e-5);
+  EXPECT_NEAR(ev.theta3_rate_final, x[2], 1e-3);
+}
+
+TEST(ThrowSimulation, PlannedVoltagesReplayedOpenLoopReproduceTheMotion) {
+  for (Motor2Mount mount : {Motor2Mount::kOnLink1, Motor2Mount::kOnBase}) {
+    ThrowingSpec s = spec();
+    s.arm.motor2 = mount;
+    s.steps_per_stage = 80;
+    const ThrowSetup setup = make_throw_setup(s);
+    std::vector<ThrowSample> samples;
+    simulate_profile(setup, eq8(s, 16), &samples);
+    std::vector<double> times;
+    for (const auto& x : samples)
+      if (times.empty() || x.t > times.back()) times.push_back(x.t);
+    core::JointVector q0(4);
+    q0 << s.start, s.theta3_start, s.theta4_start;
+    const ReplayResult rr = replay_voltages(setup, voltage_history(samples), q0,
+                                            core::JointVector::Zero(4), times, 1e-10, 1e-12);
+    double err = 0;
+    size_t j = 0;
+    for (const auto& x : samples) {
+      while (rr.t[j] < x.t - 1e-12) ++j;
+      err = std::max(err, (rr.q[j] - x.q).cwiseAbs().maxCoeff());
+    }
+    // stated tolerance of the study's check (replay_tolerance_rad default)
+    EXPECT_LT(err, 2e-3) << "mount " << static_cast<int>(mount);
+  }
+}
+
+TEST(ThrowSimulation, TrayPenaltyIsEq9sKTimesTheExcessAngle) {
+  ThrowingSpec s = spec();
+  s.tray_width = 0.1;  // far narrower than the ball's swing
+  s.k_release = 0.0;
+  s.voltage_max = s.current_max = 1e3;
+  const ThrowSetup setup = make_throw_setup(s);
+  const ProfileEvaluation ev = simulate_profile(setup, eq8(s, 16));
+  ASSERT_GT(ev.max_abs_theta4, 0.05);
+  EXPECT_NEAR(ev.criterion - ev.energy, s.k_tray * (ev.max_abs_theta4 - 0.05), 1e-9);
+}
+
+}  // namespace
+}  // namespace armstudy::studies

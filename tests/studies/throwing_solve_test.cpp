@@ -1,0 +1,73 @@
+// The whole throwing study on a reduced setting (few stages and iterations): the optimum
+// meets every limit, beats the eq. 8 trajectory's energy, replays open loop within the
+// stated tolerance, and the ball's flight obeys the ballistic formulas.
+#include "studies/throwing/throwing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "testing/arms.hpp"
+
+namespace armstudy::studies {
+namespace {
+
+ThrowingSpec reduced() {
+  ThrowingSpec s;
+  s.stages = 8;
+  s.steps_per_stage = 20;
+  s.idp.iterations = 5;
+  s.idp.passes = 2;
+  s.idp.candidates = 6;
+  s.nlopt.max_evaluations = 5;
+  return s;
+}
+
+TEST(ThrowingStudy, OptimumMeetsLimitsBeatsEq8AndReplaysOpenLoop) {
+  const ThrowingSpec s = reduced();
+  const ThrowingResult r = solve_throwing(s);
+  ASSERT_EQ(r.status, Status::kSolved) << r.message;
+  const auto& e = r.idp.evaluation;
+  EXPECT_LE(e.max_voltage, s.voltage_max);
+  EXPECT_LE(e.max_current, s.current_max);
+  EXPECT_LE(e.max_abs_theta4, s.tray_width / 2);
+  EXPECT_LT(e.energy, r.initial.evaluation.energy);
+  EXPECT_GT(r.saving_percent, 0.0);
+  EXPECT_LT(r.replay_error, s.replay_tolerance);
+  EXPECT_LT(r.rk4_energy_error, 1e-3);
+  // the active joints meet the release state by construction
+  EXPECT_LT(r.idp.angle_error.head<2>().norm(), 1e-9);
+  EXPECT_LT(r.idp.rate_error.norm(), 1e-9);
+  // the recorded series covers [0, tf] with all four coordinates
+  EXPECT_EQ(r.idp.series.t.front(), 0.0);
+  EXPECT_NEAR(r.idp.series.t.back(), s.tf, 1e-12);
+  EXPECT_EQ(r.idp.series.q.front().size(), 4);
+  EXPECT_TRUE(r.nlopt_ran);
+}
+
+TEST(ThrowingStudy, FlightLandsWhereTheBallisticFormulasSay) {
+  const Eigen::Vector2d p(0.15, 0.13), v(-1.7, 1.8);
+  const double g = 9.81;
+  const Flight f = ballistic_flight(p, v, g, 0.0);
+  ASSERT_TRUE(f.reaches);
+  // y(T) = 0 and x(T) = x0 + vx T
+  EXPECT_NEAR(p.y() + v.y() * f.duration - 0.5 * g * f.duration * f.duration, 0.0, 1e-12);
+  EXPECT_NEAR(f.landing.x(), p.x() + v.x() * f.duration, 1e-12);
+  EXPECT_NEAR(f.apex, p.y() + v.y() * v.y() / (2 * g), 1e-12);
+  EXPECT_TRUE(testing::near_rel_vec(f.path.back(), f.landing, 1e-12));
+}
+
+TEST(ThrowingStudy, UnreachableLandingHeightIsAnUnsolvedStudyWithTheApex) {
+  ThrowingSpec s = reduced();
+  s.run_nlopt = false;
+  s.idp.iterations = 1;
+  s.idp.passes = 1;
+  s.landing_height = 5.0;
+  const ThrowingResult r = solve_throwing(s);
+  EXPECT_EQ(r.status, Status::kUnsolvable);
+  EXPECT_NE(r.message.find("never reaches the landing height 5.000 m"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("apex"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace armstudy::studies
