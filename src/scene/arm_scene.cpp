@@ -30,6 +30,9 @@ double link_radius(const core::PlanarChain& chain) {
   return 0.04 * longest;
 }
 
+// a narrow field of view: nearly orthographic, little parallax between drawing heights
+constexpr double kFovy = 20;
+
 // a light headlight-lit look without specular glare
 const char* kVisual =
     "    <headlight ambient=\"0.45 0.45 0.45\" diffuse=\"0.55 0.55 0.55\" "
@@ -44,15 +47,16 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   const double r = link_radius(chain);
   const double R = reach(chain);
   const Eigen::Vector2d b = chain.base;
+  // the task as a polyline from start (green) to end (red)
+  std::vector<Eigen::Vector2d> task = decor.task_path;
+  if (decor.task_start && decor.task_end) task = {*decor.task_start, *decor.task_end};
   // what to frame: the reach circle and the task
   ViewBox v{b.x() - R, b.x() + R, b.y() - R, b.y() + R};
-  if (decor.task_start && decor.task_end) {
-    for (const Eigen::Vector2d& p : {*decor.task_start, *decor.task_end}) {
-      v.x_min = std::min(v.x_min, p.x() - 2 * r);
-      v.x_max = std::max(v.x_max, p.x() + 2 * r);
-      v.y_min = std::min(v.y_min, p.y() - 2 * r);
-      v.y_max = std::max(v.y_max, p.y() + 2 * r);
-    }
+  for (const Eigen::Vector2d& p : task) {
+    v.x_min = std::min(v.x_min, p.x() - 2 * r);
+    v.x_max = std::max(v.x_max, p.x() + 2 * r);
+    v.y_min = std::min(v.y_min, p.y() - 2 * r);
+    v.y_max = std::max(v.y_max, p.y() + 2 * r);
   }
   s.view = v;
   const double cx = 0.5 * (v.x_min + v.x_max), cy = 0.5 * (v.y_min + v.y_max);
@@ -60,6 +64,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
 
   MjcfOptions o;
   o.model_name = "horizontal_arm";
+  o.fovy = kFovy;
   o.offwidth = decor.offwidth;
   o.offheight = decor.offheight;
   o.link_radius = r;
@@ -89,13 +94,16 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
       << b.y() - dy << " " << -2.9 * r << " " << b.x() + dx << " " << b.y() + dy << " "
       << -2.9 * r << "\" size=\"" << 0.25 * r << "\" rgba=\"0.20 0.20 0.22 1\"/>\n";
   }
-  if (decor.task_start && decor.task_end) {
-    const Eigen::Vector2d& S = *decor.task_start;
-    const Eigen::Vector2d& F = *decor.task_end;
-    w << "    <geom name=\"task\" type=\"capsule\" fromto=\"" << S.x() << " " << S.y() << " "
-      << -2.6 * r << " " << F.x() << " " << F.y() << " " << -2.6 * r << "\" size=\"" << 0.35 * r
-      << "\" rgba=\"0.85 0.12 0.12 1\"/>\n"
-      << "    <geom name=\"task_start\" type=\"cylinder\" pos=\"" << S.x() << " " << S.y() << " "
+  for (size_t k = 1; k < task.size(); ++k) {
+    if ((task[k] - task[k - 1]).norm() < 1e-9) continue;
+    w << "    <geom name=\"task" << k << "\" type=\"capsule\" fromto=\"" << task[k - 1].x() << " "
+      << task[k - 1].y() << " " << -2.6 * r << " " << task[k].x() << " " << task[k].y() << " "
+      << -2.6 * r << "\" size=\"" << 0.35 * r << "\" rgba=\"0.85 0.12 0.12 1\"/>\n";
+  }
+  if (task.size() >= 2) {
+    const Eigen::Vector2d& S = task.front();
+    const Eigen::Vector2d& F = task.back();
+    w << "    <geom name=\"task_start\" type=\"cylinder\" pos=\"" << S.x() << " " << S.y() << " "
       << -2.6 * r << "\" size=\"" << 0.9 * r << " " << 0.3 * r
       << "\" rgba=\"0.10 0.60 0.20 1\"/>\n"
       << "    <geom name=\"task_end\" type=\"cylinder\" pos=\"" << F.x() << " " << F.y() << " "
@@ -139,6 +147,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
 
   MjcfOptions o;
   o.model_name = "tray_arm";
+  o.fovy = kFovy;
   o.offwidth = decor.offwidth;
   o.offheight = decor.offheight;
   o.link_radius = r;
@@ -199,6 +208,11 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
         << " " << rc * std::sin(a1) << " 0\" size=\"" << 0.35 * r
         << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
     }
+    // the cup hangs from the tray's hinge: two struts to its rims
+    for (double a : {-decor.cup_width / 2, decor.cup_width / 2})
+      c << "      <geom name=\"cup_strut" << (a < 0 ? 0 : 1) << "\" type=\"capsule\" fromto=\"0 0 0 "
+        << d + rc * std::cos(a) << " " << rc * std::sin(a) << " 0\" size=\"" << 0.22 * r
+        << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
     o.link_extra[n - 2] += c.str();
   }
   // the ball: drawn on the spin body of the ball's spinner (the one turning with the ball
@@ -206,8 +220,8 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   auto ball = xml();
   ball << "      <geom name=\"ball\" type=\"sphere\" size=\"" << rb
        << "\" rgba=\"0.86 0.14 0.14 1\"/>\n"
-       << "      <geom name=\"ball_stripe\" type=\"box\" pos=\"0 0 " << 0.5 * rb << "\" size=\""
-       << 0.9 * rb << " " << 0.18 * rb << " " << 0.6 * rb << "\" rgba=\"1 1 1 1\"/>\n";
+       << "      <geom name=\"ball_stripe\" type=\"box\" pos=\"0 0 " << 0.85 * rb << "\" size=\""
+       << 0.75 * rb << " " << 0.13 * rb << " " << 0.2 * rb << "\" rgba=\"0.35 0.04 0.04 1\"/>\n";
   bool ball_drawn = false;
   o.spinner_pos.assign(chain.spinners.size(), Eigen::Vector2d::Zero());
   o.spinner_extra.assign(chain.spinners.size(), "");

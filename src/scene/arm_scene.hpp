@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -25,6 +26,8 @@ struct ArmScene {
 struct TableDecor {
   std::optional<Eigen::Vector2d> task_start;  ///< the straight-line task S -> F
   std::optional<Eigen::Vector2d> task_end;
+  /// A task path as a polyline (used when task_start/task_end are not set), m.
+  std::vector<Eigen::Vector2d> task_path;
   int offwidth = 640, offheight = 480;  ///< px, at least the frame size
 };
 

@@ -92,15 +92,25 @@ Image SceneRenderer::locus(std::span<const PoseSample> samples,
       extra.push_back(g);
     }
   }
-  // the end-effector path on top of everything
-  const double top = 3.0 * r;
+  // the end-effector path on top of everything the last pose draws
+  set_pose(model_, map_, samples[n - 1]);
+  double top = 3.0 * r;
+  for (const mjvGeom& g : renderer_.dynamic_geoms(model_.data()))
+  {
+    // z extent of the geom's box (rows of mat are the world axes in the geom frame)
+    double ext = std::abs(g.mat[6]) * g.size[0] + std::abs(g.mat[7]) * g.size[1] +
+                 std::abs(g.mat[8]) * g.size[2];
+    if (g.type == mjGEOM_CAPSULE) ext += g.size[0];
+    top = std::max(top, 1.02 * (g.pos[2] + ext));
+  }
   for (size_t k = 1; k < path.size(); ++k)
     extra.push_back(segment_geom(Eigen::Vector3d(path[k - 1].x(), path[k - 1].y(), top),
                                  Eigen::Vector3d(path[k].x(), path[k].y(), top), 0.3 * r,
                                  style.path_rgba));
   // the thrown object's flight: dots
+  const double dot = std::max(0.45 * r, 3.0 * renderer_.metres_per_pixel());
   for (size_t k = 0; k < flight.size(); ++k)
-    extra.push_back(sphere_geom(Eigen::Vector3d(flight[k].x(), flight[k].y(), top), 0.45 * r,
+    extra.push_back(sphere_geom(Eigen::Vector3d(flight[k].x(), flight[k].y(), top), dot,
                                 style.flight_rgba));
   set_pose(model_, map_, samples[n - 1]);
   return renderer_.render(model_.data(), labels, extra);

@@ -115,7 +115,8 @@ std::string write_mjcf(const core::PlanarChain& chain, const MjcfOptions& o) {
     << "    <flag contact=\"disable\"/>\n"
     << "  </option>\n"
     << "  <visual>\n"
-    << "    <global offwidth=\"" << o.offwidth << "\" offheight=\"" << o.offheight << "\"/>\n"
+    << "    <global offwidth=\"" << o.offwidth << "\" offheight=\"" << o.offheight << "\" fovy=\""
+    << o.fovy << "\"/>\n"
     << "    <quality shadowsize=\"1024\" offsamples=\"0\"/>\n"
     << o.visual_extra
     << "  </visual>\n";

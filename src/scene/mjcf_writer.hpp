@@ -31,6 +31,7 @@ struct MjcfOptions {
   std::string integrator = "RK4"; ///< "Euler" or "RK4"
   int offwidth = 640;             ///< px, off-screen buffer
   int offheight = 480;
+  double fovy = 45;               ///< deg, the free camera's vertical field of view
   /// Extra XML inserted in <worldbody> before the chain (table, task line, markers).
   std::string world_extra;
   /// Extra XML inserted inside the tip body (e.g. a payload geom).

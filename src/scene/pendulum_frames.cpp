@@ -1,0 +1,62 @@
+#include "scene/pendulum_frames.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/kinematics.hpp"
+#include "scene/arm_scene.hpp"
+#include "scene/png_writer.hpp"
+#include "scene/study_frames.hpp"
+
+namespace armstudy::scene {
+
+std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spec,
+                                                const studies::PendulumResult& result,
+                                                const cases::RenderOptions& options,
+                                                const std::filesystem::path& dir) {
+  if (result.snapshot_index.empty()) return {};
+  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+  std::vector<PoseSample> snaps;
+  for (size_t k = 0; k < result.snapshot_index.size(); ++k) {
+    const int i = result.snapshot_index[k];
+    snaps.push_back({result.t[i], result.q[i], result.qd[i]});
+  }
+  // frame the tray's swing: hinge, cup and ball over every sample, with room for the cup
+  const double rb = spec.arm.rb, cup = spec.arm.r4 + spec.arm.rb;
+  ViewBox v{1e9, -1e9, 1e9, -1e9};
+  auto grow = [&](const Eigen::Vector2d& p, double pad) {
+    v.x_min = std::min(v.x_min, p.x() - pad);
+    v.x_max = std::max(v.x_max, p.x() + pad);
+    v.y_min = std::min(v.y_min, p.y() - pad);
+    v.y_max = std::max(v.y_max, p.y() + pad);
+  };
+  for (size_t i = 0; i < result.t.size(); ++i) {
+    const core::ChainPose pose = core::forward_kinematics(chain, result.q[i]);
+    grow(pose.p_WJ.col(2), 0.01);
+    grow(pose.p_WJ.col(3), cup + 0.01);
+    grow(pose.p_WJ.col(4), rb + 0.005);
+  }
+  TrayDecor decor;
+  decor.ball_radius = rb;
+  decor.cup_width = 2.0 * core::kPi / 3;
+  decor.offwidth = options.width;
+  decor.offheight = options.height;
+  decor.view = v;
+  SceneRenderer sr(tray_arm_scene(chain, decor), "pendulum scene", render_settings(options));
+
+  std::vector<std::string> files;
+  char title[160];
+  std::snprintf(title, sizeof title, "pendulum (003 Sec. 3), joints 1, 2 locked; every %.2f s",
+                spec.snapshot_step);
+  const int columns = snaps.size() > 9 ? 4 : strip_columns(static_cast<int>(snaps.size()));
+  write_png(dir / "pendulum_snapshots_strip.png", sr.strip(snaps, title, columns));
+  files.push_back("pendulum_snapshots_strip.png");
+  FrameLabels labels;
+  labels.top_left = std::string(title) + "\nball path traced; older snapshots fainter";
+  labels.bottom_left = "side view, gravity down; grid 0.05 m";
+  write_png(dir / "pendulum_snapshots_locus.png", sr.locus(snaps, result.ball, {}, labels));
+  files.push_back("pendulum_snapshots_locus.png");
+  return files;
+}
+
+}  // namespace armstudy::scene

@@ -1,0 +1,22 @@
+#pragma once
+/// Frames of the pendulum test (003 Sec. 3, Fig. 2a): the tray and the rolling ball with
+/// joints 1 and 2 locked, a snapshot every snapshot_step (0.13 s): a strip of the
+/// snapshots and a stroboscopic locus of all of them with the ball's path.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cases/case_info.hpp"
+#include "studies/pendulum/pendulum.hpp"
+
+namespace armstudy::scene {
+
+/// Writes pendulum_snapshots_strip.png and pendulum_snapshots_locus.png into `dir`; returns
+/// the file names. @throws SceneError.
+std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spec,
+                                                const studies::PendulumResult& result,
+                                                const cases::RenderOptions& options,
+                                                const std::filesystem::path& dir);
+
+}  // namespace armstudy::scene

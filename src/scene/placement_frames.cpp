@@ -1,0 +1,56 @@
+#include "scene/placement_frames.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "scene/arm_scene.hpp"
+#include "scene/study_frames.hpp"
+
+namespace armstudy::scene {
+namespace pl = studies::placement;
+
+std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl::Result& result,
+                                                 const cases::RenderOptions& options,
+                                                 const std::filesystem::path& dir) {
+  std::vector<std::string> files;
+  for (const pl::ProgramConfig& pc : result.cases) {
+    if (!pc.found || pc.series.t.size() < 2) continue;
+    // the line frame P: origin at S, x along the line; the arm frame A is rotated by phi
+    const Eigen::Vector2d S = pc.placement.start, F = pc.placement.end;
+    const double phi = std::atan2(F.y() - S.y(), F.x() - S.x());
+    const Eigen::Rotation2Dd to_P(-phi);
+    core::PlanarChain chain = spec.chain;
+    chain.base = to_P * (chain.base - S);
+    chain.base_angle = chain.base_angle - phi;
+    TableDecor decor;
+    decor.task_start = Eigen::Vector2d::Zero();
+    decor.task_end = to_P * (F - S);
+    decor.offwidth = options.width;
+    decor.offheight = options.height;
+    SceneRenderer sr(horizontal_arm_scene(chain, decor), "placement scene", render_settings(options));
+
+    SampledMotion m;
+    m.t = pc.series.t;
+    for (size_t k = 0; k < pc.series.t.size(); ++k) {
+      m.q.push_back(core::JointVector(pc.series.q[k]));
+      m.qd.push_back(core::JointVector(pc.series.qd[k]));
+    }
+    std::vector<Eigen::Vector2d> path;
+    for (const Eigen::Vector2d& p : pc.series.tip) path.push_back(to_P * (p - S));
+
+    const std::string name = "placement_" + std::string(core::program_name(pc.program)) + "_c" +
+                             std::to_string(pc.configuration);
+    char title[160];
+    std::snprintf(title, sizeof title, "%s, configuration %d: root (%.3f, %.3f) m, %.3f J",
+                  std::string(core::program_label(pc.program)).c_str(), pc.configuration,
+                  pc.refined.root.x(), pc.refined.root.y(), pc.refined.metrics.energy);
+    files.push_back(write_strip(sr, m, options.frames, title, dir, name));
+    FrameLabels labels;
+    labels.top_left = std::string("optimum, ") + title;
+    labels.bottom_left = "top view; line fixed, root chosen; grid 0.1 m";
+    files.push_back(write_locus(sr, m, 9, path, {}, labels, dir, name));
+  }
+  return files;
+}
+
+}  // namespace armstudy::scene

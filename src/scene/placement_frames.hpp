@@ -1,0 +1,23 @@
+#pragma once
+/// Frames of the placement study: for every program and configuration with an optimum,
+/// the arm at its optimal root carrying the payload along the fixed line (drawn in the
+/// line's frame P, so the line lies along x from the origin): a strip and a locus.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cases/case_info.hpp"
+#include "studies/placement/result.hpp"
+#include "studies/placement/spec.hpp"
+
+namespace armstudy::scene {
+
+/// Writes placement_<program>_c<configuration>_{strip,locus}.png into `dir` and returns
+/// the file names. @throws SceneError (ModelError for an unloadable model).
+std::vector<std::string> render_placement_frames(const studies::placement::Spec& spec,
+                                                 const studies::placement::Result& result,
+                                                 const cases::RenderOptions& options,
+                                                 const std::filesystem::path& dir);
+
+}  // namespace armstudy::scene

@@ -1,0 +1,22 @@
+#pragma once
+/// Frames of the throwing study (003 Sec. 4, Fig. 7): the optimised (IDP) motion of the tray
+/// arm from rest to release, as a strip and as a stroboscopic locus with the ball's path,
+/// and the locus again framing the ball's ballistic flight after release.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cases/case_info.hpp"
+#include "studies/throwing/throwing.hpp"
+
+namespace armstudy::scene {
+
+/// Writes throwing_idp_{strip,locus}.png and throwing_flight_locus.png (when the flight
+/// has a path) into `dir`; returns the file names. @throws SceneError.
+std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
+                                                const studies::ThrowingResult& result,
+                                                const cases::RenderOptions& options,
+                                                const std::filesystem::path& dir);
+
+}  // namespace armstudy::scene

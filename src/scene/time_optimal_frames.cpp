@@ -1,0 +1,39 @@
+#include "scene/time_optimal_frames.hpp"
+
+#include <cstdio>
+
+#include "scene/arm_scene.hpp"
+#include "scene/study_frames.hpp"
+
+namespace armstudy::scene {
+namespace to = studies::time_optimal;
+
+std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const to::Result& result,
+                                                    const cases::RenderOptions& options,
+                                                    const std::filesystem::path& dir) {
+  const int n = static_cast<int>(result.motion_t.size());
+  if (n < 2 || result.motion_q.cols() != n) return {};
+  TableDecor decor;
+  for (int k = 0; k < result.path_p.cols(); ++k) decor.task_path.push_back(result.path_p.col(k));
+  decor.offwidth = options.width;
+  decor.offheight = options.height;
+  SceneRenderer sr(horizontal_arm_scene(spec.chain, decor), "time-optimal scene",
+                   render_settings(options));
+  SampledMotion m;
+  m.t = result.motion_t;
+  for (int k = 0; k < n; ++k) m.q.push_back(core::JointVector(result.motion_q.col(k)));
+  std::vector<Eigen::Vector2d> path;
+  for (int k = 0; k < result.motion_p.cols(); ++k) path.push_back(result.motion_p.col(k));
+  char title[160];
+  std::snprintf(title, sizeof title, "time-optimal (exact): %.4f s, equal time steps",
+                result.motion_t.back() - result.motion_t.front());
+  std::vector<std::string> files;
+  files.push_back(write_strip(sr, m, options.frames, title, dir, "time_optimal"));
+  FrameLabels labels;
+  labels.top_left = std::string(title) + "\nposes at equal time steps: dense where slow";
+  labels.bottom_left = "top view; grid 0.1 m";
+  files.push_back(write_locus(sr, m, 15, path, {}, labels, dir, "time_optimal"));
+  return files;
+}
+
+}  // namespace armstudy::scene
