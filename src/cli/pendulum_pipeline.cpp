@@ -17,6 +17,7 @@
 #include "cases/pendulum_case.hpp"
 #include "cli/pipeline.hpp"
 #include "report/case_report.hpp"
+#include "scene/pendulum_frames.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -118,6 +119,12 @@ class PendulumRun final : public StudyRun {
                    {"tolerance_relative", spec_.drift_tolerance}};
     j["run_time_s"] = num(r.run_time, 4);
     return j;
+  }
+
+  // frames: snapshots every snapshot_step, strip and locus (src/scene, issue 4)
+  std::vector<std::string> render(const std::filesystem::path& dir,
+                                  const cases::CaseInfo& info) override {
+    return scene::render_pendulum_frames(spec_, result_, info.render, dir);
   }
 
  private:

@@ -38,6 +38,7 @@
 #include "cases/placement_case.hpp"
 #include "cli/pipeline.hpp"
 #include "report/case_report.hpp"
+#include "scene/placement_frames.hpp"
 #include "core/motion_program.hpp"
 #include "studies/placement/solve.hpp"
 
@@ -148,7 +149,11 @@ class PlacementRun final : public StudyRun {
     return k;
   }
 
-  // render(): the scene engineer replays result_.cases[i].series / placement here.
+  // frames: the optimum of every program and configuration (src/scene, issue 4)
+  std::vector<std::string> render(const std::filesystem::path& dir,
+                                  const cases::CaseInfo& info) override {
+    return scene::render_placement_frames(spec_, result_, info.render, dir);
+  }
 
  private:
   pl::Spec spec_;

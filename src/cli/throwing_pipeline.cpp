@@ -33,6 +33,7 @@
 #include "cases/throwing_case.hpp"
 #include "cli/pipeline.hpp"
 #include "report/case_report.hpp"
+#include "scene/throwing_frames.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -259,6 +260,12 @@ class ThrowingRun final : public StudyRun {
                         {"theta3_error_vs_4x_steps_rad", num(r.rk4_theta3_error, 4)}};
     j["run_time_s"] = num(r.run_time, 4);
     return j;
+  }
+
+  // frames: the IDP optimum's strip and locus (Fig. 7) and the flight (src/scene, issue 4)
+  std::vector<std::string> render(const std::filesystem::path& dir,
+                                  const cases::CaseInfo& info) override {
+    return scene::render_throwing_frames(spec_, result_, info.render, dir);
   }
 
  private:
