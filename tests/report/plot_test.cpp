@@ -5,7 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
+#include <algorithm>
+#include <regex>
 #include <sstream>
 
 namespace armstudy::report {
@@ -45,7 +46,7 @@ LinePlot sine_plot() {
   return p;
 }
 
-TEST(Plot, LinePlotIsAnSvgWithWhiteBackgroundAndCLocaleNumbers) {
+TEST(Plot, LinePlotIsACompleteSvgOnAWhiteBackground) {
   const fs::path d = test_dir("line");
   write_line_plot(sine_plot(), d / "a.svg");
   const std::string svg = slurp(d / "a.svg");
@@ -54,6 +55,34 @@ TEST(Plot, LinePlotIsAnSvgWithWhiteBackgroundAndCLocaleNumbers) {
   EXPECT_NE(svg.find("rgb(100%,100%,100%)"), std::string::npos) << "no white fill";
   EXPECT_EQ(svg.find(".part"), std::string::npos);
   EXPECT_FALSE(fs::exists(d / "a.svg.part"));
+  // cairo's styles are folded into classes: one <style>, no style attributes left
+  EXPECT_NE(svg.find("<style>"), std::string::npos);
+  EXPECT_EQ(svg.find(" style=\""), std::string::npos);
+  // coordinates use a decimal point, never a comma (the C locale)
+  const std::regex comma_decimal(R"(d="[^"]*\d,\d)");
+  EXPECT_FALSE(std::regex_search(svg, comma_decimal));
+}
+
+TEST(Plot, EachConfigurationAndSolverKeepsOneDistinctColour) {
+  EXPECT_EQ(colour_for("cycloidal/1"), colour_for("cycloidal/1"));
+  const char* keys[] = {"cycloidal/1", "cycloidal/2", "poly345/1", "poly345/2"};
+  for (const char* a : keys)
+    for (const char* b : keys)
+      if (std::string(a) != b) EXPECT_FALSE(colour_for(a) == colour_for(b)) << a << " " << b;
+  EXPECT_FALSE(colour_for("dp") == colour_for("reachability"));
+  EXPECT_FALSE(colour_for("dp") == colour_for("complex"));
+  EXPECT_FALSE(colour_for("idp") == colour_for("gradient"));
+  // unknown keys get a stable palette colour that the stylesheet has a swatch class for
+  const auto palette = palette_colours();
+  EXPECT_NE(std::find(palette.begin(), palette.end(), colour_for("some other program/1")),
+            palette.end());
+  EXPECT_EQ(css_colour({0, 114, 178}), "#0072b2");
+}
+
+TEST(Plot, InconsistentSeriesSizesAreRejected) {
+  LinePlot p = sine_plot();
+  p.series[0].y.pop_back();
+  EXPECT_THROW(write_line_plot(p, test_dir("bad") / "b.svg"), std::invalid_argument);
 }
 }  // namespace
 }  // namespace armstudy::report
