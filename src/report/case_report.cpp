@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -128,26 +129,49 @@ Section checks_section(const nlohmann::json& results) {
   return s;
 }
 
+// what a frame file shows, from the scene's names: <study>[_<what>][_c<N>]_{strip,locus}.png
+std::string frame_label(const std::string& file, bool* wide) {
+  std::string stem = fs::path(file).stem().string();
+  std::string kind;
+  for (const char* k : {"_strip", "_locus"})
+    if (stem.size() > std::strlen(k) && stem.ends_with(k)) {
+      kind = k + 1;
+      stem.resize(stem.size() - std::strlen(k));
+    }
+  *wide = kind == "strip";
+  // "placement_cycloidal_c1" -> "placement, cycloidal, configuration 1"
+  std::string words;
+  std::stringstream in(stem);
+  std::string w;
+  while (std::getline(in, w, '_')) {
+    if (w.size() == 2 && w[0] == 'c' && std::isdigit(static_cast<unsigned char>(w[1])))
+      w = "configuration " + w.substr(1);
+    words += (words.empty() ? "" : ", ") + w;
+  }
+  if (kind == "strip") return "Frames at equal time steps: " + words;
+  if (kind == "locus") return "Stroboscopic locus: " + words;
+  return words;
+}
+
 Section frames_section(const nlohmann::json& results, const std::string& study) {
   Section s;
   s.id = "frames";
   s.heading = "Frames of the motion (MuJoCo replay)";
   Strip strip;
-  std::vector<double> times = jsonv::vec(results, "frame_times_s");
-  if (times.empty() && results.contains(study)) times = jsonv::vec(results[study], "frame_times_s");
   if (results.contains("frames"))
     for (const auto& f : results["frames"]) {
       if (!f.is_string()) continue;
-      const size_t k = strip.files.size();
+      bool wide = false;
+      strip.labels.push_back(frame_label(f.get<std::string>(), &wide));
       strip.files.push_back(f.get<std::string>());
-      strip.labels.push_back(k < times.size() ? "t = " + format_fixed(times[k], 3) + " s"
-                                              : "frame " + std::to_string(k + 1));
+      strip.wide.push_back(wide);
     }
   if (strip.files.empty()) {
     s.paragraph("No frames were rendered for this case (run without --no-render to get them).");
   } else {
-    strip.caption = "The solved motion replayed in the MuJoCo model of the arm, rendered "
-                    "off-screen; frames in time order.";
+    strip.caption = "The solved motion replayed in the MuJoCo model of the arm and rendered "
+                    "off-screen (OSMesa): strips of frames in time order and stroboscopic loci "
+                    "of the whole motion.";
     s.strip(std::move(strip));
   }
   return s;
@@ -254,6 +278,7 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
             mus::data im;
             im.set("src", b.strip.files[k]);
             im.set("label", k < b.strip.labels.size() ? b.strip.labels[k] : "");
+            im.set("wide", k < b.strip.wide.size() && b.strip.wide[k]);
             imgs << im;
           }
           st.set("images", imgs);

@@ -35,6 +35,7 @@ struct Strip {
   std::string caption;
   std::vector<std::string> files;
   std::vector<std::string> labels;
+  std::vector<bool> wide;  ///< per file: a full-width image (a composed strip), else half
 };
 
 /// One element of a section, in reading order.
