@@ -155,16 +155,16 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   }
   if (progress) progress(0.95, "open-loop replay");
 
-  // integration accuracy: the optimum with four times the rk4 steps
+  // integration accuracy: the optimum with 16 times the rk4 steps
   ThrowSetup fine = setup;
-  fine.steps_per_stage = 4 * setup.steps_per_stage;
+  fine.steps_per_stage = 16 * setup.steps_per_stage;
   std::vector<ThrowSample> fine_samples;
   {
     const ProfileEvaluation ef = simulate_profile(fine, r.idp.profile, &fine_samples);
     r.rk4_energy_error = std::abs(ef.energy - r.idp.evaluation.energy) / std::abs(ef.energy);
     r.rk4_theta3_error = std::abs(ef.theta3_final - r.idp.evaluation.theta3_final);
   }
-  // the optimum's voltages (sampled densely, from the 4x simulation) applied open loop to
+  // the optimum's voltages (sampled densely, from the 16x simulation) applied open loop to
   // the model with all four joints free, compared with the planned angles of that same
   // simulation (the rk4 error of the coarse plan is checked apart, above)
   {

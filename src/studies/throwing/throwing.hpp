@@ -105,11 +105,11 @@ struct ThrowingResult {
   NloptOutcome nlopt_run;
   double saving_percent = 0;  ///< 100 (E_eq8 - E_idp) / E_eq8
   Flight flight;
-  double replay_error = 0;    ///< rad, max |q_replay - q_plan| over all samples, 4 joints
+  double replay_error = 0;    ///< rad, max |q_replay - q_plan (16x steps)|, 4 joints
   std::vector<double> replay_t;
   std::vector<core::JointVector> replay_q;
-  double rk4_energy_error = 0;   ///< relative |E(n) - E(4n)| of the optimum
-  double rk4_theta3_error = 0;   ///< rad, |theta3(tf) at n - at 4n steps|
+  double rk4_energy_error = 0;   ///< relative |E(n) - E(16n)| of the optimum
+  double rk4_theta3_error = 0;   ///< rad, |theta3(tf) at n - at 16n steps|
   double run_time = 0;           ///< s
 };
 
