@@ -388,14 +388,21 @@ int write_index(const fs::path& out_dir) {
     e.set("status", status);
     e.set("solved", status == "solved");
     e.set("message", r.results.value("message", ""));
+    // the first few key figures; the case page has them all
+    constexpr size_t kIndexFigures = 6;
     mus::data kf{mus::data::type::list};
-    for (const auto& [k, v] : key_figures(r.results)) {
+    const auto figures = key_figures(r.results);
+    for (size_t k = 0; k < figures.size() && k < kIndexFigures; ++k) {
       mus::data x;
-      x.set("label", k);
-      x.set("value", v);
+      x.set("label", figures[k].first);
+      x.set("value", figures[k].second);
       kf << x;
     }
     e.set("key_figures", kf);
+    e.set("more_figures", figures.size() > kIndexFigures
+                              ? "and " + std::to_string(figures.size() - kIndexFigures) + " more"
+                              : "");
+    e.set("has_more_figures", figures.size() > kIndexFigures);
     // thumbnail: first frame, else the first figure of the page
     std::string thumb;
     if (r.results.contains("frames") && r.results["frames"].is_array() &&
