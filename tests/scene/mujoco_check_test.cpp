@@ -1,0 +1,97 @@
+// MuJoCo's dynamics along the studies' own motions: the throwing study's simulated throw
+// (passive tray and rolling ball) and a placement optimum's motion.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene/mujoco_check.hpp"
+#include "studies/placement/solve.hpp"
+#include "studies/throwing/throwing.hpp"
+#include "testing/arms.hpp"
+
+namespace armstudy::scene {
+namespace {
+
+struct Motion {
+  std::vector<core::JointVector> q, qd, qdd, tau;
+};
+
+Motion throw_motion(const studies::ThrowingSpec& spec) {
+  const studies::ThrowSetup setup = studies::make_throw_setup(spec);
+  const auto profile = studies::eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release,
+                                            spec.release_rate, spec.tf, spec.stages);
+  const studies::ThrowMotion tm = studies::record_motion(setup, spec, profile);
+  Motion m;
+  for (size_t k = 0; k < tm.series.t.size(); ++k) {
+    m.q.push_back(tm.series.q[k]);
+    m.qd.push_back(tm.series.qd[k]);
+    m.qdd.push_back(tm.series.qdd[k]);
+    m.tau.push_back(studies::joint_torques(spec.arm.motor2, tm.series.tau_m[k]));
+  }
+  return m;
+}
+
+TEST(MujocoCheck, ThrowingMotionAgreesWithMujocoIncludingTheRollingBall) {
+  for (auto mount : {studies::Motor2Mount::kOnLink1, studies::Motor2Mount::kOnBase}) {
+    studies::ThrowingSpec spec;
+    spec.arm.motor2 = mount;
+    spec.arm.rotor_inertia = 2e-7;  // rotors as spinners (kOnBase: rigid with link 2)
+    const Motion m = throw_motion(spec);
+    ASSERT_GT(m.q.size(), 50u);
+    const MujocoAgreement a =
+        mujoco_agreement(studies::make_tray_arm(spec.arm), m.q, m.qd, m.qdd, m.tau);
+    EXPECT_LT(a.torque_rel, 1e-9) << "worst sample " << a.worst_sample;
+    // massless bodies get 1e-14 kg / kg m^2 in MJCF (MuJoCo rejects zero); against the
+    // tray's 1e-6 kg m^2 inertias that is ~1e-8 relative
+    EXPECT_LT(a.acceleration_rel, 1e-7);
+    for (const auto& c : mujoco_checks(a, true)) EXPECT_TRUE(c.passed) << c.name;
+  }
+}
+
+TEST(MujocoCheck, WrongTorquesOrAccelerationsFailTheCheck) {
+  const studies::ThrowingSpec spec;
+  Motion m = throw_motion(spec);
+  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+  Motion bad_tau = m;
+  bad_tau.tau[40][1] *= 1.001;
+  const MujocoAgreement a = mujoco_agreement(chain, bad_tau.q, bad_tau.qd, bad_tau.qdd, bad_tau.tau);
+  EXPECT_FALSE(mujoco_checks(a, true)[0].passed);
+  EXPECT_EQ(a.worst_sample, 40);
+  Motion bad_qdd = m;
+  bad_qdd.qdd[30][3] += 0.01 * std::abs(bad_qdd.qdd[30][3]) + 1.0;
+  const MujocoAgreement b = mujoco_agreement(chain, bad_qdd.q, bad_qdd.qd, bad_qdd.qdd, bad_qdd.tau);
+  EXPECT_FALSE(mujoco_checks(b, true)[1].passed);
+}
+
+TEST(MujocoCheck, PlacementOptimumAgreesWithMujoco) {
+  studies::placement::Spec spec;
+  spec.chain = testing::thesis_arm();
+  spec.length = 0.4 * 4 * std::sqrt(0.4 * 0.2);
+  spec.programs = {core::MotionProgram::kPoly345};
+  spec.configurations = {1};
+  spec.nx_s = 10;
+  spec.phi_step = 6 * core::kPi / 180;
+  spec.samples = 101;
+  spec.map_nx = 10;
+  spec.map_ny = 5;
+  spec.refine = false;
+  spec.threads = 1;
+  const auto r = studies::placement::solve(spec);
+  ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
+  const auto& s = r.cases.at(0).series;
+  ASSERT_GT(s.t.size(), 50u);
+  Motion m;
+  for (size_t k = 0; k < s.t.size(); ++k) {
+    m.q.push_back(core::JointVector(s.q[k]));
+    m.qd.push_back(core::JointVector(s.qd[k]));
+    m.qdd.push_back(core::JointVector(s.qdd[k]));
+    m.tau.push_back(core::JointVector(s.tau[k]));
+  }
+  const MujocoAgreement a = mujoco_agreement(spec.chain, m.q, m.qd, m.qdd, m.tau);
+  EXPECT_LT(a.torque_rel, 1e-9);
+  EXPECT_EQ(mujoco_checks(a, false).size(), 1u);
+}
+
+}  // namespace
+}  // namespace armstudy::scene
