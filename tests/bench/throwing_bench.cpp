@@ -1,0 +1,77 @@
+// Speed of the tray-arm simulations: RK4 steps per second of the planning model (one
+// evaluation of an IDP candidate), the open-loop DOPRI5 replay, one IDP iteration on both
+// cores, and the pendulum study.
+#include <benchmark/benchmark.h>
+
+#include "studies/pendulum/pendulum.hpp"
+#include "studies/throwing/idp.hpp"
+#include "studies/throwing/throwing.hpp"
+
+namespace {
+using namespace armstudy::studies;
+
+struct Fixture {
+  ThrowingSpec spec;
+  ThrowSetup setup;
+  VelocityProfile profile;
+  Fixture() {
+    setup = make_throw_setup(spec);
+    profile = eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release, spec.release_rate,
+                          spec.tf, spec.stages);
+  }
+};
+
+// one candidate of the default case: 16 stages x 20 RK4 steps
+void BM_ThrowSimulateProfile(benchmark::State& state) {
+  Fixture f;
+  f.setup.steps_per_stage = static_cast<int>(state.range(0));
+  const long steps = static_cast<long>(f.setup.steps_per_stage) * f.profile.stages();
+  for (auto _ : state) benchmark::DoNotOptimize(simulate_profile(f.setup, f.profile).energy);
+  state.counters["rk4_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ThrowSimulateProfile)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
+
+void BM_ThrowReplayVoltages(benchmark::State& state) {
+  Fixture f;
+  std::vector<ThrowSample> samples;
+  simulate_profile(f.setup, f.profile, &samples);
+  const VoltageHistory vh = voltage_history(samples);
+  armstudy::core::JointVector q0(4);
+  q0 << f.spec.start, 0.0, 0.0;
+  long steps = 0;
+  for (auto _ : state) {
+    const ReplayResult r = replay_voltages(f.setup, vh, q0, armstudy::core::JointVector::Zero(4),
+                                           {f.spec.tf}, 1e-10, 1e-12);
+    steps += r.steps;
+  }
+  state.counters["dopri5_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ThrowReplayVoltages)->Unit(benchmark::kMillisecond);
+
+// one IDP iteration (15 stage nodes x 8 candidates) on 1 and 2 threads
+void BM_IdpIteration(benchmark::State& state) {
+  Fixture f;
+  IdpSettings s;
+  s.iterations = 1;
+  s.passes = 1;
+  s.threads = static_cast<int>(state.range(0));
+  const Eigen::Vector2d delta = f.spec.release - f.spec.start;
+  long evals = 0;
+  for (auto _ : state) evals += run_idp(f.setup, f.profile, delta, s).evaluations;
+  state.counters["simulations_per_s"] =
+      benchmark::Counter(static_cast<double>(evals), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_IdpIteration)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PendulumTwoSeconds(benchmark::State& state) {
+  const PendulumSpec spec = default_pendulum_spec();
+  long steps = 0;
+  for (auto _ : state) steps += solve_pendulum(spec).steps_accepted;
+  state.counters["dopri5_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_PendulumTwoSeconds)->Unit(benchmark::kMillisecond);
+
+}  // namespace
