@@ -1,13 +1,63 @@
-// the time-optimal study of 004_87cbdf4981aa31c3.txt: method, phase plane, limits, dp table
+// the time-optimal study of 004_87cbdf4981aa31c3.txt: solvers side by side, the phase plane
+// with the maximum velocity curve, joint torques and velocities with their limits, the dp
+// convergence table
+#include <cmath>
+
 #include "report/number_format.hpp"
 #include "report/study_sections.hpp"
 
 namespace armstudy::report {
+namespace {
 
 using nlohmann::json;
 
+const json& arr(const json& j, const char* key) {
+  static const json empty = json::array();
+  return jsonv::has(j, key) && j[key].is_array() ? j[key] : empty;
+}
+const json& obj(const json& j, const char* key) {
+  static const json empty = json::object();
+  return jsonv::has(j, key) && j[key].is_object() ? j[key] : empty;
+}
+// the first of `keys` that j holds as an array of numbers
+std::vector<double> first_vec(const json& j, std::initializer_list<const char*> keys) {
+  for (const char* k : keys)
+    if (jsonv::has(j, k) && j[k].is_array()) return jsonv::vec(j, k);
+  return {};
+}
+double first_num(const json& j, std::initializer_list<const char*> keys) {
+  for (const char* k : keys)
+    if (jsonv::has(j, k) && j[k].is_number()) return j[k].get<double>();
+  return NAN;
+}
+std::string solver_name(const json& s) {
+  for (const char* k : {"name", "solver"})
+    if (jsonv::has(s, k) && s[k].is_string()) return s[k].get<std::string>();
+  return "solver";
+}
+// colour key of a solver: "dp_joint1" shares DP's family but not its colour
+std::string solver_key(const std::string& name) {
+  if (name == "exact" || name == "reachability") return "reachability";
+  return name;
+}
+// the dense samples of a solver (an object with t_s), else the solver itself
+const json& samples_of(const json& s) {
+  for (const char* k : {"samples", "series", "motion"})
+    if (jsonv::has(s, k) && s[k].is_object()) return s[k];
+  return s;
+}
+// limit of joint j (0-based) under any of `keys` (an array per joint)
+double limit_of(const json& limits, std::initializer_list<const char*> keys, size_t j) {
+  const auto v = first_vec(limits, keys);
+  return j < v.size() ? v[j] : NAN;
+}
+
+}  // namespace
+
 void time_optimal_sections(const json& results, FigureWriter& figures, CasePage& page) {
   const json& to = results.contains("time_optimal") ? results["time_optimal"] : json::object();
+  const json& solvers = arr(to, "solvers");
+  const json& limits = obj(to, "limits");
 
   Section method;
   method.id = "method";
@@ -24,24 +74,131 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       "forward pass). Every solution is re-checked by dense resampling against every limit.");
   method.note(
       "The source is an abstract: link lengths, limits and the path are not given, so the "
-      "case chooses them; there are no printed numbers to compare with. The comparison that "
-      "matters is between the solvers: the exact solver is never slower than DP or Complex on "
-      "the same problem.");
+      "case chooses them (see its parameters); there are no printed numbers to compare with. "
+      "The comparison that matters is between the solvers: the exact solver is never slower "
+      "than DP or Complex on the same problem.");
+  if (!limits.empty()) method.table(json_table(limits, "Limits used (per joint)."));
   page.sections.push_back(std::move(method));
 
   Section res;
-  res.id = "results";
-  res.heading = "Results";
+  res.id = "solvers";
+  res.heading = "Solvers side by side";
   Table t;
-  t.header = {"quantity", "value"};
-  for (const auto& [k, v] : to.items())
-    if (v.is_primitive() && !v.is_null()) t.rows.push_back({label_from_key(k), jsonv::str(to, k.c_str())});
-  if (!t.rows.empty()) {
-    t.caption = "Scalar results (SI units).";
-    res.table(std::move(t));
+  t.caption = "Duration of the motion found by each solver, its run time, and the largest use "
+              "of any limit found by resampling the solution finely (≤ 1 meets every limit).";
+  t.header = {"solver", "solved", "duration (s)", "run time (s)", "intervals", "levels",
+              "largest limit use", "where"};
+  for (const json& s : solvers) {
+    const json& v = obj(s, "violation");
+    const double worst = first_num(v, {"worst", "worst_excess"});
+    t.rows.push_back({solver_name(s), jsonv::str(s, "solved"),
+                      format_sig(first_num(s, {"duration_s"}), 7),
+                      format_sig(first_num(s, {"run_time_s"}), 3), jsonv::str(s, "intervals"),
+                      jsonv::str(s, "levels"),
+                      std::isfinite(worst) ? format_sig(1 + worst, 6) : jsonv::str(v, "ratio"),
+                      jsonv::str(v, "text")});
+    t.swatches.push_back(css_colour(colour_for(solver_key(solver_name(s)))));
   }
-  time_series_figures(to, "each solver", figures, res);
+  if (!t.rows.empty()) res.table(std::move(t));
+  for (const json& s : solvers)
+    if (jsonv::has(s, "method") && s["method"].is_string())
+      res.paragraph(solver_name(s) + ": " + s["method"].get<std::string>());
+
+  // phase plane: s' over s, the maximum velocity curve and each solver's profile
+  LinePlot phase;
+  phase.title = "phase plane: path speed over path position";
+  phase.x_label = "path position s (m)";
+  phase.y_label = "path speed s' (m/s)";
+  const json& mvc = obj(to, "mvc");
+  const auto mvc_s = first_vec(mvc.empty() ? to : mvc, {"s_m", "mvc_s_m"});
+  const auto mvc_sd = first_vec(mvc.empty() ? to : mvc, {"sd_m_s", "mvc_sd_m_s"});
+  const auto mvc_v = first_vec(mvc.empty() ? to : mvc, {"velocity_sd_m_s", "mvc_velocity_sd_m_s"});
+  if (mvc_s.size() == mvc_sd.size() && !mvc_s.empty())
+    phase.series.push_back({"maximum velocity curve", mvc_s, mvc_sd, colour_for("mvc")});
+  if (mvc_s.size() == mvc_v.size() && !mvc_s.empty())
+    phase.series.push_back({"velocity limits alone", mvc_s, mvc_v, colour_for("limit"), LineStyle::kDotted});
+  for (const json& s : solvers) {
+    const json& sm = samples_of(s);
+    auto x = first_vec(sm, {"s_m"});
+    auto y = first_vec(sm, {"sd_m_s"});
+    bool nodes = false;
+    if (x.empty() || x.size() != y.size()) {
+      x = first_vec(s, {"node_s_m"});
+      y = first_vec(s, {"node_sd_m_s"});
+      nodes = true;
+    }
+    if (x.empty() || x.size() != y.size()) continue;
+    Series se{solver_name(s), x, y, colour_for(solver_key(solver_name(s)))};
+    se.markers = nodes && x.size() <= 60;
+    phase.series.push_back(std::move(se));
+  }
+  bool phase_ok = false;
+  for (const auto& se : phase.series) phase_ok |= se.x.size() >= 2;
+  if (phase_ok)
+    res.figure(figures.line("phase_plane", phase,
+                            "The phase plane: no motion may cross the maximum velocity curve "
+                            "(above it some limit is broken whatever the acceleration). The "
+                            "exact profile rides along it where it can; DP and Complex, with "
+                            "fewer, coarser intervals, stay below."));
   page.sections.push_back(std::move(res));
+
+  Section lim;
+  lim.id = "limits";
+  lim.heading = "Joint torques and velocities against their limits";
+  struct Kind {
+    const char* key;
+    std::initializer_list<const char*> limit_keys;
+    const char* what;
+    const char* unit;
+  };
+  const Kind kinds[] = {{"tau_Nm", {"torque_Nm", "tau_Nm", "torque_limit_Nm"}, "torque", "N m"},
+                        {"qd_rad_s", {"velocity_rad_s", "qd_rad_s", "velocity_limit_rad_s"},
+                         "velocity", "rad/s"}};
+  for (const Kind& k : kinds)
+    for (size_t j = 0; j < 2; ++j) {
+      LinePlot p;
+      p.title = "joint " + std::to_string(j + 1) + " " + k.what;
+      p.x_label = "time (s)";
+      p.y_label = std::string(k.what) + " (" + k.unit + ")";
+      for (const json& s : solvers) {
+        const json& sm = samples_of(s);
+        const auto ts = first_vec(sm, {"t_s"});
+        if (ts.size() < 2) continue;
+        p.series.push_back({solver_name(s), ts, jsonv::column(sm, k.key, j, ts.size()),
+                            colour_for(solver_key(solver_name(s)))});
+        if (p.series.back().y.empty()) p.series.pop_back();
+      }
+      const double l = limit_of(limits, k.limit_keys, j);
+      if (std::isfinite(l)) p.references = {{l, "±" + format_sig(l, 3) + " " + k.unit + " limit"}, {-l, ""}};
+      if (!p.series.empty())
+        lim.figure(figures.line(std::string(k.key) + "_joint" + std::to_string(j + 1), p,
+                                "Joint " + std::to_string(j + 1) + " " + k.what +
+                                    " over time for each solver, with its limit."));
+    }
+  if (lim.blocks.empty()) lim.paragraph("The result holds no sampled motion.");
+  page.sections.push_back(std::move(lim));
+
+  Section conv;
+  conv.id = "convergence";
+  conv.heading = "DP convergence";
+  Table ct;
+  ct.caption = "DP (path-speed state) as the number of segments N grows: its duration "
+               "approaches the exact solver's from above.";
+  ct.header = {"N", "levels", "solved", "duration (s)", "excess over exact", "run time (s)",
+               "largest limit use"};
+  for (const json& r : arr(to, "convergence")) {
+    const double worst = first_num(r, {"worst_violation"});
+    ct.rows.push_back({jsonv::str(r, "segments"), jsonv::str(r, "levels"), jsonv::str(r, "solved"),
+                       format_sig(first_num(r, {"duration_s"}), 7),
+                       format_sig(first_num(r, {"excess", "excess_relative"}), 3),
+                       format_sig(first_num(r, {"run_time_s"}), 3),
+                       std::isfinite(worst) ? format_sig(1 + worst, 6) : "n/a"});
+  }
+  if (ct.rows.empty())
+    conv.paragraph("The case asked for no convergence table.");
+  else
+    conv.table(std::move(ct));
+  page.sections.push_back(std::move(conv));
 }
 
 }  // namespace armstudy::report

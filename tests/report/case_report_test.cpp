@@ -117,8 +117,13 @@ json study_section(const std::string& study) {
     s["idp"]["convergence"] = json::array({{{"iteration", 1}, {"criterion_J", 22}, {"energy_J", 21}},
                                            {{"iteration", 2}, {"criterion_J", 20}, {"energy_J", 20}}});
   } else {
-    s["solvers"] = json::array({{{"solver", "dp"}, {"series", {{"t_s", ts}, {"tau_Nm", s2(1)}}}},
-                                {{"solver", "reachability"}, {"series", {{"t_s", ts}, {"tau_Nm", s2(2)}}}}});
+    for (const char* name : {"exact", "dp", "complex"})
+      s["solvers"].push_back({{"name", name},
+                              {"duration_s", 1.5},
+                              {"samples", {{"t_s", ts}, {"s_m", ts}, {"sd_m_s", s1(1)},
+                                           {"tau_Nm", s2(1)}, {"qd_rad_s", s2(2)}}}});
+    s["mvc"] = {{"s_m", ts}, {"sd_m_s", s1(0.5)}};
+    s["limits"] = {{"torque_Nm", {10, 4}}, {"velocity_rad_s", {3, 4}}};
   }
   return s;
 }
@@ -178,9 +183,10 @@ TEST(CaseReport, PageForbidsNetworkFetchesWithContentSecurityPolicy) {
 TEST(CaseReport, EachStudyDrawsItsFiguresAndEveryLinkedFileExists) {
   // figures the issue asks for: placement 5 time series + energy, energy over phi, one map per
   // program and configuration, root loci, pareto; pendulum energies, drift, angles, rates,
-  // path; throwing voltages, currents, torques, powers, theta4, theta3, locus, idp convergence
+  // path; throwing voltages, currents, torques, powers, theta4, theta3, locus, idp convergence;
+  // time-optimal phase plane, torque and velocity of each joint
   const std::map<std::string, int> expected = {
-      {"placement", 6 + 1 + 2 + 1 + 1}, {"pendulum", 5}, {"throwing", 8}, {"time_optimal", 1}};
+      {"placement", 6 + 1 + 2 + 1 + 1}, {"pendulum", 5}, {"throwing", 8}, {"time_optimal", 5}};
   for (const auto& [study, figures] : expected) {
     const auto info = hostile_info(study);
     const fs::path d = fresh_dir("links_" + study);
