@@ -120,6 +120,43 @@ Section optima_section(const json& pl, FigureWriter& figures) {
   for (const json& o : arr(pl, "unsolved")) u.rows.push_back({id_label(o), jsonv::str(o, "reason")});
   if (!u.rows.empty()) s.table(std::move(u));
 
+  // the source's own printed placements, when the case evaluates them: one note per placement
+  std::vector<std::string> labels;
+  for (const json& e : arr(pl, "evaluations")) {
+    const std::string label = jsonv::str(e, "label");
+    if (label.rfind("thesis", 0) == 0 && std::find(labels.begin(), labels.end(), label) == labels.end())
+      labels.push_back(label);
+  }
+  for (const std::string& label : labels) {
+    std::string energies, text;
+    const json* first = nullptr;
+    for (const json& e : arr(pl, "evaluations")) {
+      if (jsonv::str(e, "label") != label) continue;
+      if (!first) first = &e;
+      energies += (energies.empty() ? "" : "; ") + id_label(e) + " " + jsonv::sig(e, "energy_J", 5) +
+                  " J" +
+                  (jsonv::has(e, "saving_percent") && e["saving_percent"].is_number()
+                       ? " (the optimum saves " + jsonv::sig(e, "saving_percent", 3) + " %)"
+                       : "");
+    }
+    const json& e = *first;
+    const std::string status = jsonv::str(e, "status");
+    text = "The thesis's printed placement '" + label + "' (x_S = " + jsonv::sig(e, "x_s_m", 5) +
+           " m, φ = " + jsonv::sig(e, "phi_deg", 5) + "°) is " + status + " by the exact check";
+    if (status == "unreachable")
+      text += ": with its printed digits part of the line lies outside the annulus (by " +
+              format_sig(-jsonv::num(e, "boundary_distance_m"), 3) +
+              " m), so no motion exists there.";
+    else if (status == "singular")
+      text += ": it comes within " + jsonv::sig(e, "boundary_distance_m", 3) +
+              " m of a workspace boundary (smallest |sin q2| " +
+              jsonv::sig(e, "min_abs_sin_elbow", 3) +
+              "), so its energies (" + energies + ") are not those of an ordinary motion.";
+    else
+      text += "; its energies here: " + energies + ".";
+    s.note(text);
+  }
+
   if (owners.empty()) return s;
   struct Quantity {
     const char* name;
