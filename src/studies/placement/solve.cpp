@@ -495,7 +495,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
           "energy_converged",
           "relative difference of the first optimum's energy at " + std::to_string(spec.samples) +
               " samples from its value at " + std::to_string(res.convergence.back().samples) + " samples",
-          std::abs(e_spec - e_ref) / e_ref, 1e-3));
+          std::abs(e_spec - e_ref) / e_ref, 1e-4));
     }
   }
 
