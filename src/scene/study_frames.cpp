@@ -1,5 +1,8 @@
 #include "scene/study_frames.hpp"
 
+#include <algorithm>
+
+#include "core/kinematics.hpp"
 #include "scene/png_writer.hpp"
 
 namespace armstudy::scene {
@@ -10,6 +13,27 @@ RenderSettings render_settings(const cases::RenderOptions& o) {
   s.height = o.height;
   s.shadows = o.shadows;
   return s;
+}
+
+ViewBox fit_view(const core::PlanarChain& chain, std::span<const core::JointVector> q,
+                 std::span<const Eigen::Vector2d> points, double pad) {
+  ViewBox v{chain.base.x(), chain.base.x(), chain.base.y(), chain.base.y()};
+  auto grow = [&](const Eigen::Vector2d& p) {
+    v.x_min = std::min(v.x_min, p.x());
+    v.x_max = std::max(v.x_max, p.x());
+    v.y_min = std::min(v.y_min, p.y());
+    v.y_max = std::max(v.y_max, p.y());
+  };
+  for (const core::JointVector& qk : q) {
+    const core::ChainPose pose = core::forward_kinematics(chain, qk);
+    for (int j = 0; j < pose.p_WJ.cols(); ++j) grow(pose.p_WJ.col(j));
+  }
+  for (const Eigen::Vector2d& p : points) grow(p);
+  v.x_min -= pad;
+  v.x_max += pad;
+  v.y_min -= pad;
+  v.y_max += pad;
+  return v;
 }
 
 std::string write_strip(SceneRenderer& sr, const SampledMotion& m, int frames,

@@ -21,6 +21,11 @@ struct SampledMotion {
   std::vector<core::JointVector> q, qd;  ///< (N) rad, rad/s (qd may be empty)
 };
 
+/// The rectangle holding every joint and the tip of `chain` over the poses `q`, the
+/// `points` and the base, padded by `pad` m on every side.
+ViewBox fit_view(const core::PlanarChain& chain, std::span<const core::JointVector> q,
+                 std::span<const Eigen::Vector2d> points, double pad);
+
 /// Renders `frames` frames of `motion` at equal time steps into `dir`/`name`_strip.png and
 /// returns the file name. `title` labels the first frame.
 std::string write_strip(SceneRenderer& sr, const SampledMotion& motion, int frames,

@@ -26,13 +26,18 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
   std::vector<std::string> files;
   const std::vector<Eigen::Vector2d>& flight = result.flight.path;
   char title[200];
-  std::snprintf(title, sizeof title, "throwing, IDP optimum: %.3f J in %.2f s",
+  std::snprintf(title, sizeof title, "throwing, IDP optimum: %.3f J (eq. 7) in %.2f s",
                 result.idp.evaluation.energy, spec.tf);
   TrayDecor decor;
   decor.ball_radius = spec.arm.rb;
   decor.cup_width = spec.tray_width;
   decor.offwidth = options.width;
   decor.offheight = options.height;
+  // frame the motion itself (with room for the cup, the pedestal and the labels)
+  const double pad = spec.arm.r4 + 2 * spec.arm.rb + 0.02;
+  ViewBox motion_box = fit_view(chain, m.q, {}, pad);
+  motion_box.y_max += 0.12 * (motion_box.y_max - motion_box.y_min);
+  decor.view = motion_box;
   {
     SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
     files.push_back(write_strip(sr, m, options.frames, title, dir, "throwing_idp"));
@@ -42,16 +47,8 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
     files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, "throwing_idp"));
   }
   if (flight.size() >= 2) {
-    // frame the arm and the whole flight
-    double R = 0;
-    for (const auto& l : chain.links) R += l.length;
-    ViewBox v{chain.base.x() - R, chain.base.x() + R, chain.base.y() - R, chain.base.y() + R};
-    for (const Eigen::Vector2d& p : flight) {
-      v.x_min = std::min(v.x_min, p.x());
-      v.x_max = std::max(v.x_max, p.x());
-      v.y_min = std::min(v.y_min, p.y());
-      v.y_max = std::max(v.y_max, p.y());
-    }
+    // frame the motion and the whole flight
+    ViewBox v = fit_view(chain, m.q, flight, pad);
     v.y_max += 0.15 * (v.y_max - v.y_min);  // room for the labels
     decor.view = v;
     SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
