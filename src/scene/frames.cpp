@@ -105,7 +105,7 @@ Image SceneRenderer::locus(std::span<const PoseSample> samples,
   }
   for (size_t k = 1; k < path.size(); ++k)
     extra.push_back(segment_geom(Eigen::Vector3d(path[k - 1].x(), path[k - 1].y(), top),
-                                 Eigen::Vector3d(path[k].x(), path[k].y(), top), 0.3 * r,
+                                 Eigen::Vector3d(path[k].x(), path[k].y(), top), style.path_radius * r,
                                  style.path_rgba));
   // the thrown object's flight: dots
   const double dot = std::max(0.45 * r, 3.0 * renderer_.metres_per_pixel());

@@ -36,6 +36,7 @@ class SceneRenderer {
     float path_rgba[4] = {0.10f, 0.10f, 0.12f, 1.0f};
     float flight_rgba[4] = {0.86f, 0.14f, 0.14f, 1.0f};
     double faintest = 0.22;  ///< colour weight of the oldest pose (1: full colour)
+    double path_radius = 0.3;  ///< of the traced path, in link radii (4% of the longest link)
   };
 
   /// A stroboscopic locus: every pose of `samples` superimposed, the oldest faintest and

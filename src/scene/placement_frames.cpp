@@ -46,9 +46,16 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
                   pc.refined.root.x(), pc.refined.root.y(), pc.refined.metrics.energy);
     files.push_back(write_strip(sr, m, options.frames, title, dir, name));
     FrameLabels labels;
-    labels.top_left = std::string("optimum, ") + title;
+    char line2[120];
+    std::snprintf(line2, sizeof line2, "optimal root (%.3f, %.3f) m: %.3f J",
+                  pc.refined.root.x(), pc.refined.root.y(), pc.refined.metrics.energy);
+    labels.top_left = std::string(core::program_label(pc.program)) + ", configuration " +
+                      std::to_string(pc.configuration) + "\n" + line2;
     labels.bottom_left = "top view; line fixed, root chosen; grid 0.1 m";
-    files.push_back(write_locus(sr, m, 9, path, {}, labels, dir, name));
+    // the path is the task line: trace it thin so that the red line shows around it
+    SceneRenderer::LocusStyle style;
+    style.path_radius = 0.12;
+    files.push_back(write_locus(sr, m, 9, path, {}, labels, dir, name, style));
   }
   return files;
 }

@@ -49,11 +49,12 @@ std::string write_strip(SceneRenderer& sr, const SampledMotion& m, int frames,
 std::string write_locus(SceneRenderer& sr, const SampledMotion& m, int poses,
                         std::span<const Eigen::Vector2d> path,
                         std::span<const Eigen::Vector2d> flight, const FrameLabels& labels,
-                        const std::filesystem::path& dir, const std::string& name) {
+                        const std::filesystem::path& dir, const std::string& name,
+                        const SceneRenderer::LocusStyle& style) {
   const std::vector<double> at = even_times(m.t.front(), m.t.back(), poses);
   const std::vector<PoseSample> samples = resample(m.t, m.q, m.qd, at);
   const std::string file = name + "_locus.png";
-  write_png(dir / file, sr.locus(samples, path, flight, labels));
+  write_png(dir / file, sr.locus(samples, path, flight, labels, style));
   return file;
 }
 

@@ -37,6 +37,7 @@ std::string write_strip(SceneRenderer& sr, const SampledMotion& motion, int fram
 std::string write_locus(SceneRenderer& sr, const SampledMotion& motion, int poses,
                         std::span<const Eigen::Vector2d> path,
                         std::span<const Eigen::Vector2d> flight, const FrameLabels& labels,
-                        const std::filesystem::path& dir, const std::string& name);
+                        const std::filesystem::path& dir, const std::string& name,
+                        const SceneRenderer::LocusStyle& style = {});
 
 }  // namespace armstudy::scene
