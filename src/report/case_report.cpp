@@ -425,6 +425,13 @@ int write_index(const fs::path& out_dir) {
   d.set("cases", list);
   d.set("count", std::to_string(rows.size()));
   fs::create_directories(out_dir);
+  // the thesis's figure 9.30 needs every example: drawn over the placement cases here
+  std::vector<std::pair<std::string, const nlohmann::json*>> all;
+  for (const auto& r : rows) all.emplace_back(r.name, &r.results);
+  const fs::path loci = out_dir / "placement_root_loci.svg";
+  const bool has_loci = placement_loci_across_cases(all, loci);
+  if (!has_loci) fs::remove(loci);
+  d.set("has_loci", has_loci);
   copy_stylesheet(out_dir);
   write_text(out_dir / "index.html", render_template("index.html", d));
   return static_cast<int>(rows.size());

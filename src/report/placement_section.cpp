@@ -1,6 +1,7 @@
 // the placement study of 000_bf165d3f0a5605ef.txt: optima, time series (figs. 9.1-9.5),
 // energy over direction angle (9.11), placement maps, root loci (9.30), pareto front
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <sstream>
 
@@ -539,6 +540,66 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   page.sections.push_back(maps_section(pl, figures));
   page.sections.push_back(loci_section(pl, figures));
   page.sections.push_back(convergence_and_evaluations(pl));
+}
+
+bool placement_loci_across_cases(const std::vector<std::pair<std::string, const json*>>& cases,
+                                 const std::filesystem::path& svg) {
+  // (length, root) per program and configuration, over the placement cases
+  struct Point {
+    double length, x, y;
+    std::string case_name;
+  };
+  std::map<std::string, std::vector<Point>> loci;
+  std::map<std::string, std::string> labels;
+  double longest = 0;
+  int placement_cases = 0;
+  for (const auto& [name, results] : cases) {
+    if (!results->contains("placement") || results->value("study", "") != "placement") continue;
+    const json& pl = (*results)["placement"];
+    const double length = jsonv::num(pl, "length_m");
+    bool any = false;
+    for (const json& o : arr(pl, "optima")) {
+      const double x = at(o, "root_xy_m", 0), y = at(o, "root_xy_m", 1);
+      if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(length)) continue;
+      loci[id_key(o)].push_back({length, x, y, name});
+      labels[id_key(o)] = id_label(o);
+      longest = std::max(longest, length);
+      any = true;
+    }
+    placement_cases += any;
+  }
+  if (placement_cases < 2) return false;
+  ShadedMap m;
+  m.title = "optimal root locations across the placement cases";
+  m.x_label = "root X (m), along the line";
+  m.y_label = "root Y (m)";
+  m.nx = m.ny = 2;
+  m.z.assign(4, NAN);
+  double x0 = 0, x1 = longest, y0 = 0, y1 = 0;
+  Series line{"task lines (from the origin along X)", {0.0, longest}, {0.0, 0.0}, {0, 0, 0}};
+  line.width = 2.5;
+  m.overlays.push_back(line);
+  for (auto& [key, pts] : loci) {
+    std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.length < b.length; });
+    Series locus{labels[key], {}, {}, colour_for(key)};
+    for (const Point& p : pts) {
+      locus.x.push_back(p.x);
+      locus.y.push_back(p.y);
+      m.markers.push_back({p.x, p.y, "", colour_for(key), false});
+      x0 = std::min(x0, p.x);
+      x1 = std::max(x1, p.x);
+      y0 = std::min(y0, p.y);
+      y1 = std::max(y1, p.y);
+    }
+    m.overlays.push_back(std::move(locus));
+  }
+  const double pad = 0.08 * std::max(x1 - x0, y1 - y0) + 0.02;
+  m.x_min = x0 - pad;
+  m.x_max = x1 + pad;
+  m.y_min = y0 - pad;
+  m.y_max = y1 + pad;
+  write_shaded_map(m, svg);
+  return true;
 }
 
 }  // namespace armstudy::report

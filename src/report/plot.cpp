@@ -439,8 +439,13 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
 
   const double dx = (map.x_max - map.x_min) / (map.nx - 1);
   const double dy = (map.y_max - map.y_min) / (map.ny - 1);
-  const double wx0 = map.x_min - dx / 2, wx1 = map.x_max + dx / 2;
-  const double wy0 = map.y_min - dy / 2, wy1 = map.y_max + dy / 2;
+  // a grid's cells reach half a cell past the first and last centres; a drawing with no
+  // grid (curves and markers only) spans exactly the given range
+  const bool gridded = has_values || !map.regions.empty();
+  const double wx0 = gridded ? map.x_min - dx / 2 : map.x_min;
+  const double wx1 = gridded ? map.x_max + dx / 2 : map.x_max;
+  const double wy0 = gridded ? map.y_min - dy / 2 : map.y_min;
+  const double wy1 = gridded ? map.y_max + dy / 2 : map.y_max;
 
   // plplot's matrices are a[i][j], i along x
   auto grid = [&](const std::function<double(size_t)>& at) {
@@ -456,11 +461,17 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     return r;
   };
 
-  Page page(svg, map.width_pt, map.height_pt,
+  // legend below, two columns: its rows add to the page height
+  size_t entries = map.regions.size();
+  for (const auto& o : map.overlays) entries += !o.label.empty();
+  for (const auto& m : map.markers) entries += !m.label.empty();
+  const double legend_pt = entries ? 14.0 * ((entries + 1) / 2) + 14 : 0;
+  const int height_pt = map.height_pt - 60 + static_cast<int>(legend_pt);
+  Page page(svg, map.width_pt, height_pt,
             static_cast<int>(map.regions.size() + map.overlays.size() + map.markers.size()));
   plstream& p = page.p;
   const double aspect = map.equal_aspect ? (wy1 - wy0) / (wx1 - wx0) : 0.8;
-  p.vpas(0.10, 0.80, 0.24, 0.92, aspect);
+  p.vpas(0.10, 0.80, (50.0 + legend_pt) / height_pt, 1 - 34.0 / height_pt, aspect);
   p.wind(wx0, wx1, wy0, wy1);
   set_viridis(p);
 
@@ -502,7 +513,7 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
       const PLINT c = page.slot(m.colour);
       PLFLT x = m.x, y = m.y;
       const char* glyph = m.primary ? "⊗" : "□";
-      p.schr(0, m.primary ? 2.2 : 1.6);
+      p.schr(0, m.primary ? 2.2 : 1.2);
       p.col0(c);
       p.string(1, &x, &y, glyph);
       p.schr(0, 0.85);
@@ -510,7 +521,7 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     }
   p.col0(kSlotInk);
   p.width(0.8);
-  draw_box(p, map.width_pt, map.height_pt, wx1 - wx0, wy1 - wy0, false);
+  draw_box(p, map.width_pt, height_pt, wx1 - wx0, wy1 - wy0, false);
   p.lab(pl_text(map.x_label).c_str(), pl_text(map.y_label).c_str(), pl_text(map.title).c_str());
 
   if (has_values) {
@@ -531,7 +542,7 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     PLFLT vx0, vx1, vy0, vy1;
     p.gvpd(vx0, vx1, vy0, vy1);
     legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0,
-                40.0 / ((vy1 - vy0) * map.height_pt), 2);
+                40.0 / ((vy1 - vy0) * height_pt), 2);
   }
   page.finish(svg);
 }

@@ -88,7 +88,9 @@ struct ShadedMap {
   std::string title;
   std::string x_label, y_label, z_label;
   int nx = 0, ny = 0;
-  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  ///< centres of the first/last cells
+  /// centres of the first/last cells; with no z values and no regions (a drawing of curves
+  /// and markers), the plotted range itself
+  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;
   std::vector<double> z;  ///< nx*ny, index j*nx + i; NaN = no value (left to the regions)
   std::vector<MapRegion> regions;
   std::vector<Series> overlays;  ///< curves drawn over the map (e.g. the task line)

@@ -32,6 +32,15 @@ void generic_sections(const nlohmann::json& section, FigureWriter& figures, Case
 int time_series_figures(const nlohmann::json& node, const std::string& what, FigureWriter& figures,
                         Section& section, const std::vector<std::string>& skip = {});
 
+/// The optimal root locations of several placement cases in one plot (the thesis's
+/// Figure 9.30): per program and configuration, the locus of its optimum as the line length
+/// changes from case to case. `cases` holds (case name, results.json). Writes `svg` and
+/// returns true when at least two placement cases have an optimum; false (nothing written)
+/// otherwise.
+bool placement_loci_across_cases(
+    const std::vector<std::pair<std::string, const nlohmann::json*>>& cases,
+    const std::filesystem::path& svg);
+
 /// A named holder of a time series (an optimum, a solver, a motion) and its colour key.
 struct Owner {
   std::string label;       ///< legend text, e.g. "cycloidal, configuration 1"
