@@ -10,10 +10,13 @@
 #include <string>
 
 #include "core/dynamics.hpp"
+#include "core/kinematics.hpp"
 #include "scene/chain_map.hpp"
 #include "scene/mjcf_writer.hpp"
 #include "scene/mujoco_model.hpp"
+#include "scene/replay.hpp"
 #include "scene/scene_error.hpp"
+#include "studies/pendulum/pendulum.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::scene {
@@ -106,6 +109,58 @@ TEST(PendulumMujoco, ConservesEnergyAndFollowsCoreOverTwoSeconds) {
   RecordProperty("energy_rel", sci(worst_e / max_kinetic));
   RecordProperty("mujoco_energy_rel", sci(worst_mj_e / max_kinetic));
   RecordProperty("max_q_delta_rad", sci(worst_q));
+  EXPECT_EQ(take_mujoco_warnings(), "");
+}
+
+// the chain of joints k.. of `chain` with joints 0..k-1 locked at q_locked: its base is
+// joint k's position, its base angle link k-1's absolute angle; spinners keep their
+// coefficients on the free joints (those turning only with locked joints drop out)
+core::PlanarChain lock_first_joints(const core::PlanarChain& chain, const core::JointVector& q,
+                                    int k) {
+  const core::ChainPose pose = core::forward_kinematics(chain, q);
+  core::PlanarChain c;
+  c.gravity = chain.gravity;
+  c.base = pose.p_WJ.col(k);
+  c.base_angle = pose.angle[k - 1];
+  const int n = chain.num_links();
+  for (int i = k; i < n; ++i) c.links.push_back(chain.links[i]);
+  for (core::PointMass p : chain.point_masses)
+    if (p.link >= k) { p.link -= k; c.point_masses.push_back(p); }
+  for (const core::SpinningInertia& s : chain.spinners) {
+    core::SpinningInertia t;
+    t.inertia = s.inertia;
+    t.coeffs = s.coeffs.tail(n - k);
+    if (t.coeffs.cwiseAbs().maxCoeff() > 0) c.spinners.push_back(t);
+  }
+  return core::make_chain(c);
+}
+
+// MuJoCo's simulated replay (scene::simulate, mj_step with RK4) of the pendulum study's
+// case follows the study's own DOPRI5 solution
+TEST(PendulumMujoco, SimulatedReplayFollowsThePendulumStudy) {
+  take_mujoco_warnings();
+  const studies::PendulumSpec spec = studies::default_pendulum_spec();
+  const studies::PendulumResult r = studies::solve_pendulum(spec);
+  ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
+  const core::PlanarChain full = studies::make_tray_arm(spec.arm);
+  const core::PlanarChain chain = lock_first_joints(full, r.q.front(), 2);
+  MjcfOptions o;
+  o.timestep = 2e-4;
+  MujocoModel mm(write_mjcf(chain, o), "pendulum");
+  const ChainMap map(chain, mm.model());
+  const PoseSample start{0.0, r.q.front().tail(2), r.qd.front().tail(2)};
+  std::vector<double> times;
+  for (size_t i = 0; i < r.t.size(); i += 10) times.push_back(r.t[i]);
+  const std::vector<PoseSample> sim = simulate(mm, map, start, times);
+  double worst = 0, swing = 0;
+  for (size_t j = 0; j < sim.size(); ++j) {
+    const core::JointVector& q = r.q[10 * j];
+    worst = std::max(worst, (sim[j].q - q.tail(2)).cwiseAbs().maxCoeff());
+    swing = std::max(swing, std::abs(q[3] - r.q.front()[3]));
+  }
+  EXPECT_GT(swing, 0.3);
+  EXPECT_LT(worst, 1e-4) << "rad over " << r.t.back() << " s";
+  RecordProperty("max_q_delta_vs_study_rad", sci(worst));
   EXPECT_EQ(take_mujoco_warnings(), "");
 }
 
