@@ -187,6 +187,11 @@ Section provenance_section(const nlohmann::json& results, const cases::CaseInfo&
   t.rows.push_back({"armstudy version", jsonv::str(results, "armstudy_version")});
   const std::string commit = jsonv::str(results, "git_commit");
   t.rows.push_back({"git commit", commit.empty() ? "unknown" : commit});
+  // the machine and libraries behind the numbers and frames
+  if (results.contains("provenance") && results["provenance"].is_object())
+    for (const auto& [k, v] : results["provenance"].items())
+      if (v.is_string() && k != "armstudy_version" && k != "git_commit")
+        t.rows.push_back({label_from_key(k), v.get<std::string>()});
   t.rows.push_back({"case file", info.path});
   t.rows.push_back({"case sha256", info.sha256});
   t.rows.push_back({"machine-readable results", "results.json (in this folder)"});
