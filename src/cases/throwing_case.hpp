@@ -54,7 +54,7 @@
 ///     restore: 0.5                     # region factor between passes, (0, 1]
 ///     candidates: 8                    # R per stage node, 1..200
 ///     shrink: 0.8                      # region factor per iteration, (0, 1)
-///     region_rad_s: [4, 4]             # initial half-width per joint, > 0
+///     region_rad_s: [10, 10]           # initial half-width per joint, > 0
 ///     seed: 1                          # std::mt19937 seed
 ///   nlopt:
 ///     enabled: true                    # SLSQP beside IDP

@@ -51,6 +51,14 @@ TEST(ThrowingCase, BundledCaseEqualsTheDocumentedDefaults) {
   EXPECT_EQ(s.stages, def.stages);
   EXPECT_EQ(s.idp.iterations, def.idp.iterations);
   EXPECT_EQ(s.idp.passes, def.idp.passes);
+  EXPECT_EQ(s.idp.shrink, def.idp.shrink);
+  EXPECT_EQ(s.idp.restore, def.idp.restore);
+  EXPECT_EQ(s.idp.candidates, def.idp.candidates);
+  EXPECT_EQ(s.idp.region, def.idp.region);
+  EXPECT_EQ(s.steps_per_stage, def.steps_per_stage);
+  EXPECT_EQ(s.k_tray, def.k_tray);
+  EXPECT_EQ(s.k_current, def.k_current);
+  EXPECT_EQ(s.nlopt.max_time, def.nlopt.max_time);
   EXPECT_EQ(s.nlopt.max_evaluations, def.nlopt.max_evaluations);
   EXPECT_EQ(s.arm.motor2, studies::Motor2Mount::kOnLink1);
 }

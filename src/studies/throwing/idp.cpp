@@ -59,10 +59,15 @@ IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
     rec.region = region;
     // backward pass over the free stage nodes (frame A of Fig. 4)
     for (int k = P - 1; k >= 1; --k) {
+      // a candidate changes the acceleration of stage k-1 by delta / h: every later rate
+      // up to node P-1 moves by delta and the last stage returns to the release rate
       for (auto& c : cands) {
         c = r.best;
-        c.v(0, k) += region[0] * u(rng);
-        c.v(1, k) += region[1] * u(rng);
+        const double d0 = region[0] * u(rng), d1 = region[1] * u(rng);
+        for (int m = k; m < P; ++m) {
+          c.v(0, m) += d0;
+          c.v(1, m) += d1;
+        }
         project_displacement(c, delta);
       }
       const auto evs = evaluate_profiles(setup, cands, r.threads);
