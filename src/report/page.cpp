@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "report/number_format.hpp"
 
@@ -36,6 +37,10 @@ void Section::table(Table t) {
 }
 
 void Section::figure(Figure f) {
+  if (f.file.empty()) {
+    note(std::move(f.caption));
+    return;
+  }
   // captions are sentences
   if (!f.caption.empty() && f.caption[0] >= 'a' && f.caption[0] <= 'z') f.caption[0] -= 'a' - 'A';
   Block b;
@@ -60,15 +65,25 @@ std::string FigureWriter::next_name(const std::string& name) {
   return buf + safe + ".svg";
 }
 
+// data that cannot be drawn (nothing finite, inconsistent sizes) costs the figure, not the
+// report: the page says which figure is missing and why
 Figure FigureWriter::line(const std::string& name, const LinePlot& plot, std::string caption) {
   const std::string file = next_name(name);
-  write_line_plot(plot, dir_ / file);
+  try {
+    write_line_plot(plot, dir_ / file);
+  } catch (const std::invalid_argument& e) {
+    return {"", "The figure '" + plot.title + "' could not be drawn: " + e.what()};
+  }
   return {file, std::move(caption)};
 }
 
 Figure FigureWriter::map(const std::string& name, const ShadedMap& map, std::string caption) {
   const std::string file = next_name(name);
-  write_shaded_map(map, dir_ / file);
+  try {
+    write_shaded_map(map, dir_ / file);
+  } catch (const std::invalid_argument& e) {
+    return {"", "The figure '" + map.title + "' could not be drawn: " + e.what()};
+  }
   return {file, std::move(caption)};
 }
 

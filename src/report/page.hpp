@@ -60,6 +60,7 @@ struct Section {
   void note(std::string text);
   void code(std::string text);
   void table(Table t);
+  /// Adds the figure; one without a file (not drawable) becomes a note with its caption.
   void figure(Figure f);
   void strip(Strip s);
 };
@@ -81,9 +82,11 @@ class FigureWriter {
  public:
   explicit FigureWriter(std::filesystem::path dir) : dir_(std::move(dir)) {}
   /// Draws `plot` into the folder and returns the figure (file name relative to the folder).
-  /// @throws what write_line_plot throws.
+  /// Data that cannot be drawn gives a figure with no file whose caption says why (the
+  /// section shows it as a note). @throws std::runtime_error when the file cannot be written.
   Figure line(const std::string& name, const LinePlot& plot, std::string caption);
-  /// Draws `map` into the folder and returns the figure. @throws what write_shaded_map throws.
+  /// Draws `map` into the folder and returns the figure (no file when the data cannot be
+  /// drawn, as line()). @throws std::runtime_error when the file cannot be written.
   Figure map(const std::string& name, const ShadedMap& map, std::string caption);
   const std::filesystem::path& dir() const { return dir_; }
 

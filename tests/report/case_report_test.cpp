@@ -245,5 +245,18 @@ TEST(Pdf, MissingChromiumIsAClearError) {
   EXPECT_FALSE(fs::exists(d / "a.pdf"));
 }
 
+TEST(CaseReport, UndrawableDataCostsTheFigureNotTheReport) {
+  auto info = hostile_info("pendulum");
+  json r = synthetic_results(info);
+  // every kinetic energy unknown: that plot has nothing finite on one curve, the page stays
+  for (auto& v : r["pendulum"]["series"]["q_rad"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
+  for (auto& v : r["pendulum"]["series"]["qd_rad_s"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
+  const fs::path d = fresh_dir("undrawable");
+  ASSERT_NO_THROW(write_case_report(d, info, r));
+  const std::string html = slurp(d / "index.html");
+  EXPECT_NE(html.find("could not be drawn"), std::string::npos);
+  EXPECT_NE(html.find("fig01_energies.svg"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace armstudy::report
