@@ -30,12 +30,21 @@ double link_radius(const core::PlanarChain& chain) {
   return 0.04 * longest;
 }
 
+// a slanted light: its shadows (render.shadows) fall beside the arm on the table or wall
+std::string shadow_light(double height) {
+  auto x = xml();
+  x << "    <light name=\"sun\" directional=\"true\" pos=\"0 0 " << height
+    << "\" dir=\"0.25 -0.35 -1\" castshadow=\"true\" diffuse=\"0.22 0.22 0.22\" "
+       "specular=\"0 0 0\" ambient=\"0 0 0\"/>\n";
+  return x.str();
+}
+
 // a narrow field of view: nearly orthographic, little parallax between drawing heights
 constexpr double kFovy = 20;
 
 // a light headlight-lit look without specular glare
 const char* kVisual =
-    "    <headlight ambient=\"0.45 0.45 0.45\" diffuse=\"0.55 0.55 0.55\" "
+    "    <headlight ambient=\"0.45 0.45 0.45\" diffuse=\"0.35 0.35 0.35\" "
     "specular=\"0.05 0.05 0.05\"/>\n"
     "    <map znear=\"0.01\" zfar=\"60\"/>\n";
 
@@ -82,6 +91,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
       "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
       "    centres of mass and inertias are the case's; geoms are visual only.\n";
   auto w = xml();
+  w << shadow_light(0.5 * half);
   w << "    <geom name=\"table\" type=\"plane\" pos=\"" << cx << " " << cy << " " << -3 * r
     << "\" size=\"" << half << " " << half << " 0.01\" material=\"table\"/>\n";
   // root: pedestal and a cross on the table
@@ -177,6 +187,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
       "    mj_step treats the stiff equality as MuJoCo's soft constraint (impedance 0.9999), which\n"
       "    conserves energy to ~1e-7 relative (tests/scene/pendulum_mujoco_test.cpp).\n";
   auto w = xml();
+  w << shadow_light(0.5 * half);
   w << "    <geom name=\"wall\" type=\"plane\" pos=\"" << cx << " " << cy << " "
     << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half
     << " 0.01\" material=\"wall\"/>\n";

@@ -148,6 +148,25 @@ TEST(Renderer, LocusDrawsOlderPosesFainterAndThePath) {
   EXPECT_GT(count_near(last_tip, full_orange), 10);
 }
 
+TEST(Renderer, ShadowsOptionCastsShadowsOnTheTable) {
+  const LineMotion m;
+  RenderSettings with;
+  with.shadows = true;
+  SceneRenderer plain(line_scene(m), "line", RenderSettings{});
+  SceneRenderer shadowed(line_scene(m), "line", with);
+  const Image a = plain.frame(m.at(0.5), {});
+  const Image b = shadowed.frame(m.at(0.5), {});
+  write_png(out_dir() / "shadows.png", b);
+  // the shadow darkens table pixels only: the arm's own pixels are alike
+  int darker = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const Rgb p = a.at(x, y), q = b.at(x, y);
+      if (p.r + p.g + p.b > 3 * 200 && q.r + q.g + q.b + 3 * 25 < p.r + p.g + p.b) ++darker;
+    }
+  EXPECT_GT(darker, 300) << "pixels of the table in shadow";
+}
+
 TEST(Renderer, TooLargeFrameForTheModelsOffscreenBufferIsASceneError) {
   const LineMotion m;
   TableDecor d;
