@@ -21,6 +21,7 @@ class ChainMap {
 
   /// (nv x N) dimensionless.
   const Eigen::MatrixXd& jacobian() const { return J_; }
+  /// N, the chain's joint count.
   int num_chain() const { return static_cast<int>(J_.cols()); }
 
   /// Writes qpos = J q and qvel = J qd (and qacc = J qdd if qdd is given) into `data`.

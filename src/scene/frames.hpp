@@ -50,6 +50,7 @@ class SceneRenderer {
     return locus(samples, path, flight, labels, LocusStyle{});
   }
 
+  /// The loaded model, its coordinate map and the renderer (camera of the last frame).
   MujocoModel& model() { return model_; }
   const ChainMap& map() const { return map_; }
   Renderer& renderer() { return renderer_; }

@@ -17,11 +17,14 @@ struct Image {
   std::vector<std::uint8_t> rgb;  ///< width * height * 3, row-major, top row first
 
   Image() = default;
+  /// A w x h px image filled with `fill`.
   Image(int w, int h, Rgb fill = {255, 255, 255});
+  /// Pixel (x right, y down), px; no bounds check.
   Rgb at(int x, int y) const {
     const size_t i = (static_cast<size_t>(y) * width + x) * 3;
     return {rgb[i], rgb[i + 1], rgb[i + 2]};
   }
+  /// Sets pixel (x, y); no bounds check.
   void set(int x, int y, Rgb c) {
     const size_t i = (static_cast<size_t>(y) * width + x) * 3;
     rgb[i] = c.r; rgb[i + 1] = c.g; rgb[i + 2] = c.b;
@@ -42,6 +45,7 @@ struct PixelStats {
   double stddev = 0;
   double non_background = 0;
 };
+/// The statistics of `image` (zeros for an empty image).
 PixelStats pixel_stats(const Image& image);
 
 }  // namespace armstudy::scene

@@ -65,6 +65,7 @@ class Renderer {
   /// Metres per pixel in the plane z = 0.
   double metres_per_pixel() const;
 
+  /// Frame size, px, and the GL renderer's name (e.g. "llvmpipe ...").
   int width() const { return settings_.width; }
   int height() const { return settings_.height; }
   const std::string& gl_renderer() const { return context_->renderer(); }
