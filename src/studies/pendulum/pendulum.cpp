@@ -33,7 +33,9 @@ PendulumSpec default_pendulum_spec() {
 PendulumResult solve_pendulum(const PendulumSpec& spec, const ProgressFn& progress) {
   const auto t_start = std::chrono::steady_clock::now();
   PendulumResult r;
-  r.integrator = "DOPRI5 (Dormand-Prince 5(4), adaptive step, error per step <= atol + rtol |x|)";
+  r.integrator =
+      "DOPRI5 (Dormand-Prince 5(4), adaptive step, error per step <= atol + rtol |x|; "
+      "steps end at every output sample)";
   r.rtol = spec.rtol;
   r.atol = spec.atol;
   core::PlanarChain chain;
