@@ -55,13 +55,17 @@ struct Section {
   bool new_page = true;
   std::vector<Block> blocks;
 
+  /// Adds a paragraph of plain text.
   void paragraph(std::string text);
   /// An honest remark, e.g. where the source printed different numbers and why.
   void note(std::string text);
+  /// Adds preformatted text (e.g. the case's YAML).
   void code(std::string text);
+  /// Adds a table (never split across printed pages).
   void table(Table t);
   /// Adds the figure; one without a file (not drawable) becomes a note with its caption.
   void figure(Figure f);
+  /// Adds a strip of images (frames).
   void strip(Strip s);
 };
 
@@ -88,6 +92,7 @@ class FigureWriter {
   /// Draws `map` into the folder and returns the figure (no file when the data cannot be
   /// drawn, as line()). @throws std::runtime_error when the file cannot be written.
   Figure map(const std::string& name, const ShadedMap& map, std::string caption);
+  /// The folder the figures go to.
   const std::filesystem::path& dir() const { return dir_; }
 
  private:
