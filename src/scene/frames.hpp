@@ -65,9 +65,10 @@ class SceneRenderer {
 /// "t = 0.130 s".
 std::string time_label(double t);
 
-/// Samples at the given times from a motion sampled at increasing times `t` with states
-/// q, qd (nearest-neighbour in time when a time falls between samples is NOT used: states are
-/// linearly interpolated in q and qd). Times outside [t.front(), t.back()] are clamped.
+/// The motion sampled at increasing times `t` with states q (and qd, optional: empty or the
+/// same size), evaluated at the times `at` by linear interpolation between neighbouring
+/// samples; times outside [t.front(), t.back()] take the end state but keep their own time.
+/// @throws SceneError if there are no samples or q and t differ in size.
 std::vector<PoseSample> resample(std::span<const double> t, std::span<const core::JointVector> q,
                                  std::span<const core::JointVector> qd,
                                  std::span<const double> at);
