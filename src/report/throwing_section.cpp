@@ -102,8 +102,11 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       "corrected form). The criterion is the electrical energy E = Σ ∫ e i dt of the motors "
       "(eq. 5-7) plus the penalties of eq. 9 that keep the ball in the tray (|θ4| ≤ λ/2) and "
       "meet the release state; the tray's release angle follows from the passive dynamics, it "
-      "is not commanded. The same problem is also solved by a gradient method (" +
-      jsonv::str(nl, "algorithm") + ") on the same parameterisation.");
+      "is not commanded." +
+      (jsonv::has(nl, "motion") ? " The same problem is also solved by a gradient method (" +
+                                      jsonv::str(nl, "algorithm") +
+                                      ") on the same parameterisation."
+                                : std::string(" The case runs IDP only.")));
   method.note(
       "Several printed coefficients of 003's equations of motion are inconsistent with its "
       "kinematics (a3's m4 term, two lines labelled A45, a5's inverted ratio, the ball spin "
@@ -145,9 +148,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                 " J → " + jsonv::sig(th, "energy_optimised_J", 5) + " J) in " +
                 jsonv::sig(idp, "run_time_s", 3) + " s of search (" +
                 jsonv::str(idp, "evaluations") + " simulations on " + jsonv::str(idp, "threads") +
-                " threads). The gradient method ran " + jsonv::sig(nl, "run_time_s", 3) +
-                " s (" + jsonv::str(nl, "simulations") + " simulations, stop: " +
-                jsonv::str(nl, "return_code") + ", feasible: " + jsonv::str(nl, "feasible") + ").");
+                " threads)." +
+                (jsonv::has(nl, "motion")
+                     ? " The gradient method ran " + jsonv::sig(nl, "run_time_s", 3) + " s (" +
+                           jsonv::str(nl, "simulations") + " simulations, stop: " +
+                           jsonv::str(nl, "return_code") + ", feasible: " +
+                           jsonv::str(nl, "feasible") + ")."
+                     : std::string()));
   page.sections.push_back(std::move(res));
 
   Section mot;
