@@ -266,15 +266,22 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   Series crit{"criterion (energy + penalties)", {}, {}, colour_for("idp"), LineStyle::kSolid, true};
   Series en{"energy of the best", {}, {}, colour_for("idp"), LineStyle::kDashed, true};
   Table ct;
-  ct.caption = "IDP: the best criterion at the end of each iteration.";
+  ct.caption = "IDP: the best criterion at the end of iterations (all of them when few; "
+               "else each pass's first and last and every fifth).";
   ct.header = {"pass", "iteration", "criterion (J)", "energy (J)", "region (rad/s)", "improvements", "simulations"};
   int k = 0;
-  for (const json& row : arr(idp, "convergence")) {
+  const json& rows = arr(idp, "convergence");
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const json& row = rows[i];
     ++k;
     crit.x.push_back(k);
     crit.y.push_back(jsonv::num(row, "criterion_J"));
     en.x.push_back(k);
     en.y.push_back(jsonv::num(row, "energy_J"));
+    // the table keeps each pass's first and last iteration and every fifth (the plot has all)
+    const bool last_of_pass = i + 1 == rows.size() || jsonv::str(rows[i + 1], "pass") != jsonv::str(row, "pass");
+    const double it = jsonv::num(row, "iteration");
+    if (rows.size() > 25 && !(it == 1 || last_of_pass || std::fmod(it, 5) == 0)) continue;
     const auto reg = jsonv::vec(row, "region_rad_s");
     ct.rows.push_back({jsonv::str(row, "pass"), jsonv::str(row, "iteration"),
                        jsonv::sig(row, "criterion_J", 6), jsonv::sig(row, "energy_J", 6),
