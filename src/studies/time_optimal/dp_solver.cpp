@@ -1,0 +1,217 @@
+// dynamic programming (004_87cbdf4981aa31c3.txt) and Box's Complex on the same discretisation
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/opt/box_complex.hpp"
+#include "core/opt/dynamic_programming.hpp"
+#include "studies/time_optimal/solvers.hpp"
+
+namespace armstudy::studies::time_optimal {
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// the discretisation shared by the path-speed DP and the Complex method
+struct Discretisation {
+  std::vector<double> nodes;
+  std::vector<bool> rest;
+  std::vector<std::vector<JointPoint>> pts;  // [interval][check point]
+  std::vector<double> mvc;                   // m/s per node
+  int checks = 1;
+};
+
+Discretisation discretise(const Problem& pb, int segments, int checks) {
+  Discretisation d;
+  d.nodes = make_nodes(pb.path, segments);
+  d.rest = rest_nodes(pb.path, d.nodes);
+  d.pts = interval_points(pb, d.nodes, checks);
+  d.checks = checks;
+  std::vector<double> vel;
+  max_velocity_curve(pb, d.nodes, &d.mvc, &vel);
+  return d;
+}
+
+// time of interval k from s'^2 = x0 to x1 at constant s'' if every limit holds at its check
+// points, else +inf
+double path_speed_cost(const Problem& pb, const Discretisation& d, int k, double x0, double x1,
+                       double sd0, double sd1) {
+  if (sd0 + sd1 <= 0) return kInf;
+  const double ds = d.nodes[k + 1] - d.nodes[k];
+  const double u = (x1 - x0) / (2 * ds);
+  const auto& pts = d.pts[k];
+  for (int m = 0; m <= d.checks; ++m) {
+    const double x = x0 + (x1 - x0) * m / d.checks;
+    if (!within_limits(pts[m], pb.limits, x, u)) return kInf;
+  }
+  return 2 * ds / (sd0 + sd1);
+}
+
+std::string where(const Problem& pb, double s) {
+  const Eigen::Vector2d p = pb.path.at(s).p;
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(3);
+  os << "s = " << s << " m, (x, y) = (" << p.x() << ", " << p.y() << ") m";
+  return os.str();
+}
+}  // namespace
+
+SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, DpState state) {
+  SolverOutput out;
+  const Discretisation d = discretise(pb, segments, checks);
+  const int n = static_cast<int>(d.nodes.size());
+  std::vector<int> count(n);
+  for (int k = 0; k < n; ++k) count[k] = d.rest[k] ? 1 : levels;
+
+  if (state == DpState::kPathSpeed) {
+    // s' levels on [0, MVC(s_k)] (the state grid of the source's step 1, per node)
+    std::vector<std::vector<double>> sd(n), x(n);
+    for (int k = 0; k < n; ++k) {
+      for (int i = 0; i < count[k]; ++i) {
+        const double v = count[k] == 1 ? 0.0 : d.mvc[k] * i / (count[k] - 1);
+        sd[k].push_back(v);
+        x[k].push_back(v * v);
+      }
+    }
+    const core::opt::DpSolution sol = core::opt::solve_staged_dp(count, [&](int k, int i, int j) {
+      return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
+    });
+    out.evaluations = sol.evaluations;
+    if (!sol.feasible()) {
+      out.message = "no sequence of the " + std::to_string(levels) +
+                    " velocity levels per node meets every limit on " +
+                    std::to_string(segments) + " segments";
+      return out;
+    }
+    out.profile.law = SegmentLaw::kPathAcceleration;
+    out.profile.s = d.nodes;
+    for (int k = 0; k < n; ++k) out.profile.sd.push_back(sd[k][sol.states[k]]);
+    out.duration = sol.cost;
+    out.solved = true;
+    return out;
+  }
+
+  // joint-1 velocity state: q1 must move one way along the whole path
+  double sign = 0;
+  for (int k = 0; k + 1 < n; ++k) {
+    for (int m = 0; m <= checks; ++m) {
+      const JointPoint& jp = d.pts[k][m];
+      const double v = jp.dq[0];
+      const double sg = std::abs(v) < 1e-9 ? 0.0 : (v > 0 ? 1.0 : -1.0);
+      if (k == 0 && m == 0) sign = sg;
+      if (sg == 0 || sg != sign) {
+        out.message = "joint 1 reverses (dq1/ds = 0) near " + where(pb, jp.s) +
+                      ": the source's joint-1 velocity state cannot describe this path (its "
+                      "segment time 2 dq1 / (q1'(k) + q1'(k+1)) breaks down); the path-speed "
+                      "state s' can";
+        return out;
+      }
+    }
+  }
+  std::vector<double> q1(n), dq1(n);
+  for (int k = 0; k < n; ++k) {
+    const JointPoint& jp = k + 1 < n ? d.pts[k][0] : d.pts[k - 1][checks];
+    q1[k] = jp.q[0];
+    dq1[k] = jp.dq[0];
+  }
+  // q1' levels on [0, qd_max_1] in the direction of motion (the source's state grid)
+  std::vector<std::vector<double>> v(n);
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < count[k]; ++i)
+      v[k].push_back(count[k] == 1 ? 0.0 : sign * pb.limits.velocity[0] * i / (count[k] - 1));
+  const core::opt::DpSolution sol = core::opt::solve_staged_dp(count, [&](int k, int i, int j) {
+    const double v0 = v[k][i], v1 = v[k + 1][j];
+    if (v0 + v1 == 0) return kInf;
+    const double dq = q1[k + 1] - q1[k];
+    // constant joint-1 acceleration over the joint-1 travel
+    const double a1 = (v1 * v1 - v0 * v0) / (2 * dq);
+    const auto& pts = d.pts[k];
+    for (int m = 0; m <= checks; ++m) {
+      const JointPoint& jp = pts[m];
+      const double w2 = std::max(0.0, v0 * v0 + 2 * a1 * (jp.q[0] - q1[k]));
+      const double x = w2 / (jp.dq[0] * jp.dq[0]);
+      const double u = (a1 - jp.ddq[0] * x) / jp.dq[0];
+      if (!within_limits(jp, pb.limits, x, u)) return kInf;
+    }
+    return 2 * dq / (v0 + v1);
+  });
+  out.evaluations = sol.evaluations;
+  if (!sol.feasible()) {
+    out.message = "no sequence of the " + std::to_string(levels) +
+                  " joint-1 velocity levels meets every limit on " + std::to_string(segments) +
+                  " segments";
+    return out;
+  }
+  out.profile.law = SegmentLaw::kJoint1Acceleration;
+  out.profile.s = d.nodes;
+  for (int k = 0; k < n; ++k) {
+    out.profile.qd1.push_back(v[k][sol.states[k]]);
+    out.profile.sd.push_back(std::abs(v[k][sol.states[k]] / dq1[k]));
+  }
+  out.duration = sol.cost;
+  out.solved = true;
+  return out;
+}
+
+SolverOutput solve_complex(const Problem& pb, int segments, int checks,
+                           const ComplexSettings& settings) {
+  SolverOutput out;
+  const Discretisation d = discretise(pb, segments, checks);
+  const int n = static_cast<int>(d.nodes.size());
+  std::vector<int> var;  // node of each variable
+  for (int k = 0; k < n; ++k)
+    if (!d.rest[k]) var.push_back(k);
+  const int nv = static_cast<int>(var.size());
+  const auto speeds = [&](const Eigen::VectorXd& z) {
+    std::vector<double> sd(n, 0.0);
+    for (int i = 0; i < nv; ++i) sd[var[i]] = z[i];
+    return sd;
+  };
+  const auto total_time = [&](const std::vector<double>& sd) {
+    double t = 0;
+    for (int k = 0; k + 1 < n; ++k) {
+      const double c = path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1]);
+      if (!std::isfinite(c)) return kInf;
+      t += c;
+    }
+    return t;
+  };
+  if (nv == 0) {
+    // every node is a rest node: nothing to optimise, the profile is fixed
+    out.profile.s = d.nodes;
+    out.profile.sd.assign(n, 0.0);
+    out.message = "every node is a rest node: no interval can be crossed";
+    return out;
+  }
+  Eigen::VectorXd lo = Eigen::VectorXd::Zero(nv), hi(nv);
+  for (int i = 0; i < nv; ++i) hi[i] = d.mvc[var[i]];
+  // a feasible crawl to start from
+  Eigen::VectorXd z0 = 0.5 * hi;
+  int halvings = 0;
+  while (!std::isfinite(total_time(speeds(z0))) && halvings++ < 60) z0 *= 0.5;
+  if (!std::isfinite(total_time(speeds(z0)))) {
+    out.message = "the Complex method found no feasible crawl to start from";
+    return out;
+  }
+  core::opt::ComplexOptions opt;
+  opt.max_iterations = settings.max_iterations;
+  opt.tolerance = settings.tolerance;
+  opt.seed = settings.seed;
+  const core::opt::ComplexResult r = core::opt::box_complex(
+      [&](const Eigen::VectorXd& z) { return total_time(speeds(z)); },
+      [&](const Eigen::VectorXd& z) { return std::isfinite(total_time(speeds(z))); }, lo, hi, z0,
+      opt);
+  out.evaluations = r.evaluations;
+  out.iterations = r.iterations;
+  out.profile.law = SegmentLaw::kPathAcceleration;
+  out.profile.s = d.nodes;
+  out.profile.sd = speeds(r.x);
+  out.duration = r.f;
+  out.solved = true;
+  if (!r.converged)
+    out.message = "the Complex method stopped after " + std::to_string(r.iterations) +
+                  " reflections before its spread criterion was met";
+  return out;
+}
+
+}  // namespace armstudy::studies::time_optimal

@@ -1,0 +1,199 @@
+#include "studies/time_optimal/path.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/check.hpp"
+#include "core/dynamics.hpp"
+#include "core/ik2.hpp"
+
+namespace armstudy::studies::time_optimal {
+namespace {
+constexpr int kTable = 32;  // arc-length table entries per spline piece
+// 5-point Gauss-Legendre nodes and weights on [-1, 1]
+constexpr double kGlX[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                            0.9061798459386640};
+constexpr double kGlW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                            0.4786286704993665, 0.2369268850561891};
+
+std::string fmt(double v, int digits = 3) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(digits);
+  os << v;
+  return os.str();
+}
+}  // namespace
+
+PathGeometry::PathGeometry(const PathSpec& spec) : kind_(spec.kind), pts_(spec.points) {
+  const int n = static_cast<int>(pts_.size());
+  ARM_THROW_UNLESS(n >= 2, "path has " << n << " points; should have >= 2");
+  ARM_THROW_UNLESS(kind_ != PathKind::kLine || n == 2,
+                   "a line path has " << n << " points; should have 2");
+  for (int i = 0; i + 1 < n; ++i)
+    ARM_THROW_UNLESS((pts_[i + 1] - pts_[i]).norm() > 1e-9,
+                     "path points " << i + 1 << " and " << i + 2 << " coincide");
+  if (kind_ != PathKind::kSpline || n == 2) {
+    if (kind_ == PathKind::kSpline) kind_ = PathKind::kPolyline;  // a 2-point spline is a line
+    piece_s_.push_back(0.0);
+    for (int i = 0; i + 1 < n; ++i) piece_s_.push_back(piece_s_.back() + (pts_[i + 1] - pts_[i]).norm());
+    length_ = piece_s_.back();
+    for (int i = 1; i + 1 < n; ++i) {
+      // a corner only where the direction changes
+      const Eigen::Vector2d d0 = (pts_[i] - pts_[i - 1]).normalized();
+      const Eigen::Vector2d d1 = (pts_[i + 1] - pts_[i]).normalized();
+      if ((d1 - d0).norm() > 1e-12) stops_.push_back(piece_s_[i]);
+    }
+    return;
+  }
+  // natural cubic spline with chord-length knots: tridiagonal system for the second
+  // derivatives m_i, m_0 = m_n-1 = 0 (Thomas algorithm)
+  tau_.assign(n, 0.0);
+  for (int i = 1; i < n; ++i) tau_[i] = tau_[i - 1] + (pts_[i] - pts_[i - 1]).norm();
+  m_.assign(n, Eigen::Vector2d::Zero());
+  if (n > 2) {
+    const int k = n - 2;
+    std::vector<double> diag(k), up(k), low(k);
+    std::vector<Eigen::Vector2d> rhs(k);
+    for (int j = 0; j < k; ++j) {
+      const int i = j + 1;
+      const double h0 = tau_[i] - tau_[i - 1], h1 = tau_[i + 1] - tau_[i];
+      low[j] = h0;
+      diag[j] = 2.0 * (h0 + h1);
+      up[j] = h1;
+      rhs[j] = 6.0 * ((pts_[i + 1] - pts_[i]) / h1 - (pts_[i] - pts_[i - 1]) / h0);
+    }
+    for (int j = 1; j < k; ++j) {
+      const double w = low[j] / diag[j - 1];
+      diag[j] -= w * up[j - 1];
+      rhs[j] -= w * rhs[j - 1];
+    }
+    m_[k] = rhs[k - 1] / diag[k - 1];
+    for (int j = k - 2; j >= 0; --j) m_[j + 1] = (rhs[j] - up[j] * m_[j + 2]) / diag[j];
+  }
+  // arc-length tables
+  piece_s_.push_back(0.0);
+  tab_tau_.resize(n - 1);
+  tab_s_.resize(n - 1);
+  for (int i = 0; i + 1 < n; ++i) {
+    double s = piece_s_.back();
+    for (int j = 0; j <= kTable; ++j) {
+      const double t = tau_[i] + (tau_[i + 1] - tau_[i]) * j / kTable;
+      if (j > 0) s += spline_arc(i, tab_tau_[i].back(), t);
+      tab_tau_[i].push_back(t);
+      tab_s_[i].push_back(s);
+    }
+    piece_s_.push_back(s);
+  }
+  length_ = piece_s_.back();
+}
+
+Eigen::Vector2d PathGeometry::spline_d(int i, double t, int order) const {
+  // cubic spline piece i and its derivatives (Numerical Recipes 3.3.3 form)
+  const double h = tau_[i + 1] - tau_[i];
+  const double A = (tau_[i + 1] - t) / h, B = (t - tau_[i]) / h;
+  if (order == 0)
+    return A * pts_[i] + B * pts_[i + 1] +
+           ((A * A * A - A) * m_[i] + (B * B * B - B) * m_[i + 1]) * h * h / 6.0;
+  if (order == 1)
+    return (pts_[i + 1] - pts_[i]) / h - (3 * A * A - 1) / 6.0 * h * m_[i] +
+           (3 * B * B - 1) / 6.0 * h * m_[i + 1];
+  return A * m_[i] + B * m_[i + 1];
+}
+
+double PathGeometry::spline_arc(int i, double t0, double t1) const {
+  const double mid = 0.5 * (t0 + t1), half = 0.5 * (t1 - t0);
+  double s = 0;
+  for (int g = 0; g < 5; ++g) s += kGlW[g] * spline_d(i, mid + half * kGlX[g], 1).norm();
+  return s * half;
+}
+
+PathPoint PathGeometry::at(double s, bool from_left) const {
+  s = std::clamp(s, 0.0, length_);
+  const int pieces = static_cast<int>(piece_s_.size()) - 1;
+  // piece containing s: [piece_s_[i], piece_s_[i+1]) or (.., ..] from the left
+  int i;
+  if (from_left) {
+    i = static_cast<int>(std::lower_bound(piece_s_.begin(), piece_s_.end(), s) - piece_s_.begin()) - 1;
+  } else {
+    i = static_cast<int>(std::upper_bound(piece_s_.begin(), piece_s_.end(), s) - piece_s_.begin()) - 1;
+  }
+  i = std::clamp(i, 0, pieces - 1);
+  PathPoint out;
+  if (kind_ != PathKind::kSpline) {
+    const Eigen::Vector2d d = (pts_[i + 1] - pts_[i]).normalized();
+    out.p = pts_[i] + d * (s - piece_s_[i]);
+    out.dp = d;
+    out.ddp.setZero();
+    return out;
+  }
+  // invert the arc length: table bracket, then Newton on s(tau) - s = 0
+  const auto& ts = tab_s_[i];
+  int j = static_cast<int>(std::upper_bound(ts.begin(), ts.end(), s) - ts.begin()) - 1;
+  j = std::clamp(j, 0, kTable - 1);
+  const double w = ts[j + 1] > ts[j] ? (s - ts[j]) / (ts[j + 1] - ts[j]) : 0.0;
+  double t = tab_tau_[i][j] + w * (tab_tau_[i][j + 1] - tab_tau_[i][j]);
+  for (int it = 0; it < 8; ++it) {
+    const double err = ts[j] + spline_arc(i, tab_tau_[i][j], t) - s;
+    const double speed = spline_d(i, t, 1).norm();
+    t -= err / speed;
+    t = std::clamp(t, tab_tau_[i][j], tab_tau_[i][j + 1]);
+    if (std::abs(err) < 1e-15 * std::max(1.0, length_)) break;
+  }
+  const Eigen::Vector2d P = spline_d(i, t, 0), P1 = spline_d(i, t, 1), P2 = spline_d(i, t, 2);
+  const double v = P1.norm();
+  out.p = P;
+  out.dp = P1 / v;
+  // chain rule with ds/dtau = |P1|: p'' = (P2 - (P2 . T) T) / |P1|^2
+  out.ddp = (P2 - P2.dot(out.dp) * out.dp) / (v * v);
+  return out;
+}
+
+std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,
+                                      int configuration, double s, bool from_left,
+                                      PathTrouble* trouble) {
+  ARM_THROW_UNLESS(chain.num_links() == 2,
+                   "time-optimal arm has " << chain.num_links() << " links; should have 2");
+  const PathPoint pp = path.at(s, from_left);
+  const double L1 = chain.links[0].length, L2 = chain.links[1].length;
+  // path in the base frame: rotate by -base_angle about the base
+  const double cb = std::cos(chain.base_angle), sb = std::sin(chain.base_angle);
+  Eigen::Matrix2d Rt;
+  Rt << cb, sb, -sb, cb;
+  const Eigen::Vector2d p = Rt * (pp.p - chain.base);
+  const auto where = [&] {
+    return "at s = " + fmt(s) + " m, (x, y) = (" + fmt(pp.p.x()) + ", " + fmt(pp.p.y()) + ") m";
+  };
+  const core::Reach reach = core::reach_2link(L1, L2, p);
+  if (!reach.reachable()) {
+    if (trouble)
+      trouble->message = "the path leaves the workspace " + where() + ": it is " +
+                         fmt(-reach.margin) + " m outside the reachable annulus [" +
+                         fmt(reach.inner, 2) + ", " + fmt(reach.outer, 2) + "] m";
+    return std::nullopt;
+  }
+  const auto st = core::ik_2link_motion(L1, L2, p, Rt * pp.dp, Rt * pp.ddp, configuration);
+  if (!st || std::abs(st->sin_q2) < 1e-9) {
+    if (trouble)
+      trouble->message = "the path passes through a singular pose " + where() +
+                         ": the elbow is " + (std::cos(st ? st->q[1] : 0.0) > 0 ? "straight" : "folded") +
+                         " (sin q2 = 0), where no finite joint speed follows the path";
+    return std::nullopt;
+  }
+  JointPoint jp;
+  jp.s = s;
+  jp.p = pp.p;
+  jp.q = st->q;
+  jp.dq = st->qd;
+  jp.ddq = st->qdd;
+  jp.sin_q2 = st->sin_q2;
+  // tau = M (q' s'' + q'' s'^2) + C(q, q' s') q' s' + g = a s'' + b s'^2 + c
+  const core::JointVector zero = core::JointVector::Zero(2);
+  jp.c = core::inverse_dynamics(chain, jp.q, zero, zero);
+  jp.a = core::mass_matrix(chain, jp.q) * jp.dq;
+  jp.b = core::inverse_dynamics(chain, jp.q, jp.dq, jp.ddq) - jp.c;
+  return jp;
+}
+
+}  // namespace armstudy::studies::time_optimal

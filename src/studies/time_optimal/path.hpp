@@ -1,0 +1,79 @@
+#pragma once
+/// Tip path geometry parameterised by arc length s (m): p(s), p'(s) (the unit tangent) and
+/// p''(s) (the curvature vector), and the joint path q(s), q'(s), q''(s) of a 2-link arm
+/// from core's closed-form inverse kinematics.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/planar_chain.hpp"
+#include "core/types.hpp"
+#include "studies/time_optimal/spec.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+/// A point of the tip path (world frame, m).
+struct PathPoint {
+  Eigen::Vector2d p;    ///< m
+  Eigen::Vector2d dp;   ///< dp/ds, unit tangent
+  Eigen::Vector2d ddp;  ///< d2p/ds2, 1/m (curvature vector; zero on straight pieces)
+};
+
+class PathGeometry {
+ public:
+  /// @throws std::invalid_argument for fewer than 2 points, a line with other than 2, or
+  /// two consecutive points closer than 1e-9 m.
+  explicit PathGeometry(const PathSpec& spec);
+  /// Arc length, m.
+  double length() const { return length_; }
+  /// The path at arc length s in [0, length]. At a polyline corner, `from_left` picks the
+  /// piece that ends there (true) or the one that starts there (false).
+  PathPoint at(double s, bool from_left = false) const;
+  /// Arc lengths where the tangent jumps (interior polyline corners): the arm must stop.
+  const std::vector<double>& stops() const { return stops_; }
+
+ private:
+  PathKind kind_;
+  std::vector<Eigen::Vector2d> pts_;
+  double length_ = 0;
+  std::vector<double> stops_;
+  std::vector<double> piece_s_;  // arc length at the start of each piece (+ total)
+  // spline: knots tau (chord length), second derivatives per point, and an arc-length
+  // table per piece (tau, s) for inversion
+  std::vector<double> tau_;
+  std::vector<Eigen::Vector2d> m_;
+  std::vector<std::vector<double>> tab_tau_, tab_s_;
+  Eigen::Vector2d spline_d(int piece, double tau, int order) const;
+  double spline_arc(int piece, double t0, double t1) const;
+};
+
+/// The arm's joint path at one point, with the path-projected dynamics
+/// tau = a s'' + b s'^2 + c (N m per joint).
+struct JointPoint {
+  double s = 0;          ///< m
+  Eigen::Vector2d p;     ///< m, tip
+  core::JointVector q;   ///< (2) rad, relative joint angles
+  core::JointVector dq;  ///< (2) dq/ds, rad/m
+  core::JointVector ddq; ///< (2) d2q/ds2, rad/m^2
+  core::JointVector a;   ///< (2) M q', kg m
+  core::JointVector b;   ///< (2) M q'' + C(q, q') q', kg
+  core::JointVector c;   ///< (2) gravity torque, N m
+  double sin_q2 = 0;     ///< 0 at the singular (straight or folded) elbow
+};
+
+/// Why a path point cannot be followed: unreachable or singular. Empty if it can.
+struct PathTrouble {
+  std::string message;  ///< names the point: s, (x, y), and the reason with numbers
+};
+
+/// Joint point of a 2-link `chain` at s; nullopt and `trouble` set when the point lies
+/// outside the reachable annulus or at a singular pose (|sin q2| < 1e-9).
+/// @throws std::invalid_argument if the chain does not have 2 links.
+std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,
+                                      int configuration, double s, bool from_left,
+                                      PathTrouble* trouble);
+
+}  // namespace armstudy::studies::time_optimal

@@ -1,0 +1,214 @@
+#include "studies/time_optimal/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/check.hpp"
+#include "core/dynamics.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+JointPoint Problem::at(double s, bool from_left) const {
+  PathTrouble trouble;
+  const auto jp = joint_point(chain, path, configuration, s, from_left, &trouble);
+  if (!jp) throw std::logic_error("time-optimal path point used unchecked: " + trouble.message);
+  return *jp;
+}
+
+std::vector<double> make_nodes(const PathGeometry& path, int intervals) {
+  std::vector<double> cuts{0.0};
+  for (double s : path.stops()) cuts.push_back(s);
+  cuts.push_back(path.length());
+  const int pieces = static_cast<int>(cuts.size()) - 1;
+  ARM_THROW_UNLESS(intervals >= pieces, "path needs >= " << pieces << " intervals (one per "
+                                        "piece between stops); got " << intervals);
+  // intervals per piece in proportion to length, at least one each (largest remainder)
+  std::vector<int> count(pieces, 1);
+  int left = intervals - pieces;
+  std::vector<double> share(pieces);
+  for (int p = 0; p < pieces; ++p) share[p] = (cuts[p + 1] - cuts[p]) / path.length() * intervals;
+  while (left > 0) {
+    int best = 0;
+    for (int p = 1; p < pieces; ++p)
+      if (share[p] - count[p] > share[best] - count[best]) best = p;
+    ++count[best];
+    --left;
+  }
+  std::vector<double> nodes{0.0};
+  for (int p = 0; p < pieces; ++p) {
+    for (int k = 1; k <= count[p]; ++k)
+      nodes.push_back(k == count[p] ? cuts[p + 1] : cuts[p] + (cuts[p + 1] - cuts[p]) * k / count[p]);
+  }
+  return nodes;
+}
+
+std::vector<bool> rest_nodes(const PathGeometry& path, const std::vector<double>& nodes) {
+  std::vector<bool> rest(nodes.size(), false);
+  rest.front() = rest.back() = true;
+  for (double st : path.stops()) {
+    for (size_t k = 0; k < nodes.size(); ++k)
+      if (nodes[k] == st) rest[k] = true;
+  }
+  return rest;
+}
+
+std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
+                                                     const std::vector<double>& nodes,
+                                                     int checks) {
+  ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
+  const auto& stops = problem.path.stops();
+  std::vector<std::vector<JointPoint>> out(nodes.size() - 1);
+  for (size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const double ds = nodes[k + 1] - nodes[k];
+    out[k].reserve(checks + 1);
+    for (int m = 0; m <= checks; ++m) {
+      if (m == 0 && k > 0 && std::find(stops.begin(), stops.end(), nodes[k]) == stops.end()) {
+        out[k].push_back(out[k - 1].back());  // the same point, already computed
+        continue;
+      }
+      const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
+      out[k].push_back(problem.at(s, m == checks));
+    }
+  }
+  return out;
+}
+
+namespace {
+// x = s'^2, u = s'' and the time since the interval's start, at theta of interval k
+struct LocalState {
+  double x, u, dt;
+};
+
+LocalState path_acceleration_state(const Profile& pr, int k, double theta) {
+  const double ds = pr.s[k + 1] - pr.s[k];
+  const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
+  const double x = std::max(0.0, x0 + theta * (x1 - x0));
+  const double v = pr.sd[k] + std::sqrt(x);
+  // constant acceleration: elapsed time = distance / mean speed
+  return {x, (x1 - x0) / (2 * ds), v > 0 ? 2 * theta * ds / v : 0.0};
+}
+}  // namespace
+
+double profile_duration(const Problem& problem, const Profile& pr) {
+  double t = 0;
+  for (size_t k = 0; k + 1 < pr.s.size(); ++k) {
+    if (pr.law == SegmentLaw::kPathAcceleration) {
+      const double v = pr.sd[k] + pr.sd[k + 1];
+      if (v <= 0) return std::numeric_limits<double>::infinity();
+      t += 2 * (pr.s[k + 1] - pr.s[k]) / v;
+    } else {
+      const double v = pr.qd1[k] + pr.qd1[k + 1];
+      const double dq = problem.at(pr.s[k + 1], true).q[0] - problem.at(pr.s[k]).q[0];
+      if (v == 0 || dq / v <= 0) return std::numeric_limits<double>::infinity();
+      t += 2 * dq / v;
+    }
+  }
+  return t;
+}
+
+void resample(const Problem& problem, const Profile& pr, int per_interval, int keep,
+              MotionSamples* out, Violation* viol, std::vector<double>* node_t) {
+  ARM_THROW_UNLESS(per_interval >= 1, "resampling points " << per_interval << " should be >= 1");
+  const int K = static_cast<int>(pr.s.size()) - 1;
+  const int total = K * per_interval + 1;
+  const int stride = std::max(1, total / std::max(1, keep));
+  *out = MotionSamples{};
+  std::vector<Eigen::Vector2d> q, qd, qdd, tau;
+  *viol = Violation{};
+  viol->worst = -1;
+  if (node_t) node_t->assign(pr.s.size(), 0.0);
+  double t_node = 0;
+  int index = 0;
+  for (int k = 0; k < K; ++k) {
+    const JointPoint j0 = problem.at(pr.s[k], false);
+    const JointPoint j1 = problem.at(pr.s[k + 1], true);
+    const double ds = pr.s[k + 1] - pr.s[k];
+    const double dq1 = j1.q[0] - j0.q[0];
+    double t_end = t_node;
+    for (int m = (k == 0 ? 0 : 1); m <= per_interval; ++m) {
+      const double theta = static_cast<double>(m) / per_interval;
+      const JointPoint jp =
+          m == 0 ? j0 : (m == per_interval ? j1 : problem.at(pr.s[k] + theta * ds));
+      double x, u, dt;
+      if (pr.law == SegmentLaw::kPathAcceleration) {
+        const LocalState ls = path_acceleration_state(pr, k, theta);
+        x = ls.x;
+        u = ls.u;
+        dt = ls.dt;
+      } else {
+        // constant q1'': q1'^2 grows linearly with the joint-1 travel; s' = q1' / (dq1/ds)
+        const double v0 = pr.qd1[k], v1 = pr.qd1[k + 1];
+        const double a1 = (v1 * v1 - v0 * v0) / (2 * dq1);
+        const double travel = jp.q[0] - j0.q[0];
+        const double w2 = std::max(0.0, v0 * v0 + 2 * a1 * travel);
+        const double w = std::copysign(std::sqrt(w2), dq1);
+        const double sd = w / jp.dq[0];
+        x = sd * sd;
+        u = (a1 - jp.ddq[0] * x) / jp.dq[0];
+        dt = (v0 + w) != 0 ? 2 * travel / (v0 + w) : 0.0;
+      }
+      const double sd = std::sqrt(std::max(0.0, x));
+      const core::JointVector qdv = jp.dq * sd;
+      const core::JointVector qddv = jp.dq * u + jp.ddq * x;
+      const core::JointVector tv = core::inverse_dynamics(problem.chain, jp.q, qdv, qddv);
+      const double t = t_node + dt;
+      t_end = t;
+      // limit use
+      const double vals[3][2] = {{qdv[0], qdv[1]}, {tv[0], tv[1]}, {qddv[0], qddv[1]}};
+      for (int kind = 0; kind < 3; ++kind) {
+        if (kind == 2 && !problem.limits.acceleration) continue;
+        for (int j = 0; j < 2; ++j) {
+          const double lim = problem.limits.of(static_cast<LimitKind>(kind), j);
+          const double v = std::abs(vals[kind][j]);
+          const double r = lim > 0 ? v / lim : (v > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0);
+          if (r > viol->ratio[kind][j]) viol->ratio[kind][j] = r;
+          if (r - 1 > viol->worst) {
+            viol->worst = r - 1;
+            viol->joint = j;
+            viol->kind = static_cast<LimitKind>(kind);
+            viol->s = jp.s;
+            viol->t = t;
+            viol->interval = k;
+          }
+        }
+      }
+      if (index % stride == 0 || (k == K - 1 && m == per_interval)) {
+        out->s.push_back(jp.s);
+        out->t.push_back(t);
+        out->sd.push_back(sd);
+        out->sdd.push_back(u);
+        q.push_back(jp.q);
+        qd.push_back(qdv);
+        qdd.push_back(qddv);
+        tau.push_back(tv);
+      }
+      ++index;
+    }
+    t_node = t_end;
+    if (node_t) (*node_t)[k + 1] = t_node;
+  }
+  const auto pack = [](const std::vector<Eigen::Vector2d>& v) {
+    Eigen::Matrix2Xd m(2, v.size());
+    for (size_t i = 0; i < v.size(); ++i) m.col(i) = v[i];
+    return m;
+  };
+  out->q = pack(q);
+  out->qd = pack(qd);
+  out->qdd = pack(qdd);
+  out->tau = pack(tau);
+  // the sentence: grid point, binding limit, margin
+  std::ostringstream os;
+  os.precision(4);
+  const double lim = problem.limits.of(viol->kind, viol->joint);
+  const double used = (viol->worst + 1) * lim;
+  os << "largest limit use: joint " << viol->joint + 1 << " " << limit_name(viol->kind) << " "
+     << used << " of " << lim << " " << limit_unit(viol->kind) << " at s = " << viol->s
+     << " m, t = " << viol->t << " s (interval " << viol->interval << ", from grid point "
+     << viol->interval << "); margin " << lim - used << " " << limit_unit(viol->kind) << " ("
+     << (viol->worst <= 0 ? "met" : "VIOLATED") << ", relative " << -viol->worst << ")";
+  viol->text = os.str();
+}
+
+}  // namespace armstudy::studies::time_optimal

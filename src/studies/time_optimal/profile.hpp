@@ -1,0 +1,57 @@
+#pragma once
+/// Problem data shared by the solvers (arm, path, limits) and the dense resampling that
+/// re-checks every solution between its nodes.
+
+#include <vector>
+
+#include "studies/time_optimal/path.hpp"
+#include "studies/time_optimal/phase.hpp"
+#include "studies/time_optimal/result.hpp"
+#include "studies/time_optimal/spec.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+struct Problem {
+  core::PlanarChain chain;
+  PathGeometry path;
+  int configuration = 1;
+  Limits limits;
+
+  /// Joint point at s (the caller has checked the path). @throws std::logic_error if the
+  /// point is unreachable or singular.
+  JointPoint at(double s, bool from_left = false) const;
+};
+
+/// Node arc lengths of `intervals` intervals over the path: uniform, except that every
+/// stop (polyline corner) is a node, the intervals split over the pieces in proportion to
+/// their length. @throws std::invalid_argument if intervals < number of pieces.
+std::vector<double> make_nodes(const PathGeometry& path, int intervals);
+
+/// True at nodes where the arm must be at rest (both ends and every stop).
+std::vector<bool> rest_nodes(const PathGeometry& path, const std::vector<double>& nodes);
+
+/// Joint points at the check points theta = m / checks (m = 0..checks) of every interval:
+/// out[k][m]; the last point of an interval ending at a stop is taken from the left.
+std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
+                                                     const std::vector<double>& nodes,
+                                                     int checks);
+
+/// A solution described at its nodes.
+struct Profile {
+  SegmentLaw law = SegmentLaw::kPathAcceleration;
+  std::vector<double> s;    ///< m, nodes
+  std::vector<double> sd;   ///< m/s at the nodes
+  std::vector<double> qd1;  ///< rad/s at the nodes (kJoint1Acceleration only)
+};
+
+/// Duration of a profile, s (infinite if two consecutive nodes are at rest).
+double profile_duration(const Problem& problem, const Profile& profile);
+
+/// Resamples a profile at `per_interval` points per interval (from its own segment law),
+/// with joint velocities, accelerations and torques from core's inverse dynamics, and finds
+/// the largest use of each limit. `samples` keeps about `keep` evenly spaced samples; node
+/// times go to `node_t`.
+void resample(const Problem& problem, const Profile& profile, int per_interval, int keep,
+              MotionSamples* samples, Violation* violation, std::vector<double>* node_t);
+
+}  // namespace armstudy::studies::time_optimal

@@ -1,0 +1,90 @@
+#pragma once
+/// Everything the time-optimal report shows: per solver the duration, run time, the
+/// profile s'(s) and s(t), joint velocities and torques over time, the largest limit
+/// violation found by dense resampling; the maximum velocity curve; the DP convergence
+/// table; the motion at equal time steps for the renderer. Plain data, SI units.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "studies/common.hpp"
+#include "studies/time_optimal/phase.hpp"
+#include "studies/time_optimal/spec.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+/// How a solution moves inside one interval between its nodes.
+enum class SegmentLaw {
+  kPathAcceleration,    ///< constant s'' (x = s'^2 linear in s): DP path-speed, Complex, exact
+  kJoint1Acceleration,  ///< constant q1'' (the source's DP with the joint-1 velocity state)
+};
+
+/// Samples of a motion (columns are samples, ordered in s and t).
+struct MotionSamples {
+  std::vector<double> s;    ///< m
+  std::vector<double> t;    ///< s
+  std::vector<double> sd;   ///< m/s
+  std::vector<double> sdd;  ///< m/s^2
+  Eigen::Matrix2Xd q, qd, qdd, tau;  ///< rad, rad/s, rad/s^2, N m (inverse dynamics)
+};
+
+/// The largest use of each limit over the densely resampled motion.
+struct Violation {
+  /// ratio[kind][joint] = max |value| / limit (> 1: violated); kind as LimitKind
+  double ratio[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  double worst = 0;      ///< max over kinds and joints of ratio - 1 (<= 0: every limit met)
+  int joint = 0;         ///< where the worst ratio occurs: joint (0-based)
+  LimitKind kind = LimitKind::kVelocity;
+  double s = 0;          ///< m
+  double t = 0;          ///< s
+  int interval = 0;      ///< solver interval (grid point at its start)
+  std::string text;      ///< names the grid point, binding limit and margin
+};
+
+struct SolverResult {
+  std::string name;         ///< "exact", "dp", "dp_joint1", "complex"
+  std::string method;       ///< a sentence
+  bool solved = false;
+  std::string message;      ///< why not, when not solved
+  double duration = 0;      ///< s
+  double run_time = 0;      ///< s, wall clock of the solver
+  int intervals = 0;        ///< N
+  int levels = 0;           ///< DP velocity levels (0 otherwise)
+  SegmentLaw law = SegmentLaw::kPathAcceleration;
+  std::vector<double> node_s, node_sd, node_t;  ///< the profile at the solver's nodes
+  MotionSamples samples;    ///< decimated dense samples for plots (<= ~600)
+  Violation violation;      ///< over the full dense resampling
+  long evaluations = 0;     ///< DP transitions / Complex objective calls
+  int iterations = 0;       ///< Complex reflections
+};
+
+struct ConvergenceRow {
+  int segments = 0;
+  int levels = 0;
+  bool solved = false;
+  double duration = 0;  ///< s
+  double excess = 0;    ///< duration / exact - 1
+  double run_time = 0;  ///< s
+  double worst_violation = 0;
+};
+
+struct Result {
+  Status status = Status::kUnsolvable;
+  std::string message;
+  double path_length = 0;   ///< m
+  std::vector<SolverResult> solvers;  ///< exact first, then DP run(s), then Complex
+  /// maximum velocity curve on the exact grid: the largest s' at which some s'' meets
+  /// every limit at that point (m/s); and the speed allowed by velocity limits alone
+  std::vector<double> mvc_s, mvc_sd, mvc_velocity_sd;
+  std::vector<ConvergenceRow> convergence;
+  /// the exact solution at equal time steps (renderer): t, s, tip and joint angles
+  std::vector<double> motion_t, motion_s;
+  Eigen::Matrix2Xd motion_p, motion_q;
+  /// the path at the exact grid (for plots): tip points
+  Eigen::Matrix2Xd path_p;
+  Limits limits;
+};
+
+}  // namespace armstudy::studies::time_optimal

@@ -1,0 +1,50 @@
+#pragma once
+/// The three solvers of the time-optimal study on a Problem. Each returns its profile at
+/// its nodes, or a message when it cannot solve the problem.
+
+#include <string>
+#include <vector>
+
+#include "studies/time_optimal/profile.hpp"
+#include "studies/time_optimal/spec.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+struct SolverOutput {
+  bool solved = false;
+  std::string message;   ///< why not (names the limit and the place on the path)
+  Profile profile;
+  double duration = 0;   ///< s
+  long evaluations = 0;  ///< DP transitions, Complex objective calls
+  int iterations = 0;    ///< Complex reflections
+};
+
+/// Exact solver on the grid `nodes` (TOPP-RA's reachability analysis, Pham & Pham 2018):
+/// backward controllable sets K_i = {x_i : some u meets the limits over interval i and
+/// lands in K_i+1}, then the greedy forward pass taking the largest u. Limits are enforced
+/// at `checks` + 1 points of every interval (constant s'' per interval). Rest at both ends
+/// and at every stop. Cost O(nodes * rows^2) with rows ~ 4-6 per check point.
+SolverOutput solve_exact(const Problem& problem, const std::vector<double>& nodes, int checks);
+
+/// Maximum velocity curve at `nodes`: the largest s' (m/s) at which some s'' meets every
+/// limit at that point (`sd_all`), and the s' allowed by the velocity limits alone.
+void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes,
+                        std::vector<double>* sd_all, std::vector<double>* sd_velocity);
+
+/// Dynamic programming as in 004_87cbdf4981aa31c3.txt: `segments` intervals, constant
+/// acceleration in each, Bellman recursion over `levels` velocity levels per interior node;
+/// a transition is rejected when any limit fails at one of `checks` + 1 points of its
+/// segment. State kPathSpeed: s' levels in [0, MVC(s_k)], constant s''. State
+/// kJoint1Velocity (the source's): q1' levels in [0, qd_max_1] towards the motion, constant
+/// q1'', segment time 2 dq1 / (q1'(k) + q1'(k+1)); fails when q1 is not monotonic.
+SolverOutput solve_dp(const Problem& problem, int segments, int levels, int checks,
+                      DpState state);
+
+/// Box's Complex method on the same discretisation as the path-speed DP: the s' of every
+/// interior node are the variables (bounds [0, MVC]), a profile is feasible when every
+/// segment meets the limits at its check points, the objective is sum 2 ds / (s'_k + s'_k+1).
+/// Starts from a feasible crawl (a fraction of the MVC, halved until feasible).
+SolverOutput solve_complex(const Problem& problem, int segments, int checks,
+                           const ComplexSettings& settings);
+
+}  // namespace armstudy::studies::time_optimal

@@ -1,0 +1,75 @@
+#pragma once
+/// The time-optimal study (004_87cbdf4981aa31c3.txt): the fastest rest-to-rest motion of a
+/// 2-link arm's tip along a given path under joint velocity, torque and (optional)
+/// acceleration limits. SI units and radians throughout.
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/planar_chain.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+/// Shape of the tip path.
+enum class PathKind {
+  kLine,      ///< straight line between two points
+  kPolyline,  ///< straight pieces through the points; the arm stops at every corner
+  kSpline,    ///< natural cubic spline through the points (chord-length knots)
+};
+
+struct PathSpec {
+  PathKind kind = PathKind::kLine;
+  std::vector<Eigen::Vector2d> points;  ///< m, world frame; >= 2 (line: exactly 2)
+};
+
+/// Which state the dynamic programme uses at its nodes.
+enum class DpState {
+  kPathSpeed,       ///< s' (m/s): works on any path (default)
+  kJoint1Velocity,  ///< q1' (rad/s), the source's choice: needs q1 monotonic along the path
+};
+
+struct DpSettings {
+  int segments = 10;          ///< N, the source's default
+  int levels = 200;           ///< velocity levels per interior node
+  int checks_per_segment = 8; ///< points per segment where limits are checked (>= 1)
+  std::vector<DpState> states{DpState::kPathSpeed};  ///< one DP run per entry
+  /// N of the convergence table (path-speed state, `levels` levels); empty: no table
+  std::vector<int> convergence_segments{10, 20, 50, 100, 200};
+};
+
+struct ComplexSettings {
+  bool enabled = true;
+  int max_iterations = 20000;
+  double tolerance = 1e-10;  ///< relative spread of the complex's times at convergence
+  unsigned seed = 1;
+};
+
+struct ExactSettings {
+  int grid_points = 1000;     ///< nodes of the fine grid (>= 2)
+  int checks_per_interval = 2;  ///< sub-intervals per grid interval where limits hold
+};
+
+/// The whole problem, validated by the case loader (the solver re-checks its invariants).
+struct Spec {
+  core::PlanarChain chain;  ///< exactly 2 links
+  PathSpec path;
+  int configuration = 1;    ///< 1: q2 in (0, pi), 2: q2 in (-pi, 0) (core::ik_2link)
+  Eigen::Vector2d velocity_limit{3.0, 4.0};  ///< rad/s per joint, >= 0
+  Eigen::Vector2d torque_limit{10.0, 4.0};   ///< N m per joint, >= 0
+  std::optional<Eigen::Vector2d> acceleration_limit;  ///< rad/s^2 per joint, >= 0
+  DpSettings dp;
+  ComplexSettings complex;
+  ExactSettings exact;
+  int motion_steps = 200;       ///< equal time steps of the sampled motion (for the renderer)
+  int resample_per_interval = 16;  ///< dense re-check points per solver interval
+};
+
+/// The source's arm: massless links with a 1.0 kg point mass at the end of each link,
+/// horizontal plane (gravity 0). Link lengths (not given by the source) default to
+/// L1 = 0.5 m, L2 = 0.4 m: unequal, so the workspace is the annulus [0.1, 0.9] m with
+/// the singular root region small, and a bench-top scale like the other studies' arms.
+core::PlanarChain default_arm(double L1 = 0.5, double L2 = 0.4);
+
+}  // namespace armstudy::studies::time_optimal
