@@ -27,6 +27,8 @@
 #include "cli/progress.hpp"
 #include "cli/run_case.hpp"
 #include "report/case_report.hpp"
+#include "report/sweep_report.hpp"
+#include "scene/scene_error.hpp"
 #include "version.hpp"
 
 namespace {
@@ -129,6 +131,10 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::fprintf(stderr, "shard %d/%d: %zu of %zu case(s)\n", index, count, mine.size(), cases.size());
     cases = std::move(mine);
   }
+  // what killed runs on this host left behind (hidden temporary folders and files)
+  if (const size_t stale = armstudy::app::remove_stale_outputs(options.out_dir))
+    std::fprintf(stderr, "removed %zu temporary folder(s) or file(s) of killed runs in %s\n", stale,
+                 options.out_dir.c_str());
   if (!force) {
     std::vector<LoadedCase> todo;
     size_t skipped = 0;
@@ -157,6 +163,9 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
         std::snprintf(secs, sizeof secs, "%.1f s", o.seconds);
         line = (code == 0 ? "done: " : "FAILED: ") + c.info.name + " (" + c.info.study + ", " +
                secs + ") -> " + o.folder.string() + (o.message.empty() ? "" : "\n  " + o.message);
+      } catch (const armstudy::scene::ModelError& e) {
+        code = kExitBadInput;  // MuJoCo cannot load the arm the case describes
+        line = "ERROR: " + c.info.name + " (" + c.info.path + "): " + e.what();
       } catch (const std::exception& e) {
         code = kExitRuntime;
         line = "ERROR: " + c.info.name + ": " + e.what();
@@ -246,6 +255,25 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
   const size_t failed = armstudy::app::write_merged(outputs, out);
   std::fprintf(stderr, "merged %zu case(s) into %s (%zu failed)\n", outputs.size(), out.c_str(),
                failed);
+  // the pages: every case folder inside `out`, and the sweep's plots over its axes
+  try {
+    const nlohmann::json table = armstudy::app::sweep_json(outputs);
+    if (!table["rows"].empty()) {
+      std::string name = "sweep";
+      for (const auto& o : outputs)
+        if (o.results.contains("case") && o.results["case"].contains("sweep")) {
+          name = o.results["case"]["sweep"].value("name", name);
+          break;
+        }
+      const int plots = armstudy::report::write_sweep_report(std::filesystem::path(out) / "sweep",
+                                                             table, name);
+      std::fprintf(stderr, "sweep report: %s/sweep/index.html (%d plot(s))\n", out.c_str(), plots);
+    }
+    armstudy::report::write_index(out);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "armstudy: cannot write the pages: %s\n", e.what());
+    return kExitRuntime;
+  }
   return failed ? kExitUnsolved : kExitDone;
 }
 
@@ -301,7 +329,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> merge_dirs;
   std::string merge_out;
   auto* merge = app.add_subcommand(
-      "merge", "Build summary.md, junit.xml and sweep tables from the results.json of output folders");
+      "merge", "Build index.html, summary.md, junit.xml, sweep tables and the sweep report (sweep/index.html) from the results.json of output folders");
   merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
   merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
   auto* validate = app.add_subcommand("validate", "Check case files without running them");

@@ -275,8 +275,12 @@ json sweep_json(const std::vector<CaseOutput>& cases) {
     rows.push_back(row);
   }
   json units = json::object();
-  for (const auto& [n, u] : t.figures) units[n] = u;
-  return {{"parameters", t.params}, {"units", units}, {"rows", rows}};
+  json order = json::array();
+  for (const auto& [n, u] : t.figures) {
+    units[n] = u;
+    order.push_back(n);
+  }
+  return {{"parameters", t.params}, {"figures", order}, {"units", units}, {"rows", rows}};
 }
 
 size_t write_merged(const std::vector<CaseOutput>& cases, const fs::path& out_dir) {

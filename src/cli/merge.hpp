@@ -33,7 +33,9 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
 /// JUnit XML: one testsuite per study, a testcase "solve" per case and one per check.
 std::string junit_xml(const std::vector<CaseOutput>& cases);
 
-/// Sweep tables (CSV and JSON) of the cases that carry a sweep point; empty if none.
+/// Sweep tables (CSV and JSON) of the cases that carry a sweep point; empty if none. The
+/// JSON: {"parameters": [path...], "figures": [key figure...], "units": {figure: unit},
+/// "rows": [{case, status ("ok"/"failed"), parameters{path: value}, key_figures{name: x}}]}.
 std::string sweep_csv(const std::vector<CaseOutput>& cases);
 nlohmann::json sweep_json(const std::vector<CaseOutput>& cases);
 

@@ -299,6 +299,7 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("toc", toc);
   d.set("sections", sections);
   d.set("case_sha256", info.sha256);
+  d.set("data_link", "results.json");
   return d;
 }
 
@@ -359,8 +360,15 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   page.sections.push_back(checks_section(results));
   page.sections.push_back(provenance_section(results, info));
 
+  write_page(dir, page, info);
+}
+
+void write_page(const fs::path& dir, const CasePage& page, const cases::CaseInfo& info,
+                const std::string& data_link) {
   copy_stylesheet(dir);
-  write_text(dir / "index.html", render_template("case.html", page_data(page, info)));
+  mus::data d = page_data(page, info);
+  if (!data_link.empty()) d.set("data_link", data_link);
+  write_text(dir / "index.html", render_template("case.html", d));
 }
 
 int write_index(const fs::path& out_dir) {
@@ -429,6 +437,7 @@ int write_index(const fs::path& out_dir) {
   }
   d.set("cases", list);
   d.set("count", std::to_string(rows.size()));
+  d.set("has_sweep", fs::exists(out_dir / "sweep" / "index.html"));
   fs::create_directories(out_dir);
   // the thesis's figure 9.30 needs every example: drawn over the placement cases here
   std::vector<std::pair<std::string, const nlohmann::json*>> all;

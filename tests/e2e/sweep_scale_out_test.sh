@@ -31,6 +31,13 @@ sort -c "$work/list1" || fail "list is not sorted"
 "$armstudy" merge "$work/one" 2>/dev/null
 [ -s "$work/one/sweep.csv" ] || fail "no sweep.csv"
 [ "$(($(wc -l <"$work/one/sweep.csv") - 1))" -eq "$n" ] || fail "sweep.csv rows != $n"
+# the sweep report plots the key figures over the sweep's axes; the index lists every case
+[ -s "$work/one/sweep/index.html" ] || fail "no sweep report"
+plots=$(ls "$work/one/sweep"/*.svg | wc -l)
+[ "$plots" -ge 1 ] || fail "the sweep report has no plots"
+grep -q "Key figures over arm.links\[2\].length" "$work/one/sweep/index.html" || fail "sweep report not over the L2 axis"
+[ "$(grep -c '<td class="name">' "$work/one/index.html")" -eq "$n" ] || fail "index.html does not list the $n cases"
+grep -q 'href="sweep/index.html"' "$work/one/index.html" || fail "index.html does not link the sweep report"
 
 # (b) 4 shards in the order 2, 0, 3, then shard 1 killed midway and run again
 for i in 2 0 3; do "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard "$i/4" 2>>"$work/shards.log"; done

@@ -1,0 +1,176 @@
+#include "report/sweep_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "cases/case_info.hpp"
+#include "report/case_report.hpp"
+#include "report/page.hpp"
+
+namespace armstudy::report {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// a parameter value as a number, NaN when it is not one
+double as_number(const json& v) {
+  if (v.is_number()) return v.get<double>();
+  if (!v.is_string()) return NAN;
+  const std::string s = v.get<std::string>();
+  char* end = nullptr;
+  const double x = std::strtod(s.c_str(), &end);
+  return (!s.empty() && end == s.c_str() + s.size()) ? x : NAN;
+}
+
+std::string value_text(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+}  // namespace
+
+int write_sweep_report(const fs::path& dir, const json& table, const std::string& title) {
+  fs::create_directories(dir);
+  const json& rows = table.contains("rows") ? table["rows"] : json::array();
+  std::vector<std::string> params;
+  if (table.contains("parameters"))
+    for (const auto& p : table["parameters"]) params.push_back(p.get<std::string>());
+
+  // the x axis: the first parameter with a number in every row
+  int x_axis = -1;
+  for (size_t a = 0; a < params.size() && x_axis < 0; ++a) {
+    bool numeric = !rows.empty();
+    for (const auto& r : rows)
+      numeric = numeric && r["parameters"].contains(params[a]) &&
+                std::isfinite(as_number(r["parameters"][params[a]]));
+    if (numeric) x_axis = static_cast<int>(a);
+  }
+
+  CasePage page;
+  page.title = title;
+  page.study = "sweep";
+  int failed = 0;
+  std::set<std::string> numeric;
+  for (const auto& r : rows) {
+    if (r.value("status", "") != "ok") {
+      ++failed;
+      continue;
+    }
+    if (r.contains("key_figures"))
+      for (const auto& [k, v] : r["key_figures"].items())
+        if (v.is_number()) numeric.insert(k);
+  }
+  // in the studies' own order of key figures (the first is the headline), else by name
+  std::vector<std::string> figure_names;
+  if (table.contains("figures"))
+    for (const auto& n : table["figures"])
+      if (n.is_string() && numeric.count(n.get<std::string>())) figure_names.push_back(n.get<std::string>());
+  for (const auto& n : numeric)
+    if (std::find(figure_names.begin(), figure_names.end(), n) == figure_names.end()) figure_names.push_back(n);
+  page.status = failed == 0 ? "solved" : "failed";
+  page.message = std::to_string(rows.size()) + " case(s) over " + std::to_string(params.size()) +
+                 " parameter(s); " + std::to_string(failed) + " failed";
+  page.key_figures = {{"cases", std::to_string(rows.size())}, {"failed", std::to_string(failed)}};
+
+  Section about;
+  about.id = "sweep";
+  about.heading = "The sweep";
+  about.new_page = false;
+  about.paragraph("Each row of sweep.csv (and sweep.json) is one case: its parameter values and "
+                  "the key figures of its results.json. The plots below draw every key figure "
+                  "over the first numeric parameter, one curve per combination of the others.");
+  Table axes;
+  axes.header = {"parameter", "values"};
+  for (const auto& p : params) {
+    std::set<std::string> seen;
+    std::vector<std::pair<double, std::string>> values;
+    for (const auto& r : rows) {
+      if (!r["parameters"].contains(p)) continue;
+      const std::string t = value_text(r["parameters"][p]);
+      if (seen.insert(t).second) values.emplace_back(as_number(r["parameters"][p]), t);
+    }
+    std::sort(values.begin(), values.end());
+    std::string list;
+    for (size_t k = 0; k < values.size(); ++k) {
+      if (k == 12 && values.size() > 14) {
+        list += ", ... (" + std::to_string(values.size() - 13) + " more), " + values.back().second;
+        break;
+      }
+      list += (k ? ", " : "") + values[k].second;
+    }
+    axes.rows.push_back({p, list});
+  }
+  about.table(std::move(axes));
+  if (failed > 0)
+    about.note(std::to_string(failed) + " case(s) did not pass (unsolvable or a failed check): "
+               "summary.md names them; the plots leave them out.");
+  page.sections.push_back(std::move(about));
+
+  int plots = 0;
+  Section figs;
+  figs.id = "figures";
+  figs.heading = x_axis < 0 ? "Key figures" : "Key figures over " + params[x_axis];
+  if (x_axis < 0) {
+    figs.paragraph("No parameter of this sweep takes only numbers, so there is no axis to plot "
+                   "over; sweep.csv holds every value.");
+  } else {
+    figs.paragraph("Where two solutions of a case are nearly as good, the optimum can switch "
+                   "between them from one point to the next: a curve that jumps (a root position, "
+                   "say) while the energy curve stays smooth shows such a switch, not an error.");
+    const std::string& xp = params[x_axis];
+    FigureWriter writer(dir);
+    for (const std::string& name : figure_names) {
+      // one curve per combination of the other parameters, points sorted along x
+      std::map<std::string, std::vector<std::pair<double, double>>> curves;
+      for (const auto& r : rows) {
+        if (r.value("status", "") != "ok" || !r["key_figures"].contains(name)) continue;
+        std::string label;
+        for (size_t a = 0; a < params.size(); ++a) {
+          if (static_cast<int>(a) == x_axis || !r["parameters"].contains(params[a])) continue;
+          label += (label.empty() ? "" : ", ") + params[a] + " = " + value_text(r["parameters"][params[a]]);
+        }
+        const json& v = r["key_figures"][name];
+        curves[label].emplace_back(as_number(r["parameters"][xp]), v.is_number() ? v.get<double>() : NAN);
+      }
+      // legend in the order of the other parameters' numeric values
+      std::vector<std::string> labels;
+      for (const auto& [l, pts] : curves) labels.push_back(l);
+      LinePlot plot;
+      plot.title = name;
+      plot.x_label = xp;
+      std::string unit;
+      if (table.contains("units") && table["units"].contains(name) && table["units"][name].is_string())
+        unit = table["units"][name].get<std::string>();
+      plot.y_label = unit.empty() ? name : name + " (" + unit + ")";
+      plot.height_pt = 360;
+      const std::vector<Rgb> palette = palette_colours();
+      for (const std::string& l : labels) {
+        auto pts = curves[l];
+        std::sort(pts.begin(), pts.end());
+        Series s;
+        s.label = l;
+        s.colour = palette[plot.series.size() % palette.size()];
+        s.markers = pts.size() <= 40;
+        for (const auto& [x, y] : pts) {
+          s.x.push_back(x);
+          s.y.push_back(y);
+        }
+        plot.series.push_back(std::move(s));
+      }
+      figs.figure(writer.line("sweep_" + std::to_string(plots + 1), plot,
+                              "The key figure " + name + " of every passing case over " + xp +
+                                  (labels.size() > 1 ? ", one curve per " + std::string("combination of the other parameters")
+                                                     : "")));
+      ++plots;
+    }
+  }
+  page.sections.push_back(std::move(figs));
+
+  cases::CaseInfo info;
+  info.name = title;
+  info.study = "sweep";
+  write_page(dir, page, info, "../sweep.csv");
+  return plots;
+}
+
+}  // namespace armstudy::report
