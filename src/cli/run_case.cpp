@@ -3,7 +3,9 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
+#include <cstdio>
 
 #include <algorithm>
 #include <atomic>
@@ -14,6 +16,7 @@
 #include <thread>
 
 #include "cli/provenance.hpp"
+#include "scene/osmesa_context.hpp"
 #include "report/case_report.hpp"
 #include "version.hpp"
 
@@ -21,7 +24,7 @@ namespace armstudy::app {
 namespace fs = std::filesystem;
 
 void write_file_atomic(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
+  const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp-" + process_tag());
   {
     std::ofstream out(tmp, std::ios::binary);
     if (!out) throw std::runtime_error("cannot write " + tmp.string());
@@ -60,34 +63,55 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
 }
 
 namespace {
-// removes temporary siblings of a case folder left by a run that was killed
-// (.<name>.tmp-<pid> or .<name>.old-<pid> whose process no longer exists)
-void remove_stale_siblings(const fs::path& out_dir, const std::string& name) {
-  std::error_code ec;
-  if (!fs::is_directory(out_dir, ec)) return;
-  for (const auto& e : fs::directory_iterator(out_dir, ec)) {
-    const std::string f = e.path().filename().string();
-    for (const std::string tag : {"." + name + ".tmp-", "." + name + ".old-"}) {
-      if (f.rfind(tag, 0) != 0) continue;
-      const std::string pid_text = f.substr(tag.size());
-      if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
-      const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
-      if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(e.path(), ec);
-    }
-  }
+// a process that is gone, or a zombie nobody has reaped yet (kill(pid, 0) still succeeds)
+bool process_gone(pid_t pid) {
+  if (::kill(pid, 0) != 0) return errno == ESRCH;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const size_t paren = line.rfind(')');
+  return paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] == 'Z';
 }
 }  // namespace
+
+std::string process_tag() {
+  char host[256] = {0};
+  if (::gethostname(host, sizeof host - 1) != 0 || !host[0]) std::snprintf(host, sizeof host, "host");
+  std::string h;
+  for (const char* c = host; *c; ++c) h += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '.') ? *c : '_';
+  return h + "-" + std::to_string(::getpid());
+}
+
+size_t remove_stale_outputs(const fs::path& out_dir) {
+  std::error_code ec;
+  if (!fs::is_directory(out_dir, ec)) return 0;
+  const std::string mine = process_tag();
+  const std::string host = mine.substr(0, mine.rfind('-') + 1);  // "<host>-"
+  size_t removed = 0;
+  for (const auto& e : fs::directory_iterator(out_dir, ec)) {
+    const std::string f = e.path().filename().string();
+    if (f.empty() || f[0] != '.') continue;
+    for (const char* kind : {".tmp-", ".old-"}) {
+      const size_t at = f.rfind(kind);
+      if (at == std::string::npos || f.compare(at + 5, host.size(), host) != 0) continue;
+      const std::string pid_text = f.substr(at + 5 + host.size());
+      if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+      const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+      if (pid != ::getpid() && process_gone(pid)) removed += fs::remove_all(e.path(), ec) > 0;
+    }
+  }
+  return removed;
+}
 
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   CaseOutcome outcome;
   const fs::path final_dir = options.out_dir / c.info.name;
   outcome.folder = final_dir;
-  const std::string tag = std::to_string(::getpid());
+  const std::string tag = process_tag();
   const fs::path tmp_dir = options.out_dir / ("." + c.info.name + ".tmp-" + tag);
   try {
     fs::create_directories(options.out_dir);
-    remove_stale_siblings(options.out_dir, c.info.name);
     fs::remove_all(tmp_dir);
     fs::create_directories(tmp_dir);
 
@@ -116,6 +140,13 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       frames = c.run->render(tmp_dir, c.info);
     }
     j["frames"] = frames;
+    if (!frames.empty()) {
+      const scene::GlInfo gl = scene::gl_info();
+      j["provenance"]["gl_renderer"] = gl.renderer;
+      j["provenance"]["gl_version"] = gl.version;
+      if (const size_t at = gl.version.find("Mesa "); at != std::string::npos)
+        j["provenance"]["mesa_version"] = gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
+    }
     c.run->report(tmp_dir, c.info, j);
     // results.json last, listing every file written beside it with its sha256
     j["files"] = list_files(tmp_dir, "results.json");

@@ -42,7 +42,16 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
 /// problem (empty: all written).
 std::vector<std::string> finish_reports(const RunOptions& options, int jobs);
 
-/// Writes `text` to `path` through a temporary file and a rename.
+/// "<host>-<pid>" of this process: names temporary outputs so that runs on several hosts
+/// sharing one output folder (Slurm, GNU Parallel --sshlogin) never touch each other's.
+std::string process_tag();
+
+/// Removes what killed runs of this host left in out_dir: hidden `.<name>.tmp-<host>-<pid>`
+/// and `.<name>.old-<host>-<pid>` entries whose process is gone (or is a zombie). Other hosts' entries are left
+/// alone (their processes cannot be checked from here). Returns how many were removed.
+size_t remove_stale_outputs(const std::filesystem::path& out_dir);
+
+/// Writes `text` to `path` through a hidden temporary sibling and a rename.
 void write_file_atomic(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace armstudy::app

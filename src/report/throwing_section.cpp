@@ -309,13 +309,14 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   if (!ct.rows.empty()) conv.table(std::move(ct));
   const json& rep = obj(th, "replay");
   const json& integ = obj(th, "integration");
+  const std::string fine = jsonv::str(integ, "fine_steps_factor") + "x";
   Table acc;
   acc.caption = "Accuracy of the simulation behind every number above.";
   acc.header = {"check", "value"};
   acc.rows = {{"integration", jsonv::str(integ, "method")},
               {"step", jsonv::sig(integ, "step_s", 3) + " s"},
-              {"energy error against 4x the steps", jsonv::sig(integ, "energy_error_vs_4x_steps", 3)},
-              {"θ3 error against 4x the steps", jsonv::sig(integ, "theta3_error_vs_4x_steps_rad", 3) + " rad"},
+              {"energy error against " + fine + " the steps", jsonv::sig(integ, "energy_error_vs_fine_steps", 3)},
+              {"θ3 error against " + fine + " the steps", jsonv::sig(integ, "theta3_error_vs_fine_steps_rad", 3) + " rad"},
               {"open-loop voltage replay", jsonv::str(rep, "integrator")},
               {"largest replay error", jsonv::sig(rep, "max_error_rad", 3) + " rad (tolerance " +
                                            jsonv::sig(rep, "tolerance_rad", 3) + " rad)"}};

@@ -3,11 +3,15 @@
 #include <GL/osmesa.h>
 
 #include <cstdlib>
+#include <mutex>
 
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
 namespace {
+std::mutex g_info_mutex;
+GlInfo g_info;
+
 constexpr const char* kNoRender =
     "; frames cannot be rendered on this machine: run with --no-render to produce everything "
     "else";
@@ -34,6 +38,15 @@ OsmesaContext::OsmesaContext(int width, int height, unsigned format)
     throw SceneError("OSMesa runs the softpipe renderer ('" + renderer_ +
                      "'), about 20x slower than llvmpipe; unset GALLIUM_DRIVER" + kNoRender);
   }
+  const GLubyte* v = glGetString(GL_VERSION);
+  version_ = v ? reinterpret_cast<const char*>(v) : "";
+  std::lock_guard<std::mutex> lock(g_info_mutex);
+  g_info = {renderer_, version_};
+}
+
+GlInfo gl_info() {
+  std::lock_guard<std::mutex> lock(g_info_mutex);
+  return g_info;
 }
 
 void OsmesaContext::make_current() {

@@ -24,12 +24,24 @@ class OsmesaContext {
   void make_current();
   /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   const std::string& renderer() const { return renderer_; }
+  /// GL_VERSION, with the Mesa version, e.g. "4.5 (Compatibility Profile) Mesa 22.3.6".
+  const std::string& version() const { return version_; }
 
  private:
   void* ctx_ = nullptr;  // OSMesaContext
   std::vector<unsigned char> buffer_;
   int width_ = 0, height_ = 0;
   std::string renderer_;
+  std::string version_;
 };
+
+/// GL_RENDERER and GL_VERSION of the contexts this process created (for provenance).
+struct GlInfo {
+  std::string renderer;  ///< empty when no context was created
+  std::string version;
+};
+
+/// The renderer and version of the last OsmesaContext created in this process (thread-safe).
+GlInfo gl_info();
 
 }  // namespace armstudy::scene

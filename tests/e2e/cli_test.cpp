@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -70,7 +71,7 @@ TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(run_cli("run --bogus x.yaml").exit_code, 2);  // unknown option
   EXPECT_EQ(run_cli("frobnicate").exit_code, 2);
   EXPECT_EQ(run_cli("run /nonexistent/case.yaml").exit_code, 2);
-  EXPECT_EQ(run_cli("run --jobs 0 " + (kSource / "reports/cases/placement-example-1.yaml").string()).exit_code, 2);
+  EXPECT_EQ(run_cli("run --jobs 0 " + (kSource / "reports/cases/placement-example-2.yaml").string()).exit_code, 2);
 }
 
 TEST(Cli, ValidateAcceptsEveryBundledCase) {
@@ -83,13 +84,13 @@ TEST(Cli, ValidateAcceptsEveryBundledCase) {
 
 TEST(Cli, RunWritesResultsJsonWithProvenance) {
   const fs::path out = temp_dir("results");
-  const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
+  const fs::path c = kSource / "reports/cases/placement-example-2.yaml";
   const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto j = nlohmann::json::parse(read_text(out / "placement-example-1" / "results.json"));
+  const auto j = nlohmann::json::parse(read_text(out / "placement-example-2" / "results.json"));
   EXPECT_EQ(j["study"], "placement");
   EXPECT_FALSE(j["armstudy_version"].get<std::string>().empty());
-  EXPECT_EQ(j["case"]["name"], "placement-example-1");
+  EXPECT_EQ(j["case"]["name"], "placement-example-2");
   EXPECT_EQ(j["case"]["path"], c.string());
   EXPECT_EQ(j["case"]["sha256"], armstudy::cases::sha256_hex(read_text(c)));
   EXPECT_TRUE(j.contains("placement"));
@@ -105,10 +106,18 @@ TEST(Cli, BadCaseLeavesAnEarlierReportUntouchedAndWritesNothing) {
   const fs::path work = temp_dir("atomic_cases");
   fs::create_directories(work);
   const fs::path good = work / "case.yaml";
-  fs::copy_file(kSource / "reports/cases/placement-example-1.yaml", good);
+  fs::copy_file(kSource / "reports/cases/placement-example-2.yaml", good);
   ASSERT_EQ(run_cli("run --no-render --out " + out.string() + " " + good.string()).exit_code, 0);
-  const fs::path results = out / "placement-example-1" / "results.json";
+  const fs::path results = out / "placement-example-2" / "results.json";
   const std::string before = read_text(results);
+  // every file of the output folder (case folder, index, summary, junit) by content
+  const auto snapshot = [&] {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(out))
+      if (e.is_regular_file()) files[fs::relative(e.path(), out).string()] = read_text(e.path());
+    return files;
+  };
+  const auto files_before = snapshot();
 
   // same case name, but a bad value: exit 2 and the earlier report stays as it was
   std::string text = read_text(good);
@@ -118,16 +127,14 @@ TEST(Cli, BadCaseLeavesAnEarlierReportUntouchedAndWritesNothing) {
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find(good.string() + ":"), std::string::npos) << bad.output;
   EXPECT_EQ(read_text(results), before);
-  size_t entries = 0;
-  for (const auto& e : fs::directory_iterator(out)) { (void)e; ++entries; }
-  EXPECT_EQ(entries, 1u) << "only the earlier case folder may exist";
+  EXPECT_TRUE(snapshot() == files_before) << "the bad run changed or added files in the output folder";
   fs::remove_all(out);
   fs::remove_all(work);
 }
 
 TEST(Cli, DuplicateCaseNamesAreRejectedBeforeAnythingRuns) {
   const fs::path out = temp_dir("dupnames");
-  const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
+  const fs::path c = kSource / "reports/cases/placement-example-2.yaml";
   const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string() + " " + c.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("expected unique names"), std::string::npos) << r.output;
@@ -136,12 +143,30 @@ TEST(Cli, DuplicateCaseNamesAreRejectedBeforeAnythingRuns) {
 
 TEST(Cli, ProgressIsPlainLinesWithoutATerminal) {
   const fs::path out = temp_dir("progress");
-  const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
+  const fs::path c = kSource / "reports/cases/placement-example-2.yaml";
   const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find('\r'), std::string::npos) << "no carriage returns in a log";
   EXPECT_EQ(r.output.find("\033["), std::string::npos) << "no terminal escapes in a log";
-  EXPECT_NE(r.output.find("done: placement-example-1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("done: placement-example-2"), std::string::npos) << r.output;
+  fs::remove_all(out);
+}
+
+}  // namespace
+
+namespace {
+
+// the bundled example 1 asks for a line of length Lmax: it only fits as a singular motion
+TEST(Cli, UnsolvableCaseExitsOneWithTheReasonAndAReport) {
+  const fs::path out = temp_dir("unsolvable");
+  const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
+  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAILED: placement-example-1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no admissible placement"), std::string::npos) << r.output;
+  const auto j = nlohmann::json::parse(read_text(out / "placement-example-1" / "results.json"));
+  EXPECT_EQ(j["status"], "unsolvable");
+  EXPECT_NE(j["message"].get<std::string>().find("singular"), std::string::npos);
   fs::remove_all(out);
 }
 
