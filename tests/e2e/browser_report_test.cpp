@@ -22,15 +22,12 @@
 #include <thread>
 #include <vector>
 
+#include "testing/files.hpp"
+
 namespace {
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using armstudy::testing::slurp;
 
 // runs a shell command, returns its exit status; stdout and stderr go to files
 int run(const std::string& cmd) {

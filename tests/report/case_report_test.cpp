@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/files.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -18,12 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using armstudy::testing::slurp;
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("armstudy_case_report_test_" + name);

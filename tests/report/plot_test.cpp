@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/files.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,12 +15,7 @@ namespace armstudy::report {
 namespace {
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using armstudy::testing::slurp;
 
 fs::path test_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("armstudy_plot_test_" + name);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/files.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -14,18 +16,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using armstudy::testing::slurp;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("armstudy_sweep_report_test_" + name);
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return armstudy::testing::fresh_dir("sweep_report_test_" + name); }
 
 // ratio in {0.2, 0.4, 0.6} x fraction in {0.5, 0.8}; one case failed
 json table() {
