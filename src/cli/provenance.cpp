@@ -29,7 +29,7 @@ std::string cpu_model() {
 nlohmann::json provenance() {
   nlohmann::json p;
   p["armstudy_version"] = kVersion;
-  if (std::string(kGitCommit).size()) p["git_commit"] = kGitCommit;
+  if (*git_commit()) p["git_commit"] = git_commit();
   p["mujoco_version"] = mj_versionString();
 #if defined(__clang__)
   p["compiler"] = std::string("clang ") + __clang_version__;

@@ -41,7 +41,7 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
   nlohmann::json j;
   j["schema_version"] = 1;
   j["armstudy_version"] = kVersion;
-  if (std::string(kGitCommit).size()) j["git_commit"] = kGitCommit;
+  if (*git_commit()) j["git_commit"] = git_commit();
   j["study"] = info.study;
   j["case"] = {{"name", info.name}, {"path", info.path}, {"sha256", info.sha256}};
   if (!info.description.empty()) j["case"]["description"] = info.description;
