@@ -22,6 +22,8 @@
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "testing/files.hpp"
 
 namespace {
@@ -297,6 +299,38 @@ TEST_F(BrowserReport, PdfHasAPagePerSectionAndNoBlankPage) {
     }
     EXPECT_EQ(rasterised, pages) << name;
   }
+}
+
+}  // namespace
+
+namespace {
+
+// what CI reads of the bundled run: every results.json valid against the schema, a junit
+// testcase per case and check, summary.md naming every case
+TEST_F(BrowserReport, BundledResultsValidateAndCiFilesCountEveryCheck) {
+  const fs::path src(ARMSTUDY_SOURCE_DIR);
+  const std::string cmd = "/usr/bin/python3 " + quote((src / "scripts/validate_results.py").string()) +
+                          " " + quote((src / "results.schema.json").string()) + " " +
+                          quote(out_.string()) + " > /dev/null";
+  EXPECT_EQ(run(cmd), 0) << "a bundled results.json does not validate against results.schema.json";
+  size_t expected = 0, failures = 0;
+  const std::string summary = slurp(out_ / "summary.md");
+  for (const auto& n : bundled_case_names()) {
+    const auto j = nlohmann::json::parse(slurp(out_ / n / "results.json"));
+    expected += 1 + j["checks"].size();
+    failures += j["status"] != "solved";
+    for (const auto& c : j["checks"]) failures += !c["passed"].get<bool>();
+    EXPECT_NE(summary.find(n), std::string::npos) << n << " missing from summary.md";
+  }
+  const std::string junit = slurp(out_ / "junit.xml");
+  size_t testcases = 0;
+  for (size_t at = junit.find("<testcase "); at != std::string::npos; at = junit.find("<testcase ", at + 1))
+    ++testcases;
+  EXPECT_EQ(testcases, expected);
+  size_t failed = 0;
+  for (size_t at = junit.find("<failure"); at != std::string::npos; at = junit.find("<failure", at + 1))
+    ++failed;
+  EXPECT_EQ(failed, failures);
 }
 
 }  // namespace
