@@ -15,6 +15,7 @@
 #include <cstdio>
 
 #include "cases/pendulum_case.hpp"
+#include "cli/json_numbers.hpp"
 #include "cli/pipeline.hpp"
 #include "report/case_report.hpp"
 #include "scene/pendulum_frames.hpp"
@@ -24,13 +25,8 @@ namespace {
 using nlohmann::json;
 constexpr double kDeg = core::kPi / 180.0;
 
-double sig(double v, int digits = 10) {
-  if (!std::isfinite(v) || v == 0.0) return v;
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return std::strtod(buf, nullptr);
-}
-json num(double v, int digits = 10) { return std::isfinite(v) ? json(sig(v, digits)) : json(nullptr); }
+double sig(double v, int digits = 10) { return round_sig(v, digits); }
+json num(double v, int digits = 10) { return json_number(v, digits); }
 json xy(const Eigen::Vector2d& v) { return json::array({num(v.x(), 8), num(v.y(), 8)}); }
 json vec(const core::JointVector& v, int digits = 8) {
   json a = json::array();

@@ -36,6 +36,7 @@
 #include <limits>
 
 #include "cases/placement_case.hpp"
+#include "cli/json_numbers.hpp"
 #include "cli/pipeline.hpp"
 #include "report/case_report.hpp"
 #include "scene/placement_frames.hpp"
@@ -49,14 +50,9 @@ using nlohmann::json;
 constexpr double kDeg = core::kPi / 180.0;
 
 // a number rounded to `digits` significant digits (JSON stays short and stable)
-double sig(double v, int digits = 7) {
-  if (!std::isfinite(v) || v == 0.0) return v;
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return std::strtod(buf, nullptr);
-}
+double sig(double v, int digits = 7) { return round_sig(v, digits); }
 
-json num(double v, int digits = 7) { return std::isfinite(v) ? json(sig(v, digits)) : json(nullptr); }
+json num(double v, int digits = 7) { return json_number(v, digits); }
 
 json pair(const Eigen::Vector2d& v, int digits = 7) { return json::array({num(v.x(), digits), num(v.y(), digits)}); }
 

@@ -31,6 +31,7 @@
 #include <cstdio>
 
 #include "cases/throwing_case.hpp"
+#include "cli/json_numbers.hpp"
 #include "cli/pipeline.hpp"
 #include "report/case_report.hpp"
 #include "scene/throwing_frames.hpp"
@@ -41,13 +42,8 @@ using nlohmann::json;
 namespace st = studies;
 constexpr double kDeg = core::kPi / 180.0;
 
-double sig(double v, int digits = 8) {
-  if (!std::isfinite(v) || v == 0.0) return v;
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return std::strtod(buf, nullptr);
-}
-json num(double v, int digits = 8) { return std::isfinite(v) ? json(sig(v, digits)) : json(nullptr); }
+double sig(double v, int digits = 8) { return round_sig(v, digits); }
+json num(double v, int digits = 8) { return json_number(v, digits); }
 template <typename V>
 json arr(const V& v, int digits = 7) {
   json a = json::array();

@@ -21,6 +21,9 @@ Result solve(const Spec& spec, const ProgressFn& progress = {});
 /// exact solution (1e-6 relative) and by the others.
 std::vector<Check> checks(const Result& result);
 
+/// Relative limit overshoot tolerated for the exact solution under dense resampling.
+inline constexpr double kExactTolerance = 1e-6;
+
 /// Relative limit overshoot tolerated for the DP and Complex solutions: they enforce the
 /// limits at `checks_per_segment` + 1 points of each segment, not in between.
 inline constexpr double kCoarseViolationTolerance = 1e-3;

@@ -1,0 +1,48 @@
+#pragma once
+/// `study: time_optimal` case files -> studies::time_optimal::Spec.
+///
+/// The arm (`arm:`, see arm_loader.hpp) must have 2 active links; without `arm:` it is the
+/// source's model (004_87cbdf4981aa31c3.txt): massless links with a 1.0 kg point mass at the
+/// end of each, in a horizontal plane, with L1 = 0.5 m and L2 = 0.4 m (the source gives no
+/// lengths; studies::time_optimal::default_arm says why these). `gravity:` may be non-zero:
+/// the torque limits must then also hold the arm up.
+///
+/// ```yaml
+/// time_optimal:
+///   path:
+///     kind: line             # line (2 points), polyline (stops at every corner) or spline
+///                            # (natural cubic through the points); default line
+///     points_m: [[0.6, -0.3], [0.3, 0.5]]   # tip points, m, in the arm's base frame (>= 2)
+///   configuration: 1         # elbow: 1 has q2 in (0, pi), 2 has q2 in (-pi, 0) (default 1)
+///   velocity_limit_rad_s: [3.0, 4.0]        # |q_j'| per joint, rad/s, >= 0 (default 3, 4)
+///   torque_limit_Nm: [10.0, 4.0]            # |tau_j| per joint, N m, >= 0 (default 10, 4)
+///   acceleration_limit_rad_s2: [50, 80]     # optional |q_j''| per joint, rad/s^2, >= 0
+///   dp:                      # dynamic programming as in the source
+///     segments: 10           # N, constant acceleration in each (default 10), in [1, 2000]
+///     levels: 200            # velocity levels per interior node (default 200), in [2, 20000]
+///     checks_per_segment: 8  # points per segment where limits are checked, +1 (default 8)
+///     states: [path_speed]   # one DP run per entry: path_speed (s', default) and/or
+///                            # joint1_velocity (q1', the source's; needs q1 monotonic)
+///     convergence_segments: [10, 20, 50, 100, 200]   # N of the convergence table ([]: none)
+///   complex:                 # Box's Complex method on the DP's segments
+///     enabled: true          # default true
+///     max_iterations: 20000  # reflections at most (default 20000)
+///     tolerance: 1.0e-10     # relative spread of the complex's times at convergence
+///     seed: 1                # of its random start points (default 1)
+///   exact:                   # reachability analysis on a fine grid
+///     grid_points: 1000      # nodes (default 1000), in [2, 100000]
+///     checks_per_interval: 2 # sub-intervals per grid interval where limits hold (default 2)
+///   motion_steps: 200        # equal time steps of the motion the frames show (default 200)
+/// ```
+
+#include "cases/yaml_reader.hpp"
+#include "studies/time_optimal/spec.hpp"
+
+namespace armstudy::cases {
+
+/// Reads `arm:`, `gravity:` and `time_optimal:` from the case's root mapping. Every
+/// problem is recorded in root.diag() at its file:line:col; the returned spec is
+/// meaningful only when no error was recorded.
+studies::time_optimal::Spec load_time_optimal(Map& root);
+
+}  // namespace armstudy::cases
