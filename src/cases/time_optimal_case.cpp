@@ -71,7 +71,7 @@ void load_path(Map& t, to::Spec* spec) {
 void load_dp(Map& t, to::DpSettings* dp) {
   auto m = t.map("dp");
   if (!m) return;
-  dp->segments = m->integer_or("segments", dp->segments, 1, 2000);
+  dp->segments = m->integer_or("segments", dp->segments, 2, 2000);
   dp->levels = m->integer_or("levels", dp->levels, 2, 20000);
   dp->checks_per_segment = m->integer_or("checks_per_segment", dp->checks_per_segment, 1, 1000);
   if (auto st = m->seq("states")) {
@@ -95,7 +95,7 @@ void load_dp(Map& t, to::DpSettings* dp) {
     const YAML::Node n = m->get("convergence_segments");
     dp->convergence_segments.clear();
     if (!(n.IsSequence() && n.size() == 0)) {
-      if (const auto v = m->numbers("convergence_segments", NumberRule::range(1, 2000, ""))) {
+      if (const auto v = m->numbers("convergence_segments", NumberRule::range(2, 2000, ""))) {
         for (size_t i = 0; i < v->size(); ++i) {
           if ((*v)[i] != std::floor((*v)[i])) {
             m->error("convergence_segments", "'time_optimal.dp.convergence_segments[" + std::to_string(i + 1) +
@@ -139,7 +139,7 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
     c->finish();
   }
   if (auto e = t->map("exact")) {
-    spec.exact.grid_points = e->integer_or("grid_points", spec.exact.grid_points, 2, 100000);
+    spec.exact.grid_points = e->integer_or("grid_points", spec.exact.grid_points, 3, 100000);
     spec.exact.checks_per_interval = e->integer_or("checks_per_interval", spec.exact.checks_per_interval, 1, 100);
     e->finish();
   }
@@ -147,19 +147,19 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
   // a polyline needs at least one segment per piece
   if (spec.path.kind == to::PathKind::kPolyline && spec.path.points.size() >= 2) {
     const int pieces = static_cast<int>(spec.path.points.size()) - 1;
-    if (spec.dp.segments < pieces)
+    if (spec.dp.segments < 2 * pieces)
       root.error("time_optimal", "'time_optimal.dp.segments' is " + std::to_string(spec.dp.segments) +
-                                     "; expected at least one segment per polyline piece (" +
-                                     std::to_string(pieces) + ")");
-    if (spec.exact.grid_points - 1 < pieces)
+                                     "; expected at least two segments per polyline piece (" +
+                                     std::to_string(pieces) + " pieces): the arm stops at both ends of each");
+    if (spec.exact.grid_points - 1 < 2 * pieces)
       root.error("time_optimal", "'time_optimal.exact.grid_points' is " + std::to_string(spec.exact.grid_points) +
-                                     "; expected at least " + std::to_string(pieces + 1) +
-                                     " (one interval per polyline piece)");
+                                     "; expected at least " + std::to_string(2 * pieces + 1) +
+                                     " (two intervals per polyline piece)");
     for (int n : spec.dp.convergence_segments)
-      if (n < pieces)
+      if (n < 2 * pieces)
         root.error("time_optimal", "'time_optimal.dp.convergence_segments' holds " + std::to_string(n) +
-                                       "; expected at least one segment per polyline piece (" +
-                                       std::to_string(pieces) + ")");
+                                       "; expected at least two segments per polyline piece (" +
+                                       std::to_string(pieces) + " pieces)");
   }
   t->finish();
   return spec;

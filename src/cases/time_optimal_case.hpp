@@ -18,19 +18,21 @@
 ///   torque_limit_Nm: [10.0, 4.0]            # |tau_j| per joint, N m, >= 0 (default 10, 4)
 ///   acceleration_limit_rad_s2: [50, 80]     # optional |q_j''| per joint, rad/s^2, >= 0
 ///   dp:                      # dynamic programming as in the source
-///     segments: 10           # N, constant acceleration in each (default 10), in [1, 2000]
+///     segments: 10           # N, constant acceleration in each (default 10), in [2, 2000]
+///                            # (a polyline: at least 2 per piece, the arm stops at corners)
 ///     levels: 200            # velocity levels per interior node (default 200), in [2, 20000]
 ///     checks_per_segment: 8  # points per segment where limits are checked, +1 (default 8)
 ///     states: [path_speed]   # one DP run per entry: path_speed (s', default) and/or
 ///                            # joint1_velocity (q1', the source's; needs q1 monotonic)
-///     convergence_segments: [10, 20, 50, 100, 200]   # N of the convergence table ([]: none)
+///     convergence_segments: [10, 20, 50, 100, 200]   # N of the convergence table ([]: none),
+///                            # each with levels x N / segments velocity levels
 ///   complex:                 # Box's Complex method on the DP's segments
 ///     enabled: true          # default true
 ///     max_iterations: 20000  # reflections at most (default 20000)
 ///     tolerance: 1.0e-10     # relative spread of the complex's times at convergence
 ///     seed: 1                # of its random start points (default 1)
 ///   exact:                   # reachability analysis on a fine grid
-///     grid_points: 1000      # nodes (default 1000), in [2, 100000]
+///     grid_points: 1000      # nodes (default 1000), in [3, 100000]
 ///     checks_per_interval: 2 # sub-intervals per grid interval where limits hold (default 2)
 ///   motion_steps: 200        # equal time steps of the motion the frames show (default 200)
 /// ```

@@ -170,4 +170,22 @@ TEST(Cli, UnsolvableCaseExitsOneWithTheReasonAndAReport) {
   fs::remove_all(out);
 }
 
+// a joint that must move but may not: exit 1, the message names the limit and the place
+TEST(Cli, InfeasibleTimeOptimalCaseExitsOneNamingTheLimitAndThePlace) {
+  const fs::path out = temp_dir("to_infeasible");
+  const fs::path work = temp_dir("to_infeasible_case");
+  fs::create_directories(work);
+  const fs::path c = work / "case.yaml";
+  std::ofstream(c) << "study: time_optimal\nname: frozen-elbow\ntime_optimal:\n"
+                      "  path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n"
+                      "  velocity_limit_rad_s: [3.0, 0.0]\n";
+  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("joint 2 velocity limit 0 rad/s at s = 0.000 m"), std::string::npos) << r.output;
+  const auto j = nlohmann::json::parse(read_text(out / "frozen-elbow" / "results.json"));
+  EXPECT_EQ(j["status"], "unsolvable");
+  fs::remove_all(out);
+  fs::remove_all(work);
+}
+
 }  // namespace

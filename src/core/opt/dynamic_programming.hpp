@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/check.hpp"
@@ -25,12 +26,15 @@ struct DpSolution {
   bool feasible() const { return std::isfinite(cost); }
 };
 
-/// Minimises sum_k cost(k, s_k, s_{k+1}) over state paths s_0..s_K with 0 <= s_k < levels[k].
-/// `cost` is any callable double(int k, int i, int j) returning +inf for a forbidden
-/// transition (any finite cost, of either sign, is handled exactly).
-/// @throws std::invalid_argument if levels has < 2 nodes or a node has no state.
-template <typename Cost>
-DpSolution solve_staged_dp(const std::vector<int>& levels, Cost&& cost) {
+/// Minimises sum_k cost(k, s_k, s_{k+1}) over state paths s_0..s_K with 0 <= s_k < levels[k],
+/// trying from state i at node k only the successors j in candidates(k, i) = [first, last)
+/// (clamped to the node's states): a caller that knows every other transition is forbidden
+/// (e.g. from bounds on the acceleration) saves their evaluations, and the result is the
+/// same as with every successor. `cost` is any callable double(int k, int i, int j)
+/// returning +inf for a forbidden transition (any finite cost, of either sign, is handled
+/// exactly). @throws std::invalid_argument if levels has < 2 nodes or a node has no state.
+template <typename Cost, typename Candidates>
+DpSolution solve_staged_dp(const std::vector<int>& levels, Cost&& cost, Candidates&& candidates) {
   const int nodes = static_cast<int>(levels.size());
   ARM_THROW_UNLESS(nodes >= 2, "staged DP has " << nodes << " nodes; should have >= 2");
   for (int k = 0; k < nodes; ++k)
@@ -50,7 +54,10 @@ DpSolution solve_staged_dp(const std::vector<int>& levels, Cost&& cost) {
     for (int i = 0; i < levels[k]; ++i) {
       double best = kInf;
       int arg = -1;
-      for (int j = 0; j < levels[k + 1]; ++j) {
+      const std::pair<int, int> range = candidates(k, i);
+      const int first = range.first < 0 ? 0 : range.first;
+      const int last = range.second > levels[k + 1] ? levels[k + 1] : range.second;
+      for (int j = first; j < last; ++j) {
         if (!std::isfinite(later[j])) continue;
         ++sol.evaluations;
         const double c = cost(k, i, j);
@@ -74,6 +81,14 @@ DpSolution solve_staged_dp(const std::vector<int>& levels, Cost&& cost) {
   sol.states[0] = s0;
   for (int k = 0; k + 1 < nodes; ++k) sol.states[k + 1] = next[k][sol.states[k]];
   return sol;
+}
+
+/// solve_staged_dp over every successor of every state (sum_k levels[k] * levels[k+1]
+/// transitions).
+template <typename Cost>
+DpSolution solve_staged_dp(const std::vector<int>& levels, Cost&& cost) {
+  return solve_staged_dp(levels, std::forward<Cost>(cost),
+                         [&](int k, int) { return std::pair<int, int>(0, levels[k + 1]); });
 }
 
 }  // namespace armstudy::core::opt

@@ -73,9 +73,33 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
         x[k].push_back(v * v);
       }
     }
-    const core::opt::DpSolution sol = core::opt::solve_staged_dp(count, [&](int k, int i, int j) {
-      return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
-    });
+    // the limits at the check points of interval k as rows in (x_k, u): from x_k, only
+    // the u in u_range(rows, x_k) can meet them, i.e. x_k+1 = x_k + 2 ds u in a band
+    std::vector<std::vector<Row>> rows(n - 1);
+    for (int k = 0; k + 1 < n; ++k) {
+      const double ds = d.nodes[k + 1] - d.nodes[k];
+      for (int m = 0; m <= checks; ++m)
+        append_rows(d.pts[k][m], pb.limits, 2.0 * ds * m / checks, m, &rows[k]);
+    }
+    const auto band = [&](int k, int i) {
+      const double x0 = x[k][i], ds = d.nodes[k + 1] - d.nodes[k];
+      for (const Row& r : rows[k])
+        if (r.cu == 0.0 && (r.cx * x0 < r.lo || r.cx * x0 > r.hi)) return std::pair<int, int>(0, 0);
+      const URange ur = u_range(rows[k], x0);
+      if (ur.lo > ur.hi) return std::pair<int, int>(0, 0);
+      const std::vector<double>& next = x[k + 1];
+      // one level of slack on each side: the cost function decides exactly
+      const double lo = x0 + 2 * ds * ur.lo, hi = x0 + 2 * ds * ur.hi;
+      const int first = static_cast<int>(std::lower_bound(next.begin(), next.end(), lo) - next.begin()) - 1;
+      const int last = static_cast<int>(std::upper_bound(next.begin(), next.end(), hi) - next.begin()) + 1;
+      return std::pair<int, int>(first, last);
+    };
+    const core::opt::DpSolution sol = core::opt::solve_staged_dp(
+        count,
+        [&](int k, int i, int j) {
+          return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
+        },
+        band);
     out.evaluations = sol.evaluations;
     if (!sol.feasible()) {
       out.message = "no sequence of the " + std::to_string(levels) +

@@ -100,7 +100,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   {
     // limits hold at the check points of each interval; between them a limit may be
     // overshot by O(h^2). The checks are doubled until the dense resampling meets every
-    // limit to kExactTolerance / 2 (at most kMaxRefinements times); run time includes it.
+    // limit to kExactTolerance (at most kMaxRefinements times); run time includes it.
     SolverResult r;
     r.name = "exact";
     r.intervals = static_cast<int>(grid.size()) - 1;
@@ -108,7 +108,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     int checks = spec.exact.checks_per_interval;
     SolverOutput o = solve_exact(pb, grid, checks);
     finish(pb, o, spec.resample_per_interval, &r);
-    for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance / 2; ++k) {
+    for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance; ++k) {
       checks *= 2;
       o = solve_exact(pb, grid, checks);
       finish(pb, o, spec.resample_per_interval, &r);
@@ -175,7 +175,11 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   const auto run_row = [&](size_t i) {
     ConvergenceRow& row = res.convergence[i];
     row.segments = spec.dp.convergence_segments[i];
-    row.levels = spec.dp.levels;
+    // the state grid grows with N (levels x N / N_case): a segment's reachable speeds span
+    // ~1/N of the range, so fixed levels would leave finer segments few reachable states
+    // and the quantisation loss, ~one level per segment, would grow with N
+    const double grow = static_cast<double>(row.segments) / std::max(1, spec.dp.segments);
+    row.levels = static_cast<int>(std::lround(spec.dp.levels * std::max(1.0, grow)));
     // fewer check points on shorter segments: about 80 over the path, at least 2 per segment
     const int checks = std::max(2, 80 / row.segments);
     const auto t0 = std::chrono::steady_clock::now();

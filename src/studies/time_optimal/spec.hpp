@@ -35,7 +35,8 @@ struct DpSettings {
   int levels = 200;           ///< velocity levels per interior node
   int checks_per_segment = 8; ///< points per segment where limits are checked (>= 1)
   std::vector<DpState> states{DpState::kPathSpeed};  ///< one DP run per entry
-  /// N of the convergence table (path-speed state, `levels` levels); empty: no table
+  /// N of the convergence table (path-speed state, levels x N / segments levels, at least
+  /// `levels`); empty: no table
   std::vector<int> convergence_segments{10, 20, 50, 100, 200};
 };
 
