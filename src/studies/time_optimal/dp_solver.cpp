@@ -10,6 +10,7 @@
 namespace armstudy::studies::time_optimal {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kComplexRestarts = 20;  // restarts of the Complex method from its best point
 
 // the discretisation shared by the path-speed DP and the Complex method
 struct Discretisation {
@@ -221,12 +222,23 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
   opt.max_iterations = settings.max_iterations;
   opt.tolerance = settings.tolerance;
   opt.seed = settings.seed;
-  const core::opt::ComplexResult r = core::opt::box_complex(
-      [&](const Eigen::VectorXd& z) { return total_time(speeds(z)); },
-      [&](const Eigen::VectorXd& z) { return std::isfinite(total_time(speeds(z))); }, lo, hi, z0,
-      opt);
-  out.evaluations = r.evaluations;
-  out.iterations = r.iterations;
+  // a complex collapses onto the constraint boundary it first meets (Box 1965 restarts it):
+  // restart from the best point with fresh random points until a restart gains nothing
+  core::opt::ComplexResult r;
+  for (int restart = 0; restart <= kComplexRestarts; ++restart) {
+    opt.seed = settings.seed + restart;
+    const core::opt::ComplexResult next = core::opt::box_complex(
+        [&](const Eigen::VectorXd& z) { return total_time(speeds(z)); },
+        [&](const Eigen::VectorXd& z) { return std::isfinite(total_time(speeds(z))); }, lo, hi, z0,
+        opt);
+    out.evaluations += next.evaluations;
+    out.iterations += next.iterations;
+    const bool gained = restart == 0 || next.f < r.f * (1 - 1e-9);
+    if (restart == 0 || next.f < r.f) r = next;
+    out.restarts = restart;
+    if (!gained) break;
+    z0 = r.x;
+  }
   out.profile.law = SegmentLaw::kPathAcceleration;
   out.profile.s = d.nodes;
   out.profile.sd = speeds(r.x);

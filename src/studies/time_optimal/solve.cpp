@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <thread>
 
@@ -131,6 +132,25 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.path_p.resize(2, grid.size());
   for (size_t k = 0; k < grid.size(); ++k) res.path_p.col(k) = pb.path.at(grid[k]).p;
 
+  // DP and Complex enforce the limits at checks_per_segment + 1 points of each of their
+  // long segments; between them a limit can be overshot. Like the exact solver, each is
+  // solved again with doubled checks until its dense resampling meets every limit to
+  // kCoarseViolationTolerance (at most kMaxRefinements times); run time includes it.
+  const auto run_coarse = [&](SolverResult* r, const std::function<SolverOutput(int)>& run) {
+    const auto t0 = std::chrono::steady_clock::now();
+    int checks = spec.dp.checks_per_segment;
+    SolverOutput o = run(checks);
+    finish(pb, o, dense_points(spec.dp.segments, spec.resample_per_interval), r);
+    for (int k = 0; k < kMaxRefinements && o.solved && r->violation.worst > kCoarseViolationTolerance; ++k) {
+      checks *= 2;
+      o = run(checks);
+      finish(pb, o, dense_points(spec.dp.segments, spec.resample_per_interval), r);
+    }
+    r->run_time = seconds_since(t0);
+    r->method += ", limits enforced at " + std::to_string(checks + 1) + " points of every segment";
+    return o;
+  };
+
   // dynamic programming, one run per requested state
   double done = 0.15;
   for (DpState state : spec.dp.states) {
@@ -144,11 +164,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
                (state == DpState::kPathSpeed ? "path speed s'" : "joint-1 velocity q1'");
     r.intervals = spec.dp.segments;
     r.levels = spec.dp.levels;
-    const auto t0 = std::chrono::steady_clock::now();
-    const SolverOutput o =
-        solve_dp(pb, spec.dp.segments, spec.dp.levels, spec.dp.checks_per_segment, state);
-    r.run_time = seconds_since(t0);
-    finish(pb, o, dense_points(spec.dp.segments, spec.resample_per_interval), &r);
+    run_coarse(&r, [&](int checks) { return solve_dp(pb, spec.dp.segments, spec.dp.levels, checks, state); });
     res.solvers.push_back(r);
     done += 0.15;
   }
@@ -161,11 +177,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     r.method = "Box's Complex method, " + std::to_string(spec.dp.segments) +
                " segments of constant s'', node speeds as variables";
     r.intervals = spec.dp.segments;
-    const auto t0 = std::chrono::steady_clock::now();
-    const SolverOutput o =
-        solve_complex(pb, spec.dp.segments, spec.dp.checks_per_segment, spec.complex);
-    r.run_time = seconds_since(t0);
-    finish(pb, o, dense_points(spec.dp.segments, spec.resample_per_interval), &r);
+    const SolverOutput o = run_coarse(
+        &r, [&](int checks) { return solve_complex(pb, spec.dp.segments, checks, spec.complex); });
+    r.method += ", restarted " + std::to_string(o.restarts) + " time(s) from its best point";
     res.solvers.push_back(r);
   }
 

@@ -25,7 +25,8 @@ std::vector<Check> checks(const Result& result);
 inline constexpr double kExactTolerance = 1e-6;
 
 /// Relative limit overshoot tolerated for the DP and Complex solutions: they enforce the
-/// limits at `checks_per_segment` + 1 points of each segment, not in between.
+/// limits at `checks_per_segment` + 1 points of each segment (doubled until they meet this),
+/// not in between.
 inline constexpr double kCoarseViolationTolerance = 1e-3;
 
 }  // namespace armstudy::studies::time_optimal

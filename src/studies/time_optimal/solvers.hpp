@@ -16,7 +16,8 @@ struct SolverOutput {
   Profile profile;
   double duration = 0;   ///< s
   long evaluations = 0;  ///< DP transitions, Complex objective calls
-  int iterations = 0;    ///< Complex reflections
+  int iterations = 0;    ///< Complex reflections (over every restart)
+  int restarts = 0;      ///< Complex restarts from its best point
 };
 
 /// Exact solver on the grid `nodes` (TOPP-RA's reachability analysis, Pham & Pham 2018):
@@ -43,7 +44,8 @@ SolverOutput solve_dp(const Problem& problem, int segments, int levels, int chec
 /// Box's Complex method on the same discretisation as the path-speed DP: the s' of every
 /// interior node are the variables (bounds [0, MVC]), a profile is feasible when every
 /// segment meets the limits at its check points, the objective is sum 2 ds / (s'_k + s'_k+1).
-/// Starts from a feasible crawl (a fraction of the MVC, halved until feasible).
+/// Starts from a feasible crawl (a fraction of the MVC, halved until feasible) and restarts
+/// from its best point with fresh random points until a restart gains nothing (at most 20).
 SolverOutput solve_complex(const Problem& problem, int segments, int checks,
                            const ComplexSettings& settings);
 
