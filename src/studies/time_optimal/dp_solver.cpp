@@ -10,7 +10,8 @@
 namespace armstudy::studies::time_optimal {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr int kComplexRestarts = 20;  // restarts of the Complex method from its best point
+constexpr int kComplexRestarts = 10;  // restarts of the Complex method from its best point
+constexpr double kRestartGain = 1e-6;  // relative gain a restart must make to go on
 
 // the discretisation shared by the path-speed DP and the Complex method
 struct Discretisation {
@@ -233,7 +234,7 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
         opt);
     out.evaluations += next.evaluations;
     out.iterations += next.iterations;
-    const bool gained = restart == 0 || next.f < r.f * (1 - 1e-9);
+    const bool gained = restart == 0 || next.f < r.f * (1 - kRestartGain);
     if (restart == 0 || next.f < r.f) r = next;
     out.restarts = restart;
     if (!gained) break;

@@ -206,8 +206,13 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
   os << "largest limit use: joint " << viol->joint + 1 << " " << limit_name(viol->kind) << " "
      << used << " of " << lim << " " << limit_unit(viol->kind) << " at s = " << viol->s
      << " m, t = " << viol->t << " s (interval " << viol->interval << ", from grid point "
-     << viol->interval << "); margin " << lim - used << " " << limit_unit(viol->kind) << " ("
-     << (viol->worst <= 0 ? "met" : "VIOLATED") << ", relative " << -viol->worst << ")";
+     << viol->interval << "); ";
+  if (viol->worst <= 0)
+    os << "met with a margin of " << lim - used << " " << limit_unit(viol->kind) << " (" << 0.0 - viol->worst
+       << " relative)";
+  else
+    os << "over it by " << used - lim << " " << limit_unit(viol->kind) << " (" << viol->worst
+       << " relative, between the solver's check points)";
   viol->text = os.str();
 }
 

@@ -45,7 +45,8 @@ SolverOutput solve_dp(const Problem& problem, int segments, int levels, int chec
 /// interior node are the variables (bounds [0, MVC]), a profile is feasible when every
 /// segment meets the limits at its check points, the objective is sum 2 ds / (s'_k + s'_k+1).
 /// Starts from a feasible crawl (a fraction of the MVC, halved until feasible) and restarts
-/// from its best point with fresh random points until a restart gains nothing (at most 20).
+/// from its best point with fresh random points until a restart gains less than 1e-6
+/// relative (at most 10 restarts).
 SolverOutput solve_complex(const Problem& problem, int segments, int checks,
                            const ComplexSettings& settings);
 
