@@ -140,6 +140,22 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                             "(above it some limit is broken whatever the acceleration). The "
                             "exact profile rides along it where it can; DP and Complex, with "
                             "fewer, coarser intervals, stay below."));
+  // s(t): where each solver's motion is on the path over time
+  LinePlot st;
+  st.title = "path position over time";
+  st.x_label = "time t (s)";
+  st.y_label = "path position s (m)";
+  for (const json& s : solvers) {
+    const json& sm = samples_of(s);
+    const auto t = first_vec(sm, {"t_s"});
+    const auto x = first_vec(sm, {"s_m"});
+    if (t.size() >= 2 && t.size() == x.size())
+      st.series.push_back({solver_name(s), t, x, colour_for(solver_key(solver_name(s)))});
+  }
+  if (!st.series.empty())
+    res.figure(figures.line("path_position", st,
+                            "Path position over time: each solver's motion starts and ends at "
+                            "rest; the exact one arrives first."));
   page.sections.push_back(std::move(res));
 
   Section lim;
