@@ -1,5 +1,7 @@
 #include "report/case_report.hpp"
 
+#include "report/part_name.hpp"
+
 #include <kainjow/mustache.hpp>
 #include <yaml-cpp/yaml.h>
 
@@ -28,7 +30,7 @@ std::string read_text(const fs::path& p) {
 }
 
 void write_text(const fs::path& p, const std::string& text) {
-  const fs::path tmp = p.string() + ".part";
+  const fs::path tmp = part_path(p);
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;

@@ -1,5 +1,7 @@
 // html -> pdf through headless chromium, one fresh profile per print
 #include <fcntl.h>
+
+#include "report/part_name.hpp"
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -88,7 +90,7 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
   if (!::mkdtemp(tmpl.data())) throw PdfError("cannot create a temporary Chromium profile");
   TempDir profile{tmpl};
   const fs::path log = profile.path / "chromium.log";
-  const fs::path part = pdf.string() + ".part";
+  const fs::path part = part_path(pdf);
 
   std::vector<std::string> args = {chromium,
                                    "--headless",

@@ -1,5 +1,7 @@
 #include "report/plot.hpp"
 
+#include "report/part_name.hpp"
+
 #include <locale.h>
 #include <plplot/plstream.h>
 
@@ -112,7 +114,7 @@ class Page {
  public:
   Page(const fs::path& svg, int width_pt, int height_pt, int slots)
       : lock_(plplot_mutex()), stream_(std::make_unique<plstream>()), p(*stream_) {
-    tmp_ = svg.string() + ".part";
+    tmp_ = part_path(svg).string();
     p.sdev("svgcairo");
     p.sfnam(tmp_.c_str());
     p.spage(0, 0, width_pt, height_pt, 0, 0);

@@ -28,7 +28,7 @@ sort -c "$work/list1" || fail "list is not sorted"
 
 # (a) one unsharded run
 "$armstudy" run "$work/cases" --no-render --jobs 2 --out "$work/one" 2>"$work/one.log" || { tail "$work/one.log"; fail "unsharded run"; }
-"$armstudy" merge "$work/one" 2>/dev/null
+"$armstudy" merge "$work/one" 2>"$work/merge-one.log" || { cat "$work/merge-one.log"; fail "merge"; }
 [ -s "$work/one/sweep.csv" ] || fail "no sweep.csv"
 [ "$(($(wc -l <"$work/one/sweep.csv") - 1))" -eq "$n" ] || fail "sweep.csv rows != $n"
 # the sweep report plots the key figures over the sweep's axes; the index lists every case
@@ -40,11 +40,15 @@ grep -q "Key figures over arm.links\[2\].length" "$work/one/sweep/index.html" ||
 grep -q 'href="sweep/index.html"' "$work/one/index.html" || fail "index.html does not link the sweep report"
 
 # (b) 4 shards in the order 2, 0, 3, then shard 1 killed midway and run again
-for i in 2 0 3; do "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard "$i/4" 2>>"$work/shards.log"; done
+for i in 2 0 3; do
+  "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard "$i/4" 2>>"$work/shards.log" ||
+    { tail "$work/shards.log"; fail "shard $i/4"; }
+done
 timeout -s KILL 1 "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 1/4 2>>"$work/shards.log" || true
 leftovers=$(find "$work/sharded" -maxdepth 1 -name '.*.tmp-*' | wc -l)
-"$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 1/4 2>"$work/rerun.log"
-"$armstudy" merge "$work/sharded" 2>/dev/null
+"$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 1/4 2>"$work/rerun.log" ||
+  { tail "$work/rerun.log"; fail "re-run of the killed shard"; }
+"$armstudy" merge "$work/sharded" 2>"$work/merge-sharded.log" || { cat "$work/merge-sharded.log"; fail "merge of the shards"; }
 for f in sweep.csv sweep.json; do
   cmp "$work/one/$f" "$work/sharded/$f" || fail "$f of the sharded run differs from the unsharded run"
 done
@@ -56,8 +60,9 @@ left=$(find "$work/sharded" -maxdepth 1 -name ".*.tmp-*" | wc -l)
 echo "killed shard left $leftovers temporary folder(s); the re-run cleaned them and completed it"
 
 # (c) GNU Parallel, 2 jobs on this machine (the README's one-liner)
-parallel -j2 "$armstudy" run "$work/cases" --no-render --out "$work/par" --shard {}/2 ::: 0 1 2>"$work/par.log"
-"$armstudy" merge "$work/par" 2>/dev/null
+parallel -j2 "$armstudy" run "$work/cases" --no-render --out "$work/par" --shard {}/2 ::: 0 1 2>"$work/par.log" ||
+  { grep -v '^done:\|^  ' "$work/par.log" | tail -20; fail "GNU Parallel run"; }
+"$armstudy" merge "$work/par" 2>"$work/par-merge.log" || { cat "$work/par-merge.log"; fail "merge of the GNU Parallel run"; }
 cmp "$work/one/sweep.csv" "$work/par/sweep.csv" || fail "GNU Parallel run differs"
 
 # (d) the Slurm array script's body, as the scheduler would run it for 2 tasks
@@ -86,7 +91,8 @@ PY
 
 # every results.json validates; a broken one does not
 /usr/bin/python3 "$src/scripts/validate_results.py" "$src/results.schema.json" "$work/one" >/dev/null || fail "schema"
-one=$(ls -d "$work/one"/*/ | head -1)
+dirs=("$work/one"/placement-*/)  # no pipe: with pipefail, head closing early fails ls
+one=${dirs[0]}
 mkdir -p "$work/broken/x" && sed 's/"status": "solved"/"status": "maybe"/' "$one/results.json" >"$work/broken/x/results.json"
 if /usr/bin/python3 "$src/scripts/validate_results.py" "$src/results.schema.json" "$work/broken" >/dev/null; then
   fail "a broken results.json validated"
