@@ -23,6 +23,9 @@ struct CaseInfo {
   std::string sha256;       ///< of the file's bytes, hex
   std::string yaml;         ///< the file's text
   RenderOptions render;
+  /// `expect:` solved (default) or unsolvable: a case that documents an impossible task
+  /// (a regression test that it stays impossible) expects to be unsolvable.
+  bool expect_unsolvable = false;
   /// `sweep:` of a case written by `armstudy sweep expand`: the sweep's name and the
   /// point's values by parameter path (values as YAML text), in axis order.
   std::string sweep_name;

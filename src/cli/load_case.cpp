@@ -57,6 +57,7 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
     }
   }
   out.info.description = root.string_or("description", "");
+  if (const auto e = root.choice("expect", {"solved", "unsolvable"})) out.info.expect_unsolvable = *e == "unsolvable";
   if (auto r = root.map("render")) {
     out.info.render.width = r->integer_or("width", 640, 64, 4096);
     out.info.render.height = r->integer_or("height", 480, 64, 4096);

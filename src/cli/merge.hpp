@@ -23,7 +23,8 @@ struct CaseOutput {
 std::vector<CaseOutput> collect_outputs(const std::vector<std::filesystem::path>& dirs,
                                         std::vector<std::string>* warnings);
 
-/// True if the case solved and every one of its checks passed.
+/// True if the case ended as its file expects (solved, unless it says `expect: unsolvable`)
+/// and every one of its checks passed.
 bool case_passed(const nlohmann::json& results);
 
 /// GitHub-flavoured markdown: failures first, one table per study; at most max_bytes

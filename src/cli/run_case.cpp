@@ -45,6 +45,7 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
   j["study"] = info.study;
   j["case"] = {{"name", info.name}, {"path", info.path}, {"sha256", info.sha256}};
   if (!info.description.empty()) j["case"]["description"] = info.description;
+  if (info.expect_unsolvable) j["case"]["expect"] = "unsolvable";
   if (!info.sweep_name.empty() || !info.sweep_point.empty()) {
     nlohmann::json point = nlohmann::json::object();
     for (const auto& [path, value] : info.sweep_point) point[path] = value;
@@ -162,9 +163,15 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     } else {
       fs::rename(tmp_dir, final_dir);
     }
-    if (status != studies::Status::kSolved) {
+    if (status != studies::Status::kSolved && c.info.expect_unsolvable) {
+      outcome.message = "could not be solved, as the case expects: " + c.run->message();
+    } else if (status != studies::Status::kSolved) {
       outcome.exit_code = 1;
       outcome.message = "could not be solved: " + c.run->message();
+    } else if (c.info.expect_unsolvable) {
+      outcome.exit_code = 1;
+      outcome.message = "solved, but the case expects it to be unsolvable ('expect: unsolvable'): " +
+                        c.run->message();
     } else if (!checks_ok) {
       outcome.exit_code = 1;
       outcome.message = "failed its checks: " + failed;

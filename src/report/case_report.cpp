@@ -362,6 +362,8 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   page.sections.push_back(checks_section(results));
   page.sections.push_back(provenance_section(results, info));
 
+  if (results.value("/case/expect"_json_pointer, std::string()) == page.status)
+    page.status += " (as the case expects)";
   write_page(dir, page, info);
 }
 
@@ -400,7 +402,8 @@ int write_index(const fs::path& out_dir) {
     e.set("name", r.name);
     e.set("study", r.results.value("study", ""));
     const std::string status = r.results.value("status", "");
-    e.set("status", status);
+    const bool expected = r.results.value("/case/expect"_json_pointer, std::string()) == status;
+    e.set("status", expected ? status + " (as the case expects)" : status);
     e.set("solved", status == "solved");
     e.set("message", r.results.value("message", ""));
     // the first few key figures; the case page has them all

@@ -156,18 +156,32 @@ TEST(Cli, ProgressIsPlainLinesWithoutATerminal) {
 
 namespace {
 
-// the bundled example 1 asks for a line of length Lmax: it only fits as a singular motion
-TEST(Cli, UnsolvableCaseExitsOneWithTheReasonAndAReport) {
+// the bundled example 1 asks for a line of length Lmax: it only fits as a singular motion,
+// and its file says `expect: unsolvable`: done (exit 0); without that line it exits 1
+TEST(Cli, UnsolvableCaseExitsOneWithItsReasonUnlessTheCaseExpectsIt) {
   const fs::path out = temp_dir("unsolvable");
   const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
-  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
-  EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("FAILED: placement-example-1"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("no admissible placement"), std::string::npos) << r.output;
+  const CliRun expected = run_cli("run --no-render --out " + out.string() + " " + c.string());
+  EXPECT_EQ(expected.exit_code, 0) << expected.output;
+  EXPECT_NE(expected.output.find("could not be solved, as the case expects: no admissible placement"),
+            std::string::npos) << expected.output;
   const auto j = nlohmann::json::parse(read_text(out / "placement-example-1" / "results.json"));
   EXPECT_EQ(j["status"], "unsolvable");
+  EXPECT_EQ(j["case"]["expect"], "unsolvable");
   EXPECT_NE(j["message"].get<std::string>().find("singular"), std::string::npos);
+  EXPECT_NE(read_text(out / "junit.xml").find("failures=\"0\""), std::string::npos);
+
+  const fs::path work = temp_dir("unsolvable_case");
+  fs::create_directories(work);
+  std::string text = read_text(c);
+  text.replace(text.find("\nexpect: unsolvable") + 1, 18, "expect: solved");
+  std::ofstream(work / "case.yaml") << text;
+  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + (work / "case.yaml").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAILED: placement-example-1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("could not be solved: no admissible placement"), std::string::npos) << r.output;
   fs::remove_all(out);
+  fs::remove_all(work);
 }
 
 // a joint that must move but may not: exit 1, the message names the limit and the place
