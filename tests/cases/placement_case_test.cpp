@@ -152,7 +152,7 @@ TEST(PlacementCase, BundledExamplesLoadWithTheThesisLengths) {
     const auto node = parse_file(path, d, &text);
     ASSERT_TRUE(node) << path;
     Map root(*node, d, "");
-    for (const char* k : {"study", "name", "description"}) root.get(k);
+    for (const char* k : {"study", "name", "description", "expect"}) root.get(k);  // the CLI's keys
     const auto spec = load_placement(root);
     root.finish();
     ASSERT_TRUE(d.empty()) << d.errors()[0].format();
