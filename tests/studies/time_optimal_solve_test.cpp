@@ -123,10 +123,10 @@ TEST(TimeOptimal, DpApproachesTheExactDurationAsSegmentsAndLevelsGrow) {
   Spec spec = line_spec({0.3, 0.1}, {-0.1, 0.8});
   spec.complex.enabled = false;
   spec.dp.levels = 60;
-  spec.dp.convergence_segments = {10, 20, 40};
+  spec.dp.convergence_segments = {10, 20, 40, 200};
   const Result r = solve(spec);
   ASSERT_EQ(r.status, Status::kSolved) << r.message;
-  ASSERT_EQ(r.convergence.size(), 3u);
+  ASSERT_EQ(r.convergence.size(), 4u);
   for (const auto& row : r.convergence) {
     ASSERT_TRUE(row.solved) << row.segments;
     EXPECT_GE(row.excess, -1e-9) << row.segments;
@@ -135,6 +135,10 @@ TEST(TimeOptimal, DpApproachesTheExactDurationAsSegmentsAndLevelsGrow) {
   EXPECT_LT(r.convergence[1].excess, r.convergence[0].excess);
   EXPECT_LT(r.convergence[2].excess, r.convergence[1].excess);
   EXPECT_LT(r.convergence[2].excess, 0.5 * r.convergence[0].excess);
+  // N = 200 (1200 levels): within 0.5 % of the exact time
+  EXPECT_EQ(r.convergence[3].levels, 1200);
+  EXPECT_LT(r.convergence[3].excess, r.convergence[2].excess);
+  EXPECT_LT(r.convergence[3].excess, 0.005);
 }
 
 TEST(TimeOptimal, JointOneVelocityStateFailsWhereJointOneTurnsBackAndSaysWhere) {
