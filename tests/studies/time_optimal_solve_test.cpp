@@ -177,6 +177,15 @@ TEST(TimeOptimal, InfeasibleProblemsNameTheLimitOrReasonAndThePlace) {
     EXPECT_NE(r.message.find("leaves the workspace at s = "), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("annulus [0.10, 0.90] m"), std::string::npos) << r.message;
   }
+  {
+    // equal links: the annulus closes to a disc and the line runs through the singular base
+    Spec spec = line_spec({0.4, 0.0}, {-0.4, 0.0});
+    spec.chain = default_arm(0.45, 0.45);
+    const Result r = solve(spec);
+    EXPECT_EQ(r.status, Status::kUnsolvable);
+    EXPECT_NE(r.message.find("s = 0.400 m"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("singular pose"), std::string::npos) << r.message;
+  }
 }
 
 TEST(TimeOptimal, SmallSettingsStillSolveWithoutTouchingFreedResults) {
