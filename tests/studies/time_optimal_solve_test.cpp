@@ -130,6 +130,7 @@ TEST(TimeOptimal, DpApproachesTheExactDurationAsSegmentsAndLevelsGrow) {
   for (const auto& row : r.convergence) {
     ASSERT_TRUE(row.solved) << row.segments;
     EXPECT_GE(row.excess, -1e-9) << row.segments;
+    EXPECT_LE(row.worst_violation, kCoarseViolationTolerance) << row.segments;
   }
   EXPECT_EQ(r.convergence[2].levels, 240);
   EXPECT_LT(r.convergence[1].excess, r.convergence[0].excess);

@@ -195,17 +195,25 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     const double grow = static_cast<double>(row.segments) / std::max(1, spec.dp.segments);
     row.levels = static_cast<int>(std::lround(spec.dp.levels * std::max(1.0, grow)));
     // fewer check points on shorter segments: about 80 over the path, at least 2 per segment
-    const int checks = std::max(2, 80 / row.segments);
+    // (doubled, as for the solvers above, while dense resampling finds a limit overshot by
+    // more than the coarse tolerance between them)
+    int checks = std::max(2, 80 / row.segments);
     const auto t0 = std::chrono::steady_clock::now();
-    const SolverOutput o = solve_dp(pb, row.segments, row.levels, checks, DpState::kPathSpeed);
+    SolverOutput o;
+    Violation v;
+    for (int k = 0; k <= kMaxRefinements; ++k, checks *= 2) {
+      o = solve_dp(pb, row.segments, row.levels, checks, DpState::kPathSpeed);
+      if (!o.solved) break;
+      MotionSamples ms;
+      v = Violation{};
+      resample(pb, o.profile, dense_points(row.segments, 4), 2, &ms, &v, nullptr);
+      if (v.worst <= kCoarseViolationTolerance) break;
+    }
     row.run_time = seconds_since(t0);
     row.solved = o.solved;
     if (!o.solved) return;
     row.duration = o.duration;
     row.excess = o.duration / exact_duration - 1;
-    MotionSamples ms;
-    Violation v;
-    resample(pb, o.profile, dense_points(row.segments, 4), 2, &ms, &v, nullptr);
     row.worst_violation = v.worst;
   };
   {
