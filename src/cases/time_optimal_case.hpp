@@ -24,7 +24,7 @@
 ///     checks_per_segment: 8  # points per segment where limits are checked, +1 (default 8)
 ///     states: [path_speed]   # one DP run per entry: path_speed (s', default) and/or
 ///                            # joint1_velocity (q1', the source's; needs q1 monotonic)
-///     convergence_segments: [10, 20, 40, 80]       # N of the convergence table ([]: none),
+///     convergence_segments: [10, 20, 50, 100, 200]   # N of the convergence table ([]: none),
 ///                            # each with levels x N / segments velocity levels
 ///   complex:                 # Box's Complex method on the DP's segments
 ///     enabled: true          # default true

@@ -96,7 +96,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                       format_sig(first_num(s, {"run_time_s"}), 3), jsonv::str(s, "intervals"),
                       jsonv::str(s, "levels"),
                       std::isfinite(worst) ? format_sig(1 + worst, 6) : jsonv::str(v, "ratio"),
-                      jsonv::str(v, "text")});
+                      jsonv::has(v, "text") ? jsonv::str(v, "text") : jsonv::str(s, "message")});
     t.swatches.push_back(css_colour(colour_for(solver_key(solver_name(s)))));
   }
   if (!t.rows.empty()) res.table(std::move(t));

@@ -48,7 +48,7 @@ TEST(TimeOptimalCase, DefaultsAreTheSourcesArmAndTheDocumentedSettings) {
   EXPECT_EQ(s.dp.segments, 10);
   EXPECT_EQ(s.dp.levels, 200);
   EXPECT_EQ(s.dp.states, std::vector<to::DpState>{to::DpState::kPathSpeed});
-  EXPECT_EQ(s.dp.convergence_segments, (std::vector<int>{10, 20, 40, 80}));
+  EXPECT_EQ(s.dp.convergence_segments, (std::vector<int>{10, 20, 50, 100, 200}));  // the table
   EXPECT_TRUE(s.complex.enabled);
   EXPECT_EQ(s.exact.grid_points, 1000);
 }

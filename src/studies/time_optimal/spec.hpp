@@ -37,7 +37,7 @@ struct DpSettings {
   std::vector<DpState> states{DpState::kPathSpeed};  ///< one DP run per entry
   /// N of the convergence table (path-speed state, levels x N / segments levels, at least
   /// `levels`); empty: no table
-  std::vector<int> convergence_segments{10, 20, 40, 80};
+  std::vector<int> convergence_segments{10, 20, 50, 100, 200};
 };
 
 struct ComplexSettings {
