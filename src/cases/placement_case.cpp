@@ -1,7 +1,6 @@
 #include "cases/placement_case.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "cases/arm_loader.hpp"
 #include "studies/placement/geometry.hpp"
@@ -9,13 +8,6 @@
 namespace armstudy::cases {
 namespace {
 constexpr double kDeg = core::kPi / 180.0;
-
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 }  // namespace
 
 core::PlanarChain placement_default_arm() {
@@ -32,7 +24,7 @@ studies::placement::Spec load_placement(Map& root) {
   pl::Spec spec;
   spec.chain = load_arm(root, placement_default_arm(), 2);
   if (spec.chain.gravity != 0.0) {
-    root.error("gravity", "'gravity' is " + fmt(spec.chain.gravity) +
+    root.error("gravity", "'gravity' is " + format_number(spec.chain.gravity) +
                               " m/s^2; expected 0: the placement study is a horizontal plane");
   }
   for (int i = 0; i < spec.chain.num_links(); ++i) {
@@ -62,7 +54,7 @@ studies::placement::Spec load_placement(Map& root) {
   if (has_fraction) {
     if (const auto f = p->number("length_fraction", NumberRule::range(0.0, 1.0, ""))) {
       if (*f <= 0) {
-        p->error("length_fraction", "'placement.length_fraction' is " + fmt(*f) + "; expected a fraction in (0, 1] of Lmax");
+        p->error("length_fraction", "'placement.length_fraction' is " + format_number(*f) + "; expected a fraction in (0, 1] of Lmax");
       }
       spec.length = *f * an.lmax;
     }
@@ -71,8 +63,8 @@ studies::placement::Spec load_placement(Map& root) {
     if (const auto L = p->number("length_m", NumberRule::positive("m"))) {
       spec.length = *L;
       if (*L > an.lmax * (1 + 1e-12)) {
-        p->error("length_m", "'placement.length_m' is " + fmt(*L) + " m, longer than Lmax = 4 sqrt(L1 L2) = " +
-                                 fmt(an.lmax) + " m of this arm; expected 0 < length_m <= " + fmt(an.lmax));
+        p->error("length_m", "'placement.length_m' is " + format_number(*L) + " m, longer than Lmax = 4 sqrt(L1 L2) = " +
+                                 format_number(an.lmax) + " m of this arm; expected 0 < length_m <= " + format_number(an.lmax));
       }
     }
   }
@@ -102,7 +94,7 @@ studies::placement::Spec load_placement(Map& root) {
     for (size_t i = 0; i < cfgs->size(); ++i) {
       const double c = (*cfgs)[i];
       if (c != 1.0 && c != 2.0) {
-        p->error("configurations", "'placement.configurations[" + std::to_string(i + 1) + "]' is " + fmt(c) +
+        p->error("configurations", "'placement.configurations[" + std::to_string(i + 1) + "]' is " + format_number(c) +
                                        "; expected 1 or 2");
         continue;
       }
@@ -115,9 +107,9 @@ studies::placement::Spec load_placement(Map& root) {
   spec.samples = p->integer_or("samples", 401, 21, 100001);
   spec.singularity_margin = p->number_or("singularity_margin_m", 0.01, NumberRule::positive("m"));
   if (std::isfinite(spec.singularity_margin) && spec.singularity_margin >= (an.outer - an.inner) / 2) {
-    p->error("singularity_margin_m", "'placement.singularity_margin_m' is " + fmt(spec.singularity_margin) +
+    p->error("singularity_margin_m", "'placement.singularity_margin_m' is " + format_number(spec.singularity_margin) +
                                          " m; expected less than half the annulus width, " +
-                                         fmt((an.outer - an.inner) / 2) + " m");
+                                         format_number((an.outer - an.inner) / 2) + " m");
   }
   if (const auto t = p->numbers("torque_limits_Nm", NumberRule::positive("N m"), 2))
     spec.torque_limit = std::array<double, 2>{(*t)[0], (*t)[1]};

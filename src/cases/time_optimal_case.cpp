@@ -1,20 +1,12 @@
 #include "cases/time_optimal_case.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "cases/arm_loader.hpp"
 
 namespace armstudy::cases {
 namespace {
 namespace to = studies::time_optimal;
-
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 
 // a per-joint pair of limits >= 0
 std::optional<Eigen::Vector2d> joint_pair(Map& m, std::string_view key, const std::string& unit) {
@@ -99,7 +91,7 @@ void load_dp(Map& t, to::DpSettings* dp) {
         for (size_t i = 0; i < v->size(); ++i) {
           if ((*v)[i] != std::floor((*v)[i])) {
             m->error("convergence_segments", "'time_optimal.dp.convergence_segments[" + std::to_string(i + 1) +
-                                                 "]' is " + fmt((*v)[i]) + "; expected a whole number of segments");
+                                                 "]' is " + format_number((*v)[i]) + "; expected a whole number of segments");
             continue;
           }
           dp->convergence_segments.push_back(static_cast<int>((*v)[i]));

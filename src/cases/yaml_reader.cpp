@@ -19,13 +19,6 @@ std::string describe_kind(const YAML::Node& n) {
   }
 }
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.imbue(std::locale::classic());
-  os << v;
-  return os.str();
-}
-
 size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
   for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
@@ -41,6 +34,13 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 }  // namespace
+
+std::string format_number(double v) {
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os << v;
+  return os.str();
+}
 
 void Diagnostics::error(const YAML::Mark& mark, std::string message) {
   CaseError e;
@@ -62,12 +62,12 @@ std::string violation(double v, const NumberRule& rule) {
   if (rule.sign == NumberRule::Sign::kPositive && !(v > 0)) return "should be > 0" + u;
   if (rule.sign == NumberRule::Sign::kNonNegative && !(v >= 0)) return "should be >= 0" + u;
   if (rule.min && v < *rule.min) {
-    if (rule.max) return "should be in [" + fmt(*rule.min) + ", " + fmt(*rule.max) + "]" + u;
-    return "should be >= " + fmt(*rule.min) + u;
+    if (rule.max) return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" + u;
+    return "should be >= " + format_number(*rule.min) + u;
   }
   if (rule.max && v > *rule.max) {
-    if (rule.min) return "should be in [" + fmt(*rule.min) + ", " + fmt(*rule.max) + "]" + u;
-    return "should be <= " + fmt(*rule.max) + u;
+    if (rule.min) return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" + u;
+    return "should be <= " + format_number(*rule.max) + u;
   }
   return "";
 }
@@ -94,7 +94,7 @@ std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std
   }
   const std::string bad = violation(v, rule);
   if (!bad.empty()) {
-    diag.error(node.Mark(), name + " is " + fmt(v) + "; " + bad);
+    diag.error(node.Mark(), name + " is " + format_number(v) + "; " + bad);
     return std::nullopt;
   }
   return v;

@@ -50,6 +50,9 @@ struct NumberRule {
   static NumberRule any(std::string unit) { return {Sign::kAny, {}, {}, std::move(unit)}; }
 };
 
+/// A number as messages show it: 6 significant digits, C locale ("0.4", "1e-06").
+std::string format_number(double v);
+
 /// Checks a finite number against a rule; returns the complaint or "".
 std::string violation(double value, const NumberRule& rule);
 
