@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/case_keys.hpp"
+
 #include "core/types.hpp"
 
 namespace armstudy::cases {
@@ -15,9 +17,7 @@ TEST(PendulumCase, BundledCaseEqualsTheDocumentedDefaults) {
   const auto root = parse_file(d.path(), d, &text);
   ASSERT_TRUE(root.has_value());
   Map m(*root, d, "");
-  m.get("study");
-  m.get("name");
-  m.get("description");
+  testing::mark_cli_keys(m);
   const studies::PendulumSpec s = load_pendulum_spec(m);
   m.finish();
   ASSERT_TRUE(d.empty()) << d.errors()[0].format();

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/case_keys.hpp"
+
 #include <filesystem>
 
 #include "cli/pipeline.hpp"
@@ -152,7 +154,7 @@ TEST(PlacementCase, BundledExamplesLoadWithTheThesisLengths) {
     const auto node = parse_file(path, d, &text);
     ASSERT_TRUE(node) << path;
     Map root(*node, d, "");
-    for (const char* k : {"study", "name", "description", "expect"}) root.get(k);  // the CLI's keys
+    testing::mark_cli_keys(root);
     const auto spec = load_placement(root);
     root.finish();
     ASSERT_TRUE(d.empty()) << d.errors()[0].format();

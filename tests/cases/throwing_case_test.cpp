@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/case_keys.hpp"
+
 #include <cmath>
 
 #include "core/types.hpp"
@@ -16,9 +18,7 @@ studies::ThrowingSpec load_text(const std::string& text, Diagnostics& d) {
   const auto root = parse_text(text, d);
   EXPECT_TRUE(root.has_value());
   Map m(*root, d, "");
-  m.get("study");
-  m.get("name");
-  m.get("description");
+  testing::mark_cli_keys(m);
   auto s = load_throwing_spec(m);
   m.finish();
   return s;
@@ -30,9 +30,7 @@ TEST(ThrowingCase, BundledCaseEqualsTheDocumentedDefaults) {
   const auto root = parse_file(d.path(), d, &text);
   ASSERT_TRUE(root.has_value());
   Map m(*root, d, "");
-  m.get("study");
-  m.get("name");
-  m.get("description");
+  testing::mark_cli_keys(m);
   const studies::ThrowingSpec s = load_throwing_spec(m);
   m.finish();
   ASSERT_TRUE(d.empty()) << d.errors()[0].format();

@@ -22,12 +22,7 @@ using nlohmann::json;
 
 using armstudy::testing::slurp;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("armstudy_case_report_test_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return armstudy::testing::fresh_dir("case_report_test_" + name); }
 
 cases::CaseInfo hostile_info(const std::string& study) {
   cases::CaseInfo info;

@@ -17,12 +17,7 @@ namespace fs = std::filesystem;
 
 using armstudy::testing::slurp;
 
-fs::path test_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("armstudy_plot_test_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path test_dir(const std::string& name) { return armstudy::testing::fresh_dir("plot_test_" + name); }
 
 LinePlot sine_plot() {
   LinePlot p;

@@ -1,0 +1,15 @@
+#pragma once
+// The keys of a case file's root that the CLI reads itself (app::load_case), for tests that
+// load one study's section of a bundled case directly with its loader.
+
+#include "cases/yaml_reader.hpp"
+
+namespace armstudy::testing {
+
+/// Marks study, name, description, expect, render and sweep as known in `root`, so that
+/// root.finish() judges only the study's own keys.
+inline void mark_cli_keys(cases::Map& root) {
+  for (const char* k : {"study", "name", "description", "expect", "render", "sweep"}) root.get(k);
+}
+
+}  // namespace armstudy::testing
