@@ -132,9 +132,6 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
         const json& v = r["key_figures"][name];
         curves[label].emplace_back(as_number(r["parameters"][xp]), v.is_number() ? v.get<double>() : NAN);
       }
-      // legend in the order of the other parameters' numeric values
-      std::vector<std::string> labels;
-      for (const auto& [l, pts] : curves) labels.push_back(l);
       LinePlot plot;
       plot.title = name;
       plot.x_label = xp;
@@ -144,8 +141,7 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
       plot.y_label = unit.empty() ? name : name + " (" + unit + ")";
       plot.height_pt = 360;
       const std::vector<Rgb> palette = palette_colours();
-      for (const std::string& l : labels) {
-        auto pts = curves[l];
+      for (auto& [l, pts] : curves) {  // the legend in the order of the labels' text
         std::sort(pts.begin(), pts.end());
         Series s;
         s.label = l;
@@ -159,8 +155,7 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
       }
       figs.figure(writer.line("sweep_" + std::to_string(plots + 1), plot,
                               "The key figure " + name + " of every passing case over " + xp +
-                                  (labels.size() > 1 ? ", one curve per " + std::string("combination of the other parameters")
-                                                     : "")));
+                                  (curves.size() > 1 ? ", one curve per combination of the other parameters" : "")));
       ++plots;
     }
   }
