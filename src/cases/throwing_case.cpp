@@ -80,6 +80,7 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
                                          : studies::Motor2Mount::kOnLink1;
     num(*m, "voltage_max_V", s.voltage_max, NumberRule::positive("V"));
     num(*m, "current_max_A", s.current_max, NumberRule::positive("A"));
+    num(*m, "power_max_W", s.power_max, NumberRule::positive("W"));
     s.count_regeneration = m->boolean_or("count_regeneration", s.count_regeneration);
     m->finish();
   }
@@ -99,41 +100,45 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
     num(*t, "landing_height_m", s.landing_height, NumberRule::range(-100.0, 100.0, "m"));
     t->finish();
   }
-  if (auto c = sec->map("criterion")) {
-    num(*c, "k_tray_J_per_rad", s.k_tray, NumberRule::non_negative("J/rad"));
-    num(*c, "k_release_J_per_rad", s.k_release, NumberRule::non_negative("J/rad"));
-    num(*c, "k_voltage_J_per_V", s.k_voltage, NumberRule::non_negative("J/V"));
-    num(*c, "k_current_J_per_A", s.k_current, NumberRule::non_negative("J/A"));
+  if (auto c = sec->map("constraints")) {
+    num(*c, "contact_margin_N", s.contact_margin, NumberRule::non_negative("N"));
+    num(*c, "friction_coefficient", s.friction_coefficient, NumberRule::range(1e-3, 10.0, ""));
+    if (const auto v = c->number("release_tolerance_deg", NumberRule::positive("deg")))
+      s.release_tolerance = *v * kDeg;
+    num(*c, "backoff", s.backoff, NumberRule::range(0.0, 0.2, ""));
     c->finish();
   }
   if (auto i = sec->map("idp")) {
     s.stages = i->integer_or("stages", s.stages, 2, 64);
     s.steps_per_stage = i->integer_or("steps_per_stage", s.steps_per_stage, 1, 400);
     s.idp.iterations = i->integer_or("iterations", s.idp.iterations, 1, 1000);
-    s.idp.passes = i->integer_or("passes", s.idp.passes, 1, 20);
+    s.idp.max_passes = i->integer_or("max_passes", s.idp.max_passes, 1, 1000);
+    num(*i, "tolerance", s.idp.tolerance, NumberRule::range(1e-9, 0.5, ""));
     num(*i, "restore", s.idp.restore, NumberRule::range(1e-3, 1.0, ""));
     s.idp.candidates = i->integer_or("candidates", s.idp.candidates, 1, 200);
     num(*i, "shrink", s.idp.shrink, NumberRule::range(1e-3, 0.999, ""));
     if (const auto v = i->numbers("region_rad_s", NumberRule::positive("rad/s"), 2))
       s.idp.region = {(*v)[0], (*v)[1]};
     s.idp.seed = static_cast<unsigned>(i->integer_or("seed", static_cast<int>(s.idp.seed), 0, 2147483647));
+    s.idp.seeds = i->integer_or("seeds", s.idp.seeds, 1, 64);
     i->finish();
   }
   if (auto n = sec->map("nlopt")) {
     s.run_nlopt = n->boolean_or("enabled", s.run_nlopt);
     s.nlopt.max_evaluations = n->integer_or("max_evaluations", s.nlopt.max_evaluations, 1, 10000);
     num(*n, "max_time_s", s.nlopt.max_time, NumberRule::range(0.1, 3600.0, "s"));
+    num(*n, "ftol_rel", s.nlopt.ftol_rel, NumberRule::range(1e-12, 0.1, ""));
+    num(*n, "xtol_rel", s.nlopt.xtol_rel, NumberRule::range(1e-12, 0.1, ""));
     num(*n, "fd_step_rad_s", s.nlopt.fd_step, NumberRule::range(1e-9, 1e-1, "rad/s"));
     n->finish();
   }
   if (auto c = sec->map("checks")) {
-    if (const auto v = c->number("release_tolerance_deg", NumberRule::positive("deg")))
-      s.release_tolerance = *v * kDeg;
     num(*c, "replay_tolerance_rad", s.replay_tolerance, NumberRule::positive("rad"));
+    s.allow_not_converged = c->boolean_or("allow_not_converged", s.allow_not_converged);
+    s.check_refinement = c->integer_or("refinement", s.check_refinement, 2, 16);
     c->finish();
   }
   s.threads = sec->integer_or("threads", s.threads, 1, 64);
-  s.nlopt.release_tolerance = std::min(s.nlopt.release_tolerance, s.release_tolerance);
   sec->finish();
   return s;
 }

@@ -34,6 +34,7 @@
 ///     motor2: on_link1                 # on_link1 (drives theta2) or on_base (theta1+theta2)
 ///     voltage_max_V: 24                # limit, > 0 (motors rated 24 V)
 ///     current_max_A: 5.0               # limit, > 0 (about twice the 2.5 A of 60 W at 24 V)
+///     power_max_W: 60                  # limit on |e i| per motor, > 0 (motors rated 60 W)
 ///     count_regeneration: true         # eq. 7 signed (true) or only e i > 0 counted
 ///   task:
 ///     start_deg: [-45, -45, 0, 0]      # theta1..theta4 at rest
@@ -41,29 +42,35 @@
 ///     release_rate_rad_s: [13.9, -1.1] # theta1', theta2' at release
 ///     duration_s: 0.8                  # tf, > 0
 ///     landing_height_m: 0.0            # the flight ends at this height (y)
-///   criterion:                         # eq. 9 and the release/limit penalties
-///     k_tray_J_per_rad: 1000           # on max |theta4| - lambda/2 (> 0 part)
-///     k_release_J_per_rad: 10          # on |theta3(tf) - release theta3|
-///     k_voltage_J_per_V: 1000          # on max |e| - voltage_max_V (> 0 part)
-///     k_current_J_per_A: 1000          # on max |i| - current_max_A (> 0 part)
+///   constraints:                       # both optimisers and the checks (docs/throwing.md)
+///     contact_margin_N: 0.02           # tray's normal force on the ball >= this, >= 0
+///     friction_coefficient: 0.5        # mu: rolling needs |F_t| <= mu N, 0.001..10
+///     release_tolerance_deg: 1.0       # |theta3(tf) - release| allowed, > 0
+///     backoff: 0.02                    # optimisers keep each normalised constraint this far
+///                                      # inside its limit, 0..0.2
 ///   idp:
 ///     stages: 16                       # P, 2..64
 ///     steps_per_stage: 20              # RK4 steps per stage, 1..400
-///     iterations: 20                   # per pass, 1..1000
-///     passes: 3                        # region restarts, 1..20
-///     restore: 0.5                     # region factor between passes, (0, 1]
-///     candidates: 8                    # R per stage node, 1..200
-///     shrink: 0.8                      # region factor per iteration, (0, 1)
-///     region_rad_s: [10, 10]           # initial half-width per joint, > 0
-///     seed: 1                          # std::mt19937 seed
+///     iterations: 6                    # per pass, 1..1000
+///     max_passes: 20                   # budget: passes at most, 1..1000
+///     tolerance: 1.0e-3                # converged: a pass gains less than this (relative)
+///     restore: 0.8                     # region factor between passes, (0, 1]
+///     candidates: 5                    # R per stage node, 1..200
+///     shrink: 0.7                      # region factor per iteration, (0, 1)
+///     region_rad_s: [1, 1]             # initial half-width per joint, > 0
+///     seed: 1                          # std::mt19937 seed of the first run
+///     seeds: 4                         # runs with seeds seed, seed + 1, ..., 1..64
 ///   nlopt:
 ///     enabled: true                    # SLSQP beside IDP
-///     max_evaluations: 150             # SLSQP iterations, 1..10000
-///     max_time_s: 15                   # wall-clock budget, > 0
+///     max_evaluations: 400             # budget: SLSQP iterations, 1..10000
+///     max_time_s: 60                   # budget: wall clock, > 0
+///     ftol_rel: 1.0e-6                 # converged: relative energy change below this
+///     xtol_rel: 1.0e-6                 # or relative rate change below this
 ///     fd_step_rad_s: 1.0e-5            # central-difference step, > 0
 ///   checks:
-///     release_tolerance_deg: 1.0       # |theta3(tf) - release| allowed, > 0
 ///     replay_tolerance_rad: 0.002      # open-loop replay vs plan, > 0
+///     allow_not_converged: false       # true: a run ending on its budget does not fail
+///     refinement: 4                    # optimum re-checked with this many x the steps, 2..16
 ///   threads: 2                         # 1..64
 /// ```
 

@@ -1,6 +1,8 @@
-// the throwing study of 003_a986fd825f31d3e2.txt sec. 4: eq. 8 start, idp optimum and the
-// gradient (slsqp) optimum side by side; voltages, currents, torques, powers, theta4 with the
-// tray limits, idp convergence, release and flight
+// the throwing study of 003_a986fd825f31d3e2.txt sec. 4 as a constrained problem
+// (docs/throwing.md): eq. 8 start, feasible reference, idp optimum (best of several seeds)
+// and the gradient (slsqp) optimum side by side; one comparison table on equal terms;
+// voltages, currents, torques, powers with their limits; contact force and friction needed
+// over time; theta4 with the tray limits; idp seeds and convergence; release and flight
 #include <cmath>
 
 #include "report/number_format.hpp"
@@ -28,6 +30,8 @@ struct Motion {
 std::vector<Motion> motions(const json& th) {
   std::vector<Motion> out;
   if (jsonv::has(th, "initial")) out.push_back({"eq. 8 start", "initial", &th["initial"]});
+  if (jsonv::has(th, "reference_motion"))
+    out.push_back({"repaired reference", "reference", &th["reference_motion"]});
   if (jsonv::has(th, "optimum")) out.push_back({"IDP optimum", "idp", &th["optimum"]});
   const json& nl = obj(th, "nlopt");
   if (jsonv::has(nl, "motion") && nl["motion"].is_object())
@@ -76,6 +80,20 @@ std::string release_error(const json& m, const char* key) {
   return "[" + s + "]";
 }
 
+// "yes" / "NOT converged"
+std::string yes_no(const json& j, const char* key) {
+  if (!jsonv::has(j, key) || !j[key].is_boolean()) return "n/a";
+  return j[key].get<bool>() ? "yes" : "NOT converged";
+}
+
+// the names in j[key] (an array of strings), joined
+std::string names(const json& j, const char* key) {
+  std::string s;
+  for (const json& v : arr(j, key))
+    if (v.is_string()) s += (s.empty() ? "" : ", ") + v.get<std::string>();
+  return s.empty() ? "none" : s;
+}
+
 }  // namespace
 
 void throwing_sections(const json& results, FigureWriter& figures, CasePage& page) {
@@ -84,6 +102,7 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   const json& lim = obj(th, "limits");
   const json& idp = obj(th, "idp");
   const json& nl = obj(th, "nlopt");
+  const json& ref = obj(th, "reference");
   const auto ms = motions(th);
 
   Section method;
@@ -94,19 +113,33 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       "A 4-coordinate arm in a vertical plane throws a ball from a tray: links 1 and 2 are "
       "driven by DC servomotors, the tray hangs on a passive joint and the ball rolls in it. "
       "The joint-velocity profiles of the active joints over " + jsonv::str(idp, "stages") +
-      " time stages are optimised by iterative dynamic programming (Luus): " +
-      jsonv::str(idp, "candidates") + " candidates per stage in a region around the best "
-      "trajectory, the region shifted to the best and shrunk by " + jsonv::str(idp, "shrink") +
-      " each iteration, " + jsonv::str(idp, "iterations") + " iterations per pass, " +
-      jsonv::str(idp, "passes") + " passes, starting from the trajectory of eq. 8 (in its "
-      "corrected form). The criterion is the electrical energy E = Σ ∫ e i dt of the motors "
-      "(eq. 5-7) plus the penalties of eq. 9 that keep the ball in the tray (|θ4| ≤ λ/2) and "
-      "meet the release state; the tray's release angle follows from the passive dynamics, it "
-      "is not commanded." +
-      (jsonv::has(nl, "motion") ? " The same problem is also solved by a gradient method (" +
-                                      jsonv::str(nl, "algorithm") +
-                                      ") on the same parameterisation."
-                                : std::string(" The case runs IDP only.")));
+      " time stages minimise the electrical energy E = Σ ∫ e i dt of the motors (eq. 5-7) "
+      "subject to constraints checked at every integration step: the tray's normal force on "
+      "the ball N ≥ " + jsonv::sig(lim, "contact_margin_N", 3) + " N (an open tray cannot "
+      "pull the ball), the friction rolling needs |F_t|/N ≤ μ = " +
+      jsonv::sig(lim, "friction_coefficient", 3) + ", the ball within the tray |θ4| ≤ λ/2, "
+      "the motors within " + jsonv::sig(lim, "voltage_max_V", 3) + " V, " +
+      jsonv::sig(lim, "current_max_A", 3) + " A and " + jsonv::sig(lim, "power_max_W", 3) +
+      " W, and the passive tray at its release angle within " +
+      format_sig(jsonv::num(lim, "release_tolerance_rad") * 180 / 3.14159265358979, 3) +
+      "°. N and F_t come from the ball's own equation of motion, m4 a = −N n + F_t t + m4 g "
+      "(docs/throwing.md). Iterative dynamic programming (Luus) compares candidates by the "
+      "feasibility rules (feasible and lower energy, else lower violation): " +
+      jsonv::str(idp, "candidates") + " candidates per stage node, " +
+      jsonv::str(idp, "iterations") + " shrinking iterations (×" + jsonv::str(idp, "shrink") +
+      ") per pass, the region restored ×" + jsonv::str(idp, "restore") + " between passes, "
+      "until a whole pass gains less than " + jsonv::sig(idp, "tolerance", 3) +
+      " of the energy (budget " + jsonv::str(idp, "max_passes") + " passes), for " +
+      jsonv::str(idp, "seeds") + " seeds." +
+      (jsonv::has(nl, "motion") ? " The same constrained problem is solved by a gradient method (" +
+                                      jsonv::str(nl, "algorithm") + ") to ftol_rel " +
+                                      jsonv::sig(nl, "ftol_rel", 2) + " / xtol_rel " +
+                                      jsonv::sig(nl, "xtol_rel", 2) + " (budget " +
+                                      jsonv::str(nl, "max_evaluations") + " iterations, " +
+                                      jsonv::sig(nl, "max_time_s", 3) + " s)."
+                                : std::string(" The case runs IDP only.")) +
+      " Both optimisers keep every normalised constraint " + jsonv::sig(lim, "backoff", 2) +
+      " inside its limit and start from the same feasible reference.");
   method.note(
       "Several printed coefficients of 003's equations of motion are inconsistent with its "
       "kinematics (a3's m4 term, two lines labelled A45, a5's inverted ratio, the ball spin "
@@ -114,55 +147,154 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       "energies and angles differ from the paper's figures by design.");
   for (const json& c : arr(par, "choices"))
     if (c.is_string()) method.note("What 003 leaves open: " + c.get<std::string>());
+  {
+    Table at;
+    at.caption = "Assumptions: values the paper leaves open, chosen here (case keys); they are "
+                 "settings, not facts, and the optimum depends on them.";
+    at.header = {"assumption", "value", "case key"};
+    for (const json& a : arr(th, "assumptions"))
+      at.rows.push_back({jsonv::str(a, "name"), jsonv::sig(a, "value", 4) + " " + jsonv::str(a, "unit"),
+                         jsonv::str(a, "key")});
+    if (!at.rows.empty()) method.table(std::move(at));
+  }
   if (!par.empty()) method.table(json_table(par, "Parameters used (SI; _deg in degrees)."));
   page.sections.push_back(std::move(method));
 
   Section res;
   res.id = "results";
-  res.heading = "Energy and limits";
+  res.heading = "Reference, optimisers compared";
+  {
+    const std::string kind = jsonv::str(ref, "kind");
+    std::string text;
+    if (kind == "eq8")
+      text = "The eq. 8 trajectory meets every constraint, so it is the reference the saving is "
+             "measured from.";
+    else if (kind == "repaired")
+      text = "The eq. 8 trajectory breaks the limits (table below), so the reference is its "
+             "repair (" + jsonv::str(obj(ref, "repair"), "method") + "; " +
+             jsonv::str(obj(ref, "repair"), "return_code") + " after " +
+             jsonv::str(obj(ref, "repair"), "iterations") + " iterations; node rates changed by up to " +
+             jsonv::sig(obj(ref, "repair"), "max_rate_change_rad_s", 3) + " rad/s).";
+    else if (!kind.empty())
+      text = "The eq. 8 trajectory breaks the limits and its repair failed (" +
+             jsonv::str(obj(ref, "repair"), "return_code") + "): there is NO feasible reference; "
+             "the saving below is against the infeasible start and is not a valid figure.";
+    if (!text.empty()) {
+      text += " Reference energy " + jsonv::sig(th, "energy_reference_J", 5) + " J (raw eq. 8: " +
+              jsonv::sig(th, "energy_initial_J", 5) + " J); IDP saves " +
+              jsonv::sig(th, "saving_percent", 3) + " % of it (" +
+              jsonv::sig(th, "energy_optimised_J", 5) + " J).";
+      res.paragraph(text);
+    }
+    Table br;
+    br.caption = "How far the raw eq. 8 trajectory breaks each limit it breaks (margin < 0; "
+                 "normalised: the excess as a fraction of the limit, for the contact and "
+                 "friction of the ball's weight m4 g).";
+    br.header = {"constraint", "margin", "normalised excess"};
+    for (const json& b : arr(ref, "raw_breaks"))
+      br.rows.push_back({jsonv::str(b, "constraint"), jsonv::sig(b, "margin", 4) + " " + jsonv::str(b, "unit"),
+                         jsonv::sig(b, "worst_normalised", 3)});
+    if (!br.rows.empty()) res.table(std::move(br));
+  }
+  {
+    Table ct;
+    ct.caption = "The optimisers on equal terms: the same constrained problem, the same start. "
+                 "Margins (> 0: met) come from re-simulating each optimum with " +
+                 jsonv::str(obj(th, "verification"), "refinement") +
+                 "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
+                 "Binding: constraints within twice the back-off of their limit.";
+    ct.header = {"optimiser", "energy (J)", "mechanical (J)", "copper (J)", "friction (J)",
+                 "converged", "simulations", "time (s)", "contact N (N)", "friction needed",
+                 "tray angle (rad)", "release error (rad)", "voltage (V)", "current (A)",
+                 "power (W)", "binding", "binding motor rating"};
+    for (const json& row : arr(th, "comparison")) {
+      const json& m = obj(row, "margins");
+      ct.rows.push_back({jsonv::str(row, "optimiser"), jsonv::sig(row, "energy_J", 5),
+                         jsonv::sig(row, "mechanical_J", 4), jsonv::sig(row, "copper_J", 4),
+                         jsonv::sig(row, "friction_J", 3), yes_no(row, "converged"),
+                         jsonv::str(row, "simulations"), jsonv::sig(row, "run_time_s", 3),
+                         jsonv::sig(m, "contact_N", 3), jsonv::sig(m, "friction", 3),
+                         jsonv::sig(m, "tray_rad", 3), jsonv::sig(m, "release_rad", 3),
+                         jsonv::sig(m, "voltage_V", 3), jsonv::sig(m, "current_A", 3),
+                         jsonv::sig(m, "power_W", 3), names(row, "binding"),
+                         jsonv::str(row, "binding_rating")});
+    }
+    if (!ct.rows.empty()) res.table(std::move(ct));
+    std::string conv = "IDP: " + std::string(jsonv::has(idp, "converged") && idp["converged"].is_boolean() &&
+                                                      idp["converged"].get<bool>()
+                                                  ? "every seed converged"
+                                                  : "NOT converged (a seed ended on its budget)") +
+                       "; best seed " + jsonv::str(idp, "best_seed") + " ran " +
+                       jsonv::str(idp, "passes") + " passes, last pass gain " +
+                       jsonv::sig(idp, "last_gain", 2) + ".";
+    if (jsonv::has(nl, "motion"))
+      conv += " SLSQP: " + jsonv::str(nl, "return_code") + " after " + jsonv::str(nl, "iterations") +
+              " iterations, last change " + jsonv::sig(nl, "last_gain", 2) + ", " +
+              (yes_no(nl, "converged") == "yes" ? "converged." : "NOT converged: not an optimum.");
+    res.paragraph(conv);
+  }
   Table t;
-  t.caption = "The eq. 8 start, the IDP optimum and the gradient optimum side by side. Limits: " +
+  t.caption = "Each motion's energy and extremes (at the optimisers' own steps). Limits: " +
               jsonv::sig(lim, "voltage_max_V", 4) + " V, " + jsonv::sig(lim, "current_max_A", 4) +
-              " A, |θ4| ≤ " + format_sig(std::abs(jsonv::vec(lim, "theta4_limit_rad").empty()
-                                                      ? NAN
-                                                      : jsonv::vec(lim, "theta4_limit_rad").back()),
-                                         4) +
+              " A, " + jsonv::sig(lim, "power_max_W", 4) + " W, N ≥ " +
+              jsonv::sig(lim, "contact_margin_N", 3) + " N, |F_t|/N ≤ " +
+              jsonv::sig(lim, "friction_coefficient", 3) + ", |θ4| ≤ " +
+              format_sig(std::abs(jsonv::vec(lim, "theta4_limit_rad").empty()
+                                      ? NAN
+                                      : jsonv::vec(lim, "theta4_limit_rad").back()),
+                         4) +
               " rad.";
-  t.header = {"motion", "energy (J)", "criterion (J)", "electrical (J)", "mechanical (J)",
-              "copper (J)", "friction (J)", "max |θ4| (rad)", "max voltage (V)", "max current (A)",
-              "release angle error θ1..θ3 (rad)", "release rate error θ1', θ2' (rad/s)"};
+  t.header = {"motion", "energy (J)", "feasible", "electrical (J)", "mechanical (J)",
+              "copper (J)", "friction (J)", "min N (N)", "max |F_t|/N", "max |θ4| (rad)",
+              "max voltage (V)", "max current (A)", "max power (W)",
+              "release angle error θ1..θ3 (rad)"};
   for (const Motion& mo : ms) {
     const json& m = *mo.m;
     const json& es = obj(m, "energy_split");
-    t.rows.push_back({mo.label, jsonv::sig(m, "energy_J", 6), jsonv::sig(m, "criterion_J", 6),
+    t.rows.push_back({mo.label, jsonv::sig(m, "energy_J", 6), jsonv::str(m, "feasible"),
                       jsonv::sig(es, "electrical_J", 5), jsonv::sig(es, "mechanical_J", 4),
                       jsonv::sig(es, "copper_J", 5), jsonv::sig(es, "friction_J", 3),
+                      jsonv::sig(m, "min_normal_force_N", 3), jsonv::sig(m, "max_friction_ratio", 3),
                       jsonv::sig(m, "max_abs_theta4_rad", 4), jsonv::sig(m, "max_voltage_V", 4),
-                      jsonv::sig(m, "max_current_A", 4), release_error(m, "angle_rad"),
-                      release_error(m, "rate_rad_s")});
+                      jsonv::sig(m, "max_current_A", 4), jsonv::sig(m, "max_power_W", 4),
+                      release_error(m, "angle_rad")});
     t.swatches.push_back(css_colour(colour_for(mo.colour_key)));
   }
   if (!t.rows.empty()) res.table(std::move(t));
-  res.paragraph("IDP saves " + jsonv::sig(th, "saving_percent", 3) +
-                " % of the eq. 8 trajectory's energy (" + jsonv::sig(th, "energy_initial_J", 5) +
-                " J → " + jsonv::sig(th, "energy_optimised_J", 5) + " J) in " +
-                jsonv::sig(idp, "run_time_s", 3) + " s of search (" +
-                jsonv::str(idp, "evaluations") + " simulations on " + jsonv::str(idp, "threads") +
-                " threads)." +
-                (jsonv::has(nl, "motion")
-                     ? " The gradient method ran " + jsonv::sig(nl, "run_time_s", 3) + " s (" +
-                           jsonv::str(nl, "simulations") + " simulations, stop: " +
-                           jsonv::str(nl, "return_code") + ", feasible: " +
-                           jsonv::str(nl, "feasible") + ")."
-                     : std::string()));
   page.sections.push_back(std::move(res));
+
+  Section seeds;
+  seeds.id = "idp-seeds";
+  seeds.heading = "IDP seeds";
+  {
+    const json& sp = obj(idp, "spread");
+    if (!sp.empty())
+      seeds.paragraph("IDP ran " + jsonv::str(idp, "seeds") + " seeds from the same reference: "
+                      "energies best " + jsonv::sig(sp, "best_J", 5) + " J, median " +
+                      jsonv::sig(sp, "median_J", 5) + " J, worst " + jsonv::sig(sp, "worst_J", 5) +
+                      " J. The spread is what a single IDP run is uncertain by; the best seed is "
+                      "the reported optimum.");
+    Table st;
+    st.caption = "Each IDP seed: energy, whether it converged (a whole pass gained less than the "
+                 "tolerance) and what it cost.";
+    st.header = {"seed", "energy (J)", "feasible", "converged", "passes", "last pass gain",
+                 "simulations", "time (s)"};
+    for (const json& r : arr(idp, "seed_runs"))
+      st.rows.push_back({jsonv::str(r, "seed"), jsonv::sig(r, "energy_J", 6), jsonv::str(r, "feasible"),
+                         yes_no(r, "converged"), jsonv::str(r, "passes"), jsonv::sig(r, "last_gain", 2),
+                         jsonv::str(r, "evaluations"), jsonv::sig(r, "run_time_s", 3)});
+    if (!st.rows.empty()) seeds.table(std::move(st));
+  }
+  if (!seeds.blocks.empty()) page.sections.push_back(std::move(seeds));
 
   Section mot;
   mot.id = "motors";
   mot.heading = "Motors over time";
-  const double vmax = jsonv::num(lim, "voltage_max_V"), imax = jsonv::num(lim, "current_max_A");
+  const double vmax = jsonv::num(lim, "voltage_max_V"), imax = jsonv::num(lim, "current_max_A"),
+               pmax = jsonv::num(lim, "power_max_W");
   const char* joints_note = " Solid: motor 1; dashed: motor 2. Colours: grey the eq. 8 start, "
-                            "blue the IDP optimum, vermillion the gradient optimum.";
+                            "blue the IDP optimum, vermillion the gradient optimum (the repaired "
+                            "reference, if any, in its own colour).";
   LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", "voltage_V", -1, {"motor 1", "motor 2"});
   if (std::isfinite(vmax)) v.references = {{vmax, "±" + format_sig(vmax, 3) + " V limit"}, {-vmax, ""}};
   if (!v.series.empty()) mot.figure(figures.line("voltages", v, std::string("Motor voltages e (eq. 5) with the voltage limit.") + joints_note));
@@ -172,8 +304,35 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   LinePlot tq = motion_plot(ms, "joint torques", "torque (N m)", "torque_Nm", -1, {"joint 1", "joint 2"});
   if (!tq.series.empty()) mot.figure(figures.line("torques", tq, std::string("Torques the motors apply at joints 1 and 2.") + joints_note));
   LinePlot pw = motion_plot(ms, "electrical power", "power (W)", "power_W", -1, {"motor 1", "motor 2"});
-  if (!pw.series.empty()) mot.figure(figures.line("powers", pw, std::string("Electrical power e i drawn by the motors; its integral is the energy in the table.") + joints_note));
+  if (std::isfinite(pmax)) pw.references = {{pmax, "±" + format_sig(pmax, 3) + " W rating"}, {-pmax, ""}};
+  if (!pw.series.empty()) mot.figure(figures.line("powers", pw, std::string("Electrical power e i drawn by the motors with the power rating; its integral is the energy in the table.") + joints_note));
   page.sections.push_back(std::move(mot));
+
+  Section contact;
+  contact.id = "contact";
+  contact.heading = "Contact of the ball with the tray";
+  {
+    LinePlot nf = motion_plot(ms, "normal force of the tray on the ball", "N (N)", "normal_force_N", -1, {});
+    const double margin = jsonv::num(lim, "contact_margin_N");
+    if (std::isfinite(margin)) nf.references = {{margin, "margin " + format_sig(margin, 3) + " N"}, {0.0, "0 N: the ball lifts off"}};
+    if (!nf.series.empty())
+      contact.figure(figures.line("normal_force", nf,
+                                  "The tray's normal force on the ball, N = m4 (g − a)·n, at every "
+                                  "integration step; below 0 the tray would have to pull the ball."));
+    LinePlot fr = motion_plot(ms, "friction needed to roll", "|F_t| / N", "friction_needed", -1, {});
+    const double mu = jsonv::num(lim, "friction_coefficient");
+    if (std::isfinite(mu)) fr.references = {{mu, "μ = " + format_sig(mu, 3)}};
+    // keep the axis readable: the raw start may need far more than μ where N is near 0
+    for (auto& se : fr.series)
+      for (double& y : se.y)
+        if (std::isfinite(y) && y > 4 * (std::isfinite(mu) ? mu : 1.0)) y = NAN;
+    if (!fr.series.empty())
+      contact.figure(figures.line("friction_needed", fr,
+                                  "The friction coefficient rolling without slip needs, |F_t|/N "
+                                  "(F_t = m4 (a − g)·t), with the assumed μ; values above 4μ and "
+                                  "where N ≤ 0 are left out of the plot (the table gives the maxima)."));
+  }
+  page.sections.push_back(std::move(contact));
 
   Section ball;
   ball.id = "ball";
@@ -262,49 +421,47 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   LinePlot cp;
   cp.title = "IDP convergence";
   cp.x_label = "iteration (all passes)";
-  cp.y_label = "best value (J)";
-  Series crit{"criterion (energy + penalties)", {}, {}, colour_for("idp"), LineStyle::kSolid, true};
-  Series en{"energy of the best", {}, {}, colour_for("idp"), LineStyle::kDashed, true};
+  cp.y_label = "energy of the best (J)";
+  Series en{"energy of the best (feasible)", {}, {}, colour_for("idp"), LineStyle::kSolid, true};
   Table ct;
-  ct.caption = "IDP: the best criterion at the end of iterations (all of them when few; "
-               "else each pass's first and last and every fifth).";
-  ct.header = {"pass", "iteration", "criterion (J)", "energy (J)", "region (rad/s)", "improvements", "simulations"};
+  ct.caption = "IDP (best seed): the best at the end of iterations (all of them when few; "
+               "else each pass's first and last and every fifth). Violation 0: feasible.";
+  ct.header = {"pass", "iteration", "energy (J)", "violation", "region (rad/s)", "improvements", "simulations"};
   int k = 0;
   const json& rows = arr(idp, "convergence");
   for (size_t i = 0; i < rows.size(); ++i) {
     const json& row = rows[i];
     ++k;
-    crit.x.push_back(k);
-    crit.y.push_back(jsonv::num(row, "criterion_J"));
     en.x.push_back(k);
-    en.y.push_back(jsonv::num(row, "energy_J"));
+    en.y.push_back(jsonv::num(row, "violation") > 0 ? NAN : jsonv::num(row, "energy_J"));
     // the table keeps each pass's first and last iteration and every fifth (the plot has all)
     const bool last_of_pass = i + 1 == rows.size() || jsonv::str(rows[i + 1], "pass") != jsonv::str(row, "pass");
     const double it = jsonv::num(row, "iteration");
     if (rows.size() > 25 && !(it == 1 || last_of_pass || std::fmod(it, 5) == 0)) continue;
     const auto reg = jsonv::vec(row, "region_rad_s");
     ct.rows.push_back({jsonv::str(row, "pass"), jsonv::str(row, "iteration"),
-                       jsonv::sig(row, "criterion_J", 6), jsonv::sig(row, "energy_J", 6),
+                       jsonv::sig(row, "energy_J", 6), jsonv::sig(row, "violation", 3),
                        reg.size() == 2 ? format_sig(reg[0], 3) + ", " + format_sig(reg[1], 3) : "n/a",
                        jsonv::str(row, "improvements"), jsonv::str(row, "evaluations")});
   }
-  crit.markers = en.markers = k <= 80;
+  en.markers = k <= 80;
   if (k > 0) {
-    cp.series = {crit, en};
+    cp.series = {en};
     conv.figure(figures.line("idp_convergence", cp,
-                             "Best criterion and its energy after each IDP iteration, passes one "
-                             "after the other (the region is restored between passes)."));
+                             "Energy of the best feasible profile after each IDP iteration of the "
+                             "best seed, passes one after the other (the region is restored between "
+                             "passes)."));
   }
   const auto hist = jsonv::vec(nl, "history_J");
   if (hist.size() >= 2) {
     LinePlot hp;
     hp.title = "gradient method history";
     hp.x_label = "iteration";
-    hp.y_label = "criterion (J)";
-    Series h{"SLSQP criterion", {}, hist, colour_for("gradient")};
+    hp.y_label = "energy (J)";
+    Series h{"SLSQP energy", {}, hist, colour_for("gradient")};
     for (size_t i = 0; i < hist.size(); ++i) h.x.push_back(static_cast<double>(i + 1));
     hp.series = {h};
-    conv.figure(figures.line("slsqp_history", hp, "The gradient method's criterion per iteration."));
+    conv.figure(figures.line("slsqp_history", hp, "The gradient method's energy at each of its evaluations (points may be infeasible)."));
   }
   if (!ct.rows.empty()) conv.table(std::move(ct));
   const json& rep = obj(th, "replay");

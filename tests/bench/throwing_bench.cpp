@@ -1,10 +1,12 @@
 // Speed of the tray-arm simulations: RK4 steps per second of the planning model (one
 // evaluation of an IDP candidate), the open-loop DOPRI5 replay, one IDP iteration on both
-// cores, and the pendulum study.
+// cores, the time to a converged IDP (one seed from the bundled case's feasible reference,
+// and the 4 seeds on both cores), and the pendulum study.
 #include <benchmark/benchmark.h>
 
 #include "studies/pendulum/pendulum.hpp"
 #include "studies/throwing/idp.hpp"
+#include "studies/throwing/nlopt_solve.hpp"
 #include "studies/throwing/throwing.hpp"
 
 namespace {
@@ -55,7 +57,7 @@ void BM_IdpIteration(benchmark::State& state) {
   Fixture f;
   IdpSettings s;
   s.iterations = 1;
-  s.passes = 1;
+  s.max_passes = 1;
   s.threads = static_cast<int>(state.range(0));
   const Eigen::Vector2d delta = f.spec.release - f.spec.start;
   long evals = 0;
@@ -64,6 +66,34 @@ void BM_IdpIteration(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(evals), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_IdpIteration)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// time to a converged IDP on the bundled case (default spec): from its repaired reference
+// (computed once, outside the timing), one seed on one core, or all seeds on both cores
+void BM_IdpConverged(benchmark::State& state) {
+  Fixture f;
+  const Eigen::Vector2d delta = f.spec.release - f.spec.start;
+  NloptSettings ns = f.spec.nlopt;
+  ns.backoff = f.spec.backoff;
+  const NloptOutcome rep = run_nlopt(f.setup, f.profile, delta, ns, Objective::kViolation);
+  IdpSettings s = f.spec.idp;
+  s.backoff = f.spec.backoff;
+  s.threads = static_cast<int>(state.range(0));
+  if (s.threads == 1) s.seeds = 1;
+  long evals = 0;
+  int converged = 0, runs = 0;
+  for (auto _ : state) {
+    for (const IdpResult& r : run_idp_seeds(f.setup, rep.best, delta, s)) {
+      evals += r.evaluations;
+      converged += r.converged;
+      ++runs;
+    }
+  }
+  state.counters["simulations_per_s"] =
+      benchmark::Counter(static_cast<double>(evals), benchmark::Counter::kIsRate);
+  state.counters["seeds"] = s.seeds;
+  state.counters["converged_fraction"] = runs ? static_cast<double>(converged) / runs : 0.0;
+}
+BENCHMARK(BM_IdpConverged)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 void BM_PendulumTwoSeconds(benchmark::State& state) {
   const PendulumSpec spec = default_pendulum_spec();

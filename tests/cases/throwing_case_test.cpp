@@ -48,14 +48,25 @@ TEST(ThrowingCase, BundledCaseEqualsTheDocumentedDefaults) {
   EXPECT_EQ(s.current_max, def.current_max);
   EXPECT_EQ(s.stages, def.stages);
   EXPECT_EQ(s.idp.iterations, def.idp.iterations);
-  EXPECT_EQ(s.idp.passes, def.idp.passes);
+  EXPECT_EQ(s.idp.max_passes, def.idp.max_passes);
+  EXPECT_EQ(s.idp.tolerance, def.idp.tolerance);
+  EXPECT_EQ(s.idp.seeds, def.idp.seeds);
+  EXPECT_GE(s.idp.seeds, 4);
   EXPECT_EQ(s.idp.shrink, def.idp.shrink);
   EXPECT_EQ(s.idp.restore, def.idp.restore);
   EXPECT_EQ(s.idp.candidates, def.idp.candidates);
   EXPECT_EQ(s.idp.region, def.idp.region);
   EXPECT_EQ(s.steps_per_stage, def.steps_per_stage);
-  EXPECT_EQ(s.k_tray, def.k_tray);
-  EXPECT_EQ(s.k_current, def.k_current);
+  EXPECT_EQ(s.power_max, 60.0);  // Table 1: rated 60 W
+  EXPECT_EQ(s.voltage_max, 24.0);
+  EXPECT_EQ(s.contact_margin, def.contact_margin);
+  EXPECT_GT(s.contact_margin, 0.0);
+  EXPECT_EQ(s.friction_coefficient, def.friction_coefficient);
+  EXPECT_EQ(s.backoff, def.backoff);
+  EXPECT_EQ(s.allow_not_converged, false);
+  EXPECT_EQ(s.check_refinement, 4);
+  EXPECT_EQ(s.nlopt.ftol_rel, def.nlopt.ftol_rel);
+  EXPECT_EQ(s.nlopt.xtol_rel, def.nlopt.xtol_rel);
   EXPECT_EQ(s.nlopt.max_time, def.nlopt.max_time);
   EXPECT_EQ(s.nlopt.max_evaluations, def.nlopt.max_evaluations);
   EXPECT_EQ(s.arm.motor2, studies::Motor2Mount::kOnLink1);
@@ -96,6 +107,40 @@ TEST(ThrowingCase, ErrorsNameLineColumnAndWhatWasExpected) {
   EXPECT_NE(msgs[3].find("expected a list of 3 numbers"), std::string::npos);
   EXPECT_NE(msgs[4].find("t.yaml:10:13: 'throwing.idp.stages' is 1; should be in [2, 64]"), std::string::npos);
   EXPECT_EQ(msgs[5], "t.yaml:11:5: unknown key 'throwing.idp.candiates'; did you mean 'candidates'?");
+}
+
+TEST(ThrowingCase, ConstraintAndConvergenceKeysAreRead) {
+  Diagnostics d("t.yaml");
+  const auto s = load_text(
+      "throwing:\n"
+      "  motors: {power_max_W: 45}\n"
+      "  constraints: {contact_margin_N: 0.05, friction_coefficient: 0.3, release_tolerance_deg: 2, backoff: 0.01}\n"
+      "  idp: {max_passes: 7, tolerance: 1.0e-4, seeds: 6}\n"
+      "  nlopt: {ftol_rel: 1.0e-7, xtol_rel: 1.0e-5}\n"
+      "  checks: {allow_not_converged: true, refinement: 8}\n",
+      d);
+  ASSERT_TRUE(d.empty()) << d.errors()[0].format();
+  EXPECT_EQ(s.power_max, 45);
+  EXPECT_EQ(s.contact_margin, 0.05);
+  EXPECT_EQ(s.friction_coefficient, 0.3);
+  EXPECT_NEAR(s.release_tolerance, 2 * core::kPi / 180, 1e-15);
+  EXPECT_EQ(s.backoff, 0.01);
+  EXPECT_EQ(s.idp.max_passes, 7);
+  EXPECT_EQ(s.idp.tolerance, 1e-4);
+  EXPECT_EQ(s.idp.seeds, 6);
+  EXPECT_EQ(s.nlopt.ftol_rel, 1e-7);
+  EXPECT_EQ(s.nlopt.xtol_rel, 1e-5);
+  EXPECT_TRUE(s.allow_not_converged);
+  EXPECT_EQ(s.check_refinement, 8);
+}
+
+TEST(ThrowingCase, NegativeFrictionCoefficientIsAnError) {
+  Diagnostics d("t.yaml");
+  load_text("throwing:\n  constraints:\n    friction_coefficient: -1\n", d);
+  ASSERT_EQ(d.errors().size(), 1u);
+  EXPECT_NE(d.errors()[0].format().find("t.yaml:3:27: 'throwing.constraints.friction_coefficient' is -1"),
+            std::string::npos)
+      << d.errors()[0].format();
 }
 
 }  // namespace

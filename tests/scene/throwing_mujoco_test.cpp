@@ -38,10 +38,11 @@ void replay_in_mujoco(st::Motor2Mount mount) {
       spec.start, Eigen::Vector2d::Zero(), spec.release, spec.release_rate, spec.tf, spec.stages);
   st::IdpSettings is;
   is.iterations = 3;
-  is.passes = 1;
+  is.max_passes = 1;
   is.candidates = 4;
+  is.region = {5.0, 5.0};
   const st::IdpResult idp = st::run_idp(setup, initial, spec.release - spec.start, is);
-  ASSERT_LT(idp.evaluation.criterion, idp.initial_evaluation.criterion);
+  ASSERT_TRUE(st::better_profile(idp.evaluation, idp.initial_evaluation));
   // the plan with dense voltage samples (16x the steps: 3.125e-4 s)
   st::ThrowSetup fine = setup;
   fine.steps_per_stage = 16 * setup.steps_per_stage;

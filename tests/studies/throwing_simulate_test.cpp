@@ -113,15 +113,88 @@ TEST(ThrowSimulation, PlannedVoltagesReplayedOpenLoopReproduceTheMotion) {
   }
 }
 
-TEST(ThrowSimulation, TrayPenaltyIsEq9sKTimesTheExcessAngle) {
+TEST(ThrowContact, BallAtRestInTheCupIsPushedByItsWeightAndNeedsNoFriction) {
+  // the arm held still with the tray hanging (theta1 + theta2 + theta3 = -90 deg): the ball
+  // sits at the bottom of the cup, N = m4 g, F_t = 0
+  ThrowingSpec s = spec();
+  const ThrowSetup setup = make_throw_setup(s);
+  VelocityProfile still;
+  still.tf = 0.4;
+  still.q0 = s.start;
+  still.v = Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(2, 5);
+  std::vector<ThrowSample> samples;
+  const ProfileEvaluation ev = simulate_profile(setup, still, &samples);
+  ASSERT_TRUE(ev.finite);
+  for (const ThrowSample& x : samples) {
+    EXPECT_NEAR(x.normal_force, s.arm.m4 * s.arm.gravity, 1e-12);
+    EXPECT_NEAR(x.tangential_force, 0.0, 1e-12);
+  }
+  EXPECT_NEAR(ev.min_normal_force, s.arm.m4 * s.arm.gravity, 1e-12);
+  EXPECT_NEAR(ev.max_friction_ratio, 0.0, 1e-10);
+}
+
+TEST(ThrowContact, TangentialForceEqualsTheBallsSpinEquation) {
+  // two routes to F_t (docs/throwing.md): Newton's law of the ball's centre, and its spin
+  // I_Gb omega_b' = r_b F_t with omega_b' = qdd1 + qdd2 + qdd3 - (r4 / r_b) qdd4
+  for (Motor2Mount mount : {Motor2Mount::kOnLink1, Motor2Mount::kOnBase}) {
+    ThrowingSpec s = spec();
+    s.arm.motor2 = mount;
+    const ThrowSetup setup = make_throw_setup(s);
+    std::vector<ThrowSample> samples;
+    simulate_profile(setup, eq8(s, 16), &samples);
+    double worst = 0, scale = 0;
+    for (const ThrowSample& x : samples) {
+      const double wdot = x.qdd[0] + x.qdd[1] + x.qdd[2] - (s.arm.r4 / s.arm.rb) * x.qdd[3];
+      worst = std::max(worst, std::abs(s.arm.Ib * wdot / s.arm.rb - x.tangential_force));
+      scale = std::max(scale, std::abs(x.tangential_force));
+    }
+    EXPECT_GT(scale, 1e-3);  // the throw does need friction
+    EXPECT_LT(worst, 1e-9 * std::max(1.0, scale)) << "mount " << static_cast<int>(mount);
+  }
+}
+
+TEST(ThrowContact, NormalForceEqualsTheRadialBalanceOfTheBall) {
+  // an independent route to N: the ball's centre acceleration by finite differences of its
+  // recorded positions (4x finer steps), N = m4 (g - a) . n
+  ThrowingSpec s = spec();
+  s.steps_per_stage = 80;
+  const ThrowSetup setup = make_throw_setup(s);
+  std::vector<ThrowSample> samples;
+  simulate_profile(setup, eq8(s, 16), &samples);
+  double worst = 0;
+  for (size_t k = 1; k + 1 < samples.size(); ++k) {
+    const ThrowSample &a = samples[k - 1], &b = samples[k], &c = samples[k + 1];
+    if (!(a.t < b.t && b.t < c.t) || b.stage != a.stage || b.stage != c.stage) continue;
+    const double h = b.t - a.t;
+    const Eigen::Vector2d acc = (ball_position(setup.chain, c.q) - 2 * ball_position(setup.chain, b.q) +
+                                 ball_position(setup.chain, a.q)) / (h * h);
+    const double phi = b.q.sum();
+    const Eigen::Vector2d n(std::cos(phi), std::sin(phi));
+    const double N = s.arm.m4 * (Eigen::Vector2d(0, -s.arm.gravity) - acc).dot(n);
+    worst = std::max(worst, std::abs(N - b.normal_force));
+  }
+  EXPECT_LT(worst, 1e-5);  // O(h^2) of the difference quotient, h = 6.25e-4 s
+}
+
+TEST(ThrowConstraints, ValuesAreTheNormalisedStageExtremes) {
   ThrowingSpec s = spec();
   s.tray_width = 0.1;  // far narrower than the ball's swing
-  s.k_release = 0.0;
-  s.voltage_max = s.current_max = 1e3;
   const ThrowSetup setup = make_throw_setup(s);
-  const ProfileEvaluation ev = simulate_profile(setup, eq8(s, 16));
-  ASSERT_GT(ev.max_abs_theta4, 0.05);
-  EXPECT_NEAR(ev.criterion - ev.energy, s.k_tray * (ev.max_abs_theta4 - 0.05), 1e-9);
+  const ProfileEvaluation ev = simulate_profile(setup, eq8(s, 16), nullptr, 0.01);
+  const std::vector<double> g = constraint_values(setup, ev, 0.01);
+  const int P = 16;
+  ASSERT_EQ(g.size(), 6u * P + 1);
+  const double w = s.arm.m4 * s.arm.gravity;
+  for (int k = 0; k < P; ++k) {
+    EXPECT_DOUBLE_EQ(g[k], (s.contact_margin - ev.stage_normal[k]) / w + 0.01);
+    EXPECT_DOUBLE_EQ(g[2 * P + k], (ev.stage_theta4[k] - 0.05) / 0.05 + 0.01);
+    EXPECT_DOUBLE_EQ(g[5 * P + k], (ev.stage_power[k] - s.power_max) / s.power_max + 0.01);
+  }
+  EXPECT_FALSE(ev.feasible);
+  EXPECT_GT(ev.violation, 0.0);
+  const auto worst = worst_constraints(setup, ev);
+  EXPECT_NEAR(worst[static_cast<int>(ConstraintKind::kTray)], (ev.max_abs_theta4 - 0.05) / 0.05, 1e-12);
+  EXPECT_GT(ev.max_power, s.power_max);  // the raw eq. 8 start breaks the 60 W rating
 }
 
 }  // namespace

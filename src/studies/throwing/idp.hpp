@@ -17,6 +17,7 @@
 /// fixed-seed sequence and evaluated on
 /// `threads` threads, so the answer does not depend on the thread count.
 
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -28,14 +29,27 @@
 namespace armstudy::studies {
 
 /// IDP settings (the case's `idp:` section).
+///
+/// Constraints: a candidate replaces the best when it is better by the feasibility rules
+/// (Deb 2000): between two feasible profiles the lower energy wins, otherwise the lower
+/// total violation (simulate.hpp's constraint_values with `backoff`). So IDP solves the same
+/// constrained problem as the gradient method, and from an infeasible start it first
+/// reaches the feasible set.
+///
+/// Convergence: passes run until one whole pass improves a feasible best by a relative
+/// energy gain below `tolerance` ((E_start - E_end) / |E_end|); a run that reaches
+/// `max_passes` first is not converged (IdpResult::converged false, last_gain kept).
 struct IdpSettings {
-  int iterations = 20;                            ///< iterations (stage sweeps) per pass
-  int passes = 3;                                 ///< region restarts
-  double restore = 0.5;                           ///< region factor between passes
-  int candidates = 8;                             ///< R, candidates per stage node
-  double shrink = 0.8;                            ///< gamma, region factor per iteration
-  Eigen::Vector2d region = {10.0, 10.0};          ///< rad/s, initial half-width per joint
+  int iterations = 6;                             ///< iterations (stage sweeps) per pass
+  int max_passes = 20;                            ///< budget: passes at most
+  double tolerance = 1e-3;                        ///< relative energy gain of a pass
+  double restore = 0.8;                           ///< region factor between passes
+  int candidates = 5;                             ///< R, candidates per stage node
+  double shrink = 0.7;                            ///< gamma, region factor per iteration
+  Eigen::Vector2d region = {1.0, 1.0};            ///< rad/s, initial half-width per joint
   unsigned seed = 1;                              ///< std::mt19937 seed
+  int seeds = 4;                                  ///< runs with seeds seed, seed + 1, ...
+  double backoff = 0.02;                          ///< constraint back-off (constraint_values)
   int threads = 2;                                ///< evaluation threads (>= 1)
 };
 
@@ -43,8 +57,8 @@ struct IdpSettings {
 struct IdpIteration {
   int iteration = 0;         ///< 1-based, counted over all passes
   int pass = 0;              ///< 1-based
-  double criterion = 0;      ///< J, best after the iteration
   double energy = 0;         ///< J, eq. 7 of the best
+  double violation = 0;      ///< total constraint violation of the best (0: feasible)
   Eigen::Vector2d region;    ///< rad/s, region used in the iteration
   long evaluations = 0;      ///< simulations so far
   int improvements = 0;      ///< stage nodes improved in this iteration
@@ -56,20 +70,36 @@ struct IdpResult {
   ProfileEvaluation evaluation;
   ProfileEvaluation initial_evaluation;
   std::vector<IdpIteration> history;
+  std::vector<double> pass_gains;  ///< relative energy gain of each pass (NaN if infeasible)
+  bool converged = false;          ///< a pass gained less than the tolerance, feasible
+  double last_gain = NAN;          ///< the last pass's relative gain
+  int passes = 0;                  ///< passes run
+  unsigned seed = 1;
   long evaluations = 0;
   double run_time = 0;  ///< s, wall clock
   int threads = 1;
 };
 
-/// Evaluates `profiles` on `threads` threads (results in input order).
+/// Is `a` better than `b` by the feasibility rules (see IdpSettings)?
+bool better_profile(const ProfileEvaluation& a, const ProfileEvaluation& b);
+
+/// Evaluates `profiles` on `threads` threads (results in input order), classified with
+/// `backoff`.
 std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
                                                  const std::vector<VelocityProfile>& profiles,
-                                                 int threads);
+                                                 int threads, double backoff = 0.0);
 
-/// Runs IDP from `initial` (which must already meet the displacement `delta`, rad).
-/// `progress` receives the fraction of iterations done.
+/// Runs IDP from `initial` (which must already meet the displacement `delta`, rad) with
+/// settings.seed. `progress` receives the fraction of the pass budget done.
 IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
                   const Eigen::Vector2d& delta, const IdpSettings& settings,
                   const ProgressFn& progress = {});
+
+/// Runs IDP for settings.seeds seeds (seed, seed + 1, ...), the seeds side by side on
+/// settings.threads threads (each seed serial): results in seed order, independent of the
+/// thread count.
+std::vector<IdpResult> run_idp_seeds(const ThrowSetup& setup, const VelocityProfile& initial,
+                                     const Eigen::Vector2d& delta, const IdpSettings& settings,
+                                     const ProgressFn& progress = {});
 
 }  // namespace armstudy::studies

@@ -12,18 +12,20 @@
 namespace armstudy::studies {
 namespace {
 
-
 struct Problem {
   const ThrowSetup* setup;
   VelocityProfile base;
   Eigen::Vector2d delta;
   NloptSettings settings;
+  Objective objective;
   std::vector<double> cached_x;
-  int ineq = 0;  // 3 per stage + 1 (release)
-  // values: energy, then the inequality constraints (<= 0); grads row-major
+  int ineq = 0;  // 6 per stage + 1 (release)
+  // values: objective, then the inequality constraints (<= 0); grads row-major
   std::vector<double> values, grads;
   NloptOutcome* out;
-  double best_feasible = std::numeric_limits<double>::infinity();
+  nlopt_opt opt = nullptr;
+  bool found = false;  // kViolation: a feasible point was met
+  VelocityProfile last;  // the last point SLSQP evaluated (not a difference neighbour)
 };
 
 int num_vars(const VelocityProfile& p) { return 2 * (p.stages() - 1); }
@@ -39,21 +41,15 @@ VelocityProfile to_profile(const Problem& pr, const double* x) {
 }
 
 void quantities(const Problem& pr, const ProfileEvaluation& e, double* q) {
-  const ThrowSetup& s = *pr.setup;
-  const double tol = pr.settings.release_tolerance;
-  const int P = pr.base.stages();
-  q[0] = e.energy;
-  // stage-wise maxima: smoother for SLSQP than one maximum over the whole motion
-  for (int k = 0; k < P; ++k) {
-    const double th4 = e.finite ? e.stage_theta4[k] : 1e3;
-    const double v = e.finite ? e.stage_voltage[k] : 1e3;
-    const double i = e.finite ? e.stage_current[k] : 1e3;
-    q[1 + k] = (th4 - s.half_width) / s.half_width;
-    q[1 + P + k] = (v - s.voltage_max) / s.voltage_max;
-    q[1 + 2 * P + k] = (i - s.current_max) / s.current_max;
+  const std::vector<double> g = constraint_values(*pr.setup, e, pr.settings.backoff);
+  std::copy(g.begin(), g.end(), q + 1);
+  if (pr.objective == Objective::kEnergy) {
+    q[0] = e.energy;
+  } else {
+    // aim twice the back-off inside, so that the descent crosses into the feasible set
+    q[0] = 0.0;
+    for (double v : g) q[0] += std::pow(std::max(0.0, v + pr.settings.backoff), 2);
   }
-  // |theta3(tf) - target| <= tol, scaled by tol
-  q[1 + 3 * P] = (std::abs(e.theta3_final - s.theta3_release) - tol) / tol;
 }
 
 void compute(Problem& pr, const double* x) {
@@ -73,7 +69,7 @@ void compute(Problem& pr, const double* x) {
     ps.push_back(to_profile(pr, xx.data()));
     xx[i] = x[i];
   }
-  const auto evs = evaluate_profiles(*pr.setup, ps, pr.settings.threads);
+  const auto evs = evaluate_profiles(*pr.setup, ps, pr.settings.threads, pr.settings.backoff);
   pr.out->simulations += static_cast<long>(evs.size());
   const int m = 1 + pr.ineq;
   pr.values.assign(m, 0.0);
@@ -85,18 +81,9 @@ void compute(Problem& pr, const double* x) {
     quantities(pr, evs[2 + 2 * i], qm.data());
     for (int j = 0; j < m; ++j) pr.grads[j * n + i] = (qp[j] - qm[j]) / (2 * h);
   }
-  pr.out->history.push_back(evs[0].energy);
-  pr.out->last = ps[0];
-  pr.out->last_evaluation = evs[0];
-  // keep the best feasible point seen
-  bool feasible = evs[0].finite;
-  for (int j = 1; j < m; ++j) feasible &= pr.values[j] <= 1e-6;
-  if (feasible && evs[0].energy < pr.best_feasible) {
-    pr.best_feasible = evs[0].energy;
-    pr.out->best = ps[0];
-    pr.out->evaluation = evs[0];
-    pr.out->feasible = true;
-  }
+  pr.out->history.push_back(pr.values[0]);
+  pr.out->violation_history.push_back(evs[0].violation);
+  pr.last = ps[0];
 }
 
 double objective(unsigned n, const double* x, double* grad, void* data) {
@@ -150,12 +137,13 @@ std::string code_name(nlopt_result r) {
 }  // namespace
 
 NloptOutcome run_nlopt(const ThrowSetup& setup, const VelocityProfile& initial,
-                       const Eigen::Vector2d& delta, const NloptSettings& settings) {
+                       const Eigen::Vector2d& delta, const NloptSettings& settings,
+                       Objective objective_kind) {
   const auto t0 = std::chrono::steady_clock::now();
   NloptOutcome out;
-  out.best = initial;
-  out.evaluation = simulate_profile(setup, initial);
-  Problem pr{&setup, initial, delta, settings, {}, 3 * initial.stages() + 1, {}, {}, &out};
+  Problem pr{&setup, initial, delta, settings, objective_kind, {}, 6 * initial.stages() + 1,
+             {}, {}, &out, nullptr, false, {}};
+  const bool repair = objective_kind == Objective::kViolation;
   const int n = num_vars(initial);
   std::vector<double> x(n);
   for (int k = 1; k < initial.stages(); ++k) {
@@ -163,17 +151,41 @@ NloptOutcome run_nlopt(const ThrowSetup& setup, const VelocityProfile& initial,
     x[2 * (k - 1) + 1] = initial.v(1, k);
   }
   nlopt_opt opt = nlopt_create(NLOPT_LD_SLSQP, n);
+  pr.opt = opt;
   nlopt_set_min_objective(opt, objective, &pr);
   const std::vector<double> tol_ineq(pr.ineq, 1e-8), tol_eq(2, 1e-10);
-  nlopt_add_inequality_mconstraint(opt, pr.ineq, inequalities, &pr, tol_ineq.data());
+  if (!repair) nlopt_add_inequality_mconstraint(opt, pr.ineq, inequalities, &pr, tol_ineq.data());
   nlopt_add_equality_mconstraint(opt, 2, equalities, &pr, tol_eq.data());
   nlopt_set_maxeval(opt, settings.max_evaluations);
   nlopt_set_maxtime(opt, settings.max_time);
   nlopt_set_ftol_rel(opt, settings.ftol_rel);
+  nlopt_set_xtol_rel(opt, settings.xtol_rel);
+  if (repair) nlopt_set_stopval(opt, 0.0);  // every constraint 2 backoff inside
   double f = 0;
   const nlopt_result r = nlopt_optimize(opt, x.data(), &f);
   nlopt_destroy(opt);
   out.return_code = code_name(r);
+  // the answer is SLSQP's last iterate (NLopt's returned x is the best point that met the
+  // constraints to 1e-8, often the start: SQP iterates approach the boundary from outside);
+  // for the repair (no inequality constraints) the returned x, the least violation
+  out.best = (repair || pr.last.v.size() == 0) ? to_profile(pr, x.data()) : pr.last;
+  out.evaluation = simulate_profile(setup, out.best, nullptr, settings.backoff);
+  out.objective = repair ? out.evaluation.violation : out.evaluation.energy;
+  out.rate_change = (out.best.v - initial.v).cwiseAbs().maxCoeff();
+  double worst = -INFINITY;
+  for (double g : constraint_values(setup, out.evaluation, settings.backoff)) worst = std::max(worst, g);
+  // an SQP iterate meets its constraints only to its own tolerance: it must be at least
+  // 3/4 of the back-off inside every limit (the finer check samples between its steps)
+  out.feasible = out.evaluation.finite && worst <= (repair ? 0.0 : 0.25 * settings.backoff) &&
+                 (displacement(out.best) - delta).norm() <= 1e-8;
+  out.iterations = static_cast<int>(out.history.size());
+  const size_t H = out.history.size();
+  if (H >= 2)
+    out.last_gain = (out.history[H - 2] - out.history[H - 1]) /
+                    std::max(std::abs(out.history[H - 1]), 1e-12);
+  out.converged = out.feasible && (repair ? r == NLOPT_STOPVAL_REACHED
+                                          : (r == NLOPT_FTOL_REACHED || r == NLOPT_XTOL_REACHED ||
+                                             r == NLOPT_SUCCESS));
   out.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

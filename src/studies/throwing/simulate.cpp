@@ -19,6 +19,7 @@ struct PointEval {
   core::JointVector q, qd, qdd, tau;
   Eigen::Vector2d tau_m, rate;
   core::MotorSample ms[2];
+  Eigen::Vector2d force;  // normal, tangential force of the tray on the ball
 };
 
 class Planner {
@@ -61,6 +62,7 @@ class Planner {
       out.ms[m] = core::motor_sample(s_.motor[m], out.rate[m], acc_m[m], out.tau_m[m]);
       power += s_.count_regeneration ? out.ms[m].power : std::max(0.0, out.ms[m].power);
     }
+    out.force = ball_contact_forces(s_.chain, s_.ball_mass, out.q, out.qd, out.qdd);
     out.dx.resize(5);
     out.dx << x[2], x[3], d.qdd[2], d.qdd[3], power;  // eq. 7 integrand as the fifth state
   }
@@ -86,13 +88,87 @@ void record(const PointEval& pe, int stage, double t, double energy, std::vector
   s.motor[0] = pe.ms[0];
   s.motor[1] = pe.ms[1];
   s.energy = energy;
+  s.normal_force = pe.force[0];
+  s.tangential_force = pe.force[1];
   out->push_back(s);
 }
 
 }  // namespace
 
+Eigen::Vector2d ball_contact_forces(const core::PlanarChain& chain, double ball_mass,
+                                    const core::JointVector& q, const core::JointVector& qd,
+                                    const core::JointVector& qdd) {
+  // ball centre p = sum_i L_i e(phi_i), phi_i = base + q_1 + .. + q_i; its acceleration
+  // a = sum_i L_i (phi_i'' e(phi_i)^perp - phi_i'^2 e(phi_i))
+  double phi = chain.base_angle, w = 0.0, al = 0.0;
+  Eigen::Vector2d a = Eigen::Vector2d::Zero();
+  const int n = static_cast<int>(chain.links.size());
+  for (int i = 0; i < n; ++i) {
+    phi += q[i];
+    w += qd[i];
+    al += qdd[i];
+    const Eigen::Vector2d e(std::cos(phi), std::sin(phi)), ep(-std::sin(phi), std::cos(phi));
+    a += chain.links[i].length * (al * ep - w * w * e);
+  }
+  // n: from the centre of the ball's circle to the ball's centre (the last link's axis)
+  const Eigen::Vector2d nn(std::cos(phi), std::sin(phi)), tt(-std::sin(phi), std::cos(phi));
+  const Eigen::Vector2d g(0.0, -chain.gravity);
+  // m a = -N n + F_t t + m g
+  return {ball_mass * (g - a).dot(nn), ball_mass * (a - g).dot(tt)};
+}
+
+const char* constraint_name(ConstraintKind k) {
+  switch (k) {
+    case ConstraintKind::kContact: return "contact force";
+    case ConstraintKind::kFriction: return "friction needed";
+    case ConstraintKind::kTray: return "tray angle";
+    case ConstraintKind::kVoltage: return "voltage";
+    case ConstraintKind::kCurrent: return "current";
+    case ConstraintKind::kPower: return "power";
+    case ConstraintKind::kRelease: return "release angle";
+  }
+  return "?";
+}
+
+std::vector<double> constraint_values(const ThrowSetup& s, const ProfileEvaluation& e,
+                                      double backoff) {
+  const int P = static_cast<int>(e.stage_theta4.size());
+  std::vector<double> g(6 * P + 1, 1e3);
+  if (!e.finite) return g;
+  const double weight = s.ball_mass * s.chain.gravity;
+  for (int k = 0; k < P; ++k) {
+    g[k] = (s.contact_margin - e.stage_normal[k]) / weight + backoff;
+    g[P + k] = e.stage_friction[k] / weight + backoff;
+    g[2 * P + k] = (e.stage_theta4[k] - s.half_width) / s.half_width + backoff;
+    g[3 * P + k] = (e.stage_voltage[k] - s.voltage_max) / s.voltage_max + backoff;
+    g[4 * P + k] = (e.stage_current[k] - s.current_max) / s.current_max + backoff;
+    g[5 * P + k] = (e.stage_power[k] - s.power_max) / s.power_max + backoff;
+  }
+  g[6 * P] = (std::abs(e.theta3_final - s.theta3_release) - s.release_tolerance) /
+                 s.release_tolerance + backoff;
+  return g;
+}
+
+std::array<double, kConstraintKinds> worst_constraints(const ThrowSetup& s,
+                                                       const ProfileEvaluation& e) {
+  const std::vector<double> g = constraint_values(s, e, 0.0);
+  const int P = static_cast<int>(e.stage_theta4.size());
+  std::array<double, kConstraintKinds> w;
+  w.fill(-INFINITY);
+  for (int c = 0; c < 6; ++c)
+    for (int k = 0; k < P; ++k) w[c] = std::max(w[c], g[c * P + k]);
+  w[6] = g[6 * P];
+  return w;
+}
+
+void classify(const ThrowSetup& s, ProfileEvaluation& e, double backoff) {
+  e.violation = 0.0;
+  for (double g : constraint_values(s, e, backoff)) e.violation += std::max(0.0, g);
+  e.feasible = e.finite && e.violation == 0.0;
+}
+
 ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
-                                   std::vector<ThrowSample>* samples) {
+                                   std::vector<ThrowSample>* samples, double backoff) {
   const Planner planner(setup, profile);
   const int P = profile.stages();
   const double h = profile.stage_length();
@@ -105,13 +181,22 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
   ev.stage_theta4.assign(P, 0.0);
   ev.stage_voltage.assign(P, 0.0);
   ev.stage_current.assign(P, 0.0);
+  ev.stage_power.assign(P, 0.0);
+  ev.stage_normal.assign(P, INFINITY);
+  ev.stage_friction.assign(P, -INFINITY);
+  ev.max_friction_ratio = 0.0;
   int stage = 0;
   auto track = [&](const PointEval& pe) {
     ev.stage_theta4[stage] = std::max(ev.stage_theta4[stage], std::abs(pe.q[3]));
     for (int m = 0; m < 2; ++m) {
       ev.stage_voltage[stage] = std::max(ev.stage_voltage[stage], std::abs(pe.ms[m].voltage));
       ev.stage_current[stage] = std::max(ev.stage_current[stage], std::abs(pe.ms[m].current));
+      ev.stage_power[stage] = std::max(ev.stage_power[stage], std::abs(pe.ms[m].power));
     }
+    const double N = pe.force[0], Ft = std::abs(pe.force[1]);
+    ev.stage_normal[stage] = std::min(ev.stage_normal[stage], N);
+    ev.stage_friction[stage] = std::max(ev.stage_friction[stage], Ft - setup.friction_coefficient * N);
+    ev.max_friction_ratio = std::max(ev.max_friction_ratio, N > 0 ? Ft / N : INFINITY);
   };
   if (samples) samples->clear();
   for (int k = 0; k < P && ev.finite; ++k) {
@@ -138,23 +223,23 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
     if (samples) record(k1, k, (k + 1) * h, x[4], samples);
   }
   if (!ev.finite) {
-    ev.criterion = ev.energy = std::numeric_limits<double>::max() / 4;
+    ev.energy = std::numeric_limits<double>::max() / 4;
+    ev.max_friction_ratio = INFINITY;
+    classify(setup, ev, backoff);
     return ev;
   }
   ev.max_abs_theta4 = *std::max_element(ev.stage_theta4.begin(), ev.stage_theta4.end());
   ev.max_voltage = *std::max_element(ev.stage_voltage.begin(), ev.stage_voltage.end());
   ev.max_current = *std::max_element(ev.stage_current.begin(), ev.stage_current.end());
+  ev.max_power = *std::max_element(ev.stage_power.begin(), ev.stage_power.end());
+  ev.min_normal_force = *std::min_element(ev.stage_normal.begin(), ev.stage_normal.end());
+  ev.max_friction_excess = *std::max_element(ev.stage_friction.begin(), ev.stage_friction.end());
   ev.energy = x[4];
   ev.theta3_final = x[0];
   ev.theta4_final = x[1];
   ev.theta3_rate_final = x[2];
   ev.theta4_rate_final = x[3];
-  // eq. 9: the penalty keeps the ball in the tray; the others keep limits and the release
-  ev.criterion = ev.energy +
-                 setup.k_tray * std::max(0.0, ev.max_abs_theta4 - setup.half_width) +
-                 setup.k_release * std::abs(ev.theta3_final - setup.theta3_release) +
-                 setup.k_voltage * std::max(0.0, ev.max_voltage - setup.voltage_max) +
-                 setup.k_current * std::max(0.0, ev.max_current - setup.current_max);
+  classify(setup, ev, backoff);
   return ev;
 }
 

@@ -9,7 +9,18 @@
 /// tau_m = B^-T Q (tray_arm.hpp), and eq. 5-6 give voltages and currents. Each stage is
 /// integrated with `steps_per_stage` RK4 steps, so the accelerations never jump inside a step;
 /// the consumed energy (eq. 7) is integrated as a fifth state by the same RK4 steps.
+///
+/// Constraints (docs/throwing.md derives the contact forces). At the start of every RK4 step
+/// and at every stage end the simulation evaluates the ball's contact with the tray from the
+/// ball's own equation of motion, m4 a_ball = -N n + F_t t + m4 g (n the unit vector from the
+/// centre C of the ball's circle to the ball's centre, t = n rotated by +90 deg):
+///   N   = m4 (g - a_ball) . n   (normal force of the tray on the ball, must stay >= margin),
+///   F_t = m4 (a_ball - g) . t   (tangential force rolling needs, |F_t| <= mu N),
+/// and the motor ratings |e| <= voltage_max, |i| <= current_max, |e i| <= power_max. The tray
+/// angle |theta4| <= lambda/2 and |theta3(tf) - theta3_release| <= release_tolerance complete
+/// the constraint set. constraint_values() turns them into normalised values g <= 0.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -30,13 +41,14 @@ struct ThrowSetup {
   core::DcMotor motor[2];                   ///< eq. 5-7 (Im = 0: rotors are in the chain)
   double theta3_0 = 0.0, theta4_0 = 0.0;    ///< rad, passive joints at t = 0 (at rest)
   double theta3_release = 0.0;              ///< rad, wanted tray angle at tf
+  double release_tolerance = 0.0175;        ///< rad, allowed |theta3(tf) - theta3_release|
   double half_width = 0.0;                  ///< rad, lambda / 2: the ball stays in the tray
   double voltage_max = 24.0;                ///< V
   double current_max = 2.5;                 ///< A
-  double k_tray = 1000.0;                   ///< J/rad, eq. 9's k on max |theta4| - lambda/2
-  double k_release = 10.0;                  ///< J/rad on |theta3(tf) - theta3_release|
-  double k_voltage = 1000.0;                ///< J/V on max |e| - voltage_max
-  double k_current = 1000.0;                ///< J/A on max |i| - current_max
+  double power_max = 60.0;                  ///< W, |e i| per motor
+  double contact_margin = 0.02;             ///< N, the tray's normal force on the ball >= this
+  double friction_coefficient = 0.5;        ///< mu: rolling needs |F_t| <= mu N
+  double ball_mass = 0.012;                 ///< kg, m4 (forces from the ball's equation)
   bool count_regeneration = true;           ///< eq. 7 as printed (signed e i)
   int steps_per_stage = 40;                 ///< RK4 steps in each stage
 };
@@ -44,16 +56,45 @@ struct ThrowSetup {
 /// Scalar outcome of one profile.
 struct ProfileEvaluation {
   double energy = 0;         ///< J, eq. 7 (or its positive part without regeneration)
-  double criterion = 0;      ///< J, energy + penalties (eq. 9 extended)
   double max_abs_theta4 = 0; ///< rad
   double max_voltage = 0;    ///< V, max |e| over both motors
   double max_current = 0;    ///< A, max |i|
+  double max_power = 0;      ///< W, max |e i| over both motors
+  double min_normal_force = 0;     ///< N, smallest normal force of the tray on the ball
+  double max_friction_ratio = 0;   ///< max |F_t| / N (infinite if N <= 0 somewhere)
+  double max_friction_excess = 0;  ///< N, max (|F_t| - mu N)
   double theta3_final = 0, theta4_final = 0;  ///< rad at tf
   double theta3_rate_final = 0, theta4_rate_final = 0;  ///< rad/s at tf
-  bool finite = true;        ///< false if the simulation blew up (criterion is then huge)
-  /// per stage: max |theta4| (rad), max |e| (V), max |i| (A), for stage-wise constraints
-  std::vector<double> stage_theta4, stage_voltage, stage_current;
+  bool finite = true;        ///< false if the simulation blew up (energy is then huge)
+  /// per stage: max |theta4| (rad), max |e| (V), max |i| (A), max |e i| (W), min N (N),
+  /// max |F_t| - mu N (N): the stage-wise constraints
+  std::vector<double> stage_theta4, stage_voltage, stage_current, stage_power, stage_normal,
+      stage_friction;
+  double violation = 0;      ///< sum of the positive parts of constraint_values(.., backoff)
+  bool feasible = false;     ///< violation == 0
 };
+
+/// Names of the constraint kinds, in the order of ConstraintKind.
+enum class ConstraintKind { kContact, kFriction, kTray, kVoltage, kCurrent, kPower, kRelease };
+inline constexpr int kConstraintKinds = 7;
+const char* constraint_name(ConstraintKind k);
+
+/// Normalised constraint values g <= 0 of an evaluation: per stage k (P each, in the order
+/// of ConstraintKind) (margin - N_min) / (m4 g), (|F_t| - mu N)_max / (m4 g),
+/// (|theta4|_max - lambda/2) / (lambda/2), (|e|_max - V) / V, (|i|_max - I) / I,
+/// (|e i|_max - P) / P, then one (|theta3(tf) - target| - tol) / tol. `backoff` (>= 0) is
+/// added to every value: the optimisers hold each constraint that far inside its limit so
+/// that a finer re-simulation (which samples between their steps) still meets it.
+/// An evaluation that is not finite gives 1e3 everywhere.
+std::vector<double> constraint_values(const ThrowSetup& setup, const ProfileEvaluation& e,
+                                      double backoff);
+
+/// Worst normalised value of each constraint kind (max over stages), without backoff.
+std::array<double, kConstraintKinds> worst_constraints(const ThrowSetup& setup,
+                                                       const ProfileEvaluation& e);
+
+/// Sets e.violation and e.feasible for the given backoff.
+void classify(const ThrowSetup& setup, ProfileEvaluation& e, double backoff);
 
 /// One recorded instant of a simulated throw.
 struct ThrowSample {
@@ -65,13 +106,23 @@ struct ThrowSample {
   Eigen::Vector2d motor_rate;   ///< rad/s
   core::MotorSample motor[2];   ///< eq. 5-7 per motor
   double energy = 0;            ///< J, consumed so far (eq. 7)
+  double normal_force = 0;      ///< N, tray on ball (along -n; > 0 pushes the ball)
+  double tangential_force = 0;  ///< N, tray on ball along t (what rolling needs)
 };
 
 /// Simulates `profile` (planning model). If `samples` is given, it receives the start of
 /// every RK4 step and the end of every stage (the end sample of a stage and the start
-/// sample of the next share a time but differ in accelerations).
+/// sample of the next share a time but differ in accelerations). The evaluation is
+/// classified with `backoff` (see constraint_values).
 ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
-                                   std::vector<ThrowSample>* samples = nullptr);
+                                   std::vector<ThrowSample>* samples = nullptr,
+                                   double backoff = 0.0);
+
+/// Contact forces of the tray on the ball (N) at state (q, qd, qdd) of the chain
+/// (docs/throwing.md): {normal N, tangential F_t}.
+Eigen::Vector2d ball_contact_forces(const core::PlanarChain& chain, double ball_mass,
+                                    const core::JointVector& q, const core::JointVector& qd,
+                                    const core::JointVector& qdd);
 
 /// A voltage history: piecewise linear between samples, with possible jumps where two
 /// samples share a time (the later one holds after the jump).

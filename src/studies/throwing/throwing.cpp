@@ -36,13 +36,14 @@ ThrowSetup make_throw_setup(const ThrowingSpec& spec) {
   s.theta3_0 = spec.theta3_start;
   s.theta4_0 = spec.theta4_start;
   s.theta3_release = spec.theta3_release;
+  s.release_tolerance = spec.release_tolerance;
   s.half_width = spec.tray_width / 2;
   s.voltage_max = spec.voltage_max;
   s.current_max = spec.current_max;
-  s.k_tray = spec.k_tray;
-  s.k_release = spec.k_release;
-  s.k_voltage = spec.k_voltage;
-  s.k_current = spec.k_current;
+  s.power_max = spec.power_max;
+  s.contact_margin = spec.contact_margin;
+  s.friction_coefficient = spec.friction_coefficient;
+  s.ball_mass = spec.arm.m4;
   s.count_regeneration = spec.count_regeneration;
   s.steps_per_stage = spec.steps_per_stage;
   return s;
@@ -66,7 +67,10 @@ ThrowMotion record_motion(const ThrowSetup& setup, const ThrowingSpec& spec,
     s.power.emplace_back(x.motor[0].power, x.motor[1].power);
     s.energy.push_back(x.energy);
     s.ball.push_back(ball_position(setup.chain, x.q));
+    s.normal_force.push_back(x.normal_force);
+    s.tangential_force.push_back(x.tangential_force);
   }
+  m.worst = worst_constraints(setup, m.evaluation);
   // energy split by the trapezoid rule over the samples (eq. 7 and its parts)
   for (size_t k = 1; k < samples.size(); ++k) {
     const double dt = samples[k].t - samples[k - 1].t;
@@ -89,6 +93,19 @@ ThrowMotion record_motion(const ThrowSetup& setup, const ThrowingSpec& spec,
     m.rate_error << f.qd[0] - spec.release_rate[0], f.qd[1] - spec.release_rate[1];
   }
   return m;
+}
+
+Verification verify_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                            int refinement) {
+  Verification v;
+  v.refinement = std::max(1, refinement);
+  ThrowSetup fine = setup;
+  fine.steps_per_stage = setup.steps_per_stage * v.refinement;
+  v.evaluation = simulate_profile(fine, profile, nullptr, 0.0);
+  v.worst = worst_constraints(fine, v.evaluation);
+  v.release_error = std::abs(v.evaluation.theta3_final - setup.theta3_release);
+  v.feasible = v.evaluation.feasible;
+  return v;
 }
 
 Flight ballistic_flight(const Eigen::Vector2d& p, const Eigen::Vector2d& v, double g, double h) {
@@ -133,24 +150,58 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
     return r;
   }
 
-  // iterative dynamic programming from eq. 8
+  r.initial_feasible = r.initial.evaluation.feasible;
+
+  // the feasible reference: eq. 8 itself, or the feasible profile nearest to it
+  NloptSettings ns = spec.nlopt;
+  ns.threads = spec.threads;
+  ns.backoff = spec.backoff;
+  VelocityProfile start = initial;
+  if (r.initial_feasible) {
+    r.reference_kind = "eq8";
+    r.reference = r.initial;
+  } else {
+    if (progress) progress(0.02, "repair of eq. 8 (nearest feasible)");
+    r.repair_run = run_nlopt(setup, initial, delta, ns, Objective::kViolation);
+    if (r.repair_run.feasible) {
+      r.reference_kind = "repaired";
+      start = r.repair_run.best;
+      r.reference = record_motion(setup, spec, start);
+    } else {
+      r.reference_kind = "none";
+      r.reference = r.initial;
+    }
+  }
+
+  // iterative dynamic programming from the reference, several seeds
   IdpSettings is = spec.idp;
   is.threads = spec.threads;
-  r.idp_run = run_idp(setup, initial, delta, is, [&](double f, std::string_view s) {
-    if (progress) progress(0.05 + 0.55 * f, s);
-  });
+  is.backoff = spec.backoff;
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    r.idp_seeds = run_idp_seeds(setup, start, delta, is, [&](double f, std::string_view s) {
+      if (progress) progress(0.05 + 0.55 * f, s);
+    });
+    r.idp_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  r.idp_converged = true;
+  for (size_t k = 0; k < r.idp_seeds.size(); ++k) {
+    r.idp_converged &= r.idp_seeds[k].converged;
+    if (better_profile(r.idp_seeds[k].evaluation, r.idp_seeds[r.idp_best_seed].evaluation))
+      r.idp_best_seed = static_cast<int>(k);
+  }
+  r.idp_run = r.idp_seeds[r.idp_best_seed];
   r.idp = record_motion(setup, spec, r.idp_run.best);
-  r.saving_percent = 100.0 * (r.initial.evaluation.energy - r.idp.evaluation.energy) /
-                     std::abs(r.initial.evaluation.energy);
+  r.idp_check = verify_profile(setup, r.idp_run.best, spec.check_refinement);
+  r.saving_percent = 100.0 * (r.reference.evaluation.energy - r.idp.evaluation.energy) /
+                     std::abs(r.reference.evaluation.energy);
 
-  // the same problem by SLSQP on the same parameterisation
+  // the same constrained problem by SLSQP on the same parameterisation, same start
   if (spec.run_nlopt) {
     if (progress) progress(0.6, "SLSQP (NLopt)");
-    NloptSettings ns = spec.nlopt;
-    ns.threads = spec.threads;
-    r.nlopt_run = run_nlopt(setup, initial, delta, ns);
-    r.nlopt = record_motion(setup, spec,
-                            r.nlopt_run.feasible ? r.nlopt_run.best : r.nlopt_run.last);
+    r.nlopt_run = run_nlopt(setup, start, delta, ns);
+    r.nlopt = record_motion(setup, spec, r.nlopt_run.best);
+    r.nlopt_check = verify_profile(setup, r.nlopt_run.best, spec.check_refinement);
     r.nlopt_ran = true;
   }
   if (progress) progress(0.95, "open-loop replay");
@@ -206,11 +257,17 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
     return r;
   }
   r.status = Status::kSolved;
-  r.message = "IDP: " + fixed(r.idp.evaluation.energy, 3) + " J (eq. 8: " +
-              fixed(r.initial.evaluation.energy, 3) + " J, saving " + fixed(r.saving_percent, 1) +
-              " %); ball lands at x = " + fixed(r.flight.landing.x(), 3) + " m";
+  const std::string ref = r.reference_kind == "eq8"        ? "eq. 8"
+                          : r.reference_kind == "repaired" ? "repaired eq. 8"
+                                                           : "infeasible eq. 8";
+  r.message = std::string("IDP") + (r.idp_converged ? "" : " (NOT converged)") + ": " +
+              fixed(r.idp.evaluation.energy, 3) + " J (" + ref + ": " +
+              fixed(r.reference.evaluation.energy, 3) + " J, saving " +
+              fixed(r.saving_percent, 1) + " %); ball lands at x = " +
+              fixed(r.flight.landing.x(), 3) + " m";
   if (r.nlopt_ran)
-    r.message += "; SLSQP: " + fixed(r.nlopt.evaluation.energy, 3) + " J" +
+    r.message += "; SLSQP" + std::string(r.nlopt_run.converged ? "" : " (NOT converged)") + ": " +
+                 fixed(r.nlopt.evaluation.energy, 3) + " J" +
                  (r.nlopt_run.feasible ? "" : " (infeasible)");
   return r;
 }

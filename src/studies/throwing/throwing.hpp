@@ -2,10 +2,17 @@
 /// The throwing study of 003_a986fd825f31d3e2.txt Sec. 4: the tray arm moves from rest to
 /// the release state in tf; joints 1, 2 follow a velocity profile optimised for the energy
 /// the DC motors consume (eq. 7), the tray (joint 3) and the ball (joint 4) follow the
-/// dynamics. IDP (Luus) is the paper's optimiser; SLSQP (NLopt) solves the same problem on
-/// the same parameterisation beside it. The ball flies ballistically after release down
-/// (or up) to a given height.
+/// dynamics. IDP (Luus) is the paper's optimiser; SLSQP (NLopt) solves the same constrained
+/// problem on the same parameterisation beside it (docs/throwing.md): the tray must push
+/// the ball (normal force >= a margin), rolling must need no more friction than the
+/// coefficient allows, the ball stays within the tray's width, the motors within their
+/// voltage, current and power ratings, and the tray reaches its release angle. Both start
+/// from a feasible reference: the eq. 8 trajectory when it is feasible, else the feasible
+/// profile nearest to it (SLSQP repair). Every reported optimum is re-simulated with 4x the
+/// steps and checked against every constraint. The ball flies ballistically after release
+/// down (or up) to a given height.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,13 +40,15 @@ struct ThrowingSpec {
   Eigen::Vector2d release_rate = {13.9, -1.1};                          ///< rad/s
   double theta3_release = -7 * core::kPi / 24;  ///< rad, reached through the dynamics
   double tf = 0.8;                   ///< s
-  double voltage_max = 24.0;         ///< V
-  double current_max = 5.0;          ///< A
+  double voltage_max = 24.0;         ///< V (Table 1: motors rated 24 V)
+  double current_max = 5.0;          ///< A (chosen; 2.5 A is 60 W at 24 V)
+  double power_max = 60.0;           ///< W, |e i| per motor (Table 1: rated 60 W)
   double tray_width = 2 * core::kPi / 3;  ///< rad, lambda of eq. 9 (|theta4| <= lambda/2)
-  double k_tray = 1000.0;            ///< J/rad, exact penalty: far above the multiplier
-  double k_release = 10.0;           ///< J/rad
-  double k_voltage = 1000.0;         ///< J/V
-  double k_current = 1000.0;         ///< J/A
+  double contact_margin = 0.02;      ///< N, normal force of the tray on the ball >= this
+  double friction_coefficient = 0.5; ///< mu, rolling needs |F_t| <= mu N
+  double backoff = 0.02;             ///< optimisers keep constraints this far inside (normalised)
+  bool allow_not_converged = false;  ///< a run ending on its budget fails the case unless true
+  int check_refinement = 4;          ///< the optimum is re-checked with this many x the steps
   bool count_regeneration = true;    ///< eq. 7 as printed (signed e i)
   int stages = 16;                   ///< P
   int steps_per_stage = 20;          ///< RK4 steps per stage
@@ -61,6 +70,8 @@ struct ThrowSeries {
   std::vector<Eigen::Vector2d> voltage, current, power;  ///< V, A, W per motor
   std::vector<double> energy;                  ///< J, consumed so far
   std::vector<Eigen::Vector2d> ball;           ///< m, ball centre
+  std::vector<double> normal_force;            ///< N, tray on ball
+  std::vector<double> tangential_force;        ///< N, tray on ball (what rolling needs)
 };
 
 /// Electrical energy split of one motion (integrals over [0, tf], J, both motors).
@@ -80,7 +91,22 @@ struct ThrowMotion {
   EnergySplit split;
   Eigen::Vector3d angle_error = Eigen::Vector3d::Zero();  ///< rad, theta1..3 at tf - wanted
   Eigen::Vector2d rate_error = Eigen::Vector2d::Zero();   ///< rad/s, theta1', theta2' at tf
+  std::array<double, kConstraintKinds> worst{};  ///< normalised worst value per kind (<= 0 met)
 };
+
+/// An optimum re-simulated independently of the optimiser with `refinement` x the steps.
+struct Verification {
+  int refinement = 4;
+  ProfileEvaluation evaluation;                  ///< at the finer steps, backoff 0
+  std::array<double, kConstraintKinds> worst{};  ///< normalised, <= 0 met
+  double release_error = 0;                      ///< rad, |theta3(tf) - release|
+  bool feasible = false;
+};
+
+/// Re-simulates `profile` with `refinement` x the setup's steps and checks every constraint
+/// (no backoff).
+Verification verify_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                            int refinement);
 
 /// Ballistic flight of the ball after release.
 struct Flight {
@@ -97,13 +123,23 @@ struct Flight {
 struct ThrowingResult {
   Status status = Status::kUnsolvable;
   std::string message;
-  ThrowMotion initial;  ///< eq. 8 profile
-  ThrowMotion idp;      ///< IDP optimum
-  IdpResult idp_run;    ///< convergence
+  ThrowMotion initial;  ///< eq. 8 profile (raw)
+  bool initial_feasible = false;
+  std::string reference_kind;  ///< "eq8" (feasible as it is), "repaired" or "none"
+  ThrowMotion reference;       ///< the feasible reference the savings are measured from
+  NloptOutcome repair_run;     ///< SLSQP nearest-feasible repair (when eq. 8 is infeasible)
+  ThrowMotion idp;      ///< IDP optimum (best seed)
+  IdpResult idp_run;    ///< the best seed's run
+  std::vector<IdpResult> idp_seeds;  ///< every seed (energies, convergence)
+  int idp_best_seed = 0;             ///< index into idp_seeds
+  bool idp_converged = false;        ///< every seed converged
+  double idp_time = 0;               ///< s, wall clock of all seeds
+  Verification idp_check;
   bool nlopt_ran = false;
-  ThrowMotion nlopt;    ///< SLSQP's result (its best feasible point, else its last point)
+  ThrowMotion nlopt;    ///< SLSQP's answer (its final point)
   NloptOutcome nlopt_run;
-  double saving_percent = 0;  ///< 100 (E_eq8 - E_idp) / E_eq8
+  Verification nlopt_check;
+  double saving_percent = 0;  ///< 100 (E_ref - E_idp) / E_ref
   Flight flight;
   double replay_error = 0;    ///< rad, max |q_replay - q_plan (16x steps)|, 4 joints
   std::vector<double> replay_t;
@@ -119,6 +155,11 @@ ThrowSetup make_throw_setup(const ThrowingSpec& spec);
 /// Simulates one profile and records its series, split and release errors.
 ThrowMotion record_motion(const ThrowSetup& setup, const ThrowingSpec& spec,
                           const VelocityProfile& profile);
+
+/// Re-simulates `profile` with `refinement` x the setup's steps and checks every constraint
+/// (no backoff).
+Verification verify_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                            int refinement);
 
 /// Ballistic flight from (p, v) under gravity g (m/s^2, > 0) down or up to height h.
 Flight ballistic_flight(const Eigen::Vector2d& p, const Eigen::Vector2d& v, double g, double h);
