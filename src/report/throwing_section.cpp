@@ -203,21 +203,38 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                  jsonv::str(obj(th, "verification"), "refinement") +
                  "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
                  "Binding: constraints within twice the back-off of their limit.";
-    ct.header = {"optimiser", "energy (J)", "mechanical (J)", "copper (J)", "friction (J)",
-                 "converged", "simulations", "time (s)", "contact N (N)", "friction needed",
-                 "tray angle (rad)", "release error (rad)", "voltage (V)", "current (A)",
-                 "power (W)", "binding", "binding motor rating"};
-    for (const json& row : arr(th, "comparison")) {
-      const json& m = obj(row, "margins");
-      ct.rows.push_back({jsonv::str(row, "optimiser"), jsonv::sig(row, "energy_J", 5),
-                         jsonv::sig(row, "mechanical_J", 4), jsonv::sig(row, "copper_J", 4),
-                         jsonv::sig(row, "friction_J", 3), yes_no(row, "converged"),
-                         jsonv::str(row, "simulations"), jsonv::sig(row, "run_time_s", 3),
-                         jsonv::sig(m, "contact_N", 3), jsonv::sig(m, "friction", 3),
-                         jsonv::sig(m, "tray_rad", 3), jsonv::sig(m, "release_rad", 3),
-                         jsonv::sig(m, "voltage_V", 3), jsonv::sig(m, "current_A", 3),
-                         jsonv::sig(m, "power_W", 3), names(row, "binding"),
-                         jsonv::str(row, "binding_rating")});
+    // one column per optimiser (the rows are the quantities, so the table fits the page)
+    const json& cmp = arr(th, "comparison");
+    ct.header = {"quantity"};
+    for (const json& row : cmp) ct.header.push_back(jsonv::str(row, "optimiser"));
+    auto add = [&](const std::string& label, auto value) {
+      std::vector<std::string> cells = {label};
+      for (const json& row : cmp) cells.push_back(value(row));
+      ct.rows.push_back(std::move(cells));
+    };
+    auto field = [](const char* key, int digits) {
+      return [key, digits](const json& row) { return jsonv::sig(row, key, digits); };
+    };
+    auto margin = [](const char* key) {
+      return [key](const json& row) { return jsonv::sig(obj(row, "margins"), key, 3); };
+    };
+    if (!cmp.empty()) {
+      add("energy E = ∫ e i dt (J)", field("energy_J", 5));
+      add("  mechanical work (J)", field("mechanical_J", 4));
+      add("  copper loss Ra i² (J)", field("copper_J", 4));
+      add("  motor friction (J)", field("friction_J", 3));
+      add("converged", [](const json& row) { return yes_no(row, "converged"); });
+      add("simulations", [](const json& row) { return jsonv::str(row, "simulations"); });
+      add("time (s)", field("run_time_s", 3));
+      add("margin: contact N − margin (N)", margin("contact_N"));
+      add("margin: μ − friction needed |F_t|/N", margin("friction"));
+      add("margin: tray angle λ/2 − |θ4| (rad)", margin("tray_rad"));
+      add("margin: release tolerance − |θ3 error| (rad)", margin("release_rad"));
+      add("margin: voltage (V)", margin("voltage_V"));
+      add("margin: current (A)", margin("current_A"));
+      add("margin: power (W)", margin("power_W"));
+      add("binding constraints", [](const json& row) { return names(row, "binding"); });
+      add("binding motor rating", [](const json& row) { return jsonv::str(row, "binding_rating"); });
     }
     if (!ct.rows.empty()) res.table(std::move(ct));
     std::string conv = "IDP: " + std::string(jsonv::has(idp, "converged") && idp["converged"].is_boolean() &&
@@ -232,6 +249,21 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
               " iterations, last change " + jsonv::sig(nl, "last_gain", 2) + ", " +
               (yes_no(nl, "converged") == "yes" ? "converged." : "NOT converged: not an optimum.");
     res.paragraph(conv);
+    // the optimisers on the same problem should agree; say so when they do not
+    const auto cm = arr(th, "comparison");
+    if (cm.size() >= 2) {
+      const double ei = jsonv::num(cm[0], "energy_J"), eg = jsonv::num(cm[1], "energy_J");
+      if (std::isfinite(ei) && std::isfinite(eg) && std::abs(ei - eg) > 0.01 * std::min(ei, eg)) {
+        const bool idp_higher = ei > eg;
+        res.note(std::string(idp_higher ? "IDP" : "SLSQP") + "'s answer is " +
+                 format_sig(100 * (std::max(ei, eg) / std::min(ei, eg) - 1), 3) + " % above " +
+                 (idp_higher ? "SLSQP" : "IDP") + "'s for the same constrained problem. Both met "
+                 "their stopping criteria, so the higher one is a stall of that optimiser (IDP's "
+                 "random search moves slowly along the constraint boundary), not the problem's "
+                 "optimum: the lower energy is the better bound on it, and neither is proven "
+                 "global.");
+      }
+    }
   }
   Table t;
   t.caption = "Each motion's energy and extremes (at the optimisers' own steps). Limits: " +
@@ -266,6 +298,7 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   Section seeds;
   seeds.id = "idp-seeds";
   seeds.heading = "IDP seeds";
+  seeds.new_page = false;
   {
     const json& sp = obj(idp, "spread");
     if (!sp.empty())
