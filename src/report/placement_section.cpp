@@ -276,6 +276,10 @@ Section optima_section(const json& pl, FigureWriter& figures) {
       text += ": with its printed digits part of the line lies outside the annulus (by " +
               format_sig(-jsonv::num(e, "boundary_distance_m"), 3) +
               " m), so no motion exists there.";
+    else if (singular_motion(e))
+      text += ": it lies on a workspace boundary (clearance " + jsonv::sig(e, "boundary_distance_m", 3) +
+              " m), so its motion is singular — " + kSingularText +
+              "; no energy, peak torque or saving is given for it.";
     else if (status == "singular")
       text += ": it comes within " + jsonv::sig(e, "boundary_distance_m", 3) +
               " m of a workspace boundary (smallest |sin q2| " +

@@ -27,7 +27,7 @@ struct EnergyConvergence {
   bool checked = false;           ///< converge_energy ran (false: not a printed candidate)
   bool converged = false;
   /// on one doubling the energy changed by < tol and the sampled peak torque by < peak_tol
-  bool touches_boundary = false;  ///< |sin q2| = 0 somewhere on the line (exact geometry)
+  bool touches_boundary = false;  ///< the line is on a boundary (exact geometry, 1e-9 m)
   /// no energy, peak or saving may be printed: touching a boundary or not converged
   bool singular() const { return checked && (touches_boundary || !converged); }
   int samples = 0;          ///< samples of `metrics`: the coarser of the converged pair
@@ -40,8 +40,8 @@ struct EnergyConvergence {
 
 /// Doubles the samples (n -> 2 n - 1, nested grids) from `samples` until the energy
 /// changes by less than `tol` and the sampled peak torque by less than `peak_tol`
-/// (relative), or `max_samples` is passed. `touches` comes from the exact line check
-/// (check_line's min_abs_sin == 0 within roundoff).
+/// (relative), or `max_samples` is passed. `touches`: the exact line check puts the line
+/// on a boundary (|boundary distance| within 1e-9 m, so |sin q2| ~ 1e-4 or less on it).
 EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, double duration,
                                   double length, const Line& line, int configuration,
                                   int samples, bool touches, double tol = 1e-4,

@@ -27,8 +27,6 @@ constexpr double kTouch = 1e-9;  // m, a line this far outside the annulus touch
 constexpr double kMarginTol = 1e-12;
 // relative quadrature error below which a sampled energy counts as converged
 constexpr double kEnergyTol = 1e-4;
-// a line whose exact smallest |sin q2| is below this touches a boundary: a singular motion
-constexpr double kTouchSin = 1e-6;
 
 // which candidate set a geometric candidate belongs to
 enum class Set : std::uint8_t { kSweep, kThesis, kMap };
@@ -93,7 +91,7 @@ double arm_outer(const Arm2& arm) { return arm.L1 + arm.L2; }
 EnergyConvergence converged(const Spec& spec, const Arm2& arm, core::MotionProgram program,
                             const Candidate& c, int configuration) {
   return converge_energy(arm, program, spec.duration, spec.length, thesis_line(c.x_s, c.phi),
-                         configuration, spec.samples, c.min_abs_sin < kTouchSin, kEnergyTol);
+                         configuration, spec.samples, c.boundary_distance < kTouch, kEnergyTol);
 }
 
 // a sampled energy whose embedded error estimate is within the tolerance
@@ -512,7 +510,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     for (size_t k = 0; k < geo.size(); ++k) {
       if (!converged_at(k)) continue;
       if (st[k] == CandidateStatus::kFeasible) admissible.push_back({&metric(k), geo[k].x_s, geo[k].phi});
-      else if (st[k] == CandidateStatus::kSingular && geo[k].check.min_abs_sin >= kTouchSin)
+      else if (st[k] == CandidateStatus::kSingular && geo[k].check.boundary_distance >= kTouch)
         excluded.push_back({&metric(k), geo[k].x_s, geo[k].phi});
     }
     if (out.found) admissible.push_back({&out.refined.metrics, out.refined.x_s, out.refined.phi});
