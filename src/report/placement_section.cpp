@@ -383,7 +383,9 @@ Section curves_section(const json& pl, FigureWriter& figures) {
   s.figure(figures.line("energy_vs_phi", plot,
                         "Energy of the motion over the direction angle φ at each optimum's own "
                         "start abscissa x_S (" + abscissae +
-                            "), as the thesis's Figure 9.11; the marker is the optimum itself. "
+                            "), as the thesis's Figure 9.11; the marker is the optimum itself (an "
+                            "optimum on the margin sits where its curve turns dotted: the energy "
+                            "keeps falling inside the margin). "
                             "Solid: admissible; dotted: inside the margin or over a limit "
                             "(excluded from the optimum); gaps: unreachable or the sampled energy "
                             "not converged."));
@@ -426,7 +428,7 @@ bool map_figure(const json& pl, const json& m, FigureWriter& figures, Section& s
   map.y_max = ys[(my - 1) * ky];
   map.z.assign(mx * my, NAN);
   MapRegion unreachable{"unreachable", kUnreachable, std::vector<std::uint8_t>(mx * my, 0)};
-  MapRegion singular{"singular (within the margin)", kSingular, std::vector<std::uint8_t>(mx * my, 0)};
+  MapRegion singular{"inside the margin (inadmissible)", kSingular, std::vector<std::uint8_t>(mx * my, 0)};
   MapRegion over{"over a torque/power limit", kOverLimit, std::vector<std::uint8_t>(mx * my, 0)};
   std::vector<double> feasible;
   for (size_t j = 0; j < my; ++j)
@@ -473,7 +475,7 @@ bool map_figure(const json& pl, const json& m, FigureWriter& figures, Section& s
   for (const json& th : arr(pl, "thesis_search"))
     if (id_key(th) == id_key(m) && jsonv::has(th, "root_xy_m"))
       map.markers.push_back({at(th, "root_xy_m", 0), at(th, "root_xy_m", 1),
-                             "thesis-interval best (" + jsonv::str(th, "status") + ")", {0, 0, 0},
+                             "thesis-interval best (" + status_text(th) + ")", {0, 0, 0},
                              false});
   const std::string name = "map_" + jsonv::str(m, "program") + "_" + jsonv::str(m, "configuration");
   s.figure(figures.map(name, map,
@@ -481,8 +483,8 @@ bool map_figure(const json& pl, const json& m, FigureWriter& figures, Section& s
                        "line (the line runs from the origin along X), " + id_label(m) +
                            ", on a " + std::to_string(nx) + " × " + std::to_string(ny) +
                            " grid (drawn " + std::to_string(mx) + " × " + std::to_string(my) +
-                           "). Only admissible placements are shaded; unreachable, singular and "
-                           "over-limit regions are flat colours; Y < 0 is the mirror image with "
+                           "). Only admissible placements are shaded; unreachable, inside-the-margin "
+                           "and over-limit regions are flat colours; Y < 0 is the mirror image with "
                            "the configurations swapped." + saturation));
   return true;
 }
