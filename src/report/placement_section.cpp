@@ -271,15 +271,16 @@ Section optima_section(const json& pl, FigureWriter& figures) {
     const json& e = *first;
     const std::string status = jsonv::str(e, "status");
     text = "The thesis's printed placement '" + label + "' (x_S = " + jsonv::sig(e, "x_s_m", 5) +
-           " m, φ = " + jsonv::sig(e, "phi_deg", 5) + "°) is " + status_text(e) + " by the exact check";
+           " m, φ = " + jsonv::sig(e, "phi_deg", 5) + "°) is " +
+           (singular_motion(e) && status != "unreachable" ? std::string("on a workspace boundary") : status_text(e)) +
+           " by the exact check";
     if (status == "unreachable")
       text += ": with its printed digits part of the line lies outside the annulus (by " +
               format_sig(-jsonv::num(e, "boundary_distance_m"), 3) +
               " m), so no motion exists there.";
     else if (singular_motion(e))
-      text += ": it lies on a workspace boundary (clearance " + jsonv::sig(e, "boundary_distance_m", 3) +
-              " m), so its motion is singular — " + kSingularText +
-              "; no energy, peak torque or saving is given for it.";
+      text += " (clearance " + jsonv::sig(e, "boundary_distance_m", 3) + " m), so its motion is " +
+              kSingularText + "; no energy, peak torque or saving is given for it.";
     else if (status == "singular")
       text += ": it comes within " + jsonv::sig(e, "boundary_distance_m", 3) +
               " m of a workspace boundary (smallest |sin q2| " +
@@ -649,23 +650,32 @@ Section convergence_and_evaluations(const json& pl) {
     for (const json& r : arr(c, "rows")) t.rows.push_back({jsonv::str(r, "samples"), jsonv::sig(r, "energy_J", 10)});
     if (!t.rows.empty()) s.table(std::move(t));
   }
-  for (const json& o : arr(pl, "optima")) {
-    if (!jsonv::has(o, "energy_convergence")) continue;
-    const json& c = o["energy_convergence"];
+  {
     Table t;
-    t.caption = "Energy convergence of the optimum " + id_label(o) +
-                " on its own: samples doubled until the energy changes by less than " +
-                jsonv::sig(c, "tolerance_rel", 2) + " relative" +
-                (c.value("singular", false) ? std::string(" — ") + kSingularText : std::string("")) + ".";
-    t.header = {"samples", "energy (J)", "sampled peak torque (N m)"};
-    for (const json& r : arr(c, "rows"))
-      t.rows.push_back({jsonv::str(r, "samples"), jsonv::sig(r, "energy_J", 10), jsonv::sig(r, "peak_torque_Nm", 6)});
+    t.caption = "Energy convergence of each optimum on its own: samples doubled until the "
+                "energy changes by less than 1e-4 and the sampled peak torque by less than 1e-3 "
+                "relative; the first row of each optimum is its printed value.";
+    t.header = {"optimum", "samples", "energy (J)", "sampled peak torque (N m)", "verdict"};
+    for (const json& o : arr(pl, "optima")) {
+      if (!jsonv::has(o, "energy_convergence")) continue;
+      const json& c = o["energy_convergence"];
+      const std::string verdict = c.value("singular", false)
+                                      ? std::string(kSingularText)
+                                      : "converged, change " + jsonv::sig(c, "rel_change", 2);
+      bool first = true;
+      for (const json& r : arr(c, "rows")) {
+        t.rows.push_back({first ? id_label(o) : "", jsonv::str(r, "samples"), jsonv::sig(r, "energy_J", 10),
+                          jsonv::sig(r, "peak_torque_Nm", 6), first ? verdict : ""});
+        t.swatches.push_back(first ? css_colour(colour_for(id_key(o))) : "");
+        first = false;
+      }
+    }
     if (!t.rows.empty()) s.table(std::move(t));
   }
   Table th;
   th.caption = "Least energy among the thesis's own candidates (its intervals 4.7-4.13), "
-               "whatever their status: where this is singular, the thesis's method would have "
-               "reported a singular trajectory as the optimum.";
+               "whatever their status: where it lies inside the margin (or is singular), the "
+               "thesis's method would have reported it as the optimum.";
   th.header = {"program, configuration", "energy (J)", "x_S (m)", "φ (deg)", "root (X, Y) (m)",
                "status", "boundary distance (m)", "min |sin q2|"};
   for (const json& o : arr(pl, "thesis_search")) {
