@@ -18,13 +18,20 @@
 ///   phi_step_deg: 1.0        # direction-angle step, deg, in (0, 45] (default 1, the thesis's)
 ///   samples: 401             # samples per trajectory, uniform in time, in [21, 100001]
 ///                            # (default 401: energy converged to ~1e-5 and the signed
-///                            # work of every candidate clear of the margin below 1e-9 J)
+///                            # work of every candidate clear of the margin below 1e-9 J);
+///                            # a candidate clear of the margin whose embedded error estimate
+///                            # exceeds 1e-4, and every printed energy, is doubled until it
+///                            # converges to 1e-4 (studies/placement/converge.hpp)
 ///   singularity_margin_m: 0.01  # least distance of the line to either workspace boundary,
 ///                            # m, > 0 (default 0.01: 1/20 of the inner radius of the thesis's
 ///                            # arm, keeps |sin q2| >= 0.22 there; closer lines are singular)
 ///   torque_limits_Nm: [15, 5]   # optional peak |torque| per joint (root, elbow), N m, > 0
 ///   power_limits_W: [40, 10]    # optional peak |power| per joint, W, > 0
-///   refine: true             # local NLopt refinement of the grid optimum (default true)
+///   refine: true             # constrained refinement of the grid optimum (default true):
+///                            # NLopt COBYLA with the clearances and limits as constraints,
+///                            # to 1e-7 relative in energy (studies/placement/refine.hpp);
+///                            # an optimum set by a clearance is re-solved at margins
+///                            # 0.005-0.05 m (the margin sensitivity)
 ///   map:                     # energy map over root locations in the line's frame
 ///     nx: 200                # nodes along X, in [2, 1000] (default 200)
 ///     ny: 100                # nodes along Y >= 0, in [2, 1000] (default 100; Y < 0 is the

@@ -9,7 +9,19 @@
 //   optima [{program, configuration, energy_J, x_s_m, phi_deg, root_xy_m [X, Y], grid_energy_J,
 //            grid_x_s_m, grid_phi_deg, min_abs_sin_elbow, boundary_distance_m,
 //            peak_torque_Nm [j1, j2], peak_power_W [j1, j2], signed_work_J, singular (false),
-//            refine_evaluations, line_start_m, line_end_m (arm frame), counts {...}, series}],
+//            singular_trajectory, energy_convergence {converged, touches_boundary, singular,
+//            samples, rel_change, tolerance_rel, rows [{samples, energy_J, peak_torque_Nm}]},
+//            decided_by {binding (interior | inner_clearance | outer_clearance | torque_limit |
+//            power_limit), joint, margin_m, inner_slack_m, outer_slack_m, torque_slack_Nm,
+//            power_slack_W, set_by_margin}, refinement {method, final_tolerance_rel, target_rel,
+//            converged, evaluations}, margin_sensitivity [{margin_m, found, energy_J, x_s_m,
+//            phi_deg, root_xy_m, binding, refine_converged, refine_tolerance_rel, ...}] (when a
+//            clearance binds), refine_evaluations, line_start_m, line_end_m (arm frame),
+//            counts {...}, series}],
+//   A singular motion (touching a boundary, or energy not converged to 1e-4 by doubling the
+//   samples up to 409601) has energy_J and peak_torque_Nm null, singular_trajectory true and
+//   note "singular: energy not converged, peak torque unbounded" (optima, thesis_search,
+//   evaluations, margin_sensitivity); its saving is null.
 //   unsolved [{program, configuration, reason}]: pairs without an admissible placement,
 //   thesis_search [{program, configuration, energy_J, x_s_m, phi_deg, root_xy_m, status,
 //                   singular, boundary_distance_m, min_abs_sin_elbow}]: the least energy among
@@ -19,8 +31,10 @@
 //                 saving_J, saving_percent, series}],
 //   curves [{program, configuration, x_s_m, phi_deg [...], energy_J [... null], status "..."}],
 //   pareto [{program, configuration, joint (1 or 2), peak_torque_Nm [[j1, j2] ...],
-//            energy_J [...], x_s_m [...], phi_deg [...], singular [...]}] (thinned to steps
-//            of >= 0.2 % in energy),
+//            energy_J [...], x_s_m [...], phi_deg [...], singular [...] (all false: the front
+//            holds admissible placements only), excluded {what, peak_torque_Nm, energy_J}: the
+//            same front over the candidates inside the margin}] (thinned to steps of >= 0.2 %
+//            in energy),
 //   maps [{program, configuration, x_m [...], y_m [...], optimum_xy_m, encoding,
 //          energy_J_rows ["e e e ...", ...], status_rows ["..sxo", ...]}]: row j is y_m[j];
 //          energies at 4 significant digits, '-' where unreachable; status characters
@@ -41,6 +55,7 @@
 #include "report/case_report.hpp"
 #include "scene/placement_frames.hpp"
 #include "core/motion_program.hpp"
+#include "studies/placement/refine.hpp"
 #include "studies/placement/solve.hpp"
 
 namespace armstudy::app {
@@ -107,6 +122,48 @@ json counts_json(const pl::Counts& c) {
 
 std::string prog(core::MotionProgram p) { return std::string(core::program_name(p)); }
 
+// the doubling of one motion's samples (converge.hpp)
+json convergence_json(const pl::EnergyConvergence& c) {
+  json rows = json::array();
+  for (const auto& r : c.rows)
+    rows.push_back({{"samples", r.samples}, {"energy_J", num(r.energy, 10)}, {"peak_torque_Nm", num(r.peak_torque, 6)}});
+  return {{"converged", c.converged},
+          {"touches_boundary", c.touches_boundary},
+          {"singular", c.singular()},
+          {"samples", c.samples},
+          {"rel_change", num(c.rel_change, 3)},
+          {"peak_torque_rel_change", num(c.peak_rel_change, 3)},
+          {"tolerance_rel", num(c.tolerance, 3)},
+          {"rows", rows}};
+}
+
+// energy, peak torque, peak power of a candidate: null (and a note) for a singular motion
+void metrics_json(json& o, const pl::Candidate& c, int digits = 7) {
+  const bool singular = c.convergence.singular();
+  // at the samples where the doubling converged (the spec's samples for a regular motion)
+  const pl::LineMetrics& m = c.convergence.checked ? c.convergence.metrics : c.metrics;
+  o["energy_J"] = singular ? json(nullptr) : num(m.energy, digits);
+  o["peak_torque_Nm"] = singular ? json(nullptr)
+                                 : json::array({num(m.peak_torque[0]), num(m.peak_torque[1])});
+  if (c.convergence.checked) o["energy_samples"] = c.convergence.samples;
+  o["singular_trajectory"] = singular;
+  if (singular) o["note"] = pl::kSingularNote;
+  if (c.convergence.checked) o["energy_convergence"] = convergence_json(c.convergence);
+}
+
+// what decides an optimum (refine.hpp)
+json decision_json(const pl::Spec& spec, const pl::Decision& d) {
+  json j = {{"binding", pl::binding_name(d.binding)},
+            {"inner_slack_m", num(d.inner_slack, 6)},
+            {"outer_slack_m", num(d.outer_slack, 6)},
+            {"margin_m", num(spec.singularity_margin)}};
+  j["joint"] = d.joint >= 0 ? json(d.joint + 1) : json(nullptr);
+  j["torque_slack_Nm"] = json::array({num(d.torque_slack[0], 6), num(d.torque_slack[1], 6)});
+  j["power_slack_W"] = json::array({num(d.power_slack[0], 6), num(d.power_slack[1], 6)});
+  j["set_by_margin"] = d.binding == pl::Binding::kInnerClearance || d.binding == pl::Binding::kOuterClearance;
+  return j;
+}
+
 class PlacementRun final : public StudyRun {
  public:
   explicit PlacementRun(pl::Spec spec) : spec_(std::move(spec)) {}
@@ -129,7 +186,7 @@ class PlacementRun final : public StudyRun {
     std::vector<KeyFigure> k;
     double best = std::numeric_limits<double>::infinity();
     for (const pl::ProgramConfig& pc : result_.cases) {
-      if (!pc.found) continue;
+      if (!pc.found || pc.refined.convergence.singular()) continue;
       const std::string id = "[" + prog(pc.program) + "," + std::to_string(pc.configuration) + "]";
       k.push_back({"energy_J" + id, pc.refined.metrics.energy, "J"});
       k.push_back({"root_x_m" + id, pc.refined.root.x(), "m"});
@@ -192,20 +249,40 @@ json PlacementRun::results() const {
     if (pc.found) {
       const pl::Candidate& c = pc.refined;
       json o = id;
-      o["energy_J"] = num(c.metrics.energy);
-      o["x_s_m"] = num(c.x_s);
-      o["phi_deg"] = num(c.phi / kDeg);
-      o["root_xy_m"] = pair(c.root);
+      metrics_json(o, c, 10);
+      o["x_s_m"] = num(c.x_s, 10);
+      o["phi_deg"] = num(c.phi / kDeg, 10);
+      o["root_xy_m"] = pair(c.root, 10);
       o["grid_energy_J"] = num(pc.grid.metrics.energy);
       o["grid_x_s_m"] = num(pc.grid.x_s);
       o["grid_phi_deg"] = num(pc.grid.phi / kDeg);
       o["min_abs_sin_elbow"] = num(c.min_abs_sin);
       o["boundary_distance_m"] = num(c.boundary_distance);
-      o["peak_torque_Nm"] = json::array({num(c.metrics.peak_torque[0]), num(c.metrics.peak_torque[1])});
       o["peak_power_W"] = json::array({num(c.metrics.peak_power[0]), num(c.metrics.peak_power[1])});
       o["signed_work_J"] = num(c.metrics.signed_work, 3);
-      o["singular"] = c.status != pl::CandidateStatus::kFeasible;
+      o["singular"] = c.status != pl::CandidateStatus::kFeasible || c.convergence.singular();
       o["refine_evaluations"] = pc.refine_evaluations;
+      o["decided_by"] = decision_json(spec_, pc.decision);
+      o["refinement"] = {{"method", pc.refine_method.empty() ? json(nullptr) : json(pc.refine_method)},
+                         {"final_tolerance_rel", pc.refine_method.empty() ? json(nullptr) : num(pc.refine_tolerance_rel, 3)},
+                         {"target_rel", 1e-7},
+                         {"converged", pc.refine_converged},
+                         {"evaluations", pc.refine_evaluations}};
+      json ms = json::array();
+      for (const pl::MarginPoint& m : pc.margin_sensitivity) {
+        json mj = {{"margin_m", num(m.margin)}, {"found", m.found}};
+        if (m.found) {
+          metrics_json(mj, m.optimum, 10);
+          mj["x_s_m"] = num(m.optimum.x_s, 10);
+          mj["phi_deg"] = num(m.optimum.phi / kDeg, 10);
+          mj["root_xy_m"] = pair(m.optimum.root, 7);
+          mj["binding"] = pl::binding_name(m.decision.binding);
+          mj["refine_converged"] = m.refine_converged;
+          mj["refine_tolerance_rel"] = num(m.refine_tolerance_rel, 3);
+        }
+        ms.push_back(mj);
+      }
+      o["margin_sensitivity"] = ms;
       o["line_start_m"] = pair(pc.placement.start);
       o["line_end_m"] = pair(pc.placement.end);
       o["counts"] = counts_json(pc.counts);
@@ -220,7 +297,7 @@ json PlacementRun::results() const {
     if (pc.thesis_found) {
       const pl::Candidate& c = pc.thesis_best;
       json t = id;
-      t["energy_J"] = num(c.metrics.energy);
+      metrics_json(t, c);
       t["x_s_m"] = num(c.x_s);
       t["phi_deg"] = num(c.phi / kDeg);
       t["root_xy_m"] = pair(c.root);
@@ -266,6 +343,19 @@ json PlacementRun::results() const {
       pj["x_s_m"] = xs;
       pj["phi_deg"] = ph;
       pj["singular"] = sg;
+      // the inadmissible candidates inside the margin: drawn distinctly, never the front
+      json xk = json::array(), xe = json::array();
+      last = std::numeric_limits<double>::infinity();
+      const auto& ex = pc.pareto_excluded[joint];
+      for (size_t k = 0; k < ex.size(); ++k) {
+        if (k != 0 && k + 1 != ex.size() && ex[k].energy > last * (1 - 2e-3)) continue;
+        last = ex[k].energy;
+        xk.push_back(json::array({num(ex[k].peak_torque[0], 5), num(ex[k].peak_torque[1], 5)}));
+        xe.push_back(num(ex[k].energy, 6));
+      }
+      pj["excluded"] = {{"what", "candidates inside the clearance margin (inadmissible), energy converged"},
+                        {"peak_torque_Nm", xk},
+                        {"energy_J", xe}};
       pareto.push_back(pj);
     }
     {
@@ -297,7 +387,7 @@ json PlacementRun::results() const {
       mj["optimum_xy_m"] = pc.found ? pair(pc.refined.root) : json(nullptr);
       mj["encoding"] =
           "row j is y_m[j]; energy_J_rows: space-separated energies in J at 4 significant digits, "
-          "'-' where unreachable; status_rows: '.' unreachable, 's' singular, 'x' over a limit, "
+          "'-' where unreachable or the sampled energy is not converged to 1e-4; status_rows: '.' unreachable, 's' singular, 'x' over a limit, "
           "'o' feasible; Y < 0 is the mirror image with the configurations swapped";
       mj["energy_J_rows"] = er;
       mj["status_rows"] = sr;
@@ -315,13 +405,16 @@ json PlacementRun::results() const {
     ej["phi_deg"] = num(c.phi / kDeg);
     ej["root_xy_m"] = pair(c.root);
     const bool reachable = c.status != pl::CandidateStatus::kUnreachable;
-    ej["energy_J"] = reachable ? num(c.metrics.energy) : json(nullptr);
+    if (reachable) {
+      metrics_json(ej, c);
+    } else {
+      ej["energy_J"] = nullptr;
+      ej["peak_torque_Nm"] = nullptr;
+    }
     ej["status"] = pl::status_name(c.status);
     ej["singular"] = c.status == pl::CandidateStatus::kSingular;
     ej["boundary_distance_m"] = num(c.boundary_distance, 5);
     ej["min_abs_sin_elbow"] = num(c.min_abs_sin, 5);
-    ej["peak_torque_Nm"] = reachable ? json::array({num(c.metrics.peak_torque[0]), num(c.metrics.peak_torque[1])})
-                                     : json(nullptr);
     ej["saving_J"] = e.has_saving ? num(e.saving) : json(nullptr);
     ej["saving_percent"] = e.has_saving ? num(e.saving_percent, 5) : json(nullptr);
     ej["line_start_m"] = pair(e.placement.start);

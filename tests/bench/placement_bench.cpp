@@ -1,5 +1,6 @@
 // Placement study speed: closed-form candidate evaluation (IK + velocities + accelerations
-// + torques + power) in trajectory samples per second on 1 and 2 threads, and the
+// + torques + power) in trajectory samples per second on 1 and 2 threads, the constrained
+// refinement of one optimum, and the
 // end-to-end time of the five bundled thesis examples (search, refinement, maps; no
 // rendering), as `armstudy run --no-render` does them.
 #include <benchmark/benchmark.h>
@@ -10,6 +11,7 @@
 
 #include "cli/pipeline.hpp"
 #include "studies/placement/geometry.hpp"
+#include "studies/placement/refine.hpp"
 #include "studies/placement/solve.hpp"
 #include "testing/arms.hpp"
 
@@ -56,6 +58,27 @@ void BM_PlacementEvaluatorSamples(benchmark::State& state) {
       benchmark::Counter(double(samples) / threads, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_PlacementEvaluatorSamples)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// the constrained refinement of one optimum (refine.hpp) from a nearby start: on the inner
+// circle's clearance margin (0.5 Lmax, arg 0) and interior (0.2 Lmax, arg 1)
+void BM_PlacementConstrainedRefinement(benchmark::State& state) {
+  const bool interior = state.range(0) == 1;
+  Spec spec;
+  spec.chain = testing::thesis_arm();
+  spec.length = (interior ? 0.2 : 0.5) * annulus(0.4, 0.2).lmax;
+  const Arm2 arm = make_arm2(spec.chain);
+  const ProgramTable table = make_program_table(core::MotionProgram::kCycloidal, 1.0, spec.length, 401);
+  const double x0 = interior ? 0.52 : 0.216, p0 = (interior ? 168.0 : 99.0) * core::kPi / 180;
+  const Candidate start = evaluate_candidate(spec, arm, table, 1, x0, p0);
+  long evaluations = 0;
+  for (auto _ : state) {
+    const Refinement r = refine_constrained(spec, arm, table, 1, start, 0.008, 0.0265);
+    benchmark::DoNotOptimize(r.best.metrics.energy);
+    evaluations += r.evaluations;
+  }
+  state.counters["evaluations"] = benchmark::Counter(double(evaluations), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_PlacementConstrainedRefinement)->Arg(0)->Arg(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // the source tree (the benchmark executable gets no ARMSTUDY_SOURCE_DIR): three levels up
 std::filesystem::path source_dir() {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <cstdio>
 
 #include "cli/pipeline.hpp"
 
@@ -88,8 +89,10 @@ TEST(PlacementResultsJson, MapsAreRowsOfEnergiesAndStatusesOnTheNodeGrid) {
       size_t i = 0;
       while (in >> tok) {
         ASSERT_LT(i, nx);
-        // an energy wherever the line is inside the annulus, '-' where it is not
-        EXPECT_EQ(tok == "-", st[i] == '.') << "row " << r << " col " << i;
+        // '-' where the line leaves the annulus, and inside the margin where the sampled
+        // energy has not converged; an energy at every admissible node
+        if (st[i] == '.') EXPECT_EQ(tok, "-") << "row " << r << " col " << i;
+        if (st[i] == 'o' || st[i] == 'x') EXPECT_NE(tok, "-") << "row " << r << " col " << i;
         if (st[i] == 'o') {
           ++feasible;
           EXPECT_GE(std::stod(tok), 0.0);
@@ -104,6 +107,102 @@ TEST(PlacementResultsJson, MapsAreRowsOfEnergiesAndStatusesOnTheNodeGrid) {
   ASSERT_EQ(j["pareto"].size(), 8u);  // two joints per program and configuration
   ASSERT_EQ(j["curves"].size(), 4u);
   EXPECT_EQ(j["curves"][0]["phi_deg"].size(), j["curves"][0]["status"].get<std::string>().size());
+}
+
+// results.json and the page of a small case: the optimum's decision, the margin sensitivity,
+// a singular evaluation that prints no energy, peak or saving
+struct Page {
+  json results;
+  std::string html;
+};
+
+Page run_and_render(const std::string& yaml, const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("armstudy_placement_page_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path file = dir / "case.yaml";
+  std::ofstream(file) << yaml;
+  LoadedCase c = load_case(file.string());
+  const studies::Status st = c.run->solve({});
+  json j = {{"study", "placement"},
+            {"status", st == studies::Status::kSolved ? "solved" : "unsolvable"},
+            {"message", c.run->message()},
+            {"placement", c.run->results()},
+            {"checks", json::array()}};
+  fs::create_directories(dir / "out");
+  c.run->report(dir / "out", c.info, j);
+  std::ifstream in(dir / "out" / "index.html");
+  std::stringstream html;
+  html << in.rdbuf();
+  fs::remove_all(dir);
+  return {j, html.str()};
+}
+
+TEST(PlacementResultsJson, AMarginBoundOptimumSaysSoInResultsAndOnThePage) {
+  // 0.5 Lmax: the optimum lies on the inner circle's clearance margin; plus the line tangent
+  // to the inner circle (the thesis's printed optimum at Y = 0.2000 m, exactly)
+  char tangent[64];
+  std::snprintf(tangent, sizeof tangent, "%.12f", 180.0 - std::asin(0.2 / 0.36) * 180 / M_PI);
+  const Page p = run_and_render(
+      std::string("study: placement\nname: margin-page\nplacement:\n  length_fraction: 0.5\n"
+                  "  programs: [cycloidal]\n  configurations: [1]\n  nx_s: 16\n  phi_step_deg: 3\n"
+                  "  map: {nx: 8, ny: 4}\n  evaluate:\n    - {label: tangent, x_s_m: 0.36, phi_deg: ") +
+          tangent + "}\n",
+      "margin");
+  const json& pl = p.results["placement"];
+  ASSERT_EQ(pl["optima"].size(), 1u);
+  const json& o = pl["optima"][0];
+  EXPECT_EQ(o["decided_by"]["binding"], "inner_clearance");
+  EXPECT_TRUE(o["decided_by"]["set_by_margin"].get<bool>());
+  EXPECT_NEAR(o["decided_by"]["inner_slack_m"].get<double>(), 0.0, 1e-9);
+  EXPECT_TRUE(o["refinement"]["converged"].get<bool>());
+  EXPECT_LE(o["refinement"]["final_tolerance_rel"].get<double>(), 1e-7);
+  EXPECT_FALSE(o["refinement"]["method"].get<std::string>().empty());
+  EXPECT_TRUE(o["energy_convergence"]["converged"].get<bool>());
+  ASSERT_GE(o["margin_sensitivity"].size(), 5u);
+  double last = 0;
+  for (const json& m : o["margin_sensitivity"]) {
+    ASSERT_TRUE(m["found"].get<bool>());
+    EXPECT_GT(m["energy_J"].get<double>(), last) << m["margin_m"];  // falls as the margin shrinks
+    last = m["energy_J"].get<double>();
+  }
+  EXPECT_NE(p.results["message"].get<std::string>().find("set by the 0.0100 m clearance margin"), std::string::npos);
+  EXPECT_NE(p.html.find("is set by the 0.01 m clearance margin to the inner circle"), std::string::npos);
+  EXPECT_NE(p.html.find("Margin sensitivity"), std::string::npos);
+  // the tangent line: singular, and no energy, peak or saving anywhere
+  ASSERT_EQ(pl["evaluations"].size(), 1u);
+  const json& e = pl["evaluations"][0];
+  EXPECT_TRUE(e["singular_trajectory"].get<bool>());
+  EXPECT_TRUE(e["energy_J"].is_null());
+  EXPECT_TRUE(e["peak_torque_Nm"].is_null());
+  EXPECT_TRUE(e["saving_J"].is_null());
+  EXPECT_TRUE(e["saving_percent"].is_null());
+  EXPECT_EQ(e["note"], "singular: energy not converged, peak torque unbounded");
+  // the evaluations table's row (the case table above it lists the label too)
+  const size_t row = p.html.rfind("<tr><td>tangent</td>");
+  ASSERT_NE(row, std::string::npos);
+  const std::string tr = p.html.substr(row, p.html.find("</tr>", row) - row);
+  EXPECT_NE(tr.find("singular: energy not converged, peak torque unbounded"), std::string::npos) << tr;
+  EXPECT_NE(tr.find("none (singular)"), std::string::npos) << tr;
+  EXPECT_EQ(tr.find(" J"), std::string::npos) << tr;
+  // the Pareto fronts hold admissible placements only
+  for (const json& f : pl["pareto"])
+    for (const json& sg : f["singular"]) EXPECT_FALSE(sg.get<bool>());
+}
+
+TEST(PlacementResultsJson, AnInteriorOptimumSaysInterior) {
+  const Page p = run_and_render(
+      "study: placement\nname: interior-page\nplacement:\n  length_fraction: 0.2\n"
+      "  programs: [poly345]\n  configurations: [2]\n  nx_s: 16\n  phi_step_deg: 3\n"
+      "  map: {nx: 8, ny: 4}\n",
+      "interior");
+  const json& o = p.results["placement"]["optima"].at(0);
+  EXPECT_EQ(o["decided_by"]["binding"], "interior");
+  EXPECT_FALSE(o["decided_by"]["set_by_margin"].get<bool>());
+  EXPECT_TRUE(o["margin_sensitivity"].empty());
+  EXPECT_NE(p.results["message"].get<std::string>().find("interior: no constraint binds"), std::string::npos);
+  EXPECT_NE(p.html.find("interior (clearances exceed the margin by"), std::string::npos);
+  EXPECT_EQ(p.html.find("Margin sensitivity"), std::string::npos);
 }
 
 }  // namespace

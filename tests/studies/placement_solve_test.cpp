@@ -180,8 +180,9 @@ TEST(PlacementSolve, TorqueLimitsExcludeCandidatesAndThePerJointParetoFrontIsMon
       EXPECT_GE(front[k].peak_torque[j], front[k - 1].peak_torque[j]);
       EXPECT_LT(front[k].energy, front[k - 1].energy);
     }
-    // the front ignores the margin, so its end is at most the margin-limited optimum
-    EXPECT_LE(front.back().energy, f.grid.metrics.energy);
+    // admissible placements only: the front ends at the refined optimum, never below it
+    EXPECT_DOUBLE_EQ(front.back().energy, f.refined.metrics.energy);
+    for (const ParetoPoint& p : front) EXPECT_FALSE(p.singular);
   }
 }
 

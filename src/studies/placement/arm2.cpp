@@ -91,6 +91,7 @@ LineMetrics evaluate_line(const Arm2& arm, const ProgramTable& table, const Line
   double e_sum = 0, w_sum = 0, e_end = 0, w_end = 0;
   double pt1 = 0, pt2 = 0, pp1 = 0, pp2 = 0, min_sin = 1;
   double w_head[kGregory] = {}, w_tail[kGregory] = {};
+  double coarse = 0, e_even = 0;  // trapezoid on the even samples (and the last)
   for (int k = 0; k < n; ++k) {
     const Arm2Sample o = arm2_sample(arm, sx + s[k] * ux, sy + s[k] * uy, sd[k] * ux, sd[k] * uy,
                                      sdd[k] * ux, sdd[k] * uy, sign);
@@ -98,6 +99,12 @@ LineMetrics evaluate_line(const Arm2& arm, const ProgramTable& table, const Line
     const double e = std::abs(p1) + std::abs(p2), w = p1 + p2;
     e_sum += e;
     w_sum += w;
+    if (k % 2 == 0) {
+      if (k > 0) coarse += e_even + e;  // (e_a + e_b) / 2 over 2 dt, times dt below
+      e_even = e;
+    } else if (k == n - 1) {
+      coarse += 0.5 * (e_even + e);  // the last, single interval
+    }
     if (k == 0 || k == n - 1) {
       e_end += e;
       w_end += w;
@@ -113,6 +120,7 @@ LineMetrics evaluate_line(const Arm2& arm, const ProgramTable& table, const Line
   // trapezoidal rule on the uniform grid: h (sum - (y0 + yn) / 2)
   LineMetrics m;
   m.energy = table.dt * (e_sum - 0.5 * e_end);
+  m.energy_coarse = table.dt * coarse;
   // the signed power is smooth (it is dK/dt): Gregory's rule makes its integral O(h^6);
   // |power| has kinks where a joint's power changes sign, so the energy keeps the trapezoid
   if (n >= 2 * kGregory) {

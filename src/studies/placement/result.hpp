@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "core/motion_program.hpp"
 #include "studies/common.hpp"
 #include "studies/placement/arm2.hpp"
+#include "studies/placement/converge.hpp"
 
 namespace armstudy::studies::placement {
 
@@ -31,6 +33,27 @@ char status_char(CandidateStatus s);
 /// "unreachable", "singular", "over_limit", "feasible".
 const char* status_name(CandidateStatus s);
 
+/// What decides an optimum (issue 13).
+enum class Binding : std::uint8_t {
+  kInterior,        ///< no constraint active: a stationary point of the energy
+  kInnerClearance,  ///< the line's clearance to the inner circle |L1 - L2| equals the margin
+  kOuterClearance,  ///< the line's clearance to the outer circle L1 + L2 equals the margin
+  kTorqueLimit,     ///< a joint's peak |torque| equals its limit
+  kPowerLimit,      ///< a joint's peak |power| equals its limit
+};
+
+/// The constraints' slacks at an optimum and the one that binds.
+struct Decision {
+  Binding binding = Binding::kInterior;
+  int joint = -1;  ///< 0 (root) or 1 (elbow) for a limit, else -1
+  double inner_slack = 0;  ///< m, clearance to the inner circle minus the margin
+  double outer_slack = 0;  ///< m, clearance to the outer circle minus the margin
+  double torque_slack[2] = {std::numeric_limits<double>::quiet_NaN(),
+                            std::numeric_limits<double>::quiet_NaN()};  ///< N m (NaN: no limit)
+  double power_slack[2] = {std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::quiet_NaN()};   ///< W (NaN: no limit)
+};
+
 /// A candidate placement with its metrics (for one program and configuration).
 struct Candidate {
   double x_s = 0;   ///< m
@@ -38,8 +61,23 @@ struct Candidate {
   Eigen::Vector2d root = Eigen::Vector2d::Zero();  ///< m, root (X, Y) in the line frame (4.14)
   CandidateStatus status = CandidateStatus::kUnreachable;
   double boundary_distance = 0;  ///< m, exact (< 0: unreachable)
+  double inner_clearance = 0;    ///< m, r_min - |L1 - L2| (exact)
+  double outer_clearance = 0;    ///< m, L1 + L2 - r_max (exact)
   double min_abs_sin = 0;        ///< exact smallest |sin q2| along the line
   LineMetrics metrics;           ///< energy, signed work, peaks (unset when unreachable)
+  /// the energy converged by doubling (optima, evaluations, the thesis's best); when
+  /// convergence.singular() no energy, peak or saving of this candidate is printed
+  EnergyConvergence convergence;
+};
+
+/// The refined optimum at one clearance margin (the margin sensitivity curve).
+struct MarginPoint {
+  double margin = 0;  ///< m
+  bool found = false;
+  Candidate optimum;
+  Decision decision;
+  bool refine_converged = false;
+  double refine_tolerance_rel = 0;
 };
 
 /// Where the arm and the line are, for a renderer: everything in the arm's frame A.
@@ -86,7 +124,7 @@ struct ParetoPoint {
   double peak_torque[2] = {0, 0};  ///< N m, peak |tau| of joints 1 and 2 of this candidate
   double energy = 0;       ///< J
   double x_s = 0, phi = 0; ///< m, rad
-  bool singular = false;   ///< closer to a boundary than the margin (sampled peak: a lower bound)
+  bool singular = false;   ///< closer to a boundary than the margin (only in pareto_excluded)
 };
 
 /// Everything found for one motion program and configuration.
@@ -99,16 +137,25 @@ struct ProgramConfig {
   Candidate grid;          ///< best feasible candidate of the sweep
   Candidate refined;       ///< after the local refinement (== grid when not refined)
   int refine_evaluations = 0;
+  std::string refine_method;       ///< the refinement's stages ("" when not refined)
+  double refine_tolerance_rel = 0; ///< relative energy a final restart still gained
+  bool refine_converged = false;   ///< refine_tolerance_rel <= 1e-7
+  Decision decision;               ///< what decides the refined optimum
+  /// the optimum re-solved at a range of margins (when a clearance binds), by margin
+  std::vector<MarginPoint> margin_sensitivity;
   Placement placement;     ///< of the refined optimum
   TimeSeries series;       ///< of the refined optimum
   bool thesis_found = false;
   Candidate thesis_best;   ///< least energy among the thesis's own candidates, any status
   EnergyMap map;
-  PhiCurve curve;          ///< at the grid optimum's x_s (or the thesis's first x_s)
-  /// Pareto fronts of (peak torque of joint j, energy), j = 0 (root), 1 (elbow), over every
-  /// reachable candidate (margin ignored: the front shows what the margin costs); by
+  PhiCurve curve;          ///< at the refined optimum's own x_s (or the thesis's first x_s)
+  /// Pareto fronts of (peak torque of joint j, energy), j = 0 (root), 1 (elbow), over the
+  /// admissible candidates only (feasible, energy converged) and the refined optimum; by
   /// increasing peak torque of that joint and decreasing energy
   std::array<std::vector<ParetoPoint>, 2> pareto;
+  /// the same front over the inadmissible candidates inside the margin whose energy
+  /// converged: drawn distinctly, never part of the front
+  std::array<std::vector<ParetoPoint>, 2> pareto_excluded;
 };
 
 /// A fixed placement the case asked for, with its saving against the optimum.
@@ -119,15 +166,9 @@ struct Evaluation {
   Candidate candidate;
   Placement placement;
   TimeSeries series;     ///< empty when unreachable
-  bool has_saving = false;
+  bool has_saving = false;   ///< both energies converged and neither motion singular
   double saving = 0;         ///< J, energy minus the refined optimum's
   double saving_percent = 0; ///< % of this placement's energy
-};
-
-/// One row of the convergence table: the optimum's energy with more samples.
-struct ConvergenceRow {
-  int samples = 0;
-  double energy = 0;  ///< J
 };
 
 struct Result {

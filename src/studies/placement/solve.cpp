@@ -13,6 +13,7 @@
 #include "core/check.hpp"
 #include "studies/grid.hpp"
 #include "studies/placement/geometry.hpp"
+#include "studies/placement/refine.hpp"
 
 namespace armstudy::studies::placement {
 namespace {
@@ -21,6 +22,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDeg = core::kPi / 180.0;
 constexpr double kTouch = 1e-9;  // m, a line this far outside the annulus touches it
+// m, a line this much closer than the margin is on it (a refinement along the constraint
+// ends within roundoff of it, on either side)
+constexpr double kMarginTol = 1e-12;
+// relative quadrature error below which a sampled energy counts as converged
+constexpr double kEnergyTol = 1e-4;
 
 // which candidate set a geometric candidate belongs to
 enum class Set : std::uint8_t { kSweep, kThesis, kMap };
@@ -78,6 +84,19 @@ bool within_limits(const Spec& spec, const LineMetrics& m) {
   return true;
 }
 
+double arm_inner(const Arm2& arm) { return std::abs(arm.L1 - arm.L2); }
+double arm_outer(const Arm2& arm) { return arm.L1 + arm.L2; }
+
+// converged by doubling from the spec's samples
+EnergyConvergence converged(const Spec& spec, const Arm2& arm, core::MotionProgram program,
+                            const Candidate& c, int configuration) {
+  return converge_energy(arm, program, spec.duration, spec.length, thesis_line(c.x_s, c.phi),
+                         configuration, spec.samples, c.boundary_distance < kTouch, kEnergyTol);
+}
+
+// a sampled energy whose embedded error estimate is within the tolerance
+bool energy_ok(const LineMetrics& m) { return m.energy_error_estimate() <= kEnergyTol; }
+
 Placement placement_of(const Line& line, double L) {
   Placement p;
   p.start = line.start;
@@ -85,6 +104,46 @@ Placement placement_of(const Line& line, double L) {
   p.root_in_line_frame = Eigen::Vector2d(-line.start.dot(line.dir),
                                          -line.start.dot(Eigen::Vector2d(-line.dir.y(), line.dir.x())));
   return p;
+}
+
+// what decides an optimum, in words (the summary sentence)
+std::string decision_sentence(const Spec& spec, const Annulus& an, const ProgramConfig& c) {
+  const Decision& d = c.decision;
+  std::ostringstream os;
+  switch (d.binding) {
+    case Binding::kInterior:
+      os << "interior: no constraint binds (clearances " << fmt(d.inner_slack + spec.singularity_margin, 4)
+         << " m to the inner and " << fmt(d.outer_slack + spec.singularity_margin, 4)
+         << " m to the outer circle)";
+      return os.str();
+    case Binding::kInnerClearance:
+    case Binding::kOuterClearance: {
+      const bool inner = d.binding == Binding::kInnerClearance;
+      os << "the optimum is set by the " << fmt(spec.singularity_margin, 4) << " m clearance margin to the "
+         << (inner ? "inner circle |L1 - L2| = " + fmt(an.inner, 3) : "outer circle L1 + L2 = " + fmt(an.outer, 3))
+         << " m, not by the physics";
+      const MarginPoint* lo = nullptr;
+      const MarginPoint* hi = nullptr;
+      for (const MarginPoint& m : c.margin_sensitivity) {
+        if (!m.found || m.optimum.convergence.singular()) continue;
+        if (!lo || m.margin < lo->margin) lo = &m;
+        if (!hi || m.margin > hi->margin) hi = &m;
+      }
+      if (lo && hi && lo != hi)
+        os << ": its energy is " << fmt(lo->optimum.metrics.energy) << " J at a " << fmt(lo->margin, 4)
+           << " m margin and " << fmt(hi->optimum.metrics.energy) << " J at " << fmt(hi->margin, 4) << " m";
+      return os.str();
+    }
+    case Binding::kTorqueLimit:
+      os << "the optimum is set by the torque limit of joint " << d.joint + 1 << " ("
+         << fmt((*spec.torque_limit)[size_t(d.joint)], 4) << " N m)";
+      return os.str();
+    case Binding::kPowerLimit:
+      os << "the optimum is set by the power limit of joint " << d.joint + 1 << " ("
+         << fmt((*spec.power_limit)[size_t(d.joint)], 4) << " W)";
+      return os.str();
+  }
+  return "";
 }
 
 }  // namespace
@@ -113,7 +172,8 @@ CandidateStatus classify(const Spec& spec, double boundary_distance, const LineM
   // a line that touches a boundary within roundoff (e.g. the thesis's (4.10) line) is on it
   if (boundary_distance < -kTouch) return CandidateStatus::kUnreachable;
   // a line closer to a boundary than the margin, or a sample at a folded/stretched elbow
-  if (boundary_distance < spec.singularity_margin || !m.finite()) return CandidateStatus::kSingular;
+  if (boundary_distance < spec.singularity_margin - kMarginTol || !m.finite())
+    return CandidateStatus::kSingular;
   if (!within_limits(spec, m)) return CandidateStatus::kOverLimit;
   return CandidateStatus::kFeasible;
 }
@@ -127,6 +187,8 @@ Candidate evaluate_candidate(const Spec& spec, const Arm2& arm, const ProgramTab
   const Line line = thesis_line(x_s, phi);
   const LineCheck chk = check_line(arm.L1, arm.L2, line, spec.length);
   c.boundary_distance = chk.boundary_distance;
+  c.inner_clearance = chk.r_min - arm_inner(arm);
+  c.outer_clearance = arm_outer(arm) - chk.r_max;
   c.min_abs_sin = chk.min_abs_sin;
   if (chk.boundary_distance >= -kTouch) c.metrics = evaluate_line(arm, table, line, configuration);
   c.status = classify(spec, chk.boundary_distance, c.metrics);
@@ -232,6 +294,37 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   });
   res.samples_evaluated += n_tasks * spec.samples;
 
+  // candidates clear of the margin whose sampled energy is not converged (the embedded
+  // estimate above 1e-4): samples doubled until it converges; inside the margin they are
+  // inadmissible and stay unconverged (no number is drawn for them)
+  std::vector<char> conv_ok(metrics.size(), 0);
+  std::vector<long> redo;
+  for (size_t pc = 0; pc < pcs.size(); ++pc) {
+    for (const int k : reachable) {
+      const size_t m = pc * geo.size() + size_t(k);
+      conv_ok[m] = energy_ok(metrics[m]);
+      if (!conv_ok[m] && metrics[m].finite() &&
+          geo[size_t(k)].check.boundary_distance >= spec.singularity_margin - kMarginTol)
+        redo.push_back(long(m));
+    }
+  }
+  std::atomic<long long> redo_samples{0};
+  parallel_for(long(redo.size()), threads, progress, 0.8, 0.82, "placement sweep convergence", [&](long t) {
+    const size_t m = size_t(redo[size_t(t)]);
+    const size_t pc = m / geo.size(), k = m % geo.size();
+    const EnergyConvergence c =
+        converge_energy(arm, spec.programs[size_t(pcs[pc].program)], spec.duration, L, geo[k].line,
+                        pcs[pc].configuration, spec.samples, false, kEnergyTol);
+    long long n = 0;
+    for (const auto& row : c.rows) n += row.samples;
+    redo_samples += n;
+    if (c.converged) {
+      metrics[m] = c.metrics;
+      conv_ok[m] = 1;
+    }
+  });
+  res.samples_evaluated += redo_samples.load();
+
   // per pair: classify, count, optimum, thesis's optimum, curve, map, Pareto front
   for (size_t pc = 0; pc < pcs.size(); ++pc) {
     ProgramConfig out;
@@ -239,12 +332,15 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     out.configuration = pcs[pc].configuration;
     const ProgramTable& table = tables[pcs[pc].program];
     const auto metric = [&](size_t k) -> const LineMetrics& { return metrics[pc * geo.size() + k]; };
+    const auto converged_at = [&](size_t k) { return conv_ok[pc * geo.size() + k] != 0; };
     const auto candidate = [&](size_t k) {
       Candidate c;
       c.x_s = geo[k].x_s;
       c.phi = geo[k].phi;
       c.root = root_in_line_frame(c.x_s, c.phi);
       c.boundary_distance = geo[k].check.boundary_distance;
+      c.inner_clearance = geo[k].check.r_min - an.inner;
+      c.outer_clearance = an.outer - geo[k].check.r_max;
       c.min_abs_sin = geo[k].check.min_abs_sin;
       if (c.boundary_distance >= -kTouch) c.metrics = metric(k);
       c.status = classify(spec, c.boundary_distance, c.metrics);
@@ -276,14 +372,18 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
             (thesis_best < 0 || metric(k).energy < metric(size_t(thesis_best)).energy))
           thesis_best = long(k);
       }
-      // the optimum: the least energy of every feasible candidate of every set
-      if (st[k] == CandidateStatus::kFeasible &&
+      // the optimum: the least energy of every feasible candidate of every set whose
+      // sampled energy has converged
+      if (st[k] == CandidateStatus::kFeasible && converged_at(k) &&
           (best < 0 || metric(k).energy < metric(size_t(best)).energy))
         best = long(k);
     }
     if (thesis_best >= 0) {
       out.thesis_found = true;
       out.thesis_best = candidate(size_t(thesis_best));
+      out.thesis_best.convergence =
+          converged(spec, arm, out.program, out.thesis_best, out.configuration);
+      if (!out.thesis_best.convergence.singular()) out.thesis_best.metrics = out.thesis_best.convergence.metrics;
     }
 
     // map
@@ -296,55 +396,23 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     for (size_t m = 0; m < map.energy.size(); ++m) {
       const size_t k = map_begin + m;
       map.status[m] = st[k];
-      const bool ok = st[k] != CandidateStatus::kUnreachable && metric(k).finite();
+      const bool ok = st[k] != CandidateStatus::kUnreachable && converged_at(k);
       map.energy[m] = ok ? float(metric(k).energy) : float(kNaN);
       map.peak_torque[m] =
           ok ? float(std::max(metric(k).peak_torque[0], metric(k).peak_torque[1])) : float(kNaN);
     }
 
-    // Pareto fronts of (peak torque of one joint, energy) over every reachable candidate
-    std::vector<size_t> order;
-    for (size_t k = 0; k < geo.size(); ++k)
-      if (st[k] != CandidateStatus::kUnreachable && metric(k).finite()) order.push_back(k);
-    for (int joint = 0; joint < 2; ++joint) {
-      std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        return metric(a).peak_torque[joint] < metric(b).peak_torque[joint];
-      });
-      double e_min = kInf;
-      for (const size_t k : order) {
-        if (metric(k).energy < e_min * (1 - 1e-9)) {
-          e_min = metric(k).energy;
-          ParetoPoint pp;
-          pp.peak_torque[0] = metric(k).peak_torque[0];
-          pp.peak_torque[1] = metric(k).peak_torque[1];
-          pp.energy = e_min;
-          pp.x_s = geo[k].x_s;
-          pp.phi = geo[k].phi;
-          pp.singular = st[k] == CandidateStatus::kSingular;
-          out.pareto[joint].push_back(pp);
-        }
+    // sweep candidates by status for the refinement at other margins
+    const auto best_clear_of = [&](double margin) -> long {
+      long k_best = -1;
+      for (size_t k = 0; k < geo.size(); ++k) {
+        if (geo[k].check.boundary_distance < margin - kMarginTol) continue;
+        const LineMetrics& m = metric(k);
+        if (!m.finite() || !converged_at(k) || !within_limits(spec, m)) continue;
+        if (k_best < 0 || m.energy < metric(size_t(k_best)).energy) k_best = long(k);
       }
-    }
-
-    // energy versus phi at the optimum's start point (or the thesis's first)
-    int curve_i = 0;
-    if (best >= 0) {
-      double d_best = kInf;
-      for (size_t i = 0; i < xs.size(); ++i) {
-        if (std::abs(xs[i] - geo[size_t(best)].x_s) < d_best) {
-          d_best = std::abs(xs[i] - geo[size_t(best)].x_s);
-          curve_i = int(i);
-        }
-      }
-    }
-    out.curve.x_s = xs[size_t(curve_i)];
-    for (size_t k = 0; k < geo.size(); ++k) {
-      if (geo[k].set != Set::kSweep || geo[k].i != curve_i) continue;
-      out.curve.phi.push_back(geo[k].phi);
-      const bool ok = st[k] != CandidateStatus::kUnreachable && metric(k).finite();
-      out.curve.energy.push_back(ok ? metric(k).energy : kNaN);
-      out.curve.status.push_back(st[k]);
-    }
+      return k_best;
+    };
 
     if (best < 0) {
       out.found = false;
@@ -353,64 +421,158 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
                    "] m" + (spec.torque_limit || spec.power_limit ? " within the actuator limits" : "") +
                    " (" + std::to_string(n.singular) + " of " + std::to_string(n.total) +
                    " sweep candidates singular, " + std::to_string(n.over_limit) + " over a limit)";
-      res.cases.push_back(std::move(out));
-      continue;
+    } else {
+      out.found = true;
+      out.grid = candidate(size_t(best));
+      out.refined = out.grid;
     }
-    out.found = true;
-    out.grid = candidate(size_t(best));
-    out.refined = out.grid;
 
-    // local refinement of (x_s, phi) in a box of two grid spacings around the grid optimum
-    if (spec.refine) {
-      const double hx = std::max({xs.size() > 1 ? std::abs(xs[0] - xs[1]) : 0.0,
-                                  mx[1] - mx[0], my[1] - my[0], 1e-4});
-      const double hphi = std::max(spec.phi_step, hx / std::max(out.grid.x_s, 1e-3));
-      const double x0 = out.grid.x_s, p0 = out.grid.phi;
-      const std::vector<double> lb = {std::max(an.inner, x0 - 2 * hx), p0 - 2 * hphi};
-      const std::vector<double> ub = {std::min(an.outer, x0 + 2 * hx), p0 + 2 * hphi};
-      // scaled variables: u = (x_s - x0) / hx, v = (phi - p0) / hphi
-      struct Ctx {
-        const Spec* spec;
-        const Arm2* arm;
-        const ProgramTable* table;
-        int configuration;
-        double x0, p0, hx, hphi, barrier;
-        int evals;
-      } ctx{&spec, &arm, &table, out.configuration, x0, p0, hx, hphi,
-            10.0 * out.grid.metrics.energy + 1.0, 0};
-      nlopt::opt opt(nlopt::LN_SBPLX, 2);
-      opt.set_lower_bounds({(lb[0] - x0) / hx, (lb[1] - p0) / hphi});
-      opt.set_upper_bounds({(ub[0] - x0) / hx, (ub[1] - p0) / hphi});
-      opt.set_xtol_abs({0.1 * spec.refine_xtol / hx, 0.1 * spec.refine_phitol / hphi});
-      opt.set_initial_step({0.25, 0.25});
-      opt.set_maxeval(3000);
-      opt.set_min_objective(
-          [](const std::vector<double>& x, std::vector<double>&, void* data) {
-            auto* c = static_cast<Ctx*>(data);
-            ++c->evals;
-            const Candidate cand = evaluate_candidate(*c->spec, *c->arm, *c->table, c->configuration,
-                                                      c->x0 + x[0] * c->hx, c->p0 + x[1] * c->hphi);
-            // extreme barrier: only admissible placements compete
-            return cand.status == CandidateStatus::kFeasible ? cand.metrics.energy : c->barrier;
-          },
-          &ctx);
-      std::vector<double> x = {0.0, 0.0};
-      double f = 0;
-      try {
-        opt.optimize(x, f);
-      } catch (const std::exception&) {
-        // a roundoff-limited stop keeps the best point found, which x holds
-      }
-      const Candidate r = evaluate_candidate(spec, arm, table, out.configuration, x0 + x[0] * hx,
-                                             p0 + x[1] * hphi);
-      out.refine_evaluations = ctx.evals;
-      if (r.status == CandidateStatus::kFeasible && r.metrics.energy <= out.grid.metrics.energy)
-        out.refined = r;
-      res.samples_evaluated += long(ctx.evals) * spec.samples;
+    // constrained local refinement of (x_s, phi) around the grid optimum (refine.hpp)
+    const double hx = std::max({xs.size() > 1 ? std::abs(xs[0] - xs[1]) : 0.0,
+                                mx[1] - mx[0], my[1] - my[0], 1e-4});
+    const auto hphi_at = [&](double x_s) { return std::max(spec.phi_step, hx / std::max(x_s, 1e-3)); };
+    if (out.found && spec.refine) {
+      const Refinement rf = refine_constrained(spec, arm, table, out.configuration, out.grid, hx,
+                                               hphi_at(out.grid.x_s));
+      out.refine_evaluations = rf.evaluations;
+      out.refine_method = rf.method;
+      out.refine_tolerance_rel = rf.tolerance_rel;
+      out.refine_converged = rf.converged;
+      if (rf.best.status == CandidateStatus::kFeasible && rf.best.metrics.energy <= out.grid.metrics.energy)
+        out.refined = rf.best;
+      res.samples_evaluated += long(rf.evaluations) * spec.samples;
     }
-    const Line line = thesis_line(out.refined.x_s, out.refined.phi);
-    out.placement = placement_of(line, L);
-    out.series = sample_series(arm, table, line, out.configuration);
+    if (out.found) {
+      out.decision = decide(spec, out.refined);
+      out.refined.convergence = converged(spec, arm, out.program, out.refined, out.configuration);
+      out.grid.convergence = converged(spec, arm, out.program, out.grid, out.configuration);
+      const Line line = thesis_line(out.refined.x_s, out.refined.phi);
+      out.placement = placement_of(line, L);
+      out.series = sample_series(arm, table, line, out.configuration);
+    }
+
+    // the optimum against the clearance margin, when a clearance decides it
+    if (out.found && spec.refine &&
+        (out.decision.binding == Binding::kInnerClearance || out.decision.binding == Binding::kOuterClearance)) {
+      std::vector<double> margins = spec.sensitivity_margins;
+      margins.push_back(spec.singularity_margin);
+      std::sort(margins.begin(), margins.end());
+      margins.erase(std::unique(margins.begin(), margins.end(),
+                                [](double a, double b) { return std::abs(a - b) < 1e-12; }),
+                    margins.end());
+      for (const double m : margins) {
+        if (!(m > 0) || m >= (an.outer - an.inner) / 2) continue;
+        MarginPoint mp;
+        mp.margin = m;
+        if (std::abs(m - spec.singularity_margin) < 1e-12) {
+          mp.found = true;
+          mp.optimum = out.refined;
+          mp.decision = out.decision;
+          mp.refine_converged = out.refine_converged;
+          mp.refine_tolerance_rel = out.refine_tolerance_rel;
+          out.margin_sensitivity.push_back(mp);
+          continue;
+        }
+        const long k0 = best_clear_of(m);
+        if (k0 < 0) {
+          out.margin_sensitivity.push_back(mp);
+          continue;
+        }
+        Spec sm = spec;
+        sm.singularity_margin = m;
+        const Candidate start = evaluate_candidate(sm, arm, table, out.configuration, geo[size_t(k0)].x_s,
+                                                   geo[size_t(k0)].phi);
+        const Refinement rf = refine_constrained(sm, arm, table, out.configuration, start, hx,
+                                                 hphi_at(start.x_s));
+        res.samples_evaluated += long(rf.evaluations) * spec.samples;
+        const Candidate& c = rf.best.status == CandidateStatus::kFeasible &&
+                                     rf.best.metrics.energy <= start.metrics.energy
+                                 ? rf.best
+                                 : start;
+        mp.found = c.status == CandidateStatus::kFeasible;
+        mp.optimum = c;
+        mp.optimum.convergence = converged(sm, arm, out.program, c, out.configuration);
+        mp.decision = decide(sm, c);
+        mp.refine_converged = rf.converged;
+        mp.refine_tolerance_rel = rf.tolerance_rel;
+        out.margin_sensitivity.push_back(mp);
+      }
+    }
+
+    // Pareto fronts of (peak torque of one joint, energy) over the admissible candidates
+    // (feasible, energy converged) with the refined optimum; the candidates inside the
+    // margin make a separate, excluded front
+    struct FrontPoint {
+      const LineMetrics* m;
+      double x_s, phi;
+    };
+    std::vector<FrontPoint> admissible, excluded;
+    for (size_t k = 0; k < geo.size(); ++k) {
+      if (!converged_at(k)) continue;
+      if (st[k] == CandidateStatus::kFeasible) admissible.push_back({&metric(k), geo[k].x_s, geo[k].phi});
+      else if (st[k] == CandidateStatus::kSingular && geo[k].check.boundary_distance >= kTouch)
+        excluded.push_back({&metric(k), geo[k].x_s, geo[k].phi});
+    }
+    if (out.found) admissible.push_back({&out.refined.metrics, out.refined.x_s, out.refined.phi});
+    const auto front_of = [&](std::vector<FrontPoint>& pts, int joint, bool singular) {
+      std::sort(pts.begin(), pts.end(), [&](const FrontPoint& a, const FrontPoint& b) {
+        return a.m->peak_torque[joint] < b.m->peak_torque[joint];
+      });
+      std::vector<ParetoPoint> front;
+      double e_min = kInf;
+      for (const FrontPoint& fp : pts) {
+        if (fp.m->energy < e_min * (1 - 1e-9)) {
+          e_min = fp.m->energy;
+          ParetoPoint pp;
+          pp.peak_torque[0] = fp.m->peak_torque[0];
+          pp.peak_torque[1] = fp.m->peak_torque[1];
+          pp.energy = e_min;
+          pp.x_s = fp.x_s;
+          pp.phi = fp.phi;
+          pp.singular = singular;
+          front.push_back(pp);
+        }
+      }
+      return front;
+    };
+    for (int joint = 0; joint < 2; ++joint) {
+      out.pareto[joint] = front_of(admissible, joint, false);
+      out.pareto_excluded[joint] = front_of(excluded, joint, true);
+    }
+
+    // energy versus phi at the refined optimum's own start point (or the thesis's first),
+    // through the optimum's own direction
+    out.curve.x_s = out.found ? out.refined.x_s : xs.front();
+    {
+      std::vector<double> cphi = phis;
+      if (out.found) {
+        // the optimum itself and a finer comb around it (an optimum on the margin has only a
+        // narrow admissible range of phi at its own x_s)
+        cphi.push_back(out.refined.phi);
+        for (int k = 1; k <= 20; ++k)
+          for (const int side : {-1, 1}) cphi.push_back(out.refined.phi + side * k * 0.05 * spec.phi_step);
+        std::sort(cphi.begin(), cphi.end());
+        cphi.erase(std::remove_if(cphi.begin(), cphi.end(), [](double p) { return p < 0 || p > core::kPi; }),
+                   cphi.end());
+      }
+      for (const double ph : cphi) {
+        Candidate c = evaluate_candidate(spec, arm, table, out.configuration, out.curve.x_s, ph);
+        out.curve.phi.push_back(ph);
+        bool ok = c.status != CandidateStatus::kUnreachable && energy_ok(c.metrics);
+        if (!ok && c.status != CandidateStatus::kUnreachable && c.metrics.finite() &&
+            c.boundary_distance >= spec.singularity_margin - kMarginTol) {
+          // as in the sweep: clear of the margin, samples doubled until the energy converges
+          const EnergyConvergence ec = converged(spec, arm, out.program, c, out.configuration);
+          if (ec.converged) {
+            c.metrics = ec.metrics;
+            ok = true;
+          }
+        }
+        out.curve.energy.push_back(ok ? c.metrics.energy : kNaN);
+        out.curve.status.push_back(c.status);
+      }
+      res.samples_evaluated += long(cphi.size()) * spec.samples;
+    }
     res.cases.push_back(std::move(out));
   }
   if (progress) progress(0.85, "placement refinement");
@@ -423,12 +585,24 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       e.program = spec.programs[pcs[pc].program];
       e.configuration = pcs[pc].configuration;
       e.candidate = evaluate_candidate(spec, arm, tables[pcs[pc].program], e.configuration, ev.x_s, ev.phi);
+      if (e.candidate.status != CandidateStatus::kUnreachable) {
+        e.candidate.convergence = converged(spec, arm, e.program, e.candidate, e.configuration);
+        // the printed metrics are those at the samples where the doubling converged
+        if (!e.candidate.convergence.singular()) e.candidate.metrics = e.candidate.convergence.metrics;
+      }
       const Line line = thesis_line(ev.x_s, ev.phi);
       e.placement = placement_of(line, L);
-      if (e.candidate.status != CandidateStatus::kUnreachable)
-        e.series = sample_series(arm, tables[pcs[pc].program], line, e.configuration);
+      if (e.candidate.status != CandidateStatus::kUnreachable) {
+        const int n = e.candidate.convergence.singular() ? spec.samples : e.candidate.convergence.samples;
+        e.series = n == spec.samples ? sample_series(arm, tables[pcs[pc].program], line, e.configuration)
+                                     : sample_series(arm, make_program_table(e.program, spec.duration, L, n),
+                                                     line, e.configuration);
+      }
       const ProgramConfig& opt = res.cases[pc];
-      if (opt.found && e.candidate.metrics.finite() && e.candidate.status != CandidateStatus::kUnreachable) {
+      // a saving only between converged, regular motions
+      if (opt.found && e.candidate.status != CandidateStatus::kUnreachable &&
+          e.candidate.convergence.checked && !e.candidate.convergence.singular() &&
+          !opt.refined.convergence.singular()) {
         e.has_saving = true;
         e.saving = e.candidate.metrics.energy - opt.refined.metrics.energy;
         e.saving_percent = 100.0 * e.saving / e.candidate.metrics.energy;
@@ -476,8 +650,36 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       if (c.found) worst_margin = std::max(worst_margin, spec.singularity_margin - c.refined.boundary_distance);
     res.checks.push_back(make_check("optima_clear_of_singularities",
                                     "largest amount by which an optimum's line comes closer to a "
-                                    "workspace boundary than the singularity margin, m",
-                                    worst_margin, 0.0));
+                                    "workspace boundary than the singularity margin, m (an optimum "
+                                    "refined along the margin ends on it within roundoff)",
+                                    worst_margin, kMarginTol));
+    double worst_refine = 0;
+    int refined = 0;
+    for (const auto& c : res.cases) {
+      if (!c.found || c.refine_method.empty()) continue;
+      worst_refine = std::max(worst_refine, c.refine_converged ? c.refine_tolerance_rel : kInf);
+      ++refined;
+    }
+    if (refined > 0)
+      res.checks.push_back(make_check(
+          "refinement_converged",
+          "largest relative energy a final COBYLA restart still gained at an optimum (the "
+          "constrained refinement's final tolerance)",
+          worst_refine, 1e-7));
+    double worst_conv = 0;
+    int conv_n = 0;
+    for (const auto& c : res.cases) {
+      if (!c.found) continue;
+      const EnergyConvergence& ec = c.refined.convergence;
+      worst_conv = std::max(worst_conv, ec.singular() ? kInf : ec.rel_change);
+      ++conv_n;
+    }
+    if (conv_n > 0)
+      res.checks.push_back(make_check(
+          "optima_energy_converged",
+          "largest relative change of an optimum's energy when its samples are doubled (each "
+          "optimum checked on its own)",
+          worst_conv, kEnergyTol));
     double worse = 0;
     for (const auto& c : res.cases)
       if (c.found) worse = std::max(worse, c.refined.metrics.energy - c.grid.metrics.energy);
@@ -523,6 +725,13 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
        << fmt(best->refined.root.x()) << " m, Y = " << fmt(best->refined.root.y())
        << " m from the line's start (x_s = " << fmt(best->refined.x_s, 5)
        << " m, phi = " << fmt(best->refined.phi / kDeg, 3) << " deg)";
+    os << "; " << decision_sentence(spec, an, *best);
+    int by_margin = 0;
+    for (const auto& c : res.cases)
+      by_margin += c.found && (c.decision.binding == Binding::kInnerClearance ||
+                               c.decision.binding == Binding::kOuterClearance);
+    if (found > 1 && by_margin > 0)
+      os << " (" << by_margin << " of " << found << " optima are set by the clearance margin)";
     if (found < int(res.cases.size()))
       os << "; " << (res.cases.size() - found) << " program/configuration pair(s) have no admissible placement";
     res.message = os.str();

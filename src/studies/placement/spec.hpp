@@ -38,6 +38,9 @@ struct Spec {
   int map_nx = 200;  ///< map nodes along X (line direction)
   int map_ny = 100;  ///< map nodes along Y >= 0 (Y < 0 is the mirror image, configs swapped)
   bool refine = true;
+  /// m, margins at which an optimum set by a clearance is re-solved (the sensitivity curve;
+  /// the spec's own margin is added; margins the annulus cannot take are skipped)
+  std::vector<double> sensitivity_margins = {0.005, 0.0075, 0.0125, 0.015, 0.02, 0.03, 0.04, 0.05};
   double refine_xtol = 1e-5;                                 ///< m
   double refine_phitol = 1e-3 * 3.14159265358979323846 / 180;  ///< rad
   int threads = 0;  ///< worker threads for the sweeps (0: all hardware threads)
