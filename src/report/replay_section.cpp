@@ -53,8 +53,9 @@ void mujoco_replay_section(const json& replay, const json& frames, FigureWriter&
       jsonv::str(first, "simulates") + "; " + jsonv::str(first, "does_not_simulate") + ".");
   s.paragraph("Each step holds the plan's mean torque over that step, so every step's impulse "
               "is the plan's; the check's " + jsonv::str(first, "tolerance_rule") +
-              ". A second replay at twice the step shows the order of the deviation (about 2 "
-              "for a correct plan: it is the hold's error, not a model mismatch).");
+              ". A second replay at twice the step shows the deviation shrink with the step "
+              "(order 2 or more for a correct plan: it is the hold's error, not a model "
+              "mismatch, which would not shrink).");
   Table t;
   t.caption = "Open-loop replay in MuJoCo (" + jsonv::str(first, "integrator") +
               "): the largest deviation of any joint from the plan over the motion, against "
@@ -75,7 +76,8 @@ void mujoco_replay_section(const json& replay, const json& frames, FigureWriter&
   LinePlot p;
   p.title = "MuJoCo's simulated motion against the plan";
   p.x_label = "time t (s)";
-  p.y_label = "joint deviation |q_sim - q_plan| (rad)";
+  p.y_label = rs.size() == 1 ? "joint deviation |q_sim - q_plan| (rad)"
+                             : "larger joint deviation |q_sim - q_plan| (rad)";
   p.log_y = true;
   double tol = 0;
   for (const json* r : rs) {
@@ -93,7 +95,7 @@ void mujoco_replay_section(const json& replay, const json& frames, FigureWriter&
       if (d1.size() != ts.size() || d2.size() != ts.size()) continue;
       std::vector<double> d(ts.size());
       for (size_t k = 0; k < ts.size(); ++k) d[k] = std::max(d1[k], d2[k]);
-      p.series.push_back({motion_label(*r) + ", larger of the joints", ts, d, colour_for(colour_key(*r))});
+      p.series.push_back({motion_label(*r), ts, d, colour_for(colour_key(*r))});
     }
   }
   if (std::isfinite(tol) && tol > 0) p.references = {{tol, "tolerance " + format_sig(tol, 3) + " rad"}};
@@ -108,12 +110,15 @@ void mujoco_replay_section(const json& replay, const json& frames, FigureWriter&
     for (const json& f : frames) {
       if (!f.is_string() || f.get<std::string>().find("planned-and-simulated") == std::string::npos) continue;
       strip.files.push_back(f.get<std::string>());
-      strip.labels.push_back("planned (arm) and simulated by MuJoCo (red skeleton)");
+      // "placement_cycloidal_c1_planned-and-simulated_strip.png" -> "placement cycloidal c1: ..."
+      std::string what = f.get<std::string>().substr(0, f.get<std::string>().find("_planned-and-simulated"));
+      std::replace(what.begin(), what.end(), '_', ' ');
+      strip.labels.push_back(what + ": planned (arm) and simulated by MuJoCo (magenta skeleton)");
       strip.wide.push_back(true);
     }
   if (!strip.files.empty()) {
     strip.caption = "The planned motion (the arm, posed from the plan) with the motion MuJoCo "
-                    "simulated from the plan's torques drawn over it as a red skeleton, at "
+                    "simulated from the plan's torques drawn over it as a magenta skeleton, at "
                     "equal time steps; where they agree the skeleton runs along the middle of "
                     "the arm.";
     s.strip(std::move(strip));

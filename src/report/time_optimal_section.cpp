@@ -197,7 +197,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
 
   Section conv;
   conv.id = "convergence";
-  conv.heading = "DP convergence";
+  conv.heading = "Convergence: DP over its segments, the exact solver over its grid";
   Table ct;
   ct.caption = "DP (path-speed state) as the number of segments N grows: its duration "
                "approaches the exact solver's from above.";

@@ -11,7 +11,7 @@
 
 namespace armstudy::scene {
 namespace {
-constexpr float kSimRgba[4] = {0.86f, 0.10f, 0.10f, 1.0f};
+constexpr float kSimRgba[4] = {0.85f, 0.05f, 0.80f, 1.0f};  // magenta: the task line is red
 
 std::string sci(double v) {
   char b[32];
@@ -66,7 +66,7 @@ std::vector<std::string> render_time_optimal_replay(const studies::time_optimal:
   SceneRenderer sr(horizontal_arm_scene(spec.chain, decor), "time-optimal replay scene",
                    render_settings(options));
   char title[200];
-  std::snprintf(title, sizeof title, "planned (arm) and MuJoCo mj_step (red): max |dq| %.2g rad",
+  std::snprintf(title, sizeof title, "planned (arm); MuJoCo mj_step in magenta\nmax |dq| %.2g rad",
                 replay.max_deviation);
   return {write_replay_strip(sr, spec.chain, replay, options.frames, title, dir,
                              "time_optimal_planned-and-simulated")};
@@ -97,7 +97,7 @@ std::vector<std::string> render_placement_replay(const studies::placement::Spec&
     decor.offheight = options.height;
     SceneRenderer sr(horizontal_arm_scene(chain, decor), "placement replay scene", render_settings(options));
     char title[200];
-    std::snprintf(title, sizeof title, "%s, configuration %d: planned and MuJoCo (red), max |dq| %.2g rad",
+    std::snprintf(title, sizeof title, "%s, configuration %d: planned (arm)\nMuJoCo mj_step in magenta: max |dq| %.2g rad",
                   std::string(core::program_label(rp.program)).c_str(), rp.configuration,
                   rp.replay.max_deviation);
     files.push_back(write_replay_strip(sr, chain, rp.replay, options.frames, title, dir,

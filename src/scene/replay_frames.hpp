@@ -1,6 +1,6 @@
 #pragma once
 /// Frames of MuJoCo's dynamic replay: the planned motion (the arm, posed kinematically) with
-/// the motion MuJoCo simulated from the plan's torques drawn over it as a red skeleton (links
+/// the motion MuJoCo simulated from the plan's torques drawn over it as a magenta skeleton (links
 /// as thin lines, joints as dots), at equal time steps; where the two agree the skeleton runs
 /// along the middle of the arm.
 
