@@ -22,6 +22,7 @@
 /// are the case's, mjcf_writer.hpp), integrated with RK4 at the step h. What it does not:
 /// motors and their electrics (torques are ideal sources), friction, joint limits and
 /// contacts (geoms are visual only); nothing holds the tip on the path but the torques.
+/// The derivation and the measured deviations: docs/dynamic_replay.md.
 
 #include <functional>
 #include <string>
