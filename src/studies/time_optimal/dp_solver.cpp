@@ -84,8 +84,6 @@ Use path_speed_use(const Problem& pb, const Discretisation& d, int k, double x0,
   return out;
 }
 
-std::string where(const Problem& pb, double s);
-
 std::string segment_text(const Problem& pb, const Discretisation& d, int k) {
   std::ostringstream os;
   os.setf(std::ios::fixed);

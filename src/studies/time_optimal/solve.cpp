@@ -94,7 +94,7 @@ std::string path_trouble(const Problem& pb, int probes) {
        << " outside the reachable annulus [" << fixed(reach.inner, 2) << ", "
        << fixed(reach.outer, 2) << "] m";
     if (first_out < probe.size() && last_out > first_out)
-      os << " (outside from s = " << probe[first_out] << " to " << probe[last_out] << " m of "
+      os << " (points outside between s = " << probe[first_out] << " and " << probe[last_out] << " m of "
          << pb.path.length() << " m)";
     return os.str();
   }
