@@ -152,6 +152,8 @@ class TimeOptimalRun final : public StudyRun {
       k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%"});
     }
     k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s"});
+    if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, ""});
+    if (replay_) k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad"});
     k.push_back({"path_length_m", result_.path_length, "m"});
     return k;
   }
