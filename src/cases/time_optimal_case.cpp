@@ -133,6 +133,7 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
   if (auto e = t->map("exact")) {
     spec.exact.grid_points = e->integer_or("grid_points", spec.exact.grid_points, 3, 100000);
     spec.exact.checks_per_interval = e->integer_or("checks_per_interval", spec.exact.checks_per_interval, 1, 100);
+    spec.exact.grid_tolerance = e->number_or("grid_tolerance", spec.exact.grid_tolerance, NumberRule::positive(""));
     e->finish();
   }
   spec.motion_steps = t->integer_or("motion_steps", spec.motion_steps, 1, 100000);

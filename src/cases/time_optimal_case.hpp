@@ -34,6 +34,10 @@
 ///   exact:                   # reachability analysis on a fine grid
 ///     grid_points: 1000      # nodes (default 1000), in [3, 100000]
 ///     checks_per_interval: 2 # sub-intervals per grid interval where limits hold (default 2)
+///     grid_tolerance: 1.0e-3 # > 0: largest relative change of the duration when the exact
+///                            # solver runs again with every grid interval halved (default
+///                            # 1e-3); beyond it the check exact_grid_converged FAILS the case
+///                            # and names the stretch of the path where the grid is too coarse
 ///   motion_steps: 200        # equal time steps of the motion the frames show (default 200)
 /// ```
 

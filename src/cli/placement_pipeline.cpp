@@ -41,7 +41,9 @@
 //          '.' unreachable, 's' singular, 'x' over a limit, 'o' feasible. Maps are rows of
 //          text so that a 200 x 100 map stays ~100 kB and one line per row;
 //   convergence {program, configuration, rows [{samples, energy_J}]},
-//   solve_seconds, samples_evaluated.
+//   solve_seconds, samples_evaluated,
+//   mujoco_replay [{program, configuration, ...cli/replay_json.hpp}]: each optimum's torques
+//   applied open loop through mj_step (checks mujoco_dynamic_replay[<program>,<configuration>]).
 // series: {stride, t_s, q1_rad, q2_rad, qd1_rad_s, qd2_rad_s, qdd1_rad_s2, qdd2_rad_s2,
 //          tau1_Nm, tau2_Nm, power1_W, power2_W, energy_J} every `stride`-th sample (<= 101
 //          points; the full series is in the Result for the scene).
@@ -52,8 +54,11 @@
 #include "cases/placement_case.hpp"
 #include "cli/json_numbers.hpp"
 #include "cli/pipeline.hpp"
+#include "cli/replay_json.hpp"
 #include "report/case_report.hpp"
 #include "scene/placement_frames.hpp"
+#include "scene/replay_frames.hpp"
+#include "scene/study_replays.hpp"
 #include "core/motion_program.hpp"
 #include "studies/placement/refine.hpp"
 #include "studies/placement/solve.hpp"
@@ -170,10 +175,22 @@ class PlacementRun final : public StudyRun {
 
   studies::Status solve(const studies::ProgressFn& progress) override {
     result_ = pl::solve(spec_, progress);
+    // MuJoCo's own dynamics on every optimum's torques (scene/dynamic_replay.hpp)
+    if (result_.status == studies::Status::kSolved) {
+      if (progress) progress(0.97, "MuJoCo dynamic replay");
+      replays_ = scene::replay_placement(spec_, result_);
+    }
     return result_.status;
   }
   std::string message() const override { return result_.message; }
-  std::vector<studies::Check> checks() const override { return result_.checks; }
+  std::vector<studies::Check> checks() const override {
+    std::vector<studies::Check> c = result_.checks;
+    for (const scene::PlacementReplay& r : replays_) {
+      const std::string id = prog(r.program) + "," + std::to_string(r.configuration);
+      c.push_back(scene::replay_check(r.replay, "mujoco_dynamic_replay[" + id + "]", "the optimum " + id));
+    }
+    return c;
+  }
   // the study report (issue 7): one call, everything else is src/report's
   void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
               const nlohmann::json& results_json) override {
@@ -205,12 +222,16 @@ class PlacementRun final : public StudyRun {
   // frames: the optimum of every program and configuration (src/scene, issue 4)
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
-    return scene::render_placement_frames(spec_, result_, info.render, dir);
+    std::vector<std::string> files = scene::render_placement_frames(spec_, result_, info.render, dir);
+    for (auto& f : scene::render_placement_replay(spec_, result_, replays_, info.render, dir))
+      files.push_back(std::move(f));
+    return files;
   }
 
  private:
   pl::Spec spec_;
   pl::Result result_;
+  std::vector<scene::PlacementReplay> replays_;
 };
 
 json PlacementRun::results() const {
@@ -433,6 +454,13 @@ json PlacementRun::results() const {
     j["convergence"] = {{"program", prog(pc.program)}, {"configuration", pc.configuration}, {"rows", conv}};
     break;
   }
+  json replays = json::array();
+  for (const scene::PlacementReplay& rp : replays_) {
+    json rj = {{"program", prog(rp.program)}, {"configuration", rp.configuration}};
+    rj.update(replay_json(rp.replay));
+    replays.push_back(rj);
+  }
+  j["mujoco_replay"] = replays;
   j["solve_seconds"] = num(r.seconds, 3);
   j["samples_evaluated"] = r.samples_evaluated;
   return j;

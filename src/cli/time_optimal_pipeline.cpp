@@ -14,15 +14,26 @@
 //   mvc {s_m, sd_m_s, velocity_sd_m_s}: the maximum velocity curve on the exact grid,
 //   convergence [{segments, levels, solved, duration_s, excess, run_time_s, worst_violation}],
 //   motion {t_s, s_m, tip_m [[x, y]...], q_rad [[q1, q2]...]}: the exact motion at equal
-//   time steps (what the frames show).
+//   time steps (what the frames show),
+//   grid_convergence {grid_points, refined_points, refined_solved, duration_s,
+//                     refined_duration_s, change, tolerance, passed, s_range_m [lo, hi],
+//                     grid_point_range [lo, hi], share, max_sd_m_s, min_abs_sin_q2,
+//                     path_min_abs_sin_q2, text}: the exact solver again with every grid
+//                     interval halved (check exact_grid_converged),
+//   mujoco_replay {...}: the exact solution's torques applied open loop through mj_step
+//                  (cli/replay_json.hpp; check mujoco_dynamic_replay).
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "cases/time_optimal_case.hpp"
 #include "cli/json_numbers.hpp"
 #include "cli/pipeline.hpp"
+#include "cli/replay_json.hpp"
 #include "report/case_report.hpp"
 #include "scene/mujoco_check.hpp"
+#include "scene/replay_frames.hpp"
+#include "scene/study_replays.hpp"
 #include "scene/time_optimal_frames.hpp"
 #include "studies/time_optimal/solve.hpp"
 
@@ -101,6 +112,11 @@ class TimeOptimalRun final : public StudyRun {
 
   studies::Status solve(const studies::ProgressFn& progress) override {
     result_ = to::solve(spec_, progress);
+    // MuJoCo's own dynamics on the exact solution's torques
+    if (result_.status == studies::Status::kSolved) {
+      if (progress) progress(0.97, "MuJoCo dynamic replay");
+      replay_ = scene::replay_time_optimal(spec_, result_);
+    }
     return result_.status;
   }
   std::string message() const override { return result_.message; }
@@ -119,6 +135,7 @@ class TimeOptimalRun final : public StudyRun {
     }
     for (auto& m : scene::mujoco_checks(scene::mujoco_agreement(spec_.chain, q, qd, qdd, tau), false))
       c.push_back(std::move(m));
+    if (replay_) c.push_back(scene::replay_check(*replay_, "mujoco_dynamic_replay", "the exact solution"));
     return c;
   }
 
@@ -135,13 +152,19 @@ class TimeOptimalRun final : public StudyRun {
       k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%"});
     }
     k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s"});
+    if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, ""});
+    if (replay_) k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad"});
     k.push_back({"path_length_m", result_.path_length, "m"});
     return k;
   }
 
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
-    return scene::render_time_optimal_frames(spec_, result_, info.render, dir);
+    std::vector<std::string> files = scene::render_time_optimal_frames(spec_, result_, info.render, dir);
+    if (replay_)
+      for (auto& f : scene::render_time_optimal_replay(spec_, result_, *replay_, info.render, dir))
+        files.push_back(std::move(f));
+    return files;
   }
 
   void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
@@ -152,6 +175,7 @@ class TimeOptimalRun final : public StudyRun {
  private:
   to::Spec spec_;
   to::Result result_;
+  std::optional<scene::DynamicReplay> replay_;
 };
 
 json TimeOptimalRun::results() const {
@@ -185,6 +209,25 @@ json TimeOptimalRun::results() const {
     q.push_back(pair(r.motion_q.col(k)));
   }
   j["motion"] = {{"t_s", list(r.motion_t)}, {"s_m", list(r.motion_s)}, {"tip_m", tip}, {"q_rad", q}};
+  if (r.grid.computed) {
+    const to::GridConvergence& g = r.grid;
+    j["grid_convergence"] = {{"grid_points", g.grid_points},
+                             {"refined_points", g.refined_points},
+                             {"refined_solved", g.refined_solved},
+                             {"duration_s", num(g.duration)},
+                             {"refined_duration_s", g.refined_solved ? num(g.refined_duration) : json(nullptr)},
+                             {"change", num(g.change, 4)},
+                             {"tolerance", num(g.tolerance, 4)},
+                             {"passed", g.change <= g.tolerance},
+                             {"s_range_m", json::array({num(g.s_lo, 6), num(g.s_hi, 6)})},
+                             {"grid_point_range", json::array({g.point_lo, g.point_hi})},
+                             {"share", num(g.share, 3)},
+                             {"max_sd_m_s", num(g.max_sd, 4)},
+                             {"min_abs_sin_q2", num(g.min_sin_q2, 4)},
+                             {"path_min_abs_sin_q2", num(g.path_min_sin_q2, 4)},
+                             {"text", g.text}};
+  }
+  if (replay_) j["mujoco_replay"] = replay_json(*replay_);
   return j;
 }
 

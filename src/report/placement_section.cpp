@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "report/number_format.hpp"
+#include "report/replay_section.hpp"
 #include "report/study_sections.hpp"
 
 namespace armstudy::report {
@@ -741,6 +742,9 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   page.sections.push_back(maps_section(pl, figures));
   page.sections.push_back(loci_section(pl, figures));
   page.sections.push_back(convergence_and_evaluations(pl));
+  // MuJoCo's open-loop replay of every optimum (report/replay_section.hpp)
+  mujoco_replay_section(jsonv::has(pl, "mujoco_replay") ? pl["mujoco_replay"] : json(),
+                        jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
 }
 
 bool placement_loci_across_cases(const std::vector<std::pair<std::string, const json*>>& cases,

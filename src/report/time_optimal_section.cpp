@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "report/number_format.hpp"
+#include "report/replay_section.hpp"
 #include "report/study_sections.hpp"
 
 namespace armstudy::report {
@@ -196,7 +197,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
 
   Section conv;
   conv.id = "convergence";
-  conv.heading = "DP convergence";
+  conv.heading = "Convergence: DP over its segments, the exact solver over its grid";
   Table ct;
   ct.caption = "DP (path-speed state) as the number of segments N grows: its duration "
                "approaches the exact solver's from above.";
@@ -214,7 +215,32 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     conv.paragraph("The case asked for no convergence table.");
   else
     conv.table(std::move(ct));
+  // the exact solver's own grid convergence
+  const json& g = obj(to, "grid_convergence");
+  if (!g.empty()) {
+    const bool passed = jsonv::has(g, "passed") && g["passed"].is_boolean() && g["passed"].get<bool>();
+    Table gt;
+    gt.caption = "The exact solver's own grid convergence: the same problem with every grid "
+                 "interval halved. Its error is first order in the interval, so the change "
+                 "estimates the refined duration's error; beyond the tolerance "
+                 "(exact.grid_tolerance) the case fails its check exact_grid_converged.";
+    gt.header = {"grid points", "duration (s)", "refined grid points", "refined duration (s)",
+                 "relative change", "tolerance", "check"};
+    gt.rows.push_back({jsonv::str(g, "grid_points"), jsonv::sig(g, "duration_s", 7),
+                       jsonv::str(g, "refined_points"), jsonv::sig(g, "refined_duration_s", 7),
+                       jsonv::sig(g, "change", 3), jsonv::sig(g, "tolerance", 3),
+                       passed ? "passed" : "FAILED"});
+    conv.table(std::move(gt));
+    if (passed)
+      conv.paragraph("Exact solver grid: " + jsonv::str(g, "text") + ".");
+    else
+      conv.note("The exact duration is NOT converged in its grid, so it is no ordinary "
+                "optimum and every comparison with it inherits the error: " +
+                jsonv::str(g, "text") + ".");
+  }
   page.sections.push_back(std::move(conv));
+  mujoco_replay_section(jsonv::has(to, "mujoco_replay") ? to["mujoco_replay"] : json(),
+                        jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
 }
 
 }  // namespace armstudy::report

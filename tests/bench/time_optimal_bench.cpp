@@ -4,6 +4,7 @@
 // method on the same 10 segments, and the whole study with its dense re-checks.
 #include <benchmark/benchmark.h>
 
+#include "scene/study_replays.hpp"
 #include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solve.hpp"
 #include "studies/time_optimal/solvers.hpp"
@@ -68,5 +69,17 @@ void BM_TimeOptimalStudy(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(solve(spec).status);
 }
 BENCHMARK(BM_TimeOptimalStudy)->Unit(benchmark::kMillisecond);
+
+// MuJoCo's dynamic replay of the exact solution: 2000 RK4 steps at h and 1000 at 2 h, the
+// step-mean torques from the plan (scene/dynamic_replay.hpp)
+void BM_TimeOptimalMujocoReplay(benchmark::State& state) {
+  Spec spec = source_spec();
+  spec.dp.states = {};
+  spec.dp.convergence_segments = {};
+  spec.complex.enabled = false;
+  const Result r = solve(spec);
+  for (auto _ : state) benchmark::DoNotOptimize(armstudy::scene::replay_time_optimal(spec, r).max_deviation);
+}
+BENCHMARK(BM_TimeOptimalMujocoReplay)->Unit(benchmark::kMillisecond);
 
 }  // namespace

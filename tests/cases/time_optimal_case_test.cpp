@@ -51,6 +51,7 @@ TEST(TimeOptimalCase, DefaultsAreTheSourcesArmAndTheDocumentedSettings) {
   EXPECT_EQ(s.dp.convergence_segments, (std::vector<int>{10, 20, 50, 100, 200}));  // the issue's table
   EXPECT_TRUE(s.complex.enabled);
   EXPECT_EQ(s.exact.grid_points, 1000);
+  EXPECT_EQ(s.exact.grid_tolerance, 1e-3);
 }
 
 TEST(TimeOptimalCase, ReadsEveryKeyAndAnEmptyConvergenceList) {
@@ -63,7 +64,7 @@ time_optimal:
   acceleration_limit_rad_s2: [7, 8]
   dp: {segments: 12, levels: 50, checks_per_segment: 3, states: [joint1_velocity, path_speed], convergence_segments: []}
   complex: {enabled: false, max_iterations: 10, tolerance: 1.0e-6, seed: 4}
-  exact: {grid_points: 300, checks_per_interval: 5}
+  exact: {grid_points: 300, checks_per_interval: 5, grid_tolerance: 2.5e-3}
   motion_steps: 40
 )");
   ASSERT_TRUE(l.errors.empty()) << l.errors;
@@ -81,7 +82,17 @@ time_optimal:
   EXPECT_EQ(s.complex.seed, 4u);
   EXPECT_EQ(s.exact.grid_points, 300);
   EXPECT_EQ(s.exact.checks_per_interval, 5);
+  EXPECT_EQ(s.exact.grid_tolerance, 2.5e-3);
   EXPECT_EQ(s.motion_steps, 40);
+}
+
+TEST(TimeOptimalCase, AGridToleranceMustBePositive) {
+  const Loaded l = load(R"(
+time_optimal:
+  path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}
+  exact: {grid_tolerance: 0}
+)");
+  EXPECT_NE(l.errors.find("grid_tolerance"), std::string::npos) << l.errors;
 }
 
 TEST(TimeOptimalCase, APolylineNeedsTwoSegmentsPerPiece) {

@@ -48,6 +48,107 @@ double path_speed_cost(const Problem& pb, const Discretisation& d, int k, double
   return 2 * ds / (sd0 + sd1);
 }
 
+// the largest use of any limit at (x, u) of jp, as ratio - 1 (> 0: broken), and which
+struct Use {
+  double excess = -kInf;
+  RowTag tag;
+};
+
+Use worst_use(const JointPoint& jp, const Limits& lim, double x, double u) {
+  Use out;
+  const auto take = [&](double value, int j, LimitKind kind) {
+    const double l = lim.of(kind, j);
+    const double r = l > 0 ? std::abs(value) / l : (std::abs(value) > 1e-12 ? kInf : 0.0);
+    if (r - 1 > out.excess) {
+      out.excess = r - 1;
+      out.tag = RowTag{j, kind, 0, jp.s};
+    }
+  };
+  for (int j = 0; j < 2; ++j) {
+    take(jp.dq[j] * std::sqrt(std::max(0.0, x)), j, LimitKind::kVelocity);
+    take(jp.a[j] * u + jp.b[j] * x + jp.c[j], j, LimitKind::kTorque);
+    if (lim.acceleration) take(jp.dq[j] * u + jp.ddq[j] * x, j, LimitKind::kAcceleration);
+  }
+  return out;
+}
+
+Use max_use(const Use& a, const Use& b) { return b.excess > a.excess ? b : a; }
+
+// the worst limit use over the check points of interval k from x0 to x1 at constant s''
+Use path_speed_use(const Problem& pb, const Discretisation& d, int k, double x0, double x1) {
+  const double ds = d.nodes[k + 1] - d.nodes[k];
+  const double u = (x1 - x0) / (2 * ds);
+  Use out;
+  for (int m = 0; m <= d.checks; ++m)
+    out = max_use(out, worst_use(d.pts[k][m], pb.limits, x0 + (x1 - x0) * m / d.checks, u));
+  return out;
+}
+
+std::string segment_text(const Problem& pb, const Discretisation& d, int k) {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(3);
+  const Eigen::Vector2d a = pb.path.at(d.nodes[k]).p, b = pb.path.at(d.nodes[k + 1], true).p;
+  os << "segment " << k + 1 << " of " << d.nodes.size() - 1 << " (s = " << d.nodes[k] << " to "
+     << d.nodes[k + 1] << " m, (x, y) = (" << a.x() << ", " << a.y() << ") to (" << b.x() << ", "
+     << b.y() << ") m)";
+  return os.str();
+}
+
+std::string use_text(const Use& u, const Limits& lim) {
+  std::ostringstream os;
+  os.precision(4);
+  os << describe(u.tag, lim) << ", used to " << 100 * (1 + u.excess) << " %";
+  return os.str();
+}
+
+// Why a staged DP found no sequence: the first segment that no state reachable from the
+// start can cross, and the least breach of any limit over the moves across it.
+// feasible(k, i, j): the DP's transition is allowed; use(k, i, j): its worst limit use;
+// rest(k, i, j): the move stays at rest (no progress, infinite time); band(k, i): the
+// successors the DP tried (every other one is known to break a limit).
+template <typename Feasible, typename UseFn, typename Rest, typename Band>
+std::string dp_failure(const Problem& pb, const Discretisation& d, const std::vector<int>& count,
+                       Feasible&& feasible, UseFn&& use, Rest&& rest, Band&& band) {
+  const int n = static_cast<int>(count.size());
+  std::vector<int> reach(1, 0);  // state indices reachable at node k (node 0: rest)
+  for (int i = 1; i < count[0]; ++i) reach.push_back(i);
+  for (int k = 0; k + 1 < n; ++k) {
+    std::vector<char> next(count[k + 1], 0);
+    bool any = false;
+    for (int i : reach) {
+      const auto [first, last] = band(k, i);
+      for (int j = std::max(0, first); j < std::min(count[k + 1], last); ++j)
+        if (!next[j] && feasible(k, i, j)) next[j] = 1, any = true;
+    }
+    if (any) {
+      reach.clear();
+      for (int j = 0; j < count[k + 1]; ++j)
+        if (next[j]) reach.push_back(j);
+      continue;
+    }
+    // the least breach over the moves from (at most 64 of) the reachable states
+    Use least;
+    least.excess = kInf;
+    const size_t stride = std::max<size_t>(1, reach.size() / 64);
+    for (size_t r = 0; r < reach.size(); r += stride)
+      for (int j = 0; j < count[k + 1]; ++j) {
+        if (rest(k, reach[r], j)) continue;
+        const Use u = use(k, reach[r], j);
+        if (u.excess < least.excess) least = u;
+      }
+    std::ostringstream os;
+    os << segment_text(pb, d, k) << " cannot be crossed from any of the " << reach.size()
+       << " state(s) reachable at its start";
+    if (std::isfinite(least.excess))
+      os << ": every move breaks a limit, the least breach is " << use_text(least, pb.limits);
+    else
+      os << ": only staying at rest meets the limits there";
+    return os.str();
+  }
+  return "every segment can be crossed, but no sequence reaches the end at rest";
+}
+
 std::string where(const Problem& pb, double s) {
   const Eigen::Vector2d p = pb.path.at(s).p;
   std::ostringstream os;
@@ -106,7 +207,15 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
     if (!sol.feasible()) {
       out.message = "no sequence of the " + std::to_string(levels) +
                     " velocity levels per node meets every limit on " +
-                    std::to_string(segments) + " segments";
+                    std::to_string(segments) + " segments: " +
+                    dp_failure(
+                        pb, d, count,
+                        [&](int k, int i, int j) {
+                          return std::isfinite(path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]));
+                        },
+                        [&](int k, int i, int j) { return path_speed_use(pb, d, k, x[k][i], x[k + 1][j]); },
+                        [&](int k, int i, int j) { return sd[k][i] + sd[k + 1][j] <= 0; }, band) +
+                    "; more levels or segments may help";
       return out;
     }
     out.profile.law = SegmentLaw::kPathAcceleration;
@@ -145,11 +254,26 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
   for (int k = 0; k < n; ++k)
     for (int i = 0; i < count[k]; ++i)
       v[k].push_back(count[k] == 1 ? 0.0 : sign * pb.limits.velocity[0] * i / (count[k] - 1));
-  const core::opt::DpSolution sol = core::opt::solve_staged_dp(count, [&](int k, int i, int j) {
+  // the worst limit use of the move from level i at node k to level j at node k+1
+  const auto joint1_use = [&](int k, int i, int j) {
+    const double v0 = v[k][i], v1 = v[k + 1][j];
+    const double dq = q1[k + 1] - q1[k];
+    // constant joint-1 acceleration over the joint-1 travel
+    const double a1 = (v1 * v1 - v0 * v0) / (2 * dq);
+    Use worst;
+    for (int m = 0; m <= checks; ++m) {
+      const JointPoint& jp = d.pts[k][m];
+      const double w2 = std::max(0.0, v0 * v0 + 2 * a1 * (jp.q[0] - q1[k]));
+      const double x = w2 / (jp.dq[0] * jp.dq[0]);
+      const double u = (a1 - jp.ddq[0] * x) / jp.dq[0];
+      worst = max_use(worst, worst_use(jp, pb.limits, x, u));
+    }
+    return worst;
+  };
+  const auto joint1_cost = [&](int k, int i, int j) {
     const double v0 = v[k][i], v1 = v[k + 1][j];
     if (v0 + v1 == 0) return kInf;
     const double dq = q1[k + 1] - q1[k];
-    // constant joint-1 acceleration over the joint-1 travel
     const double a1 = (v1 * v1 - v0 * v0) / (2 * dq);
     const auto& pts = d.pts[k];
     for (int m = 0; m <= checks; ++m) {
@@ -160,12 +284,18 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
       if (!within_limits(jp, pb.limits, x, u)) return kInf;
     }
     return 2 * dq / (v0 + v1);
-  });
+  };
+  const core::opt::DpSolution sol = core::opt::solve_staged_dp(count, joint1_cost);
   out.evaluations = sol.evaluations;
   if (!sol.feasible()) {
-    out.message = "no sequence of the " + std::to_string(levels) +
-                  " joint-1 velocity levels meets every limit on " + std::to_string(segments) +
-                  " segments";
+    out.message =
+        "no sequence of the " + std::to_string(levels) +
+        " joint-1 velocity levels meets every limit on " + std::to_string(segments) + " segments: " +
+        dp_failure(
+            pb, d, count, [&](int k, int i, int j) { return std::isfinite(joint1_cost(k, i, j)); },
+            joint1_use, [&](int k, int i, int j) { return v[k][i] + v[k + 1][j] == 0; },
+            [&](int k, int) { return std::pair<int, int>(0, count[k + 1]); }) +
+        "; more levels or segments may help";
     return out;
   }
   out.profile.law = SegmentLaw::kJoint1Acceleration;
@@ -216,7 +346,27 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
   int halvings = 0;
   while (!std::isfinite(total_time(speeds(z0))) && halvings++ < 60) z0 *= 0.5;
   if (!std::isfinite(total_time(speeds(z0)))) {
-    out.message = "the Complex method found no feasible crawl to start from";
+    // name the first segment the slowest crawl tried cannot cross, and its worst limit
+    const std::vector<double> sd = speeds(z0);
+    std::ostringstream os;
+    os.precision(3);
+    os << "the Complex method found no feasible crawl to start from: even at " << z0.maxCoeff()
+       << " m/s at most (2^-" << std::min(halvings, 60) + 1 << " of the maximum velocity curve)";
+    for (int k = 0; k + 1 < n; ++k) {
+      if (std::isfinite(path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1])))
+        continue;
+      if (sd[k] + sd[k + 1] <= 0) {
+        // the maximum velocity curve is 0 at both ends: no speed, not even rest, is allowed
+        const Use at_rest = path_speed_use(pb, d, k, 0.0, 0.0);
+        os << ", " << segment_text(pb, d, k) << " allows no speed";
+        if (at_rest.excess > 0) os << ": even at rest it breaks " << use_text(at_rest, pb.limits);
+      } else {
+        os << ", " << segment_text(pb, d, k) << " breaks "
+           << use_text(path_speed_use(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1]), pb.limits);
+      }
+      break;
+    }
+    out.message = os.str();
     return out;
   }
   core::opt::ComplexOptions opt;

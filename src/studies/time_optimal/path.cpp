@@ -150,6 +150,30 @@ PathPoint PathGeometry::at(double s, bool from_left) const {
   return out;
 }
 
+namespace {
+// the path point at s in the chain's base frame, and the rotation into it
+Eigen::Vector2d in_base_frame(const core::PlanarChain& chain, const Eigen::Vector2d& p) {
+  const double cb = std::cos(chain.base_angle), sb = std::sin(chain.base_angle);
+  Eigen::Matrix2d Rt;
+  Rt << cb, sb, -sb, cb;
+  return Rt * (p - chain.base);
+}
+}  // namespace
+
+double workspace_margin(const core::PlanarChain& chain, const PathGeometry& path, double s) {
+  ARM_THROW_UNLESS(chain.num_links() == 2,
+                   "time-optimal arm has " << chain.num_links() << " links; should have 2");
+  const Eigen::Vector2d p = in_base_frame(chain, path.at(s).p);
+  return core::reach_2link(chain.links[0].length, chain.links[1].length, p).margin;
+}
+
+std::string length_text(double m) {
+  std::ostringstream os;
+  os.precision(3);
+  os << m << " m (" << 1e3 * m << " mm)";
+  return os.str();
+}
+
 std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,
                                       int configuration, double s, bool from_left,
                                       PathTrouble* trouble) {
@@ -169,7 +193,7 @@ std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const Path
   if (!reach.reachable()) {
     if (trouble)
       trouble->message = "the path leaves the workspace " + where() + ": it is " +
-                         fmt(-reach.margin) + " m outside the reachable annulus [" +
+                         length_text(-reach.margin) + " outside the reachable annulus [" +
                          fmt(reach.inner, 2) + ", " + fmt(reach.outer, 2) + "] m";
     return std::nullopt;
   }

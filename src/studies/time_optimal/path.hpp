@@ -69,6 +69,14 @@ struct PathTrouble {
   std::string message;  ///< names the point: s, (x, y), and the reason with numbers
 };
 
+/// Signed distance (m) of the path point at s from the nearer boundary of the 2-link
+/// chain's reachable annulus [|L1 - L2|, L1 + L2] (core::Reach::margin): > 0 inside, < 0
+/// outside. @throws std::invalid_argument if the chain does not have 2 links.
+double workspace_margin(const core::PlanarChain& chain, const PathGeometry& path, double s);
+
+/// "7.31e-04 m (0.731 mm)": a small length with enough digits to see it.
+std::string length_text(double metres);
+
 /// Joint point of a 2-link `chain` at s; nullopt and `trouble` set when the point lies
 /// outside the reachable annulus or at a singular pose (|sin q2| < 1e-9).
 /// @throws std::invalid_argument if the chain does not have 2 links.

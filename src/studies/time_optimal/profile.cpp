@@ -108,6 +108,33 @@ double profile_duration(const Problem& problem, const Profile& pr) {
   return t;
 }
 
+TimedState state_at_time(const Problem& problem, const Profile& pr,
+                         const std::vector<double>& node_t, double t) {
+  ARM_THROW_UNLESS(pr.law == SegmentLaw::kPathAcceleration,
+                   "state_at_time needs a profile of constant path acceleration");
+  ARM_THROW_UNLESS(pr.s.size() >= 2 && pr.sd.size() == pr.s.size() && node_t.size() == pr.s.size(),
+                   "state_at_time: profile sizes differ");
+  t = std::clamp(t, node_t.front(), node_t.back());
+  // interval k with node_t[k] <= t <= node_t[k + 1]
+  size_t k = static_cast<size_t>(std::upper_bound(node_t.begin(), node_t.end(), t) - node_t.begin());
+  k = std::clamp<size_t>(k, 1, node_t.size() - 1) - 1;
+  const double ds = pr.s[k + 1] - pr.s[k];
+  const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
+  const double u = (x1 - x0) / (2 * ds);
+  const double tau = std::clamp(t - node_t[k], 0.0, node_t[k + 1] - node_t[k]);
+  TimedState out;
+  out.t = t;
+  out.s = std::clamp(pr.s[k] + pr.sd[k] * tau + 0.5 * u * tau * tau, pr.s[k], pr.s[k + 1]);
+  out.sd = std::max(0.0, pr.sd[k] + u * tau);
+  out.sdd = u;
+  const JointPoint jp = problem.at(out.s, out.s >= pr.s[k + 1]);
+  out.q = jp.q;
+  out.qd = jp.dq * out.sd;
+  out.qdd = jp.dq * u + jp.ddq * out.sd * out.sd;
+  out.tau = core::inverse_dynamics(problem.chain, jp.q, out.qd, out.qdd);
+  return out;
+}
+
 void resample(const Problem& problem, const Profile& pr, int per_interval, int keep,
               MotionSamples* out, Violation* viol, std::vector<double>* node_t) {
   ARM_THROW_UNLESS(per_interval >= 1, "resampling points " << per_interval << " should be >= 1");

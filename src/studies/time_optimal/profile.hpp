@@ -47,6 +47,18 @@ struct Profile {
 /// Duration of a profile, s (infinite if two consecutive nodes are at rest).
 double profile_duration(const Problem& problem, const Profile& profile);
 
+/// The state of a path-acceleration profile (constant s'' per interval) at time t, clamped
+/// to [0, duration]: inside interval k, s = s_k + s'_k tau + u tau^2 / 2 with
+/// tau = t - t_k; joint velocities, accelerations and torques (core's inverse dynamics).
+struct TimedState {
+  double t = 0, s = 0, sd = 0, sdd = 0;  ///< s, m, m/s, m/s^2
+  Eigen::Vector2d q, qd, qdd, tau;       ///< rad, rad/s, rad/s^2, N m
+};
+/// `node_t` are the profile's node times (resample's). @throws std::invalid_argument for a
+/// profile of another law or sizes that differ.
+TimedState state_at_time(const Problem& problem, const Profile& profile,
+                         const std::vector<double>& node_t, double t);
+
 /// Resamples a profile at `per_interval` points per interval (from its own segment law),
 /// with joint velocities, accelerations and torques from core's inverse dynamics, and finds
 /// the largest use of each limit. `samples` keeps about `keep` evenly spaced samples; node

@@ -70,6 +70,28 @@ struct ConvergenceRow {
   double worst_violation = 0;
 };
 
+/// The exact solver's own grid convergence: the same problem on the grid with every
+/// interval halved (2 N - 1 points), and where the duration changed.
+struct GridConvergence {
+  bool computed = false;
+  int grid_points = 0;       ///< the case's grid
+  int refined_points = 0;    ///< 2 grid_points - 1
+  bool refined_solved = false;
+  double duration = 0;          ///< s, on the case's grid
+  double refined_duration = 0;  ///< s, on the refined grid
+  double change = 0;     ///< |duration / refined_duration - 1| (inf if the refined solve failed)
+  double tolerance = 0;  ///< ExactSettings::grid_tolerance
+  /// the shortest stretch of the path holding 90 % of the change (summed |change| of the
+  /// case grid's intervals), its share, the largest s' there (m/s) and the smallest |sin q2|
+  /// there and along the whole path
+  double s_lo = 0, s_hi = 0;  ///< m
+  int point_lo = 0, point_hi = 0;  ///< grid points
+  double share = 0;
+  double max_sd = 0;
+  double min_sin_q2 = 1, path_min_sin_q2 = 1;
+  std::string text;  ///< the sentence for the check and the page
+};
+
 struct Result {
   Status status = Status::kUnsolvable;
   std::string message;
@@ -79,6 +101,7 @@ struct Result {
   /// every limit at that point (m/s); and the speed allowed by velocity limits alone
   std::vector<double> mvc_s, mvc_sd, mvc_velocity_sd;
   std::vector<ConvergenceRow> convergence;
+  GridConvergence grid;
   /// the exact solution at equal time steps (renderer): t, s, tip and joint angles
   std::vector<double> motion_t, motion_s;
   Eigen::Matrix2Xd motion_p, motion_q;

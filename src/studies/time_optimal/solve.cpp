@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <thread>
 
 #include "core/check.hpp"
+#include "core/ik2.hpp"
 #include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solvers.hpp"
 
@@ -46,6 +48,156 @@ void finish(const Problem& pb, const SolverOutput& o, int per_interval, SolverRe
 int dense_points(int intervals, int at_least) {
   return std::max(at_least, (kDenseTotal + intervals - 1) / intervals);
 }
+// The path's worst point outside the workspace (largest excess, located to 1e-12 m of s
+// between the probes by golden-section search), or the first singular probe; "" if none.
+std::string path_trouble(const Problem& pb, int probes) {
+  const std::vector<double> probe = make_nodes(pb.path, probes);
+  const auto margin = [&](double s) { return workspace_margin(pb.chain, pb.path, s); };
+  size_t worst = 0, first_out = probe.size(), last_out = 0;
+  std::vector<double> m(probe.size());
+  for (size_t k = 0; k < probe.size(); ++k) {
+    m[k] = margin(probe[k]);
+    if (m[k] < m[worst]) worst = k;
+    if (m[k] < 0) {
+      first_out = std::min(first_out, k);
+      last_out = k;
+    }
+  }
+  // the true worst may lie between probes: minimise the margin around the worst probe
+  double lo = probe[worst > 0 ? worst - 1 : 0], hi = probe[std::min(worst + 1, probe.size() - 1)];
+  double s_worst = probe[worst], m_worst = m[worst];
+  {
+    constexpr double g = 0.6180339887498949;
+    double a = lo, b = hi, c = b - g * (b - a), d = a + g * (b - a);
+    double fc = margin(c), fd = margin(d);
+    while (b - a > 1e-12) {
+      if (fc < fd) {
+        b = d; d = c; fd = fc; c = b - g * (b - a); fc = margin(c);
+      } else {
+        a = c; c = d; fc = fd; d = a + g * (b - a); fd = margin(d);
+      }
+    }
+    const double s = 0.5 * (a + b);
+    if (margin(s) < m_worst) {
+      s_worst = s;
+      m_worst = margin(s);
+    }
+  }
+  if (m_worst < 0) {
+    const core::Reach reach = core::reach_2link(pb.chain.links[0].length, pb.chain.links[1].length,
+                                                Eigen::Vector2d(1, 0));
+    const Eigen::Vector2d p = pb.path.at(s_worst).p;
+    std::ostringstream os;
+    os.precision(6);
+    os << "the path leaves the workspace at s = " << s_worst << " m, (x, y) = (" << p.x() << ", "
+       << p.y() << ") m, its worst point: " << length_text(-m_worst)
+       << " outside the reachable annulus [" << fixed(reach.inner, 2) << ", "
+       << fixed(reach.outer, 2) << "] m";
+    if (first_out < probe.size() && last_out > first_out)
+      os << " (points outside between s = " << probe[first_out] << " and " << probe[last_out] << " m of "
+         << pb.path.length() << " m)";
+    return os.str();
+  }
+  for (size_t k = 0; k < probe.size(); ++k)
+    for (bool left : {false, true}) {
+      PathTrouble trouble;
+      if (!joint_point(pb.chain, pb.path, pb.configuration, probe[k], left, &trouble))
+        return trouble.message;
+    }
+  return "";
+}
+
+// The exact solution on the case's grid against the same problem on the grid with every
+// interval halved: the relative change and where it lies.
+GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact, int checks,
+                                 double tolerance) {
+  GridConvergence g;
+  g.computed = true;
+  g.tolerance = tolerance;
+  const std::vector<double>& grid = exact.node_s;
+  const int n = static_cast<int>(grid.size());
+  std::vector<double> fine;
+  fine.reserve(2 * n - 1);
+  for (int k = 0; k < n; ++k) {
+    if (k > 0) fine.push_back(0.5 * (grid[k - 1] + grid[k]));
+    fine.push_back(grid[k]);
+  }
+  g.grid_points = n;
+  g.refined_points = static_cast<int>(fine.size());
+  g.duration = exact.duration;
+  const SolverOutput o = solve_exact(pb, fine, checks);
+  // |sin q2| along the path (at the refined grid's points)
+  std::vector<double> sin_q2(fine.size());
+  for (size_t k = 0; k < fine.size(); ++k) {
+    sin_q2[k] = std::abs(pb.at(fine[k], k + 1 == fine.size()).sin_q2);
+    g.path_min_sin_q2 = std::min(g.path_min_sin_q2, sin_q2[k]);
+  }
+  std::ostringstream os;
+  os.precision(4);
+  if (!o.solved) {
+    g.change = std::numeric_limits<double>::infinity();
+    os << "the exact solver fails on the refined grid of " << g.refined_points
+       << " points though it solves the case's " << n << ": " << o.message;
+    g.text = os.str();
+    return g;
+  }
+  g.refined_solved = true;
+  g.refined_duration = o.duration;
+  g.change = std::abs(exact.duration / o.duration - 1);
+  // time per case-grid interval on both grids (fine nodes 2k and 2k + 2 bound interval k)
+  std::vector<double> d(n - 1);
+  double total = 0;
+  for (int k = 0; k + 1 < n; ++k) {
+    const double t_coarse = 2 * (grid[k + 1] - grid[k]) / (exact.node_sd[k] + exact.node_sd[k + 1]);
+    double t_fine = 0;
+    for (int i = 2 * k; i < 2 * k + 2; ++i)
+      t_fine += 2 * (fine[i + 1] - fine[i]) / (o.profile.sd[i] + o.profile.sd[i + 1]);
+    d[k] = std::abs(t_coarse - t_fine);
+    total += d[k];
+  }
+  // shortest window of intervals holding 90 % of the summed change (two pointers)
+  int best_lo = 0, best_hi = n - 2;
+  if (total > 0) {
+    double sum = 0;
+    int lo = 0;
+    for (int hi = 0; hi + 1 < n; ++hi) {
+      sum += d[hi];
+      while (lo < hi && sum - d[lo] >= 0.9 * total) sum -= d[lo++];
+      if (sum >= 0.9 * total && hi - lo < best_hi - best_lo) {
+        best_lo = lo;
+        best_hi = hi;
+      }
+    }
+  }
+  double share = 0;
+  for (int k = best_lo; k <= best_hi; ++k) share += d[k];
+  g.share = total > 0 ? share / total : 1.0;
+  g.point_lo = best_lo;
+  g.point_hi = best_hi + 1;
+  g.s_lo = grid[best_lo];
+  g.s_hi = grid[best_hi + 1];
+  for (int k = best_lo; k <= best_hi + 1; ++k) g.max_sd = std::max(g.max_sd, exact.node_sd[k]);
+  for (int i = 2 * best_lo; i <= 2 * best_hi + 2; ++i) g.min_sin_q2 = std::min(g.min_sin_q2, sin_q2[i]);
+  os.precision(7);
+  os << "duration " << exact.duration << " s on " << n << " grid points, " << o.duration
+     << " s on " << g.refined_points << " (every interval halved): relative change ";
+  os.precision(3);
+  os << g.change;
+  if (g.change > tolerance) {
+    os << ", over the tolerance " << tolerance << ": the grid is too coarse, not converged. "
+       << fixed(100 * g.share, 0) << " % of the change lies in s = " << fixed(g.s_lo, 4)
+       << " to " << fixed(g.s_hi, 4) << " m (grid points " << g.point_lo << " to " << g.point_hi
+       << " of " << n << "; path length " << fixed(pb.path.length(), 4) << " m), where s' <= "
+       << g.max_sd << " m/s and |sin q2| falls to " << g.min_sin_q2;
+    if (g.min_sin_q2 < 0.05)
+      os << " (near a singular pose: the joint rates per metre of path grow without bound there)";
+    os << "; refine the grid there (more exact.grid_points) or keep the path away from it";
+  } else {
+    os << " (tolerance " << tolerance << ")";
+  }
+  g.text = os.str();
+  return g;
+}
 }  // namespace
 
 core::PlanarChain default_arm(double L1, double L2) {
@@ -69,6 +221,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
                    "exact grid points " << spec.exact.grid_points << " should be >= 2");
   ARM_THROW_UNLESS(spec.exact.checks_per_interval >= 1 && spec.dp.checks_per_segment >= 1,
                    "checks per interval should be >= 1");
+  ARM_THROW_UNLESS(spec.exact.grid_tolerance > 0,
+                   "exact grid tolerance " << spec.exact.grid_tolerance << " should be > 0");
   ARM_THROW_UNLESS(spec.dp.levels >= 2, "DP levels " << spec.dp.levels << " should be >= 2");
   for (int j = 0; j < 2; ++j) {
     ARM_THROW_UNLESS(spec.velocity_limit[j] >= 0 && spec.torque_limit[j] >= 0,
@@ -82,22 +236,18 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   // the path must stay in the workspace and off singular poses: check it finely
   report(0.02, "checking the path");
   {
-    const std::vector<double> probe = make_nodes(pb.path, std::max(4 * spec.exact.grid_points, 4000));
-    for (size_t k = 0; k < probe.size(); ++k) {
-      for (bool left : {false, true}) {
-        PathTrouble trouble;
-        if (!joint_point(pb.chain, pb.path, pb.configuration, probe[k], left, &trouble)) {
-          res.status = Status::kUnsolvable;
-          res.message = trouble.message;
-          return res;
-        }
-      }
+    const std::string trouble = path_trouble(pb, std::max(4 * spec.exact.grid_points, 4000));
+    if (!trouble.empty()) {
+      res.status = Status::kUnsolvable;
+      res.message = trouble;
+      return res;
     }
   }
 
   // exact solver
   report(0.05, "exact solver (reachability)");
   const std::vector<double> grid = make_nodes(pb.path, spec.exact.grid_points - 1);
+  int exact_checks = spec.exact.checks_per_interval;
   {
     // limits hold at the check points of each interval; between them a limit may be
     // overshot by O(h^2). The checks are doubled until the dense resampling meets every
@@ -115,6 +265,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       finish(pb, o, spec.resample_per_interval, &r);
     }
     r.run_time = seconds_since(t0);
+    exact_checks = checks;
     r.method = "reachability analysis (backward controllable sets, greedy forward pass) on " +
                std::to_string(spec.exact.grid_points) + " grid points, limits enforced at " +
                std::to_string(checks + 1) + " points of every interval";
@@ -127,6 +278,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   }
   // (no reference into res.solvers: it grows below)
   const double exact_duration = res.solvers.front().duration;
+  report(0.1, "exact solver on the refined grid");
+  res.grid = grid_convergence(pb, res.solvers.front(), exact_checks, spec.exact.grid_tolerance);
   max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd);
   res.mvc_s = grid;
   res.path_p.resize(2, grid.size());
@@ -258,6 +411,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     if (r.name != "exact" && r.solved) os << ", " << fixed(r.duration, 4) << " s (" << r.name << ")";
   for (const SolverResult& r : res.solvers)
     if (r.name != "exact" && !r.solved) os << "; " << r.name << " failed: " << r.message;
+  if (res.grid.computed && !(res.grid.change <= res.grid.tolerance))
+    os << "; the exact duration is NOT converged in its grid: " << res.grid.text;
   res.message = os.str();
   report(1.0, "done");
   return res;
@@ -281,6 +436,11 @@ std::vector<Check> checks(const Result& res) {
             r.violation.text,
         r.violation.worst, r.name == "exact" ? kExactTolerance : kCoarseViolationTolerance));
   }
+  if (res.grid.computed)
+    out.push_back(make_check("exact_grid_converged",
+                             "relative change of the exact duration when every grid interval is "
+                             "halved (fails beyond exact.grid_tolerance): " + res.grid.text,
+                             res.grid.change, res.grid.tolerance));
   double worst = -1;
   bool any = false;
   for (const ConvergenceRow& row : res.convergence) {

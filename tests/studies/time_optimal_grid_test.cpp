@@ -1,0 +1,166 @@
+// The time-optimal study judging its own answer (issue 13): the exact solver's grid
+// convergence check flags a near-singular path and passes a regular one; DP and Complex
+// failures name the segment, the place and the binding limit; a path that leaves the
+// workspace is refused at its worst point, with enough digits to see by how much.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <regex>
+#include <string>
+
+#include "studies/time_optimal/path.hpp"
+#include "studies/time_optimal/profile.hpp"
+#include "studies/time_optimal/solve.hpp"
+#include "studies/time_optimal/solvers.hpp"
+
+namespace armstudy::studies::time_optimal {
+namespace {
+
+Spec exact_only(Eigen::Vector2d a, Eigen::Vector2d b, int grid_points) {
+  Spec spec;
+  spec.chain = default_arm();
+  spec.path.kind = PathKind::kLine;
+  spec.path.points = {a, b};
+  spec.exact.grid_points = grid_points;
+  spec.dp.states = {};
+  spec.dp.convergence_segments = {};
+  spec.complex.enabled = false;
+  return spec;
+}
+
+const Check* find_check(const std::vector<Check>& cs, const std::string& name) {
+  for (const Check& c : cs)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(TimeOptimalGrid, NearSingularPathFailsTheGridCheckAndSaysWhere) {
+  // a line ending 1e-8 m inside the outer boundary (L1 + L2 = 0.9 m): the elbow is nearly
+  // straight at the end, where the joint rates per metre of path grow without bound
+  const double angle = 1.0, r = 0.9 - 1e-8;
+  const Spec spec = exact_only({0.3, 0.1}, {r * std::cos(angle), r * std::sin(angle)}, 1000);
+  const Result res = solve(spec);
+  ASSERT_EQ(res.status, Status::kSolved) << res.message;
+  const GridConvergence& g = res.grid;
+  ASSERT_TRUE(g.computed);
+  EXPECT_TRUE(g.refined_solved);
+  EXPECT_EQ(g.refined_points, 1999);
+  // the refined grid is much faster: the case grid is far from converged
+  EXPECT_LT(g.refined_duration, g.duration);
+  EXPECT_GT(g.change, 10 * spec.exact.grid_tolerance) << g.text;
+  const Check* c = find_check(checks(res), "exact_grid_converged");
+  ASSERT_NE(c, nullptr);
+  EXPECT_FALSE(c->passed) << c->description;
+  // where: the stretch holding the change ends at the path's end, near the singular pose
+  EXPECT_NEAR(g.s_hi, res.path_length, 1e-12);
+  EXPECT_GT(g.s_lo, 0.5 * res.path_length) << g.text;
+  EXPECT_LT(g.min_sin_q2, 0.01) << g.text;
+  EXPECT_TRUE(has(g.text, "near a singular pose")) << g.text;
+  EXPECT_TRUE(has(g.text, "not converged")) << g.text;
+  EXPECT_TRUE(has(res.message, "NOT converged")) << res.message;
+}
+
+TEST(TimeOptimalGrid, RegularPathPassesTheGridCheck) {
+  // the source case's line, well inside the workspace
+  const Spec spec = exact_only({0.3, 0.1}, {-0.1, 0.8}, 1000);
+  const Result res = solve(spec);
+  ASSERT_EQ(res.status, Status::kSolved) << res.message;
+  const Check* c = find_check(checks(res), "exact_grid_converged");
+  ASSERT_NE(c, nullptr);
+  EXPECT_TRUE(c->passed) << c->description;
+  // first order: the change halves when the grid doubles (measured 1.05e-4 at 1000 points)
+  EXPECT_LT(res.grid.change, 3e-4) << res.grid.text;
+  EXPECT_GT(res.grid.change, 0.0);
+  EXPECT_GT(res.grid.path_min_sin_q2, 0.3);
+}
+
+TEST(TimeOptimalGrid, DpFailureNamesTheSegmentThePlaceAndTheLimit) {
+  // two velocity levels per node (rest and the maximum velocity curve): leaving rest at the
+  // maximum speed in one segment breaks a torque limit
+  Spec spec = exact_only({0.3, 0.1}, {-0.1, 0.8}, 200);
+  spec.dp.states = {DpState::kPathSpeed, DpState::kJoint1Velocity};
+  spec.dp.levels = 2;
+  const Result res = solve(spec);
+  ASSERT_EQ(res.status, Status::kSolved) << res.message;
+  const PathGeometry path(spec.path);
+  const std::vector<double> nodes = make_nodes(path, spec.dp.segments);
+  const std::regex named(R"(segment (\d+) of 10 \(s = ([0-9.]+) to ([0-9.]+) m, \(x, y\) = \(([-0-9.]+), ([-0-9.]+)\) to \(([-0-9.]+), ([-0-9.]+)\) m\) cannot be crossed)");
+  const std::regex limit(R"(the least breach is the joint [12] (torque|velocity) limit [0-9.]+ (N m|rad/s) at s = ([0-9.]+) m, used to ([0-9.]+) %)");
+  for (const SolverResult& r : res.solvers) {
+    if (r.name == "exact") continue;
+    EXPECT_FALSE(r.solved) << r.name;
+    std::smatch m, l;
+    ASSERT_TRUE(std::regex_search(r.message, m, named)) << r.name << ": " << r.message;
+    // the segment named is one of the DP's, at the place named
+    const int k = std::stoi(m[1]);
+    ASSERT_GE(k, 1);
+    ASSERT_LE(k, 10);
+    EXPECT_NEAR(std::stod(m[2]), nodes[k - 1], 6e-4) << r.message;
+    EXPECT_NEAR(std::stod(m[3]), nodes[k], 6e-4) << r.message;
+    EXPECT_NEAR(std::stod(m[4]), path.at(nodes[k - 1]).p.x(), 6e-4) << r.message;
+    EXPECT_NEAR(std::stod(m[7]), path.at(nodes[k]).p.y(), 6e-4) << r.message;
+    // the binding limit, inside that segment, broken
+    ASSERT_TRUE(std::regex_search(r.message, l, limit)) << r.name << ": " << r.message;
+    EXPECT_GE(std::stod(l[3]), nodes[k - 1] - 6e-4) << r.message;
+    EXPECT_LE(std::stod(l[3]), nodes[k] + 6e-4) << r.message;
+    EXPECT_GT(std::stod(l[4]), 100.0) << r.message;
+  }
+}
+
+TEST(TimeOptimalGrid, ComplexFailureNamesTheSegmentThePlaceAndTheLimit) {
+  // a vertical arm whose shoulder cannot hold the arm up along the middle of the path: no
+  // crawl, however slow, meets the joint 1 torque limit there
+  core::PlanarChain chain = default_arm();
+  chain.gravity = 9.81;
+  const Problem pb{chain, PathGeometry(PathSpec{PathKind::kLine, {{0.3, 0.3}, {0.8, 0.1}}}), 1,
+                   Limits{{3.0, 4.0}, {5.0, 4.0}, std::nullopt}};
+  ComplexSettings cs;
+  const SolverOutput o = solve_complex(pb, 10, 4, cs);
+  ASSERT_FALSE(o.solved);
+  EXPECT_TRUE(has(o.message, "no feasible crawl")) << o.message;
+  EXPECT_TRUE(has(o.message, "segment ")) << o.message;
+  EXPECT_TRUE(has(o.message, "(x, y) = (")) << o.message;
+  EXPECT_TRUE(has(o.message, "the joint 1 torque limit 5 N m at s = ")) << o.message;
+}
+
+TEST(TimeOptimalGrid, WorkspaceMessageNamesTheWorstPointWithItsExcess) {
+  // a spline through points inside the outer circle that bulges out between them
+  Spec spec = exact_only({0, 0}, {0, 0}, 200);
+  spec.path.kind = PathKind::kSpline;
+  spec.path.points.clear();
+  // four points 1 mm inside the outer circle (0.9 m), 20 deg apart: the natural spline
+  // through them bulges about 1.4 mm out between them
+  for (double deg : {0.0, 20.0, 40.0, 60.0})
+    spec.path.points.emplace_back(0.899 * std::cos(deg * M_PI / 180), 0.899 * std::sin(deg * M_PI / 180));
+  const PathGeometry path(spec.path);
+  // independent search of the worst point: dense sampling
+  double worst = -1, worst_s = 0;
+  const int n = 2000000;
+  for (int k = 0; k <= n; ++k) {
+    const double s = path.length() * k / n;
+    const double e = path.at(s).p.norm() - 0.9;
+    if (e > worst) {
+      worst = e;
+      worst_s = s;
+    }
+  }
+  ASSERT_GT(worst, 1e-4) << "the spline should bulge out";
+  const Result res = solve(spec);
+  ASSERT_EQ(res.status, Status::kUnsolvable);
+  // "... at s = <s> m, (x, y) = (...) m, its worst point: <e> m (<e mm> mm) outside ..."
+  const size_t at_s = res.message.find("at s = "), at_e = res.message.find("its worst point: ");
+  ASSERT_NE(at_s, std::string::npos) << res.message;
+  ASSERT_NE(at_e, std::string::npos) << res.message;
+  const double s_named = std::strtod(res.message.c_str() + at_s + 7, nullptr);
+  const double e_named = std::strtod(res.message.c_str() + at_e + 17, nullptr);
+  EXPECT_NEAR(s_named, worst_s, 2 * path.length() / n + 1e-6) << res.message;
+  // three significant digits of the excess, as found independently
+  EXPECT_NEAR(e_named, worst, 0.005 * worst) << res.message;
+  EXPECT_TRUE(has(res.message, "its worst point")) << res.message;
+}
+
+}  // namespace
+}  // namespace armstudy::studies::time_optimal
