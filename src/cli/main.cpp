@@ -234,7 +234,8 @@ std::vector<std::string> case_files(const std::vector<std::string>& items) {
 
 int cmd_list(const std::vector<std::string>& items, bool as_json) {
   std::vector<LoadedCase> cases;
-  const bool ok = load_all(case_files(items), &cases);
+  // listing judges no budget: a large case is listed for a run with --allow-large
+  const bool ok = load_all(case_files(items), &cases, true);
   std::sort(cases.begin(), cases.end(),
             [](const LoadedCase& a, const LoadedCase& b) { return a.info.name < b.info.name; });
   if (as_json) {
