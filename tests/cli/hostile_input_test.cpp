@@ -77,6 +77,26 @@ TEST(HostileInput, BudgetIsJudgedByValidateAndRunAndRaisedByAllowLarge) {
   fs::remove_all(dir);
 }
 
+TEST(HostileInput, MergeKeysAreSupportedAsYamlDefinesThem) {
+  const fs::path dir = armstudy::testing::fresh_dir("cli_merge");
+  write(dir / "m.yaml", "study: placement\nname: merged\n"
+                        "arm:\n  links:\n    - &link {length: 0.4, mass: 4.0}\n"
+                        "    - {<<: *link, length: 0.2, mass: 2.0}\n"
+                        "placement: {length_fraction: 0.5}\n");
+  const CliRun r = run_cli("validate " + (dir / "m.yaml").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  // a merged mapping's keys are judged like the mapping's own, at their place
+  write(dir / "m.yaml", "study: placement\nname: merged\n"
+                        "arm:\n  links:\n    - &link {length: 0.4, mas: 4.0}\n"
+                        "    - {<<: *link, length: 0.2}\n"
+                        "placement: {length_fraction: 0.5}\n");
+  const CliRun bad = run_cli("validate " + (dir / "m.yaml").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("m.yaml:5:27: unknown key 'arm.links[2].mas' (from the merge key '<<'); "
+                            "did you mean 'mass'?"), std::string::npos) << bad.output;
+  fs::remove_all(dir);
+}
+
 TEST(HostileInput, SweepPointCountNeverOverflowsAndIsCapped) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_sweep_count");
   write(dir / "base.yaml", "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n");

@@ -32,7 +32,7 @@ mkdir -p "$corpus" "$artifacts"
 seeds=("$src/tests/cases/bad" "$src/reports/cases" "$src/reports/sweeps")
 echo "fuzz: running $build/case_loader_fuzz for ${seconds} s, seeded with ${seeds[*]}"
 start=$(date +%s)
-"$build/case_loader_fuzz" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=3072 \
+"$build/case_loader_fuzz" -max_total_time="$seconds" -timeout=100 -rss_limit_mb=3072 \
   -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" "$corpus" "${seeds[@]}" \
   2>"$build/fuzz.log" || {
   tail -60 "$build/fuzz.log"
