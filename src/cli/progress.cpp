@@ -36,7 +36,7 @@ ProgressReporter::ProgressReporter(std::FILE* out, bool live, std::chrono::secon
   heartbeat_ = std::thread([this] {
     std::unique_lock<std::mutex> lock(mu_);
     while (!stop_) {
-      wake_.wait_for(lock, redraw_period());
+      wake_.wait_for(lock, std::chrono::seconds(1));  // heartbeat() judges what is due
       if (stop_) break;
       lock.unlock();
       heartbeat();
@@ -62,7 +62,11 @@ studies::ProgressFn ProgressReporter::task(std::string task) {
     std::lock_guard<std::mutex> lock(mu_);
     id = next_id_++;
     const auto now = clock_();
-    tasks_[id] = Task{std::move(task), now, now, 0.0, ""};
+    Task t;
+    t.name = std::move(task);
+    t.start = now;
+    t.last_report = now;
+    tasks_[id] = std::move(t);
   }
   auto reg = std::make_shared<Registration>();
   reg->on_last_copy = [this, id] { remove(id); };
@@ -90,7 +94,7 @@ std::string ProgressReporter::status_text(double f, std::string_view stage, doub
   return s;
 }
 
-void ProgressReporter::print_locked(const Task& t, Clock::time_point now) {
+void ProgressReporter::print_locked(Task& t, Clock::time_point now) {
   const double elapsed = std::chrono::duration<double>(now - t.start).count();
   const double since = std::chrono::duration<double>(now - t.last_report).count();
   const std::string status = status_text(t.fraction, t.stage, elapsed, since);
@@ -105,6 +109,7 @@ void ProgressReporter::print_locked(const Task& t, Clock::time_point now) {
   }
   std::fflush(out_);
   last_print_ = now;
+  t.last_print = now;
 }
 
 void ProgressReporter::update(int id, double f, std::string_view stage) {
@@ -121,7 +126,7 @@ void ProgressReporter::update(int id, double f, std::string_view stage) {
     return;
   }
   const bool due = live_ ? now - last_print_ >= std::chrono::milliseconds(100)
-                         : now - last_print_ >= period_;
+                         : now - t.last_print >= period_;
   if (due) print_locked(t, now);
 }
 
@@ -129,15 +134,16 @@ void ProgressReporter::heartbeat() {
   std::lock_guard<std::mutex> lock(mu_);
   if (stop_ || tasks_.empty()) return;
   const auto now = clock_();
-  if (now - last_print_ < redraw_period()) return;
   if (live_) {
+    if (now - last_print_ < redraw_period()) return;
     // the task reported last (a live bar is one line)
-    const Task* latest = &tasks_.begin()->second;
-    for (const auto& [id, t] : tasks_)
+    Task* latest = &tasks_.begin()->second;
+    for (auto& [id, t] : tasks_)
       if (t.last_report > latest->last_report) latest = &t;
     print_locked(*latest, now);
   } else {
-    for (const auto& [id, t] : tasks_) print_locked(t, now);
+    for (auto& [id, t] : tasks_)
+      if (now - t.last_print >= period_) print_locked(t, now);
   }
 }
 

@@ -55,12 +55,13 @@ class ProgressReporter {
     std::string name;
     Clock::time_point start;
     Clock::time_point last_report;
+    Clock::time_point last_print{};  ///< of this task (a log line each, a live bar shared)
     double fraction = 0;
     std::string stage;
   };
   void update(int id, double fraction, std::string_view stage);
   void remove(int id);
-  void print_locked(const Task& t, Clock::time_point now);
+  void print_locked(Task& t, Clock::time_point now);
   std::chrono::milliseconds redraw_period() const;
 
   std::FILE* out_;

@@ -52,6 +52,21 @@ TEST(Progress, HeartbeatPrintsEveryPeriodWithoutReportsAndStopsWhenTheTaskEnds) 
     EXPECT_NE(out.text().find("case-a:   3 % sweep, 2:00 elapsed, about 1:04:40 left (last report 2:00 ago)\n"),
               std::string::npos) << out.text();
   }
+  // two tasks in a log: each gets its line every period, however often the other reports
+  {
+    const studies::ProgressFn a = p.task("case-b");
+    const studies::ProgressFn b = p.task("case-c");
+    a(0.1, "one");
+    b(0.1, "two");
+    for (int i = 0; i < 6; ++i) {
+      now += 1s;
+      a(0.1 + 0.01 * i, "one");
+      p.heartbeat();
+    }
+    const std::string t = out.text();
+    EXPECT_NE(t.find("case-c:  10 % two, 0:05 elapsed"), std::string::npos) << t;
+    EXPECT_NE(t.find("case-b:  14 % one, 0:05 elapsed"), std::string::npos) << t;
+  }
   // the task's callback is gone: nothing more about it
   const std::string before = out.text();
   now += 60s;
