@@ -1,5 +1,7 @@
 #include "cases/pendulum_case.hpp"
 
+#include <cmath>
+
 #include "cases/throwing_case.hpp"
 #include "core/types.hpp"
 
@@ -29,7 +31,28 @@ studies::PendulumSpec load_pendulum_spec(Map& root) {
   if (const auto v = sec->number("rtol", NumberRule::range(1e-14, 1e-3, ""))) s.rtol = *v;
   if (const auto v = sec->number("atol", NumberRule::range(1e-16, 1e-3, ""))) s.atol = *v;
   if (const auto v = sec->number("drift_tolerance", NumberRule::positive(""))) s.drift_tolerance = *v;
+  // the strip and the locus draw every snapshot
+  const double snapshots = std::floor(s.duration / s.snapshot_step + 1e-9) + 1;
+  if (snapshots > kMaxPendulumSnapshots)
+    sec->error("snapshot_s", "'pendulum.snapshot_s' is " + format_number(s.snapshot_step) + " s: " +
+                                 format_number(snapshots) + " snapshots over duration_s = " +
+                                 format_number(s.duration) + " s; expected at most " +
+                                 std::to_string(kMaxPendulumSnapshots) +
+                                 " (the strip and the locus draw every snapshot)");
   sec->finish();
+  if (sec->diag().empty()) {
+    Demand d;
+    d.what = "the pendulum simulation";
+    d.keys = "pendulum.duration_s and pendulum.sample_s";
+    d.unit = "output samples";
+    d.work = s.duration / s.sample_step + snapshots;
+    d.work_budget = 1e7;
+    d.memory_bytes = d.work * 300.0;  // time, states, energies and the ball's path per sample
+    d.detail = format_number(d.work) + " samples of ~300 B";
+    d.strip_frames = static_cast<int>(snapshots);
+    d.mark = sec->node().Mark();
+    sec->diag().demand(d);
+  }
   return s;
 }
 

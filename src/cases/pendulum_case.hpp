@@ -35,7 +35,12 @@
 
 namespace armstudy::cases {
 
-/// Reads the `pendulum:` section (absent: all defaults). Errors go to root's Diagnostics.
+/// Snapshots (duration_s / snapshot_s + 1) a pendulum case may ask for: the strip and the
+/// locus draw each one.
+inline constexpr int kMaxPendulumSnapshots = 100;
+
+/// Reads the `pendulum:` section (absent: all defaults). Errors go to root's Diagnostics;
+/// its work (samples) and its strip's frames are recorded as a Demand (cases/budget.hpp).
 studies::PendulumSpec load_pendulum_spec(Map& root);
 
 }  // namespace armstudy::cases

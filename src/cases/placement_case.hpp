@@ -52,9 +52,12 @@ namespace armstudy::cases {
 /// The thesis's arm (000_bf165d3f0a5605ef.txt Ch. 9), the default of placement cases.
 core::PlanarChain placement_default_arm();
 
+/// The work and memory `spec` asks for (cases/budget.hpp), reported at `mark`.
+Demand placement_demand(const studies::placement::Spec& spec, const YAML::Mark& mark);
+
 /// Reads `arm:`, `gravity:` and `placement:` from the case's root mapping. Every problem
-/// is recorded in root.diag() at its file:line:col; the returned spec is meaningful only
-/// when no error was recorded.
+/// is recorded in root.diag() at its file:line:col, and the demand too; the returned spec is
+/// meaningful only when no error was recorded.
 studies::placement::Spec load_placement(Map& root);
 
 }  // namespace armstudy::cases

@@ -85,6 +85,9 @@ namespace armstudy::cases {
 /// absent keeps its value); otherwise that key is unknown. Errors go to the Diagnostics.
 void read_tray_arm(Map& section, studies::TrayArmParams& arm, double* width);
 
+/// The work and memory `spec` asks for (cases/budget.hpp), reported at `mark`.
+Demand throwing_demand(const studies::ThrowingSpec& spec, const YAML::Mark& mark);
+
 /// Reads the `throwing:` section (absent: all defaults). Errors go to root's Diagnostics.
 studies::ThrowingSpec load_throwing_spec(Map& root);
 

@@ -1,6 +1,8 @@
 #include "cases/time_optimal_case.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "cases/arm_loader.hpp"
 
@@ -76,7 +78,7 @@ void load_dp(Map& t, to::DpSettings* dp) {
       } else if (name == "joint1_velocity") {
         dp->states.push_back(to::DpState::kJoint1Velocity);
       } else {
-        std::string msg = "'" + st->path_at(i) + "' is '" + name + "'; expected path_speed or joint1_velocity";
+        std::string msg = "'" + st->path_at(i) + "' is '" + brief(name) + "'; expected path_speed or joint1_velocity";
         if (const auto c = closest(name, {"path_speed", "joint1_velocity"})) msg += " (did you mean '" + *c + "'?)";
         st->diag().error(n.Mark(), msg);
       }
@@ -155,7 +157,41 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
                                        std::to_string(pieces) + " pieces)");
   }
   t->finish();
+  if (t->diag().empty()) t->diag().demand(time_optimal_demand(spec, t->node().Mark()));
   return spec;
+}
+
+Demand time_optimal_demand(const studies::time_optimal::Spec& spec, const YAML::Mark& mark) {
+  // the DP: one run per state kind on segments + 1 nodes of `levels` states, and one per row
+  // of the convergence table with levels x N / segments states; every state checks the
+  // limits at checks_per_segment + 1 points per transition band (counted once). The
+  // Complex: each iteration times every segment at its check points.
+  const double checks = spec.dp.checks_per_segment + 1.0;
+  const double nodes = spec.dp.segments + 1.0;
+  double states = double(spec.dp.states.size()) * nodes * spec.dp.levels, largest = nodes * spec.dp.levels;
+  for (const int n : spec.dp.convergence_segments) {
+    const double levels = std::round(spec.dp.levels * std::max(1.0, double(n) / spec.dp.segments));
+    states += (n + 1.0) * levels;
+    largest = std::max(largest, (n + 1.0) * levels);
+  }
+  const double complex = spec.complex.enabled ? double(spec.complex.max_iterations) * nodes : 0.0;
+  const double exact = double(spec.exact.grid_points) * spec.exact.checks_per_interval;
+  Demand d;
+  d.what = "the time-optimal study";
+  d.keys = "time_optimal.dp.segments, time_optimal.dp.levels, time_optimal.dp.checks_per_segment, "
+           "time_optimal.dp.convergence_segments and time_optimal.complex.max_iterations";
+  d.unit = "limit checks";
+  d.work = (states + complex) * checks + exact;
+  d.work_budget = 1e9;
+  // a DP state holds its speed, speed squared, cost and choice (~32 B); the check points
+  // of a segment ~100 B each
+  d.memory_bytes = largest * 32.0 + nodes * checks * 100.0 + double(spec.motion_steps) * 100.0;
+  char detail[240];
+  std::snprintf(detail, sizeof detail, "%.3g DP states (the largest run %.3g) and %.3g Complex segment "
+                "evaluations, x %.0f check points", states, largest, complex, checks);
+  d.detail = detail;
+  d.mark = mark;
+  return d;
 }
 
 }  // namespace armstudy::cases

@@ -46,6 +46,9 @@
 
 namespace armstudy::cases {
 
+/// The work and memory `spec` asks for (cases/budget.hpp), reported at `mark`.
+Demand time_optimal_demand(const studies::time_optimal::Spec& spec, const YAML::Mark& mark);
+
 /// Reads `arm:`, `gravity:` and `time_optimal:` from the case's root mapping. Every
 /// problem is recorded in root.diag() at its file:line:col; the returned spec is
 /// meaningful only when no error was recorded.

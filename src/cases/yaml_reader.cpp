@@ -1,10 +1,13 @@
 #include "cases/yaml_reader.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
+
+#include "cases/yaml_source.hpp"
 
 namespace armstudy::cases {
 namespace {
@@ -14,7 +17,7 @@ std::string describe_kind(const YAML::Node& n) {
     case YAML::NodeType::Map: return "a mapping";
     case YAML::NodeType::Sequence: return "a list";
     case YAML::NodeType::Null: return "nothing";
-    case YAML::NodeType::Scalar: return "'" + n.Scalar() + "'";
+    case YAML::NodeType::Scalar: return "'" + brief(n.Scalar()) + "'";
     default: return "nothing";
   }
 }
@@ -43,6 +46,10 @@ std::string format_number(double v) {
 }
 
 void Diagnostics::error(const YAML::Mark& mark, std::string message) {
+  if (errors_.size() >= kMaxErrors) {
+    ++dropped_;
+    return;
+  }
   CaseError e;
   e.path = path_;
   if (!mark.is_null() && mark.line >= 0) {
@@ -54,7 +61,15 @@ void Diagnostics::error(const YAML::Mark& mark, std::string message) {
 }
 
 void Diagnostics::throw_if_any() const {
-  if (!errors_.empty()) throw CaseErrors(errors_);
+  if (errors_.empty()) return;
+  if (dropped_ == 0) throw CaseErrors(errors_);
+  std::vector<CaseError> all = errors_;
+  CaseError more;
+  more.path = path_;
+  more.message = "... and " + std::to_string(dropped_) + " more error(s) (only the first " +
+                 std::to_string(kMaxErrors) + " are shown)";
+  all.push_back(std::move(more));
+  throw CaseErrors(std::move(all));
 }
 
 std::string violation(double v, const NumberRule& rule) {
@@ -72,6 +87,20 @@ std::string violation(double v, const NumberRule& rule) {
   return "";
 }
 
+namespace {
+// why text yaml-cpp would not convert is no number we can use: it overflows or underflows
+// a double ("1e400", "1e-400"), or "" if it is just not a number
+std::string out_of_range(const std::string& s) {
+  const char* begin = s.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(begin, &end);
+  if (end == begin || *end != '\0' || errno != ERANGE) return "";
+  if (std::isinf(v)) return "overflows a double (its largest is 1.8e308)";
+  return "underflows a double (too close to 0 to be represented)";
+}
+}  // namespace
+
 std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std::string_view what,
                                   const NumberRule& rule) {
   const std::string name(what);
@@ -85,11 +114,31 @@ std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std
   try {
     v = node.as<double>();
   } catch (const YAML::Exception&) {
-    diag.error(node.Mark(), name + " is '" + s + "'; expected a number");
+    const std::string range = out_of_range(s);
+    if (!range.empty()) {
+      diag.error(node.Mark(), name + " is " + brief(s) + ", which " + range +
+                                  "; expected a magnitude in [" + format_number(kMinMagnitude) +
+                                  ", " + format_number(kMaxMagnitude) + "] or 0");
+    } else {
+      diag.error(node.Mark(), name + " is '" + brief(s) + "'; expected a number");
+    }
     return std::nullopt;
   }
   if (!std::isfinite(v)) {
-    diag.error(node.Mark(), name + " is " + s + "; expected a finite number");
+    diag.error(node.Mark(), name + " is " + brief(s) + "; expected a finite number");
+    return std::nullopt;
+  }
+  if (std::fpclassify(v) == FP_SUBNORMAL || (v == 0 && !out_of_range(s).empty())) {
+    diag.error(node.Mark(), name + " is " + brief(s) +
+                                (v == 0 ? ", which underflows a double to 0"
+                                        : ", a denormal number (below 2.2e-308 in magnitude, with lost precision)") +
+                                "; expected 0 or a magnitude of at least " + format_number(kMinMagnitude));
+    return std::nullopt;
+  }
+  if (v != 0 && (std::abs(v) > kMaxMagnitude || std::abs(v) < kMinMagnitude)) {
+    diag.error(node.Mark(), name + " is " + format_number(v) + ", outside the magnitudes armstudy "
+                                "computes with; expected 0 or a magnitude in [" +
+                                format_number(kMinMagnitude) + ", " + format_number(kMaxMagnitude) + "]");
     return std::nullopt;
   }
   const std::string bad = violation(v, rule);
@@ -111,37 +160,79 @@ Map::Map(const YAML::Node& node, Diagnostics& diag, std::string context)
   }
   valid_ = true;
   // duplicate keys: yaml-cpp keeps every pair but operator[] returns the first
-  std::vector<std::string> seen;
+  std::vector<YAML::Node> merges;
   for (const auto& kv : node) {
     if (!kv.first.IsScalar()) {
-      diag.error(kv.first.Mark(), "a key of '" + context_ + "' is not a plain word; expected a key name");
+      diag.error(kv.first.Mark(), "a key of " + (context_.empty() ? std::string("the file") : "'" + context_ + "'") +
+                                      " is not a plain word; expected a key name");
       continue;
     }
     const std::string k = kv.first.Scalar();
-    if (std::find(seen.begin(), seen.end(), k) != seen.end()) {
-      diag.error(kv.first.Mark(), "duplicate key '" + path_of(k) + "'; expected each key once");
+    if (k == "<<" && kv.first.Tag() == "?") {  // a plain <<: the merge key
+      merges.push_back(kv.second);
+      continue;
+    }
+    if (index_.count(k)) {
+      diag.error(kv.first.Mark(), "duplicate key '" + brief(path_of(k)) + "'; expected each key once");
     } else {
-      seen.push_back(k);
+      index_.emplace(k, entries_.size());
+      entries_.push_back({k, kv.first, kv.second, false});
     }
   }
+  for (const YAML::Node& m : merges) merge_from(m, 0, false);
+}
+
+void Map::merge_from(const YAML::Node& source, int depth, bool in_list) {
+  const std::string where = "the merge key '" + path_of("<<") + "'";
+  if (depth > kMaxDepth) {
+    diag_->error(source.Mark(), where + " nests merges too deeply; expected at most " + std::to_string(kMaxDepth));
+    return;
+  }
+  if (source.IsSequence()) {
+    if (in_list) {
+      diag_->error(source.Mark(), where + " holds a list inside a list; expected a mapping or a list of mappings");
+      return;
+    }
+    for (const auto& m : source) merge_from(m, depth + 1, true);
+    return;
+  }
+  if (!source.IsMap()) {
+    diag_->error(source.Mark(), where + " is " + describe_kind(source) +
+                                    "; expected a mapping (e.g. *defaults) or a list of mappings");
+    return;
+  }
+  // a merged mapping's own merge keys count too, after its explicit keys
+  std::vector<YAML::Node> inner;
+  for (const auto& kv : source) {
+    if (!kv.first.IsScalar()) continue;  // refused where the mapping itself is read
+    const std::string k = kv.first.Scalar();
+    if (k == "<<" && kv.first.Tag() == "?") {
+      inner.push_back(kv.second);
+      continue;
+    }
+    if (index_.count(k)) continue;  // the mapping's own key, or an earlier merge, wins
+    index_.emplace(k, entries_.size());
+    entries_.push_back({k, kv.first, kv.second, true});
+  }
+  for (const YAML::Node& m : inner) merge_from(m, depth + 1, false);
+}
+
+const Map::Entry* Map::find(std::string_view key) const {
+  if (!valid_) return nullptr;
+  const auto it = index_.find(std::string(key));
+  return it == index_.end() ? nullptr : &entries_[it->second];
 }
 
 std::string Map::path_of(std::string_view key) const {
   return context_.empty() ? std::string(key) : context_ + "." + std::string(key);
 }
 
-bool Map::has(std::string_view key) const {
-  if (!valid_) return false;
-  for (const auto& kv : node_)
-    if (kv.first.IsScalar() && kv.first.Scalar() == key) return true;
-  return false;
-}
+bool Map::has(std::string_view key) const { return find(key) != nullptr; }
 
 YAML::Node Map::get(std::string_view key) {
-  known_.emplace_back(key);
-  if (!valid_) return YAML::Node(YAML::NodeType::Undefined);
-  for (const auto& kv : node_)
-    if (kv.first.IsScalar() && kv.first.Scalar() == key) return kv.second;
+  std::string k(key);
+  if (known_set_.insert(k).second) known_.push_back(std::move(k));
+  if (const Entry* e = find(key)) return e->value;
   return YAML::Node(YAML::NodeType::Undefined);
 }
 
@@ -176,7 +267,7 @@ std::optional<int> Map::integer(std::string_view key, int min, int max) {
                              NumberRule::range(min, max, ""));
   if (!v) return std::nullopt;
   if (*v != std::floor(*v)) {
-    diag_->error(n.Mark(), "'" + path_of(key) + "' is " + n.Scalar() + "; expected a whole number");
+    diag_->error(n.Mark(), "'" + path_of(key) + "' is " + brief(n.Scalar()) + "; expected a whole number");
     return std::nullopt;
   }
   return static_cast<int>(*v);
@@ -217,7 +308,7 @@ std::optional<std::string> Map::choice(std::string_view key, const std::vector<s
   if (std::find(allowed.begin(), allowed.end(), *v) != allowed.end()) return v;
   std::string list;
   for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-  std::string msg = "'" + path_of(key) + "' is '" + *v + "'; expected one of: " + list;
+  std::string msg = "'" + path_of(key) + "' is '" + brief(*v) + "'; expected one of: " + list;
   if (const auto c = closest(*v, allowed)) msg += " (did you mean '" + *c + "'?)";
   error(key, msg);
   return std::nullopt;
@@ -280,13 +371,9 @@ std::optional<Seq> Map::seq(std::string_view key) {
 }
 
 void Map::error(std::string_view key, std::string message) {
-  if (valid_) {
-    for (const auto& kv : node_) {
-      if (kv.first.IsScalar() && kv.first.Scalar() == key) {
-        diag_->error(kv.second.Mark(), std::move(message));
-        return;
-      }
-    }
+  if (const Entry* e = find(key)) {
+    diag_->error(e->value.Mark(), std::move(message));
+    return;
   }
   diag_->error(node_.Mark(), std::move(message));
 }
@@ -295,21 +382,22 @@ void Map::error_here(std::string message) { diag_->error(node_.Mark(), std::move
 
 void Map::finish() {
   if (!valid_) return;
-  for (const auto& kv : node_) {
-    if (!kv.first.IsScalar()) continue;
-    const std::string k = kv.first.Scalar();
-    if (std::find(known_.begin(), known_.end(), k) != known_.end()) continue;
-    std::string msg = "unknown key '" + path_of(k) + "'";
-    if (const auto c = closest(k, known_)) {
+  std::string expected;  // the list of known keys, made once
+  for (const Entry& e : entries_) {
+    if (known_set_.count(e.key)) continue;
+    std::string msg = "unknown key '" + brief(path_of(e.key)) + "'" +
+                      (e.merged ? " (from the merge key '<<')" : "");
+    if (const auto c = closest(e.key, known_)) {
       msg += "; did you mean '" + *c + "'?";
     } else {
-      std::vector<std::string> sorted = known_;
-      std::sort(sorted.begin(), sorted.end());
-      sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-      msg += "; expected one of: ";
-      for (size_t i = 0; i < sorted.size(); ++i) msg += (i ? ", " : "") + sorted[i];
+      if (expected.empty()) {
+        std::vector<std::string> sorted = known_;
+        std::sort(sorted.begin(), sorted.end());
+        for (size_t i = 0; i < sorted.size(); ++i) expected += (i ? ", " : "") + sorted[i];
+      }
+      msg += "; expected one of: " + expected;
     }
-    diag_->error(kv.first.Mark(), msg);
+    diag_->error(e.key_node.Mark(), msg);
   }
 }
 
@@ -332,19 +420,15 @@ std::optional<Map> Seq::map_at(size_t i) const {
 // ----------------------------------------------------------------------------- files
 
 std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diag.error(YAML::Mark::null_mark(), "cannot open the case file; expected a readable YAML file");
-    return std::nullopt;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string bytes = ss.str();
-  if (text) *text = bytes;
-  return parse_text(bytes, diag);
+  std::string bytes;
+  if (!read_regular_file(path, diag, &bytes)) return std::nullopt;
+  auto root = parse_text(bytes, diag);
+  if (text) *text = std::move(bytes);
+  return root;
 }
 
 std::optional<YAML::Node> parse_text(const std::string& bytes, Diagnostics& diag) {
+  if (!check_yaml_source(bytes, diag)) return std::nullopt;
   YAML::Node root;
   try {
     root = YAML::Load(bytes);

@@ -2,19 +2,30 @@
 /// Typed, position-aware reading of YAML case files (yaml-cpp 0.7).
 ///
 /// Every problem is recorded in Diagnostics with its file:line:column (yaml-cpp marks are
-/// 0-based; we add 1) and reading goes on, so a user sees every error of a file at once.
-/// yaml-cpp accepts duplicate and unknown keys silently: Map detects both itself.
+/// 0-based; we add 1) and reading goes on, so a user sees every error of a file at once
+/// (the first kMaxErrors of them, then how many more there were).
+/// yaml-cpp accepts duplicate and unknown keys silently: Map detects both itself, in time
+/// linear in the number of keys. Map also resolves YAML merge keys (`<<: *defaults`, or
+/// `<<: [*a, *b]`) as YAML 1.1 defines them: the mapping's own keys win, then the merged
+/// mappings in order. Files are checked before yaml-cpp reads them (yaml_source.hpp).
 
 #include <optional>
+#include <unordered_map>
+#include <unordered_set>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
+#include "cases/budget.hpp"
 #include "cases/case_error.hpp"
+#include "cases/yaml_source.hpp"
 
 namespace armstudy::cases {
+
+/// Errors kept per file; more are counted, not kept.
+inline constexpr size_t kMaxErrors = 50;
 
 /// Collects the errors of one file.
 class Diagnostics {
@@ -24,13 +35,22 @@ class Diagnostics {
   /// Records `message` at a yaml-cpp mark (0-based; a null mark records no position).
   void error(const YAML::Mark& mark, std::string message);
   bool empty() const { return errors_.empty(); }
+  /// The first kMaxErrors errors.
   const std::vector<CaseError>& errors() const { return errors_; }
-  /// @throws CaseErrors if any error was recorded.
+  /// Every error recorded, kept or not.
+  size_t count() const { return errors_.size() + dropped_; }
+  /// @throws CaseErrors if any error was recorded (the kept ones, then one saying how many
+  /// more there were).
   void throw_if_any() const;
+  /// Records what the case asks for (judged against the budget by the caller).
+  void demand(Demand d) { demands_.push_back(std::move(d)); }
+  const std::vector<Demand>& demands() const { return demands_; }
 
  private:
   std::string path_;
   std::vector<CaseError> errors_;
+  std::vector<Demand> demands_;
+  size_t dropped_ = 0;
 };
 
 /// Bounds a number must meet; `unit` is only for messages ("m", "kg", "deg").
@@ -53,11 +73,18 @@ struct NumberRule {
 /// A number as messages show it: 6 significant digits, C locale ("0.4", "1e-06").
 std::string format_number(double v);
 
+/// Magnitudes a case number may have (besides 0): products of a few of them stay finite
+/// and normal in double precision. Beyond them a number is refused as out of range.
+inline constexpr double kMaxMagnitude = 1e100;
+inline constexpr double kMinMagnitude = 1e-100;
+
 /// Checks a finite number against a rule; returns the complaint or "".
 std::string violation(double value, const NumberRule& rule);
 
 /// Reads a scalar node as a finite number meeting `rule`; records an error at the node
-/// (naming `what`) and returns nullopt otherwise.
+/// (naming `what`) and returns nullopt otherwise: for text that is no number, a number
+/// that overflows or underflows a double, a denormal, a magnitude outside
+/// [kMinMagnitude, kMaxMagnitude], or one that breaks the rule.
 std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std::string_view what,
                                   const NumberRule& rule);
 
@@ -106,10 +133,22 @@ class Map {
   std::string path_of(std::string_view key) const;
 
  private:
+  struct Entry {
+    std::string key;
+    YAML::Node key_node;
+    YAML::Node value;
+    bool merged = false;  ///< from a merge key (<<), not written in this mapping
+  };
+  void merge_from(const YAML::Node& source, int depth, bool in_list);
+  const Entry* find(std::string_view key) const;
+
   YAML::Node node_;
   Diagnostics* diag_;
   std::string context_;
-  std::vector<std::string> known_;
+  std::vector<Entry> entries_;                      ///< in file order, merged ones last
+  std::unordered_map<std::string, size_t> index_;   ///< key -> entries_ index
+  std::vector<std::string> known_;                  ///< keys asked for, in order
+  std::unordered_set<std::string> known_set_;
   bool valid_ = false;
 };
 
@@ -131,8 +170,9 @@ class Seq {
   std::string context_;
 };
 
-/// Parses a YAML file; on a syntax error, an empty file or a non-mapping root, records the
-/// error and returns nullopt. `text` receives the file's bytes.
+/// Parses a YAML file; on a file that is not a regular file of at most kMaxFileBytes, text
+/// or structure refused by check_yaml_source, a syntax error, an empty file or a
+/// non-mapping root, records the error and returns nullopt. `text` receives the bytes.
 std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text);
 
 /// Parses YAML text like parse_file (errors recorded against diag's path).

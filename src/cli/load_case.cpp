@@ -8,31 +8,50 @@ namespace armstudy::app {
 namespace {
 
 LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnostics& diag,
-                     LoadedCase out);
+                     LoadedCase out, const LoadOptions& options);
 
 }  // namespace
 
-LoadedCase load_case(const std::string& path) {
+LoadedCase load_case(const std::string& path, const LoadOptions& options) {
   cases::Diagnostics diag(path);
   LoadedCase out;
   out.info.path = path;
   const auto root_node = cases::parse_file(path, diag, &out.info.yaml);
-  return load_root(root_node, diag, std::move(out));
+  return load_root(root_node, diag, std::move(out), options);
 }
 
-LoadedCase load_case_text(const std::string& text, const std::string& path) {
+LoadedCase load_case_text(const std::string& text, const std::string& path,
+                          const LoadOptions& options) {
   cases::Diagnostics diag(path);
   LoadedCase out;
   out.info.path = path;
   out.info.yaml = text;
   const auto root_node = cases::parse_text(text, diag);
-  return load_root(root_node, diag, std::move(out));
+  return load_root(root_node, diag, std::move(out), options);
 }
 
 namespace {
 
+// the study's estimated work and memory, and the frames, against the budget
+void check_budget(cases::Map& root, const cases::RenderOptions& render) {
+  cases::Diagnostics& diag = root.diag();
+  std::vector<cases::Demand> demands = diag.demands();
+  if (demands.empty()) {
+    cases::Demand d;
+    d.what = "the case";
+    d.mark = root.node().Mark();
+    demands.push_back(d);
+  }
+  for (const cases::Demand& d : demands) {
+    for (const cases::OverBudget& o : cases::over_budget(d, render.frames, render.width, render.height)) {
+      if (o.frames && root.has("render")) root.error("render", o.message);
+      else diag.error(d.mark, o.message);
+    }
+  }
+}
+
 LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnostics& diag,
-                     LoadedCase out) {
+                     LoadedCase out, const LoadOptions& options) {
   if (!root_node) diag.throw_if_any();
   out.info.sha256 = cases::sha256_hex(out.info.yaml);
 
@@ -49,8 +68,8 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
   if (const auto name = root.required_string("name")) {
     // the name is a folder name: keep it portable
     static const std::regex ok("[A-Za-z0-9][A-Za-z0-9._-]{0,99}");
-    if (!std::regex_match(*name, ok)) {
-      root.error("name", "'name' is '" + *name +
+    if (name->size() > 100 || !std::regex_match(*name, ok)) {
+      root.error("name", "'name' is '" + cases::brief(*name) +
                              "'; expected letters, digits, '.', '_' or '-' (at most 100, no spaces)");
     } else {
       out.info.name = *name;
@@ -84,6 +103,7 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
     out.run = it->load(root, out.info);
   }
   if (study) root.finish();  // with no known study, its keys cannot be judged
+  if (diag.empty() && !options.allow_large) check_budget(root, out.info.render);
   diag.throw_if_any();
   return out;
 }

@@ -43,12 +43,13 @@ constexpr int kExitRuntime = 3;
 std::vector<std::string> case_files(const std::vector<std::string>& items);
 
 // Loads every case; prints every error of every file; false if any failed.
-bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* out) {
+bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* out,
+              bool allow_large = false) {
   bool ok = true;
   std::map<std::string, std::string> names;
   for (const std::string& p : paths) {
     try {
-      LoadedCase c = armstudy::app::load_case(p);
+      LoadedCase c = armstudy::app::load_case(p, {allow_large});
       if (auto it = names.find(c.info.name); it != names.end()) {
         std::fprintf(stderr, "%s: case name '%s' is also the name of %s; expected unique names\n",
                      p.c_str(), c.info.name.c_str(), it->second.c_str());
@@ -65,9 +66,9 @@ bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* ou
   return ok;
 }
 
-int cmd_validate(const std::vector<std::string>& paths) {
+int cmd_validate(const std::vector<std::string>& paths, bool allow_large) {
   std::vector<LoadedCase> cases;
-  const bool ok = load_all(paths, &cases);
+  const bool ok = load_all(paths, &cases, allow_large);
   for (const auto& c : cases)
     std::printf("ok: %s (study %s, case %s)\n", c.info.path.c_str(), c.info.study.c_str(),
                 c.info.name.c_str());
@@ -104,9 +105,9 @@ bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c) {
 }
 
 int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
-            int jobs, const std::string& shard, bool force) {
+            int jobs, const std::string& shard, bool force, bool allow_large) {
   std::vector<LoadedCase> cases;
-  if (!load_all(paths, &cases)) {
+  if (!load_all(paths, &cases, allow_large)) {
     std::fprintf(stderr, "nothing was written: fix the case files above\n");
     return kExitBadInput;
   }
@@ -204,6 +205,8 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
 int cmd_sweep_expand(const std::string& sweep_path, const std::string& out) {
   try {
     const auto sw = armstudy::app::load_sweep(sweep_path);
+    std::fprintf(stderr, "sweep %s: %zu case(s); writing them to %s\n", sw.name.c_str(),
+                 sw.points.size(), out.c_str());
     const size_t written = armstudy::app::expand_sweep(sw, out);
     std::fprintf(stderr, "sweep %s: %zu case(s), %zu file(s) written to %s\n", sw.name.c_str(),
                  sw.points.size(), written, out.c_str());
@@ -231,7 +234,8 @@ std::vector<std::string> case_files(const std::vector<std::string>& items) {
 
 int cmd_list(const std::vector<std::string>& items, bool as_json) {
   std::vector<LoadedCase> cases;
-  const bool ok = load_all(case_files(items), &cases);
+  // listing judges no budget: a large case is listed for a run with --allow-large
+  const bool ok = load_all(case_files(items), &cases, true);
   std::sort(cases.begin(), cases.end(),
             [](const LoadedCase& a, const LoadedCase& b) { return a.info.name < b.info.name; });
   if (as_json) {
@@ -312,6 +316,10 @@ int main(int argc, char** argv) {
                   "Run only shard I of N (0 <= I < N) of the cases sorted by name, e.g. 0/4");
   run->add_flag("--force", force,
                 "Redo cases whose output already exists for the same case file (default: skip)");
+  bool allow_large = false;
+  const char* allow_large_help =
+      "Run cases whose estimated work or memory is beyond the budget (docs/budgets.md)";
+  run->add_flag("--allow-large", allow_large, allow_large_help);
 
   std::string sweep_file, sweep_out = "sweep-cases";
   auto* sweep = app.add_subcommand("sweep", "Parameter sweeps over a base case");
@@ -334,6 +342,7 @@ int main(int argc, char** argv) {
   merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
   auto* validate = app.add_subcommand("validate", "Check case files without running them");
   validate->add_option("cases", validate_paths, "Case files (YAML)")->required();
+  validate->add_flag("--allow-large", allow_large, allow_large_help);
 
   try {
     app.parse(argc, argv);
@@ -342,13 +351,13 @@ int main(int argc, char** argv) {
     return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success) ? 0 : (code ? kExitBadInput : 0);
   }
   try {
-    if (*validate) return cmd_validate(validate_paths);
+    if (*validate) return cmd_validate(validate_paths, allow_large);
     if (*expand) return cmd_sweep_expand(sweep_file, sweep_out);
     if (*list) return cmd_list(list_items, list_json);
     if (*merge) return cmd_merge(merge_dirs, merge_out);
     options.out_dir = out_dir;
     options.render = !no_render;
-    return cmd_run(case_files(run_paths), options, jobs, shard, force);
+    return cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: internal error: %s\n", e.what());
     return kExitRuntime;

@@ -68,11 +68,19 @@ struct LoadedCase {
   std::unique_ptr<StudyRun> run;
 };
 
-/// Loads and validates a case file. @throws cases::CaseErrors with every problem found.
-LoadedCase load_case(const std::string& path);
+/// How a case is judged when it is loaded.
+struct LoadOptions {
+  /// Accept work and memory beyond the documented budget (cases/budget.hpp).
+  bool allow_large = false;
+};
+
+/// Loads and validates a case file, its estimated work and memory included.
+/// @throws cases::CaseErrors with every problem found.
+LoadedCase load_case(const std::string& path, const LoadOptions& options = {});
 
 /// Loads and validates case text; `path` names it in messages and results.
 /// @throws cases::CaseErrors with every problem found.
-LoadedCase load_case_text(const std::string& text, const std::string& path);
+LoadedCase load_case_text(const std::string& text, const std::string& path,
+                          const LoadOptions& options = {});
 
 }  // namespace armstudy::app

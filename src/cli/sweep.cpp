@@ -1,5 +1,6 @@
 #include "cli/sweep.hpp"
 
+#include <cstdint>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -14,23 +15,54 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr size_t kMaxPathChars = 1000;
+constexpr long kMaxPathIndex = 1000000;
+
 struct Segment {
   std::string key;
   int index = 0;  // 1-based list index, 0 if none
 };
 
+// key(.key)* with an optional 1-based [index] after each key; no regex: std::regex recurses
+// per character and a long hostile path would overflow the stack
 bool parse_path(const std::string& path, std::vector<Segment>* out) {
-  static const std::regex seg(R"(([A-Za-z_][A-Za-z0-9_]*)(\[([0-9]+)\])?)");
-  std::stringstream ss(path);
-  std::string part;
-  while (std::getline(ss, part, '.')) {
-    std::smatch m;
-    if (!std::regex_match(part, m, seg)) return false;
-    Segment s{m[1], m[3].matched ? std::stoi(m[3]) : 0};
-    if (m[3].matched && s.index < 1) return false;
-    out->push_back(s);
+  const auto is_alpha = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
+  const auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (path.size() > kMaxPathChars) return false;
+  size_t i = 0;
+  for (;;) {
+    Segment seg;
+    if (i >= path.size() || !is_alpha(path[i])) return false;
+    const size_t b = i;
+    while (i < path.size() && (is_alpha(path[i]) || is_digit(path[i]))) ++i;
+    seg.key = path.substr(b, i - b);
+    if (i < path.size() && path[i] == '[') {
+      ++i;
+      long index = 0;
+      const size_t d = i;
+      while (i < path.size() && is_digit(path[i])) {
+        index = index * 10 + (path[i] - '0');
+        if (index > kMaxPathIndex) return false;
+        ++i;
+      }
+      if (i == d || i >= path.size() || path[i] != ']' || index < 1) return false;
+      ++i;
+      seg.index = static_cast<int>(index);
+    }
+    out->push_back(seg);
+    if (i == path.size()) return true;
+    if (path[i] != '.') return false;
+    ++i;
   }
-  return !out->empty();
+}
+
+// nodes of a tree (aliases counted as often as they appear); depth is bounded by the
+// file checks (cases::kMaxDepth)
+size_t count_nodes(const YAML::Node& n) {
+  size_t c = 1;
+  if (n.IsSequence() || n.IsMap())
+    for (const auto& it : n) c += n.IsMap() ? count_nodes(it.first) + count_nodes(it.second) : count_nodes(it);
+  return c;
 }
 
 std::string scalar_text(const YAML::Node& n) {
@@ -43,7 +75,7 @@ std::string scalar_text(const YAML::Node& n) {
 
 std::string set_path(YAML::Node root, const std::string& path, const YAML::Node& value) {
   std::vector<Segment> segs;
-  if (!parse_path(path, &segs)) return "'" + path + "' is not a parameter path like arm.links[2].length";
+  if (!parse_path(path, &segs)) return "'" + cases::brief(path) + "' is not a parameter path like arm.links[2].length";
   YAML::Node cur = root;
   for (size_t i = 0; i < segs.size(); ++i) {
     const Segment& s = segs[i];
@@ -71,6 +103,19 @@ std::string set_path(YAML::Node root, const std::string& path, const YAML::Node&
     cur.reset(list[s.index - 1]);
   }
   return "";
+}
+
+size_t sweep_point_count(const Sweep& sweep) {
+  if (sweep.axes.empty()) return 0;
+  if (sweep.zip) return sweep.axes[0].values.size();
+  size_t count = 1;
+  for (const auto& ax : sweep.axes) {
+    const size_t n = ax.values.size();
+    if (n == 0) return 0;
+    if (count > SIZE_MAX / n) return SIZE_MAX;  // saturates: more than size_t holds
+    count *= n;
+  }
+  return count;
 }
 
 Sweep load_sweep(const std::string& path) {
@@ -132,25 +177,46 @@ Sweep load_sweep(const std::string& path) {
     sw.base_path = base.lexically_normal().string();
     cases::Diagnostics bd(sw.base_path);
     const auto b = cases::parse_file(sw.base_path, bd, nullptr);
-    if (!b) root.error("base", "'base' names '" + sw.base_path + "', which cannot be read as a case: " +
-                                   (bd.errors().empty() ? "" : bd.errors()[0].message));
+    if (!b) root.error("base", "'base' names '" + cases::brief(sw.base_path, 200) + "', which cannot be read as a case: " +
+                                   (bd.errors().empty() ? "" : bd.errors()[0].format()));
     else sw.base = *b;
   }
   if (sw.zip && sw.axes.size() > 1) {
     for (const auto& ax : sw.axes)
       if (ax.values.size() != sw.axes[0].values.size())
-        diag.error(ax.mark, "zip axis '" + ax.path + "' has " + std::to_string(ax.values.size()) +
+        diag.error(ax.mark, "zip axis '" + cases::brief(ax.path) + "' has " + std::to_string(ax.values.size()) +
                                 " values; expected " + std::to_string(sw.axes[0].values.size()) +
                                 " like the first axis");
+  }
+  for (const auto& ax : sw.axes)
+    if (ax.values.empty() && diag.empty()) diag.error(ax.mark, "axis '" + cases::brief(ax.path) + "' has no values; expected at least one");
+  diag.throw_if_any();
+
+  // the number of points, without overflow, and what generating them costs
+  const size_t count = sweep_point_count(sw);
+  const size_t base_nodes = count_nodes(sw.base);
+  if (count > kMaxSweepPoints) {
+    std::string sizes;
+    double approx = 1;
+    for (const auto& ax : sw.axes) {
+      sizes += (sizes.empty() ? "" : sw.zip ? ", " : " x ") + std::to_string(ax.values.size());
+      approx *= double(ax.values.size());
+    }
+    diag.error(sw.axes[0].mark, "the sweep has " + (count == SIZE_MAX ? "about " + cases::format_number(approx) : std::to_string(count)) +
+                                    " points (" + (sw.zip ? "zip of " : "grid of ") + sizes +
+                                    " values); expected at most " + std::to_string(kMaxSweepPoints) +
+                                    " (split it into several sweeps)");
+  } else if (static_cast<double>(count) * static_cast<double>(base_nodes) > kMaxSweepNodes) {
+    diag.error(sw.axes[0].mark, "the sweep's " + std::to_string(count) + " points of a base case of " +
+                                    std::to_string(base_nodes) + " YAML nodes would generate " +
+                                    cases::format_number(double(count) * double(base_nodes)) +
+                                    " nodes; expected at most " + cases::format_number(kMaxSweepNodes));
   }
   diag.throw_if_any();
 
   // every point: a clone of the base with the axis values set
-  const std::string base_name = sw.base["name"] ? sw.base["name"].Scalar() : "case";
+  const std::string base_name = sw.base["name"] && sw.base["name"].IsScalar() ? sw.base["name"].Scalar() : "case";
   const std::string base_sha = cases::sha256_hex(YAML::Dump(sw.base));
-  size_t count = sw.zip ? sw.axes[0].values.size() : 1;
-  if (!sw.zip)
-    for (const auto& ax : sw.axes) count *= ax.values.size();
   for (size_t k = 0; k < count; ++k) {
     YAML::Node doc = YAML::Clone(sw.base);
     std::string ident = base_sha;
@@ -167,7 +233,7 @@ Sweep load_sweep(const std::string& path) {
       const YAML::Node& v = ax.values[idx[a]];
       const std::string bad = set_path(doc, ax.path, v);
       if (!bad.empty()) {
-        diag.error(ax.mark, "axis path '" + ax.path + "' names no parameter of the base case: " + bad);
+        diag.error(ax.mark, "axis path '" + cases::brief(ax.path) + "' names no parameter of the base case: " + bad);
         ok = false;
         continue;
       }
@@ -187,12 +253,13 @@ Sweep load_sweep(const std::string& path) {
                            std::string(e.c_str()) + "\n"};
     // the generated case must be valid: an error names the axis and the point
     try {
-      load_case_text(p.yaml, name + ".yaml");
+      // the budget is judged by run and validate, where --allow-large can raise it
+      load_case_text(p.yaml, name + ".yaml", LoadOptions{true});
     } catch (const cases::CaseErrors& errs) {
       std::string what = errs.errors().empty() ? "" : errs.errors()[0].message;
       std::string vals;
       for (size_t a = 0; a < sw.axes.size(); ++a)
-        vals += (a ? ", " : "") + sw.axes[a].path + " = " + scalar_text(sw.axes[a].values[idx[a]]);
+        vals += (a ? ", " : "") + cases::brief(sw.axes[a].path) + " = " + cases::brief(scalar_text(sw.axes[a].values[idx[a]]));
       diag.error(sw.axes.empty() ? YAML::Mark() : sw.axes[0].mark,
                  "the point (" + vals + ") gives an invalid case: " + what);
       break;

@@ -45,7 +45,18 @@ struct Sweep {
   std::vector<SweepPoint> points;
 };
 
-/// Reads and validates a sweep file and every case it generates.
+/// Points a sweep may have (grid: the product of the axes' value counts; zip: the first
+/// axis's count); more is refused before any is generated.
+inline constexpr size_t kMaxSweepPoints = 10000;
+/// YAML nodes all of a sweep's generated cases may hold together (points x base nodes).
+inline constexpr double kMaxSweepNodes = 2e7;
+
+/// The number of points of a sweep's axes, without overflow (SIZE_MAX when it is more
+/// than size_t holds).
+size_t sweep_point_count(const Sweep& sweep);
+
+/// Reads and validates a sweep file and every case it generates; refuses more than
+/// kMaxSweepPoints points.
 /// @throws cases::CaseErrors (file:line:col), e.g. for a path that names no parameter.
 Sweep load_sweep(const std::string& path);
 

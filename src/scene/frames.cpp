@@ -70,6 +70,17 @@ Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::strin
   return tile(tiles, columns, 8, Rgb{255, 255, 255});
 }
 
+std::vector<size_t> evenly_spaced(size_t n, size_t at_most) {
+  std::vector<size_t> out;
+  if (n <= at_most) {
+    for (size_t k = 0; k < n; ++k) out.push_back(k);
+    return out;
+  }
+  const size_t m = std::max<size_t>(at_most, 2);
+  for (size_t k = 0; k < m; ++k) out.push_back(k * (n - 1) / (m - 1));
+  return out;
+}
+
 Image SceneRenderer::locus(std::span<const PoseSample> samples,
                            std::span<const Eigen::Vector2d> path,
                            std::span<const Eigen::Vector2d> flight, const FrameLabels& labels,
@@ -103,13 +114,16 @@ Image SceneRenderer::locus(std::span<const PoseSample> samples,
     if (g.type == mjGEOM_CAPSULE) ext += g.size[0];
     top = std::max(top, 1.02 * (g.pos[2] + ext));
   }
-  for (size_t k = 1; k < path.size(); ++k)
-    extra.push_back(segment_geom(Eigen::Vector3d(path[k - 1].x(), path[k - 1].y(), top),
-                                 Eigen::Vector3d(path[k].x(), path[k].y(), top), style.path_radius * r,
-                                 style.path_rgba));
+  // a long path is traced through evenly spaced points of it (both ends kept): the scene
+  // has room for a few thousand geoms and a frame for fewer distinct segments than that
+  const std::vector<size_t> along = evenly_spaced(path.size(), kMaxTracedSegments + 1);
+  for (size_t k = 1; k < along.size(); ++k)
+    extra.push_back(segment_geom(Eigen::Vector3d(path[along[k - 1]].x(), path[along[k - 1]].y(), top),
+                                 Eigen::Vector3d(path[along[k]].x(), path[along[k]].y(), top),
+                                 style.path_radius * r, style.path_rgba));
   // the thrown object's flight: dots
   const double dot = std::max(0.45 * r, 3.0 * renderer_.metres_per_pixel());
-  for (size_t k = 0; k < flight.size(); ++k)
+  for (const size_t k : evenly_spaced(flight.size(), kMaxFlightDots))
     extra.push_back(sphere_geom(Eigen::Vector3d(flight[k].x(), flight[k].y(), top), dot,
                                 style.flight_rgba));
   set_pose(model_, map_, samples[n - 1]);

@@ -62,6 +62,15 @@ class SceneRenderer {
   Renderer renderer_;
 };
 
+/// Segments of a traced path and dots of a flight a locus draws at most (longer ones are
+/// drawn through evenly spaced points of them): the scene holds a few thousand geoms.
+inline constexpr size_t kMaxTracedSegments = 1000;
+inline constexpr size_t kMaxFlightDots = 500;
+
+/// Indices of at most `at_most` points of n spread evenly, first and last included (all
+/// of 0..n-1 when n <= at_most).
+std::vector<size_t> evenly_spaced(size_t n, size_t at_most);
+
 /// "t = 0.130 s".
 std::string time_label(double t);
 

@@ -1,7 +1,8 @@
-// The bad-input corpus: every file in tests/cases/bad/ states in its header the exit code
-// and the key words its message must contain; `armstudy validate` and `armstudy run` must
-// both fail with that code, print `file:line:col:` (unless the file says there is no
-// position) and write nothing.
+// The bad-input corpus: every file in tests/cases/bad/ states in its header the exit code,
+// the key words its message must contain and the position of the first error
+// (`# expect-position: LINE:COL`, or `none`); `armstudy validate` and `armstudy run` must
+// both fail with that code, print `file:line:col:` at that position, say it briefly (a
+// hostile file is never quoted whole) and write nothing.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -20,6 +21,7 @@ struct Expectation {
   int exit_code = -1;
   std::vector<std::string> keywords;
   bool position = true;
+  std::string line_col;  // "9:15" when the header gives it
 };
 
 Expectation read_expectation(const fs::path& file) {
@@ -29,6 +31,7 @@ Expectation read_expectation(const fs::path& file) {
   while (std::getline(in, line) && line.rfind("#", 0) == 0) {
     if (line.rfind("# expect-exit:", 0) == 0) e.exit_code = std::stoi(line.substr(14));
     if (line.rfind("# expect-position: none", 0) == 0) e.position = false;
+    else if (line.rfind("# expect-position: ", 0) == 0) e.line_col = line.substr(19);
     if (line.rfind("# expect:", 0) == 0) {
       std::stringstream ss(line.substr(9));
       std::string k;
@@ -73,6 +76,7 @@ TEST(BadCaseCorpus, HasAtLeastThirtyFilesEachWithExpectations) {
     const Expectation e = read_expectation(f);
     EXPECT_EQ(e.exit_code, 2) << f;
     EXPECT_FALSE(e.keywords.empty()) << f;
+    EXPECT_TRUE(!e.position || !e.line_col.empty()) << f << ": no '# expect-position: LINE:COL'";
   }
 }
 
@@ -88,7 +92,13 @@ TEST(BadCaseCorpus, EveryFileFailsWithItsCodeMessageAndPositionAndWritesNothing)
       if (e.position) {
         const std::regex pos(std::regex_replace(f.string(), std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") + ":[0-9]+:[0-9]+: ");
         EXPECT_TRUE(std::regex_search(r.output, pos)) << "no file:line:col in:\n" << r.output;
+        if (!e.line_col.empty()) {
+          EXPECT_NE(r.output.find(f.string() + ":" + e.line_col + ": "), std::string::npos)
+              << "no error at " << e.line_col << " in:\n" << r.output;
+        }
       }
+      // errors are capped and quoted briefly: never a whole hostile file
+      EXPECT_LT(r.output.size(), 12000u) << r.output.substr(0, 2000);
     }
     EXPECT_FALSE(fs::exists(out)) << "output written for a bad case";
   }

@@ -69,3 +69,20 @@ TEST(Frames, PngRoundTripIsLossless) {
 
 }  // namespace
 }  // namespace armstudy::scene
+
+namespace armstudy::scene {
+namespace {
+// a locus traces a long path through evenly spaced points of it: a placement case with the
+// documented samples: 20001 drew 20000 segments, more than the scene's room for geoms
+TEST(Frames, LongPathsAreTracedThroughEvenlySpacedPointsBothEndsKept) {
+  const std::vector<size_t> all = evenly_spaced(5, 1001);
+  EXPECT_EQ(all, (std::vector<size_t>{0, 1, 2, 3, 4}));
+  const std::vector<size_t> k = evenly_spaced(20001, kMaxTracedSegments + 1);
+  ASSERT_EQ(k.size(), kMaxTracedSegments + 1);
+  EXPECT_EQ(k.front(), 0u);
+  EXPECT_EQ(k.back(), 20000u);
+  for (size_t i = 1; i < k.size(); ++i) EXPECT_EQ(k[i] - k[i - 1], 20u);
+  EXPECT_TRUE(evenly_spaced(0, 10).empty());
+}
+}  // namespace
+}  // namespace armstudy::scene

@@ -1,0 +1,52 @@
+// The fuzz build's study registry: each study's loader from src/cases, as the pipelines
+// (src/cli/<study>_pipeline.cpp) call it, without their solvers, scenes and reports, so
+// that the fuzz target links only the loading code (cases, core, studies) and builds in a
+// minute with the sanitizers. The pipelines' load() functions are these calls and a
+// check of the diagnostics; keep them in step.
+#include <stdexcept>
+
+#include "cases/pendulum_case.hpp"
+#include "cases/placement_case.hpp"
+#include "cases/throwing_case.hpp"
+#include "cases/time_optimal_case.hpp"
+#include "cli/pipeline.hpp"
+#include "cli/run_case.hpp"
+
+namespace armstudy::app {
+namespace {
+template <typename Spec>
+class Loaded : public StudyRun {
+ public:
+  explicit Loaded(Spec spec) : spec_(std::move(spec)) {}
+  studies::Status solve(const studies::ProgressFn&) override {
+    throw std::logic_error("the fuzz build loads cases; it does not solve them");
+  }
+  std::string message() const override { return ""; }
+  nlohmann::json results() const override { return {}; }
+
+ private:
+  Spec spec_;
+};
+
+template <typename Spec>
+std::unique_ptr<StudyRun> loaded(Spec spec) {
+  return std::make_unique<Loaded<Spec>>(std::move(spec));
+}
+}  // namespace
+
+const std::vector<StudyEntry>& study_registry() {
+  static const std::vector<StudyEntry> registry = {
+      {"placement", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_placement(root)); }},
+      {"pendulum", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_pendulum_spec(root)); }},
+      {"throwing", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_throwing_spec(root)); }},
+      {"time_optimal", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_time_optimal(root)); }},
+  };
+  return registry;
+}
+
+// sweep.cpp's expand_sweep writes with it; the fuzz target never expands
+void write_file_atomic(const std::filesystem::path&, const std::string&) {
+  throw std::logic_error("the fuzz build writes no files");
+}
+
+}  // namespace armstudy::app
