@@ -303,9 +303,9 @@ void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutp
     if (cases.count(name))
       for (const auto& f : cases[name]->figures)
         if (f.tolerance.ignore) ignored.insert(f.name);
-    std::set<std::string> figs;
-    if (x) for (const auto& [k, v] : (*x)["key_figures"].items()) figs.insert(k);
-    if (y) for (const auto& [k, v] : (*y)["key_figures"].items()) figs.insert(k);
+    std::set<std::string> figs;  // a row of one run only ranks as infinite, with no figure
+    if (x && y) for (const auto& [k, v] : (*x)["key_figures"].items()) figs.insert(k);
+    if (x && y) for (const auto& [k, v] : (*y)["key_figures"].items()) figs.insert(k);
     double best = -1;
     for (const auto& f : figs) {
       if (ignored.count(f)) continue;

@@ -4,13 +4,17 @@
 // file; the page loads in headless Chromium like the reports. Sweep rows and tolerance
 // lookup are checked on results data directly.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -72,12 +76,35 @@ std::vector<std::string> table_cases(const std::string& md, const std::string& h
   return names;
 }
 
-// Runs made once for the suite: a base and a second run of the same cases (placement
-// example 3 without frames, the pendulum with frames), and derived folders.
+// what the shared runs were made from: the binary and the bundled case files used
+std::string input_stamp() {
+  std::ostringstream os;
+  for (const fs::path& p : {fs::path(ARMSTUDY_BINARY), kCases / "placement-example-3.yaml",
+                            kCases / "placement-example-5.yaml", kCases / "pendulum.yaml"})
+    os << p.string() << ' ' << fs::last_write_time(p).time_since_epoch().count() << '\n';
+  return os.str();
+}
+
+// Runs shared by the tests (ctest runs each test in its own process), made once per input
+// change under a file lock: a base and a second run of the same cases (placement example 3
+// without frames, the pendulum with frames), and folders derived from them.
 class Diff : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    root_ = armstudy::testing::fresh_dir("diff_e2e");
+    root_ = fs::path(ARMSTUDY_BINARY).parent_path() / "diff_e2e";
+    fs::create_directories(root_);
+    const int lock = ::open((root_.parent_path() / "diff_e2e.lock").c_str(), O_CREAT | O_RDWR, 0644);
+    ASSERT_GE(lock, 0);
+    ::flock(lock, LOCK_EX);
+    const std::string stamp = input_stamp();
+    if (slurp(root_ / "stamp") != stamp) make_runs();
+    ::flock(lock, LOCK_UN);
+    ::close(lock);
+  }
+
+  static void make_runs() {
+    fs::remove_all(root_);
+    fs::create_directories(root_);
     auto run_into = [](const fs::path& out, const std::string& files, bool render) {
       const CliRun r = cli("run " + files + " --out " + q(out) + (render ? "" : " --no-render"));
       ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -86,7 +113,7 @@ class Diff : public ::testing::Test {
       run_into(root_ / name, q(kCases / "placement-example-3.yaml"), false);
       run_into(root_ / name, q(kCases / "pendulum.yaml"), true);
     }
-    // the same case with a longer motion (1.1 s instead of 1 s): every energy drops
+    // the same case with a slower motion (1.1 s instead of 1 s): every energy drops
     std::string yaml = slurp(kCases / "placement-example-3.yaml");
     const std::string from = "duration_s: 1.0", to = "duration_s: 1.1";
     ASSERT_NE(yaml.find(from), std::string::npos);
@@ -99,6 +126,7 @@ class Diff : public ::testing::Test {
     fs::create_directories(root_ / "mixed");
     fs::copy(root_ / "longer/placement-example-3", root_ / "mixed/placement-example-3", fs::copy_options::recursive);
     run_into(root_ / "mixed", q(kCases / "placement-example-5.yaml"), false);
+    write_text(root_ / "stamp", input_stamp());
   }
 
   static fs::path out(const std::string& tag) { return root_ / ("diff-" + tag); }
@@ -384,6 +412,12 @@ TEST(DiffTolerances, LookupOrderPatternsAndRunTimes) {
   EXPECT_EQ(t.lookup("throwing", "idp_run_time_s").rel, 0.5);
   EXPECT_THROW(armstudy::app::load_diff_tolerances((f.parent_path() / "none.yaml").string()),
                armstudy::cases::CaseErrors);
+  // the CI example's file reads
+  const auto ci = armstudy::app::load_diff_tolerances(
+      (fs::path(ARMSTUDY_SOURCE_DIR) / "examples/ci/diff-tolerances.yaml").string());
+  EXPECT_EQ(ci.pixel_channel, 8);
+  EXPECT_TRUE(ci.lookup("throwing", "idp_run_time_s").ignore);
+  EXPECT_EQ(ci.lookup("throwing", "energy_idp_J").rel, 1e-5);
 }
 
 }  // namespace
