@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cases/case_error.hpp"
+#include "cli/diff.hpp"
 #include "cli/merge.hpp"
 #include "cli/pipeline.hpp"
 #include "cli/sweep.hpp"
@@ -340,6 +341,22 @@ int main(int argc, char** argv) {
       "merge", "Build index.html, summary.md, junit.xml, sweep tables and the sweep report (sweep/index.html) from the results.json of output folders");
   merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
   merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
+  armstudy::app::DiffOptions diff_options;
+  std::string diff_base, diff_new, diff_out = diff_options.out.string();
+  auto* diff = app.add_subcommand(
+      "diff", "What changed between two output folders of run or merge (diff.html, diff.md); exit 0 "
+              "when nothing moved beyond its tolerance, 1 when something did, 2 on bad input");
+  diff->add_option("base", diff_base, "The base output folder (e.g. the main branch's reports)")->required();
+  diff->add_option("new", diff_new, "The new output folder (e.g. the pull request's reports)")->required();
+  diff->add_option("--out", diff_out, "Where to write diff.html and diff.md")->capture_default_str();
+  diff->add_option("--tolerances", diff_options.tolerances_file,
+                   "YAML file of tolerances per study and key figure (default: exact, run times ignored)");
+  diff->add_option("--pixel-tolerance", diff_options.pixel_tolerance,
+                   "A pixel differs when a channel differs by more than this (0-255; default 0 or the "
+                   "tolerances file's frames.channel)")->check(CLI::Range(0, 255));
+  diff->add_option("--pixels", diff_options.pixels_allowed,
+                   "Pixels beyond the pixel tolerance a frame may have and still match (default 0 or "
+                   "frames.pixels)");
   auto* validate = app.add_subcommand("validate", "Check case files without running them");
   validate->add_option("cases", validate_paths, "Case files (YAML)")->required();
   validate->add_flag("--allow-large", allow_large, allow_large_help);
@@ -355,6 +372,12 @@ int main(int argc, char** argv) {
     if (*expand) return cmd_sweep_expand(sweep_file, sweep_out);
     if (*list) return cmd_list(list_items, list_json);
     if (*merge) return cmd_merge(merge_dirs, merge_out);
+    if (*diff) {
+      diff_options.base = diff_base;
+      diff_options.now = diff_new;
+      diff_options.out = diff_out;
+      return armstudy::app::run_diff(diff_options);
+    }
     options.out_dir = out_dir;
     options.render = !no_render;
     return cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large);

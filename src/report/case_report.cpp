@@ -222,7 +222,7 @@ mus::data table_data(const Table& t) {
                                                                        static_cast<unsigned char>(ch)); });
       cell.set("swatch", ok ? sw.substr(1) : "");
       cell.set("has_swatch", ok);
-      cell.set("failed", t.rows[r][c] == "FAILED");
+      cell.set("failed", t.rows[r][c] == "FAILED" || t.rows[r][c] == "BEYOND");
       cells << cell;
     }
     row.set("cells", cells);
@@ -238,7 +238,7 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("case_name", info.name);
   d.set("study", page.study);
   d.set("status", page.status);
-  d.set("solved", page.status == "solved");
+  d.set("solved", page.status_ok.value_or(page.status == "solved"));
   d.set("message", page.message);
   d.set("description", page.description);
   d.set("has_description", !page.description.empty());
@@ -301,6 +301,17 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("toc", toc);
   d.set("sections", sections);
   d.set("case_sha256", info.sha256);
+  d.set("has_sha256", !info.sha256.empty());
+  mus::data links{mus::data::type::list};
+  for (size_t k = 0; k < page.links.size(); ++k) {
+    mus::data l;
+    l.set("label", page.links[k].first);
+    l.set("href", page.links[k].second);
+    l.set("first", k == 0);
+    links << l;
+  }
+  d.set("links", links);
+  d.set("has_links", !page.links.empty());
   d.set("data_link", "results.json");
   return d;
 }
@@ -368,11 +379,11 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
 }
 
 void write_page(const fs::path& dir, const CasePage& page, const cases::CaseInfo& info,
-                const std::string& data_link) {
+                const std::string& data_link, const std::string& file_name) {
   copy_stylesheet(dir);
   mus::data d = page_data(page, info);
   if (!data_link.empty()) d.set("data_link", data_link);
-  write_text(dir / "index.html", render_template("case.html", d));
+  write_text(dir / file_name, render_template("case.html", d));
 }
 
 int write_index(const fs::path& out_dir) {

@@ -26,11 +26,12 @@ void write_case_report(const std::filesystem::path& dir, const cases::CaseInfo& 
 
 struct CasePage;
 
-/// Writes `page` as `dir`/index.html (with report.css) through the case template; the
-/// header links to `data_link` (default: the case's results.json).
+/// Writes `page` as `dir`/`file_name` (with report.css) through the case template; the
+/// header links to `data_link` (default: the case's results.json) unless page.links is set.
 /// @throws std::runtime_error when a template is missing or a file cannot be written.
 void write_page(const std::filesystem::path& dir, const CasePage& page,
-                const cases::CaseInfo& info, const std::string& data_link = "");
+                const cases::CaseInfo& info, const std::string& data_link = "",
+                const std::string& file_name = "index.html");
 
 /// Writes `out_dir`/index.html (and its report.css): one row per case folder in out_dir that
 /// holds a results.json (folders starting with '.' are skipped), sorted by name, with the

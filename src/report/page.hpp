@@ -5,6 +5,7 @@
 /// HTML-escaped there.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,10 @@ struct CasePage {
   std::string description;
   std::vector<std::pair<std::string, std::string>> key_figures;  ///< for the header and index
   std::vector<Section> sections;
+  /// Header links (label, href); empty: "All cases" (../index.html) and the data link.
+  std::vector<std::pair<std::string, std::string>> links;
+  /// Whether the status badge is good news; unset: status == "solved".
+  std::optional<bool> status_ok;
 };
 
 /// Writes the figures of one page into its folder with stable, ordered names

@@ -24,42 +24,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testing/browser.hpp"
 #include "testing/files.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 
+using armstudy::testing::chromium;
+using armstudy::testing::file_url;
+using armstudy::testing::ink_fraction_png;
+using armstudy::testing::quote;
+using armstudy::testing::run;
 using armstudy::testing::slurp;
-
-// runs a shell command, returns its exit status; stdout and stderr go to files
-int run(const std::string& cmd) {
-  const int rc = std::system(cmd.c_str());
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-}
-
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-const char* kChromiumFlags =
-    " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
-    " --disable-background-networking --disable-component-update --disable-sync"
-    " --disable-extensions --hide-scrollbars";
-
-// a chromium run with its own fresh profile; returns the exit status
-int chromium(const std::string& args, const fs::path& work, const std::string& tag) {
-  const fs::path profile = work / ("profile-" + tag);
-  fs::remove_all(profile);
-  const std::string cmd = "chromium" + std::string(kChromiumFlags) +
-                          " --user-data-dir=" + quote(profile.string()) + " " + args;
-  const int rc = run(cmd);
-  fs::remove_all(profile);
-  return rc;
-}
-
-std::string file_url(const fs::path& p) { return "file://" + fs::absolute(p).string(); }
 
 // the case names of the bundled case files ("name:" at the top level)
 std::vector<std::string> bundled_case_names() {
@@ -79,26 +55,6 @@ std::vector<std::string> bundled_case_names() {
   }
   std::sort(names.begin(), names.end());
   return names;
-}
-
-// share of pixels that are not (near) white, over an RGBA image read with libpng
-double ink_fraction_png(const fs::path& png, size_t* distinct_colours) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&image, png.c_str())) return -1;
-  image.format = PNG_FORMAT_RGBA;
-  std::vector<png_byte> px(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, px.data(), 0, nullptr)) return -1;
-  size_t ink = 0;
-  std::set<uint32_t> colours;
-  const size_t n = static_cast<size_t>(image.width) * image.height;
-  for (size_t i = 0; i < n; ++i) {
-    const png_byte* p = &px[4 * i];
-    if (p[0] < 235 || p[1] < 235 || p[2] < 235) ++ink;
-    if (colours.size() < 100000) colours.insert((p[0] << 16) | (p[1] << 8) | p[2]);
-  }
-  *distinct_colours = colours.size();
-  return n ? static_cast<double>(ink) / n : -1;
 }
 
 // share of dark pixels of a binary PGM (P5) page from pdftoppm -gray

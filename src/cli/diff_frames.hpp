@@ -1,0 +1,25 @@
+#pragma once
+/// Frames of two runs compared pixel by pixel, with a difference image.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+#include "report/diff_report.hpp"
+
+namespace armstudy::app {
+
+/// Compares base/<file> with now/<file>. Byte-identical files are identical; otherwise both
+/// are decoded and every pixel with a channel differing by more than `channel_tolerance`
+/// (0-255) is counted; a frame is beyond when that count exceeds `pixels_allowed` (or the
+/// sizes differ). When the files differ, copies of both and a difference image (the base
+/// faded to grey, the pixels beyond in red, their bounding box outlined in magenta) are
+/// written to out_dir/<copy_prefix>{base,new,diff}_<file name>, named in the result
+/// relative to out_dir. A frame that cannot be read is a FrameDiff with `error` set (and
+/// beyond). @throws scene::SceneError when a copy or the difference image cannot be written.
+report::FrameDiff compare_frame(const std::filesystem::path& base, const std::filesystem::path& now,
+                                const std::string& file, int channel_tolerance,
+                                std::size_t pixels_allowed, const std::filesystem::path& out_dir,
+                                const std::string& copy_prefix);
+
+}  // namespace armstudy::app
