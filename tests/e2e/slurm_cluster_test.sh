@@ -214,6 +214,15 @@ same_tables out-1
 slurm_seconds=$(calc "$t1 - $t0")
 echo "1. array of $tasks tasks + afterok merge: tables equal the unsharded run"
 overhead "Slurm array of $tasks tasks + merge job" "$slurm_seconds"
+epoch() { date -d "$1" +%s; }
+busy=0
+while read -r st en; do busy=$((busy + $(epoch "$en") - $(epoch "$st"))); done < <(
+  paste -d' ' <(field "$jid" StartTime) <(field "$jid" EndTime))
+printf '  scheduling: first task started %d s after submission, the merge %d s after the last task ended;\n' \
+  "$(($(epoch "$(field "$jid" StartTime | sort | head -n 1)") - ${t0%.*}))" \
+  "$(($(epoch "$(field "$mid" StartTime)") - $(epoch "$(field "$jid" EndTime | sort | tail -n 1)")))"
+printf '  the %d tasks ran %d s in all on 2 CPUs (1 s clock), the daemons used %s s of CPU so far\n' "$tasks" "$busy" \
+  "$(calc "$(cat /proc/{"$ctld_pid","$slurmd_pid","$munged_pid"}/stat | awk '{ t += $14 + $15 } END { print t }') / $(getconf CLK_TCK)")"
 
 # --- 2. a running task re-queued (scontrol requeue) -----------------------------------
 submit out-2 "$big"
