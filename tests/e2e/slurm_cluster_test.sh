@@ -17,7 +17,7 @@ set -euo pipefail
 src=$1
 armstudy=$(realpath "$2")
 . "$src/tests/e2e/slurm_ssh_common.sh"
-need_root "the Slurm cluster test" munged slurmctld slurmd sbatch squeue scontrol scancel python3
+need_root "the Slurm cluster test" munged slurmctld slurmd sbatch squeue scontrol scancel parallel python3
 make_work
 
 cases=48   # cases of the bundled sweep (every 4th), in
@@ -213,7 +213,7 @@ last_start=$(field "$jid" StartTime | sort | tail -n 1)
 same_tables out-1
 slurm_seconds=$(calc "$t1 - $t0")
 echo "1. array of $tasks tasks + afterok merge: tables equal the unsharded run"
-overhead "Slurm array of $tasks tasks + merge job" "$slurm_seconds"
+overhead "Slurm array of $tasks tasks + merge job" "$slurm_seconds" "$tasks"
 epoch() { date -d "$1" +%s; }
 busy=0
 while read -r st en; do busy=$((busy + $(epoch "$en") - $(epoch "$st"))); done < <(

@@ -38,6 +38,7 @@ make_work() {
   work=$(mktemp -d)
   chmod 711 "$work"
   touch "$work/.started"
+  export PARALLEL_HOME=$work/parallel TMPDIR=$work  # GNU Parallel's files stay in here
 }
 
 # make_cases COUNT: the bundled sweep expanded into $work/all, every k-th case (sorted by
@@ -70,15 +71,27 @@ local_run() {
   seconds=$(calc "$t1 - $t0")
 }
 
-# overhead WAY SECONDS: WAY's wall time against the local runs before and after it (the
-# machine may be shared: the two local runs show how much its load drifted meanwhile)
+# overhead WAY SECONDS SHARDS: WAY's wall time against (a) the unsharded local run (--jobs
+# 2) before it and once more after it (the machine may be shared: the two show how much
+# its load drifted meanwhile) and (b) the same SHARDS run as local processes by GNU
+# Parallel -j2 (what WAY does, without the scheduler or ssh)
 overhead() {
   local_run one-again
   same_tables "$work/one-again"
-  local mean
+  local mean t0 t1 sharded
   mean=$(calc "($local_seconds + $seconds) / 2")
-  printf 'throughput, %d cases: local run + merge %.1f s before, %.1f s after; %s %.1f s: %.2f x the local time (%.1f vs %.1f cases/s)\n' \
-    "$cases" "$local_seconds" "$seconds" "$1" "$2" "$(calc "$2 / $mean")" "$(calc "$cases / $2")" "$(calc "$cases / $mean")"
+  t0=$(now)
+  parallel -j2 "$armstudy" run "$work/sweep-cases" --no-render --out "$work/par-local" --shard {}/"$3" \
+    ::: $(seq 0 $(($3 - 1))) 2>"$work/par-local.log" && "$armstudy" merge "$work/par-local" 2>>"$work/par-local.log" ||
+    { tail "$work/par-local.log"; fail "local GNU Parallel run"; }
+  t1=$(now)
+  same_tables "$work/par-local"
+  sharded=$(calc "$t1 - $t0")
+  printf 'throughput, %d cases: %s %.1f s (%.1f cases/s)\n' "$cases" "$1" "$2" "$(calc "$cases / $2")"
+  printf '  %.2f x the unsharded local run + merge (%.1f s before, %.1f s after)\n' \
+    "$(calc "$2 / $mean")" "$local_seconds" "$seconds"
+  printf '  %.2f x its %d shards as local processes, GNU Parallel -j2, + merge (%.1f s)\n' \
+    "$(calc "$2 / $sharded")" "$3" "$sharded"
 }
 
 # same_tables DIR: DIR's merged sweep tables equal the unsharded run's byte for byte

@@ -87,9 +87,8 @@ wait_for 20 "sshd up on port $port" ssh -F "$ssh_dir/config" "$node" true ||
 
 make_cases "$cases"
 
-# GNU Parallel: ssh with this test's config (a site's ~/.ssh/config does the same), its
-# own files in the temporary folder
-export PARALLEL_SSH="ssh -F $ssh_dir/config" PARALLEL_HOME=$work/parallel TMPDIR=$work
+# GNU Parallel: ssh with this test's config (a site's ~/.ssh/config does the same)
+export PARALLEL_SSH="ssh -F $ssh_dir/config"
 logins_before=$(grep -c 'Accepted publickey' "$ssh_dir/sshd.log" || true)
 cd "$work"
 t0=$(now)
@@ -104,7 +103,7 @@ logins=$(($(grep -c 'Accepted publickey' "$ssh_dir/sshd.log") - logins_before))
 same_tables sweep-out
 ssh_seconds=$(calc "$t1 - $t0")
 echo "GNU Parallel, $shards shards over $logins ssh logins to $node (port $port): tables equal the unsharded run"
-overhead "GNU Parallel over ssh, 2 slots, $shards shards + merge" "$ssh_seconds"
+overhead "GNU Parallel over ssh, 2 slots, $shards shards + merge" "$ssh_seconds" "$shards"
 t0=$(now)
 for i in 1 2 3 4 5; do ssh -F "$ssh_dir/config" "$node" true; done
 printf '  an ssh login that runs nothing takes %.0f ms (mean of 5)\n' "$(calc "($(now) - $t0) * 200")"
