@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +24,7 @@
 
 #include "cases/case_error.hpp"
 #include "cli/diff.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/merge.hpp"
 #include "cli/pipeline.hpp"
 #include "cli/sweep.hpp"
@@ -54,6 +57,12 @@ bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* ou
       if (auto it = names.find(c.info.name); it != names.end()) {
         std::fprintf(stderr, "%s: case name '%s' is also the name of %s; expected unique names\n",
                      p.c_str(), c.info.name.c_str(), it->second.c_str());
+        ok = false;
+        continue;
+      }
+      if (const char* clash = armstudy::app::run_level_file(c.info.name)) {
+        std::fprintf(stderr, "%s: case name '%s' is the name of %s, which armstudy writes beside the "
+                             "case folders; expected another name\n", p.c_str(), c.info.name.c_str(), clash);
         ok = false;
         continue;
       }
@@ -92,14 +101,21 @@ bool parse_shard(const std::string& text, int* index, int* count) {
   return *count >= 1 && *index >= 0 && *index < *count;
 }
 
-// true if out_dir/<name>/results.json exists for the same case file contents
-bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c) {
+// true if out_dir/<name>/results.json is what this run would write again: the same case
+// file contents, armstudy version and commit, and render option, and the case passed (a
+// failed case is always redone). A missing report.pdf is printed by finish_reports.
+bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c, const armstudy::app::RunOptions& options) {
   const auto rj = out_dir / c.info.name / "results.json";
   if (!std::filesystem::exists(rj)) return false;
   try {
     std::ifstream in(rj);
     const auto j = nlohmann::json::parse(in);
-    return j.value("/case/sha256"_json_pointer, std::string()) == c.info.sha256;
+    const std::string commit = armstudy::git_commit();
+    return j.value("/case/sha256"_json_pointer, std::string()) == c.info.sha256 &&
+           j.value("armstudy_version", std::string()) == armstudy::kVersion &&
+           j.value("git_commit", std::string()) == commit &&
+           j.value("/run_options/render"_json_pointer, !options.render) == options.render &&
+           armstudy::app::case_passed(j);
   } catch (const std::exception&) {
     return false;
   }
@@ -134,19 +150,24 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     cases = std::move(mine);
   }
   // what killed runs on this host left behind (hidden temporary folders and files)
-  if (const size_t stale = armstudy::app::remove_stale_outputs(options.out_dir))
-    std::fprintf(stderr, "removed %zu temporary folder(s) or file(s) of killed runs in %s\n", stale,
-                 options.out_dir.c_str());
+  {
+    const auto stale = armstudy::app::remove_stale_outputs(options.out_dir);
+    for (const auto& folder : stale.restored)
+      std::fprintf(stderr, "put back %s, the earlier report a killed run had moved aside\n", folder.c_str());
+    if (stale.removed)
+      std::fprintf(stderr, "removed %zu temporary folder(s) or file(s) of killed runs in %s\n",
+                   stale.removed, options.out_dir.c_str());
+  }
   if (!force) {
     std::vector<LoadedCase> todo;
     size_t skipped = 0;
     for (auto& c : cases) {
-      if (already_done(options.out_dir, c)) ++skipped;
+      if (already_done(options.out_dir, c, options)) ++skipped;
       else todo.push_back(std::move(c));
     }
     if (skipped)
-      std::fprintf(stderr, "skipped %zu case(s) whose output exists for the same case file "
-                           "(--force redoes them)\n", skipped);
+      std::fprintf(stderr, "skipped %zu case(s) whose output exists and passed for the same case "
+                           "file, armstudy version and options (--force redoes them)\n", skipped);
     cases = std::move(todo);
   }
   armstudy::app::ProgressReporter progress(stderr, armstudy::app::stderr_is_terminal());
@@ -253,6 +274,19 @@ int cmd_list(const std::vector<std::string>& items, bool as_json) {
 
 int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
   std::vector<std::filesystem::path> ds(dirs.begin(), dirs.end());
+  bool missing = false;
+  for (const auto& d : ds) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(d, ec)) {
+      std::fprintf(stderr, "armstudy merge: %s: %s; expected an output folder of 'armstudy run'\n",
+                   d.c_str(), std::filesystem::exists(d, ec) ? "not a folder" : "no such folder");
+      missing = true;
+    }
+  }
+  if (missing) {
+    std::fprintf(stderr, "nothing was written\n");
+    return kExitBadInput;
+  }
   if (out.empty()) out = dirs.front();
   std::vector<std::string> warnings;
   const auto outputs = armstudy::app::collect_outputs(ds, &warnings);
@@ -285,6 +319,7 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  armstudy::app::install_interrupt_cleanup();  // first: every thread inherits its signal mask
   CLI::App app{"armstudy: energy-optimal placement, throwing and time-optimal studies of planar "
                "robot arms, from YAML case files to MuJoCo-rendered reports"};
   app.set_version_flag("--version", std::string("armstudy ") + armstudy::kVersion);
@@ -367,22 +402,30 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);  // prints help, version or the error
     return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success) ? 0 : (code ? kExitBadInput : 0);
   }
+  int code = kExitRuntime;
   try {
-    if (*validate) return cmd_validate(validate_paths, allow_large);
-    if (*expand) return cmd_sweep_expand(sweep_file, sweep_out);
-    if (*list) return cmd_list(list_items, list_json);
-    if (*merge) return cmd_merge(merge_dirs, merge_out);
-    if (*diff) {
+    if (*validate) code = cmd_validate(validate_paths, allow_large);
+    else if (*expand) code = cmd_sweep_expand(sweep_file, sweep_out);
+    else if (*list) code = cmd_list(list_items, list_json);
+    else if (*merge) code = cmd_merge(merge_dirs, merge_out);
+    else if (*diff) {
       diff_options.base = diff_base;
       diff_options.now = diff_new;
       diff_options.out = diff_out;
-      return armstudy::app::run_diff(diff_options);
+      code = armstudy::app::run_diff(diff_options);
+    } else {
+      options.out_dir = out_dir;
+      options.render = !no_render;
+      code = cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large);
     }
-    options.out_dir = out_dir;
-    options.render = !no_render;
-    return cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: internal error: %s\n", e.what());
-    return kExitRuntime;
+    code = kExitRuntime;
   }
+  // every write to standard output checked: `list --json > /dev/full` is a failure
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::fprintf(stderr, "armstudy: cannot write to standard output: %s\n", std::strerror(errno));
+    code = std::max(code, kExitRuntime);
+  }
+  return code;
 }

@@ -1,10 +1,12 @@
 #include "cli/merge.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "cli/run_case.hpp"
 #include "report/number_format.hpp"
@@ -50,7 +52,14 @@ std::string expected_status(const json& r) { return r.value("/case/expect"_json_
 // the case ended as it expects
 bool status_as_expected(const json& r) { return r.value("status", "") == expected_status(r); }
 
+// a check's or key figure's number; NaN for null (how JSON writes a NaN) or a missing one
+double number(const json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_number() ? it->get<double>() : std::nan("");
+}
+
 std::string failure_text(const json& r) {
+  if (r.value("status", "") == "unreadable") return r.value("message", std::string());
   if (!status_as_expected(r) && expected_status(r) == "unsolvable")
     return "solved, but the case expects it to be unsolvable";
   if (!status_as_expected(r)) return "could not be solved: " + r.value("message", std::string());
@@ -58,8 +67,8 @@ std::string failure_text(const json& r) {
   for (const auto& c : r.value("checks", json::array()))
     if (!c.value("passed", false))
       s += (s.empty() ? "failed checks: " : ", ") + c.value("name", std::string()) + " (" +
-           report::format_sig(c.value("value", 0.0), 4) + " > " +
-           report::format_sig(c.value("tolerance", 0.0), 4) + ")";
+           report::format_sig(number(c, "value"), 4) + " > " +
+           report::format_sig(number(c, "tolerance"), 4) + ")";
   return s;
 }
 
@@ -88,7 +97,92 @@ std::optional<double> figure(const json& r, const std::string& name) {
   return std::nullopt;
 }
 
+const char* type_name(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::string: return "a string";
+    case json::value_t::array: return "an array";
+    case json::value_t::object: return "an object";
+    case json::value_t::discarded: return "nothing";
+    default: return "a number";
+  }
+}
+
+enum class Want { kString, kBool, kNumberOrNull, kObject, kArray };
+
+// "" if j[key] has the wanted type (or is absent and optional), else "<path>/<key>: expected ..."
+std::string want(const json& j, const std::string& path, const char* key, Want w, bool required = true) {
+  const auto it = j.find(key);
+  if (it == j.end()) return required ? path + "/" + key + ": missing" : "";
+  bool ok = false;
+  const char* what = "";
+  switch (w) {
+    case Want::kString: ok = it->is_string(); what = "a string"; break;
+    case Want::kBool: ok = it->is_boolean(); what = "a boolean"; break;
+    case Want::kNumberOrNull: ok = it->is_number() || it->is_null(); what = "a number"; break;
+    case Want::kObject: ok = it->is_object(); what = "an object"; break;
+    case Want::kArray: ok = it->is_array(); what = "an array"; break;
+  }
+  return ok ? "" : path + "/" + key + ": expected " + what + ", found " + type_name(*it);
+}
+
 }  // namespace
+
+const char* run_level_file(const std::string& name) {
+  for (const char* f : {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"})
+    if (name == f) return f;
+  return nullptr;
+}
+
+std::string results_problem(const json& r) {
+  if (!r.is_object()) return "expected a JSON object, found " + std::string(type_name(r));
+  const auto sv = r.find("schema_version");
+  if (sv == r.end()) return "no schema_version: not an armstudy results.json";
+  if (!sv->is_number_integer() || sv->get<long long>() != 1)
+    return "schema_version " + sv->dump() + " is not one this armstudy reads (1); merge it with the armstudy that wrote it";
+  std::string e;
+  const auto first = [&](std::string p) { if (e.empty()) e = std::move(p); };
+  first(want(r, "", "study", Want::kString));
+  first(want(r, "", "status", Want::kString));
+  first(want(r, "", "message", Want::kString, false));
+  first(want(r, "", "case", Want::kObject));
+  if (!e.empty()) return e;
+  const json& c = r["case"];
+  first(want(c, "/case", "name", Want::kString));
+  first(want(c, "/case", "expect", Want::kString, false));
+  first(want(c, "/case", "sweep", Want::kObject, false));
+  if (e.empty() && c.contains("sweep")) {
+    first(want(c["sweep"], "/case/sweep", "name", Want::kString, false));
+    first(want(c["sweep"], "/case/sweep", "point", Want::kObject));
+    if (e.empty())
+      for (auto it = c["sweep"]["point"].begin(); it != c["sweep"]["point"].end(); ++it)
+        if (!it->is_string()) first("/case/sweep/point/" + it.key() + ": expected a string, found " + type_name(*it));
+  }
+  first(want(r, "", "checks", Want::kArray, false));
+  first(want(r, "", "key_figures", Want::kArray, false));
+  if (!e.empty()) return e;
+  for (const char* list : {"checks", "key_figures"}) {
+    if (!r.contains(list)) continue;
+    size_t i = 0;
+    for (const auto& x : r[list]) {
+      const std::string p = "/" + std::string(list) + "/" + std::to_string(i++);
+      if (!x.is_object()) return p + ": expected an object, found " + type_name(x);
+      first(want(x, p, "name", Want::kString));
+      if (list[0] == 'c') {
+        first(want(x, p, "passed", Want::kBool));
+        first(want(x, p, "value", Want::kNumberOrNull, false));
+        first(want(x, p, "tolerance", Want::kNumberOrNull, false));
+        first(want(x, p, "description", Want::kString, false));
+      } else {
+        first(want(x, p, "value", Want::kNumberOrNull, false));
+        first(want(x, p, "unit", Want::kString, false));
+      }
+      if (!e.empty()) return e;
+    }
+  }
+  return e;
+}
 
 std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::vector<std::string>* warnings) {
   std::map<std::string, CaseOutput> by_name;
@@ -104,18 +198,40 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::
     for (const auto& f : folders) {
       const fs::path rj = f / "results.json";
       if (!fs::exists(rj)) continue;
+      CaseOutput c{f, json()};
+      std::string problem;
       try {
-        std::ifstream in(rj);
-        CaseOutput c{f, json::parse(in)};
-        const std::string n = case_name(c.results);
-        if (by_name.count(n)) {
-          if (warnings) warnings->push_back(rj.string() + ": case '" + n + "' already found in " + by_name[n].folder.string() + "; skipped");
-          continue;
-        }
-        by_name.emplace(n, std::move(c));
+        std::ifstream in(rj, std::ios::binary);
+        if (!in) throw std::runtime_error("cannot open it");
+        c.results = json::parse(in);
+        problem = results_problem(c.results);
+      } catch (const json::parse_error& e) {
+        // "[json.exception.parse_error.101] parse error at line 3, column 1: ..." without the tag
+        std::string what = e.what();
+        if (const size_t at = what.find("] "); at != std::string::npos) what = what.substr(at + 2);
+        problem = "truncated or not JSON (" + what + ")";
       } catch (const std::exception& e) {
-        if (warnings) warnings->push_back(rj.string() + ": unreadable (" + e.what() + "); skipped");
+        problem = e.what();
       }
+      if (!problem.empty()) {
+        // a failed case, named after its folder: CI must not go green on it
+        const std::string reason = rj.string() + ": " + problem;
+        if (warnings) warnings->push_back(reason + "; counted as a failed case");
+        json bad = {{"study", c.results.is_object() && c.results.contains("study") && c.results["study"].is_string()
+                                  ? c.results["study"].get<std::string>() : std::string("unreadable")},
+                    {"case", {{"name", f.filename().string()}}},
+                    {"status", "unreadable"},
+                    {"message", "results.json unreadable: " + reason},
+                    {"checks", json::array()},
+                    {"key_figures", json::array()}};
+        c.results = std::move(bad);
+      }
+      const std::string n = case_name(c.results);
+      if (by_name.count(n)) {
+        if (warnings) warnings->push_back(rj.string() + ": case '" + n + "' already found in " + by_name[n].folder.string() + "; skipped");
+        continue;
+      }
+      by_name.emplace(n, std::move(c));
     }
   }
   std::vector<CaseOutput> out;
@@ -201,8 +317,8 @@ std::string junit_xml(const std::vector<CaseOutput>& cases) {
         tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_escape(ch.value("name", std::string())) << "\"";
         if (!ch.value("passed", false)) {
           ++sf;
-          tc << "><failure message=\"" << xml_escape("value " + report::format_sig(ch.value("value", 0.0), 6) +
-                                                     " exceeds tolerance " + report::format_sig(ch.value("tolerance", 0.0), 6))
+          tc << "><failure message=\"" << xml_escape("value " + report::format_sig(number(ch, "value"), 6) +
+                                                     " exceeds tolerance " + report::format_sig(number(ch, "tolerance"), 6))
              << "\">" << xml_escape(ch.value("description", std::string())) << "</failure></testcase>\n";
         } else {
           tc << "/>\n";

@@ -18,10 +18,22 @@ struct CaseOutput {
 };
 
 /// Every DIR/<case>/results.json under the given folders, sorted by case name (the first
-/// folder wins when a name appears twice). Unreadable files are skipped with a warning
-/// in `warnings`.
+/// folder wins when a name appears twice). A file that cannot be used (truncated, not
+/// JSON, a wrong type, an unknown schema_version) is a failed case named after its folder,
+/// with status "unreadable" and a message naming the file and what is wrong; it is also
+/// reported in `warnings`. A folder that is not there is reported in `warnings` (callers
+/// that take folders from the user check them first).
 std::vector<CaseOutput> collect_outputs(const std::vector<std::filesystem::path>& dirs,
                                         std::vector<std::string>* warnings);
+
+/// Why `results` cannot be merged ("" if it can): an unknown schema_version, or the path
+/// and expected type of the first field merge reads that has another type.
+std::string results_problem(const nlohmann::json& results);
+
+/// The run-level file or folder that an output folder's entry `name` would collide with
+/// (index.html, summary.md, junit.xml, report.css, sweep, sweep.csv, sweep.json), or
+/// nullptr: no case may have such a name.
+const char* run_level_file(const std::string& name);
 
 /// True if the case ended as its file expects (solved, unless it says `expect: unsolvable`)
 /// and every one of its checks passed.

@@ -1,6 +1,7 @@
 #include "cli/run_case.hpp"
 
-#include <signal.h>
+#include <fcntl.h>
+#include <stdio.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -18,21 +19,14 @@
 #include "cli/provenance.hpp"
 #include "scene/osmesa_context.hpp"
 #include "report/case_report.hpp"
+#include "report/scratch_dir.hpp"
 #include "version.hpp"
 
 namespace armstudy::app {
 namespace fs = std::filesystem;
 
 void write_file_atomic(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp-" + process_tag());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
+  report::write_file_atomic(path, text);
 }
 
 nlohmann::json results_header(const cases::CaseInfo& info, studies::Status status,
@@ -63,56 +57,70 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
   return j;
 }
 
+std::string process_tag() { return report::process_tag(); }
+
+report::StaleCleanup remove_stale_outputs(const fs::path& out_dir) {
+  return report::remove_stale_scratch(out_dir);
+}
+
 namespace {
-// a process that is gone, or a zombie nobody has reaped yet (kill(pid, 0) still succeeds)
-bool process_gone(pid_t pid) {
-  if (::kill(pid, 0) != 0) return errno == ESRCH;
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(stat, line)) return false;
-  const size_t paren = line.rfind(')');
-  return paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] == 'Z';
-}
-}  // namespace
 
-std::string process_tag() {
-  char host[256] = {0};
-  if (::gethostname(host, sizeof host - 1) != 0 || !host[0]) std::snprintf(host, sizeof host, "host");
-  std::string h;
-  for (const char* c = host; *c; ++c) h += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '.') ? *c : '_';
-  return h + "-" + std::to_string(::getpid());
-}
+bool exchange_unsupported(int e) { return e == EINVAL || e == ENOSYS || e == EOPNOTSUPP; }
 
-size_t remove_stale_outputs(const fs::path& out_dir) {
+// Puts the complete folder `fresh` at `target`, where an earlier report may be. Where the
+// file system can (ext4, xfs, btrfs, tmpfs), both are exchanged in one step
+// (renameat2 RENAME_EXCHANGE), so `target` is never missing; elsewhere (NFS) the earlier
+// report first moves to `old_slot` in the scratch folder, which a later run (or this one's
+// signal clean-up) moves back if a kill comes between the two renames.
+void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::path& old_slot) {
   std::error_code ec;
-  if (!fs::is_directory(out_dir, ec)) return 0;
-  const std::string mine = process_tag();
-  const std::string host = mine.substr(0, mine.rfind('-') + 1);  // "<host>-"
-  size_t removed = 0;
-  for (const auto& e : fs::directory_iterator(out_dir, ec)) {
-    const std::string f = e.path().filename().string();
-    if (f.empty() || f[0] != '.') continue;
-    for (const char* kind : {".tmp-", ".old-"}) {
-      const size_t at = f.rfind(kind);
-      if (at == std::string::npos || f.compare(at + 5, host.size(), host) != 0) continue;
-      const std::string pid_text = f.substr(at + 5 + host.size());
-      if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
-      const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
-      if (pid != ::getpid() && process_gone(pid)) removed += fs::remove_all(e.path(), ec) > 0;
+  std::lock_guard<std::mutex> lock(report::swap_mutex());
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    if (::renameat2(AT_FDCWD, fresh.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) {
+      fs::remove_all(fresh, ec);  // now the earlier report
+      return;
     }
+    int e = errno;
+    if (e == ENOENT) {  // no earlier report
+      if (::rename(fresh.c_str(), target.c_str()) == 0) return;
+      e = errno;
+      if (e == EEXIST || e == ENOTEMPTY) continue;  // another run put one there meanwhile
+      throw std::runtime_error(report::system_error_text("move the new report to", target, e));
+    }
+    if (!exchange_unsupported(e))
+      throw std::runtime_error(report::system_error_text("move the new report to", target, e));
+    fs::create_directories(old_slot.parent_path());
+    fs::remove_all(old_slot);
+    if (::rename(target.c_str(), old_slot.c_str()) != 0) {
+      e = errno;
+      if (e == ENOENT) continue;
+      throw std::runtime_error(report::system_error_text("move the earlier report aside from", target, e));
+    }
+    if (::rename(fresh.c_str(), target.c_str()) != 0) {
+      e = errno;
+      ::rename(old_slot.c_str(), target.c_str());  // the earlier report back
+      if (e == EEXIST || e == ENOTEMPTY) continue;
+      throw std::runtime_error(report::system_error_text("move the new report to", target, e));
+    }
+    fs::remove_all(old_slot, ec);
+    return;
   }
-  return removed;
+  throw std::runtime_error("cannot move the new report to " + target.string() +
+                           ": other runs kept replacing the folder");
 }
+
+}  // namespace
 
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   CaseOutcome outcome;
   const fs::path final_dir = options.out_dir / c.info.name;
   outcome.folder = final_dir;
-  const std::string tag = process_tag();
-  const fs::path tmp_dir = options.out_dir / ("." + c.info.name + ".tmp-" + tag);
+  fs::path tmp_dir;
   try {
     fs::create_directories(options.out_dir);
+    const fs::path scratch = report::scratch_dir(options.out_dir);
+    tmp_dir = scratch / "new" / c.info.name;
     fs::remove_all(tmp_dir);
     fs::create_directories(tmp_dir);
 
@@ -126,6 +134,8 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       for (const auto& k : c.run->key_figures())
         kf.push_back({{"name", k.name}, {"value", k.value}, {"unit", k.unit}});
     j["key_figures"] = kf;
+    // what decides whether a later run may keep this output (main.cpp, already_done)
+    j["run_options"] = {{"render", options.render}};
     bool checks_ok = true;
     std::string failed;
     for (const auto& ch : checks) {
@@ -153,16 +163,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     j["files"] = list_files(tmp_dir, "results.json");
     write_file_atomic(tmp_dir / "results.json", j.dump(2) + "\n");
 
-    // swap into place
-    if (fs::exists(final_dir)) {
-      const fs::path old_dir = options.out_dir / ("." + c.info.name + ".old-" + tag);
-      fs::remove_all(old_dir);
-      fs::rename(final_dir, old_dir);
-      fs::rename(tmp_dir, final_dir);
-      fs::remove_all(old_dir);
-    } else {
-      fs::rename(tmp_dir, final_dir);
-    }
+    swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name);
     if (status != studies::Status::kSolved && c.info.expect_unsolvable) {
       outcome.message = "could not be solved, as the case expects: " + c.run->message();
     } else if (status != studies::Status::kSolved) {
@@ -180,7 +181,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     }
   } catch (...) {
     std::error_code ec;
-    fs::remove_all(tmp_dir, ec);
+    if (!tmp_dir.empty()) fs::remove_all(tmp_dir, ec);
     throw;
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -201,12 +202,24 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
           todo.push_back(e.path());
       }
     std::sort(todo.begin(), todo.end());
+    report::remove_stale_profiles();  // what killed runs' browsers left in /tmp
     std::atomic<size_t> next{0};
     std::mutex mu;
     auto worker = [&] {
       for (size_t i = next++; i < todo.size(); i = next++) {
         try {
-          report::print_pdf(todo[i] / "index.html", todo[i] / "report.pdf");
+          // printed in the scratch folder, then renamed into the case folder: a kill never
+          // leaves a half-written report.pdf (or its temporary file) beside the report
+          const fs::path dir = report::scratch_dir(options.out_dir) / "pdf";
+          fs::create_directories(dir);
+          const fs::path printed = dir / (todo[i].filename().string() + ".pdf");
+          report::print_pdf(todo[i] / "index.html", printed);
+          if (::rename(printed.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
+            const int e = errno;
+            std::error_code ec;
+            fs::remove(printed, ec);
+            throw std::runtime_error(report::system_error_text("write", todo[i] / "report.pdf", e));
+          }
         } catch (const std::exception& e) {
           std::lock_guard<std::mutex> lock(mu);
           problems.push_back(todo[i].filename().string() + ": no report.pdf: " + e.what());

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/pipeline.hpp"
+#include "report/scratch_dir.hpp"
 #include "studies/common.hpp"
 
 namespace armstudy::app {
@@ -25,9 +26,9 @@ struct CaseOutcome {
   double seconds = 0;
 };
 
-/// Solves, renders and reports `c` into out_dir/<name>/: the output is built in a
-/// temporary sibling folder and renamed into place only when complete, so a failure
-/// leaves an earlier report untouched and writes nothing half-done. An unsolvable study
+/// Solves, renders and reports `c` into out_dir/<name>/: the output is built in this
+/// process's scratch folder in out_dir and swapped into place only when complete, so a
+/// failure or a kill leaves an earlier report untouched and writes nothing half-done. An unsolvable study
 /// still gets its results.json (status "unsolvable") so CI can read why.
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress);
 
@@ -42,16 +43,15 @@ nlohmann::json results_header(const cases::CaseInfo& info, studies::Status statu
 /// problem (empty: all written).
 std::vector<std::string> finish_reports(const RunOptions& options, int jobs);
 
-/// "<host>-<pid>" of this process: names temporary outputs so that runs on several hosts
-/// sharing one output folder (Slurm, GNU Parallel --sshlogin) never touch each other's.
+/// "<host>-<pid>-<random>" of this process (report::process_tag): names its scratch folder.
 std::string process_tag();
 
-/// Removes what killed runs of this host left in out_dir: hidden `.<name>.tmp-<host>-<pid>`
-/// and `.<name>.old-<host>-<pid>` entries whose process is gone (or is a zombie). Other hosts' entries are left
-/// alone (their processes cannot be checked from here). Returns how many were removed.
-size_t remove_stale_outputs(const std::filesystem::path& out_dir);
+/// Before a run: removes what killed runs left in out_dir (scratch folders whose lock no
+/// live process holds, see report/scratch_dir.hpp), first putting back any earlier report
+/// a kill left in one. Live runs' folders, on this host or any other, are left alone.
+report::StaleCleanup remove_stale_outputs(const std::filesystem::path& out_dir);
 
-/// Writes `text` to `path` through a hidden temporary sibling and a rename.
+/// Writes `text` to `path` through a temporary file and a rename (report::write_file_atomic).
 void write_file_atomic(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace armstudy::app

@@ -29,16 +29,8 @@ std::string read_text(const fs::path& p) {
   return ss.str();
 }
 
-void write_text(const fs::path& p, const std::string& text) {
-  const fs::path tmp = part_path(p);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, p);
-}
+// through a temporary file, removed on failure; the error says why (disk full, ...)
+void write_text(const fs::path& p, const std::string& text) { write_file_atomic(p, text); }
 
 // renders a template of template_dir(); {{x}} escapes html (& < > " '), {{{x}}} is never used
 std::string render_template(const std::string& name, const mus::data& data) {
@@ -399,7 +391,11 @@ int write_index(const fs::path& out_dir) {
       const fs::path rj = e.path() / "results.json";
       if (!fs::exists(rj)) continue;
       try {
-        rows.push_back({name, nlohmann::json::parse(read_text(rj))});
+        auto j = nlohmann::json::parse(read_text(rj));
+        // the fields read below, with the types they must have (else: unreadable)
+        (void)j.value("study", ""), (void)j.value("status", ""), (void)j.value("message", "");
+        (void)j.value("/case/expect"_json_pointer, std::string()), (void)key_figures(j);
+        rows.push_back({name, std::move(j)});
       } catch (const nlohmann::json::exception&) {
         rows.push_back({name, nlohmann::json{{"status", "unreadable results.json"}}});
       }

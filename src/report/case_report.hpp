@@ -65,4 +65,12 @@ std::string find_chromium();
 void print_pdf(const std::filesystem::path& html, const std::filesystem::path& pdf,
                double timeout_s = 120);
 
+/// Kills the process group of every browser printing now and removes their profiles (the
+/// clean-up of a signal; the prints then fail).
+void kill_browsers();
+
+/// Removes the Chromium profiles (`armstudy-chromium-*` in the system's temporary folder)
+/// that no printing process holds locked: what killed runs left. Returns how many.
+size_t remove_stale_profiles();
+
 }  // namespace armstudy::report

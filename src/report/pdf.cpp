@@ -1,18 +1,25 @@
 // html -> pdf through headless chromium, one fresh profile per print
 #include <fcntl.h>
-
-#include "report/part_name.hpp"
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <thread>
+
+#include "report/part_name.hpp"
 
 #include "report/case_report.hpp"
 
@@ -51,12 +58,67 @@ std::string tail_of(const fs::path& log, size_t max_chars) {
   return s;
 }
 
-// removes a folder when it goes out of scope
-struct TempDir {
+constexpr const char* kProfilePrefix = "armstudy-chromium-";
+constexpr const char* kProfileLock = "armstudy.lock";
+
+// the browsers printing now (process group -> profile folder), for a signal's clean-up
+struct Live {
+  std::mutex mu;
+  std::set<pid_t> groups;
+  std::map<std::string, int> profiles;  // profile folder -> its locked lock file
+};
+Live& live() {
+  static Live* l = new Live;  // never destroyed: used by the clean-up of a signal
+  return *l;
+}
+
+// a fresh profile folder under the system's temporary folder, holding a lock file this
+// process keeps locked while it prints: remove_stale_profiles() leaves live ones alone
+struct Profile {
   fs::path path;
-  ~TempDir() {
+  Profile() {
+    std::string tmpl = (fs::temp_directory_path() / (std::string(kProfilePrefix) + "XXXXXX")).string();
+    if (!::mkdtemp(tmpl.data()))
+      throw PdfError(std::string("cannot create a temporary Chromium profile in ") +
+                     fs::temp_directory_path().string() + ": " + std::strerror(errno));
+    path = tmpl;
+    const int fd = ::open((path / kProfileLock).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+    if (fd >= 0) ::flock(fd, LOCK_EX | LOCK_NB);
+    std::lock_guard<std::mutex> lock(live().mu);
+    live().profiles[path.string()] = fd;
+  }
+  Profile(const Profile&) = delete;
+  Profile& operator=(const Profile&) = delete;
+  ~Profile() {
     std::error_code ec;
-    if (!path.empty()) fs::remove_all(path, ec);
+    fs::remove_all(path, ec);
+    std::lock_guard<std::mutex> lock(live().mu);
+    if (auto it = live().profiles.find(path.string()); it != live().profiles.end()) {
+      if (it->second >= 0) ::close(it->second);
+      live().profiles.erase(it);
+    }
+  }
+};
+
+// the browser's process group, killed (and the browser reaped) when this goes out of
+// scope: on success, on a timeout and on an exception alike
+struct BrowserGroup {
+  pid_t pid = -1;
+  bool reaped = false;
+  explicit BrowserGroup(pid_t p) : pid(p) {
+    std::lock_guard<std::mutex> lock(live().mu);
+    live().groups.insert(pid);
+  }
+  BrowserGroup(const BrowserGroup&) = delete;
+  BrowserGroup& operator=(const BrowserGroup&) = delete;
+  ~BrowserGroup() {
+    ::kill(-pid, SIGKILL);  // the browser and any helper process left in its group
+    if (!reaped) {
+      int status = 0;
+      ::waitpid(pid, &status, 0);
+    }
+    std::lock_guard<std::mutex> lock(live().mu);
+    live().groups.erase(pid);
   }
 };
 
@@ -86,9 +148,7 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
   if (!fs::exists(html)) throw PdfError("cannot print " + html.string() + ": no such file");
 
   // a fresh profile: no state shared between prints or with a user's browser
-  std::string tmpl = (fs::temp_directory_path() / "armstudy-chromium-XXXXXX").string();
-  if (!::mkdtemp(tmpl.data())) throw PdfError("cannot create a temporary Chromium profile");
-  TempDir profile{tmpl};
+  Profile profile;
   const fs::path log = profile.path / "chromium.log";
   const fs::path part = part_path(pdf);
 
@@ -113,10 +173,19 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
   fs::remove(part, ec);
 
   // only async-signal-safe calls between fork and exec
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) throw PdfError("cannot start Chromium: fork failed");
   if (pid == 0) {
     ::setpgid(0, 0);
+    // dies with armstudy, even when armstudy is killed with SIGKILL
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
+    // armstudy blocks the termination signals in every thread (its signal thread waits
+    // for them); the browser gets the default behaviour back
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     if (fd >= 0) {
       ::dup2(fd, 1);
@@ -128,22 +197,29 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
     ::_exit(127);
   }
   ::setpgid(pid, pid);
+  BrowserGroup group(pid);
   const auto deadline =
       std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   int status = 0;
   while (true) {
     const pid_t r = ::waitpid(pid, &status, WNOHANG);
     if (r == pid) break;
-    if (r < 0) throw PdfError("lost track of the Chromium process");
+    if (r < 0) {
+      group.reaped = true;
+      fs::remove(part, ec);
+      throw PdfError("lost track of the Chromium process");
+    }
     if (std::chrono::steady_clock::now() > deadline) {
       ::kill(-pid, SIGKILL);  // the browser and its helper processes
       ::waitpid(pid, &status, 0);
+      group.reaped = true;
       fs::remove(part, ec);
       throw PdfError("Chromium did not print " + html.string() + " within " +
                      std::to_string(static_cast<int>(timeout_s)) + " s");
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  group.reaped = true;
   // helper processes of the browser's group that outlived it
   ::kill(-pid, SIGKILL);
   const bool exited_ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
@@ -161,7 +237,44 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
                                       : " (killed by a signal)") +
                    ": " + tail_of(log, 600));
   }
-  fs::rename(part, pdf);
+  if (::rename(part.c_str(), pdf.c_str()) != 0) {
+    const int e = errno;
+    fs::remove(part, ec);
+    throw PdfError(system_error_text("write", pdf, e));
+  }
+}
+
+void kill_browsers() {
+  std::lock_guard<std::mutex> lock(live().mu);
+  for (const pid_t pid : live().groups) ::kill(-pid, SIGKILL);
+  // SIGKILL takes effect on the next return to user space: give it a moment before
+  // removing what the browsers were writing
+  if (!live().groups.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  std::error_code ec;
+  for (const auto& [path, fd] : live().profiles) fs::remove_all(path, ec);
+}
+
+size_t remove_stale_profiles() {
+  std::error_code ec;
+  size_t removed = 0;
+  const fs::path tmp = fs::temp_directory_path(ec);
+  if (ec) return 0;
+  for (const auto& e : fs::directory_iterator(tmp, ec)) {
+    const std::string f = e.path().filename().string();
+    if (f.rfind(kProfilePrefix, 0) != 0 || !e.is_directory(ec)) continue;
+    const int fd = ::open((e.path() / kProfileLock).c_str(), O_RDONLY | O_CLOEXEC);
+    bool stale = false;
+    if (fd >= 0) {
+      stale = ::flock(fd, LOCK_EX | LOCK_NB) == 0;  // nobody prints with it
+    } else {
+      // no lock file: an earlier version's profile, or one being made right now
+      const auto t = fs::last_write_time(e.path(), ec);
+      stale = !ec && fs::file_time_type::clock::now() - t > std::chrono::minutes(10);
+    }
+    if (stale) removed += fs::remove_all(e.path(), ec) > 0;
+    if (fd >= 0) ::close(fd);
+  }
+  return removed;
 }
 
 }  // namespace armstudy::report

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -114,9 +115,12 @@ class Page {
  public:
   Page(const fs::path& svg, int width_pt, int height_pt, int slots)
       : lock_(plplot_mutex()), stream_(std::make_unique<plstream>()), p(*stream_) {
-    tmp_ = part_path(svg).string();
+    // plplot (through cairo) ignores failed writes: it draws into memory here, and the
+    // file is written by write_file_atomic, which says why a write fails (disk full, ...)
+    mem_ = ::open_memstream(&buf_, &len_);
+    if (!mem_) throw std::runtime_error("cannot draw " + svg.string() + ": out of memory");
     p.sdev("svgcairo");
-    p.sfnam(tmp_.c_str());
+    p.sfile(mem_);
     p.spage(0, 0, width_pt, height_pt, 0, 0);
     p.scolbg(kWhite.r, kWhite.g, kWhite.b);
     p.scmap0n(std::max(16, kFirstFreeSlot + slots));
@@ -139,22 +143,16 @@ class Page {
 
   // closes the stream (which writes the file), compacts it and moves it into place
   void finish(const fs::path& svg) {
-    stream_.reset();
-    std::string text;
-    {
-      std::ifstream in(tmp_, std::ios::binary);
-      std::stringstream ss;
-      ss << in.rdbuf();
-      text = ss.str();
-    }
+    stream_.reset();  // plplot closes mem_: buf_ holds the SVG
+    const std::string text = buf_ ? std::string(buf_, len_) : std::string();
     if (text.find("</svg>") == std::string::npos)
-      throw std::runtime_error("plplot wrote no complete SVG to " + tmp_);
-    {
-      std::ofstream out(tmp_, std::ios::binary | std::ios::trunc);
-      out << compact_svg(text);
-      if (!out) throw std::runtime_error("cannot write " + tmp_);
-    }
-    fs::rename(tmp_, svg);
+      throw std::runtime_error("plplot drew no complete SVG for " + svg.string());
+    write_file_atomic(svg, compact_svg(text));
+  }
+
+  ~Page() {
+    stream_.reset();  // (closes mem_ when finish() was not reached)
+    std::free(buf_);
   }
 
  private:
@@ -166,7 +164,9 @@ class Page {
   plstream& p;  // the open stream (valid until finish)
 
  private:
-  std::string tmp_;
+  FILE* mem_ = nullptr;  // plplot's output, closed by plplot
+  char* buf_ = nullptr;
+  size_t len_ = 0;
   PLINT next_ = kFirstFreeSlot;
 };
 

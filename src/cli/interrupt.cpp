@@ -1,0 +1,34 @@
+#include "cli/interrupt.hpp"
+
+#include <signal.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include "report/case_report.hpp"
+#include "report/scratch_dir.hpp"
+
+namespace armstudy::app {
+
+void install_interrupt_cleanup() {
+  static sigset_t set;
+  sigemptyset(&set);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+  if (::pthread_sigmask(SIG_BLOCK, &set, nullptr) != 0) return;
+  std::thread([] {
+    int sig = 0;
+    while (::sigwait(&set, &sig) != 0) {
+    }
+    report::kill_browsers();
+    report::remove_own_scratch();  // waits for a folder swap under way to finish
+    std::fprintf(stderr, "\narmstudy: stopped by %s; unfinished output removed, earlier reports kept\n",
+                 sigabbrev_np(sig) ? (std::string("SIG") + sigabbrev_np(sig)).c_str() : "a signal");
+    std::fflush(stderr);
+    ::_exit(128 + sig);
+  }).detach();
+}
+
+}  // namespace armstudy::app

@@ -1,0 +1,230 @@
+// What armstudy writes when things go wrong: refused case names, failed writes (a
+// read-only folder, a full standard output; a full disk is in fault_injection_test.sh),
+// the skip-if-done key, and merge over broken results.json files. Each test checks the exit code, the message and that nothing
+// was lost or left half-written.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "testing/files.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using armstudy::testing::fresh_dir;
+using armstudy::testing::slurp;
+
+const fs::path kSource = ARMSTUDY_SOURCE_DIR;
+const std::string kBin = ARMSTUDY_BINARY;
+
+struct CmdRun {
+  int exit_code;
+  std::string output;
+};
+
+// `command` through the shell; its stderr (and stdout unless redirected) captured
+CmdRun shell(const std::string& command) {
+  CmdRun r{-1, ""};
+  FILE* p = popen((command + " 2>&1").c_str(), "r");
+  std::array<char, 4096> buf;
+  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+CmdRun armstudy(const std::string& args) { return shell(kBin + " " + args); }
+
+// placement-example-2 (a quick case) under another name
+fs::path write_case(const fs::path& dir, const std::string& name) {
+  std::string text = slurp(kSource / "reports/cases/placement-example-2.yaml");
+  const size_t at = text.find("\nname: ");
+  text.replace(at + 7, text.find('\n', at + 1) - at - 7, name);
+  const fs::path p = dir / (name + ".yaml");
+  std::ofstream(p) << text;
+  return p;
+}
+
+// every file under `dir` (hidden ones included) with its bytes
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
+  return files;
+}
+
+// what a failed or stopped run must never leave: temporary files and scratch folders
+std::string leftovers(const fs::path& dir) {
+  std::string found;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string f = e.path().filename().string();
+    if (f.find(".part") != std::string::npos || f.rfind(".armstudy-", 0) == 0) found += e.path().string() + "\n";
+  }
+  return found;
+}
+
+TEST(OutputSafety, CaseNamesOfRunLevelFilesAreRefusedAtValidate) {
+  const fs::path d = fresh_dir("names_reserved");
+  for (const char* name : {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"}) {
+    const fs::path c = write_case(d, name);
+    const CmdRun r = armstudy("validate " + c.string());
+    EXPECT_EQ(r.exit_code, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.string() + ": case name '" + name + "' is the name of " + name), std::string::npos)
+        << r.output;
+    const CmdRun run = armstudy("run --no-render --out " + (d / "out").string() + " " + c.string());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_FALSE(fs::exists(d / "out")) << "nothing is written for a refused case";
+  }
+  EXPECT_EQ(armstudy("validate " + write_case(d, "sweep-1").string()).exit_code, 0) << "only the exact names";
+  fs::remove_all(d);
+}
+
+TEST(OutputSafety, TwoCasesWithOneNameAreRefusedAtValidate) {
+  const fs::path d = fresh_dir("names_twice");
+  const fs::path a = write_case(d, "twice");
+  fs::copy_file(a, d / "copy.yaml");
+  const CmdRun r = armstudy("validate " + a.string() + " " + (d / "copy.yaml").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("case name 'twice' is also the name of " + a.string()), std::string::npos) << r.output;
+  fs::remove_all(d);
+}
+
+TEST(OutputSafety, AFailedWriteToStandardOutputIsAnError) {
+  const fs::path d = fresh_dir("stdout_full");
+  write_case(d, "listed");
+  for (const char* args : {"list --json ", "list ", "validate "}) {
+    const std::string target = std::string(args) == "validate " ? (d / "listed.yaml").string() : d.string();
+    const CmdRun r = shell("{ " + kBin + " " + args + target + " >/dev/full; }");
+    EXPECT_EQ(r.exit_code, 3) << args << r.output;
+    EXPECT_NE(r.output.find("cannot write to standard output: No space left on device"), std::string::npos)
+        << args << r.output;
+  }
+  EXPECT_EQ(shell(kBin + " list --json " + d.string() + " >/dev/null").exit_code, 0);
+  fs::remove_all(d);
+}
+
+// the skip-if-done key: case file, armstudy version and commit, render option, and passed
+TEST(OutputSafety, SkipIfDoneRedoesACaseWhoseOutputIsStaleOrFailed) {
+  const fs::path d = fresh_dir("skip_key");
+  const fs::path c = write_case(d, "skip-me");
+  const std::string run = "run --no-render --out " + (d / "out").string() + " " + c.string();
+  ASSERT_EQ(armstudy(run).exit_code, 0);
+  const fs::path rj = d / "out/skip-me/results.json";
+  const auto original = nlohmann::json::parse(slurp(rj));
+  EXPECT_EQ(original["run_options"]["render"], false);
+  const CmdRun again = armstudy(run);
+  EXPECT_EQ(again.exit_code, 0);
+  EXPECT_NE(again.output.find("skipped 1 case(s)"), std::string::npos) << again.output;
+
+  const std::map<std::string, std::function<void(nlohmann::json&)>> stale = {
+      {"an older armstudy", [](nlohmann::json& j) { j["armstudy_version"] = "0.0.0"; }},
+      {"another commit", [](nlohmann::json& j) { j["git_commit"] = "0123456789ab"; }},
+      {"made with frames", [](nlohmann::json& j) { j["run_options"]["render"] = true; }},
+      {"no render option", [](nlohmann::json& j) { j.erase("run_options"); }},
+      {"a failed check", [](nlohmann::json& j) { j["checks"][0]["passed"] = false; }},
+      {"unsolved", [](nlohmann::json& j) { j["status"] = "unsolvable"; }},
+  };
+  for (const auto& [what, edit] : stale) {
+    nlohmann::json j = original;
+    edit(j);
+    std::ofstream(rj, std::ios::trunc) << j.dump(2);
+    const CmdRun r = armstudy(run);
+    EXPECT_EQ(r.exit_code, 0) << what << "\n" << r.output;
+    EXPECT_EQ(r.output.find("skipped"), std::string::npos) << what << ": kept a stale report\n" << r.output;
+    const auto redone = nlohmann::json::parse(slurp(rj));
+    EXPECT_EQ(redone["armstudy_version"], original["armstudy_version"]) << what;
+    EXPECT_EQ(redone["status"], "solved") << what;
+    EXPECT_TRUE(redone["checks"][0]["passed"].get<bool>()) << what;
+  }
+  fs::remove_all(d);
+}
+
+TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
+  const fs::path d = fresh_dir("merge_broken");
+  const fs::path out = d / "out";
+  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + write_case(d, "good").string()).exit_code, 0);
+  const std::string good = slurp(out / "good/results.json");
+  auto json_with = [&](const std::function<void(nlohmann::json&)>& edit) {
+    auto j = nlohmann::json::parse(good);
+    edit(j);
+    return j.dump(2);
+  };
+  const std::map<std::string, std::pair<std::string, std::string>> broken = {
+      {"truncated", {good.substr(0, good.size() / 2), "truncated or not JSON"}},
+      {"empty", {"", "truncated or not JSON"}},
+      {"wrong-type", {json_with([](nlohmann::json& j) { j["checks"][0]["passed"] = "yes"; }),
+                      "/checks/0/passed: expected a boolean, found a string"}},
+      {"wrong-name", {json_with([](nlohmann::json& j) { j["case"]["name"] = 7; }),
+                      "/case/name: expected a string, found a number"}},
+      {"future-schema", {json_with([](nlohmann::json& j) { j["schema_version"] = 2; }),
+                         "schema_version 2 is not one this armstudy reads"}},
+  };
+  for (const auto& [name, contents] : broken) {
+    fs::create_directories(out / name);
+    std::ofstream(out / name / "results.json") << contents.first;
+  }
+  const CmdRun r = armstudy("merge " + out.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(5 failed)"), std::string::npos) << r.output;
+  const std::string md = slurp(out / "summary.md"), junit = slurp(out / "junit.xml");
+  EXPECT_EQ(md.rfind("# armstudy: 6 case(s), 5 failed", 0), 0u) << md;
+  for (const auto& [name, contents] : broken) {
+    const std::string file = (out / name / "results.json").string();
+    EXPECT_NE(r.output.find(file + ": " + contents.second), std::string::npos) << name << "\n" << r.output;
+    EXPECT_NE(md.find("| " + name + " |"), std::string::npos) << name << "\n" << md;
+    EXPECT_NE(md.find(contents.second), std::string::npos) << name;
+    EXPECT_NE(junit.find("." + name + "\" name=\"solve\"><failure"), std::string::npos) << name << "\n" << junit;
+  }
+  EXPECT_TRUE(leftovers(out).empty()) << leftovers(out);
+  fs::remove_all(d);
+}
+
+TEST(OutputSafety, MergeOfAMissingFolderIsAnErrorAndCreatesNothing) {
+  const fs::path d = fresh_dir("merge_missing");
+  const CmdRun r = armstudy("merge " + (d / "nope").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find((d / "nope").string() + ": no such folder"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(d / "nope"));
+  std::ofstream(d / "file") << "x";
+  const CmdRun f = armstudy("merge " + (d / "file").string() + " --out " + (d / "out").string());
+  EXPECT_EQ(f.exit_code, 2) << f.output;
+  EXPECT_NE(f.output.find("not a folder"), std::string::npos) << f.output;
+  EXPECT_FALSE(fs::exists(d / "out"));
+  fs::remove_all(d);
+}
+
+// a folder the user may not write into: why, exit 3, nothing written, the report kept
+TEST(OutputSafety, AReadOnlyOutputFolderSaysPermissionDeniedAndWritesNothing) {
+  const fs::path d = fresh_dir("eacces");
+  const fs::path c = write_case(d, "read-only");
+  const fs::path out = d / "out";
+  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
+  std::ofstream(c, std::ios::app) << "# changed\n";
+  const auto before = snapshot(out);
+  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                           fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  fs::permissions(d, fs::perms::all);
+  fs::permissions(c, fs::perms::owner_read | fs::perms::owner_write | fs::perms::others_read);
+  // root may write anywhere: run as nobody then
+  const std::string as_user = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+  const CmdRun r = shell(as_user + kBin + " run --no-render --out " + out.string() + " " + c.string());
+  fs::permissions(out, fs::perms::owner_all, fs::perm_options::add);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find(": Permission denied"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+  EXPECT_TRUE(snapshot(out) == before) << "the read-only folder changed";
+  fs::remove_all(d);
+}
+
+}  // namespace
