@@ -146,21 +146,22 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
 }
 
 Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
-  // IDP: per iteration of each pass, every free stage node (stages - 1) tries `candidates`
-  // profiles, each simulated over stages x steps_per_stage RK4 steps; SLSQP: each
+  // IDP: for each seed, per iteration of each pass (at most max_passes), every free stage
+  // node (stages - 1) tries `candidates` profiles, each simulated over stages x
+  // steps_per_stage RK4 steps; SLSQP: each
   // iteration a central-difference gradient over 2 (stages - 1) rates
   const double steps = double(s.stages) * s.steps_per_stage;
-  const double idp = double(s.idp.passes) * s.idp.iterations * (s.stages - 1.0) * s.idp.candidates;
+  const double idp = double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * (s.stages - 1.0) * s.idp.candidates;
   const double nlopt = s.run_nlopt ? double(s.nlopt.max_evaluations) * (4.0 * (s.stages - 1.0) + 1.0) : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
-  d.keys = "throwing.idp.passes, throwing.idp.iterations, throwing.idp.stages, throwing.idp.candidates, "
+  d.keys = "throwing.idp.seeds, throwing.idp.max_passes, throwing.idp.iterations, throwing.idp.stages, throwing.idp.candidates, "
            "throwing.idp.steps_per_stage and throwing.nlopt.max_evaluations";
   d.unit = "RK4 steps";
   d.work = (idp + nlopt) * steps;
   d.work_budget = 1e9;
   // the recorded iterations and the motions' series
-  d.memory_bytes = double(s.idp.passes) * s.idp.iterations * 1000.0 + steps * 2000.0;
+  d.memory_bytes = double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * 1000.0 + steps * 2000.0;
   char detail[200];
   std::snprintf(detail, sizeof detail, "%.3g IDP and %.3g SLSQP simulations of %.0f RK4 steps",
                 idp, nlopt, steps);
