@@ -52,7 +52,7 @@
 ///     stages: 16                       # P, 2..64
 ///     steps_per_stage: 20              # RK4 steps per stage, 1..400
 ///     iterations: 6                    # per pass, 1..1000
-///     max_passes: 20                   # budget: passes at most, 1..1000
+///     max_passes: 40                   # budget: passes at most, 1..1000
 ///     tolerance: 1.0e-3                # converged: a pass gains less than this (relative)
 ///     quiet_passes: 2                  # ... in this many passes in a row, 1..100
 ///     restore: 0.8                     # region factor between passes, (0, 1]

@@ -42,7 +42,7 @@ namespace armstudy::studies {
 /// last_gain kept).
 struct IdpSettings {
   int iterations = 6;                             ///< iterations (stage sweeps) per pass
-  int max_passes = 20;                            ///< budget: passes at most
+  int max_passes = 40;                            ///< budget: passes at most
   double tolerance = 1e-3;                        ///< relative energy gain of a pass
   int quiet_passes = 2;                           ///< passes in a row below the tolerance
   double restore = 0.8;                           ///< region factor between passes
