@@ -185,6 +185,12 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
               jsonv::sig(th, "energy_initial_J", 5) + " J); IDP saves " +
               jsonv::sig(th, "saving_percent", 3) + " % of it (" +
               jsonv::sig(th, "energy_optimised_J", 5) + " J).";
+      const json& cm = arr(th, "comparison");
+      const double eref = jsonv::num(th, "energy_reference_J");
+      if (cm.size() >= 2 && std::isfinite(eref) && eref != 0)
+        text += " " + jsonv::str(cm[1], "optimiser") + " saves " +
+                format_sig(100 * (eref - jsonv::num(cm[1], "energy_J")) / std::abs(eref), 3) +
+                " % (" + jsonv::sig(cm[1], "energy_J", 5) + " J).";
       res.paragraph(text);
     }
     Table br;
