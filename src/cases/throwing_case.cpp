@@ -115,6 +115,7 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
     s.idp.iterations = i->integer_or("iterations", s.idp.iterations, 1, 1000);
     s.idp.max_passes = i->integer_or("max_passes", s.idp.max_passes, 1, 1000);
     num(*i, "tolerance", s.idp.tolerance, NumberRule::range(1e-9, 0.5, ""));
+    s.idp.quiet_passes = i->integer_or("quiet_passes", s.idp.quiet_passes, 1, 100);
     num(*i, "restore", s.idp.restore, NumberRule::range(1e-3, 1.0, ""));
     s.idp.candidates = i->integer_or("candidates", s.idp.candidates, 1, 200);
     num(*i, "shrink", s.idp.shrink, NumberRule::range(1e-3, 0.999, ""));

@@ -52,8 +52,9 @@
 ///     stages: 16                       # P, 2..64
 ///     steps_per_stage: 20              # RK4 steps per stage, 1..400
 ///     iterations: 6                    # per pass, 1..1000
-///     max_passes: 20                   # budget: passes at most, 1..1000
+///     max_passes: 40                   # budget: passes at most, 1..1000
 ///     tolerance: 1.0e-3                # converged: a pass gains less than this (relative)
+///     quiet_passes: 2                  # ... in this many passes in a row, 1..100
 ///     restore: 0.8                     # region factor between passes, (0, 1]
 ///     candidates: 5                    # R per stage node, 1..200
 ///     shrink: 0.7                      # region factor per iteration, (0, 1)
@@ -63,7 +64,7 @@
 ///   nlopt:
 ///     enabled: true                    # SLSQP beside IDP
 ///     max_evaluations: 400             # budget: SLSQP iterations, 1..10000
-///     max_time_s: 60                   # budget: wall clock, > 0
+///     max_time_s: 900                  # wall-clock safety net (a run ending on it is not converged), > 0
 ///     ftol_rel: 1.0e-6                 # converged: relative energy change below this
 ///     xtol_rel: 1.0e-6                 # or relative rate change below this
 ///     fd_step_rad_s: 1.0e-5            # central-difference step, > 0

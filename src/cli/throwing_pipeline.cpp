@@ -215,7 +215,8 @@ class ThrowingRun final : public StudyRun {
                                r.reference.evaluation.finite ? r.reference.evaluation.violation : INFINITY, 0.0));
     verify("idp", "IDP optimum", r.idp_check);
     converged("idp", "every IDP seed stopped on its tolerance (relative gain of a pass < " +
-                         std::to_string(sp.idp.tolerance) + ") before its budget", r.idp_converged);
+                         std::to_string(sp.idp.tolerance) + ", " + std::to_string(sp.idp.quiet_passes) +
+                         " passes in a row) before its budget", r.idp_converged);
     c.push_back(st::make_check("idp_energy_below_reference",
                                "IDP optimum's energy (J) below the reference's",
                                r.idp.evaluation.energy, r.reference.evaluation.energy * (1 + 1e-12)));
@@ -389,7 +390,8 @@ class ThrowingRun final : public StudyRun {
                                           : 0.5 * (es[es.size() / 2 - 1] + es[es.size() / 2]);
     j["idp"] = {{"stages", spec_.stages}, {"steps_per_stage", spec_.steps_per_stage},
                 {"iterations", is.iterations}, {"max_passes", is.max_passes},
-                {"tolerance", is.tolerance}, {"candidates", is.candidates},
+                {"tolerance", is.tolerance}, {"quiet_passes", is.quiet_passes},
+                {"candidates", is.candidates},
                 {"shrink", is.shrink}, {"restore", is.restore}, {"region_rad_s", arr(is.region)},
                 {"seed", is.seed}, {"seeds", is.seeds}, {"backoff", spec_.backoff},
                 {"threads", r.idp_run.threads}, {"converged", r.idp_converged},

@@ -128,8 +128,9 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       jsonv::str(idp, "candidates") + " candidates per stage node, " +
       jsonv::str(idp, "iterations") + " shrinking iterations (×" + jsonv::str(idp, "shrink") +
       ") per pass, the region restored ×" + jsonv::str(idp, "restore") + " between passes, "
-      "until a whole pass gains less than " + jsonv::sig(idp, "tolerance", 3) +
-      " of the energy (budget " + jsonv::str(idp, "max_passes") + " passes), for " +
+      "until whole passes gain less than " + jsonv::sig(idp, "tolerance", 3) +
+      " of the energy, " + jsonv::str(idp, "quiet_passes") + " in a row (budget " +
+      jsonv::str(idp, "max_passes") + " passes), for " +
       jsonv::str(idp, "seeds") + " seeds." +
       (jsonv::has(nl, "motion") ? " The same constrained problem is solved by a gradient method (" +
                                       jsonv::str(nl, "algorithm") + ") to ftol_rel " +
@@ -184,6 +185,12 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
               jsonv::sig(th, "energy_initial_J", 5) + " J); IDP saves " +
               jsonv::sig(th, "saving_percent", 3) + " % of it (" +
               jsonv::sig(th, "energy_optimised_J", 5) + " J).";
+      const json& cm = arr(th, "comparison");
+      const double eref = jsonv::num(th, "energy_reference_J");
+      if (cm.size() >= 2 && std::isfinite(eref) && eref != 0)
+        text += " " + jsonv::str(cm[1], "optimiser") + " saves " +
+                format_sig(100 * (eref - jsonv::num(cm[1], "energy_J")) / std::abs(eref), 3) +
+                " % (" + jsonv::sig(cm[1], "energy_J", 5) + " J).";
       res.paragraph(text);
     }
     Table br;
@@ -307,6 +314,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                       jsonv::sig(sp, "median_J", 5) + " J, worst " + jsonv::sig(sp, "worst_J", 5) +
                       " J. The spread is what a single IDP run is uncertain by; the best seed is "
                       "the reported optimum.");
+    const double lo = jsonv::num(sp, "best_J"), hi = jsonv::num(sp, "worst_J");
+    const double tol = jsonv::num(idp, "tolerance");
+    if (std::isfinite(lo) && std::isfinite(hi) && std::isfinite(tol) && hi - lo > 10 * tol * std::abs(lo))
+      seeds.note("The seeds disagree by " + format_sig(100 * (hi - lo) / std::abs(lo), 3) +
+                 " %, far more than the convergence tolerance: each seed's convergence is local "
+                 "(its search stopped gaining), not a proof of the optimum. The spread, not the "
+                 "tolerance, bounds how well IDP has solved the problem.");
     Table st;
     st.caption = "Each IDP seed: energy, whether it converged (a whole pass gained less than the "
                  "tolerance) and what it cost.";

@@ -54,7 +54,7 @@ IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
   const int iterations = std::max(1, s.iterations);
   std::vector<VelocityProfile> cands(std::max(1, s.candidates));
   Eigen::Vector2d pass_region = s.region;
-  int it = 0;
+  int it = 0, quiet = 0;
   for (int pass = 1; pass <= std::max(1, s.max_passes); ++pass) {
     const ProfileEvaluation at_start = r.evaluation;
     Eigen::Vector2d region = pass_region;
@@ -101,7 +101,8 @@ IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
                       : NAN;
     r.pass_gains.push_back(r.last_gain);
     if (progress) progress(static_cast<double>(pass) / std::max(1, s.max_passes), "IDP");
-    if (both_feasible && r.last_gain < s.tolerance) {
+    quiet = both_feasible && r.last_gain < s.tolerance ? quiet + 1 : 0;
+    if (quiet >= std::max(1, s.quiet_passes)) {
       r.converged = true;
       break;
     }

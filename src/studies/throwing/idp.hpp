@@ -8,8 +8,8 @@
 /// candidate at node k changes the acceleration of stage k-1 by delta/h: the rates of nodes
 /// k .. P-1 all move by delta (drawn uniformly in [-r, r] per joint), the last stage brings
 /// the rate back to the prescribed release rate, and the projection of profile.hpp restores
-/// the release angles. R candidates per node are simulated and the best is kept if it lowers
-/// the criterion (frame A of Fig. 4). After the sweep the region is shrunk, r <- gamma r
+/// the release angles. R candidates per node are simulated and the best is kept if it is
+/// better by the feasibility rules below (frame A of Fig. 4). After the sweep the region is shrunk, r <- gamma r
 /// (frame B). Luus's multi-pass variant restarts the region after every `iterations`
 /// iterations at `restore` times the previous pass's start. (Moving one node alone, a
 /// hat-shaped change of the rate, was tried first: it stalled at a 10 % saving on the
@@ -36,13 +36,15 @@ namespace armstudy::studies {
 /// constrained problem as the gradient method, and from an infeasible start it first
 /// reaches the feasible set.
 ///
-/// Convergence: passes run until one whole pass improves a feasible best by a relative
-/// energy gain below `tolerance` ((E_start - E_end) / |E_end|); a run that reaches
-/// `max_passes` first is not converged (IdpResult::converged false, last_gain kept).
+/// Convergence: passes run until `quiet_passes` whole passes in a row each improve a
+/// feasible best by a relative energy gain below `tolerance` ((E_start - E_end) / |E_end|);
+/// a run that reaches `max_passes` first is not converged (IdpResult::converged false,
+/// last_gain kept).
 struct IdpSettings {
   int iterations = 6;                             ///< iterations (stage sweeps) per pass
-  int max_passes = 20;                            ///< budget: passes at most
+  int max_passes = 40;                            ///< budget: passes at most
   double tolerance = 1e-3;                        ///< relative energy gain of a pass
+  int quiet_passes = 2;                           ///< passes in a row below the tolerance
   double restore = 0.8;                           ///< region factor between passes
   int candidates = 5;                             ///< R, candidates per stage node
   double shrink = 0.7;                            ///< gamma, region factor per iteration

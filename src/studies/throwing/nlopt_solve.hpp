@@ -29,7 +29,8 @@ namespace armstudy::studies {
 
 struct NloptSettings {
   int max_evaluations = 400;       ///< budget: SLSQP iterations (each 1 + 2n simulations)
-  double max_time = 60.0;          ///< s, budget: wall clock
+  double max_time = 900.0;         ///< s, wall-clock safety net (the budget is max_evaluations:
+                                   ///< a wall-clock limit would make the answer load-dependent)
   double ftol_rel = 1e-6;          ///< relative objective change that stops SLSQP
   double xtol_rel = 1e-6;          ///< relative rate change that stops SLSQP
   double fd_step = 1e-5;           ///< rad/s, central-difference step

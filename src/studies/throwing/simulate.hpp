@@ -1,6 +1,7 @@
 #pragma once
 /// Simulation of the tray arm along a velocity profile of the active joints, its motor
-/// electrics (003 eq. 5-7) and the criterion of eq. 9; and the open-loop replay of a voltage
+/// electrics (003 eq. 5-7) and the constraints of the throw (eq. 9's tray width and the
+/// contact, friction and motor limits of docs/throwing.md); and the open-loop replay of a voltage
 /// history through the same model.
 ///
 /// Planning model: joints 1 and 2 follow the profile exactly (their accelerations are given
