@@ -265,5 +265,23 @@ TEST(PlacementRefine, EveryOptimumHasItsOwnConvergenceAndCurveThroughItsOwnXs) {
   }
 }
 
+TEST(PlacementRefine, ATorqueLimitThatBindsIsNamed) {
+  Spec s = small_spec(0.5);
+  s.programs = {core::MotionProgram::kPoly345};
+  s.configurations = {1};
+  const Result free = solve(s);
+  ASSERT_TRUE(free.cases.at(0).found);
+  const double limit = 0.8 * free.cases[0].refined.metrics.peak_torque[1];
+  s.torque_limit = std::array<double, 2>{100.0, limit};
+  const Result r = solve(s);
+  const ProgramConfig& pc = r.cases.at(0);
+  ASSERT_TRUE(pc.found);
+  EXPECT_EQ(pc.decision.binding, Binding::kTorqueLimit) << binding_name(pc.decision.binding);
+  EXPECT_EQ(pc.decision.joint, 1);
+  EXPECT_LE(pc.refined.metrics.peak_torque[1], limit);
+  EXPECT_LT(pc.decision.torque_slack[1], 1e-7 * limit);
+  EXPECT_NE(r.message.find("set by the torque limit of joint 2"), std::string::npos) << r.message;
+}
+
 }  // namespace
 }  // namespace armstudy::studies::placement

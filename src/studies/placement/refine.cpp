@@ -382,7 +382,8 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
                " as inequality constraints; Nelder-Mead and Newton steps on fitted quadratics "
                "inside the admissible set" +
                (boundary_searched ? "; golden section along the nearly active constraint" : "") +
-               "; stopped when a COBYLA restart gains < " + target.str() + " relative in energy";
+               "; converged when a COBYLA restart gains, and a fitted quadratic predicts, < " +
+               target.str() + " relative in energy";
   out.evaluations = pr.evaluations();
   if (pr.has_best()) {
     out.best = evaluate_candidate(spec, arm, table, configuration, pr.x_s(pr.best().u),
