@@ -43,7 +43,7 @@
 //   convergence {program, configuration, rows [{samples, energy_J}]},
 //   solve_seconds, samples_evaluated,
 //   mujoco_replay [{program, configuration, ...cli/replay_json.hpp}]: each optimum's torques
-//   applied open loop through mj_step (checks mujoco_dynamic_replay[<program>,<configuration>]).
+//   applied open loop through mj_step (checks mujoco_dynamic_replay.<program>.<configuration>).
 // series: {stride, t_s, q1_rad, q2_rad, qd1_rad_s, qd2_rad_s, qdd1_rad_s2, qdd2_rad_s2,
 //          tau1_Nm, tau2_Nm, power1_W, power2_W, energy_J} every `stride`-th sample (<= 101
 //          points; the full series is in the Result for the scene).
@@ -186,8 +186,11 @@ class PlacementRun final : public StudyRun {
   std::vector<studies::Check> checks() const override {
     std::vector<studies::Check> c = result_.checks;
     for (const scene::PlacementReplay& r : replays_) {
-      const std::string id = prog(r.program) + "," + std::to_string(r.configuration);
-      c.push_back(scene::replay_check(r.replay, "mujoco_dynamic_replay[" + id + "]", "the optimum " + id));
+      // check names are [a-z0-9_.]+ (results.schema.json)
+      const std::string id = prog(r.program) + "." + std::to_string(r.configuration);
+      c.push_back(scene::replay_check(r.replay, "mujoco_dynamic_replay." + id,
+                                      "the optimum " + prog(r.program) + ", configuration " +
+                                          std::to_string(r.configuration)));
     }
     return c;
   }

@@ -12,7 +12,8 @@
 //             samples {t_s, s_m, sd_m_s, sdd_m_s2, q_rad [[j1...], [j2...]], qd_rad_s,
 //                      qdd_rad_s2, tau_Nm (per joint rows)}}]: exact first,
 //   mvc {s_m, sd_m_s, velocity_sd_m_s}: the maximum velocity curve on the exact grid,
-//   convergence [{segments, levels, solved, duration_s, excess, run_time_s, worst_violation}],
+//   convergence [{segments, levels, solved, duration_s, excess, run_time_s, worst_violation,
+//                 message (why not, when not solved)}],
 //   motion {t_s, s_m, tip_m [[x, y]...], q_rad [[q1, q2]...]}: the exact motion at equal
 //   time steps (what the frames show),
 //   grid_convergence {grid_points, refined_points, refined_solved, duration_s,
@@ -201,7 +202,8 @@ json TimeOptimalRun::results() const {
                     {"duration_s", row.solved ? num(row.duration) : json(nullptr)},
                     {"excess", row.solved ? num(row.excess) : json(nullptr)},
                     {"run_time_s", num(row.run_time, 4)},
-                    {"worst_violation", row.solved ? num(row.worst_violation) : json(nullptr)}});
+                    {"worst_violation", row.solved ? num(row.worst_violation) : json(nullptr)},
+                    {"message", row.message}});
   j["convergence"] = conv;
   json tip = json::array(), q = json::array();
   for (int k = 0; k < r.motion_p.cols(); ++k) {

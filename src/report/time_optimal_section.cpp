@@ -209,7 +209,8 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                        format_sig(first_num(r, {"duration_s"}), 7),
                        format_sig(first_num(r, {"excess", "excess_relative"}), 3),
                        format_sig(first_num(r, {"run_time_s"}), 3),
-                       std::isfinite(worst) ? format_sig(1 + worst, 6) : "n/a"});
+                       std::isfinite(worst) ? format_sig(1 + worst, 6)
+                       : jsonv::str(r, "message").empty() ? "n/a" : jsonv::str(r, "message")});
   }
   if (ct.rows.empty())
     conv.paragraph("The case asked for no convergence table.");

@@ -68,6 +68,7 @@ struct ConvergenceRow {
   double excess = 0;    ///< duration / exact - 1
   double run_time = 0;  ///< s
   double worst_violation = 0;
+  std::string message;  ///< why not, when not solved (segment, place and binding limit)
 };
 
 /// The exact solver's own grid convergence: the same problem on the grid with every

@@ -364,7 +364,10 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     }
     row.run_time = seconds_since(t0);
     row.solved = o.solved;
-    if (!o.solved) return;
+    if (!o.solved) {
+      row.message = o.message;
+      return;
+    }
     row.duration = o.duration;
     row.excess = o.duration / exact_duration - 1;
     row.worst_violation = v.worst;
