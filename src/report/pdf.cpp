@@ -166,6 +166,16 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
                                    "--no-pdf-header-footer",
                                    "--print-to-pdf=" + part.string(),
                                    file_url(html)};
+  // the browser's own temporary files (org.chromium.Chromium.*) go inside the profile
+  // too, so that removing the profile removes everything a killed browser left
+  const fs::path browser_tmp = profile.path / "tmp";
+  fs::create_directories(browser_tmp);
+  std::vector<std::string> env_text = {"TMPDIR=" + browser_tmp.string()};
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "TMPDIR=", 7) != 0) env_text.emplace_back(*e);
+  std::vector<char*> envp;
+  for (auto& e : env_text) envp.push_back(e.data());
+  envp.push_back(nullptr);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -193,7 +203,7 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
     }
     const int null_in = ::open("/dev/null", O_RDONLY);
     if (null_in >= 0) ::dup2(null_in, 0);
-    ::execv(argv[0], argv.data());
+    ::execve(argv[0], argv.data(), envp.data());
     ::_exit(127);
   }
   ::setpgid(pid, pid);

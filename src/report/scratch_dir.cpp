@@ -29,6 +29,7 @@ namespace {
 
 constexpr const char* kPrefix = ".armstudy-";
 constexpr auto kLegacyAge = std::chrono::minutes(10);
+const std::string kRemoving = ".removing";
 
 struct Scratch {
   fs::path path;  // <dir>/.armstudy-<tag>, canonical
@@ -123,6 +124,18 @@ void clean_legacy(const fs::path& dir, const fs::directory_entry& e, StaleCleanu
   }
 }
 
+// puts back the reports waiting in `scratch`, renames it to `<scratch>.removing` (which
+// anyone may remove: a kill during the removal never leaves a folder that looks live or
+// unlocked) and removes it
+bool discard(const fs::path& scratch, const fs::path& dir, std::vector<std::string>* restored) {
+  restore_old(scratch, dir, restored);
+  std::error_code ec;
+  fs::path doomed = scratch;
+  doomed += kRemoving;
+  if (::rename(scratch.c_str(), doomed.c_str()) != 0) doomed = scratch;
+  return fs::remove_all(doomed, ec) > 0;
+}
+
 // the scratch folders, old-style leftovers and old-style part files of one folder
 void clean_folder(const fs::path& dir, bool top, StaleCleanup* out) {
   std::error_code ec;
@@ -131,14 +144,16 @@ void clean_folder(const fs::path& dir, bool top, StaleCleanup* out) {
   for (const auto& e : fs::directory_iterator(dir, ec)) entries.push_back(e);
   for (const auto& e : entries) {
     const std::string f = e.path().filename().string();
-    if (f.rfind(kPrefix, 0) == 0) {
+    if (f.rfind(kPrefix, 0) == 0 && f.size() > kRemoving.size() &&
+        f.compare(f.size() - kRemoving.size(), kRemoving.size(), kRemoving) == 0) {
+      out->removed += fs::remove_all(e.path(), ec) > 0;  // its reports were put back already
+    } else if (f.rfind(kPrefix, 0) == 0) {
       if (f == mine || !e.is_directory(ec)) continue;
       int fd = -1;
       if (!lock_is_free(e.path() / "lock", &fd)) continue;  // a live run's
       // no lock file: being set up right now (microseconds), or a kill came in between
       if (fd < 0 && !older_than(e.path(), std::chrono::minutes(1))) continue;
-      restore_old(e.path(), dir, &out->restored);
-      out->removed += fs::remove_all(e.path(), ec) > 0;
+      out->removed += discard(e.path(), dir, &out->restored);
       if (fd >= 0) ::close(fd);
     } else if (top && f.size() > 1 && f[0] == '.') {
       clean_legacy(dir, e, out);
@@ -154,10 +169,8 @@ void clean_folder(const fs::path& dir, bool top, StaleCleanup* out) {
 void remove_own_scratch_locked() {
   Registry& r = registry();
   std::lock_guard<std::mutex> lock(r.mu);
-  std::error_code ec;
   for (auto& [dir, s] : r.by_dir) {
-    restore_old(s.path, dir, nullptr);
-    fs::remove_all(s.path, ec);
+    discard(s.path, dir, nullptr);
     if (s.lock_fd >= 0) ::close(s.lock_fd);
   }
   r.by_dir.clear();

@@ -6,7 +6,8 @@
 /// `<scratch>/old/<case>/` (only where the file system cannot exchange two folders in one
 /// step). Another process tells a live scratch folder from one a killed run left behind by
 /// trying its lock: that works across hosts sharing the folder and across pid namespaces
-/// (containers), where host name plus pid does not.
+/// (containers), where host name plus pid does not. A scratch folder is removed by first
+/// renaming it to `.armstudy-<tag>.removing`, which anyone may remove.
 
 #include <filesystem>
 #include <mutex>

@@ -71,7 +71,7 @@ gone_within() {  # seconds pid...
 }
 leftovers() {  # what a stopped run must not leave
   find "$out" -name '*.part*' -o -name '.armstudy-*' | sed 's/^/  /'
-  find "$work/tmp" -mindepth 1 -maxdepth 1 -name 'armstudy-chromium-*' | sed 's/^/  /'
+  find "$work/tmp" -mindepth 1 -maxdepth 1 | sed 's/^/  /'  # anything in the browser's temporary folder
 }
 
 # --- SIGINT while the browser prints ---------------------------------------------------

@@ -228,3 +228,69 @@ TEST(OutputSafety, AReadOnlyOutputFolderSaysPermissionDeniedAndWritesNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+// a live run is known by the lock it holds, not by host name and pid: a scratch folder
+// whose name claims this host and a pid that does not exist here (a run in another pid
+// namespace, a container) is kept while its lock is held, and removed once it is not
+TEST(OutputSafety, LeftoversAreRemovedByTheirFreeLockNotByHostAndPid) {
+  const fs::path d = fresh_dir("stale_lock");
+  const fs::path c = write_case(d, "locked");
+  const fs::path out = d / "out";
+  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
+  char host[256] = {0};
+  ::gethostname(host, sizeof host - 1);
+  const fs::path live = out / (std::string(".armstudy-") + host + "-999999-0badc0de");
+  const fs::path dead = out / (std::string(".armstudy-") + host + "-999998-0badc0de");
+  for (const auto& s : {live, dead}) {
+    fs::create_directories(s / "new/locked");
+    std::ofstream(s / "new/locked/results.json") << "{}";
+    std::ofstream(s / "lock");
+  }
+  // another process holds the live one's lock (as its run would) until the pipe closes
+  FILE* holder = popen(("flock " + (live / "lock").string() + " -c 'echo locked; read x'").c_str(), "w");
+  ASSERT_NE(holder, nullptr);
+  for (int i = 0; i < 200 && shell("flock -n " + (live / "lock").string() + " true").exit_code == 0; ++i)
+    ::usleep(20000);
+  const CmdRun r = armstudy("run --no-render --force --out " + out.string() + " " + c.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(live / "new/locked/results.json")) << "a live run's folder was removed\n" << r.output;
+  EXPECT_FALSE(fs::exists(dead)) << "a dead run's folder was kept\n" << r.output;
+  pclose(holder);  // the holder exits: its lock is free
+  const CmdRun again = armstudy("run --no-render --force --out " + out.string() + " " + c.string());
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_FALSE(fs::exists(live)) << again.output;
+  EXPECT_TRUE(leftovers(out).empty()) << leftovers(out);
+  fs::remove_all(d);
+}
+
+// a kill between the two renames of the swap (file systems without RENAME_EXCHANGE) left
+// the only copy of the report in the scratch folder's old/: the next run puts it back
+TEST(OutputSafety, AReportAKillLeftAsideIsPutBack) {
+  const fs::path d = fresh_dir("put_back");
+  const fs::path c = write_case(d, "aside");
+  const fs::path out = d / "out";
+  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
+  const std::string report = slurp(out / "aside/results.json");
+  const fs::path scratch = out / ".armstudy-elsewhere-1-12345678";
+  fs::create_directories(scratch / "old");
+  std::ofstream(scratch / "lock");
+  fs::rename(out / "aside", scratch / "old/aside");
+  // an earlier version's way: .<case>.old-<host>-<pid> of a process that is gone
+  char host[256] = {0};
+  ::gethostname(host, sizeof host - 1);
+  fs::rename(out / "summary.md", out / (std::string(".summary.md.old-") + host + "-999997"));
+  armstudy("validate " + c.string());  // validate touches nothing
+  EXPECT_FALSE(fs::exists(out / "aside"));
+  const fs::path other = write_case(d, "other");
+  const CmdRun next = armstudy("run --no-render --out " + out.string() + " " + other.string());
+  EXPECT_EQ(next.exit_code, 0) << next.output;
+  EXPECT_NE(next.output.find("put back " + (fs::weakly_canonical(out) / "aside").string()), std::string::npos)
+      << next.output;
+  EXPECT_EQ(slurp(out / "aside/results.json"), report);
+  EXPECT_TRUE(leftovers(out).empty()) << leftovers(out);
+  fs::remove_all(d);
+}
+
+}  // namespace
