@@ -260,6 +260,16 @@ Table sweep_table(const RunDiff& d, size_t limit) {
   return t;
 }
 
+// the cases beyond tolerance, failures of the new run first, then by name
+std::vector<const CaseDiff*> moved_cases(const RunDiff& d) {
+  std::vector<const CaseDiff*> out;
+  for (const auto& c : d.cases)
+    if (c.beyond()) out.push_back(&c);
+  auto fails = [](const CaseDiff* c) { return c->presence != CaseDiff::Presence::kRemoved && !c->new_passed; };
+  std::stable_sort(out.begin(), out.end(), [&](const CaseDiff* a, const CaseDiff* b) { return fails(a) && !fails(b); });
+  return out;
+}
+
 }  // namespace
 
 std::string diff_markdown(const RunDiff& d, size_t max_bytes) {
@@ -271,11 +281,12 @@ std::string diff_markdown(const RunDiff& d, size_t max_bytes) {
      << count_presence(d, CaseDiff::Presence::kRemoved) << " removed. " << tolerances_sentence(d) << ".\n\n";
   if (moved) {
     md << "## Beyond tolerance (" << moved << ")\n\n| case | study | what moved |\n|---|---|---|\n";
-    for (const auto& c : d.cases)
-      if (c.beyond()) md << "| " << md_cell(c.name) << " | " << md_cell(c.study) << " | " << md_cell(what_moved(c, d.pixel_tolerance, true)) << " |\n";
+    for (const CaseDiff* c : moved_cases(d))
+      md << "| " << md_cell(c->name) << " | " << md_cell(c->study) << " | " << md_cell(what_moved(*c, d.pixel_tolerance, true)) << " |\n";
     md << "\n";
-    for (const auto& c : d.cases) {
-      if (!c.beyond() || c.presence != CaseDiff::Presence::kBoth) continue;
+    for (const CaseDiff* cp : moved_cases(d)) {
+      const CaseDiff& c = *cp;
+      if (c.presence != CaseDiff::Presence::kBoth) continue;
       md << "### " << md_cell(c.name) << " (" << c.study << ")\n\n";
       if (c.status_changed())
         md << "Status " << status_text(c.base_status, c.base_passed) << " → " << status_text(c.new_status, c.new_passed)
@@ -341,15 +352,15 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
   Table moved_t;
   moved_t.caption = "Cases that moved beyond tolerance";
   moved_t.header = {"case", "study", "what moved"};
-  for (const auto& c : d.cases)
-    if (c.beyond()) moved_t.rows.push_back({c.name, c.study, what_moved(c, d.pixel_tolerance, true)});
+  for (const CaseDiff* c : moved_cases(d)) moved_t.rows.push_back({c->name, c->study, what_moved(*c, d.pixel_tolerance, true)});
   if (moved_t.rows.empty()) about.paragraph("Nothing moved beyond its tolerance.");
   else about.table(std::move(moved_t));
   page.sections.push_back(std::move(about));
 
   // each case that moved (present in both runs): figures, checks, frames, provenance
-  for (const auto& c : d.cases) {
-    if (!c.beyond() || c.presence != CaseDiff::Presence::kBoth) continue;
+  for (const CaseDiff* cp : moved_cases(d)) {
+    const CaseDiff& c = *cp;
+    if (c.presence != CaseDiff::Presence::kBoth) continue;
     Section s;
     s.id = "case-" + std::to_string(&c - d.cases.data());
     s.heading = c.name + " (" + c.study + ")";

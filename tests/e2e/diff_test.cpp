@@ -320,6 +320,16 @@ TEST_F(Diff, PageLoadsInChromiumWithoutConsoleMessagesOrMissingFiles) {
     EXPECT_NE(html.find(std::string("diff-frames/pendulum/") + f + "pendulum_snapshots_locus.png"), std::string::npos) << f;
 }
 
+TEST(DiffCli, HelpAndUsageErrors) {
+  const CliRun help = cli("diff --help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* w : {"Usage", "--tolerances", "--pixel-tolerance", "--out"})
+    EXPECT_NE(help.output.find(w), std::string::npos) << w;
+  EXPECT_EQ(cli("diff only-one-folder").exit_code, 2);
+  EXPECT_EQ(cli("diff a b --pixel-tolerance 300").exit_code, 2);
+  EXPECT_EQ(cli("diff a b --bogus").exit_code, 2);
+}
+
 // ---- on results data directly ----
 
 using armstudy::app::CaseOutput;
@@ -374,6 +384,8 @@ TEST(DiffRuns, SweepRowsAreComparedByCaseIdLargestChangeFirst) {
       }
   const std::string md = armstudy::report::diff_markdown(d);
   EXPECT_LT(md.find("| p-107 |"), md.find("| p-103 |"));
+  // failures first: the case that no longer solves heads the table of cases that moved
+  EXPECT_EQ(table_cases(md, "## Beyond tolerance"), (std::vector<std::string>{"p-115", "p-107", "p-111", "p-119"})) << md;
   EXPECT_NE(md.find("## Sweep ratio: 5 of 20 row(s) changed, largest change first"), std::string::npos) << md;
 }
 
