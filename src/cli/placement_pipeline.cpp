@@ -49,12 +49,9 @@ namespace pl = studies::placement;
 using nlohmann::json;
 constexpr double kDeg = core::kPi / 180.0;
 
-// a number rounded to `digits` significant digits (JSON stays short and stable)
-double sig(double v, int digits = 7) { return round_sig(v, digits); }
+json num(double v) { return json_number(v); }
 
-json num(double v, int digits = 7) { return json_number(v, digits); }
-
-json pair(const Eigen::Vector2d& v, int digits = 7) { return json::array({num(v.x(), digits), num(v.y(), digits)}); }
+json pair(const Eigen::Vector2d& v) { return json::array({num(v.x()), num(v.y())}); }
 
 json series_json(const pl::TimeSeries& s) {
   json j;
@@ -65,18 +62,18 @@ json series_json(const pl::TimeSeries& s) {
        a1 = json::array(), a2 = json::array(), u1 = json::array(), u2 = json::array(), p1 = json::array(),
        p2 = json::array(), e = json::array();
   for (size_t k = 0; k < n; k += stride) {
-    t.push_back(num(s.t[k], 6));
-    q1.push_back(num(s.q[k][0], 6));
-    q2.push_back(num(s.q[k][1], 6));
-    qd1.push_back(num(s.qd[k][0], 6));
-    qd2.push_back(num(s.qd[k][1], 6));
-    a1.push_back(num(s.qdd[k][0], 6));
-    a2.push_back(num(s.qdd[k][1], 6));
-    u1.push_back(num(s.tau[k][0], 6));
-    u2.push_back(num(s.tau[k][1], 6));
-    p1.push_back(num(s.power[k][0], 6));
-    p2.push_back(num(s.power[k][1], 6));
-    e.push_back(num(s.energy[k], 6));
+    t.push_back(num(s.t[k]));
+    q1.push_back(num(s.q[k][0]));
+    q2.push_back(num(s.q[k][1]));
+    qd1.push_back(num(s.qd[k][0]));
+    qd2.push_back(num(s.qd[k][1]));
+    a1.push_back(num(s.qdd[k][0]));
+    a2.push_back(num(s.qdd[k][1]));
+    u1.push_back(num(s.tau[k][0]));
+    u2.push_back(num(s.tau[k][1]));
+    p1.push_back(num(s.power[k][0]));
+    p2.push_back(num(s.power[k][1]));
+    e.push_back(num(s.energy[k]));
     if (k + stride >= n && k != n - 1) k = n - 1 - stride;  // always end on the last sample
   }
   j["t_s"] = t;
@@ -117,7 +114,7 @@ class PlacementRun final : public StudyRun {
   }
   std::string message() const override { return result_.message; }
   std::vector<studies::Check> checks() const override { return result_.checks; }
-  // the study report (issue 7): one call, everything else is src/report's
+  // the study report: one call, everything else is src/report's
   void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
               const nlohmann::json& results_json) override {
     report::write_case_report(dir, info, results_json);
@@ -145,7 +142,7 @@ class PlacementRun final : public StudyRun {
     return k;
   }
 
-  // frames: the optimum of every program and configuration (src/scene, issue 4)
+  // frames: the optimum of every program and configuration (src/scene)
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
     return scene::render_placement_frames(spec_, result_, info.render, dir);
@@ -203,7 +200,7 @@ json PlacementRun::results() const {
       o["boundary_distance_m"] = num(c.boundary_distance);
       o["peak_torque_Nm"] = json::array({num(c.metrics.peak_torque[0]), num(c.metrics.peak_torque[1])});
       o["peak_power_W"] = json::array({num(c.metrics.peak_power[0]), num(c.metrics.peak_power[1])});
-      o["signed_work_J"] = num(c.metrics.signed_work, 3);
+      o["signed_work_J"] = num(c.metrics.signed_work);
       o["singular"] = c.status != pl::CandidateStatus::kFeasible;
       o["refine_evaluations"] = pc.refine_evaluations;
       o["line_start_m"] = pair(pc.placement.start);
@@ -226,8 +223,8 @@ json PlacementRun::results() const {
       t["root_xy_m"] = pair(c.root);
       t["status"] = pl::status_name(c.status);
       t["singular"] = c.status == pl::CandidateStatus::kSingular;
-      t["boundary_distance_m"] = num(c.boundary_distance, 4);
-      t["min_abs_sin_elbow"] = num(c.min_abs_sin, 4);
+      t["boundary_distance_m"] = num(c.boundary_distance);
+      t["min_abs_sin_elbow"] = num(c.min_abs_sin);
       thesis.push_back(t);
     }
     {
@@ -236,8 +233,8 @@ json PlacementRun::results() const {
       json phi = json::array(), e = json::array();
       std::string st;
       for (size_t k = 0; k < pc.curve.phi.size(); ++k) {
-        phi.push_back(num(pc.curve.phi[k] / kDeg, 6));
-        e.push_back(num(pc.curve.energy[k], 5));
+        phi.push_back(num(pc.curve.phi[k] / kDeg));
+        e.push_back(num(pc.curve.energy[k]));
         st += pl::status_char(pc.curve.status[k]);
       }
       cj["phi_deg"] = phi;
@@ -255,10 +252,10 @@ json PlacementRun::results() const {
         // thin: keep the first, the last, and steps of >= 0.2 % in energy
         if (k != 0 && k + 1 != front.size() && front[k].energy > last * (1 - 2e-3)) continue;
         last = front[k].energy;
-        pk.push_back(json::array({num(front[k].peak_torque[0], 5), num(front[k].peak_torque[1], 5)}));
-        e.push_back(num(front[k].energy, 6));
-        xs.push_back(num(front[k].x_s, 6));
-        ph.push_back(num(front[k].phi / kDeg, 6));
+        pk.push_back(json::array({num(front[k].peak_torque[0]), num(front[k].peak_torque[1])}));
+        e.push_back(num(front[k].energy));
+        xs.push_back(num(front[k].x_s));
+        ph.push_back(num(front[k].phi / kDeg));
         sg.push_back(front[k].singular);
       }
       pj["peak_torque_Nm"] = pk;
@@ -272,8 +269,8 @@ json PlacementRun::results() const {
       const pl::EnergyMap& m = pc.map;
       json mj = id;
       json x = json::array(), y = json::array(), er = json::array(), sr = json::array();
-      for (double v : m.x) x.push_back(num(v, 6));
-      for (double v : m.y) y.push_back(num(v, 6));
+      for (double v : m.x) x.push_back(num(v));
+      for (double v : m.y) y.push_back(num(v));
       const size_t nx = m.x.size();
       for (size_t row = 0; row < m.y.size(); ++row) {
         std::string e, s;
@@ -318,12 +315,12 @@ json PlacementRun::results() const {
     ej["energy_J"] = reachable ? num(c.metrics.energy) : json(nullptr);
     ej["status"] = pl::status_name(c.status);
     ej["singular"] = c.status == pl::CandidateStatus::kSingular;
-    ej["boundary_distance_m"] = num(c.boundary_distance, 5);
-    ej["min_abs_sin_elbow"] = num(c.min_abs_sin, 5);
+    ej["boundary_distance_m"] = num(c.boundary_distance);
+    ej["min_abs_sin_elbow"] = num(c.min_abs_sin);
     ej["peak_torque_Nm"] = reachable ? json::array({num(c.metrics.peak_torque[0]), num(c.metrics.peak_torque[1])})
                                      : json(nullptr);
     ej["saving_J"] = e.has_saving ? num(e.saving) : json(nullptr);
-    ej["saving_percent"] = e.has_saving ? num(e.saving_percent, 5) : json(nullptr);
+    ej["saving_percent"] = e.has_saving ? num(e.saving_percent) : json(nullptr);
     ej["line_start_m"] = pair(e.placement.start);
     ej["line_end_m"] = pair(e.placement.end);
     if (!e.series.t.empty()) ej["series"] = series_json(e.series);
@@ -334,13 +331,13 @@ json PlacementRun::results() const {
   j["pareto"] = pareto;
   j["maps"] = maps;
   json conv = json::array();
-  for (const auto& row : r.convergence) conv.push_back({{"samples", row.samples}, {"energy_J", num(row.energy, 10)}});
+  for (const auto& row : r.convergence) conv.push_back({{"samples", row.samples}, {"energy_J", num(row.energy)}});
   for (const auto& pc : r.cases) {
     if (!pc.found) continue;
     j["convergence"] = {{"program", prog(pc.program)}, {"configuration", pc.configuration}, {"rows", conv}};
     break;
   }
-  j["solve_seconds"] = num(r.seconds, 3);
+  j["solve_seconds"] = num(r.seconds);
   j["samples_evaluated"] = r.samples_evaluated;
   return j;
 }

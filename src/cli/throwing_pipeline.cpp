@@ -42,12 +42,11 @@ using nlohmann::json;
 namespace st = studies;
 constexpr double kDeg = core::kPi / 180.0;
 
-double sig(double v, int digits = 8) { return round_sig(v, digits); }
-json num(double v, int digits = 8) { return json_number(v, digits); }
+json num(double v) { return json_number(v); }
 template <typename V>
-json arr(const V& v, int digits = 7) {
+json arr(const V& v) {
   json a = json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(num(v[i], digits));
+  for (int i = 0; i < v.size(); ++i) a.push_back(num(v[i]));
   return a;
 }
 
@@ -59,12 +58,12 @@ json motion_json(const st::ThrowMotion& m) {
   j["max_abs_theta4_rad"] = num(e.max_abs_theta4);
   j["max_voltage_V"] = num(e.max_voltage);
   j["max_current_A"] = num(e.max_current);
-  j["release_error"] = {{"angle_rad", arr(m.angle_error, 6)}, {"rate_rad_s", arr(m.rate_error, 6)}};
+  j["release_error"] = {{"angle_rad", arr(m.angle_error)}, {"rate_rad_s", arr(m.rate_error)}};
   j["energy_split"] = {{"electrical_J", num(m.split.electrical)},
                        {"mechanical_J", num(m.split.mechanical)},
                        {"copper_J", num(m.split.copper)},
                        {"friction_J", num(m.split.friction)},
-                       {"rest_J", num(m.split.rest, 3)}};
+                       {"rest_J", num(m.split.rest)}};
   json pt = json::array(), pr = json::array();
   for (int k = 0; k <= m.profile.stages(); ++k) {
     pt.push_back(num(k * m.profile.stage_length()));
@@ -79,11 +78,11 @@ json motion_json(const st::ThrowMotion& m) {
     t.push_back(num(s.t[k]));
     q.push_back(arr(s.q[k]));
     qd.push_back(arr(s.qd[k]));
-    tau.push_back(arr(s.tau_m[k], 6));
-    v.push_back(arr(s.voltage[k], 6));
-    i.push_back(arr(s.current[k], 6));
-    p.push_back(arr(s.power[k], 6));
-    en.push_back(num(s.energy[k], 7));
+    tau.push_back(arr(s.tau_m[k]));
+    v.push_back(arr(s.voltage[k]));
+    i.push_back(arr(s.current[k]));
+    p.push_back(arr(s.power[k]));
+    en.push_back(num(s.energy[k]));
     ball.push_back(arr(s.ball[k]));
   }
   // the stage of each sample: the end sample of a stage repeats its time
@@ -148,7 +147,7 @@ class ThrowingRun final : public StudyRun {
     return k;
   }
 
-  // the study report (issue 7): one call, everything else is src/report's
+  // the study report: one call, everything else is src/report's
   void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
               const nlohmann::json& results_json) override {
     report::write_case_report(dir, info, results_json);
@@ -184,7 +183,8 @@ class ThrowingRun final : public StudyRun {
         {"criterion", {{"k_tray_J_per_rad", spec_.k_tray}, {"k_release_J_per_rad", spec_.k_release},
                        {"k_voltage_J_per_V", spec_.k_voltage}, {"k_current_J_per_A", spec_.k_current}}},
         {"choices",
-         {"model derived from first principles (tray_arm.hpp): ball spin = tray rate - (r4/r_b) "
+         {"model derived from first principles (docs/derivations/throwing.md): ball spin = "
+          "tray rate - (r4/r_b) "
           "theta4'; eq. 3's spin term and a5 as printed are wrong",
           "the centre of the ball's circle lies circle_offset_m from the tray hinge (Table 1's l3 "
           "by default)",
@@ -198,21 +198,21 @@ class ThrowingRun final : public StudyRun {
                    {"theta4_limit_rad", {-spec_.tray_width / 2, spec_.tray_width / 2}}};
     j["energy_initial_J"] = num(r.initial.evaluation.energy);
     j["energy_optimised_J"] = num(r.idp.evaluation.energy);
-    j["saving_percent"] = num(r.saving_percent, 5);
+    j["saving_percent"] = num(r.saving_percent);
     if (r.idp.series.t.empty()) return j;
     j["initial"] = motion_json(r.initial);
     j["optimum"] = motion_json(r.idp);
     json conv = json::array();
     for (const auto& h : r.idp_run.history)
       conv.push_back({{"iteration", h.iteration}, {"pass", h.pass}, {"criterion_J", num(h.criterion)},
-                      {"energy_J", num(h.energy)}, {"region_rad_s", arr(h.region, 5)},
+                      {"energy_J", num(h.energy)}, {"region_rad_s", arr(h.region)},
                       {"evaluations", h.evaluations}, {"improvements", h.improvements}});
     const auto& is = spec_.idp;
     j["idp"] = {{"stages", spec_.stages}, {"steps_per_stage", spec_.steps_per_stage},
                 {"iterations", is.iterations}, {"passes", is.passes}, {"candidates", is.candidates},
                 {"shrink", is.shrink}, {"restore", is.restore}, {"region_rad_s", arr(is.region)},
                 {"seed", is.seed}, {"threads", r.idp_run.threads},
-                {"evaluations", r.idp_run.evaluations}, {"run_time_s", num(r.idp_run.run_time, 4)},
+                {"evaluations", r.idp_run.evaluations}, {"run_time_s", num(r.idp_run.run_time)},
                 {"convergence", conv}};
     json nl = {{"ran", r.nlopt_ran}};
     if (r.nlopt_ran) {
@@ -222,7 +222,7 @@ class ThrowingRun final : public StudyRun {
       nl["return_code"] = r.nlopt_run.return_code;
       nl["feasible"] = r.nlopt_run.feasible;
       nl["simulations"] = r.nlopt_run.simulations;
-      nl["run_time_s"] = num(r.nlopt_run.run_time, 4);
+      nl["run_time_s"] = num(r.nlopt_run.run_time);
       nl["max_evaluations"] = spec_.nlopt.max_evaluations;
       nl["history_J"] = hist;
       nl["motion"] = motion_json(r.nlopt);
@@ -243,7 +243,7 @@ class ThrowingRun final : public StudyRun {
       rt.push_back(num(r.replay_t[k]));
       rq.push_back(arr(r.replay_q[k]));
     }
-    j["replay"] = {{"max_error_rad", num(r.replay_error, 4)},
+    j["replay"] = {{"max_error_rad", num(r.replay_error)},
                    {"tolerance_rad", spec_.replay_tolerance},
                    {"integrator", "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
                                   "with 16x the RK4 steps, linear between its samples within a stage; "
@@ -253,13 +253,13 @@ class ThrowingRun final : public StudyRun {
                         {"steps_per_stage", spec_.steps_per_stage},
                         {"step_s", spec_.tf / spec_.stages / spec_.steps_per_stage},
                         {"fine_steps_factor", 16},
-                        {"energy_error_vs_fine_steps", num(r.rk4_energy_error, 4)},
-                        {"theta3_error_vs_fine_steps_rad", num(r.rk4_theta3_error, 4)}};
-    j["run_time_s"] = num(r.run_time, 4);
+                        {"energy_error_vs_fine_steps", num(r.rk4_energy_error)},
+                        {"theta3_error_vs_fine_steps_rad", num(r.rk4_theta3_error)}};
+    j["run_time_s"] = num(r.run_time);
     return j;
   }
 
-  // frames: the IDP optimum's strip and locus (Fig. 7) and the flight (src/scene, issue 4)
+  // frames: the IDP optimum's strip and locus (Fig. 7) and the flight (src/scene)
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
     return scene::render_throwing_frames(spec_, result_, info.render, dir);
@@ -278,7 +278,7 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 
 StudyEntry throwing_entry() {
   return {"throwing",
-          "tray arm with a passive joint: energy-saving throw by IDP and SLSQP (003 Sec. 4)",
+          "tray arm with a passive joint: energy-saving throw by IDP and SLSQP (Sato et al. Sec. 4)",
           &load};
 }
 

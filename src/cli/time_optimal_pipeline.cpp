@@ -31,22 +31,22 @@ namespace {
 namespace to = studies::time_optimal;
 using nlohmann::json;
 
-json num(double v, int digits = 9) { return json_number(v, digits); }
+json num(double v) { return json_number(v); }
 
-json list(const std::vector<double>& v, int digits = 9) {
+json list(const std::vector<double>& v) {
   json a = json::array();
-  for (double x : v) a.push_back(num(x, digits));
+  for (double x : v) a.push_back(num(x));
   return a;
 }
 
-json pair(const Eigen::Vector2d& v, int digits = 9) { return json::array({num(v[0], digits), num(v[1], digits)}); }
+json pair(const Eigen::Vector2d& v) { return json::array({num(v[0]), num(v[1])}); }
 
 // a 2 x N matrix as two per-joint rows
-json rows(const Eigen::Matrix2Xd& m, int digits = 9) {
+json rows(const Eigen::Matrix2Xd& m) {
   json out = json::array();
   for (int j = 0; j < 2; ++j) {
     json r = json::array();
-    for (int k = 0; k < m.cols(); ++k) r.push_back(num(m(j, k), digits));
+    for (int k = 0; k < m.cols(); ++k) r.push_back(num(m(j, k)));
     out.push_back(r);
   }
   return out;
@@ -78,7 +78,7 @@ json solver_json(const to::SolverResult& r) {
             {"solved", r.solved},
             {"message", r.message},
             {"duration_s", r.solved ? num(r.duration) : json(nullptr)},
-            {"run_time_s", num(r.run_time, 4)},
+            {"run_time_s", num(r.run_time)},
             {"intervals", r.intervals},
             {"levels", r.levels},
             {"evaluations", r.evaluations},
@@ -176,7 +176,7 @@ json TimeOptimalRun::results() const {
                     {"solved", row.solved},
                     {"duration_s", row.solved ? num(row.duration) : json(nullptr)},
                     {"excess", row.solved ? num(row.excess) : json(nullptr)},
-                    {"run_time_s", num(row.run_time, 4)},
+                    {"run_time_s", num(row.run_time)},
                     {"worst_violation", row.solved ? num(row.worst_violation) : json(nullptr)}});
   j["convergence"] = conv;
   json tip = json::array(), q = json::array();

@@ -1,4 +1,4 @@
-// the throwing study of 003_a986fd825f31d3e2.txt sec. 4: eq. 8 start, idp optimum and the
+// the throwing study of Sato et al. sec. 4: eq. 8 start, idp optimum and the
 // gradient (slsqp) optimum side by side; voltages, currents, torques, powers, theta4 with the
 // tray limits, idp convergence, release and flight
 #include <cmath>
@@ -108,12 +108,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                                       ") on the same parameterisation."
                                 : std::string(" The case runs IDP only.")));
   method.note(
-      "Several printed coefficients of 003's equations of motion are inconsistent with its "
+      "Several printed coefficients of the equations of motion of Sato et al. are inconsistent with its "
       "kinematics (a3's m4 term, two lines labelled A45, a5's inverted ratio, the ball spin "
       "of eq. 3, S234 in eq. 4); the model here is derived from first principles instead, so "
-      "energies and angles differ from the paper's figures by design.");
+      "energies and angles differ from the paper's figures by design (docs/defects.md, "
+      "docs/derivations/throwing.md).");
   for (const json& c : arr(par, "choices"))
-    if (c.is_string()) method.note("What 003 leaves open: " + c.get<std::string>());
+    if (c.is_string()) method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
   if (!par.empty()) method.table(json_table(par, "Parameters used (SI; _deg in degrees)."));
   page.sections.push_back(std::move(method));
 
@@ -209,7 +210,7 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   // the locus of the throw (003 figure 7) and the flight, in the vertical plane
   {
     ShadedMap locus;
-    locus.title = "ball path: throw and flight (cf. 003 Figure 7)";
+    locus.title = "ball path: throw and flight (cf. Figure 7 of Sato et al.)";
     locus.x_label = "x (m)";
     locus.y_label = "y (m)";
     locus.nx = locus.ny = 2;
