@@ -134,7 +134,8 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 }  // namespace
 
 StudyEntry pendulum_entry() {
-  return {"pendulum", "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
+  return {"pendulum",
+          "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
           &load};
 }
 

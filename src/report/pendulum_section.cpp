@@ -47,10 +47,12 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
       ". With no actuator and no friction the mechanical energy K + U must stay constant; its "
       "drift measures the model and the integrator together (the paper's Figure 3).");
   for (const json& c : arr(par, "choices"))
-    if (c.is_string()) method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
+    if (c.is_string())
+      method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
   method.note(
       "The paper's printed energy curve is not reproduced number for number: its printed "
-      "coefficients are inconsistent (docs/defects.md), so the model is derived from first principles "
+      "coefficients are inconsistent (docs/defects.md), so the model is derived from first "
+      "principles "
       "and checked by conservation, which holds for any consistent choice of the values above.");
   if (!par.empty()) method.table(json_table(par, "Parameters used (SI; _deg in degrees)."));
   page.sections.push_back(std::move(method));

@@ -108,13 +108,15 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                                       ") on the same parameterisation."
                                 : std::string(" The case runs IDP only.")));
   method.note(
-      "Several printed coefficients of the equations of motion of Sato et al. are inconsistent with its "
+      "Several printed coefficients of the equations of motion of Sato et al. are inconsistent "
+      "with its "
       "kinematics (a3's m4 term, two lines labelled A45, a5's inverted ratio, the ball spin "
       "of eq. 3, S234 in eq. 4); the model here is derived from first principles instead, so "
       "energies and angles differ from the paper's figures by design (docs/defects.md, "
       "docs/derivations/throwing.md).");
   for (const json& c : arr(par, "choices"))
-    if (c.is_string()) method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
+    if (c.is_string())
+      method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
   if (!par.empty()) method.table(json_table(par, "Parameters used (SI; _deg in degrees)."));
   page.sections.push_back(std::move(method));
 

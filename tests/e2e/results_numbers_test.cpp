@@ -125,13 +125,31 @@ std::string shape(std::string text) {
 }
 
 TEST(ResultsNumbersFormat, EveryFiniteDoubleReadsBackBitIdenticalInItsShortestForm) {
-  std::vector<double> values = {0.0, -0.0, 0.1, 1.0 / 3, 2.0 / 3, 1e-300, 5e-324, 1e308, 1e15,
-                                1e-5, 1e-4, 123456789012345.0, 1.55262, 100.0, -2.5e-7,
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                0.1,
+                                1.0 / 3,
+                                2.0 / 3,
+                                1e-300,
+                                5e-324,
+                                1e308,
+                                1e15,
+                                1e-5,
+                                1e-4,
+                                123456789012345.0,
+                                1.55262,
+                                100.0,
+                                -2.5e-7,
                                 std::numeric_limits<double>::max(),
                                 std::numeric_limits<double>::min(),
                                 std::numeric_limits<double>::denorm_min(),
-                                std::numeric_limits<double>::epsilon(), 13 * M_PI / 36,
-                                -7 * M_PI / 24, 9.81, 0.046, 7.9e-5, 123456789.123456789};
+                                std::numeric_limits<double>::epsilon(),
+                                13 * M_PI / 36,
+                                -7 * M_PI / 24,
+                                9.81,
+                                0.046,
+                                7.9e-5,
+                                123456789.123456789};
   std::mt19937_64 rng(20261201);
   while (values.size() < 100000) {
     const double v = std::bit_cast<double>(rng());  // every exponent and mantissa
@@ -162,7 +180,8 @@ TEST(ResultsNumbersFormat, EveryFiniteDoubleReadsBackBitIdenticalInItsShortestFo
   // the file writer: every number of a document reads back bit-identical
   const json back = json::parse(armstudy::app::results_text(doc));
   ASSERT_EQ(back.size(), values.size());
-  for (size_t i = 0; i < values.size(); ++i) ASSERT_EQ(bits(back[i].get<double>()), bits(values[i])) << i;
+  for (size_t i = 0; i < values.size(); ++i)
+    ASSERT_EQ(bits(back[i].get<double>()), bits(values[i])) << i;
   EXPECT_EQ(armstudy::app::shortest_number(1.55262), "1.55262");
   EXPECT_EQ(armstudy::app::shortest_number(2.0), "2.0");
   EXPECT_EQ(armstudy::app::shortest_number(1e-5), "1e-05");
@@ -185,16 +204,20 @@ TEST_F(ResultsNumbers, KeyFiguresEqualTheStudySectionBitForBit) {
 
   const json t = results("a", "numbers-throwing");
   ASSERT_TRUE(t.contains("throwing"));
-  EXPECT_EQ(bits(key_figure(t, "energy_eq8_J")), bits(t["throwing"]["energy_initial_J"].get<double>()));
-  EXPECT_EQ(bits(key_figure(t, "energy_idp_J")), bits(t["throwing"]["energy_optimised_J"].get<double>()));
-  EXPECT_EQ(bits(key_figure(t, "saving_percent")), bits(t["throwing"]["saving_percent"].get<double>()));
+  EXPECT_EQ(bits(key_figure(t, "energy_eq8_J")),
+            bits(t["throwing"]["energy_initial_J"].get<double>()));
+  EXPECT_EQ(bits(key_figure(t, "energy_idp_J")),
+            bits(t["throwing"]["energy_optimised_J"].get<double>()));
+  EXPECT_EQ(bits(key_figure(t, "saving_percent")),
+            bits(t["throwing"]["saving_percent"].get<double>()));
   EXPECT_EQ(bits(key_figure(t, "replay_error_rad")),
             bits(t["throwing"]["replay"]["max_error_rad"].get<double>()));
 
   const json l = results("a", "numbers-placement");
   ASSERT_TRUE(l.contains("placement"));
   double least = HUGE_VAL;
-  for (const json& o : l["placement"]["optima"]) least = std::min(least, o["energy_J"].get<double>());
+  for (const json& o : l["placement"]["optima"])
+    least = std::min(least, o["energy_J"].get<double>());
   EXPECT_EQ(bits(key_figure(l, "min_energy_J")), bits(least));
 
   const json o = results("a", "numbers-time-optimal");
@@ -202,7 +225,8 @@ TEST_F(ResultsNumbers, KeyFiguresEqualTheStudySectionBitForBit) {
   const json& exact = o["time_optimal"]["solvers"][0];
   ASSERT_EQ(exact["name"], "exact");
   EXPECT_EQ(bits(key_figure(o, "duration_s[exact]")), bits(exact["duration_s"].get<double>()));
-  EXPECT_EQ(bits(key_figure(o, "path_length_m")), bits(o["time_optimal"]["path_length_m"].get<double>()));
+  EXPECT_EQ(bits(key_figure(o, "path_length_m")),
+            bits(o["time_optimal"]["path_length_m"].get<double>()));
 }
 
 TEST_F(ResultsNumbers, TimeOptimalDurationFollowsFromTheWrittenNodes) {
@@ -237,7 +261,8 @@ TEST_F(ResultsNumbers, TwoRunsWriteTheSameBytesApartFromRunTimes) {
     const json ca = without_run_times(ja), cb = without_run_times(jb);
     if (ca != cb) {
       const json patch = json::diff(ca, cb);
-      ADD_FAILURE() << "results.json differs between two runs beyond run times: " << patch.dump(1).substr(0, 4000);
+      ADD_FAILURE() << "results.json differs between two runs beyond run times: "
+                    << patch.dump(1).substr(0, 4000);
     }
   }
 }
