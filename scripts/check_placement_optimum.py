@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent check of a placement optimum (issue 13): pure Python, no code shared with
+"""Independent check of a placement optimum: pure Python, no code shared with
 armstudy. Model: the 2-link arm in absolute angles (th1, th2) from its Lagrangian, torques
 M2 = Q2 (elbow), M1 = Q1 + Q2 (root), energy = int |M1 th1'| + |M2 (th2' - th1')| dt by the
 trapezoid on the same uniform time grid. The optimum is searched by brute force: a coarse

@@ -1,6 +1,6 @@
 #pragma once
 /// `pendulum:` section of a case file -> studies::PendulumSpec. Every key is optional;
-/// defaults are Sec. 3 of 003_a986fd825f31d3e2.txt and the choices documented in
+/// defaults are Sec. 3 of Sato et al. and the choices documented in
 /// studies::default_pendulum_spec().
 ///
 /// ```yaml

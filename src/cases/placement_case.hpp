@@ -3,7 +3,7 @@
 ///
 /// The arm (`arm:`, see arm_loader.hpp) must have 2 active links and `gravity:` must be 0
 /// (the study lives in a horizontal plane); without `arm:` it is the thesis's arm of
-/// 000_bf165d3f0a5605ef.txt Ch. 9: L1 = 0.4 m, m1 = 4 kg, rG1 = 0.2 m, IG1 = m1 L1^2/12;
+/// Kopmaz (2016), Ch. 9: L1 = 0.4 m, m1 = 4 kg, rG1 = 0.2 m, IG1 = m1 L1^2/12;
 /// L2 = 0.2 m, m2 = 2 kg, rG2 = 0.1 m, IG2 = m2 L2^2/12; payload 1 kg at the tip.
 ///
 /// ```yaml
@@ -49,7 +49,7 @@
 
 namespace armstudy::cases {
 
-/// The thesis's arm (000_bf165d3f0a5605ef.txt Ch. 9), the default of placement cases.
+/// The thesis's arm (Kopmaz 2016, Ch. 9), the default of placement cases.
 core::PlanarChain placement_default_arm();
 
 /// The work and memory `spec` asks for (cases/budget.hpp), reported at `mark`.

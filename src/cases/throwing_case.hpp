@@ -1,7 +1,7 @@
 #pragma once
 /// `throwing:` section of a case file -> studies::ThrowingSpec (and the tray-arm readers
 /// shared with the pendulum case). Every key is optional; defaults are Table 1 and Sec. 4
-/// of 003_a986fd825f31d3e2.txt and the documented choices of SEEDS.md's open points.
+/// of Sato et al. and the choices of docs/assumptions.md where the paper is silent.
 ///
 /// ```yaml
 /// throwing:

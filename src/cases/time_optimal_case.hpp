@@ -2,7 +2,7 @@
 /// `study: time_optimal` case files -> studies::time_optimal::Spec.
 ///
 /// The arm (`arm:`, see arm_loader.hpp) must have 2 active links; without `arm:` it is the
-/// source's model (004_87cbdf4981aa31c3.txt): massless links with a 1.0 kg point mass at the
+/// source's model (Ozkipcak 1994): massless links with a 1.0 kg point mass at the
 /// end of each, in a horizontal plane, with L1 = 0.5 m and L2 = 0.4 m (the source gives no
 /// lengths; studies::time_optimal::default_arm says why these). `gravity:` may be non-zero:
 /// the torque limits must then also hold the arm up.

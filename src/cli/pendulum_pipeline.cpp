@@ -25,12 +25,11 @@ namespace {
 using nlohmann::json;
 constexpr double kDeg = core::kPi / 180.0;
 
-double sig(double v, int digits = 10) { return round_sig(v, digits); }
-json num(double v, int digits = 10) { return json_number(v, digits); }
-json xy(const Eigen::Vector2d& v) { return json::array({num(v.x(), 8), num(v.y(), 8)}); }
-json vec(const core::JointVector& v, int digits = 8) {
+json num(double v) { return json_number(v); }
+json xy(const Eigen::Vector2d& v) { return json::array({num(v.x()), num(v.y())}); }
+json vec(const core::JointVector& v) {
   json a = json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(num(v[i], digits));
+  for (int i = 0; i < v.size(); ++i) a.push_back(num(v[i]));
   return a;
 }
 
@@ -59,7 +58,7 @@ class PendulumRun final : public StudyRun {
             {"integrator_steps", static_cast<double>(result_.steps_accepted), ""}};
   }
 
-  // the study report (issue 7): one call, everything else is src/report's
+  // the study report: one call, everything else is src/report's
   void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
               const nlohmann::json& results_json) override {
     report::write_case_report(dir, info, results_json);
@@ -91,12 +90,12 @@ class PendulumRun final : public StudyRun {
     json t = json::array(), q = json::array(), qd = json::array(), K = json::array(),
          U = json::array(), E = json::array(), ball = json::array(), cc = json::array();
     for (size_t k = 0; k < r.t.size(); ++k) {
-      t.push_back(num(r.t[k], 8));
+      t.push_back(num(r.t[k]));
       q.push_back(vec(r.q[k]));
       qd.push_back(vec(r.qd[k]));
-      K.push_back(num(r.kinetic[k], 12));
-      U.push_back(num(r.potential[k], 12));
-      E.push_back(num(r.total[k], 14));
+      K.push_back(num(r.kinetic[k]));
+      U.push_back(num(r.potential[k]));
+      E.push_back(num(r.total[k]));
       ball.push_back(xy(r.ball[k]));
       cc.push_back(xy(r.circle_centre[k]));
     }
@@ -106,18 +105,18 @@ class PendulumRun final : public StudyRun {
     json snaps = json::array();
     for (size_t i = 0; i < r.snapshot_t.size(); ++i) {
       const int k = r.snapshot_index[i];
-      snaps.push_back({{"t_s", num(r.snapshot_t[i], 8)}, {"index", k}, {"q_rad", vec(r.q[k])},
+      snaps.push_back({{"t_s", num(r.snapshot_t[i])}, {"index", k}, {"q_rad", vec(r.q[k])},
                        {"ball_xy_m", xy(r.ball[k])}});
     }
     j["snapshots"] = snaps;
-    j["energy"] = {{"initial_J", num(r.energy_initial, 14)}, {"scale_J", num(r.energy_scale)},
-                   {"drift_J", num(r.energy_drift, 4)}, {"drift_relative", num(r.energy_drift_rel, 4)},
+    j["energy"] = {{"initial_J", num(r.energy_initial)}, {"scale_J", num(r.energy_scale)},
+                   {"drift_J", num(r.energy_drift)}, {"drift_relative", num(r.energy_drift_rel)},
                    {"tolerance_relative", spec_.drift_tolerance}};
-    j["run_time_s"] = num(r.run_time, 4);
+    j["run_time_s"] = num(r.run_time);
     return j;
   }
 
-  // frames: snapshots every snapshot_step, strip and locus (src/scene, issue 4)
+  // frames: snapshots every snapshot_step, strip and locus (src/scene)
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
     return scene::render_pendulum_frames(spec_, result_, info.render, dir);
@@ -135,7 +134,8 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 }  // namespace
 
 StudyEntry pendulum_entry() {
-  return {"pendulum", "tray and rolling ball swinging freely (003 Sec. 3): energy conservation",
+  return {"pendulum",
+          "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
           &load};
 }
 

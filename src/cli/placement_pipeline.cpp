@@ -69,12 +69,9 @@ namespace pl = studies::placement;
 using nlohmann::json;
 constexpr double kDeg = core::kPi / 180.0;
 
-// a number rounded to `digits` significant digits (JSON stays short and stable)
-double sig(double v, int digits = 7) { return round_sig(v, digits); }
+json num(double v) { return json_number(v); }
 
-json num(double v, int digits = 7) { return json_number(v, digits); }
-
-json pair(const Eigen::Vector2d& v, int digits = 7) { return json::array({num(v.x(), digits), num(v.y(), digits)}); }
+json pair(const Eigen::Vector2d& v) { return json::array({num(v.x()), num(v.y())}); }
 
 json series_json(const pl::TimeSeries& s) {
   json j;
@@ -85,18 +82,18 @@ json series_json(const pl::TimeSeries& s) {
        a1 = json::array(), a2 = json::array(), u1 = json::array(), u2 = json::array(), p1 = json::array(),
        p2 = json::array(), e = json::array();
   for (size_t k = 0; k < n; k += stride) {
-    t.push_back(num(s.t[k], 6));
-    q1.push_back(num(s.q[k][0], 6));
-    q2.push_back(num(s.q[k][1], 6));
-    qd1.push_back(num(s.qd[k][0], 6));
-    qd2.push_back(num(s.qd[k][1], 6));
-    a1.push_back(num(s.qdd[k][0], 6));
-    a2.push_back(num(s.qdd[k][1], 6));
-    u1.push_back(num(s.tau[k][0], 6));
-    u2.push_back(num(s.tau[k][1], 6));
-    p1.push_back(num(s.power[k][0], 6));
-    p2.push_back(num(s.power[k][1], 6));
-    e.push_back(num(s.energy[k], 6));
+    t.push_back(num(s.t[k]));
+    q1.push_back(num(s.q[k][0]));
+    q2.push_back(num(s.q[k][1]));
+    qd1.push_back(num(s.qd[k][0]));
+    qd2.push_back(num(s.qd[k][1]));
+    a1.push_back(num(s.qdd[k][0]));
+    a2.push_back(num(s.qdd[k][1]));
+    u1.push_back(num(s.tau[k][0]));
+    u2.push_back(num(s.tau[k][1]));
+    p1.push_back(num(s.power[k][0]));
+    p2.push_back(num(s.power[k][1]));
+    e.push_back(num(s.energy[k]));
     if (k + stride >= n && k != n - 1) k = n - 1 - stride;  // always end on the last sample
   }
   j["t_s"] = t;
@@ -131,23 +128,23 @@ std::string prog(core::MotionProgram p) { return std::string(core::program_name(
 json convergence_json(const pl::EnergyConvergence& c) {
   json rows = json::array();
   for (const auto& r : c.rows)
-    rows.push_back({{"samples", r.samples}, {"energy_J", num(r.energy, 10)}, {"peak_torque_Nm", num(r.peak_torque, 6)}});
+    rows.push_back({{"samples", r.samples}, {"energy_J", num(r.energy)}, {"peak_torque_Nm", num(r.peak_torque)}});
   return {{"converged", c.converged},
           {"touches_boundary", c.touches_boundary},
           {"singular", c.singular()},
           {"samples", c.samples},
-          {"rel_change", num(c.rel_change, 3)},
-          {"peak_torque_rel_change", num(c.peak_rel_change, 3)},
-          {"tolerance_rel", num(c.tolerance, 3)},
+          {"rel_change", num(c.rel_change)},
+          {"peak_torque_rel_change", num(c.peak_rel_change)},
+          {"tolerance_rel", num(c.tolerance)},
           {"rows", rows}};
 }
 
 // energy, peak torque, peak power of a candidate: null (and a note) for a singular motion
-void metrics_json(json& o, const pl::Candidate& c, int digits = 7) {
+void metrics_json(json& o, const pl::Candidate& c) {
   const bool singular = c.convergence.singular();
   // at the samples where the doubling converged (the spec's samples for a regular motion)
   const pl::LineMetrics& m = c.convergence.checked ? c.convergence.metrics : c.metrics;
-  o["energy_J"] = singular ? json(nullptr) : num(m.energy, digits);
+  o["energy_J"] = singular ? json(nullptr) : num(m.energy);
   o["peak_torque_Nm"] = singular ? json(nullptr)
                                  : json::array({num(m.peak_torque[0]), num(m.peak_torque[1])});
   if (c.convergence.checked) o["energy_samples"] = c.convergence.samples;
@@ -159,12 +156,12 @@ void metrics_json(json& o, const pl::Candidate& c, int digits = 7) {
 // what decides an optimum (refine.hpp)
 json decision_json(const pl::Spec& spec, const pl::Decision& d) {
   json j = {{"binding", pl::binding_name(d.binding)},
-            {"inner_slack_m", num(d.inner_slack, 6)},
-            {"outer_slack_m", num(d.outer_slack, 6)},
+            {"inner_slack_m", num(d.inner_slack)},
+            {"outer_slack_m", num(d.outer_slack)},
             {"margin_m", num(spec.singularity_margin)}};
   j["joint"] = d.joint >= 0 ? json(d.joint + 1) : json(nullptr);
-  j["torque_slack_Nm"] = json::array({num(d.torque_slack[0], 6), num(d.torque_slack[1], 6)});
-  j["power_slack_W"] = json::array({num(d.power_slack[0], 6), num(d.power_slack[1], 6)});
+  j["torque_slack_Nm"] = json::array({num(d.torque_slack[0]), num(d.torque_slack[1])});
+  j["power_slack_W"] = json::array({num(d.power_slack[0]), num(d.power_slack[1])});
   j["set_by_margin"] = d.binding == pl::Binding::kInnerClearance || d.binding == pl::Binding::kOuterClearance;
   return j;
 }
@@ -194,7 +191,7 @@ class PlacementRun final : public StudyRun {
     }
     return c;
   }
-  // the study report (issue 7): one call, everything else is src/report's
+  // the study report: one call, everything else is src/report's
   void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
               const nlohmann::json& results_json) override {
     report::write_case_report(dir, info, results_json);
@@ -222,7 +219,7 @@ class PlacementRun final : public StudyRun {
     return k;
   }
 
-  // frames: the optimum of every program and configuration (src/scene, issue 4)
+  // frames: the optimum of every program and configuration (src/scene)
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
     std::vector<std::string> files = scene::render_placement_frames(spec_, result_, info.render, dir);
@@ -273,22 +270,22 @@ json PlacementRun::results() const {
     if (pc.found) {
       const pl::Candidate& c = pc.refined;
       json o = id;
-      metrics_json(o, c, 10);
-      o["x_s_m"] = num(c.x_s, 10);
-      o["phi_deg"] = num(c.phi / kDeg, 10);
-      o["root_xy_m"] = pair(c.root, 10);
+      metrics_json(o, c);
+      o["x_s_m"] = num(c.x_s);
+      o["phi_deg"] = num(c.phi / kDeg);
+      o["root_xy_m"] = pair(c.root);
       o["grid_energy_J"] = num(pc.grid.metrics.energy);
       o["grid_x_s_m"] = num(pc.grid.x_s);
       o["grid_phi_deg"] = num(pc.grid.phi / kDeg);
       o["min_abs_sin_elbow"] = num(c.min_abs_sin);
       o["boundary_distance_m"] = num(c.boundary_distance);
       o["peak_power_W"] = json::array({num(c.metrics.peak_power[0]), num(c.metrics.peak_power[1])});
-      o["signed_work_J"] = num(c.metrics.signed_work, 3);
+      o["signed_work_J"] = num(c.metrics.signed_work);
       o["singular"] = c.status != pl::CandidateStatus::kFeasible || c.convergence.singular();
       o["refine_evaluations"] = pc.refine_evaluations;
       o["decided_by"] = decision_json(spec_, pc.decision);
       o["refinement"] = {{"method", pc.refine_method.empty() ? json(nullptr) : json(pc.refine_method)},
-                         {"final_tolerance_rel", pc.refine_method.empty() ? json(nullptr) : num(pc.refine_tolerance_rel, 3)},
+                         {"final_tolerance_rel", pc.refine_method.empty() ? json(nullptr) : num(pc.refine_tolerance_rel)},
                          {"target_rel", 1e-7},
                          {"converged", pc.refine_converged},
                          {"evaluations", pc.refine_evaluations}};
@@ -296,13 +293,13 @@ json PlacementRun::results() const {
       for (const pl::MarginPoint& m : pc.margin_sensitivity) {
         json mj = {{"margin_m", num(m.margin)}, {"found", m.found}};
         if (m.found) {
-          metrics_json(mj, m.optimum, 10);
-          mj["x_s_m"] = num(m.optimum.x_s, 10);
-          mj["phi_deg"] = num(m.optimum.phi / kDeg, 10);
-          mj["root_xy_m"] = pair(m.optimum.root, 7);
+          metrics_json(mj, m.optimum);
+          mj["x_s_m"] = num(m.optimum.x_s);
+          mj["phi_deg"] = num(m.optimum.phi / kDeg);
+          mj["root_xy_m"] = pair(m.optimum.root);
           mj["binding"] = pl::binding_name(m.decision.binding);
           mj["refine_converged"] = m.refine_converged;
-          mj["refine_tolerance_rel"] = num(m.refine_tolerance_rel, 3);
+          mj["refine_tolerance_rel"] = num(m.refine_tolerance_rel);
         }
         ms.push_back(mj);
       }
@@ -327,8 +324,8 @@ json PlacementRun::results() const {
       t["root_xy_m"] = pair(c.root);
       t["status"] = pl::status_name(c.status);
       t["singular"] = c.status == pl::CandidateStatus::kSingular;
-      t["boundary_distance_m"] = num(c.boundary_distance, 4);
-      t["min_abs_sin_elbow"] = num(c.min_abs_sin, 4);
+      t["boundary_distance_m"] = num(c.boundary_distance);
+      t["min_abs_sin_elbow"] = num(c.min_abs_sin);
       thesis.push_back(t);
     }
     {
@@ -337,8 +334,8 @@ json PlacementRun::results() const {
       json phi = json::array(), e = json::array();
       std::string st;
       for (size_t k = 0; k < pc.curve.phi.size(); ++k) {
-        phi.push_back(num(pc.curve.phi[k] / kDeg, 6));
-        e.push_back(num(pc.curve.energy[k], 5));
+        phi.push_back(num(pc.curve.phi[k] / kDeg));
+        e.push_back(num(pc.curve.energy[k]));
         st += pl::status_char(pc.curve.status[k]);
       }
       cj["phi_deg"] = phi;
@@ -356,10 +353,10 @@ json PlacementRun::results() const {
         // thin: keep the first, the last, and steps of >= 0.2 % in energy
         if (k != 0 && k + 1 != front.size() && front[k].energy > last * (1 - 2e-3)) continue;
         last = front[k].energy;
-        pk.push_back(json::array({num(front[k].peak_torque[0], 5), num(front[k].peak_torque[1], 5)}));
-        e.push_back(num(front[k].energy, 6));
-        xs.push_back(num(front[k].x_s, 6));
-        ph.push_back(num(front[k].phi / kDeg, 6));
+        pk.push_back(json::array({num(front[k].peak_torque[0]), num(front[k].peak_torque[1])}));
+        e.push_back(num(front[k].energy));
+        xs.push_back(num(front[k].x_s));
+        ph.push_back(num(front[k].phi / kDeg));
         sg.push_back(front[k].singular);
       }
       pj["peak_torque_Nm"] = pk;
@@ -374,8 +371,8 @@ json PlacementRun::results() const {
       for (size_t k = 0; k < ex.size(); ++k) {
         if (k != 0 && k + 1 != ex.size() && ex[k].energy > last * (1 - 2e-3)) continue;
         last = ex[k].energy;
-        xk.push_back(json::array({num(ex[k].peak_torque[0], 5), num(ex[k].peak_torque[1], 5)}));
-        xe.push_back(num(ex[k].energy, 6));
+        xk.push_back(json::array({num(ex[k].peak_torque[0]), num(ex[k].peak_torque[1])}));
+        xe.push_back(num(ex[k].energy));
       }
       pj["excluded"] = {{"what", "candidates inside the clearance margin (inadmissible), energy converged"},
                         {"peak_torque_Nm", xk},
@@ -386,8 +383,8 @@ json PlacementRun::results() const {
       const pl::EnergyMap& m = pc.map;
       json mj = id;
       json x = json::array(), y = json::array(), er = json::array(), sr = json::array();
-      for (double v : m.x) x.push_back(num(v, 6));
-      for (double v : m.y) y.push_back(num(v, 6));
+      for (double v : m.x) x.push_back(num(v));
+      for (double v : m.y) y.push_back(num(v));
       const size_t nx = m.x.size();
       for (size_t row = 0; row < m.y.size(); ++row) {
         std::string e, s;
@@ -437,10 +434,10 @@ json PlacementRun::results() const {
     }
     ej["status"] = pl::status_name(c.status);
     ej["singular"] = c.status == pl::CandidateStatus::kSingular;
-    ej["boundary_distance_m"] = num(c.boundary_distance, 5);
-    ej["min_abs_sin_elbow"] = num(c.min_abs_sin, 5);
+    ej["boundary_distance_m"] = num(c.boundary_distance);
+    ej["min_abs_sin_elbow"] = num(c.min_abs_sin);
     ej["saving_J"] = e.has_saving ? num(e.saving) : json(nullptr);
-    ej["saving_percent"] = e.has_saving ? num(e.saving_percent, 5) : json(nullptr);
+    ej["saving_percent"] = e.has_saving ? num(e.saving_percent) : json(nullptr);
     ej["line_start_m"] = pair(e.placement.start);
     ej["line_end_m"] = pair(e.placement.end);
     if (!e.series.t.empty()) ej["series"] = series_json(e.series);
@@ -451,7 +448,7 @@ json PlacementRun::results() const {
   j["pareto"] = pareto;
   j["maps"] = maps;
   json conv = json::array();
-  for (const auto& row : r.convergence) conv.push_back({{"samples", row.samples}, {"energy_J", num(row.energy, 10)}});
+  for (const auto& row : r.convergence) conv.push_back({{"samples", row.samples}, {"energy_J", num(row.energy)}});
   for (const auto& pc : r.cases) {
     if (!pc.found) continue;
     j["convergence"] = {{"program", prog(pc.program)}, {"configuration", pc.configuration}, {"rows", conv}};
@@ -464,7 +461,7 @@ json PlacementRun::results() const {
     replays.push_back(rj);
   }
   j["mujoco_replay"] = replays;
-  j["solve_seconds"] = num(r.seconds, 3);
+  j["solve_seconds"] = num(r.seconds);
   j["samples_evaluated"] = r.samples_evaluated;
   return j;
 }

@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "cli/json_numbers.hpp"
 #include "cli/provenance.hpp"
 #include "scene/osmesa_context.hpp"
 #include "report/case_report.hpp"
@@ -161,7 +162,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     c.run->report(tmp_dir, c.info, j);
     // results.json last, listing every file written beside it with its sha256
     j["files"] = list_files(tmp_dir, "results.json");
-    write_file_atomic(tmp_dir / "results.json", j.dump(2) + "\n");
+    write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
 
     swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name);
     if (status != studies::Status::kSolved && c.info.expect_unsolvable) {

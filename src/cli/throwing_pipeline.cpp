@@ -62,11 +62,11 @@ using nlohmann::json;
 namespace st = studies;
 constexpr double kDeg = core::kPi / 180.0;
 
-json num(double v, int digits = 8) { return json_number(v, digits); }
+json num(double v) { return json_number(v); }
 template <typename V>
-json arr(const V& v, int digits = 7) {
+json arr(const V& v) {
   json a = json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(num(v[i], digits));
+  for (int i = 0; i < v.size(); ++i) a.push_back(num(v[i]));
   return a;
 }
 
@@ -75,18 +75,18 @@ const char* kKeys[st::kConstraintKinds] = {"contact", "friction", "tray", "volta
 
 // margins (> 0 met) in physical units of an evaluation
 json margins_json(const st::ThrowingSpec& sp, const st::ProfileEvaluation& e) {
-  return {{"contact_N", num(e.min_normal_force - sp.contact_margin, 6)},
-          {"friction", num(sp.friction_coefficient - e.max_friction_ratio, 6)},
-          {"tray_rad", num(sp.tray_width / 2 - e.max_abs_theta4, 6)},
-          {"release_rad", num(sp.release_tolerance - std::abs(e.theta3_final - sp.theta3_release), 6)},
-          {"voltage_V", num(sp.voltage_max - e.max_voltage, 6)},
-          {"current_A", num(sp.current_max - e.max_current, 6)},
-          {"power_W", num(sp.power_max - e.max_power, 6)}};
+  return {{"contact_N", num(e.min_normal_force - sp.contact_margin)},
+          {"friction", num(sp.friction_coefficient - e.max_friction_ratio)},
+          {"tray_rad", num(sp.tray_width / 2 - e.max_abs_theta4)},
+          {"release_rad", num(sp.release_tolerance - std::abs(e.theta3_final - sp.theta3_release))},
+          {"voltage_V", num(sp.voltage_max - e.max_voltage)},
+          {"current_A", num(sp.current_max - e.max_current)},
+          {"power_W", num(sp.power_max - e.max_power)}};
 }
 
 json worst_json(const std::array<double, st::kConstraintKinds>& w) {
   json j;
-  for (int c = 0; c < st::kConstraintKinds; ++c) j[kKeys[c]] = num(w[c], 6);
+  for (int c = 0; c < st::kConstraintKinds; ++c) j[kKeys[c]] = num(w[c]);
   return j;
 }
 
@@ -120,12 +120,12 @@ json motion_json(const st::ThrowingSpec& sp, const st::ThrowMotion& m) {
   j["feasible"] = e.feasible;
   j["worst_normalised"] = worst_json(m.worst);
   j["margins"] = margins_json(sp, e);
-  j["release_error"] = {{"angle_rad", arr(m.angle_error, 6)}, {"rate_rad_s", arr(m.rate_error, 6)}};
+  j["release_error"] = {{"angle_rad", arr(m.angle_error)}, {"rate_rad_s", arr(m.rate_error)}};
   j["energy_split"] = {{"electrical_J", num(m.split.electrical)},
                        {"mechanical_J", num(m.split.mechanical)},
                        {"copper_J", num(m.split.copper)},
                        {"friction_J", num(m.split.friction)},
-                       {"rest_J", num(m.split.rest, 3)}};
+                       {"rest_J", num(m.split.rest)}};
   json pt = json::array(), pr = json::array();
   for (int k = 0; k <= m.profile.stages(); ++k) {
     pt.push_back(num(k * m.profile.stage_length()));
@@ -141,16 +141,16 @@ json motion_json(const st::ThrowingSpec& sp, const st::ThrowMotion& m) {
     t.push_back(num(s.t[k]));
     q.push_back(arr(s.q[k]));
     qd.push_back(arr(s.qd[k]));
-    tau.push_back(arr(s.tau_m[k], 6));
-    v.push_back(arr(s.voltage[k], 6));
-    i.push_back(arr(s.current[k], 6));
-    p.push_back(arr(s.power[k], 6));
-    en.push_back(num(s.energy[k], 7));
+    tau.push_back(arr(s.tau_m[k]));
+    v.push_back(arr(s.voltage[k]));
+    i.push_back(arr(s.current[k]));
+    p.push_back(arr(s.power[k]));
+    en.push_back(num(s.energy[k]));
     ball.push_back(arr(s.ball[k]));
-    nf.push_back(num(s.normal_force[k], 6));
-    tf.push_back(num(s.tangential_force[k], 6));
+    nf.push_back(num(s.normal_force[k]));
+    tf.push_back(num(s.tangential_force[k]));
     // friction needed to roll, |F_t| / N (null where the tray does not push the ball)
-    fr.push_back(s.normal_force[k] > 0 ? num(std::abs(s.tangential_force[k]) / s.normal_force[k], 6)
+    fr.push_back(s.normal_force[k] > 0 ? num(std::abs(s.tangential_force[k]) / s.normal_force[k])
                                        : json(nullptr));
   }
   // the stage of each sample: the end sample of a stage repeats its time
@@ -259,7 +259,7 @@ class ThrowingRun final : public StudyRun {
     return k;
   }
 
-  // the study report (issue 7): one call, everything else is src/report's
+  // the study report: one call, everything else is src/report's
   void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
               const nlohmann::json& results_json) override {
     report::write_case_report(dir, info, results_json);
@@ -293,7 +293,8 @@ class ThrowingRun final : public StudyRun {
                   {"duration_s", spec_.tf},
                   {"landing_height_m", spec_.landing_height}}},
         {"choices",
-         {"model derived from first principles (tray_arm.hpp): ball spin = tray rate - (r4/r_b) "
+         {"model derived from first principles (docs/derivations/throwing.md): ball spin = "
+          "tray rate - (r4/r_b) "
           "theta4'; eq. 3's spin term and a5 as printed are wrong",
           "the centre of the ball's circle lies circle_offset_m from the tray hinge (Table 1's l3 "
           "by default)",
@@ -335,7 +336,7 @@ class ThrowingRun final : public StudyRun {
     j["energy_initial_J"] = num(r.initial.evaluation.energy);
     j["energy_reference_J"] = num(r.reference.evaluation.energy);
     j["energy_optimised_J"] = num(r.idp.evaluation.energy);
-    j["saving_percent"] = num(r.saving_percent, 5);
+    j["saving_percent"] = num(r.saving_percent);
     if (r.idp.series.t.empty()) return j;
     {
       json breaks = json::array();
@@ -346,7 +347,7 @@ class ThrowingRun final : public StudyRun {
       for (int c = 0; c < st::kConstraintKinds; ++c)
         if (r.initial.worst[c] > 0)
           breaks.push_back({{"constraint", st::constraint_name(static_cast<st::ConstraintKind>(c))},
-                            {"worst_normalised", num(r.initial.worst[c], 6)},
+                            {"worst_normalised", num(r.initial.worst[c])},
                             {"margin", mg[mkeys[c]]}, {"unit", units[c]}});
       json ref = {{"kind", r.reference_kind}, {"initial_feasible", r.initial_feasible},
                   {"raw_breaks", breaks}};
@@ -360,8 +361,8 @@ class ThrowingRun final : public StudyRun {
                          {"feasible", r.repair_run.feasible},
                          {"iterations", r.repair_run.iterations},
                          {"simulations", r.repair_run.simulations},
-                         {"run_time_s", num(r.repair_run.run_time, 4)},
-                         {"max_rate_change_rad_s", num(r.repair_run.rate_change, 6)}};
+                         {"run_time_s", num(r.repair_run.run_time)},
+                         {"max_rate_change_rad_s", num(r.repair_run.rate_change)}};
       j["reference"] = ref;
     }
     j["initial"] = motion_json(spec_, r.initial);
@@ -370,7 +371,7 @@ class ThrowingRun final : public StudyRun {
     json conv = json::array();
     for (const auto& h : r.idp_run.history)
       conv.push_back({{"iteration", h.iteration}, {"pass", h.pass}, {"energy_J", num(h.energy)},
-                      {"violation", num(h.violation, 6)}, {"region_rad_s", arr(h.region, 5)},
+                      {"violation", num(h.violation)}, {"region_rad_s", arr(h.region)},
                       {"evaluations", h.evaluations}, {"improvements", h.improvements}});
     const auto& is = spec_.idp;
     json seeds = json::array();
@@ -379,8 +380,8 @@ class ThrowingRun final : public StudyRun {
     for (const auto& sd : r.idp_seeds) {
       seeds.push_back({{"seed", sd.seed}, {"energy_J", num(sd.evaluation.energy)},
                        {"feasible", sd.evaluation.feasible}, {"converged", sd.converged},
-                       {"passes", sd.passes}, {"last_gain", num(sd.last_gain, 4)},
-                       {"evaluations", sd.evaluations}, {"run_time_s", num(sd.run_time, 4)}});
+                       {"passes", sd.passes}, {"last_gain", num(sd.last_gain)},
+                       {"evaluations", sd.evaluations}, {"run_time_s", num(sd.run_time)}});
       es.push_back(sd.evaluation.energy);
       evaluations += sd.evaluations;
     }
@@ -396,8 +397,8 @@ class ThrowingRun final : public StudyRun {
                 {"seed", is.seed}, {"seeds", is.seeds}, {"backoff", spec_.backoff},
                 {"threads", r.idp_run.threads}, {"converged", r.idp_converged},
                 {"best_seed", r.idp_run.seed}, {"passes", r.idp_run.passes},
-                {"last_gain", num(r.idp_run.last_gain, 4)},
-                {"evaluations", evaluations}, {"run_time_s", num(r.idp_time, 4)},
+                {"last_gain", num(r.idp_run.last_gain)},
+                {"evaluations", evaluations}, {"run_time_s", num(r.idp_time)},
                 {"seed_runs", seeds},
                 {"spread", {{"best_J", num(es.empty() ? NAN : es.front())}, {"median_J", num(median)},
                             {"worst_J", num(es.empty() ? NAN : es.back())}}},
@@ -410,10 +411,10 @@ class ThrowingRun final : public StudyRun {
       nl["return_code"] = r.nlopt_run.return_code;
       nl["converged"] = r.nlopt_run.converged;
       nl["feasible"] = r.nlopt_run.feasible;
-      nl["last_gain"] = num(r.nlopt_run.last_gain, 4);
+      nl["last_gain"] = num(r.nlopt_run.last_gain);
       nl["iterations"] = r.nlopt_run.iterations;
       nl["simulations"] = r.nlopt_run.simulations;
-      nl["run_time_s"] = num(r.nlopt_run.run_time, 4);
+      nl["run_time_s"] = num(r.nlopt_run.run_time);
       nl["max_evaluations"] = spec_.nlopt.max_evaluations;
       nl["max_time_s"] = spec_.nlopt.max_time;
       nl["ftol_rel"] = spec_.nlopt.ftol_rel;
@@ -428,7 +429,7 @@ class ThrowingRun final : public StudyRun {
       return json{{"optimiser", name}, {"energy_J", num(m.evaluation.energy)},
                   {"mechanical_J", num(m.split.mechanical)}, {"copper_J", num(m.split.copper)},
                   {"friction_J", num(m.split.friction)}, {"converged", conv},
-                  {"simulations", sims}, {"run_time_s", num(time, 4)},
+                  {"simulations", sims}, {"run_time_s", num(time)},
                   {"feasible", v.feasible}, {"margins", margins_json(spec_, v.evaluation)},
                   {"binding", binding_json(v.worst, spec_.backoff)},
                   {"binding_rating", binding_rating(v.worst, spec_.backoff)}};
@@ -464,7 +465,7 @@ class ThrowingRun final : public StudyRun {
       rt.push_back(num(r.replay_t[k]));
       rq.push_back(arr(r.replay_q[k]));
     }
-    j["replay"] = {{"max_error_rad", num(r.replay_error, 4)},
+    j["replay"] = {{"max_error_rad", num(r.replay_error)},
                    {"tolerance_rad", spec_.replay_tolerance},
                    {"integrator", "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
                                   "with 16x the RK4 steps, linear between its samples within a stage; "
@@ -474,13 +475,13 @@ class ThrowingRun final : public StudyRun {
                         {"steps_per_stage", spec_.steps_per_stage},
                         {"step_s", spec_.tf / spec_.stages / spec_.steps_per_stage},
                         {"fine_steps_factor", 16},
-                        {"energy_error_vs_fine_steps", num(r.rk4_energy_error, 4)},
-                        {"theta3_error_vs_fine_steps_rad", num(r.rk4_theta3_error, 4)}};
-    j["run_time_s"] = num(r.run_time, 4);
+                        {"energy_error_vs_fine_steps", num(r.rk4_energy_error)},
+                        {"theta3_error_vs_fine_steps_rad", num(r.rk4_theta3_error)}};
+    j["run_time_s"] = num(r.run_time);
     return j;
   }
 
-  // frames: the IDP optimum's strip and locus (Fig. 7) and the flight (src/scene, issue 4)
+  // frames: the IDP optimum's strip and locus (Fig. 7) and the flight (src/scene)
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
     return scene::render_throwing_frames(spec_, result_, info.render, dir);
@@ -499,7 +500,7 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 
 StudyEntry throwing_entry() {
   return {"throwing",
-          "tray arm with a passive joint: energy-saving throw by IDP and SLSQP (003 Sec. 4)",
+          "tray arm with a passive joint: energy-saving throw by IDP and SLSQP (Sato et al. Sec. 4)",
           &load};
 }
 

@@ -43,22 +43,22 @@ namespace {
 namespace to = studies::time_optimal;
 using nlohmann::json;
 
-json num(double v, int digits = 9) { return json_number(v, digits); }
+json num(double v) { return json_number(v); }
 
-json list(const std::vector<double>& v, int digits = 9) {
+json list(const std::vector<double>& v) {
   json a = json::array();
-  for (double x : v) a.push_back(num(x, digits));
+  for (double x : v) a.push_back(num(x));
   return a;
 }
 
-json pair(const Eigen::Vector2d& v, int digits = 9) { return json::array({num(v[0], digits), num(v[1], digits)}); }
+json pair(const Eigen::Vector2d& v) { return json::array({num(v[0]), num(v[1])}); }
 
 // a 2 x N matrix as two per-joint rows
-json rows(const Eigen::Matrix2Xd& m, int digits = 9) {
+json rows(const Eigen::Matrix2Xd& m) {
   json out = json::array();
   for (int j = 0; j < 2; ++j) {
     json r = json::array();
-    for (int k = 0; k < m.cols(); ++k) r.push_back(num(m(j, k), digits));
+    for (int k = 0; k < m.cols(); ++k) r.push_back(num(m(j, k)));
     out.push_back(r);
   }
   return out;
@@ -90,7 +90,7 @@ json solver_json(const to::SolverResult& r) {
             {"solved", r.solved},
             {"message", r.message},
             {"duration_s", r.solved ? num(r.duration) : json(nullptr)},
-            {"run_time_s", num(r.run_time, 4)},
+            {"run_time_s", num(r.run_time)},
             {"intervals", r.intervals},
             {"levels", r.levels},
             {"evaluations", r.evaluations},
@@ -201,7 +201,7 @@ json TimeOptimalRun::results() const {
                     {"solved", row.solved},
                     {"duration_s", row.solved ? num(row.duration) : json(nullptr)},
                     {"excess", row.solved ? num(row.excess) : json(nullptr)},
-                    {"run_time_s", num(row.run_time, 4)},
+                    {"run_time_s", num(row.run_time)},
                     {"worst_violation", row.solved ? num(row.worst_violation) : json(nullptr)},
                     {"message", row.message}});
   j["convergence"] = conv;
@@ -218,15 +218,15 @@ json TimeOptimalRun::results() const {
                              {"refined_solved", g.refined_solved},
                              {"duration_s", num(g.duration)},
                              {"refined_duration_s", g.refined_solved ? num(g.refined_duration) : json(nullptr)},
-                             {"change", num(g.change, 4)},
-                             {"tolerance", num(g.tolerance, 4)},
+                             {"change", num(g.change)},
+                             {"tolerance", num(g.tolerance)},
                              {"passed", g.change <= g.tolerance},
-                             {"s_range_m", json::array({num(g.s_lo, 6), num(g.s_hi, 6)})},
+                             {"s_range_m", json::array({num(g.s_lo), num(g.s_hi)})},
                              {"grid_point_range", json::array({g.point_lo, g.point_hi})},
-                             {"share", num(g.share, 3)},
-                             {"max_sd_m_s", num(g.max_sd, 4)},
-                             {"min_abs_sin_q2", num(g.min_sin_q2, 4)},
-                             {"path_min_abs_sin_q2", num(g.path_min_sin_q2, 4)},
+                             {"share", num(g.share)},
+                             {"max_sd_m_s", num(g.max_sd)},
+                             {"min_abs_sin_q2", num(g.min_sin_q2)},
+                             {"path_min_abs_sin_q2", num(g.path_min_sin_q2)},
                              {"text", g.text}};
   }
   if (replay_) j["mujoco_replay"] = replay_json(*replay_);

@@ -1,5 +1,5 @@
 #pragma once
-/// Armature-controlled DC servomotor of 003_a986fd825f31d3e2.txt eq. 5-7 (direct drive).
+/// Armature-controlled DC servomotor of Sato et al. eq. 5-7 (direct drive).
 ///
 ///   e = b1 qd + b2 qdd + b3 tau + b3 tau_f sign(qd),
 ///   b1 = kv + (Ra/kt) Dm, b2 = (Ra/kt) Im, b3 = Ra/kt          (eq. 5)

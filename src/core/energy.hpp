@@ -8,7 +8,7 @@
 namespace armstudy::core {
 
 /// Absolute actuator power sum_i |tau_i qd_i| on relative joint angles, W: the integrand
-/// of the no-regeneration energy of 000_bf165d3f0a5605ef.txt Ch. 8.
+/// of the no-regeneration energy of Kopmaz (2016) Ch. 8.
 inline double absolute_power(const JointVector& tau, const JointVector& qd) {
   return (tau.array() * qd.array()).abs().sum();
 }

@@ -9,7 +9,7 @@
 namespace armstudy::core {
 
 enum class MotionProgram {
-  kCycloidal,    ///< eq. 5.2 of 000_bf165d3f0a5605ef.txt; zero end accelerations
+  kCycloidal,    ///< eq. 5.2 of Kopmaz (2016); zero end accelerations
   kPoly345,      ///< eq. 5.3; zero end accelerations
   kPoly4567,     ///< 35 t^4 - 84 t^5 + 70 t^6 - 20 t^7; zero end accelerations and jerks
   kTrapezoidal,  ///< trapezoidal velocity, accelerating over T/3 (accelerations jump)

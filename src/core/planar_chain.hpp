@@ -40,7 +40,7 @@ struct PointMass {
 /// A spinning inertia whose angular velocity is a fixed linear combination of the
 /// joint velocities: omega = coeffs . qd. It models rotor inertia (a gear ratio times a
 /// joint rate) and the spin of a rolling object (e.g. the tray ball of
-/// 003_a986fd825f31d3e2.txt: omega_ball = (qd0+qd1+qd2) - (r4/r_b) qd3). Its kinetic energy
+/// Sato et al.: omega_ball = (qd0+qd1+qd2) - (r4/r_b) qd3). Its kinetic energy
 /// 1/2 I (coeffs . qd)^2 adds the constant I coeffs coeffs^T to the mass matrix.
 /// (Its mass, if any, belongs to a PointMass or Link.)
 struct SpinningInertia {

@@ -1,4 +1,4 @@
-// the pendulum test of 003_a986fd825f31d3e2.txt sec. 3: energy over time (fig. 3), angles
+// the pendulum test of Sato et al. sec. 3: energy over time (fig. 3), angles
 // over time, the ball's path with the snapshots (fig. 2)
 #include <cmath>
 
@@ -37,7 +37,8 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
   method.heading = "Method";
   method.new_page = false;
   method.paragraph(
-      "The tray arm of 003 with joints 1 and 2 locked is a passive double pendulum: the tray "
+      "The tray arm of Sato et al. (docs/sources.md) with joints 1 and 2 locked is a passive "
+      "double pendulum: the tray "
       "swings on its hinge and the ball rolls without slipping on a circle in the tray "
       "(r_b φ' = -r4 θ4'). The equations of motion come from first principles (the ball's spin "
       "includes the tray's rotation) and are integrated from rest with " +
@@ -46,10 +47,12 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
       ". With no actuator and no friction the mechanical energy K + U must stay constant; its "
       "drift measures the model and the integrator together (the paper's Figure 3).");
   for (const json& c : arr(par, "choices"))
-    if (c.is_string()) method.note("What 003 leaves open: " + c.get<std::string>());
+    if (c.is_string())
+      method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
   method.note(
       "The paper's printed energy curve is not reproduced number for number: its printed "
-      "coefficients are inconsistent (SEEDS.md), so the model is derived from first principles "
+      "coefficients are inconsistent (docs/defects.md), so the model is derived from first "
+      "principles "
       "and checked by conservation, which holds for any consistent choice of the values above.");
   if (!par.empty()) method.table(json_table(par, "Parameters used (SI; _deg in degrees)."));
   page.sections.push_back(std::move(method));
@@ -73,7 +76,7 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
   const auto ts = jsonv::vec(series, "t_s");
   if (ts.size() >= 2) {
     LinePlot e;
-    e.title = "energies over time (cf. 003 Figure 3)";
+    e.title = "energies over time (cf. Figure 3 of Sato et al.)";
     e.x_label = "time (s)";
     e.y_label = "energy relative to the start (J)";
     e.series.push_back({"kinetic K", ts, jsonv::vec(series, "kinetic_J"), colour_for("kinetic")});
@@ -122,7 +125,7 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
 
     // the ball's path in the plane with the snapshots (fig. 2 style)
     ShadedMap path;
-    path.title = "ball path and snapshots (cf. 003 Figure 2)";
+    path.title = "ball path and snapshots (cf. Figure 2 of Sato et al.)";
     path.x_label = "x (m)";
     path.y_label = "y (m)";
     path.nx = path.ny = 2;
@@ -149,7 +152,7 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     path.y_max = y1 + pad;
     path.overlays = {ball, centre};
     Table snaps;
-    snaps.caption = "Snapshots of the motion (003 Figure 2 shows one every 0.13 s).";
+    snaps.caption = "Snapshots of the motion (Figure 2 of Sato et al. shows one every 0.13 s).";
     snaps.header = {"t (s)", "θ3 (rad)", "θ4 (rad)", "ball (x, y) (m)"};
     for (const json& sn : arr(p, "snapshots")) {
       const auto q = jsonv::vec(sn, "q_rad");

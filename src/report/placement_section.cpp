@@ -1,4 +1,4 @@
-// the placement study of 000_bf165d3f0a5605ef.txt: optima, time series (figs. 9.1-9.5),
+// the placement study of Kopmaz (2016): optima, time series (figs. 9.1-9.5),
 // energy over direction angle (9.11), placement maps, root loci (9.30), pareto front
 #include <algorithm>
 #include <map>
@@ -40,7 +40,7 @@ const json& arr(const json& j, const char* key) {
   static const json empty = json::array();
   return jsonv::has(j, key) && j[key].is_array() ? j[key] : empty;
 }
-// a singular motion's energy, peak and saving are never printed (issue 13)
+// a singular motion's energy, peak and saving are never printed
 bool singular_motion(const json& o) {
   return jsonv::has(o, "singular_trajectory") && o["singular_trajectory"].is_boolean() &&
          o["singular_trajectory"].get<bool>();
@@ -714,7 +714,8 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   method.paragraph(
       "A 2-link arm in a horizontal plane carries its payload along a straight line of length "
       "L in time T with a rest-to-rest motion program. The line is fixed; the arm's root "
-      "location is chosen. As in the thesis (Ch. 4), start points S = (x_S, 0) and direction "
+      "location is chosen. As in Kopmaz's thesis (2016, Ch. 4; docs/sources.md), start points "
+      "S = (x_S, 0) and direction "
       "angles φ are swept on a grid, the root location in the line's frame is "
       "X = -x_S cos φ, Y = x_S sin φ (4.14), and for every candidate the actuator energy "
       "E = ∫ |M1 dθ1| + |M2 d(θ2 - θ1)| (Ch. 8, no regeneration) is computed from inverse "
@@ -734,7 +735,8 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
       "(3.17b) must use sin θ1). Several of its printed optima (Y = 0.1999 or 0.2000) lie on "
       "lines tangent to the inner workspace circle, where the elbow folds completely and the "
       "arm is singular. This report computes from first principles and never presents a "
-      "singular trajectory as an ordinary optimum, so its numbers differ from the thesis's.");
+      "singular trajectory as an ordinary optimum, so its numbers differ from the thesis's "
+      "(docs/defects.md, docs/derivations/placement.md).");
   page.sections.push_back(std::move(method));
   page.sections.push_back(task_section(pl));
   page.sections.push_back(optima_section(pl, figures));

@@ -1,4 +1,4 @@
-// the throwing study of 003_a986fd825f31d3e2.txt sec. 4 as a constrained problem
+// the throwing study of Sato et al. sec. 4 (docs/sources.md) as a constrained problem
 // (docs/throwing.md): eq. 8 start, feasible reference, idp optimum (best of several seeds)
 // and the gradient (slsqp) optimum side by side; one comparison table on equal terms;
 // voltages, currents, torques, powers with their limits; contact force and friction needed
@@ -142,12 +142,14 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       " Both optimisers keep every normalised constraint " + jsonv::sig(lim, "backoff", 2) +
       " inside its limit and start from the same feasible reference.");
   method.note(
-      "Several printed coefficients of 003's equations of motion are inconsistent with its "
+      "Several printed coefficients of the equations of motion of Sato et al. are inconsistent "
+      "with its "
       "kinematics (a3's m4 term, two lines labelled A45, a5's inverted ratio, the ball spin "
       "of eq. 3, S234 in eq. 4); the model here is derived from first principles instead, so "
-      "energies and angles differ from the paper's figures by design.");
+      "energies and angles differ from the paper's figures by design (docs/defects.md, "
+      "docs/derivations/throwing.md).");
   for (const json& c : arr(par, "choices"))
-    if (c.is_string()) method.note("What 003 leaves open: " + c.get<std::string>());
+    if (c.is_string()) method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
   {
     Table at;
     at.caption = "Assumptions: values the paper leaves open, chosen here (case keys); they are "
@@ -415,7 +417,7 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   // the locus of the throw (003 figure 7) and the flight, in the vertical plane
   {
     ShadedMap locus;
-    locus.title = "ball path: throw and flight (cf. 003 Figure 7)";
+    locus.title = "ball path: throw and flight (cf. Figure 7 of Sato et al.)";
     locus.x_label = "x (m)";
     locus.y_label = "y (m)";
     locus.nx = locus.ny = 2;

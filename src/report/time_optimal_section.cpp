@@ -1,4 +1,4 @@
-// the time-optimal study of 004_87cbdf4981aa31c3.txt: solvers side by side, the phase plane
+// the time-optimal study of Ozkipcak (1994): solvers side by side, the phase plane
 // with the maximum velocity curve, joint torques and velocities with their limits, the dp
 // convergence table
 #include <cmath>
@@ -68,14 +68,16 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       "The tip of a 2-link arm in a horizontal plane follows a given path; the speed along it "
       "is chosen to reach the end in the least time under joint velocity and torque limits, "
       "at rest at both ends. Three solvers work on the same problem: dynamic programming as "
-      "in the source (N segments of constant acceleration, Bellman recursion over a grid of "
+      "in the source (Ozkipcak 1994, docs/sources.md: N segments of constant acceleration, "
+      "Bellman recursion over a grid of "
       "velocity states; the path speed s' is the default state because joint 1 need not move "
       "monotonically), Box's Complex method on the same discretisation, and an exact solver "
       "on a fine grid (reachability analysis: backward controllable sets, then a greedy "
       "forward pass). Every solution is re-checked by dense resampling against every limit.");
   method.note(
       "The source is an abstract: link lengths, limits and the path are not given, so the "
-      "case chooses them (see its parameters); there are no printed numbers to compare with. "
+      "case chooses them (see its parameters and docs/assumptions.md); there are no printed "
+      "numbers to compare with. "
       "The comparison that matters is between the solvers: the exact solver is never slower "
       "than DP or Complex on the same problem.");
   if (!limits.empty()) method.table(json_table(limits, "Limits used (per joint)."));

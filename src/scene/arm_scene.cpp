@@ -85,7 +85,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
       "markrgb=\"0.80 0.80 0.78\"/>\n"
       "    <material name=\"table\" texture=\"grid\" texrepeat=\"10 10\" texuniform=\"true\"/>\n";
   o.comment =
-      "    The 2-link arm of 000_bf165d3f0a5605ef.txt in a horizontal plane (gravity 0): the\n"
+      "    The 2-link arm of Kopmaz (2016) in a horizontal plane (gravity 0): the\n"
       "    table is the x-y plane seen from above (camera looking down -z), the root is the\n"
       "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.1 m grid.\n"
       "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
@@ -171,7 +171,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
       "markrgb=\"0.86 0.86 0.90\"/>\n"
       "    <material name=\"wall\" texture=\"grid\" texrepeat=\"20 20\" texuniform=\"true\"/>\n";
   o.comment =
-      "    The arm with a passive tray of 003_a986fd825f31d3e2.txt in a vertical plane: the\n"
+      "    The arm with a passive tray of Sato et al. in a vertical plane: the\n"
       "    x-y plane seen from +z (x right, y up), gravity along -y; a 0.05 m grid.\n"
       "    Joints 1 and 2 are driven (motor actuators, gear 1), the tray's hinge is passive, and\n"
       "    link N is a massless radius r4 about the cup's centre C carrying the ball's mass at\n"

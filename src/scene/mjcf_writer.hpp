@@ -9,7 +9,7 @@
 /// (contype=conaffinity=0, no mass). Joint i gets a `motor` actuator with gear 1 if active;
 /// damping and armature are zero. A SpinningInertia acting on one joint only becomes that
 /// joint's armature (I c^2). A spinner that couples several joints (the rolling ball of
-/// 003_a986fd825f31d3e2.txt: omega = (qd1+qd2+qd3) - (r4/r_b) qd4) becomes an extra body
+/// Sato et al.: omega = (qd1+qd2+qd3) - (r4/r_b) qd4) becomes an extra body
 /// `spin<k>` hung on the deepest link k whose absolute rate leaves ONE joint in the spin:
 /// omega = (qd_1 + ... + qd_k) + d_j qd_j, so the extra hinge `spin<k>` turns by
 /// psi = d_j q_j, enforced in simulation by a joint equality constraint. MuJoCo's

@@ -46,7 +46,8 @@ std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spe
 
   std::vector<std::string> files;
   char title[160];
-  std::snprintf(title, sizeof title, "pendulum (003 Sec. 3), joints 1, 2 locked; every %.2f s",
+  std::snprintf(title, sizeof title,
+                "pendulum (Sato et al. Sec. 3), joints 1, 2 locked; every %.2f s",
                 spec.snapshot_step);
   const int columns = snaps.size() > 9 ? 4 : strip_columns(static_cast<int>(snaps.size()));
   write_png(dir / "pendulum_snapshots_strip.png", sr.strip(snaps, title, columns));

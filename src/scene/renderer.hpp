@@ -1,6 +1,6 @@
 #pragma once
 /// Off-screen rendering of a MuJoCo model: one OSMesa context, one mjvScene and one
-/// mjrContext, reused for every frame of a run (DESIGN.md pitfalls: the off-screen size
+/// mjrContext, reused for every frame of a run (pitfalls found here: the off-screen size
 /// comes from the model's <global offwidth offheight>, checked after mjr_setBuffer; no
 /// shadows, reflections or skybox unless asked; offsamples set explicitly in the MJCF).
 

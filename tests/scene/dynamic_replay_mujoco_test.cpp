@@ -1,4 +1,4 @@
-// MuJoCo's own dynamics on the plans of the placement and time-optimal studies (issue 13):
+// MuJoCo's own dynamics on the plans of the placement and time-optimal studies:
 // the planned joint torques applied open loop through mj_step in the generated MJCF, from
 // the plan's initial state, reproduce the planned motion within the tolerance h^2 V of
 // scene/dynamic_replay.hpp for every bundled case; the deviation falls as h^2; a torque 5 %

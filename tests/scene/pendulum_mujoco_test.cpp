@@ -1,4 +1,4 @@
-// The pendulum of 003_a986fd825f31d3e2.txt Sec. 3 (joints 1 and 2 locked: a chain whose
+// The pendulum of Sato et al. Sec. 3 (joints 1 and 2 locked: a chain whose
 // base is the tray hinge, with the tray and the rolling ball) simulated in MuJoCo with RK4:
 // it conserves mechanical energy and follows core's own simulation.
 
@@ -23,7 +23,7 @@ namespace armstudy::scene {
 namespace {
 
 // Sec. 3 values: m3 = 0.109 kg, m4 = 0.122 kg, r4 = 0.075 m, r_b = 0.015 m; the tray's
-// length and inertia are not given for the rig (SEEDS.md), these are plausible choices
+// length and inertia are not given for the rig (docs/assumptions.md), these are plausible choices
 core::PlanarChain pendulum() {
   const double m3 = 0.109, m4 = 0.122, r4 = 0.075, rb = 0.015, l3 = 0.04;
   core::PlanarChain c;

@@ -1,4 +1,4 @@
-// The throwing study's proof in MuJoCo (issue 5): the motor voltages of an IDP-optimised
+// The throwing study's proof in MuJoCo: the motor voltages of an IDP-optimised
 // throw, applied open loop to the generated MuJoCo model of the tray arm (rolling ball as a
 // spin body with a joint equality, mjcf_writer.hpp), reproduce the planned motion of all
 // four coordinates. The motor torques follow eq. 5-6 from MuJoCo's own joint rates at each

@@ -1,5 +1,5 @@
 // The thesis's search intervals (cases 4.7-4.13), the exact annulus check and the line frame
-// of the placement study (000_bf165d3f0a5605ef.txt Ch. 4).
+// of the placement study (Kopmaz 2016, Ch. 4).
 #include "studies/placement/geometry.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The placement optimum says what decides it and is converged (issue 13): the constrained
+// The placement optimum says what decides it and is converged: the constrained
 // refinement against an independent fine constrained search, margin binding and interior
 // optima, admissible Pareto fronts, and singular motions that never print a number.
 #include "studies/placement/refine.hpp"

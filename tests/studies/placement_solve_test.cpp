@@ -1,5 +1,5 @@
 // The placement study's answer: physics invariants, singularity handling, refinement,
-// limits, Pareto front and evaluations (issue 3).
+// limits, Pareto front and evaluations.
 #include "studies/placement/solve.hpp"
 
 #include <gtest/gtest.h>

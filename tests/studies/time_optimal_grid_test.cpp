@@ -1,4 +1,4 @@
-// The time-optimal study judging its own answer (issue 13): the exact solver's grid
+// The time-optimal study judging its own answer: the exact solver's grid
 // convergence check flags a near-singular path and passes a regular one; DP and Complex
 // failures name the segment, the place and the binding limit; a path that leaves the
 // workspace is refused at its worst point, with enough digits to see by how much.

@@ -1,5 +1,5 @@
 // The time-optimal pipeline records its grid-convergence check and MuJoCo's dynamic replay
-// in results.json and its checks (issue 13): a near-singular line fails exact_grid_converged
+// in results.json and its checks: a near-singular line fails exact_grid_converged
 // and says so in its message; a regular one passes; both replay within their tolerance.
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -3,7 +3,7 @@
 /// comparison with other methods", Computer Journal 8, 1965): derivative-free minimisation
 /// of f(x) subject to bounds lo <= x <= hi and implicit constraints given as a feasibility
 /// predicate. Arm agnostic; used by the time-optimal study as the source's nonlinear
-/// programming comparison (004_87cbdf4981aa31c3.txt).
+/// programming comparison (Ozkipcak 1994).
 ///
 /// A complex of k >= n+1 feasible points (default 2n) is evolved: the worst point is
 /// reflected through the centroid of the others by alpha (default 1.3); a reflection that

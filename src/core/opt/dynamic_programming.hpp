@@ -4,7 +4,7 @@
 /// node k to state j at node k+1 costs cost(k, i, j) (+infinity: forbidden).
 ///
 /// The recursion J(k, i) = min_j [cost(k, i, j) + J(k+1, j)], J(K, j) = 0, runs from the
-/// last node back to the first (the thesis 004_87cbdf4981aa31c3.txt, steps 1-4 of its DP
+/// last node back to the first (Ozkipcak 1994, steps 1-4 of its DP
 /// algorithm); the optimal states are then read forward from node 0. Work is
 /// sum_k levels[k] * levels[k+1] cost evaluations; transitions into states that cannot
 /// reach the end are skipped without evaluating their cost.

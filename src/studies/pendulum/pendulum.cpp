@@ -22,7 +22,7 @@ PendulumSpec default_pendulum_spec() {
   a.m4 = 0.122;
   a.r4 = 0.075;
   a.rb = 0.015;
-  // open choices (SEEDS.md), documented in the header
+  // open choices (docs/assumptions.md), documented in the header
   a.circle_offset = 0.015;
   a.r3 = a.circle_offset + a.r4 + a.rb;
   a.I3 = a.m3 * (a.r4 + a.rb) * (a.r4 + a.rb) / 3.0;

@@ -1,5 +1,5 @@
 #pragma once
-/// The pendulum test of 003_a986fd825f31d3e2.txt Sec. 3: joints 1 and 2 locked, the tray
+/// The pendulum test of Sato et al. Sec. 3: joints 1 and 2 locked, the tray
 /// (passive) and the rolling ball swing freely from rest. A passive system: its mechanical
 /// energy K + U must stay constant, which checks the model and the integrator (Fig. 3).
 
@@ -30,7 +30,7 @@ struct PendulumSpec {
 };
 
 /// Sec. 3's parameters: m3 = 0.109 kg, m4 = 0.122 kg, r4 = 0.075 m, r_b = 0.015 m. What
-/// the paper leaves open (SEEDS.md) is chosen as: joints 1 and 2 locked at 0, 0; ball a solid
+/// the paper leaves open (docs/assumptions.md) is: joints 1 and 2 locked at 0, 0; ball a solid
 /// sphere (2/5 m4 r_b^2); the ball's circle centre 0.015 m from the hinge (Table 1's l3);
 /// the tray's centre of mass at the bottom of the cup (0.015 + r4 + r_b = 0.105 m) and its
 /// inertia that of a 2 (r4 + r_b) = 0.18 m rod, m3 (r4 + r_b)^2 / 3.

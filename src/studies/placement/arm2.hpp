@@ -5,7 +5,7 @@
 /// placement sweeps; tests prove it equals core's generic ik_2link_motion +
 /// inverse_dynamics.
 ///
-/// Model (relative angles q1 = theta1, q2 = theta2 - theta1 of 000_bf165d3f0a5605ef.txt;
+/// Model (relative angles q1 = theta1, q2 = theta2 - theta1 of Kopmaz (2016);
 /// torques on relative angles, so M2 is the elbow actuator and M1 the root actuator):
 ///   T = 1/2 (J1 + m_2 L1^2) qd1^2 + 1/2 J2 w^2 + g(q2) qd1 w,   w = qd1 + qd2,
 ///   g(q2) = A cos q2 - B sin q2, A = L1 sum(m x), B = L1 sum(m y) over link 2's bodies,
@@ -13,7 +13,7 @@
 ///   tau1 = M11 qdd1 + M12 qdd2 + g' (2 qd1 qd2 + qd2^2),
 ///   tau2 = M12 qdd1 + M22 qdd2 - g' qd1^2.
 /// For the thesis's arm A = L1 (m2 rG2 + m L2), B = 0 and the torques are (6.35) for M2
-/// and (6.29) + (6.35) for M1 (its printed (7.2) is wrong, see SEEDS.md).
+/// and (6.29) + (6.35) for M1 (its printed (7.2) is wrong, see docs/defects.md).
 
 #include <cmath>
 #include <limits>

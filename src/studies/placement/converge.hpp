@@ -1,5 +1,5 @@
 #pragma once
-/// Energy of one motion converged by doubling the samples per trajectory (issue 13): no
+/// Energy of one motion converged by doubling the samples per trajectory: no
 /// printed energy, peak or saving comes from an unconverged integral. A line that touches
 /// a workspace boundary (|sin q2| = 0 on it) is a singular motion whatever the doubling
 /// shows: tangent to the inner circle the elbow folds and its rate jumps (an impulsive

@@ -1,6 +1,6 @@
 #pragma once
 /// Geometry of the placement search: the thesis's start-point and direction intervals
-/// (000_bf165d3f0a5605ef.txt, cases 4.7-4.13), the exact annulus check of a line, and the
+/// (Kopmaz 2016, cases 4.7-4.13), the exact annulus check of a line, and the
 /// root location in the frame fixed to the line (4.14).
 ///
 /// Frames: the arm's frame A has the root at the origin; the thesis's lines start at

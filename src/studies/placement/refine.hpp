@@ -1,5 +1,5 @@
 #pragma once
-/// Constrained local refinement of a placement and what decides it (issue 13).
+/// Constrained local refinement of a placement and what decides it.
 ///
 /// The energy E(x_s, phi) of the sampled motion is minimised near a start candidate with the
 /// constraints as constraints, never as a penalty:

@@ -33,7 +33,7 @@ char status_char(CandidateStatus s);
 /// "unreachable", "singular", "over_limit", "feasible".
 const char* status_name(CandidateStatus s);
 
-/// What decides an optimum (issue 13).
+/// What decides an optimum.
 enum class Binding : std::uint8_t {
   kInterior,        ///< no constraint active: a stationary point of the energy
   kInnerClearance,  ///< the line's clearance to the inner circle |L1 - L2| equals the margin

@@ -1,6 +1,6 @@
 #pragma once
 /// The placement study: sweep, exact checks, refinement, maps, curves, Pareto front and
-/// evaluations (issue 3; 000_bf165d3f0a5605ef.txt Ch. 4-9, with its defects corrected).
+/// evaluations (Kopmaz 2016, Ch. 4-9, with the defects of docs/defects.md corrected).
 
 #include "studies/common.hpp"
 #include "studies/placement/result.hpp"

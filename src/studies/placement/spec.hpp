@@ -1,5 +1,5 @@
 #pragma once
-/// The placement study's input (000_bf165d3f0a5605ef.txt): where to put the root of a
+/// The placement study's input (Kopmaz 2016): where to put the root of a
 /// 2-link arm in a horizontal plane so that carrying a payload along a fixed straight line
 /// costs the least actuator energy. SI units and radians; filled and validated by
 /// cases::load_placement (src/cases/placement_case.hpp documents every key and default).

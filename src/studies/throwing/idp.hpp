@@ -1,6 +1,6 @@
 #pragma once
 /// Iterative dynamic programming (Luus) over the velocity profiles of the active joints,
-/// as in Sec. 4 and Fig. 4-5 of 003_a986fd825f31d3e2.txt.
+/// as in Sec. 4 and Fig. 4-5 of Sato et al.
 ///
 /// IDP with a single grid point (Luus, Iterative Dynamic Programming, 2000, ch. 5: one
 /// state trajectory, the current best): each iteration runs backward over the stage nodes

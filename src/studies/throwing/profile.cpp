@@ -48,7 +48,7 @@ void project_displacement(VelocityProfile& p, const Eigen::Vector2d& delta) {
 Eigen::Vector2d eq8_rate(const Eigen::Vector2d& q_i, const Eigen::Vector2d& qd_i,
                          const Eigen::Vector2d& q_f, const Eigen::Vector2d& qd_f, double tf,
                          double t) {
-  // eq. 8 of 003 as corrected in SEEDS.md: meets both end rates, integrates to q_f - q_i
+  // eq. 8 of 003 as corrected in docs/defects.md: meets both end rates, integrates to q_f - q_i
   return qd_i + (qd_f - qd_i) * (t / tf) +
          (core::kPi / 2) * ((q_f - q_i) / tf - (qd_i + qd_f) / 2) * std::sin(core::kPi * t / tf);
 }

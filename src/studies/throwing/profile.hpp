@@ -43,7 +43,7 @@ Eigen::Vector2d displacement(const VelocityProfile& p);
 /// `delta` (rad). @throws std::invalid_argument if P < 2 (no interior node).
 void project_displacement(VelocityProfile& p, const Eigen::Vector2d& delta);
 
-/// The initial trajectory of 003 eq. 8 (corrected form of SEEDS.md) sampled at the nodes:
+/// The initial trajectory of 003 eq. 8 (corrected form of docs/defects.md) sampled at the nodes:
 ///   qd(t) = qd_i + (qd_f - qd_i) t/tf + (pi/2) ((q_f - q_i)/tf - (qd_i + qd_f)/2) sin(pi t/tf),
 /// then projected so that the piecewise-linear profile meets q_f exactly.
 /// @throws std::invalid_argument if stages < 2 or tf <= 0.

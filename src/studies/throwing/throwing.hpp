@@ -1,5 +1,5 @@
 #pragma once
-/// The throwing study of 003_a986fd825f31d3e2.txt Sec. 4: the tray arm moves from rest to
+/// The throwing study of Sato et al. Sec. 4: the tray arm moves from rest to
 /// the release state in tf; joints 1, 2 follow a velocity profile optimised for the energy
 /// the DC motors consume (eq. 7), the tray (joint 3) and the ball (joint 4) follow the
 /// dynamics. IDP (Luus) is the paper's optimiser; SLSQP (NLopt) solves the same constrained
@@ -29,7 +29,7 @@
 namespace armstudy::studies {
 
 /// Inputs of the throwing study (SI, radians). Defaults: Table 1 and Sec. 4 of 003, and
-/// the documented choices of SEEDS.md's open points.
+/// the choices of docs/assumptions.md where the paper is silent.
 struct ThrowingSpec {
   TrayArmParams arm;                 ///< Table 1
   core::DcMotor motor;               ///< both motors (Table 1); Im is arm.rotor_inertia

@@ -1,7 +1,7 @@
 #pragma once
-/// The arm with a passive tray of 003_a986fd825f31d3e2.txt as a core::PlanarChain.
+/// The arm with a passive tray of Sato et al. as a core::PlanarChain.
 ///
-/// Derivation (first principles; the printed eq. 1-4 are inconsistent, see SEEDS.md)
+/// Derivation (first principles; the printed eq. 1-4 are inconsistent, docs/defects.md)
 /// ---------------------------------------------------------------------------------
 /// Coordinates, all RELATIVE (as C2, C23, C234 of eq. 1), in a vertical plane with gravity
 /// g along -y; e(a) = (cos a, sin a) and e_ijk = e(theta_i + theta_j + theta_k):

@@ -1,4 +1,4 @@
-// dynamic programming (004_87cbdf4981aa31c3.txt) and Box's Complex on the same discretisation
+// dynamic programming (Ozkipcak 1994) and Box's Complex on the same discretisation
 #include <algorithm>
 #include <cmath>
 #include <sstream>

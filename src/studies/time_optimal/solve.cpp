@@ -202,7 +202,7 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact, i
 
 core::PlanarChain default_arm(double L1, double L2) {
   core::PlanarChain c;
-  // massless links, 1.0 kg at the end of each (004_87cbdf4981aa31c3.txt)
+  // massless links, 1.0 kg at the end of each (Ozkipcak 1994)
   c.links = {{L1, 0.0, L1 / 2, 0.0, 0.0, true}, {L2, 0.0, L2 / 2, 0.0, 0.0, true}};
   c.point_masses = {{0, L1, 0.0, 1.0}, {1, L2, 0.0, 1.0}};
   c.gravity = 0.0;

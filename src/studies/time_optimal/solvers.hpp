@@ -32,7 +32,7 @@ SolverOutput solve_exact(const Problem& problem, const std::vector<double>& node
 void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes,
                         std::vector<double>* sd_all, std::vector<double>* sd_velocity);
 
-/// Dynamic programming as in 004_87cbdf4981aa31c3.txt: `segments` intervals, constant
+/// Dynamic programming as in Ozkipcak (1994): `segments` intervals, constant
 /// acceleration in each, Bellman recursion over `levels` velocity levels per interior node;
 /// a transition is rejected when any limit fails at one of `checks` + 1 points of its
 /// segment. State kPathSpeed: s' levels in [0, MVC(s_k)], constant s''. State

@@ -1,5 +1,5 @@
 #pragma once
-/// The time-optimal study (004_87cbdf4981aa31c3.txt): the fastest rest-to-rest motion of a
+/// The time-optimal study (Ozkipcak 1994): the fastest rest-to-rest motion of a
 /// 2-link arm's tip along a given path under joint velocity, torque and (optional)
 /// acceleration limits. SI units and radians throughout.
 
