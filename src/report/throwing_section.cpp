@@ -324,8 +324,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                  "(its search stopped gaining), not a proof of the optimum. The spread, not the "
                  "tolerance, bounds how well IDP has solved the problem.");
     Table st;
-    st.caption = "Each IDP seed: energy, whether it converged (a whole pass gained less than the "
-                 "tolerance) and what it cost.";
+    st.caption = "Each IDP seed: energy, whether it converged (whole passes gained less than the "
+                 "tolerance, " + jsonv::str(idp, "quiet_passes") + " in a row) and what it cost.";
     st.header = {"seed", "energy (J)", "feasible", "converged", "passes", "last pass gain",
                  "simulations", "time (s)"};
     for (const json& r : arr(idp, "seed_runs"))
