@@ -37,8 +37,9 @@ const std::vector<std::pair<std::string, std::string>> kCases = {
      "  nx_s: 6\n  phi_step_deg: 6\n  samples: 51\n  map: {nx: 12, ny: 6}\n"},
     {"numbers-throwing",
      "study: throwing\nname: numbers-throwing\nthrowing:\n"
-     "  idp: {stages: 4, steps_per_stage: 5, iterations: 2, passes: 1, candidates: 3}\n"
-     "  nlopt: {max_evaluations: 3}\n"},
+     "  idp: {stages: 4, steps_per_stage: 5, iterations: 2, max_passes: 1, candidates: 3, "
+     "seeds: 1}\n"
+     "  nlopt: {max_evaluations: 3}\n  checks: {allow_not_converged: true}\n"},
     {"numbers-time-optimal",
      "study: time_optimal\nname: numbers-time-optimal\ntime_optimal:\n"
      "  path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n"
