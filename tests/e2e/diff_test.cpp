@@ -258,7 +258,7 @@ TEST_F(Diff, BadInputNamesTheFileAndWritesNothing) {
     fs::remove_all(o);
     const CliRun r = cli("diff " + q(a) + " " + q(b) + " --out " + q(o));
     EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(r.output.find(rj.string() + ": unreadable"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(rj.string() + ": truncated or not JSON"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(o / "diff.md"));
   }
   // valid JSON of the wrong shape
@@ -267,7 +267,7 @@ TEST_F(Diff, BadInputNamesTheFileAndWritesNothing) {
   write_text(rj, j.dump());
   CliRun r = cli("diff " + q(root_ / "base") + " " + q(bad) + " --out " + q(out("bad")));
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find(rj.string() + ": 'key_figures[0].value' is missing or not a number"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(rj.string() + ": /key_figures/0/value: expected a number"), std::string::npos) << r.output;
   // a missing folder, an empty one
   r = cli("diff " + q(root_ / "base") + " " + q(root_ / "no-such") + " --out " + q(out("bad")));
   EXPECT_EQ(r.exit_code, 2) << r.output;
