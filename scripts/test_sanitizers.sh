@@ -10,7 +10,8 @@
 # cases_tests, report_tests and e2e_tests. Left out: the browser tests (headless Chromium
 # prints the pages; armstudy's part is the fork/exec code that e2e.interrupt runs with a
 # stand-in browser), the fault-injection test (strace stops the run at every rename;
-# LeakSanitizer cannot run under ptrace) and the sweep scale-out test (minutes of solving).
+# LeakSanitizer cannot run under ptrace), the sweep scale-out tests and the live Slurm and
+# ssh ones (minutes of solving; their armstudy part is the sweep that e2e tests cover).
 # The studies' own tests are left out because instrumented solvers run about ten times
 # slower (the throwing case: 207 s instead of about 20 s); ARMSTUDY_SANITIZE_ALL=1 builds
 # and runs every test but the browser and fault-injection ones.
@@ -36,7 +37,7 @@ if [ "${ARMSTUDY_SANITIZE_ALL:-0}" = 1 ]; then
   labels=()
 else
   cmake --build build-asan -j"$jobs" --target armstudy cases_tests report_tests e2e_tests
-  exclude="BrowserReport|e2e.fault_injection|e2e.sweep_scale_out"
+  exclude="BrowserReport|e2e.fault_injection|e2e.sweep_scale_out|e2e.slurm_cluster|e2e.ssh_parallel"
   labels=(-L "^(cases|report|e2e)$")
 fi
 built=$(date +%s)
