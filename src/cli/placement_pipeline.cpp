@@ -142,8 +142,7 @@ json convergence_json(const pl::EnergyConvergence& c) {
 // energy, peak torque, peak power of a candidate: null (and a note) for a singular motion
 void metrics_json(json& o, const pl::Candidate& c) {
   const bool singular = c.convergence.singular();
-  // at the samples where the doubling converged (the spec's samples for a regular motion)
-  const pl::LineMetrics& m = c.convergence.checked ? c.convergence.metrics : c.metrics;
+  const pl::LineMetrics& m = c.reported_metrics();
   o["energy_J"] = singular ? json(nullptr) : num(m.energy);
   o["peak_torque_Nm"] = singular ? json(nullptr)
                                  : json::array({num(m.peak_torque[0]), num(m.peak_torque[1])});
@@ -205,10 +204,11 @@ class PlacementRun final : public StudyRun {
     for (const pl::ProgramConfig& pc : result_.cases) {
       if (!pc.found || pc.refined.convergence.singular()) continue;
       const std::string id = "[" + prog(pc.program) + "," + std::to_string(pc.configuration) + "]";
-      k.push_back({"energy_J" + id, pc.refined.metrics.energy, "J"});
+      const double energy = pc.refined.reported_metrics().energy;
+      k.push_back({"energy_J" + id, energy, "J"});
       k.push_back({"root_x_m" + id, pc.refined.root.x(), "m"});
       k.push_back({"root_y_m" + id, pc.refined.root.y(), "m"});
-      best = std::min(best, pc.refined.metrics.energy);
+      best = std::min(best, energy);
     }
     if (std::isfinite(best)) k.insert(k.begin(), {"min_energy_J", best, "J"});
     if (!result_.cases.empty()) {

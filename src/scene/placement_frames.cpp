@@ -40,15 +40,21 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
 
     const std::string name = "placement_" + std::string(core::program_name(pc.program)) + "_c" +
                              std::to_string(pc.configuration);
-    char title[160];
-    std::snprintf(title, sizeof title, "%s, configuration %d: root (%.3f, %.3f) m, %.3f J",
+    // a singular motion's energy is never printed (it did not converge)
+    char energy[48];
+    if (pc.refined.convergence.singular())
+      std::snprintf(energy, sizeof energy, "singular: energy not converged");
+    else
+      std::snprintf(energy, sizeof energy, "%.3f J", pc.refined.reported_metrics().energy);
+    char title[200];
+    std::snprintf(title, sizeof title, "%s, configuration %d: root (%.3f, %.3f) m, %s",
                   std::string(core::program_label(pc.program)).c_str(), pc.configuration,
-                  pc.refined.root.x(), pc.refined.root.y(), pc.refined.metrics.energy);
+                  pc.refined.root.x(), pc.refined.root.y(), energy);
     files.push_back(write_strip(sr, m, options.frames, title, dir, name));
     FrameLabels labels;
-    char line2[120];
-    std::snprintf(line2, sizeof line2, "optimal root (%.3f, %.3f) m: %.3f J",
-                  pc.refined.root.x(), pc.refined.root.y(), pc.refined.metrics.energy);
+    char line2[160];
+    std::snprintf(line2, sizeof line2, "optimal root (%.3f, %.3f) m: %s", pc.refined.root.x(),
+                  pc.refined.root.y(), energy);
     labels.top_left = std::string(core::program_label(pc.program)) + ", configuration " +
                       std::to_string(pc.configuration) + "\n" + line2;
     labels.bottom_left = "top view; line fixed, root chosen; grid 0.1 m";

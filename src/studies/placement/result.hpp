@@ -68,6 +68,11 @@ struct Candidate {
   /// the energy converged by doubling (optima, evaluations, the thesis's best); when
   /// convergence.singular() no energy, peak or saving of this candidate is printed
   EnergyConvergence convergence;
+  /// the metrics a report prints: at the samples where the doubling converged, or the
+  /// sweep's when the candidate was not checked
+  const LineMetrics& reported_metrics() const {
+    return convergence.checked ? convergence.metrics : metrics;
+  }
 };
 
 /// The refined optimum at one clearance margin (the margin sensitivity curve).
