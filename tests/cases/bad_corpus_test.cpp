@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "testing/cli.hpp"
+
 namespace {
 namespace fs = std::filesystem;
 
@@ -45,21 +47,8 @@ Expectation read_expectation(const fs::path& file) {
   return e;
 }
 
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& args) {
-  const std::string cmd = std::string(ARMSTUDY_BINARY) + " " + args + " 2>&1";
-  CliRun r{-1, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using armstudy::testing::CliRun;
+using armstudy::testing::run_cli;
 
 std::vector<fs::path> corpus() {
   std::vector<fs::path> files;

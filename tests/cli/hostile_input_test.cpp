@@ -11,26 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "testing/cli.hpp"
 #include "testing/files.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& args) {
-  const std::string cmd = std::string(ARMSTUDY_BINARY) + " " + args + " 2>&1 </dev/null";
-  CliRun r{-1, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using armstudy::testing::CliRun;
+using armstudy::testing::run_cli;
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 

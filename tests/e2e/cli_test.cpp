@@ -14,26 +14,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testing/cli.hpp"
 #include "cases/case_info.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun run_cli(const std::string& args) {
-  const std::string cmd = std::string(ARMSTUDY_BINARY) + " " + args + " 2>&1";
-  CliRun r{-1, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using armstudy::testing::CliRun;
+using armstudy::testing::run_cli;
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

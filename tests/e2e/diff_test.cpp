@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testing/cli.hpp"
 #include "cases/case_error.hpp"
 #include "cli/diff.hpp"
 #include "scene/png_writer.hpp"
@@ -30,21 +31,9 @@ namespace fs = std::filesystem;
 using armstudy::testing::slurp;
 using nlohmann::json;
 
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun cli(const std::string& args) {
-  const std::string cmd = std::string(ARMSTUDY_BINARY) + " " + args + " 2>&1";
-  CliRun r{-1, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using armstudy::testing::CliRun;
+using armstudy::testing::run_cli;
+CliRun cli(const std::string& args) { return run_cli(args); }
 
 std::string q(const fs::path& p) { return armstudy::testing::quote(p.string()); }
 
