@@ -8,7 +8,7 @@
 
 #include "cases/case_error.hpp"
 #include "cli/diff_frames.hpp"
-#include "cli/run_case.hpp"
+#include "app/run_case.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::app {

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "cases/yaml_reader.hpp"
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 
 namespace armstudy::app {
 namespace {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "cli/run_case.hpp"
+#include "app/run_case.hpp"
 #include "report/number_format.hpp"
 
 namespace armstudy::app {

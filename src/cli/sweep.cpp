@@ -7,8 +7,8 @@
 
 #include "cases/case_info.hpp"
 #include "cases/yaml_reader.hpp"
-#include "cli/pipeline.hpp"
-#include "cli/run_case.hpp"
+#include "app/pipeline.hpp"
+#include "app/run_case.hpp"
 
 namespace armstudy::app {
 namespace fs = std::filesystem;

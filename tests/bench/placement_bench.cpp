@@ -9,7 +9,7 @@
 #include <random>
 #include <thread>
 
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 #include "studies/placement/geometry.hpp"
 #include "studies/placement/refine.hpp"
 #include "studies/placement/solve.hpp"

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 #include "studies/placement/geometry.hpp"
 
 namespace armstudy::cases {

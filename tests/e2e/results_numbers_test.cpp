@@ -22,7 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/json_numbers.hpp"
+#include "app/json_numbers.hpp"
 #include "testing/files.hpp"
 
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "cases/case_error.hpp"
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 #include "cli/sweep.hpp"
 
 namespace {

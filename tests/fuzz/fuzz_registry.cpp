@@ -9,8 +9,8 @@
 #include "cases/placement_case.hpp"
 #include "cases/throwing_case.hpp"
 #include "cases/time_optimal_case.hpp"
-#include "cli/pipeline.hpp"
-#include "cli/run_case.hpp"
+#include "app/pipeline.hpp"
+#include "app/run_case.hpp"
 
 namespace armstudy::app {
 namespace {

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <cstdio>
 
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 
 namespace armstudy::app {
 namespace {

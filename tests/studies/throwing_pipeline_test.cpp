@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 
 namespace armstudy::app {
 namespace {

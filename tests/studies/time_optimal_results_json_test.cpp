@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 
 namespace armstudy::app {
 namespace {

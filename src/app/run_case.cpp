@@ -1,4 +1,4 @@
-#include "cli/run_case.hpp"
+#include "app/run_case.hpp"
 
 #include <fcntl.h>
 #include <stdio.h>
@@ -16,8 +16,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "cli/json_numbers.hpp"
-#include "cli/provenance.hpp"
+#include "app/json_numbers.hpp"
+#include "app/provenance.hpp"
 #include "scene/osmesa_context.hpp"
 #include "report/case_report.hpp"
 #include "report/scratch_dir.hpp"

@@ -51,8 +51,8 @@
 #include <cstdio>
 
 #include "cases/throwing_case.hpp"
-#include "cli/json_numbers.hpp"
-#include "cli/pipeline.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
 #include "report/case_report.hpp"
 #include "scene/throwing_frames.hpp"
 

@@ -1,6 +1,6 @@
-#include "cli/replay_json.hpp"
+#include "app/replay_json.hpp"
 
-#include "cli/json_numbers.hpp"
+#include "app/json_numbers.hpp"
 
 namespace armstudy::app {
 

@@ -1,4 +1,4 @@
-#include "cli/json_numbers.hpp"
+#include "app/json_numbers.hpp"
 
 #include <cctype>
 #include <charconv>

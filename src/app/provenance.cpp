@@ -1,4 +1,4 @@
-#include "cli/provenance.hpp"
+#include "app/provenance.hpp"
 
 #include <mujoco/mujoco.h>
 

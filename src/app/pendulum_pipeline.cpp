@@ -15,8 +15,8 @@
 #include <cstdio>
 
 #include "cases/pendulum_case.hpp"
-#include "cli/json_numbers.hpp"
-#include "cli/pipeline.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
 #include "report/case_report.hpp"
 #include "scene/pendulum_frames.hpp"
 

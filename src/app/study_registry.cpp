@@ -1,8 +1,8 @@
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 
 namespace armstudy::app {
 
-// each study's pipeline file (src/cli/<study>_pipeline.cpp) defines its entry
+// each study's pipeline file (src/app/<study>_pipeline.cpp) defines its entry
 StudyEntry placement_entry();
 StudyEntry pendulum_entry();
 StudyEntry throwing_entry();

@@ -22,15 +22,15 @@
 //                     path_min_abs_sin_q2, text}: the exact solver again with every grid
 //                     interval halved (check exact_grid_converged),
 //   mujoco_replay {...}: the exact solution's torques applied open loop through mj_step
-//                  (cli/replay_json.hpp; check mujoco_dynamic_replay).
+//                  (app/replay_json.hpp; check mujoco_dynamic_replay).
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "cases/time_optimal_case.hpp"
-#include "cli/json_numbers.hpp"
-#include "cli/pipeline.hpp"
-#include "cli/replay_json.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
+#include "app/replay_json.hpp"
 #include "report/case_report.hpp"
 #include "scene/mujoco_check.hpp"
 #include "scene/replay_frames.hpp"

@@ -42,7 +42,7 @@
 //          text so that a 200 x 100 map stays ~100 kB and one line per row;
 //   convergence {program, configuration, rows [{samples, energy_J}]},
 //   solve_seconds, samples_evaluated,
-//   mujoco_replay [{program, configuration, ...cli/replay_json.hpp}]: each optimum's torques
+//   mujoco_replay [{program, configuration, ...app/replay_json.hpp}]: each optimum's torques
 //   applied open loop through mj_step (checks mujoco_dynamic_replay.<program>.<configuration>).
 // series: {stride, t_s, q1_rad, q2_rad, qd1_rad_s, qd2_rad_s, qdd1_rad_s2, qdd2_rad_s2,
 //          tau1_Nm, tau2_Nm, power1_W, power2_W, energy_J} every `stride`-th sample (<= 101
@@ -52,9 +52,9 @@
 #include <limits>
 
 #include "cases/placement_case.hpp"
-#include "cli/json_numbers.hpp"
-#include "cli/pipeline.hpp"
-#include "cli/replay_json.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
+#include "app/replay_json.hpp"
 #include "report/case_report.hpp"
 #include "scene/placement_frames.hpp"
 #include "scene/replay_frames.hpp"

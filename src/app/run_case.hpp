@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 #include "report/scratch_dir.hpp"
 #include "studies/common.hpp"
 

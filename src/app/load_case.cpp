@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <regex>
 
-#include "cli/pipeline.hpp"
+#include "app/pipeline.hpp"
 
 namespace armstudy::app {
 
