@@ -1,37 +1,24 @@
 // The pendulum study in the pipeline: case -> studies::solve_pendulum -> results.json.
 //
-// results.json "pendulum" section (SI; keys ending in _deg are degrees):
-//   parameters {gravity_m_s2, locked_deg [th1, th2], start_deg [th3, th4],
-//               start_rate_deg_s, duration_s, tray {circle_offset_m, mass_kg, com_m,
-//               com_lateral_m, inertia_kg_m2}, ball {mass_kg, circle_radius_m, radius_m,
-//               inertia_kg_m2}, choices [sentences: what 003 leaves open and the value used]},
-//   integrator {name, rtol, atol, steps_accepted, steps_rejected, evaluations},
-//   series {t_s, q_rad [[th1..th4] per sample], qd_rad_s [[...]], kinetic_J, potential_J,
-//           total_J, ball_xy_m [[x, y]], circle_centre_xy_m [[x, y]]},
-//   snapshots [{t_s, index, q_rad, ball_xy_m}] every snapshot_s (Fig. 2),
-//   energy {initial_J, scale_J (largest kinetic energy), drift_J, drift_relative,
-//           tolerance_relative}, run_time_s.
+// results.json "pendulum" section: studies/pendulum/results_section.hpp (every key, typed;
+// written from it here, read back from it by the report and merge).
 #include <cmath>
 #include <cstdio>
 
 #include "cases/pendulum_case.hpp"
-#include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "report/case_report.hpp"
+#include "report/results_fields.hpp"
 #include "scene/pendulum_frames.hpp"
+#include "studies/pendulum/results_section.hpp"
 
 namespace armstudy::app {
 namespace {
 using nlohmann::json;
 constexpr double kDeg = core::kPi / 180.0;
 
-json num(double v) { return json_number(v); }
-json xy(const Eigen::Vector2d& v) { return json::array({num(v.x()), num(v.y())}); }
-json vec(const core::JointVector& v) {
-  json a = json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(num(v[i]));
-  return a;
-}
+std::array<double, 2> xy(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
+std::vector<double> vec(const core::JointVector& v) { return {v.data(), v.data() + v.size()}; }
 
 class PendulumRun final : public StudyRun {
  public:
@@ -63,57 +50,48 @@ class PendulumRun final : public StudyRun {
               const nlohmann::json& results_json) override {
     report::write_case_report(dir, info, results_json);
   }
-  json results() const override {
+  json results() const override { return report::to_json(section()); }
+
+  // the typed results.json section (studies/pendulum/results_section.hpp)
+  studies::PendulumResultsSection section() const {
     const auto& a = spec_.arm;
     const auto& r = result_;
-    json j;
-    j["parameters"] = {
-        {"gravity_m_s2", a.gravity},
-        {"locked_deg", {spec_.theta1 / kDeg, spec_.theta2 / kDeg}},
-        {"start_deg", {spec_.theta3 / kDeg, spec_.theta4 / kDeg}},
-        {"start_rate_deg_s", {spec_.theta3_rate / kDeg, spec_.theta4_rate / kDeg}},
-        {"duration_s", spec_.duration},
-        {"tray", {{"circle_offset_m", a.circle_offset}, {"mass_kg", a.m3}, {"com_m", a.r3},
-                  {"com_lateral_m", a.r3_lateral}, {"inertia_kg_m2", a.I3}}},
-        {"ball", {{"mass_kg", a.m4}, {"circle_radius_m", a.r4}, {"radius_m", a.rb},
-                  {"inertia_kg_m2", a.Ib}}},
-        {"choices",
-         {"joints 1 and 2 locked at the angles of locked_deg (0, 0 by default: at -45, -45 deg "
-          "the ball would sit above the hinge)",
-          "ball spin = tray rate - (r4/r_b) theta4' (eq. 3 drops the tray rate; a5 is printed "
-          "inverted)",
-          "tray centre of mass, inertia and circle offset are not given for the test rig; "
-          "the values used are in tray"}}};
-    j["integrator"] = {{"name", r.integrator}, {"rtol", r.rtol}, {"atol", r.atol},
-                       {"steps_accepted", r.steps_accepted}, {"steps_rejected", r.steps_rejected},
-                       {"evaluations", r.evaluations}};
-    json t = json::array(), q = json::array(), qd = json::array(), K = json::array(),
-         U = json::array(), E = json::array(), ball = json::array(), cc = json::array();
+    studies::PendulumResultsSection s;
+    auto& p = s.parameters;
+    p.gravity_m_s2 = a.gravity;
+    p.locked_deg = {spec_.theta1 / kDeg, spec_.theta2 / kDeg};
+    p.start_deg = {spec_.theta3 / kDeg, spec_.theta4 / kDeg};
+    p.start_rate_deg_s = {spec_.theta3_rate / kDeg, spec_.theta4_rate / kDeg};
+    p.duration_s = spec_.duration;
+    p.tray = {a.circle_offset, a.m3, a.r3, a.r3_lateral, a.I3};
+    p.ball = {a.m4, a.r4, a.rb, a.Ib};
+    p.choices = {
+        "joints 1 and 2 locked at the angles of locked_deg (0, 0 by default: at -45, -45 deg "
+        "the ball would sit above the hinge)",
+        "ball spin = tray rate - (r4/r_b) theta4' (eq. 3 drops the tray rate; a5 is printed "
+        "inverted)",
+        "tray centre of mass, inertia and circle offset are not given for the test rig; "
+        "the values used are in tray"};
+    s.integrator = {r.integrator, r.rtol, r.atol, r.steps_accepted, r.steps_rejected, r.evaluations};
+    auto& se = s.series;
     for (size_t k = 0; k < r.t.size(); ++k) {
-      t.push_back(num(r.t[k]));
-      q.push_back(vec(r.q[k]));
-      qd.push_back(vec(r.qd[k]));
-      K.push_back(num(r.kinetic[k]));
-      U.push_back(num(r.potential[k]));
-      E.push_back(num(r.total[k]));
-      ball.push_back(xy(r.ball[k]));
-      cc.push_back(xy(r.circle_centre[k]));
+      se.t_s.push_back(r.t[k]);
+      se.q_rad.push_back(vec(r.q[k]));
+      se.qd_rad_s.push_back(vec(r.qd[k]));
+      se.kinetic_J.push_back(r.kinetic[k]);
+      se.potential_J.push_back(r.potential[k]);
+      se.total_J.push_back(r.total[k]);
+      se.ball_xy_m.push_back(xy(r.ball[k]));
+      se.circle_centre_xy_m.push_back(xy(r.circle_centre[k]));
     }
-    j["series"] = {{"t_s", t}, {"q_rad", q}, {"qd_rad_s", qd}, {"kinetic_J", K},
-                   {"potential_J", U}, {"total_J", E}, {"ball_xy_m", ball},
-                   {"circle_centre_xy_m", cc}};
-    json snaps = json::array();
     for (size_t i = 0; i < r.snapshot_t.size(); ++i) {
       const int k = r.snapshot_index[i];
-      snaps.push_back({{"t_s", num(r.snapshot_t[i])}, {"index", k}, {"q_rad", vec(r.q[k])},
-                       {"ball_xy_m", xy(r.ball[k])}});
+      s.snapshots.push_back({r.snapshot_t[i], k, vec(r.q[k]), xy(r.ball[k])});
     }
-    j["snapshots"] = snaps;
-    j["energy"] = {{"initial_J", num(r.energy_initial)}, {"scale_J", num(r.energy_scale)},
-                   {"drift_J", num(r.energy_drift)}, {"drift_relative", num(r.energy_drift_rel)},
-                   {"tolerance_relative", spec_.drift_tolerance}};
-    j["run_time_s"] = num(r.run_time);
-    return j;
+    s.energy = {r.energy_initial, r.energy_scale, r.energy_drift, r.energy_drift_rel,
+                spec_.drift_tolerance};
+    s.run_time_s = r.run_time;
+    return s;
   }
 
   // frames: snapshots every snapshot_step, strip and locus (src/scene)

@@ -1,41 +1,21 @@
 // The time-optimal study in the pipeline: case -> studies::time_optimal::solve -> results.json.
 //
-// results.json "time_optimal" section (SI units, angles in rad):
-//   path {kind, points_m [[x, y]...]}, path_length_m, configuration,
-//   limits {velocity_rad_s [j1, j2], torque_Nm [j1, j2], acceleration_rad_s2 [j1, j2] or null},
-//   solvers [{name ("exact", "dp", "dp_joint1", "complex"), method, solved, message,
-//             duration_s, run_time_s, intervals, levels, evaluations, iterations,
-//             violation {worst (largest limit use - 1; <= 0: every limit met), text, kind,
-//                        joint (1-based), s_m, t_s, interval,
-//                        ratio {velocity [j1, j2], torque [j1, j2], acceleration [j1, j2]}},
-//             node_s_m, node_sd_m_s, node_t_s,
-//             samples {t_s, s_m, sd_m_s, sdd_m_s2, q_rad [[j1...], [j2...]], qd_rad_s,
-//                      qdd_rad_s2, tau_Nm (per joint rows)}}]: exact first,
-//   mvc {s_m, sd_m_s, velocity_sd_m_s}: the maximum velocity curve on the exact grid,
-//   convergence [{segments, levels, solved, duration_s, excess, run_time_s, worst_violation,
-//                 message (why not, when not solved)}],
-//   motion {t_s, s_m, tip_m [[x, y]...], q_rad [[q1, q2]...]}: the exact motion at equal
-//   time steps (what the frames show),
-//   grid_convergence {grid_points, refined_points, refined_solved, duration_s,
-//                     refined_duration_s, change, tolerance, passed, s_range_m [lo, hi],
-//                     grid_point_range [lo, hi], share, max_sd_m_s, min_abs_sin_q2,
-//                     path_min_abs_sin_q2, text}: the exact solver again with every grid
-//                     interval halved (check exact_grid_converged),
-//   mujoco_replay {...}: the exact solution's torques applied open loop through mj_step
-//                  (app/replay_json.hpp; check mujoco_dynamic_replay).
+// results.json "time_optimal" section: studies/time_optimal/results_section.hpp (every key,
+// typed; written from it here, read back from it by the report and merge).
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "cases/time_optimal_case.hpp"
-#include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "app/replay_json.hpp"
 #include "report/case_report.hpp"
+#include "report/results_fields.hpp"
 #include "scene/mujoco_check.hpp"
 #include "scene/replay_frames.hpp"
 #include "scene/study_replays.hpp"
 #include "scene/time_optimal_frames.hpp"
+#include "studies/time_optimal/results_section.hpp"
 #include "studies/time_optimal/solve.hpp"
 
 namespace armstudy::app {
@@ -43,23 +23,17 @@ namespace {
 namespace to = studies::time_optimal;
 using nlohmann::json;
 
-json num(double v) { return json_number(v); }
+using Section = to::ResultsSection;
 
-json list(const std::vector<double>& v) {
-  json a = json::array();
-  for (double x : v) a.push_back(num(x));
-  return a;
-}
-
-json pair(const Eigen::Vector2d& v) { return json::array({num(v[0]), num(v[1])}); }
+std::vector<double> pair(const Eigen::Vector2d& v) { return {v[0], v[1]}; }
 
 // a 2 x N matrix as two per-joint rows
-json rows(const Eigen::Matrix2Xd& m) {
-  json out = json::array();
-  for (int j = 0; j < 2; ++j) {
-    json r = json::array();
-    for (int k = 0; k < m.cols(); ++k) r.push_back(num(m(j, k)));
-    out.push_back(r);
+Section::Rows rows(const Eigen::Matrix2Xd& m) {
+  Section::Rows out;
+  for (int j = 0; j < m.rows(); ++j) {
+    std::vector<double> r;
+    for (int k = 0; k < m.cols(); ++k) r.push_back(m(j, k));
+    out.push_back(std::move(r));
   }
   return out;
 }
@@ -73,38 +47,41 @@ const char* path_kind(to::PathKind k) {
   return "line";
 }
 
-json violation_json(const to::Violation& v) {
-  json ratio = json::object();
-  for (int kind = 0; kind < 3; ++kind)
-    ratio[to::limit_name(static_cast<to::LimitKind>(kind))] =
-        json::array({num(v.ratio[kind][0]), num(v.ratio[kind][1])});
-  return {{"worst", num(v.worst)},          {"text", v.text},
-          {"kind", to::limit_name(v.kind)}, {"joint", v.joint + 1},
-          {"s_m", num(v.s)},                {"t_s", num(v.t)},
-          {"interval", v.interval},         {"ratio", ratio}};
+Section::Violation violation_section(const to::Violation& v) {
+  Section::Violation o;
+  o.worst = v.worst;
+  o.text = v.text;
+  o.kind = to::limit_name(v.kind);
+  o.joint = v.joint + 1;
+  o.s_m = v.s;
+  o.t_s = v.t;
+  o.interval = v.interval;
+  o.ratio.velocity = {v.ratio[0][0], v.ratio[0][1]};
+  o.ratio.torque = {v.ratio[1][0], v.ratio[1][1]};
+  o.ratio.acceleration = {v.ratio[2][0], v.ratio[2][1]};
+  return o;
 }
 
-json solver_json(const to::SolverResult& r) {
-  json j = {{"name", r.name},
-            {"method", r.method},
-            {"solved", r.solved},
-            {"message", r.message},
-            {"duration_s", r.solved ? num(r.duration) : json(nullptr)},
-            {"run_time_s", num(r.run_time)},
-            {"intervals", r.intervals},
-            {"levels", r.levels},
-            {"evaluations", r.evaluations},
-            {"iterations", r.iterations}};
-  if (!r.solved) return j;
-  j["violation"] = violation_json(r.violation);
-  j["node_s_m"] = list(r.node_s);
-  j["node_sd_m_s"] = list(r.node_sd);
-  j["node_t_s"] = list(r.node_t);
+Section::Solver solver_section(const to::SolverResult& r) {
+  Section::Solver o;
+  o.name = r.name;
+  o.method = r.method;
+  o.solved = r.solved;
+  o.message = r.message;
+  o.duration_s = r.solved ? r.duration : NAN;
+  o.run_time_s = r.run_time;
+  o.intervals = r.intervals;
+  o.levels = r.levels;
+  o.evaluations = r.evaluations;
+  o.iterations = r.iterations;
+  if (!r.solved) return o;
+  o.violation = violation_section(r.violation);
+  o.node_s_m = r.node_s;
+  o.node_sd_m_s = r.node_sd;
+  o.node_t_s = r.node_t;
   const to::MotionSamples& s = r.samples;
-  j["samples"] = {{"t_s", list(s.t)},          {"s_m", list(s.s)},       {"sd_m_s", list(s.sd)},
-                  {"sdd_m_s2", list(s.sdd)},   {"q_rad", rows(s.q)},     {"qd_rad_s", rows(s.qd)},
-                  {"qdd_rad_s2", rows(s.qdd)}, {"tau_Nm", rows(s.tau)}};
-  return j;
+  o.samples = Section::Samples{s.t, s.s, s.sd, s.sdd, rows(s.q), rows(s.qd), rows(s.qdd), rows(s.tau)};
+  return o;
 }
 
 class TimeOptimalRun final : public StudyRun {
@@ -141,6 +118,8 @@ class TimeOptimalRun final : public StudyRun {
   }
 
   nlohmann::json results() const override;
+  /// the typed results.json section (studies/time_optimal/results_section.hpp)
+  to::ResultsSection section() const;
 
   std::vector<KeyFigure> key_figures() const override {
     std::vector<KeyFigure> k;
@@ -179,58 +158,40 @@ class TimeOptimalRun final : public StudyRun {
   std::optional<scene::DynamicReplay> replay_;
 };
 
-json TimeOptimalRun::results() const {
+json TimeOptimalRun::results() const { return report::to_json(section()); }
+
+Section TimeOptimalRun::section() const {
   const to::Result& r = result_;
-  json pts = json::array();
-  for (const auto& p : spec_.path.points) pts.push_back(pair(p));
-  json j;
-  j["path"] = {{"kind", path_kind(spec_.path.kind)}, {"points_m", pts}};
-  j["path_length_m"] = num(r.path_length);
-  j["configuration"] = spec_.configuration;
-  j["limits"] = {{"velocity_rad_s", pair(spec_.velocity_limit)},
-                 {"torque_Nm", pair(spec_.torque_limit)},
-                 {"acceleration_rad_s2", spec_.acceleration_limit ? pair(*spec_.acceleration_limit) : json(nullptr)}};
-  json solvers = json::array();
-  for (const auto& s : r.solvers) solvers.push_back(solver_json(s));
-  j["solvers"] = solvers;
-  j["mvc"] = {{"s_m", list(r.mvc_s)}, {"sd_m_s", list(r.mvc_sd)}, {"velocity_sd_m_s", list(r.mvc_velocity_sd)}};
-  json conv = json::array();
+  Section o;
+  o.path.kind = path_kind(spec_.path.kind);
+  for (const auto& p : spec_.path.points) o.path.points_m.push_back(pair(p));
+  o.path_length_m = r.path_length;
+  o.configuration = spec_.configuration;
+  o.limits.velocity_rad_s = pair(spec_.velocity_limit);
+  o.limits.torque_Nm = pair(spec_.torque_limit);
+  if (spec_.acceleration_limit) o.limits.acceleration_rad_s2 = pair(*spec_.acceleration_limit);
+  for (const auto& s : r.solvers) o.solvers.push_back(solver_section(s));
+  o.mvc = {r.mvc_s, r.mvc_sd, r.mvc_velocity_sd};
   for (const auto& row : r.convergence)
-    conv.push_back({{"segments", row.segments},
-                    {"levels", row.levels},
-                    {"solved", row.solved},
-                    {"duration_s", row.solved ? num(row.duration) : json(nullptr)},
-                    {"excess", row.solved ? num(row.excess) : json(nullptr)},
-                    {"run_time_s", num(row.run_time)},
-                    {"worst_violation", row.solved ? num(row.worst_violation) : json(nullptr)},
-                    {"message", row.message}});
-  j["convergence"] = conv;
-  json tip = json::array(), q = json::array();
+    o.convergence.push_back({row.segments, row.levels, row.solved, row.solved ? row.duration : NAN,
+                             row.solved ? row.excess : NAN, row.run_time,
+                             row.solved ? row.worst_violation : NAN, row.message});
+  o.motion.t_s = r.motion_t;
+  o.motion.s_m = r.motion_s;
   for (int k = 0; k < r.motion_p.cols(); ++k) {
-    tip.push_back(pair(r.motion_p.col(k)));
-    q.push_back(pair(r.motion_q.col(k)));
+    o.motion.tip_m.push_back(pair(r.motion_p.col(k)));
+    o.motion.q_rad.push_back(pair(r.motion_q.col(k)));
   }
-  j["motion"] = {{"t_s", list(r.motion_t)}, {"s_m", list(r.motion_s)}, {"tip_m", tip}, {"q_rad", q}};
   if (r.grid.computed) {
     const to::GridConvergence& g = r.grid;
-    j["grid_convergence"] = {{"grid_points", g.grid_points},
-                             {"refined_points", g.refined_points},
-                             {"refined_solved", g.refined_solved},
-                             {"duration_s", num(g.duration)},
-                             {"refined_duration_s", g.refined_solved ? num(g.refined_duration) : json(nullptr)},
-                             {"change", num(g.change)},
-                             {"tolerance", num(g.tolerance)},
-                             {"passed", g.change <= g.tolerance},
-                             {"s_range_m", json::array({num(g.s_lo), num(g.s_hi)})},
-                             {"grid_point_range", json::array({g.point_lo, g.point_hi})},
-                             {"share", num(g.share)},
-                             {"max_sd_m_s", num(g.max_sd)},
-                             {"min_abs_sin_q2", num(g.min_sin_q2)},
-                             {"path_min_abs_sin_q2", num(g.path_min_sin_q2)},
-                             {"text", g.text}};
+    o.grid_convergence = Section::GridConvergence{
+        g.grid_points, g.refined_points, g.refined_solved, g.duration,
+        g.refined_solved ? g.refined_duration : NAN, g.change, g.tolerance, g.change <= g.tolerance,
+        {g.s_lo, g.s_hi}, {g.point_lo, g.point_hi}, g.share, g.max_sd, g.min_sin_q2,
+        g.path_min_sin_q2, g.text};
   }
-  if (replay_) j["mujoco_replay"] = replay_json(*replay_);
-  return j;
+  if (replay_) o.mujoco_replay = replay_section(*replay_);
+  return o;
 }
 
 std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {

@@ -3,17 +3,14 @@
 #include <cmath>
 
 #include "report/number_format.hpp"
+#include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
+#include "studies/pendulum/results_section.hpp"
 
 namespace armstudy::report {
 namespace {
 
 using nlohmann::json;
-
-const json& arr(const json& j, const char* key) {
-  static const json empty = json::array();
-  return jsonv::has(j, key) && j[key].is_array() ? j[key] : empty;
-}
 
 // v - v[0], for energies whose absolute level (the potential's zero) means nothing
 std::vector<double> minus_first(std::vector<double> v) {
@@ -26,11 +23,11 @@ std::vector<double> minus_first(std::vector<double> v) {
 }  // namespace
 
 void pendulum_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const json& p = results.contains("pendulum") ? results["pendulum"] : json::object();
-  const json& par = jsonv::has(p, "parameters") ? p["parameters"] : json::object();
-  const json& series = jsonv::has(p, "series") ? p["series"] : json::object();
-  const json& energy = jsonv::has(p, "energy") ? p["energy"] : json::object();
-  const json& integ = jsonv::has(p, "integrator") ? p["integrator"] : json::object();
+  const auto p = read_section<studies::PendulumResultsSection>(results, "pendulum");
+  const auto& par = p.parameters;
+  const auto& series = p.series;
+  const auto& energy = p.energy;
+  const auto& integ = p.integrator;
 
   Section method;
   method.id = "method";
@@ -42,19 +39,17 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
       "swings on its hinge and the ball rolls without slipping on a circle in the tray "
       "(r_b φ' = -r4 θ4'). The equations of motion come from first principles (the ball's spin "
       "includes the tray's rotation) and are integrated from rest with " +
-      (jsonv::has(integ, "name") ? jsonv::str(integ, "name") : std::string("an adaptive integrator")) +
-      " at rtol = " + jsonv::sig(integ, "rtol", 2) + ", atol = " + jsonv::sig(integ, "atol", 2) +
+      integ.name + " at rtol = " + format_sig(integ.rtol, 2) + ", atol = " + format_sig(integ.atol, 2) +
       ". With no actuator and no friction the mechanical energy K + U must stay constant; its "
       "drift measures the model and the integrator together (the paper's Figure 3).");
-  for (const json& c : arr(par, "choices"))
-    if (c.is_string())
-      method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
+  for (const std::string& c : par.choices)
+    method.note("What Sato et al. leave open (docs/assumptions.md): " + c);
   method.note(
       "The paper's printed energy curve is not reproduced number for number: its printed "
       "coefficients are inconsistent (docs/defects.md), so the model is derived from first "
       "principles "
       "and checked by conservation, which holds for any consistent choice of the values above.");
-  if (!par.empty()) method.table(json_table(par, "Parameters used (SI; _deg in degrees)."));
+  method.table(json_table(to_json(par), "Parameters used (SI; _deg in degrees)."));
   page.sections.push_back(std::move(method));
 
   Section res;
@@ -63,26 +58,26 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
   Table t;
   t.caption = "Mechanical energy over the simulation and the integrator's effort.";
   t.header = {"quantity", "value"};
-  t.rows = {{"initial mechanical energy", jsonv::sig(energy, "initial_J", 10) + " J"},
-            {"energy exchanged (largest kinetic energy)", jsonv::sig(energy, "scale_J", 6) + " J"},
-            {"largest drift |E(t) - E(0)|", jsonv::sig(energy, "drift_J", 3) + " J"},
-            {"drift relative to the energy exchanged", jsonv::sig(energy, "drift_relative", 3)},
-            {"allowed relative drift", jsonv::sig(energy, "tolerance_relative", 3)},
-            {"steps accepted / rejected", jsonv::str(integ, "steps_accepted") + " / " +
-                                              jsonv::str(integ, "steps_rejected")},
-            {"right-hand-side evaluations", jsonv::str(integ, "evaluations")},
-            {"run time", jsonv::sig(p, "run_time_s", 3) + " s"}};
+  t.rows = {{"initial mechanical energy", format_sig(energy.initial_J, 10) + " J"},
+            {"energy exchanged (largest kinetic energy)", format_sig(energy.scale_J, 6) + " J"},
+            {"largest drift |E(t) - E(0)|", format_sig(energy.drift_J, 3) + " J"},
+            {"drift relative to the energy exchanged", format_sig(energy.drift_relative, 3)},
+            {"allowed relative drift", format_sig(energy.tolerance_relative, 3)},
+            {"steps accepted / rejected", std::to_string(integ.steps_accepted) + " / " +
+                                              std::to_string(integ.steps_rejected)},
+            {"right-hand-side evaluations", std::to_string(integ.evaluations)},
+            {"run time", format_sig(p.run_time_s, 3) + " s"}};
   res.table(std::move(t));
-  const auto ts = jsonv::vec(series, "t_s");
+  const auto& ts = series.t_s;
   if (ts.size() >= 2) {
     LinePlot e;
     e.title = "energies over time (cf. Figure 3 of Sato et al.)";
     e.x_label = "time (s)";
     e.y_label = "energy relative to the start (J)";
-    e.series.push_back({"kinetic K", ts, jsonv::vec(series, "kinetic_J"), colour_for("kinetic")});
-    e.series.push_back({"potential U - U(0)", ts, minus_first(jsonv::vec(series, "potential_J")),
+    e.series.push_back({"kinetic K", ts, series.kinetic_J, colour_for("kinetic")});
+    e.series.push_back({"potential U - U(0)", ts, minus_first(series.potential_J),
                         colour_for("potential")});
-    e.series.push_back({"mechanical K + U - E(0)", ts, minus_first(jsonv::vec(series, "total_J")),
+    e.series.push_back({"mechanical K + U - E(0)", ts, minus_first(series.total_J),
                         colour_for("mechanical"), LineStyle::kDashed});
     res.figure(figures.line("energies", e,
                             "Kinetic and potential energy trade places while their sum stays "
@@ -91,11 +86,11 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     d.title = "mechanical energy drift";
     d.x_label = "time (s)";
     d.y_label = "E(t) - E(0) (J)";
-    d.series.push_back({"E(t) - E(0)", ts, minus_first(jsonv::vec(series, "total_J")),
+    d.series.push_back({"E(t) - E(0)", ts, minus_first(series.total_J),
                         colour_for("mechanical")});
     res.figure(figures.line("energy_drift", d,
                             "The drift of the mechanical energy at full scale: rounding and "
-                            "integrator error only (largest " + jsonv::sig(energy, "drift_J", 3) +
+                            "integrator error only (largest " + format_sig(energy.drift_J, 3) +
                                 " J)."));
   }
   page.sections.push_back(std::move(res));
@@ -108,19 +103,19 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     a.title = "tray and ball angles over time";
     a.x_label = "time (s)";
     a.y_label = "angle (rad)";
-    a.series.push_back({"θ3 (tray, relative to link 2)", ts, jsonv::column(series, "q_rad", 2, ts.size()),
+    a.series.push_back({"θ3 (tray, relative to link 2)", ts, column(series.q_rad, 2),
                         colour_for("joint3")});
     a.series.push_back({"θ4 (ball, relative to the tray)", ts,
-                        jsonv::column(series, "q_rad", 3, ts.size()), colour_for("joint4")});
+                        column(series.q_rad, 3), colour_for("joint4")});
     mo.figure(figures.line("angles", a,
                            "The passive coordinates over time; joints 1 and 2 stay locked at " +
-                               jsonv::str(par, "locked_deg") + " deg."));
+                               to_json(par.locked_deg).dump() + " deg."));
     LinePlot r;
     r.title = "tray and ball angular velocities";
     r.x_label = "time (s)";
     r.y_label = "angular velocity (rad/s)";
-    r.series.push_back({"θ3'", ts, jsonv::column(series, "qd_rad_s", 2, ts.size()), colour_for("joint3")});
-    r.series.push_back({"θ4'", ts, jsonv::column(series, "qd_rad_s", 3, ts.size()), colour_for("joint4")});
+    r.series.push_back({"θ3'", ts, column(series.qd_rad_s, 2), colour_for("joint3")});
+    r.series.push_back({"θ4'", ts, column(series.qd_rad_s, 3), colour_for("joint4")});
     mo.figure(figures.line("rates", r, "Angular velocities of the passive coordinates."));
 
     // the ball's path in the plane with the snapshots (fig. 2 style)
@@ -130,10 +125,10 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     path.y_label = "y (m)";
     path.nx = path.ny = 2;
     path.z.assign(4, NAN);
-    Series ball{"ball centre", jsonv::column(series, "ball_xy_m", 0, ts.size()),
-                jsonv::column(series, "ball_xy_m", 1, ts.size()), colour_for("joint4")};
-    Series centre{"centre of the ball's circle", jsonv::column(series, "circle_centre_xy_m", 0, ts.size()),
-                  jsonv::column(series, "circle_centre_xy_m", 1, ts.size()), colour_for("joint3"),
+    Series ball{"ball centre", column(series.ball_xy_m, 0),
+                column(series.ball_xy_m, 1), colour_for("joint4")};
+    Series centre{"centre of the ball's circle", column(series.circle_centre_xy_m, 0),
+                  column(series.circle_centre_xy_m, 1), colour_for("joint3"),
                   LineStyle::kDashed};
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (const Series* s : {&ball, &centre})
@@ -154,15 +149,13 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     Table snaps;
     snaps.caption = "Snapshots of the motion (Figure 2 of Sato et al. shows one every 0.13 s).";
     snaps.header = {"t (s)", "θ3 (rad)", "θ4 (rad)", "ball (x, y) (m)"};
-    for (const json& sn : arr(p, "snapshots")) {
-      const auto q = jsonv::vec(sn, "q_rad");
-      const auto b = jsonv::vec(sn, "ball_xy_m");
-      if (b.size() == 2)
-        path.markers.push_back({b[0], b[1], "", colour_for("joint4"), false});
-      snaps.rows.push_back({jsonv::sig(sn, "t_s", 3), q.size() > 2 ? format_sig(q[2], 4) : "n/a",
+    for (const auto& sn : p.snapshots) {
+      const auto& q = sn.q_rad;
+      const auto& b = sn.ball_xy_m;
+      path.markers.push_back({b[0], b[1], "", colour_for("joint4"), false});
+      snaps.rows.push_back({format_sig(sn.t_s, 3), q.size() > 2 ? format_sig(q[2], 4) : "n/a",
                             q.size() > 3 ? format_sig(q[3], 4) : "n/a",
-                            b.size() == 2 ? "(" + format_sig(b[0], 4) + ", " + format_sig(b[1], 4) + ")"
-                                          : "n/a"});
+                            "(" + format_sig(b[0], 4) + ", " + format_sig(b[1], 4) + ")"});
     }
     if (!path.markers.empty()) path.markers.front().label = "snapshots";
     mo.figure(figures.map("ball_path", path,

@@ -8,7 +8,9 @@
 
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
+#include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
+#include "studies/placement/results_section.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -20,66 +22,49 @@ constexpr Rgb kSingular{238, 120, 120};
 constexpr Rgb kOverLimit{250, 200, 120};
 constexpr int kMaxMapCells = 120;  // per axis, drawn (the data keeps every node)
 
-std::string id_label(const json& o) {
-  return jsonv::str(o, "program") + ", conf. " + jsonv::str(o, "configuration");
+using PS = studies::placement::ResultsSection;
+
+std::string id_label(const PS::Id& o) { return o.program + ", conf. " + as_text(o.configuration); }
+std::string id_key(const PS::Id& o) { return o.program + "/" + as_text(o.configuration); }
+std::string pair_str(const PS::Pair& p, int digits) {
+  return "(" + format_sig(p[0], digits) + ", " + format_sig(p[1], digits) + ")";
 }
-std::string id_key(const json& o) {
-  return jsonv::str(o, "program") + "/" + jsonv::str(o, "configuration");
-}
-std::string pair_str(const json& o, const char* key, int digits) {
-  if (!jsonv::has(o, key) || !o[key].is_array() || o[key].size() != 2) return "n/a";
-  auto f = [&](const json& v) { return v.is_number() ? format_sig(v.get<double>(), digits) : "n/a"; };
-  return "(" + f(o[key][0]) + ", " + f(o[key][1]) + ")";
-}
-double at(const json& o, const char* key, size_t i) {
-  if (!jsonv::has(o, key) || !o[key].is_array() || i >= o[key].size() || !o[key][i].is_number())
-    return NAN;
-  return o[key][i].get<double>();
-}
-const json& arr(const json& j, const char* key) {
-  static const json empty = json::array();
-  return jsonv::has(j, key) && j[key].is_array() ? j[key] : empty;
+std::string pair_str(const std::optional<PS::Pair>& p, int digits) {
+  return p ? pair_str(*p, digits) : "n/a";
 }
 // a singular motion's energy, peak and saving are never printed
-bool singular_motion(const json& o) {
-  return jsonv::has(o, "singular_trajectory") && o["singular_trajectory"].is_boolean() &&
-         o["singular_trajectory"].get<bool>();
-}
+bool singular_motion(const PS::Metrics& o) { return o.singular_trajectory.value_or(false); }
 constexpr const char* kSingularText = "singular: energy not converged, peak torque unbounded";
-std::string energy_text(const json& o, int digits) {
-  return singular_motion(o) ? std::string(kSingularText) : jsonv::sig(o, "energy_J", digits);
+std::string energy_text(const PS::Metrics& o, int digits) {
+  return singular_motion(o) ? std::string(kSingularText) : format_sig(o.energy_J, digits);
 }
 // "inner circle |L1 - L2|" etc. for a binding name
-std::string binding_text(const json& o, const json& pl) {
-  if (!jsonv::has(o, "decided_by")) return "n/a";
-  const json& d = o["decided_by"];
-  const std::string b = jsonv::str(d, "binding");
-  const std::string margin = jsonv::sig(d, "margin_m", 3) + " m";
+std::string binding_text(const PS::Optimum& o, const PS& pl) {
+  const PS::Decision& d = o.decided_by;
+  const std::string& b = d.binding;
+  const std::string margin = format_sig(d.margin_m, 3) + " m";
+  const std::string joint = d.joint ? as_text(*d.joint) : "null";
   if (b == "inner_clearance")
-    return "the " + margin + " clearance margin to the inner circle |L1 - L2| = " + format_sig(at(pl, "annulus_m", 0), 3) + " m";
+    return "the " + margin + " clearance margin to the inner circle |L1 - L2| = " + format_sig(pl.annulus_m[0], 3) + " m";
   if (b == "outer_clearance")
-    return "the " + margin + " clearance margin to the outer circle L1 + L2 = " + format_sig(at(pl, "annulus_m", 1), 3) + " m";
-  if (b == "torque_limit") return "the torque limit of joint " + jsonv::str(d, "joint");
-  if (b == "power_limit") return "the power limit of joint " + jsonv::str(d, "joint");
+    return "the " + margin + " clearance margin to the outer circle L1 + L2 = " + format_sig(pl.annulus_m[1], 3) + " m";
+  if (b == "torque_limit") return "the torque limit of joint " + joint;
+  if (b == "power_limit") return "the power limit of joint " + joint;
   if (b == "interior")
-    return "interior (clearances exceed the margin by " + jsonv::sig(d, "inner_slack_m", 3) + " m inner, " +
-           jsonv::sig(d, "outer_slack_m", 3) + " m outer)";
+    return "interior (clearances exceed the margin by " + format_sig(d.inner_slack_m, 3) + " m inner, " +
+           format_sig(d.outer_slack_m, 3) + " m outer)";
   return b;
 }
 // a candidate's status in words ("singular" in results.json is "inside the margin": the
 // word singular is kept for motions that are singular themselves)
-std::string status_text(const json& o) {
-  const std::string st = jsonv::str(o, "status");
+std::string status_text(const std::string& st) {
   if (st == "singular") return "inside the margin";
   if (st == "over_limit") return "over a limit";
   return st;
 }
-bool set_by_margin(const json& o) {
-  return jsonv::has(o, "decided_by") && jsonv::has(o["decided_by"], "set_by_margin") &&
-         o["decided_by"]["set_by_margin"].is_boolean() && o["decided_by"]["set_by_margin"].get<bool>();
-}
+bool set_by_margin(const PS::Optimum& o) { return o.decided_by.set_by_margin; }
 
-Section task_section(const json& pl) {
+Section task_section(const PS& pl) {
   Section s;
   s.id = "task";
   s.heading = "Task and search";
@@ -88,50 +73,46 @@ Section task_section(const json& pl) {
   t.caption = "The task, the search and its limits (defaults filled in).";
   t.header = {"quantity", "value"};
   auto row = [&](const std::string& k, const std::string& v) { t.rows.push_back({k, v}); };
-  row("Lmax = 4 sqrt(L1 L2)", jsonv::sig(pl, "lmax_m", 5) + " m");
-  row("line length L", jsonv::sig(pl, "length_m", 5) + " m (" +
-                           jsonv::sig(pl, "length_fraction", 4) + " Lmax)");
-  row("duration T", jsonv::sig(pl, "duration_s", 4) + " s");
-  row("samples per trajectory", jsonv::str(pl, "samples"));
-  row("singularity margin", jsonv::sig(pl, "singularity_margin_m", 4) + " m");
-  row("workspace annulus", pair_str(pl, "annulus_m", 5) + " m");
+  row("Lmax = 4 sqrt(L1 L2)", format_sig(pl.lmax_m, 5) + " m");
+  row("line length L", format_sig(pl.length_m, 5) + " m (" +
+                           format_sig(pl.length_fraction, 4) + " Lmax)");
+  row("duration T", format_sig(pl.duration_s, 4) + " s");
+  row("samples per trajectory", as_text(pl.samples));
+  row("singularity margin", format_sig(pl.singularity_margin_m, 4) + " m");
+  row("workspace annulus", pair_str(pl.annulus_m, 5) + " m");
   row("torque limits [joint 1, joint 2]",
-      jsonv::has(pl, "torque_limits_Nm") && !pl["torque_limits_Nm"].is_null()
-          ? pair_str(pl, "torque_limits_Nm", 5) + " N m"
-          : "none");
+      pl.torque_limits_Nm ? pair_str(pl.torque_limits_Nm, 5) + " N m" : "none");
   row("power limits [joint 1, joint 2]",
-      jsonv::has(pl, "power_limits_W") && !pl["power_limits_W"].is_null()
-          ? pair_str(pl, "power_limits_W", 5) + " W"
-          : "none");
-  if (jsonv::has(pl, "thesis_intervals")) {
-    const json& ti = pl["thesis_intervals"];
-    row("thesis x_S interval (case " + jsonv::str(ti, "x_s_case") + " of 4.7-4.9)",
-        "[" + jsonv::sig(ti, "x_s_init_m", 5) + ", " + jsonv::sig(ti, "x_s_fin_m", 5) + "] m");
+      pl.power_limits_W ? pair_str(pl.power_limits_W, 5) + " W" : "none");
+  {
+    const auto& ti = pl.thesis_intervals;
+    row("thesis x_S interval (case " + as_text(ti.x_s_case) + " of 4.7-4.9)",
+        "[" + format_sig(ti.x_s_init_m, 5) + ", " + format_sig(ti.x_s_fin_m, 5) + "] m");
   }
   s.table(std::move(t));
-  if (jsonv::has(pl, "counts")) {
-    const json& c = pl["counts"];
+  if (pl.geometry_counts) {
+    const auto& c = *pl.geometry_counts;
     Table ct;
     ct.caption = "Candidates of the geometric sweep (x_S grid × φ in [0°, 180°]) and the "
                  "thesis's own intervals against the exact annulus check.";
     ct.header = {"candidates", "count"};
-    for (const auto& [k, label] : std::vector<std::pair<const char*, const char*>>{
-             {"total", "total"},
-             {"unreachable", "unreachable (part of the line outside the annulus)"},
-             {"singular", "inside the margin (closer to a boundary than the margin)"},
-             {"clear", "clear of both boundaries"},
-             {"thesis_admitted", "admitted by the thesis's intervals (4.7-4.13)"},
-             {"thesis_rejected_by_exact_check", "of those, rejected by the exact check"},
-             {"exact_accepted_outside_thesis",
+    for (const auto& [n, label] : std::vector<std::pair<int, const char*>>{
+             {c.total, "total"},
+             {c.unreachable, "unreachable (part of the line outside the annulus)"},
+             {c.singular, "inside the margin (closer to a boundary than the margin)"},
+             {c.clear, "clear of both boundaries"},
+             {c.thesis_admitted, "admitted by the thesis's intervals (4.7-4.13)"},
+             {c.thesis_rejected_by_exact_check, "of those, rejected by the exact check"},
+             {c.exact_accepted_outside_thesis,
               "accepted by the exact check outside the thesis's φ interval"}})
-      if (jsonv::has(c, k)) ct.rows.push_back({label, jsonv::str(c, k)});
+      ct.rows.push_back({label, as_text(n)});
     s.table(std::move(ct));
   }
   return s;
 }
 
 // what decides each optimum, how converged the refinement and the energy integral are
-Table decision_table(const json& pl) {
+Table decision_table(const PS& pl) {
   Table t;
   t.caption = "What decides each optimum: the binding constraint (a clearance margin to a "
               "workspace circle, a torque or power limit) or 'interior' when none is active; "
@@ -140,47 +121,44 @@ Table decision_table(const json& pl) {
               "(samples doubled until the energy changes by less than 1e-4).";
   t.header = {"program, configuration", "decided by", "inner / outer clearance − margin (m)",
               "refinement tolerance", "energy: samples, change on doubling"};
-  for (const json& o : arr(pl, "optima")) {
+  for (const auto& o : pl.optima) {
     std::string tol = "not refined", conv = "n/a";
-    if (jsonv::has(o, "refinement") && o["refinement"]["method"].is_string())
-      tol = jsonv::sig(o["refinement"], "final_tolerance_rel", 2) +
-            (o["refinement"].value("converged", false) ? " (converged)" : " (NOT converged)");
-    if (jsonv::has(o, "energy_convergence")) {
-      const json& c = o["energy_convergence"];
-      conv = c.value("singular", false)
-                 ? std::string(kSingularText)
-                 : jsonv::str(c, "samples") + " samples, " + jsonv::sig(c, "rel_change", 2);
+    if (o.refinement.method)
+      tol = format_sig(o.refinement.final_tolerance_rel, 2) +
+            (o.refinement.converged ? " (converged)" : " (NOT converged)");
+    if (o.energy_convergence) {
+      const auto& c = *o.energy_convergence;
+      conv = c.singular ? std::string(kSingularText)
+                        : as_text(c.samples) + " samples, " + format_sig(c.rel_change, 2);
     }
-    const json d = jsonv::has(o, "decided_by") ? o["decided_by"] : json::object();
     // a slack within roundoff of 0 is the binding constraint itself
-    const auto slack = [&](const char* key) {
-      const double v = jsonv::num(d, key);
-      return std::abs(v) < 1e-12 ? std::string("0 (binds)") : jsonv::sig(d, key, 3);
+    const auto slack = [&](double v) {
+      return std::abs(v) < 1e-12 ? std::string("0 (binds)") : format_sig(v, 3);
     };
-    t.rows.push_back({id_label(o), binding_text(o, pl), slack("inner_slack_m") + " / " + slack("outer_slack_m"),
-                      tol, conv});
+    t.rows.push_back({id_label(o), binding_text(o, pl),
+                      slack(o.decided_by.inner_slack_m) + " / " + slack(o.decided_by.outer_slack_m), tol, conv});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
   }
   return t;
 }
 
 // the energy of each margin-bound optimum over the clearance margin
-std::optional<Figure> margin_figure(const json& pl, FigureWriter& figures) {
+std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
   LinePlot plot;
   plot.title = "optimum energy against the clearance margin";
   plot.x_label = "clearance margin (m)";
   plot.y_label = "least admissible energy (J)";
   std::string range;
-  for (const json& o : arr(pl, "optima")) {
+  for (const auto& o : pl.optima) {
     if (!set_by_margin(o)) continue;
     Series se;
     se.label = id_label(o);
     se.colour = colour_for(id_key(o));
     se.markers = true;
-    for (const json& m : arr(o, "margin_sensitivity")) {
-      if (!m.value("found", false) || singular_motion(m) || !jsonv::has(m, "energy_J")) continue;
-      se.x.push_back(jsonv::num(m, "margin_m"));
-      se.y.push_back(jsonv::num(m, "energy_J"));
+    for (const auto& m : o.margin_sensitivity) {
+      if (!m.found || !m.optimum || singular_motion(*m.optimum)) continue;
+      se.x.push_back(m.margin_m);
+      se.y.push_back(m.optimum->energy_J);
     }
     if (se.x.size() < 2) continue;
     range += (range.empty() ? "" : "; ") + id_label(o) + " " + format_sig(se.y.front(), 5) + " J at " +
@@ -188,11 +166,11 @@ std::optional<Figure> margin_figure(const json& pl, FigureWriter& figures) {
              format_sig(se.x.back(), 3) + " m";
     // the binding circle may change along the curve (a kink)
     std::string prev, changes;
-    for (const json& m : arr(o, "margin_sensitivity")) {
-      const std::string b = jsonv::str(m, "binding");
+    for (const auto& m : o.margin_sensitivity) {
+      const std::string b = m.optimum ? m.optimum->binding : std::string();
       if (!prev.empty() && !b.empty() && b != prev)
         changes += ", " + std::string(b == "outer_clearance" ? "the outer" : b == "inner_clearance" ? "the inner" : b) +
-                   " circle binds from " + jsonv::sig(m, "margin_m", 3) + " m";
+                   " circle binds from " + format_sig(m.margin_m, 3) + " m";
       if (!b.empty()) prev = b;
     }
     range += changes;
@@ -204,10 +182,10 @@ std::optional<Figure> margin_figure(const json& pl, FigureWriter& figures) {
                       "and constrained refinement) at margins from 0.005 m to 0.05 m. The energy "
                       "falls as the margin shrinks: the margin, not the physics, decides these "
                       "optima (" + range + "). The case's margin is " +
-                          jsonv::sig(pl, "singularity_margin_m", 3) + " m.");
+                          format_sig(pl.singularity_margin_m, 3) + " m.");
 }
 
-Section optima_section(const json& pl, FigureWriter& figures) {
+Section optima_section(const PS& pl, FigureWriter& figures) {
   Section s;
   s.id = "optima";
   s.heading = "Optimal placements";
@@ -219,15 +197,18 @@ Section optima_section(const json& pl, FigureWriter& figures) {
               "root (X, Y) (m)", "min |sin q2|", "peak torque (N m)", "peak power (W)",
               "signed work (J)"};
   std::vector<Owner> owners;
-  for (const json& o : arr(pl, "optima")) {
-    t.rows.push_back({id_label(o), energy_text(o, 7), jsonv::sig(o, "grid_energy_J", 6),
-                      jsonv::sig(o, "x_s_m", 6), jsonv::sig(o, "phi_deg", 6),
-                      pair_str(o, "root_xy_m", 5), jsonv::sig(o, "min_abs_sin_elbow", 3),
-                      singular_motion(o) ? std::string(kSingularText) : pair_str(o, "peak_torque_Nm", 4),
-                      pair_str(o, "peak_power_W", 4),
-                      jsonv::sig(o, "signed_work_J", 3)});
+  std::vector<json> series;  // the optima's series as owners_plot reads them
+  series.reserve(pl.optima.size());
+  for (const auto& o : pl.optima) {
+    t.rows.push_back({id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6),
+                      format_sig(o.x_s_m, 6), format_sig(o.phi_deg, 6),
+                      pair_str(o.root_xy_m, 5), format_sig(o.min_abs_sin_elbow, 3),
+                      singular_motion(o) ? std::string(kSingularText) : pair_str(o.peak_torque_Nm, 4),
+                      pair_str(o.peak_power_W, 4),
+                      format_sig(o.signed_work_J, 3)});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
-    if (jsonv::has(o, "series")) owners.push_back({id_label(o), id_key(o), &o["series"]});
+    series.push_back(to_json(o.series));
+    owners.push_back({id_label(o), id_key(o), &series.back()});
   }
   if (t.rows.empty()) {
     s.paragraph("No program and configuration has an admissible placement.");
@@ -236,7 +217,7 @@ Section optima_section(const json& pl, FigureWriter& figures) {
     s.table(decision_table(pl));
     // one note per binding constraint, naming the optima it decides
     std::map<std::string, std::string> by;
-    for (const json& o : arr(pl, "optima"))
+    for (const auto& o : pl.optima)
       if (set_by_margin(o)) by[binding_text(o, pl)] += (by[binding_text(o, pl)].empty() ? "" : ", ") + id_label(o);
     for (const auto& [what, who] : by)
       s.note("The optimum of " + who + " is set by " + what +
@@ -247,45 +228,45 @@ Section optima_section(const json& pl, FigureWriter& figures) {
   Table u;
   u.caption = "Programs and configurations without an admissible placement.";
   u.header = {"program, configuration", "why"};
-  for (const json& o : arr(pl, "unsolved")) u.rows.push_back({id_label(o), jsonv::str(o, "reason")});
+  for (const auto& o : pl.unsolved) u.rows.push_back({id_label(o), o.reason});
   if (!u.rows.empty()) s.table(std::move(u));
 
   // the source's own printed placements, when the case evaluates them: one note per placement
   std::vector<std::string> labels;
-  for (const json& e : arr(pl, "evaluations")) {
-    const std::string label = jsonv::str(e, "label");
+  for (const auto& e : pl.evaluations) {
+    const std::string& label = e.label;
     if (label.rfind("thesis", 0) == 0 && std::find(labels.begin(), labels.end(), label) == labels.end())
       labels.push_back(label);
   }
   for (const std::string& label : labels) {
     std::string energies, text;
-    const json* first = nullptr;
-    for (const json& e : arr(pl, "evaluations")) {
-      if (jsonv::str(e, "label") != label) continue;
+    const PS::Evaluation* first = nullptr;
+    for (const auto& e : pl.evaluations) {
+      if (e.label != label) continue;
       if (!first) first = &e;
       energies += (energies.empty() ? "" : "; ") + id_label(e) + " " +
-                  (singular_motion(e) ? std::string(kSingularText) : jsonv::sig(e, "energy_J", 5) + " J") +
-                  (jsonv::has(e, "saving_percent") && e["saving_percent"].is_number()
-                       ? " (the optimum saves " + jsonv::sig(e, "saving_percent", 3) + " %)"
+                  (singular_motion(e) ? std::string(kSingularText) : format_sig(e.energy_J, 5) + " J") +
+                  (std::isfinite(e.saving_percent)
+                       ? " (the optimum saves " + format_sig(e.saving_percent, 3) + " %)"
                        : "");
     }
-    const json& e = *first;
-    const std::string status = jsonv::str(e, "status");
-    text = "The thesis's printed placement '" + label + "' (x_S = " + jsonv::sig(e, "x_s_m", 5) +
-           " m, φ = " + jsonv::sig(e, "phi_deg", 5) + "°) is " +
-           (singular_motion(e) && status != "unreachable" ? std::string("on a workspace boundary") : status_text(e)) +
+    const PS::Evaluation& e = *first;
+    const std::string& status = e.status;
+    text = "The thesis's printed placement '" + label + "' (x_S = " + format_sig(e.x_s_m, 5) +
+           " m, φ = " + format_sig(e.phi_deg, 5) + "°) is " +
+           (singular_motion(e) && status != "unreachable" ? std::string("on a workspace boundary") : status_text(e.status)) +
            " by the exact check";
     if (status == "unreachable")
       text += ": with its printed digits part of the line lies outside the annulus (by " +
-              format_sig(-jsonv::num(e, "boundary_distance_m"), 3) +
+              format_sig(-e.boundary_distance_m, 3) +
               " m), so no motion exists there.";
     else if (singular_motion(e))
-      text += " (clearance " + jsonv::sig(e, "boundary_distance_m", 3) + " m), so its motion is " +
+      text += " (clearance " + format_sig(e.boundary_distance_m, 3) + " m), so its motion is " +
               kSingularText + "; no energy, peak torque or saving is given for it.";
     else if (status == "singular")
-      text += ": it comes within " + jsonv::sig(e, "boundary_distance_m", 3) +
+      text += ": it comes within " + format_sig(e.boundary_distance_m, 3) +
               " m of a workspace boundary (smallest |sin q2| " +
-              jsonv::sig(e, "min_abs_sin_elbow", 3) +
+              format_sig(e.min_abs_sin_elbow, 3) +
               "), so it is not admissible; its energies with the samples doubled until they "
               "converge: " + energies + ".";
     else
@@ -328,7 +309,7 @@ Section optima_section(const json& pl, FigureWriter& figures) {
   return s;
 }
 
-Section curves_section(const json& pl, FigureWriter& figures) {
+Section curves_section(const PS& pl, FigureWriter& figures) {
   Section s;
   s.id = "direction-angle";
   s.heading = "Energy versus direction angle";
@@ -337,14 +318,14 @@ Section curves_section(const json& pl, FigureWriter& figures) {
   plot.x_label = "direction angle φ (deg)";
   plot.y_label = "energy (J)";
   std::string abscissae;
-  for (const json& c : arr(pl, "curves")) {
-    const auto phi = jsonv::vec(c, "phi_deg");
-    const auto e = jsonv::vec(c, "energy_J");
-    const std::string status = jsonv::str(c, "status");
+  for (const auto& c : pl.curves) {
+    const auto& phi = c.phi_deg;
+    const auto& e = c.energy_J;
+    const std::string& status = c.status;
     if (phi.size() != e.size() || phi.empty()) continue;
     // admissible points solid, singular or over-limit ones dotted
     Series ok, excluded;
-    ok.label = id_label(c) + " (x_S = " + jsonv::sig(c, "x_s_m", 4) + " m)";
+    ok.label = id_label(c) + " (x_S = " + format_sig(c.x_s_m, 4) + " m)";
     excluded.label = "";
     ok.colour = excluded.colour = colour_for(id_key(c));
     excluded.style = LineStyle::kDotted;
@@ -363,17 +344,17 @@ Section curves_section(const json& pl, FigureWriter& figures) {
     plot.series.push_back(std::move(ok));
     plot.series.push_back(std::move(excluded));
     // the optimum itself, on its own curve (the curve is drawn at the optimum's x_S)
-    for (const json& o : arr(pl, "optima")) {
+    for (const auto& o : pl.optima) {
       if (id_key(o) != id_key(c) || singular_motion(o)) continue;
       Series mark;
       mark.label = "";
       mark.colour = colour_for(id_key(c));
       mark.markers = true;
-      mark.x = {jsonv::num(o, "phi_deg")};
-      mark.y = {jsonv::num(o, "energy_J")};
+      mark.x = {o.phi_deg};
+      mark.y = {o.energy_J};
       if (std::isfinite(mark.x[0]) && std::isfinite(mark.y[0])) plot.series.push_back(std::move(mark));
     }
-    abscissae += (abscissae.empty() ? "" : ", ") + id_label(c) + ": " + jsonv::sig(c, "x_s_m", 4) + " m";
+    abscissae += (abscissae.empty() ? "" : ", ") + id_label(c) + ": " + format_sig(c.x_s_m, 4) + " m";
   }
   bool any = false;
   for (const auto& se : plot.series)
@@ -395,19 +376,19 @@ Section curves_section(const json& pl, FigureWriter& figures) {
 }
 
 // one placement map (rows of text in results.json) as a shaded map
-bool map_figure(const json& pl, const json& m, FigureWriter& figures, Section& s) {
-  const auto xs = jsonv::vec(m, "x_m");
-  const auto ys = jsonv::vec(m, "y_m");
-  const json& er = arr(m, "energy_J_rows");
-  const json& sr = arr(m, "status_rows");
+bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& s) {
+  const auto& xs = m.x_m;
+  const auto& ys = m.y_m;
+  const auto& er = m.energy_J_rows;
+  const auto& sr = m.status_rows;
   if (xs.size() < 2 || ys.size() < 2 || er.size() != ys.size() || sr.size() != ys.size())
     return false;
   const size_t nx = xs.size(), ny = ys.size();
   std::vector<double> z(nx * ny, NAN);
   std::vector<char> st(nx * ny, '.');
   for (size_t j = 0; j < ny; ++j) {
-    std::istringstream in(er[j].is_string() ? er[j].get<std::string>() : "");
-    const std::string status = sr[j].is_string() ? sr[j].get<std::string>() : "";
+    std::istringstream in(er[j]);
+    const std::string& status = sr[j];
     std::string tok;
     for (size_t i = 0; i < nx && (in >> tok); ++i) {
       if (tok != "-") z[j * nx + i] = std::strtod(tok.c_str(), nullptr);
@@ -468,18 +449,18 @@ bool map_figure(const json& pl, const json& m, FigureWriter& figures, Section& s
   line.label = "task line";
   line.colour = {0, 0, 0};
   line.width = 2.5;
-  line.x = {0.0, jsonv::num(pl, "length_m")};
+  line.x = {0.0, pl.length_m};
   line.y = {0.0, 0.0};
   if (std::isfinite(line.x[1])) map.overlays.push_back(line);
-  if (jsonv::has(m, "optimum_xy_m") && m["optimum_xy_m"].is_array())
-    map.markers.push_back({at(m, "optimum_xy_m", 0), at(m, "optimum_xy_m", 1), "optimum",
+  if (m.optimum_xy_m)
+    map.markers.push_back({(*m.optimum_xy_m)[0], (*m.optimum_xy_m)[1], "optimum",
                            colour_for(id_key(m))});
-  for (const json& th : arr(pl, "thesis_search"))
-    if (id_key(th) == id_key(m) && jsonv::has(th, "root_xy_m"))
-      map.markers.push_back({at(th, "root_xy_m", 0), at(th, "root_xy_m", 1),
-                             "thesis-interval best (" + status_text(th) + ")", {0, 0, 0},
+  for (const auto& th : pl.thesis_search)
+    if (id_key(th) == id_key(m))
+      map.markers.push_back({th.root_xy_m[0], th.root_xy_m[1],
+                             "thesis-interval best (" + status_text(th.status) + ")", {0, 0, 0},
                              false});
-  const std::string name = "map_" + jsonv::str(m, "program") + "_" + jsonv::str(m, "configuration");
+  const std::string name = "map_" + m.program + "_" + as_text(m.configuration);
   s.figure(figures.map(name, map,
                        "Energy of the task over root locations (X, Y) in the frame fixed to the "
                        "line (the line runs from the origin along X), " + id_label(m) +
@@ -491,22 +472,22 @@ bool map_figure(const json& pl, const json& m, FigureWriter& figures, Section& s
   return true;
 }
 
-Section maps_section(const json& pl, FigureWriter& figures) {
+Section maps_section(const PS& pl, FigureWriter& figures) {
   Section s;
   s.id = "maps";
   s.heading = "Placement maps";
   int n = 0;
-  for (const json& m : arr(pl, "maps")) n += map_figure(pl, m, figures, s);
+  for (const auto& m : pl.maps) n += map_figure(pl, m, figures, s);
   if (n == 0) s.paragraph("The result holds no placement map.");
   return s;
 }
 
-Section loci_section(const json& pl, FigureWriter& figures) {
+Section loci_section(const PS& pl, FigureWriter& figures) {
   Section s;
   s.id = "root-loci";
   s.heading = "Optimal root locations and the torque trade-off";
-  const double length = jsonv::num(pl, "length_m");
-  const double r_in = at(pl, "annulus_m", 0), r_out = at(pl, "annulus_m", 1);
+  const double length = pl.length_m;
+  const double r_in = pl.annulus_m[0], r_out = pl.annulus_m[1];
   ShadedMap loci;
   loci.title = "optimal root locations";
   loci.x_label = "root X (m), along the line";
@@ -528,8 +509,8 @@ Section loci_section(const json& pl, FigureWriter& figures) {
   line.x = {0.0, length};
   line.y = {0.0, 0.0};
   loci.overlays.push_back(line);
-  for (const json& o : arr(pl, "optima")) {
-    const double X = at(o, "root_xy_m", 0), Y = at(o, "root_xy_m", 1);
+  for (const auto& o : pl.optima) {
+    const double X = o.root_xy_m[0], Y = o.root_xy_m[1];
     if (!std::isfinite(X) || !std::isfinite(Y)) continue;
     loci.markers.push_back({X, Y, id_label(o), colour_for(id_key(o))});
     grow(X, Y);
@@ -547,10 +528,10 @@ Section loci_section(const json& pl, FigureWriter& figures) {
       loci.overlays.push_back(std::move(c));
     }
   }
-  for (const json& p : arr(pl, "pareto")) {
-    const auto xs = jsonv::vec(p, "x_s_m");
-    const auto ph = jsonv::vec(p, "phi_deg");
-    if (xs.size() != ph.size() || xs.size() < 2 || jsonv::str(p, "joint") != "1") continue;
+  for (const auto& p : pl.pareto) {
+    const auto& xs = p.x_s_m;
+    const auto& ph = p.phi_deg;
+    if (xs.size() != ph.size() || xs.size() < 2 || p.joint != 1) continue;
     Series locus;
     locus.label = id_label(p) + ", Pareto locus";
     locus.colour = colour_for(id_key(p));
@@ -591,34 +572,33 @@ Section loci_section(const json& pl, FigureWriter& figures) {
     plot.y_label = "least energy (J)";
     bool excluded_labelled = false;
     std::vector<Series> excluded_series;
-    for (const json& p : arr(pl, "pareto")) {
-      if (jsonv::str(p, "joint") != std::to_string(joint)) continue;
+    for (const auto& p : pl.pareto) {
+      if (p.joint != joint) continue;
       Series se;
       se.label = id_label(p);
       se.colour = colour_for(id_key(p));
-      se.markers = arr(p, "energy_J").size() <= 40;
-      for (size_t k = 0; k < arr(p, "energy_J").size(); ++k) {
-        const json& pk = arr(p, "peak_torque_Nm");
-        if (k >= pk.size() || !pk[k].is_array() || pk[k].size() < 2 || !pk[k][joint - 1].is_number())
-          continue;
-        se.x.push_back(pk[k][joint - 1].get<double>());
-        se.y.push_back(at(p, "energy_J", k));
+      se.markers = p.energy_J.size() <= 40;
+      for (size_t k = 0; k < p.energy_J.size(); ++k) {
+        const auto& pk = p.peak_torque_Nm;
+        if (k >= pk.size() || !std::isfinite(pk[k][joint - 1])) continue;
+        se.x.push_back(pk[k][joint - 1]);
+        se.y.push_back(p.energy_J[k]);
       }
       if (!se.x.empty()) plot.series.push_back(std::move(se));
       // inadmissible candidates (inside the margin): grey, dotted, never part of the front
-      if (jsonv::has(p, "excluded")) {
-        const json& ex = p["excluded"];
+      {
+        const auto& ex = p.excluded;
         Series xs;
         xs.label = excluded_labelled ? "" : "inside the margin (inadmissible, not a front)";
         excluded_labelled = true;
         xs.colour = {150, 150, 150};
         xs.style = LineStyle::kDotted;
         xs.width = 1.0;
-        const json& pk = arr(ex, "peak_torque_Nm");
-        for (size_t k = 0; k < arr(ex, "energy_J").size() && k < pk.size(); ++k) {
-          if (!pk[k].is_array() || pk[k].size() < 2 || !pk[k][joint - 1].is_number()) continue;
-          xs.x.push_back(pk[k][joint - 1].get<double>());
-          xs.y.push_back(at(ex, "energy_J", k));
+        const auto& pk = ex.peak_torque_Nm;
+        for (size_t k = 0; k < ex.energy_J.size() && k < pk.size(); ++k) {
+          if (!std::isfinite(pk[k][joint - 1])) continue;
+          xs.x.push_back(pk[k][joint - 1]);
+          xs.y.push_back(ex.energy_J[k]);
         }
         if (!xs.x.empty()) excluded_series.push_back(std::move(xs));
       }
@@ -638,17 +618,17 @@ Section loci_section(const json& pl, FigureWriter& figures) {
   return s;
 }
 
-Section convergence_and_evaluations(const json& pl) {
+Section convergence_and_evaluations(const PS& pl) {
   Section s;
   s.id = "convergence";
   s.heading = "Convergence and evaluated placements";
-  if (jsonv::has(pl, "convergence")) {
-    const json& c = pl["convergence"];
+  if (pl.convergence) {
+    const auto& c = *pl.convergence;
     Table t;
     t.caption = "Energy of the optimum (" + id_label(c) +
                 ") as the samples per trajectory grow: the sampled integral converges.";
     t.header = {"samples", "energy (J)"};
-    for (const json& r : arr(c, "rows")) t.rows.push_back({jsonv::str(r, "samples"), jsonv::sig(r, "energy_J", 10)});
+    for (const auto& r : c.rows) t.rows.push_back({as_text(r.samples), format_sig(r.energy_J, 10)});
     if (!t.rows.empty()) s.table(std::move(t));
   }
   {
@@ -657,16 +637,15 @@ Section convergence_and_evaluations(const json& pl) {
                 "energy changes by less than 1e-4 and the sampled peak torque by less than 1e-3 "
                 "relative; the first row of each optimum is its printed value.";
     t.header = {"optimum", "samples", "energy (J)", "sampled peak torque (N m)", "verdict"};
-    for (const json& o : arr(pl, "optima")) {
-      if (!jsonv::has(o, "energy_convergence")) continue;
-      const json& c = o["energy_convergence"];
-      const std::string verdict = c.value("singular", false)
-                                      ? std::string(kSingularText)
-                                      : "converged, change " + jsonv::sig(c, "rel_change", 2);
+    for (const auto& o : pl.optima) {
+      if (!o.energy_convergence) continue;
+      const auto& c = *o.energy_convergence;
+      const std::string verdict = c.singular ? std::string(kSingularText)
+                                             : "converged, change " + format_sig(c.rel_change, 2);
       bool first = true;
-      for (const json& r : arr(c, "rows")) {
-        t.rows.push_back({first ? id_label(o) : "", jsonv::str(r, "samples"), jsonv::sig(r, "energy_J", 10),
-                          jsonv::sig(r, "peak_torque_Nm", 6), first ? verdict : ""});
+      for (const auto& r : c.rows) {
+        t.rows.push_back({first ? id_label(o) : "", as_text(r.samples), format_sig(r.energy_J, 10),
+                          format_sig(r.peak_torque_Nm, 6), first ? verdict : ""});
         t.swatches.push_back(first ? css_colour(colour_for(id_key(o))) : "");
         first = false;
       }
@@ -679,11 +658,11 @@ Section convergence_and_evaluations(const json& pl) {
                "thesis's method would have reported it as the optimum.";
   th.header = {"program, configuration", "energy (J)", "x_S (m)", "φ (deg)", "root (X, Y) (m)",
                "status", "boundary distance (m)", "min |sin q2|"};
-  for (const json& o : arr(pl, "thesis_search")) {
-    th.rows.push_back({id_label(o), energy_text(o, 6), jsonv::sig(o, "x_s_m", 5),
-                       jsonv::sig(o, "phi_deg", 5), pair_str(o, "root_xy_m", 4),
-                       status_text(o), jsonv::sig(o, "boundary_distance_m", 3),
-                       jsonv::sig(o, "min_abs_sin_elbow", 3)});
+  for (const auto& o : pl.thesis_search) {
+    th.rows.push_back({id_label(o), energy_text(o, 6), format_sig(o.x_s_m, 5),
+                       format_sig(o.phi_deg, 5), pair_str(o.root_xy_m, 4),
+                       status_text(o.status), format_sig(o.boundary_distance_m, 3),
+                       format_sig(o.min_abs_sin_elbow, 3)});
     th.swatches.push_back(css_colour(colour_for(id_key(o))));
   }
   if (!th.rows.empty()) s.table(std::move(th));
@@ -691,12 +670,12 @@ Section convergence_and_evaluations(const json& pl) {
   ev.caption = "Placements the case asked to evaluate, and what the optimum would save.";
   ev.header = {"placement", "program, configuration", "x_S (m)", "φ (deg)", "energy (J)",
                "status", "saving (J)", "saving (%)"};
-  for (const json& e : arr(pl, "evaluations"))
-    ev.rows.push_back({jsonv::str(e, "label"), id_label(e), jsonv::sig(e, "x_s_m", 5),
-                       jsonv::sig(e, "phi_deg", 5), energy_text(e, 6),
-                       status_text(e),
-                       singular_motion(e) ? std::string("none (singular)") : jsonv::sig(e, "saving_J", 4),
-                       singular_motion(e) ? std::string("none (singular)") : jsonv::sig(e, "saving_percent", 3)});
+  for (const auto& e : pl.evaluations)
+    ev.rows.push_back({e.label, id_label(e), format_sig(e.x_s_m, 5),
+                       format_sig(e.phi_deg, 5), energy_text(e, 6),
+                       status_text(e.status),
+                       singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_J, 4),
+                       singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_percent, 3)});
   if (!ev.rows.empty()) s.table(std::move(ev));
   if (s.blocks.empty()) s.paragraph("No convergence table or evaluations in the result.");
   return s;
@@ -705,7 +684,7 @@ Section convergence_and_evaluations(const json& pl) {
 }  // namespace
 
 void placement_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const json& pl = results.contains("placement") ? results["placement"] : json::object();
+  const auto pl = read_section<PS>(results, "placement");
 
   Section method;
   method.id = "method";
@@ -745,8 +724,9 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   page.sections.push_back(loci_section(pl, figures));
   page.sections.push_back(convergence_and_evaluations(pl));
   // MuJoCo's open-loop replay of every optimum (report/replay_section.hpp)
-  mujoco_replay_section(jsonv::has(pl, "mujoco_replay") ? pl["mujoco_replay"] : json(),
-                        jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
+  std::vector<ReplayOf> replays;
+  for (const auto& r : pl.mujoco_replay) replays.push_back({r.program, r.configuration, &r});
+  mujoco_replay_section(replays, jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
 }
 
 bool placement_loci_across_cases(const std::vector<std::pair<std::string, const json*>>& cases,
@@ -762,11 +742,16 @@ bool placement_loci_across_cases(const std::vector<std::pair<std::string, const 
   int placement_cases = 0;
   for (const auto& [name, results] : cases) {
     if (!results->contains("placement") || results->value("study", "") != "placement") continue;
-    const json& pl = (*results)["placement"];
-    const double length = jsonv::num(pl, "length_m");
+    PS pl;
+    try {
+      pl = read_section<PS>(*results, "placement");
+    } catch (const ResultsError&) {
+      continue;  // written by another armstudy: left out of the plot
+    }
+    const double length = pl.length_m;
     bool any = false;
-    for (const json& o : arr(pl, "optima")) {
-      const double x = at(o, "root_xy_m", 0), y = at(o, "root_xy_m", 1);
+    for (const auto& o : pl.optima) {
+      const double x = o.root_xy_m[0], y = o.root_xy_m[1];
       if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(length)) continue;
       loci[id_key(o)].push_back({length, x, y, name});
       labels[id_key(o)] = id_label(o);

@@ -3,16 +3,27 @@
 /// simulates itself and what it does not, the replay's numbers and check, the deviation from
 /// the plan over time, and the frames with the simulated motion drawn over the planned one.
 
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "report/page.hpp"
+#include "studies/replay_section.hpp"
 
 namespace armstudy::report {
 
-/// `replay` is a study's "mujoco_replay" (one object, or an array of objects with program
-/// and configuration); `frames` is results.json "frames" (the files whose name holds
-/// "planned-and-simulated" are shown). Adds nothing when `replay` is missing or empty.
-void mujoco_replay_section(const nlohmann::json& replay, const nlohmann::json& frames,
+/// One replayed motion: a placement optimum (program and configuration) or the single plan
+/// of a study (program empty).
+struct ReplayOf {
+  std::string program;
+  int configuration = 0;
+  const studies::ReplaySection* replay = nullptr;
+};
+
+/// `replays` are a study's "mujoco_replay"; `frames` is results.json "frames" (the files
+/// whose name holds "planned-and-simulated" are shown). Adds nothing when `replays` is empty.
+void mujoco_replay_section(const std::vector<ReplayOf>& replays, const nlohmann::json& frames,
                            FigureWriter& figures, CasePage& page);
 
 }  // namespace armstudy::report

@@ -5,60 +5,32 @@
 
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
+#include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
+#include "studies/time_optimal/results_section.hpp"
 
 namespace armstudy::report {
 namespace {
 
 using nlohmann::json;
+using Section_ = studies::time_optimal::ResultsSection;
 
-const json& arr(const json& j, const char* key) {
-  static const json empty = json::array();
-  return jsonv::has(j, key) && j[key].is_array() ? j[key] : empty;
+// row j of per-joint rows, empty when there is none
+std::vector<double> row(const Section_::Rows& rows, size_t j) {
+  return j < rows.size() ? rows[j] : std::vector<double>{};
 }
-const json& obj(const json& j, const char* key) {
-  static const json empty = json::object();
-  return jsonv::has(j, key) && j[key].is_object() ? j[key] : empty;
-}
-// the first of `keys` that j holds as an array of numbers
-std::vector<double> first_vec(const json& j, std::initializer_list<const char*> keys) {
-  for (const char* k : keys)
-    if (jsonv::has(j, k) && j[k].is_array()) return jsonv::vec(j, k);
-  return {};
-}
-double first_num(const json& j, std::initializer_list<const char*> keys) {
-  for (const char* k : keys)
-    if (jsonv::has(j, k) && j[k].is_number()) return j[k].get<double>();
-  return NAN;
-}
-std::string solver_name(const json& s) {
-  for (const char* k : {"name", "solver"})
-    if (jsonv::has(s, k) && s[k].is_string()) return s[k].get<std::string>();
-  return "solver";
-}
+double at(const std::vector<double>& v, size_t j) { return j < v.size() ? v[j] : NAN; }
 // colour key of a solver: "dp_joint1" shares DP's family but not its colour
 std::string solver_key(const std::string& name) {
   if (name == "exact" || name == "reachability") return "reachability";
   return name;
 }
-// the dense samples of a solver (an object with t_s), else the solver itself
-const json& samples_of(const json& s) {
-  for (const char* k : {"samples", "series", "motion"})
-    if (jsonv::has(s, k) && s[k].is_object()) return s[k];
-  return s;
-}
-// limit of joint j (0-based) under any of `keys` (an array per joint)
-double limit_of(const json& limits, std::initializer_list<const char*> keys, size_t j) {
-  const auto v = first_vec(limits, keys);
-  return j < v.size() ? v[j] : NAN;
-}
-
 }  // namespace
 
 void time_optimal_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const json& to = results.contains("time_optimal") ? results["time_optimal"] : json::object();
-  const json& solvers = arr(to, "solvers");
-  const json& limits = obj(to, "limits");
+  const auto to = read_section<Section_>(results, "time_optimal");
+  const auto& solvers = to.solvers;
+  const auto& limits = to.limits;
 
   Section method;
   method.id = "method";
@@ -80,7 +52,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       "numbers to compare with. "
       "The comparison that matters is between the solvers: the exact solver is never slower "
       "than DP or Complex on the same problem.");
-  if (!limits.empty()) method.table(json_table(limits, "Limits used (per joint)."));
+  method.table(json_table(to_json(limits), "Limits used (per joint)."));
   page.sections.push_back(std::move(method));
 
   Section res;
@@ -91,47 +63,42 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
               "of any limit found by resampling the solution finely (≤ 1 meets every limit).";
   t.header = {"solver", "solved", "duration (s)", "run time (s)", "intervals", "levels",
               "largest limit use", "where"};
-  for (const json& s : solvers) {
-    const json& v = obj(s, "violation");
-    const double worst = first_num(v, {"worst", "worst_excess"});
-    t.rows.push_back({solver_name(s), jsonv::str(s, "solved"),
-                      format_sig(first_num(s, {"duration_s"}), 7),
-                      format_sig(first_num(s, {"run_time_s"}), 3), jsonv::str(s, "intervals"),
-                      jsonv::str(s, "levels"),
-                      std::isfinite(worst) ? format_sig(1 + worst, 6) : jsonv::str(v, "ratio"),
-                      jsonv::has(v, "text") ? jsonv::str(v, "text") : jsonv::str(s, "message")});
-    t.swatches.push_back(css_colour(colour_for(solver_key(solver_name(s)))));
+  for (const auto& s : solvers) {
+    const double worst = s.violation ? s.violation->worst : NAN;
+    t.rows.push_back({s.name, as_text(s.solved), format_sig(s.duration_s, 7),
+                      format_sig(s.run_time_s, 3), as_text(s.intervals), as_text(s.levels),
+                      std::isfinite(worst)  ? format_sig(1 + worst, 6)
+                      : s.violation ? to_json(s.violation->ratio).dump()
+                                    : std::string(),
+                      s.violation ? s.violation->text : s.message});
+    t.swatches.push_back(css_colour(colour_for(solver_key(s.name))));
   }
   if (!t.rows.empty()) res.table(std::move(t));
-  for (const json& s : solvers)
-    if (jsonv::has(s, "method") && s["method"].is_string())
-      res.paragraph(solver_name(s) + ": " + s["method"].get<std::string>());
+  for (const auto& s : solvers) res.paragraph(s.name + ": " + s.method);
 
   // phase plane: s' over s, the maximum velocity curve and each solver's profile
   LinePlot phase;
   phase.title = "phase plane: path speed over path position";
   phase.x_label = "path position s (m)";
   phase.y_label = "path speed s' (m/s)";
-  const json& mvc = obj(to, "mvc");
-  const auto mvc_s = first_vec(mvc.empty() ? to : mvc, {"s_m", "mvc_s_m"});
-  const auto mvc_sd = first_vec(mvc.empty() ? to : mvc, {"sd_m_s", "mvc_sd_m_s"});
-  const auto mvc_v = first_vec(mvc.empty() ? to : mvc, {"velocity_sd_m_s", "mvc_velocity_sd_m_s"});
+  const auto& mvc_s = to.mvc.s_m;
+  const auto& mvc_sd = to.mvc.sd_m_s;
+  const auto& mvc_v = to.mvc.velocity_sd_m_s;
   if (mvc_s.size() == mvc_sd.size() && !mvc_s.empty())
     phase.series.push_back({"maximum velocity curve", mvc_s, mvc_sd, colour_for("mvc")});
   if (mvc_s.size() == mvc_v.size() && !mvc_s.empty())
     phase.series.push_back({"velocity limits alone", mvc_s, mvc_v, colour_for("limit"), LineStyle::kDotted});
-  for (const json& s : solvers) {
-    const json& sm = samples_of(s);
-    auto x = first_vec(sm, {"s_m"});
-    auto y = first_vec(sm, {"sd_m_s"});
+  for (const auto& s : solvers) {
+    auto x = s.samples ? s.samples->s_m : std::vector<double>{};
+    auto y = s.samples ? s.samples->sd_m_s : std::vector<double>{};
     bool nodes = false;
     if (x.empty() || x.size() != y.size()) {
-      x = first_vec(s, {"node_s_m"});
-      y = first_vec(s, {"node_sd_m_s"});
+      x = s.node_s_m.value_or(std::vector<double>{});
+      y = s.node_sd_m_s.value_or(std::vector<double>{});
       nodes = true;
     }
     if (x.empty() || x.size() != y.size()) continue;
-    Series se{solver_name(s), x, y, colour_for(solver_key(solver_name(s)))};
+    Series se{s.name, x, y, colour_for(solver_key(s.name))};
     se.markers = nodes && x.size() <= 60;
     phase.series.push_back(std::move(se));
   }
@@ -148,12 +115,12 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   st.title = "path position over time";
   st.x_label = "time t (s)";
   st.y_label = "path position s (m)";
-  for (const json& s : solvers) {
-    const json& sm = samples_of(s);
-    const auto t = first_vec(sm, {"t_s"});
-    const auto x = first_vec(sm, {"s_m"});
+  for (const auto& s : solvers) {
+    if (!s.samples) continue;
+    const auto& t = s.samples->t_s;
+    const auto& x = s.samples->s_m;
     if (t.size() >= 2 && t.size() == x.size())
-      st.series.push_back({solver_name(s), t, x, colour_for(solver_key(solver_name(s)))});
+      st.series.push_back({s.name, t, x, colour_for(solver_key(s.name))});
   }
   if (!st.series.empty())
     res.figure(figures.line("path_position", st,
@@ -165,13 +132,14 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   lim.id = "limits";
   lim.heading = "Joint torques and velocities against their limits";
   struct Kind {
-    const char* key;
-    std::initializer_list<const char*> limit_keys;
+    const char* key;  ///< the figure's name
+    Section_::Rows Section_::Samples::*rows;
+    const std::vector<double>* limit;
     const char* what;
     const char* unit;
   };
-  const Kind kinds[] = {{"tau_Nm", {"torque_Nm", "tau_Nm", "torque_limit_Nm"}, "torque", "N m"},
-                        {"qd_rad_s", {"velocity_rad_s", "qd_rad_s", "velocity_limit_rad_s"},
+  const Kind kinds[] = {{"tau_Nm", &Section_::Samples::tau_Nm, &limits.torque_Nm, "torque", "N m"},
+                        {"qd_rad_s", &Section_::Samples::qd_rad_s, &limits.velocity_rad_s,
                          "velocity", "rad/s"}};
   for (const Kind& k : kinds)
     for (size_t j = 0; j < 2; ++j) {
@@ -179,15 +147,13 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       p.title = "joint " + std::to_string(j + 1) + " " + k.what;
       p.x_label = "time (s)";
       p.y_label = std::string(k.what) + " (" + k.unit + ")";
-      for (const json& s : solvers) {
-        const json& sm = samples_of(s);
-        const auto ts = first_vec(sm, {"t_s"});
-        if (ts.size() < 2) continue;
-        p.series.push_back({solver_name(s), ts, jsonv::column(sm, k.key, j, ts.size()),
-                            colour_for(solver_key(solver_name(s)))});
+      for (const auto& s : solvers) {
+        if (!s.samples || s.samples->t_s.size() < 2) continue;
+        const auto& ts = s.samples->t_s;
+        p.series.push_back({s.name, ts, row((*s.samples).*k.rows, j), colour_for(solver_key(s.name))});
         if (p.series.back().y.empty()) p.series.pop_back();
       }
-      const double l = limit_of(limits, k.limit_keys, j);
+      const double l = at(*k.limit, j);
       if (std::isfinite(l)) p.references = {{l, "±" + format_sig(l, 3) + " " + k.unit + " limit"}, {-l, ""}};
       if (!p.series.empty())
         lim.figure(figures.line(std::string(k.key) + "_joint" + std::to_string(j + 1), p,
@@ -205,23 +171,23 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                "approaches the exact solver's from above.";
   ct.header = {"N", "levels", "solved", "duration (s)", "excess over exact", "run time (s)",
                "largest limit use"};
-  for (const json& r : arr(to, "convergence")) {
-    const double worst = first_num(r, {"worst_violation"});
-    ct.rows.push_back({jsonv::str(r, "segments"), jsonv::str(r, "levels"), jsonv::str(r, "solved"),
-                       format_sig(first_num(r, {"duration_s"}), 7),
-                       format_sig(first_num(r, {"excess", "excess_relative"}), 3),
-                       format_sig(first_num(r, {"run_time_s"}), 3),
+  for (const auto& r : to.convergence) {
+    const double worst = r.worst_violation;
+    ct.rows.push_back({as_text(r.segments), as_text(r.levels), as_text(r.solved),
+                       format_sig(r.duration_s, 7), format_sig(r.excess, 3),
+                       format_sig(r.run_time_s, 3),
                        std::isfinite(worst) ? format_sig(1 + worst, 6)
-                       : jsonv::str(r, "message").empty() ? "n/a" : jsonv::str(r, "message")});
+                       : r.message.empty()  ? "n/a"
+                                            : r.message});
   }
   if (ct.rows.empty())
     conv.paragraph("The case asked for no convergence table.");
   else
     conv.table(std::move(ct));
   // the exact solver's own grid convergence
-  const json& g = obj(to, "grid_convergence");
-  if (!g.empty()) {
-    const bool passed = jsonv::has(g, "passed") && g["passed"].is_boolean() && g["passed"].get<bool>();
+  if (to.grid_convergence) {
+    const auto& g = *to.grid_convergence;
+    const bool passed = g.passed;
     Table gt;
     gt.caption = "The exact solver's own grid convergence: the same problem with every grid "
                  "interval halved. Its error is first order in the interval, so the change "
@@ -229,21 +195,22 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                  "(exact.grid_tolerance) the case fails its check exact_grid_converged.";
     gt.header = {"grid points", "duration (s)", "refined grid points", "refined duration (s)",
                  "relative change", "tolerance", "check"};
-    gt.rows.push_back({jsonv::str(g, "grid_points"), jsonv::sig(g, "duration_s", 7),
-                       jsonv::str(g, "refined_points"), jsonv::sig(g, "refined_duration_s", 7),
-                       jsonv::sig(g, "change", 3), jsonv::sig(g, "tolerance", 3),
+    gt.rows.push_back({as_text(g.grid_points), format_sig(g.duration_s, 7),
+                       as_text(g.refined_points), format_sig(g.refined_duration_s, 7),
+                       format_sig(g.change, 3), format_sig(g.tolerance, 3),
                        passed ? "passed" : "FAILED"});
     conv.table(std::move(gt));
     if (passed)
-      conv.paragraph("Exact solver grid: " + jsonv::str(g, "text") + ".");
+      conv.paragraph("Exact solver grid: " + g.text + ".");
     else
       conv.note("The exact duration is NOT converged in its grid, so it is no ordinary "
                 "optimum and every comparison with it inherits the error: " +
-                jsonv::str(g, "text") + ".");
+                g.text + ".");
   }
   page.sections.push_back(std::move(conv));
-  mujoco_replay_section(jsonv::has(to, "mujoco_replay") ? to["mujoco_replay"] : json(),
-                        jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
+  std::vector<ReplayOf> replays;
+  if (to.mujoco_replay) replays.push_back({"", 0, &*to.mujoco_replay});
+  mujoco_replay_section(replays, jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
 }
 
 }  // namespace armstudy::report

@@ -13,7 +13,11 @@
 #include <set>
 #include <sstream>
 
+#include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
+#include "studies/pendulum/results_section.hpp"
+#include "studies/placement/results_section.hpp"
+#include "studies/time_optimal/results_section.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -37,70 +41,78 @@ cases::CaseInfo hostile_info(const std::string& study) {
   return info;
 }
 
-// t_s and f(t) sampled on [0, 1]
-json samples(int n, const std::function<json(double)>& f) {
-  json t = json::array(), v = json::array();
-  for (int i = 0; i <= n; ++i) {
-    t.push_back(i / double(n));
-    v.push_back(f(i / double(n)));
-  }
-  return json::array({t, v});
-}
-
-// the study's section in the shape its pipeline documents (src/cli/<study>_pipeline.cpp)
+// the study's section as its pipeline writes it: the typed section
+// (src/studies/<study>/results_section.hpp), partly filled
 json study_section(const std::string& study) {
-  auto ts = samples(40, [](double t) { return t; })[0];
-  auto s1 = [&](double a) { return samples(40, [a](double t) { return std::sin(a * t); })[1]; };
+  std::vector<double> ts;
+  for (int i = 0; i <= 40; ++i) ts.push_back(i / 40.0);
+  auto s1 = [&](double a) {
+    std::vector<double> v;
+    for (double t : ts) v.push_back(std::sin(a * t));
+    return v;
+  };
   auto s2 = [&](double a) {
-    return samples(40, [a](double t) { return json::array({std::sin(a * t), std::cos(a * t)}); })[1];
+    std::vector<std::array<double, 2>> v;
+    for (double t : ts) v.push_back({std::sin(a * t), std::cos(a * t)});
+    return v;
+  };
+  auto rows2 = [&](double a) {  // one row per joint
+    return std::vector<std::vector<double>>{s1(a), s1(a + 1)};
   };
   auto s4 = [&](double a) {
-    return samples(40, [a](double t) {
-      return json::array({0.0, 0.0, std::sin(a * t), 0.3 * std::cos(a * t)});
-    })[1];
+    std::vector<std::vector<double>> v;
+    for (double t : ts) v.push_back({0.0, 0.0, std::sin(a * t), 0.3 * std::cos(a * t)});
+    return v;
   };
-  json s;
   if (study == "placement") {
-    s["length_m"] = 0.5;
-    s["annulus_m"] = {0.2, 0.6};
+    studies::placement::ResultsSection s;
+    s.length_m = 0.5;
+    s.annulus_m = {0.2, 0.6};
     for (int conf = 1; conf <= 2; ++conf) {
-      json id = {{"program", "cycloidal"}, {"configuration", conf}};
-      json o = id;
-      o["energy_J"] = 10.0 + conf;
-      o["root_xy_m"] = {0.25, 0.3};
-      o["series"] = {{"t_s", ts}, {"q1_rad", s1(conf)}, {"q2_rad", s1(2)}, {"qd1_rad_s", s1(3)},
-                     {"qd2_rad_s", s1(4)}, {"qdd1_rad_s2", s1(5)}, {"qdd2_rad_s2", s1(6)},
-                     {"tau1_Nm", s1(7)}, {"tau2_Nm", s1(8)}, {"power1_W", s1(9)},
-                     {"power2_W", s1(10)}, {"energy_J", s1(1)}};
-      s["optima"].push_back(o);
-      json c = id;
-      c["x_s_m"] = 0.5;
-      c["phi_deg"] = {100, 110, 120, 130};
-      c["energy_J"] = {12.0, 11.0, nullptr, 13.0};
-      c["status"] = "os.o";
-      s["curves"].push_back(c);
-      json m = id;
-      m["x_m"] = {0.0, 0.1, 0.2, 0.3, 0.4};
-      m["y_m"] = {0.0, 0.1, 0.2};
-      m["energy_J_rows"] = {"- - - - -", "3 2.5 2 2.5 3", "4 3 2.2 3 4"};
-      m["status_rows"] = {".....", "soooo", "ooxoo"};
-      m["optimum_xy_m"] = {0.2, 0.1};
-      s["maps"].push_back(m);
-      json p = id;
-      p["joint"] = 1;
-      p["peak_torque_Nm"] = {{5, 1}, {7, 1.5}, {9, 2}};
-      p["energy_J"] = {14, 12, 11};
-      p["x_s_m"] = {0.3, 0.35, 0.4};
-      p["phi_deg"] = {100, 110, 120};
-      s["pareto"].push_back(p);
+      const studies::placement::ResultsSection::Id id{"cycloidal", conf};
+      studies::placement::ResultsSection::Optimum o;
+      static_cast<studies::placement::ResultsSection::Id&>(o) = id;
+      o.energy_J = 10.0 + conf;
+      o.root_xy_m = {0.25, 0.3};
+      o.series = {1, ts, s1(conf), s1(2), s1(3), s1(4), s1(5), s1(6), s1(7), s1(8), s1(9), s1(10), s1(1)};
+      s.optima.push_back(o);
+      studies::placement::ResultsSection::Curve c;
+      static_cast<studies::placement::ResultsSection::Id&>(c) = id;
+      c.x_s_m = 0.5;
+      c.phi_deg = {100, 110, 120, 130};
+      c.energy_J = {12.0, 11.0, NAN, 13.0};
+      c.status = "os.o";
+      s.curves.push_back(c);
+      studies::placement::ResultsSection::Map m;
+      static_cast<studies::placement::ResultsSection::Id&>(m) = id;
+      m.x_m = {0.0, 0.1, 0.2, 0.3, 0.4};
+      m.y_m = {0.0, 0.1, 0.2};
+      m.energy_J_rows = {"- - - - -", "3 2.5 2 2.5 3", "4 3 2.2 3 4"};
+      m.status_rows = {".....", "soooo", "ooxoo"};
+      m.optimum_xy_m = std::array<double, 2>{0.2, 0.1};
+      s.maps.push_back(m);
+      studies::placement::ResultsSection::Pareto pr;
+      static_cast<studies::placement::ResultsSection::Id&>(pr) = id;
+      pr.joint = 1;
+      pr.peak_torque_Nm = {{5, 1}, {7, 1.5}, {9, 2}};
+      pr.energy_J = {14, 12, 11};
+      pr.x_s_m = {0.3, 0.35, 0.4};
+      pr.phi_deg = {100, 110, 120};
+      pr.singular = {false, false, false};
+      s.pareto.push_back(pr);
     }
-  } else if (study == "pendulum") {
-    s["series"] = {{"t_s", ts}, {"q_rad", s4(3)}, {"qd_rad_s", s4(4)}, {"kinetic_J", s1(2)},
-                   {"potential_J", s1(3)}, {"total_J", s1(0)}, {"ball_xy_m", s2(1)},
-                   {"circle_centre_xy_m", s2(2)}};
-    s["snapshots"] = json::array({{{"t_s", 0.0}, {"q_rad", {0, 0, -1.5, -0.6}}, {"ball_xy_m", {0.1, -0.1}}}});
-    s["energy"] = {{"initial_J", -0.2}, {"drift_J", 1e-13}};
-  } else if (study == "throwing") {
+    return to_json(s);
+  }
+  if (study == "pendulum") {
+    studies::PendulumResultsSection s;
+    s.series = {ts, s4(3), s4(4), s1(2), s1(3), s1(0), s2(1), s2(2)};
+    s.snapshots.push_back({0.0, 0, {0, 0, -1.5, -0.6}, {0.1, -0.1}});
+    s.energy.initial_J = -0.2;
+    s.energy.drift_J = 1e-13;
+    return to_json(s);
+  }
+  if (study == "throwing") {
+    json s;
     for (const char* k : {"initial", "optimum"})
       s[k] = {{"energy_J", 20.0},
               {"series", {{"t_s", ts}, {"q_rad", s4(5)}, {"voltage_V", s2(6)}, {"current_A", s2(7)},
@@ -108,16 +120,27 @@ json study_section(const std::string& study) {
     s["limits"] = {{"voltage_max_V", 24}, {"current_max_A", 5}, {"theta4_limit_rad", {-1, 1}}};
     s["idp"]["convergence"] = json::array({{{"iteration", 1}, {"criterion_J", 22}, {"energy_J", 21}},
                                            {{"iteration", 2}, {"criterion_J", 20}, {"energy_J", 20}}});
-  } else {
-    for (const char* name : {"exact", "dp", "complex"})
-      s["solvers"].push_back({{"name", name},
-                              {"duration_s", 1.5},
-                              {"samples", {{"t_s", ts}, {"s_m", ts}, {"sd_m_s", s1(1)},
-                                           {"tau_Nm", s2(1)}, {"qd_rad_s", s2(2)}}}});
-    s["mvc"] = {{"s_m", ts}, {"sd_m_s", s1(0.5)}};
-    s["limits"] = {{"torque_Nm", {10, 4}}, {"velocity_rad_s", {3, 4}}};
+    return s;
   }
-  return s;
+  studies::time_optimal::ResultsSection s;
+  for (const char* name : {"exact", "dp", "complex"}) {
+    studies::time_optimal::ResultsSection::Solver v;
+    v.name = name;
+    v.solved = true;
+    v.duration_s = 1.5;
+    v.samples = studies::time_optimal::ResultsSection::Samples{};
+    v.samples->t_s = ts;
+    v.samples->s_m = ts;
+    v.samples->sd_m_s = s1(1);
+    v.samples->tau_Nm = rows2(1);
+    v.samples->qd_rad_s = rows2(2);
+    s.solvers.push_back(v);
+  }
+  s.mvc.s_m = ts;
+  s.mvc.sd_m_s = s1(0.5);
+  s.limits.torque_Nm = {10, 4};
+  s.limits.velocity_rad_s = {3, 4};
+  return to_json(s);
 }
 
 // a results.json as run_case writes it

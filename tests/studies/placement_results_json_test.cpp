@@ -41,10 +41,10 @@ TEST(PlacementResultsJson, HoldsOptimaEvaluationsCountsAndLmaxAsSpecified) {
   EXPECT_NEAR(j["lmax_m"].get<double>(), 4 * std::sqrt(0.08), 1e-6);
   for (const char* k : {"total", "singular", "clear", "unreachable", "thesis_admitted",
                         "thesis_rejected_by_exact_check", "exact_accepted_outside_thesis"})
-    EXPECT_TRUE(j["counts"].contains(k)) << k;
-  EXPECT_EQ(j["counts"]["total"].get<int>(),
-            j["counts"]["unreachable"].get<int>() + j["counts"]["singular"].get<int>() +
-                j["counts"]["clear"].get<int>());
+    EXPECT_TRUE(j["geometry_counts"].contains(k)) << k;
+  EXPECT_EQ(j["geometry_counts"]["total"].get<int>(),
+            j["geometry_counts"]["unreachable"].get<int>() + j["geometry_counts"]["singular"].get<int>() +
+                j["geometry_counts"]["clear"].get<int>());
   ASSERT_EQ(j["optima"].size(), 4u);
   for (const json& o : j["optima"]) {
     for (const char* k : {"program", "configuration", "energy_J", "x_s_m", "phi_deg", "root_xy_m",

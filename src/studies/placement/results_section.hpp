@@ -1,0 +1,432 @@
+#pragma once
+/// The placement study's section of results.json as a typed value: what the pipeline
+/// writes (app/placement_pipeline.cpp fills it from the Result) and what the report and
+/// `armstudy merge` read back. `fields` names every key once: report/results_fields.hpp
+/// turns it into the writer, the strict reader and the schema (results.schema.json). SI;
+/// keys ending in _deg are degrees; positions are in the arm's frame A unless a key says
+/// otherwise (root_xy_m: the root in the line frame P, see geometry.hpp).
+///
+/// A singular motion (touching a boundary, or its energy not converged by doubling the
+/// samples) has energy_J and peak_torque_Nm null, singular_trajectory true and the note
+/// kSingularNote; its saving is null.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "studies/replay_section.hpp"
+
+namespace armstudy::studies::placement {
+
+struct ResultsSection {
+  using Pair = std::array<double, 2>;
+  /// which motion program and elbow configuration an entry belongs to
+  struct Id {
+    std::string program;
+    int configuration = 1;
+  };
+  struct ConvergenceRow {
+    int samples = 0;
+    double energy_J = 0, peak_torque_Nm = 0;
+  };
+  /// the doubling of one motion's samples (converge.hpp)
+  struct EnergyConvergence {
+    bool converged = false, touches_boundary = false, singular = false;
+    int samples = 0;
+    double rel_change = 0, peak_torque_rel_change = 0, tolerance_rel = 0;
+    std::vector<ConvergenceRow> rows;
+  };
+  /// energy and peak torque of a motion, null (and a note) when it is singular
+  struct Metrics {
+    double energy_J = 0;
+    std::optional<Pair> peak_torque_Nm;
+    std::optional<int> energy_samples;
+    std::optional<bool> singular_trajectory;
+    std::optional<std::string> note;
+    std::optional<EnergyConvergence> energy_convergence;
+  };
+  /// the counts of one program and configuration's sweep (limits applied)
+  struct SweepCounts {
+    int total = 0, unreachable = 0, singular = 0, over_limit = 0, feasible = 0,
+        thesis_admitted = 0, thesis_rejected_by_exact_check = 0, exact_accepted_outside_thesis = 0;
+  };
+  /// the counts of the geometric sweep, the same for every program and configuration
+  struct GeometryCounts {
+    int total = 0, unreachable = 0, singular = 0, clear = 0, thesis_admitted = 0,
+        thesis_rejected_by_exact_check = 0, exact_accepted_outside_thesis = 0;
+  };
+  struct ThesisIntervals {
+    int x_s_case = 0;
+    double x_s_init_m = 0, x_s_fin_m = 0;
+  };
+  struct Series {
+    int stride = 1;
+    std::vector<double> t_s, q1_rad, q2_rad, qd1_rad_s, qd2_rad_s, qdd1_rad_s2, qdd2_rad_s2,
+        tau1_Nm, tau2_Nm, power1_W, power2_W, energy_J;
+  };
+  struct Decision {
+    std::string binding;
+    double inner_slack_m = 0, outer_slack_m = 0, margin_m = 0;
+    std::optional<int> joint;
+    Pair torque_slack_Nm{}, power_slack_W{};
+    bool set_by_margin = false;
+  };
+  struct Refinement {
+    std::optional<std::string> method;
+    double final_tolerance_rel = 0, target_rel = 0;
+    bool converged = false;
+    int evaluations = 0;
+  };
+  struct MarginOptimum : Metrics {
+    double x_s_m = 0, phi_deg = 0;
+    Pair root_xy_m{};
+    std::string binding;
+    bool refine_converged = false;
+    double refine_tolerance_rel = 0;
+  };
+  struct MarginPoint {
+    double margin_m = 0;
+    bool found = false;
+    std::optional<MarginOptimum> optimum;  ///< its keys sit beside found, when found
+  };
+  struct Optimum : Id, Metrics {
+    double x_s_m = 0, phi_deg = 0;
+    Pair root_xy_m{};
+    double grid_energy_J = 0, grid_x_s_m = 0, grid_phi_deg = 0, min_abs_sin_elbow = 0,
+           boundary_distance_m = 0;
+    Pair peak_power_W{};
+    double signed_work_J = 0;
+    bool singular = false;
+    int refine_evaluations = 0;
+    Decision decided_by;
+    Refinement refinement;
+    std::vector<MarginPoint> margin_sensitivity;
+    Pair line_start_m{}, line_end_m{};
+    SweepCounts counts;
+    Series series;
+  };
+  struct Unsolved : Id {
+    std::string reason;
+    SweepCounts counts;
+  };
+  struct ThesisBest : Id, Metrics {
+    double x_s_m = 0, phi_deg = 0;
+    Pair root_xy_m{};
+    std::string status;
+    bool singular = false;
+    double boundary_distance_m = 0, min_abs_sin_elbow = 0;
+  };
+  struct Evaluation : Id, Metrics {
+    std::string label;
+    double x_s_m = 0, phi_deg = 0;
+    Pair root_xy_m{};
+    std::string status;
+    bool singular = false;
+    double boundary_distance_m = 0, min_abs_sin_elbow = 0, saving_J = 0, saving_percent = 0;
+    Pair line_start_m{}, line_end_m{};
+    std::optional<Series> series;
+  };
+  struct Curve : Id {
+    double x_s_m = 0;
+    std::vector<double> phi_deg, energy_J;
+    std::string status;
+  };
+  struct Excluded {
+    std::string what;
+    std::vector<Pair> peak_torque_Nm;
+    std::vector<double> energy_J;
+  };
+  struct Pareto : Id {
+    int joint = 1;
+    std::vector<Pair> peak_torque_Nm;
+    std::vector<double> energy_J, x_s_m, phi_deg;
+    std::vector<bool> singular;
+    Excluded excluded;
+  };
+  struct Map : Id {
+    std::vector<double> x_m, y_m;
+    std::optional<Pair> optimum_xy_m;
+    std::string encoding;
+    std::vector<std::string> energy_J_rows, status_rows;
+  };
+  struct SampleRow {
+    int samples = 0;
+    double energy_J = 0;
+  };
+  struct Convergence : Id {
+    std::vector<SampleRow> rows;
+  };
+  struct Replay : Id, ReplaySection {};
+
+  double lmax_m = 0, length_m = 0, length_fraction = 0, duration_s = 0;
+  int samples = 0;
+  double singularity_margin_m = 0;
+  Pair annulus_m{};
+  std::optional<Pair> torque_limits_Nm, power_limits_W;
+  ThesisIntervals thesis_intervals;
+  std::optional<GeometryCounts> geometry_counts;
+  std::vector<Optimum> optima;
+  std::vector<Unsolved> unsolved;
+  std::vector<ThesisBest> thesis_search;
+  std::vector<Evaluation> evaluations;
+  std::vector<Curve> curves;
+  std::vector<Pareto> pareto;
+  std::vector<Map> maps;
+  std::optional<Convergence> convergence;
+  std::vector<Replay> mujoco_replay;
+  double solve_seconds = 0;
+  long long samples_evaluated = 0;
+};
+
+template <class V>
+void fields(V& v, ResultsSection::Id& x) {
+  v("program", x.program, "motion program (core/motion_program.hpp)");
+  v("configuration", x.configuration, "elbow configuration (1 or 2)");
+}
+template <class V>
+void fields(V& v, ResultsSection::ConvergenceRow& x) {
+  v("samples", x.samples, "samples of the motion");
+  v("energy_J", x.energy_J, "energy at these samples");
+  v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| over both joints at these samples");
+}
+template <class V>
+void fields(V& v, ResultsSection::EnergyConvergence& x) {
+  v("converged", x.converged, "the energy changed by < tolerance_rel on one doubling");
+  v("touches_boundary", x.touches_boundary, "the line is on a boundary of the annulus");
+  v("singular", x.singular, "touches_boundary or not converged: no energy is printed");
+  v("samples", x.samples, "samples of the reported metrics");
+  v("rel_change", x.rel_change, "relative energy change at the last doubling");
+  v("peak_torque_rel_change", x.peak_torque_rel_change, "relative peak torque change at the last doubling");
+  v("tolerance_rel", x.tolerance_rel, "the relative tolerance asked for");
+  v("rows", x.rows, "every doubling tried, coarsest first");
+}
+template <class V>
+void fields(V& v, ResultsSection::Metrics& x) {
+  v("energy_J", x.energy_J, "energy of the motion (null: singular or unreachable)");
+  v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| [j1, j2] (null: singular or unreachable)");
+  v.optional("energy_samples", x.energy_samples, "samples where the energy converged (when checked)");
+  v.optional("singular_trajectory", x.singular_trajectory, "the motion is singular");
+  v.optional("note", x.note, "present for a singular motion");
+  v.optional("energy_convergence", x.energy_convergence, "the doubling of the samples (when checked)");
+}
+template <class V>
+void fields(V& v, ResultsSection::SweepCounts& x) {
+  v("total", x.total, "candidates of the full sweep (x_s grid x phi in [0, 180] deg)");
+  v("unreachable", x.unreachable, "candidates partly outside the annulus");
+  v("singular", x.singular, "candidates closer to a boundary than the margin");
+  v("over_limit", x.over_limit, "clear candidates over a torque or power limit");
+  v("feasible", x.feasible, "admissible candidates");
+  v("thesis_admitted", x.thesis_admitted, "candidates the thesis's intervals (4.7-4.13) generate");
+  v("thesis_rejected_by_exact_check", x.thesis_rejected_by_exact_check,
+    "of those, rejected by the exact check (unreachable or singular)");
+  v("exact_accepted_outside_thesis", x.exact_accepted_outside_thesis,
+    "candidates the exact check accepts outside the thesis's phi interval");
+}
+template <class V>
+void fields(V& v, ResultsSection::GeometryCounts& x) {
+  v("total", x.total, "candidates of the full sweep (x_s grid x phi in [0, 180] deg)");
+  v("unreachable", x.unreachable, "candidates partly outside the annulus");
+  v("singular", x.singular, "candidates closer to a boundary than the margin");
+  v("clear", x.clear, "candidates clear of both boundaries (limits not applied)");
+  v("thesis_admitted", x.thesis_admitted, "candidates the thesis's intervals (4.7-4.13) generate");
+  v("thesis_rejected_by_exact_check", x.thesis_rejected_by_exact_check,
+    "of those, rejected by the exact check (unreachable or singular)");
+  v("exact_accepted_outside_thesis", x.exact_accepted_outside_thesis,
+    "candidates the exact check accepts outside the thesis's phi interval");
+}
+template <class V>
+void fields(V& v, ResultsSection::ThesisIntervals& x) {
+  v("x_s_case", x.x_s_case, "the thesis's case of the start-point interval");
+  v("x_s_init_m", x.x_s_init_m, "start of the thesis's start-point interval");
+  v("x_s_fin_m", x.x_s_fin_m, "end of the thesis's start-point interval");
+}
+template <class V>
+void fields(V& v, ResultsSection::Series& x) {
+  v("stride", x.stride, "every stride-th sample of the motion (<= 101 points, the last included)");
+  v("t_s", x.t_s, "time");
+  v("q1_rad", x.q1_rad, "joint 1 angle");
+  v("q2_rad", x.q2_rad, "joint 2 angle");
+  v("qd1_rad_s", x.qd1_rad_s, "joint 1 velocity");
+  v("qd2_rad_s", x.qd2_rad_s, "joint 2 velocity");
+  v("qdd1_rad_s2", x.qdd1_rad_s2, "joint 1 acceleration");
+  v("qdd2_rad_s2", x.qdd2_rad_s2, "joint 2 acceleration");
+  v("tau1_Nm", x.tau1_Nm, "joint 1 torque");
+  v("tau2_Nm", x.tau2_Nm, "joint 2 torque");
+  v("power1_W", x.power1_W, "joint 1 power (signed)");
+  v("power2_W", x.power2_W, "joint 2 power (signed)");
+  v("energy_J", x.energy_J, "cumulative |power1| + |power2|");
+}
+template <class V>
+void fields(V& v, ResultsSection::Decision& x) {
+  v("binding", x.binding, "interior, inner_clearance, outer_clearance, torque_limit or power_limit");
+  v("inner_slack_m", x.inner_slack_m, "clearance to the inner circle minus the margin");
+  v("outer_slack_m", x.outer_slack_m, "clearance to the outer circle minus the margin");
+  v("margin_m", x.margin_m, "the singularity margin");
+  v("joint", x.joint, "the joint of a binding limit (1-based; null otherwise)");
+  v("torque_slack_Nm", x.torque_slack_Nm, "limit minus peak |torque| [j1, j2] (null: no limit)");
+  v("power_slack_W", x.power_slack_W, "limit minus peak |power| [j1, j2] (null: no limit)");
+  v("set_by_margin", x.set_by_margin, "a clearance binds: the optimum is set by the margin");
+}
+template <class V>
+void fields(V& v, ResultsSection::Refinement& x) {
+  v("method", x.method, "the refinement's stages (null: not refined)");
+  v("final_tolerance_rel", x.final_tolerance_rel, "relative energy a final restart still gained (null: not refined)");
+  v("target_rel", x.target_rel, "the relative gain below which the refinement is converged");
+  v("converged", x.converged, "final_tolerance_rel <= target_rel");
+  v("evaluations", x.evaluations, "energy evaluations of the refinement");
+}
+template <class V>
+void fields(V& v, ResultsSection::MarginOptimum& x) {
+  fields(v, static_cast<ResultsSection::Metrics&>(x));
+  v("x_s_m", x.x_s_m, "the optimum's line start abscissa (when found)");
+  v("phi_deg", x.phi_deg, "the optimum's line direction (when found)");
+  v("root_xy_m", x.root_xy_m, "the optimum's root in the line frame (when found)");
+  v("binding", x.binding, "what decides the optimum (when found)");
+  v("refine_converged", x.refine_converged, "the refinement converged (when found)");
+  v("refine_tolerance_rel", x.refine_tolerance_rel, "relative gain of the last restart (when found)");
+}
+template <class V>
+void fields(V& v, ResultsSection::MarginPoint& x) {
+  v("margin_m", x.margin_m, "the clearance margin");
+  v("found", x.found, "an admissible optimum exists at this margin");
+  v.inline_if(x.found, x.optimum);
+}
+template <class V>
+void fields(V& v, ResultsSection::Optimum& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  fields(v, static_cast<ResultsSection::Metrics&>(x));
+  v("x_s_m", x.x_s_m, "line start abscissa");
+  v("phi_deg", x.phi_deg, "line direction");
+  v("root_xy_m", x.root_xy_m, "root (X, Y) in the line frame");
+  v("grid_energy_J", x.grid_energy_J, "energy of the sweep's best candidate");
+  v("grid_x_s_m", x.grid_x_s_m, "the sweep's best candidate: x_s");
+  v("grid_phi_deg", x.grid_phi_deg, "the sweep's best candidate: phi");
+  v("min_abs_sin_elbow", x.min_abs_sin_elbow, "smallest |sin q2| along the line");
+  v("boundary_distance_m", x.boundary_distance_m, "distance of the line to the annulus's boundary");
+  v("peak_power_W", x.peak_power_W, "peak |power| [j1, j2]");
+  v("signed_work_J", x.signed_work_J, "signed work of both joints (0 rest to rest)");
+  v("singular", x.singular, "not feasible or the motion is singular");
+  v("refine_evaluations", x.refine_evaluations, "energy evaluations of the refinement");
+  v("decided_by", x.decided_by, "what decides the optimum");
+  v("refinement", x.refinement, "the local refinement");
+  v("margin_sensitivity", x.margin_sensitivity, "the optimum re-solved at other margins (when a clearance binds)");
+  v("line_start_m", x.line_start_m, "line start in the arm's frame");
+  v("line_end_m", x.line_end_m, "line end in the arm's frame");
+  v("counts", x.counts, "the sweep's counts of this program and configuration");
+  v("series", x.series, "the optimum's motion");
+}
+template <class V>
+void fields(V& v, ResultsSection::Unsolved& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  v("reason", x.reason, "why no admissible placement exists");
+  v("counts", x.counts, "the sweep's counts of this program and configuration");
+}
+template <class V>
+void fields(V& v, ResultsSection::ThesisBest& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  fields(v, static_cast<ResultsSection::Metrics&>(x));
+  v("x_s_m", x.x_s_m, "line start abscissa");
+  v("phi_deg", x.phi_deg, "line direction");
+  v("root_xy_m", x.root_xy_m, "root (X, Y) in the line frame");
+  v("status", x.status, "unreachable, singular, over_limit or feasible");
+  v("singular", x.singular, "status is singular");
+  v("boundary_distance_m", x.boundary_distance_m, "distance of the line to the annulus's boundary");
+  v("min_abs_sin_elbow", x.min_abs_sin_elbow, "smallest |sin q2| along the line");
+}
+template <class V>
+void fields(V& v, ResultsSection::Evaluation& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  fields(v, static_cast<ResultsSection::Metrics&>(x));
+  v("label", x.label, "the case's name for the placement");
+  v("x_s_m", x.x_s_m, "line start abscissa");
+  v("phi_deg", x.phi_deg, "line direction");
+  v("root_xy_m", x.root_xy_m, "root (X, Y) in the line frame");
+  v("status", x.status, "unreachable, singular, over_limit or feasible");
+  v("singular", x.singular, "status is singular");
+  v("boundary_distance_m", x.boundary_distance_m, "distance of the line to the annulus's boundary");
+  v("min_abs_sin_elbow", x.min_abs_sin_elbow, "smallest |sin q2| along the line");
+  v("saving_J", x.saving_J, "energy minus the optimum's (null: not comparable)");
+  v("saving_percent", x.saving_percent, "saving_J as a share of this energy (null: not comparable)");
+  v("line_start_m", x.line_start_m, "line start in the arm's frame");
+  v("line_end_m", x.line_end_m, "line end in the arm's frame");
+  v.optional("series", x.series, "the motion (when reachable)");
+}
+template <class V>
+void fields(V& v, ResultsSection::Curve& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  v("x_s_m", x.x_s_m, "the start abscissa of the curve");
+  v("phi_deg", x.phi_deg, "line directions");
+  v("energy_J", x.energy_J, "energy per direction (null: unreachable)");
+  v("status", x.status, "one status character per direction: '.' unreachable, 's' singular, 'x' over a limit, 'o' feasible");
+}
+template <class V>
+void fields(V& v, ResultsSection::Excluded& x) {
+  v("what", x.what, "what the excluded points are");
+  v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| [j1, j2] per point");
+  v("energy_J", x.energy_J, "energy per point");
+}
+template <class V>
+void fields(V& v, ResultsSection::Pareto& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  v("joint", x.joint, "the joint whose peak torque the front trades (1 or 2)");
+  v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| [j1, j2] per point");
+  v("energy_J", x.energy_J, "energy per point");
+  v("x_s_m", x.x_s_m, "line start abscissa per point");
+  v("phi_deg", x.phi_deg, "line direction per point");
+  v("singular", x.singular, "per point (all false: the front holds admissible placements only)");
+  v("excluded", x.excluded, "the same front over the candidates inside the margin");
+}
+template <class V>
+void fields(V& v, ResultsSection::Map& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  v("x_m", x.x_m, "node abscissae X in the line frame");
+  v("y_m", x.y_m, "node ordinates Y in the line frame");
+  v("optimum_xy_m", x.optimum_xy_m, "the optimum's root (null: none)");
+  v("encoding", x.encoding, "how the rows are written");
+  v("energy_J_rows", x.energy_J_rows, "row j is y_m[j]: energies at 4 significant digits, '-' where unreachable");
+  v("status_rows", x.status_rows, "row j is y_m[j]: one status character per node");
+}
+template <class V>
+void fields(V& v, ResultsSection::SampleRow& x) {
+  v("samples", x.samples, "samples of the motion");
+  v("energy_J", x.energy_J, "energy at these samples");
+}
+template <class V>
+void fields(V& v, ResultsSection::Convergence& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  v("rows", x.rows, "the first optimum's energy as the samples double");
+}
+template <class V>
+void fields(V& v, ResultsSection::Replay& x) {
+  fields(v, static_cast<ResultsSection::Id&>(x));
+  fields(v, static_cast<ReplaySection&>(x));
+}
+template <class V>
+void fields(V& v, ResultsSection& x) {
+  v("lmax_m", x.lmax_m, "4 sqrt(L1 L2) (4.6)");
+  v("length_m", x.length_m, "line length L");
+  v("length_fraction", x.length_fraction, "L / Lmax");
+  v("duration_s", x.duration_s, "duration of the motion");
+  v("samples", x.samples, "samples of the sweep's motions");
+  v("singularity_margin_m", x.singularity_margin_m, "least clearance to a boundary of the annulus");
+  v("annulus_m", x.annulus_m, "[inner, outer] radii of the reachable annulus");
+  v("torque_limits_Nm", x.torque_limits_Nm, "torque limits [j1, j2] (null: none)");
+  v("power_limits_W", x.power_limits_W, "power limits [j1, j2] (null: none)");
+  v("thesis_intervals", x.thesis_intervals, "the thesis's start-point interval");
+  v.optional("geometry_counts", x.geometry_counts,
+             "the geometric sweep (x_s grid x phi in [0, 180] deg), the same for every program and configuration");
+  v("optima", x.optima, "the refined optimum of each program and configuration that has one");
+  v("unsolved", x.unsolved, "programs and configurations without an admissible placement");
+  v("thesis_search", x.thesis_search, "the least energy among the thesis's own candidates (4.7-4.13), whatever their status");
+  v("evaluations", x.evaluations, "the fixed placements the case asked for");
+  v("curves", x.curves, "energy over direction at the optimum's start abscissa");
+  v("pareto", x.pareto, "Pareto fronts of peak torque and energy (thinned to steps of >= 0.2 % in energy)");
+  v("maps", x.maps, "energy and status over root locations");
+  v.optional("convergence", x.convergence, "the first optimum's energy as the samples double");
+  v("mujoco_replay", x.mujoco_replay, "each optimum's torques applied open loop through mj_step");
+  v("solve_seconds", x.solve_seconds, "wall time of the solve");
+  v("samples_evaluated", x.samples_evaluated, "motion samples evaluated in all");
+}
+
+}  // namespace armstudy::studies::placement

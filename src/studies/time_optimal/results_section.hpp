@@ -1,0 +1,203 @@
+#pragma once
+/// The time-optimal study's section of results.json as a typed value: what the pipeline
+/// writes (app/time_optimal_pipeline.cpp fills it from the Result) and what the report and
+/// `armstudy merge` read back. `fields` names every key once: report/results_fields.hpp
+/// turns it into the writer, the strict reader and the schema (results.schema.json). SI
+/// units, angles in rad; per-joint quantities hold one value (or one row) per joint.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "studies/replay_section.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+struct ResultsSection {
+  using Rows = std::vector<std::vector<double>>;
+  struct Path {
+    std::string kind;
+    Rows points_m;
+  };
+  struct Limits {
+    std::vector<double> velocity_rad_s, torque_Nm;
+    std::optional<std::vector<double>> acceleration_rad_s2;
+  };
+  struct Ratio {
+    std::vector<double> velocity, torque, acceleration;
+  };
+  struct Violation {
+    double worst = 0;
+    std::string text, kind;
+    int joint = 1;
+    double s_m = 0, t_s = 0;
+    int interval = 0;
+    Ratio ratio;
+  };
+  struct Samples {
+    std::vector<double> t_s, s_m, sd_m_s, sdd_m_s2;
+    Rows q_rad, qd_rad_s, qdd_rad_s2, tau_Nm;
+  };
+  struct Solver {
+    std::string name, method;
+    bool solved = false;
+    std::string message;
+    double duration_s = 0, run_time_s = 0;
+    int intervals = 0, levels = 0;
+    long evaluations = 0;
+    int iterations = 0;
+    std::optional<Violation> violation;  ///< the rest: only when solved
+    std::optional<std::vector<double>> node_s_m, node_sd_m_s, node_t_s;
+    std::optional<Samples> samples;
+  };
+  struct Mvc {
+    std::vector<double> s_m, sd_m_s, velocity_sd_m_s;
+  };
+  struct ConvergenceRow {
+    int segments = 0, levels = 0;
+    bool solved = false;
+    double duration_s = 0, excess = 0, run_time_s = 0, worst_violation = 0;
+    std::string message;
+  };
+  struct Motion {
+    std::vector<double> t_s, s_m;
+    Rows tip_m, q_rad;
+  };
+  struct GridConvergence {
+    int grid_points = 0, refined_points = 0;
+    bool refined_solved = false;
+    double duration_s = 0, refined_duration_s = 0, change = 0, tolerance = 0;
+    bool passed = false;
+    std::vector<double> s_range_m;
+    std::vector<int> grid_point_range;
+    double share = 0, max_sd_m_s = 0, min_abs_sin_q2 = 0, path_min_abs_sin_q2 = 0;
+    std::string text;
+  };
+  Path path;
+  double path_length_m = 0;
+  int configuration = 1;
+  Limits limits;
+  std::vector<Solver> solvers;  ///< exact first
+  Mvc mvc;
+  std::vector<ConvergenceRow> convergence;
+  Motion motion;
+  std::optional<GridConvergence> grid_convergence;
+  std::optional<ReplaySection> mujoco_replay;
+};
+
+template <class V>
+void fields(V& v, ResultsSection::Path& x) {
+  v("kind", x.kind, "line, polyline or spline");
+  v("points_m", x.points_m, "the path's points [x, y]");
+}
+template <class V>
+void fields(V& v, ResultsSection::Limits& x) {
+  v("velocity_rad_s", x.velocity_rad_s, "joint velocity limits, per joint");
+  v("torque_Nm", x.torque_Nm, "joint torque limits, per joint");
+  v("acceleration_rad_s2", x.acceleration_rad_s2, "joint acceleration limits, per joint (null: none)");
+}
+template <class V>
+void fields(V& v, ResultsSection::Ratio& x) {
+  v("velocity", x.velocity, "largest |qd| / limit, per joint");
+  v("torque", x.torque, "largest |tau| / limit, per joint");
+  v("acceleration", x.acceleration, "largest |qdd| / limit, per joint");
+}
+template <class V>
+void fields(V& v, ResultsSection::Violation& x) {
+  v("worst", x.worst, "largest limit use - 1 over the dense resampling (<= 0: every limit met)");
+  v("text", x.text, "names the grid point, binding limit and margin");
+  v("kind", x.kind, "the limit of the worst use: velocity, torque or acceleration");
+  v("joint", x.joint, "joint of the worst use (1-based)");
+  v("s_m", x.s_m, "path position of the worst use");
+  v("t_s", x.t_s, "time of the worst use");
+  v("interval", x.interval, "solver interval of the worst use");
+  v("ratio", x.ratio, "largest use of each limit");
+}
+template <class V>
+void fields(V& v, ResultsSection::Samples& x) {
+  v("t_s", x.t_s, "sample times");
+  v("s_m", x.s_m, "path position");
+  v("sd_m_s", x.sd_m_s, "path speed s'");
+  v("sdd_m_s2", x.sdd_m_s2, "path acceleration s''");
+  v("q_rad", x.q_rad, "joint angles, one row per joint");
+  v("qd_rad_s", x.qd_rad_s, "joint velocities, one row per joint");
+  v("qdd_rad_s2", x.qdd_rad_s2, "joint accelerations, one row per joint");
+  v("tau_Nm", x.tau_Nm, "joint torques (inverse dynamics), one row per joint");
+}
+template <class V>
+void fields(V& v, ResultsSection::Solver& x) {
+  v("name", x.name, "exact, dp, dp_joint1 or complex");
+  v("method", x.method, "the method as a sentence");
+  v("solved", x.solved, "whether the solver found a motion");
+  v("message", x.message, "why not, when not solved");
+  v("duration_s", x.duration_s, "duration of the motion (null when not solved)");
+  v("run_time_s", x.run_time_s, "wall time of the solver");
+  v("intervals", x.intervals, "path intervals N");
+  v("levels", x.levels, "DP velocity levels (0 otherwise)");
+  v("evaluations", x.evaluations, "DP transitions or Complex objective calls");
+  v("iterations", x.iterations, "Complex reflections");
+  v.optional("violation", x.violation, "limit use over the dense resampling (when solved)");
+  v.optional("node_s_m", x.node_s_m, "path position at the solver's nodes (when solved)");
+  v.optional("node_sd_m_s", x.node_sd_m_s, "path speed at the solver's nodes (when solved)");
+  v.optional("node_t_s", x.node_t_s, "time at the solver's nodes (when solved)");
+  v.optional("samples", x.samples, "dense samples for plots (when solved)");
+}
+template <class V>
+void fields(V& v, ResultsSection::Mvc& x) {
+  v("s_m", x.s_m, "path position on the exact grid");
+  v("sd_m_s", x.sd_m_s, "maximum velocity curve (every limit)");
+  v("velocity_sd_m_s", x.velocity_sd_m_s, "maximum velocity curve of the velocity limits alone");
+}
+template <class V>
+void fields(V& v, ResultsSection::ConvergenceRow& x) {
+  v("segments", x.segments, "DP path segments");
+  v("levels", x.levels, "DP velocity levels");
+  v("solved", x.solved, "whether the DP found a motion");
+  v("duration_s", x.duration_s, "duration (null when not solved)");
+  v("excess", x.excess, "duration / exact - 1 (null when not solved)");
+  v("run_time_s", x.run_time_s, "wall time");
+  v("worst_violation", x.worst_violation, "largest limit use - 1 (null when not solved)");
+  v("message", x.message, "why not, when not solved");
+}
+template <class V>
+void fields(V& v, ResultsSection::Motion& x) {
+  v("t_s", x.t_s, "equal time steps");
+  v("s_m", x.s_m, "path position");
+  v("tip_m", x.tip_m, "tip [x, y] per sample");
+  v("q_rad", x.q_rad, "joint angles per sample");
+}
+template <class V>
+void fields(V& v, ResultsSection::GridConvergence& x) {
+  v("grid_points", x.grid_points, "grid points of the case");
+  v("refined_points", x.refined_points, "2 grid_points - 1");
+  v("refined_solved", x.refined_solved, "whether the refined grid solved");
+  v("duration_s", x.duration_s, "duration on the case's grid");
+  v("refined_duration_s", x.refined_duration_s, "duration on the refined grid (null when not solved)");
+  v("change", x.change, "|duration / refined duration - 1| (null: the refined solve failed)");
+  v("tolerance", x.tolerance, "allowed change (check exact_grid_converged)");
+  v("passed", x.passed, "change <= tolerance");
+  v("s_range_m", x.s_range_m, "[lo, hi] path range where the change arises");
+  v("grid_point_range", x.grid_point_range, "[lo, hi] grid points of that range");
+  v("share", x.share, "share of the change from that range");
+  v("max_sd_m_s", x.max_sd_m_s, "largest path speed there");
+  v("min_abs_sin_q2", x.min_abs_sin_q2, "smallest |sin q2| there");
+  v("path_min_abs_sin_q2", x.path_min_abs_sin_q2, "smallest |sin q2| along the path");
+  v("text", x.text, "the sentence for the check and the page");
+}
+template <class V>
+void fields(V& v, ResultsSection& x) {
+  v("path", x.path, "the tip path");
+  v("path_length_m", x.path_length_m, "length of the tip path");
+  v("configuration", x.configuration, "elbow configuration (1 or 2)");
+  v("limits", x.limits, "the joint limits");
+  v("solvers", x.solvers, "every solver, exact first");
+  v("mvc", x.mvc, "the maximum velocity curve on the exact grid");
+  v("convergence", x.convergence, "the DP at finer grids against the exact duration");
+  v("motion", x.motion, "the exact motion at equal time steps (what the frames show)");
+  v.optional("grid_convergence", x.grid_convergence,
+             "the exact solver again with every grid interval halved (check exact_grid_converged)");
+  v.optional("mujoco_replay", x.mujoco_replay,
+             "the exact solution's torques applied open loop through mj_step (check mujoco_dynamic_replay)");
+}
+
+}  // namespace armstudy::studies::time_optimal
