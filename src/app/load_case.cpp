@@ -101,6 +101,7 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
     const auto it = std::find_if(study_registry().begin(), study_registry().end(),
                                  [&](const StudyEntry& e) { return e.study == *study; });
     out.run = it->load(root, out.info);
+    out.entry = &*it;
   }
   if (study) root.finish();  // with no known study, its keys cannot be judged
   if (diag.empty() && !options.allow_large) check_budget(root, out.info.render);

@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "cases/pendulum_case.hpp"
-#include "app/pipeline.hpp"
-#include "report/case_report.hpp"
+#include "app/study_entry.hpp"
+#include "report/study_sections.hpp"
 #include "report/results_fields.hpp"
 #include "scene/pendulum_frames.hpp"
 #include "studies/pendulum/results_section.hpp"
@@ -45,11 +45,6 @@ class PendulumRun final : public StudyRun {
             {"integrator_steps", static_cast<double>(result_.steps_accepted), ""}};
   }
 
-  // the study report: one call, everything else is src/report's
-  void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
-              const nlohmann::json& results_json) override {
-    report::write_case_report(dir, info, results_json);
-  }
   json results() const override { return report::to_json(section()); }
 
   // the typed results.json section (studies/pendulum/results_section.hpp)
@@ -112,9 +107,10 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 }  // namespace
 
 StudyEntry pendulum_entry() {
-  return {"pendulum",
-          "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
-          &load};
+  return study_entry<studies::PendulumResultsSection>(
+      "pendulum",
+      "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
+      &load, &report::pendulum_sections);
 }
 
 }  // namespace armstudy::app

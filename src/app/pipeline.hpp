@@ -1,7 +1,7 @@
 #pragma once
 /// The pipeline of one case: case -> study -> result -> scene/report. Each study plugs in
-/// one StudyRun implementation and one registry entry (study_registry.cpp); the CLI knows
-/// nothing else about studies.
+/// one StudyRun implementation and one registry record (StudyEntry, study_registry.cpp); the
+/// CLI, the report and merge know nothing else about studies.
 
 #include <filesystem>
 #include <memory>
@@ -14,6 +14,11 @@
 #include "cases/case_info.hpp"
 #include "cases/yaml_reader.hpp"
 #include "studies/common.hpp"
+
+namespace armstudy::report {
+struct CasePage;
+class FigureWriter;
+}  // namespace armstudy::report
 
 namespace armstudy::app {
 
@@ -46,26 +51,52 @@ class StudyRun {
                                           const cases::CaseInfo& info) {
     return {};
   }
-  /// Writes the study's report page and plots into `dir` (frames already there).
-  virtual void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
-                      const nlohmann::json& results_json) {}
 };
 
-/// One study kind: its name and how to load its part of a case file.
+/// A study's sections of its case page, built from the whole results.json (the study's
+/// typed section read back from results[study]; report/study_sections.hpp).
+using ReportSections = void (*)(const nlohmann::json& results, report::FigureWriter& figures,
+                                report::CasePage& page);
+
+/// One study kind, the one record of it the registry holds (nothing else dispatches on the
+/// study name): its name, its loader (which returns the StudyRun: solver, checks, key
+/// figures, frames, results()), its results.json section's schema and strict reader (from
+/// its typed result, studies/<study>/results_section.hpp) and its report sections. Every
+/// part is required: there is no default, and a null part is an error at registration.
+/// Build one with study_entry<Section>() (app/study_entry.hpp).
 struct StudyEntry {
+  using Loader = std::unique_ptr<StudyRun> (*)(cases::Map& root, const cases::CaseInfo& info);
+  using SectionSchema = nlohmann::json (*)();
+  using SectionCheck = void (*)(const nlohmann::json& results);
+
+  /// @throws std::invalid_argument when a part is missing.
+  StudyEntry(std::string_view study, std::string_view summary, Loader load, SectionSchema schema,
+             SectionCheck check, ReportSections report);
+
   std::string_view study;    ///< "placement", "pendulum", "throwing", "time_optimal"
   std::string_view summary;  ///< one line for --help
   /// Reads the study's keys from the root mapping (every error into root.diag()).
-  std::unique_ptr<StudyRun> (*load)(cases::Map& root, const cases::CaseInfo& info);
+  Loader load;
+  /// The JSON Schema of results[study] (results.schema.json holds it).
+  SectionSchema section_schema;
+  /// Reads results[study] of a whole results.json strictly into the typed section.
+  /// @throws report::ResultsError naming the JSON pointer of the first problem.
+  SectionCheck check_section;
+  /// The study's sections of its case page.
+  ReportSections report;
 };
 
 /// Every study armstudy knows.
 const std::vector<StudyEntry>& study_registry();
 
+/// The registry's record of `study`; nullptr when there is none.
+const StudyEntry* find_study(std::string_view study);
+
 /// A case file loaded and validated.
 struct LoadedCase {
   cases::CaseInfo info;
   std::unique_ptr<StudyRun> run;
+  const StudyEntry* entry = nullptr;  ///< the study's registry record
 };
 
 /// How a case is judged when it is loaded.

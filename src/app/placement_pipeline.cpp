@@ -7,9 +7,9 @@
 #include <limits>
 
 #include "cases/placement_case.hpp"
-#include "app/pipeline.hpp"
+#include "app/study_entry.hpp"
 #include "app/replay_json.hpp"
-#include "report/case_report.hpp"
+#include "report/study_sections.hpp"
 #include "report/results_fields.hpp"
 #include "scene/placement_frames.hpp"
 #include "scene/replay_frames.hpp"
@@ -126,11 +126,6 @@ class PlacementRun final : public StudyRun {
                                           std::to_string(r.configuration)));
     }
     return c;
-  }
-  // the study report: one call, everything else is src/report's
-  void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
-              const nlohmann::json& results_json) override {
-    report::write_case_report(dir, info, results_json);
   }
   nlohmann::json results() const override;
   /// the typed results.json section (studies/placement/results_section.hpp)
@@ -386,7 +381,9 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 }  // namespace
 
 StudyEntry placement_entry() {
-  return {"placement", "energy-optimal root location of a 2-link arm for a straight-line task", &load};
+  return study_entry<pl::ResultsSection>(
+      "placement", "energy-optimal root location of a 2-link arm for a straight-line task", &load,
+      &report::placement_sections);
 }
 
 }  // namespace armstudy::app

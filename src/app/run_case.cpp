@@ -159,7 +159,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       if (const size_t at = gl.version.find("Mesa "); at != std::string::npos)
         j["provenance"]["mesa_version"] = gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
     }
-    c.run->report(tmp_dir, c.info, j);
+    report::write_case_report(tmp_dir, c.info, j, c.entry->report);
     // results.json last, listing every file written beside it with its sha256
     j["files"] = list_files(tmp_dir, "results.json");
     write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers

@@ -18,4 +18,10 @@ const std::vector<StudyEntry>& study_registry() {
   return registry;
 }
 
+const StudyEntry* find_study(std::string_view study) {
+  for (const StudyEntry& e : study_registry())
+    if (e.study == study) return &e;
+  return nullptr;
+}
+
 }  // namespace armstudy::app

@@ -7,9 +7,9 @@
 #include <optional>
 
 #include "cases/time_optimal_case.hpp"
-#include "app/pipeline.hpp"
+#include "app/study_entry.hpp"
 #include "app/replay_json.hpp"
-#include "report/case_report.hpp"
+#include "report/study_sections.hpp"
 #include "report/results_fields.hpp"
 #include "scene/mujoco_check.hpp"
 #include "scene/replay_frames.hpp"
@@ -147,11 +147,6 @@ class TimeOptimalRun final : public StudyRun {
     return files;
   }
 
-  void report(const std::filesystem::path& dir, const cases::CaseInfo& info,
-              const nlohmann::json& results_json) override {
-    report::write_case_report(dir, info, results_json);
-  }
-
  private:
   to::Spec spec_;
   to::Result result_;
@@ -203,9 +198,10 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 }  // namespace
 
 StudyEntry time_optimal_entry() {
-  return {"time_optimal",
-          "fastest motion along a given tip path under joint velocity, torque and acceleration limits",
-          &load};
+  return study_entry<to::ResultsSection>(
+      "time_optimal",
+      "fastest motion along a given tip path under joint velocity, torque and acceleration limits",
+      &load, &report::time_optimal_sections);
 }
 
 }  // namespace armstudy::app

@@ -328,7 +328,7 @@ std::vector<std::pair<std::string, std::string>> key_figures(const nlohmann::jso
 }
 
 void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
-                       const nlohmann::json& results) {
+                       const nlohmann::json& results, StudySections sections) {
   CasePage page;
   page.title = info.name;
   page.study = info.study;
@@ -350,14 +350,8 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
     s.paragraph(page.message.empty() ? "The study could not be solved." : page.message);
     page.sections.push_back(std::move(s));
   }
-  if (info.study == "placement") {
-    placement_sections(results, figures, page);
-  } else if (info.study == "pendulum") {
-    pendulum_sections(results, figures, page);
-  } else if (info.study == "throwing") {
-    throwing_sections(results, figures, page);
-  } else if (info.study == "time_optimal") {
-    time_optimal_sections(results, figures, page);
+  if (sections) {
+    sections(results, figures, page);  // the study's own (its registry record)
   } else {
     generic_sections(section, figures, page);
   }

@@ -14,17 +14,23 @@
 
 namespace armstudy::report {
 
+struct CasePage;
+class FigureWriter;
+
+/// A study's own sections of its page, from the whole results.json (its registry record,
+/// app::StudyEntry::report; report/study_sections.hpp).
+using StudySections = void (*)(const nlohmann::json& results, FigureWriter& figures, CasePage& page);
+
 /// Writes the report of one case into `dir` (the case folder, which already holds
 /// results.json and the frames listed in results["frames"]): index.html, report.css and
 /// one SVG per plot. `results` is the case's results.json: the shared header (see
-/// app::results_header), the study's own section under results[info.study] and "frames".
-/// Reads the templates from template_dir().
+/// app::results_header), the study's own section under results[info.study] and "frames";
+/// `sections` adds the study's own sections. Reads the templates from template_dir().
 /// @throws std::runtime_error when a template is missing or a file cannot be written;
-/// std::invalid_argument when a plot cannot be drawn from the data.
+/// std::invalid_argument when a plot cannot be drawn from the data; ResultsError
+/// (report/results_fields.hpp) when results[info.study] is not the study's section.
 void write_case_report(const std::filesystem::path& dir, const cases::CaseInfo& info,
-                       const nlohmann::json& results);
-
-struct CasePage;
+                       const nlohmann::json& results, StudySections sections);
 
 /// Writes `page` as `dir`/`file_name` (with report.css) through the case template; the
 /// header links to `data_link` (default: the case's results.json) unless page.links is set.

@@ -15,6 +15,8 @@
 ///
 /// Field types: double (null reads as NaN), int, long long, bool, std::string, std::vector,
 /// std::array, std::optional (written as null when empty), and any type with a `fields`.
+/// v.optional(key, opt) is a key that may be absent; v.inline_if(flag, opt) and
+/// v.inline_when(first_key, opt) put an optional group's keys in the enclosing object.
 
 #include <array>
 #include <cmath>
@@ -92,6 +94,11 @@ struct Writer {
   void inline_if(bool, const std::optional<T>& x) {
     if (x) fields(*this, const_cast<T&>(*x));
   }
+  /// the same, present when the object holds `key` (the first of T's keys)
+  template <class T>
+  void inline_when(const char*, const std::optional<T>& x) {
+    inline_if(true, x);
+  }
 };
 
 template <class T>
@@ -147,6 +154,10 @@ struct Reader {
     if (!present) return;
     x.emplace();
     fields(*this, *x);
+  }
+  template <class T>
+  void inline_when(const char* key, std::optional<T>& x) {
+    inline_if(in->contains(key), x);
   }
 };
 
@@ -234,6 +245,10 @@ struct SchemaWriter {
     T probe{};
     fields(w, probe);
   }
+  template <class T>
+  void inline_when(const char*, std::optional<T>& x) {
+    inline_if(true, x);
+  }
   void add(const char* key, nlohmann::json s, const char* text) {
     const std::string d = describe(key, text);
     if (!d.empty()) s["description"] = d;
@@ -306,6 +321,8 @@ inline std::string as_text(bool b) { return b ? "yes" : "no"; }
 inline std::string as_text(long long v) { return format_sig(static_cast<double>(v), 6); }
 inline std::string as_text(long v) { return as_text(static_cast<long long>(v)); }
 inline std::string as_text(int v) { return as_text(static_cast<long long>(v)); }
+inline std::string as_text(unsigned v) { return as_text(static_cast<long long>(v)); }
+inline std::string as_text(double v) { return format_sig(v, 6); }
 
 /// Column `col` of rows of numbers (a time series of vectors), NaN where a row is short.
 template <class Rows>

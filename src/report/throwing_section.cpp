@@ -6,59 +6,54 @@
 #include <cmath>
 
 #include "report/number_format.hpp"
+#include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
+#include "studies/throwing/results_section.hpp"
 
 namespace armstudy::report {
 namespace {
 
 using nlohmann::json;
 
-const json& arr(const json& j, const char* key) {
-  static const json empty = json::array();
-  return jsonv::has(j, key) && j[key].is_array() ? j[key] : empty;
-}
-const json& obj(const json& j, const char* key) {
-  static const json empty = json::object();
-  return jsonv::has(j, key) && j[key].is_object() ? j[key] : empty;
-}
+using TS = studies::ThrowingResultsSection;
 
 struct Motion {
   std::string label, colour_key;
-  const json* m;  // {energy_J, ..., series}
+  const TS::Motion* m;
 };
 
-std::vector<Motion> motions(const json& th) {
+std::vector<Motion> motions(const TS::Optimised& th) {
   std::vector<Motion> out;
-  if (jsonv::has(th, "initial")) out.push_back({"eq. 8 start", "initial", &th["initial"]});
-  if (jsonv::has(th, "reference_motion"))
-    out.push_back({"repaired reference", "reference", &th["reference_motion"]});
-  if (jsonv::has(th, "optimum")) out.push_back({"IDP optimum", "idp", &th["optimum"]});
-  const json& nl = obj(th, "nlopt");
-  if (jsonv::has(nl, "motion") && nl["motion"].is_object())
-    out.push_back({"SLSQP (gradient)", "gradient", &nl["motion"]});
+  out.push_back({"eq. 8 start", "initial", &th.initial});
+  if (th.reference_motion) out.push_back({"repaired reference", "reference", &*th.reference_motion});
+  out.push_back({"IDP optimum", "idp", &th.optimum});
+  if (th.nlopt.run) out.push_back({"SLSQP (gradient)", "gradient", &th.nlopt.run->motion});
   return out;
 }
 
-// one plot over time: column `col` of series[key] (or every column when col < 0) per motion
+// one plot over time per motion: a scalar series, or column `col` of a series of rows (every
+// column when col < 0, named by column_names)
 LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
-                     const std::string& y_label, const char* key, int col,
-                     const std::vector<std::string>& column_names) {
+                     const std::string& y_label, std::vector<double> TS::Series::*scalar,
+                     TS::Rows TS::Series::*rows, int col, const std::vector<std::string>& column_names) {
   LinePlot plot;
   plot.title = title;
   plot.x_label = "time (s)";
   plot.y_label = y_label;
   for (const Motion& mo : ms) {
-    const json& s = obj(*mo.m, "series");
-    const auto t = jsonv::vec(s, "t_s");
-    if (t.size() < 2 || !jsonv::has(s, key)) continue;
+    const TS::Series& s = mo.m->series;
+    const auto& t = s.t_s;
+    if (t.size() < 2) continue;
     std::vector<std::pair<std::string, std::vector<double>>> cols;
-    if (s[key].size() == t.size() && !s[key].empty() && s[key][0].is_number()) {
-      cols.push_back({"", jsonv::vec(s, key)});
+    if (scalar) {
+      if ((s.*scalar).empty()) continue;
+      cols.push_back({"", s.*scalar});
+    } else if ((s.*rows).empty()) {
+      continue;
     } else if (col >= 0) {
-      cols.push_back({"", jsonv::column(s, key, static_cast<size_t>(col), t.size())});
+      cols.push_back({"", column(s.*rows, static_cast<size_t>(col))});
     } else {
-      for (size_t c = 0; c < column_names.size(); ++c)
-        cols.push_back({column_names[c], jsonv::column(s, key, c, t.size())});
+      for (size_t c = 0; c < column_names.size(); ++c) cols.push_back({column_names[c], column(s.*rows, c)});
     }
     for (size_t c = 0; c < cols.size(); ++c) {
       Series se;
@@ -72,74 +67,82 @@ LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
   }
   return plot;
 }
+LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title, const std::string& y_label,
+                     TS::Rows TS::Series::*rows, int col, const std::vector<std::string>& column_names) {
+  return motion_plot(ms, title, y_label, nullptr, rows, col, column_names);
+}
+LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title, const std::string& y_label,
+                     std::vector<double> TS::Series::*scalar) {
+  return motion_plot(ms, title, y_label, scalar, nullptr, -1, {});
+}
 
-// "[a, b, c]" of release_error[key] at 3 significant digits
-std::string release_error(const json& m, const char* key) {
+// "[a, b, c]" at 3 significant digits
+std::string release_error(const std::vector<double>& v) {
   std::string s;
-  for (double v : jsonv::vec(obj(m, "release_error"), key)) s += (s.empty() ? "" : ", ") + format_sig(v, 3);
+  for (double x : v) s += (s.empty() ? "" : ", ") + format_sig(x, 3);
   return "[" + s + "]";
 }
 
 // "yes" / "NOT converged"
-std::string yes_no(const json& j, const char* key) {
-  if (!jsonv::has(j, key) || !j[key].is_boolean()) return "n/a";
-  return j[key].get<bool>() ? "yes" : "NOT converged";
-}
+std::string yes_no(bool b) { return b ? "yes" : "NOT converged"; }
 
-// the names in j[key] (an array of strings), joined
-std::string names(const json& j, const char* key) {
+// names, joined
+std::string names(const std::vector<std::string>& v) {
   std::string s;
-  for (const json& v : arr(j, key))
-    if (v.is_string()) s += (s.empty() ? "" : ", ") + v.get<std::string>();
+  for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
   return s.empty() ? "none" : s;
 }
 
 }  // namespace
 
 void throwing_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const json& th = results.contains("throwing") ? results["throwing"] : json::object();
-  const json& par = obj(th, "parameters");
-  const json& lim = obj(th, "limits");
-  const json& idp = obj(th, "idp");
-  const json& nl = obj(th, "nlopt");
-  const json& ref = obj(th, "reference");
-  const auto ms = motions(th);
+  const auto section = read_section<TS>(results, "throwing");
+  static const TS::Optimised kNotRun{};
+  // the optimisers' part: empty when the study stopped before them (nothing below is drawn)
+  const bool ran = section.run.has_value();
+  const TS::Optimised& th = ran ? *section.run : kNotRun;
+  const auto& par = section.parameters;
+  const auto& lim = section.limits;
+  const auto& idp = th.idp;
+  const std::optional<TS::NloptRun>& nl = th.nlopt.run;
+  const auto& ref = th.reference;
+  const auto ms = ran ? motions(th) : std::vector<Motion>{};
 
   Section method;
   method.id = "method";
   method.heading = "Method";
   method.new_page = false;
-  method.paragraph(
+  if (ran) method.paragraph(
       "A 4-coordinate arm in a vertical plane throws a ball from a tray: links 1 and 2 are "
       "driven by DC servomotors, the tray hangs on a passive joint and the ball rolls in it. "
-      "The joint-velocity profiles of the active joints over " + jsonv::str(idp, "stages") +
+      "The joint-velocity profiles of the active joints over " + as_text(idp.stages) +
       " time stages minimise the electrical energy E = Σ ∫ e i dt of the motors (eq. 5-7) "
       "subject to constraints checked at every integration step: the tray's normal force on "
-      "the ball N ≥ " + jsonv::sig(lim, "contact_margin_N", 3) + " N (an open tray cannot "
+      "the ball N ≥ " + format_sig(lim.contact_margin_N, 3) + " N (an open tray cannot "
       "pull the ball), the friction rolling needs |F_t|/N ≤ μ = " +
-      jsonv::sig(lim, "friction_coefficient", 3) + ", the ball within the tray |θ4| ≤ λ/2, "
-      "the motors within " + jsonv::sig(lim, "voltage_max_V", 3) + " V, " +
-      jsonv::sig(lim, "current_max_A", 3) + " A and " + jsonv::sig(lim, "power_max_W", 3) +
+      format_sig(lim.friction_coefficient, 3) + ", the ball within the tray |θ4| ≤ λ/2, "
+      "the motors within " + format_sig(lim.voltage_max_V, 3) + " V, " +
+      format_sig(lim.current_max_A, 3) + " A and " + format_sig(lim.power_max_W, 3) +
       " W, and the passive tray at its release angle within " +
-      format_sig(jsonv::num(lim, "release_tolerance_rad") * 180 / 3.14159265358979, 3) +
+      format_sig(lim.release_tolerance_rad * 180 / 3.14159265358979, 3) +
       "°. N and F_t come from the ball's own equation of motion, m4 a = −N n + F_t t + m4 g "
       "(docs/throwing.md). Iterative dynamic programming (Luus) compares candidates by the "
       "feasibility rules (feasible and lower energy, else lower violation): " +
-      jsonv::str(idp, "candidates") + " candidates per stage node, " +
-      jsonv::str(idp, "iterations") + " shrinking iterations (×" + jsonv::str(idp, "shrink") +
-      ") per pass, the region restored ×" + jsonv::str(idp, "restore") + " between passes, "
-      "until whole passes gain less than " + jsonv::sig(idp, "tolerance", 3) +
-      " of the energy, " + jsonv::str(idp, "quiet_passes") + " in a row (budget " +
-      jsonv::str(idp, "max_passes") + " passes), for " +
-      jsonv::str(idp, "seeds") + " seeds." +
-      (jsonv::has(nl, "motion") ? " The same constrained problem is solved by a gradient method (" +
-                                      jsonv::str(nl, "algorithm") + ") to ftol_rel " +
-                                      jsonv::sig(nl, "ftol_rel", 2) + " / xtol_rel " +
-                                      jsonv::sig(nl, "xtol_rel", 2) + " (budget " +
-                                      jsonv::str(nl, "max_evaluations") + " iterations, " +
-                                      jsonv::sig(nl, "max_time_s", 3) + " s)."
-                                : std::string(" The case runs IDP only.")) +
-      " Both optimisers keep every normalised constraint " + jsonv::sig(lim, "backoff", 2) +
+      as_text(idp.candidates) + " candidates per stage node, " +
+      as_text(idp.iterations) + " shrinking iterations (×" + as_text(idp.shrink) +
+      ") per pass, the region restored ×" + as_text(idp.restore) + " between passes, "
+      "until whole passes gain less than " + format_sig(idp.tolerance, 3) +
+      " of the energy, " + as_text(idp.quiet_passes) + " in a row (budget " +
+      as_text(idp.max_passes) + " passes), for " +
+      as_text(idp.seeds) + " seeds." +
+      (nl ? " The same constrained problem is solved by a gradient method (" +
+                nl->algorithm + ") to ftol_rel " +
+                format_sig(nl->ftol_rel, 2) + " / xtol_rel " +
+                format_sig(nl->xtol_rel, 2) + " (budget " +
+                as_text(nl->max_evaluations) + " iterations, " +
+                format_sig(nl->max_time_s, 3) + " s)."
+          : std::string(" The case runs IDP only.")) +
+      " Both optimisers keep every normalised constraint " + format_sig(lim.backoff, 2) +
       " inside its limit and start from the same feasible reference.");
   method.note(
       "Several printed coefficients of the equations of motion of Sato et al. are inconsistent "
@@ -148,51 +151,49 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       "of eq. 3, S234 in eq. 4); the model here is derived from first principles instead, so "
       "energies and angles differ from the paper's figures by design (docs/defects.md, "
       "docs/derivations/throwing.md).");
-  for (const json& c : arr(par, "choices"))
-    if (c.is_string()) method.note("What Sato et al. leave open (docs/assumptions.md): " + c.get<std::string>());
+  for (const std::string& c : par.choices) method.note("What Sato et al. leave open (docs/assumptions.md): " + c);
   {
     Table at;
     at.caption = "Assumptions: values the paper leaves open, chosen here (case keys); they are "
                  "settings, not facts, and the optimum depends on them.";
     at.header = {"assumption", "value", "case key"};
-    for (const json& a : arr(th, "assumptions"))
-      at.rows.push_back({jsonv::str(a, "name"), jsonv::sig(a, "value", 4) + " " + jsonv::str(a, "unit"),
-                         jsonv::str(a, "key")});
+    for (const auto& a : section.assumptions)
+      at.rows.push_back({a.name, format_sig(a.value, 4) + " " + a.unit, a.key});
     if (!at.rows.empty()) method.table(std::move(at));
   }
-  if (!par.empty()) method.table(json_table(par, "Parameters used (SI; _deg in degrees)."));
+  method.table(json_table(to_json(par), "Parameters used (SI; _deg in degrees)."));
   page.sections.push_back(std::move(method));
 
   Section res;
   res.id = "results";
   res.heading = "Reference, optimisers compared";
   {
-    const std::string kind = jsonv::str(ref, "kind");
+    const std::string& kind = ref.kind;
+    const TS::Repair repair = ref.repair.value_or(TS::Repair{});
     std::string text;
     if (kind == "eq8")
       text = "The eq. 8 trajectory meets every constraint, so it is the reference the saving is "
              "measured from.";
     else if (kind == "repaired")
       text = "The eq. 8 trajectory breaks the limits (table below), so the reference is its "
-             "repair (" + jsonv::str(obj(ref, "repair"), "method") + "; " +
-             jsonv::str(obj(ref, "repair"), "return_code") + " after " +
-             jsonv::str(obj(ref, "repair"), "iterations") + " iterations; node rates changed by up to " +
-             jsonv::sig(obj(ref, "repair"), "max_rate_change_rad_s", 3) + " rad/s).";
+             "repair (" + repair.method + "; " + repair.return_code + " after " +
+             as_text(repair.iterations) + " iterations; node rates changed by up to " +
+             format_sig(repair.max_rate_change_rad_s, 3) + " rad/s).";
     else if (!kind.empty())
       text = "The eq. 8 trajectory breaks the limits and its repair failed (" +
-             jsonv::str(obj(ref, "repair"), "return_code") + "): there is NO feasible reference; "
+             repair.return_code + "): there is NO feasible reference; "
              "the saving below is against the infeasible start and is not a valid figure.";
     if (!text.empty()) {
-      text += " Reference energy " + jsonv::sig(th, "energy_reference_J", 5) + " J (raw eq. 8: " +
-              jsonv::sig(th, "energy_initial_J", 5) + " J); IDP saves " +
-              jsonv::sig(th, "saving_percent", 3) + " % of it (" +
-              jsonv::sig(th, "energy_optimised_J", 5) + " J).";
-      const json& cm = arr(th, "comparison");
-      const double eref = jsonv::num(th, "energy_reference_J");
+      text += " Reference energy " + format_sig(section.energy_reference_J, 5) + " J (raw eq. 8: " +
+              format_sig(section.energy_initial_J, 5) + " J); IDP saves " +
+              format_sig(section.saving_percent, 3) + " % of it (" +
+              format_sig(section.energy_optimised_J, 5) + " J).";
+      const auto& cm = th.comparison;
+      const double eref = section.energy_reference_J;
       if (cm.size() >= 2 && std::isfinite(eref) && eref != 0)
-        text += " " + jsonv::str(cm[1], "optimiser") + " saves " +
-                format_sig(100 * (eref - jsonv::num(cm[1], "energy_J")) / std::abs(eref), 3) +
-                " % (" + jsonv::sig(cm[1], "energy_J", 5) + " J).";
+        text += " " + cm[1].optimiser + " saves " +
+                format_sig(100 * (eref - cm[1].energy_J) / std::abs(eref), 3) +
+                " % (" + format_sig(cm[1].energy_J, 5) + " J).";
       res.paragraph(text);
     }
     Table br;
@@ -200,68 +201,65 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                  "normalised: the excess as a fraction of the limit, for the contact and "
                  "friction of the ball's weight m4 g).";
     br.header = {"constraint", "margin", "normalised excess"};
-    for (const json& b : arr(ref, "raw_breaks"))
-      br.rows.push_back({jsonv::str(b, "constraint"), jsonv::sig(b, "margin", 4) + " " + jsonv::str(b, "unit"),
-                         jsonv::sig(b, "worst_normalised", 3)});
+    for (const auto& b : ref.raw_breaks)
+      br.rows.push_back({b.constraint, format_sig(b.margin, 4) + " " + b.unit, format_sig(b.worst_normalised, 3)});
     if (!br.rows.empty()) res.table(std::move(br));
   }
   {
     Table ct;
     ct.caption = "The optimisers on equal terms: the same constrained problem, the same start. "
                  "Margins (> 0: met) come from re-simulating each optimum with " +
-                 jsonv::str(obj(th, "verification"), "refinement") +
+                 (ran ? as_text(th.verification.refinement) : std::string()) +
                  "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
                  "Binding: constraints within twice the back-off of their limit.";
     // one column per optimiser (the rows are the quantities, so the table fits the page)
-    const json& cmp = arr(th, "comparison");
+    const auto& cmp = th.comparison;
     ct.header = {"quantity"};
-    for (const json& row : cmp) ct.header.push_back(jsonv::str(row, "optimiser"));
+    for (const auto& row : cmp) ct.header.push_back(row.optimiser);
     auto add = [&](const std::string& label, auto value) {
       std::vector<std::string> cells = {label};
-      for (const json& row : cmp) cells.push_back(value(row));
+      for (const auto& row : cmp) cells.push_back(value(row));
       ct.rows.push_back(std::move(cells));
     };
-    auto field = [](const char* key, int digits) {
-      return [key, digits](const json& row) { return jsonv::sig(row, key, digits); };
+    auto field = [](double TS::Comparison::*key, int digits) {
+      return [key, digits](const TS::Comparison& row) { return format_sig(row.*key, digits); };
     };
-    auto margin = [](const char* key) {
-      return [key](const json& row) { return jsonv::sig(obj(row, "margins"), key, 3); };
+    auto margin = [](double TS::Margins::*key) {
+      return [key](const TS::Comparison& row) { return format_sig(row.margins.*key, 3); };
     };
     if (!cmp.empty()) {
-      add("energy E = ∫ e i dt (J)", field("energy_J", 5));
-      add("  mechanical work (J)", field("mechanical_J", 4));
-      add("  copper loss Ra i² (J)", field("copper_J", 4));
-      add("  motor friction (J)", field("friction_J", 3));
-      add("converged", [](const json& row) { return yes_no(row, "converged"); });
-      add("simulations", [](const json& row) { return jsonv::str(row, "simulations"); });
-      add("time (s)", field("run_time_s", 3));
-      add("margin: contact N − margin (N)", margin("contact_N"));
-      add("margin: μ − friction needed |F_t|/N", margin("friction"));
-      add("margin: tray angle λ/2 − |θ4| (rad)", margin("tray_rad"));
-      add("margin: release tolerance − |θ3 error| (rad)", margin("release_rad"));
-      add("margin: voltage (V)", margin("voltage_V"));
-      add("margin: current (A)", margin("current_A"));
-      add("margin: power (W)", margin("power_W"));
-      add("binding constraints", [](const json& row) { return names(row, "binding"); });
-      add("binding motor rating", [](const json& row) { return jsonv::str(row, "binding_rating"); });
+      add("energy E = ∫ e i dt (J)", field(&TS::Comparison::energy_J, 5));
+      add("  mechanical work (J)", field(&TS::Comparison::mechanical_J, 4));
+      add("  copper loss Ra i² (J)", field(&TS::Comparison::copper_J, 4));
+      add("  motor friction (J)", field(&TS::Comparison::friction_J, 3));
+      add("converged", [](const TS::Comparison& row) { return yes_no(row.converged); });
+      add("simulations", [](const TS::Comparison& row) { return as_text(row.simulations); });
+      add("time (s)", field(&TS::Comparison::run_time_s, 3));
+      add("margin: contact N − margin (N)", margin(&TS::Margins::contact_N));
+      add("margin: μ − friction needed |F_t|/N", margin(&TS::Margins::friction));
+      add("margin: tray angle λ/2 − |θ4| (rad)", margin(&TS::Margins::tray_rad));
+      add("margin: release tolerance − |θ3 error| (rad)", margin(&TS::Margins::release_rad));
+      add("margin: voltage (V)", margin(&TS::Margins::voltage_V));
+      add("margin: current (A)", margin(&TS::Margins::current_A));
+      add("margin: power (W)", margin(&TS::Margins::power_W));
+      add("binding constraints", [](const TS::Comparison& row) { return names(row.binding); });
+      add("binding motor rating", [](const TS::Comparison& row) { return row.binding_rating; });
     }
     if (!ct.rows.empty()) res.table(std::move(ct));
-    std::string conv = "IDP: " + std::string(jsonv::has(idp, "converged") && idp["converged"].is_boolean() &&
-                                                      idp["converged"].get<bool>()
-                                                  ? "every seed converged"
-                                                  : "NOT converged (a seed ended on its budget)") +
-                       "; best seed " + jsonv::str(idp, "best_seed") + " ran " +
-                       jsonv::str(idp, "passes") + " passes, last pass gain " +
-                       jsonv::sig(idp, "last_gain", 2) + ".";
-    if (jsonv::has(nl, "motion"))
-      conv += " SLSQP: " + jsonv::str(nl, "return_code") + " after " + jsonv::str(nl, "iterations") +
-              " iterations, last change " + jsonv::sig(nl, "last_gain", 2) + ", " +
-              (yes_no(nl, "converged") == "yes" ? "converged." : "NOT converged: not an optimum.");
-    res.paragraph(conv);
+    std::string conv = "IDP: " + std::string(idp.converged ? "every seed converged"
+                                                           : "NOT converged (a seed ended on its budget)") +
+                       "; best seed " + as_text(idp.best_seed) + " ran " +
+                       as_text(idp.passes) + " passes, last pass gain " +
+                       format_sig(idp.last_gain, 2) + ".";
+    if (nl)
+      conv += " SLSQP: " + nl->return_code + " after " + as_text(nl->iterations) +
+              " iterations, last change " + format_sig(nl->last_gain, 2) + ", " +
+              (nl->converged ? "converged." : "NOT converged: not an optimum.");
+    if (ran) res.paragraph(conv);
     // the optimisers on the same problem should agree; say so when they do not
-    const auto cm = arr(th, "comparison");
+    const auto& cm = th.comparison;
     if (cm.size() >= 2) {
-      const double ei = jsonv::num(cm[0], "energy_J"), eg = jsonv::num(cm[1], "energy_J");
+      const double ei = cm[0].energy_J, eg = cm[1].energy_J;
       if (std::isfinite(ei) && std::isfinite(eg) && std::abs(ei - eg) > 0.01 * std::min(ei, eg)) {
         const bool idp_higher = ei > eg;
         res.note(std::string(idp_higher ? "IDP" : "SLSQP") + "'s answer is " +
@@ -276,29 +274,26 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   }
   Table t;
   t.caption = "Each motion's energy and extremes (at the optimisers' own steps). Limits: " +
-              jsonv::sig(lim, "voltage_max_V", 4) + " V, " + jsonv::sig(lim, "current_max_A", 4) +
-              " A, " + jsonv::sig(lim, "power_max_W", 4) + " W, N ≥ " +
-              jsonv::sig(lim, "contact_margin_N", 3) + " N, |F_t|/N ≤ " +
-              jsonv::sig(lim, "friction_coefficient", 3) + ", |θ4| ≤ " +
-              format_sig(std::abs(jsonv::vec(lim, "theta4_limit_rad").empty()
-                                      ? NAN
-                                      : jsonv::vec(lim, "theta4_limit_rad").back()),
-                         4) +
+              format_sig(lim.voltage_max_V, 4) + " V, " + format_sig(lim.current_max_A, 4) +
+              " A, " + format_sig(lim.power_max_W, 4) + " W, N ≥ " +
+              format_sig(lim.contact_margin_N, 3) + " N, |F_t|/N ≤ " +
+              format_sig(lim.friction_coefficient, 3) + ", |θ4| ≤ " +
+              format_sig(std::abs(lim.theta4_limit_rad.empty() ? NAN : lim.theta4_limit_rad.back()), 4) +
               " rad.";
   t.header = {"motion", "energy (J)", "feasible", "electrical (J)", "mechanical (J)",
               "copper (J)", "friction (J)", "min N (N)", "max |F_t|/N", "max |θ4| (rad)",
               "max voltage (V)", "max current (A)", "max power (W)",
               "release angle error θ1..θ3 (rad)"};
   for (const Motion& mo : ms) {
-    const json& m = *mo.m;
-    const json& es = obj(m, "energy_split");
-    t.rows.push_back({mo.label, jsonv::sig(m, "energy_J", 6), jsonv::str(m, "feasible"),
-                      jsonv::sig(es, "electrical_J", 5), jsonv::sig(es, "mechanical_J", 4),
-                      jsonv::sig(es, "copper_J", 5), jsonv::sig(es, "friction_J", 3),
-                      jsonv::sig(m, "min_normal_force_N", 3), jsonv::sig(m, "max_friction_ratio", 3),
-                      jsonv::sig(m, "max_abs_theta4_rad", 4), jsonv::sig(m, "max_voltage_V", 4),
-                      jsonv::sig(m, "max_current_A", 4), jsonv::sig(m, "max_power_W", 4),
-                      release_error(m, "angle_rad")});
+    const TS::Motion& m = *mo.m;
+    const auto& es = m.energy_split;
+    t.rows.push_back({mo.label, format_sig(m.energy_J, 6), as_text(m.feasible),
+                      format_sig(es.electrical_J, 5), format_sig(es.mechanical_J, 4),
+                      format_sig(es.copper_J, 5), format_sig(es.friction_J, 3),
+                      format_sig(m.min_normal_force_N, 3), format_sig(m.max_friction_ratio, 3),
+                      format_sig(m.max_abs_theta4_rad, 4), format_sig(m.max_voltage_V, 4),
+                      format_sig(m.max_current_A, 4), format_sig(m.max_power_W, 4),
+                      release_error(m.release_error.angle_rad)});
     t.swatches.push_back(css_colour(colour_for(mo.colour_key)));
   }
   if (!t.rows.empty()) res.table(std::move(t));
@@ -309,15 +304,15 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   seeds.heading = "IDP seeds";
   seeds.new_page = false;
   {
-    const json& sp = obj(idp, "spread");
-    if (!sp.empty())
-      seeds.paragraph("IDP ran " + jsonv::str(idp, "seeds") + " seeds from the same reference: "
-                      "energies best " + jsonv::sig(sp, "best_J", 5) + " J, median " +
-                      jsonv::sig(sp, "median_J", 5) + " J, worst " + jsonv::sig(sp, "worst_J", 5) +
+    const auto& sp = idp.spread;
+    if (ran)
+      seeds.paragraph("IDP ran " + as_text(idp.seeds) + " seeds from the same reference: "
+                      "energies best " + format_sig(sp.best_J, 5) + " J, median " +
+                      format_sig(sp.median_J, 5) + " J, worst " + format_sig(sp.worst_J, 5) +
                       " J. The spread is what a single IDP run is uncertain by; the best seed is "
                       "the reported optimum.");
-    const double lo = jsonv::num(sp, "best_J"), hi = jsonv::num(sp, "worst_J");
-    const double tol = jsonv::num(idp, "tolerance");
+    const double lo = ran ? sp.best_J : NAN, hi = ran ? sp.worst_J : NAN;
+    const double tol = idp.tolerance;
     if (std::isfinite(lo) && std::isfinite(hi) && std::isfinite(tol) && hi - lo > 10 * tol * std::abs(lo))
       seeds.note("The seeds disagree by " + format_sig(100 * (hi - lo) / std::abs(lo), 3) +
                  " %, far more than the convergence tolerance: each seed's convergence is local "
@@ -325,13 +320,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                  "tolerance, bounds how well IDP has solved the problem.");
     Table st;
     st.caption = "Each IDP seed: energy, whether it converged (whole passes gained less than the "
-                 "tolerance, " + jsonv::str(idp, "quiet_passes") + " in a row) and what it cost.";
+                 "tolerance, " + as_text(idp.quiet_passes) + " in a row) and what it cost.";
     st.header = {"seed", "energy (J)", "feasible", "converged", "passes", "last pass gain",
                  "simulations", "time (s)"};
-    for (const json& r : arr(idp, "seed_runs"))
-      st.rows.push_back({jsonv::str(r, "seed"), jsonv::sig(r, "energy_J", 6), jsonv::str(r, "feasible"),
-                         yes_no(r, "converged"), jsonv::str(r, "passes"), jsonv::sig(r, "last_gain", 2),
-                         jsonv::str(r, "evaluations"), jsonv::sig(r, "run_time_s", 3)});
+    for (const auto& r : idp.seed_runs)
+      st.rows.push_back({as_text(r.seed), format_sig(r.energy_J, 6), as_text(r.feasible),
+                         yes_no(r.converged), as_text(r.passes), format_sig(r.last_gain, 2),
+                         as_text(r.evaluations), format_sig(r.run_time_s, 3)});
     if (!st.rows.empty()) seeds.table(std::move(st));
   }
   if (!seeds.blocks.empty()) page.sections.push_back(std::move(seeds));
@@ -339,20 +334,19 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   Section mot;
   mot.id = "motors";
   mot.heading = "Motors over time";
-  const double vmax = jsonv::num(lim, "voltage_max_V"), imax = jsonv::num(lim, "current_max_A"),
-               pmax = jsonv::num(lim, "power_max_W");
+  const double vmax = lim.voltage_max_V, imax = lim.current_max_A, pmax = lim.power_max_W;
   const char* joints_note = " Solid: motor 1; dashed: motor 2. Colours: grey the eq. 8 start, "
                             "blue the IDP optimum, vermillion the gradient optimum (the repaired "
                             "reference, if any, in its own colour).";
-  LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", "voltage_V", -1, {"motor 1", "motor 2"});
+  LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", &TS::Series::voltage_V, -1, {"motor 1", "motor 2"});
   if (std::isfinite(vmax)) v.references = {{vmax, "±" + format_sig(vmax, 3) + " V limit"}, {-vmax, ""}};
   if (!v.series.empty()) mot.figure(figures.line("voltages", v, std::string("Motor voltages e (eq. 5) with the voltage limit.") + joints_note));
-  LinePlot c = motion_plot(ms, "motor currents", "current (A)", "current_A", -1, {"motor 1", "motor 2"});
+  LinePlot c = motion_plot(ms, "motor currents", "current (A)", &TS::Series::current_A, -1, {"motor 1", "motor 2"});
   if (std::isfinite(imax)) c.references = {{imax, "±" + format_sig(imax, 3) + " A limit"}, {-imax, ""}};
   if (!c.series.empty()) mot.figure(figures.line("currents", c, std::string("Motor currents i = (e - kv θ')/Ra (eq. 6) with the current limit.") + joints_note));
-  LinePlot tq = motion_plot(ms, "joint torques", "torque (N m)", "torque_Nm", -1, {"joint 1", "joint 2"});
+  LinePlot tq = motion_plot(ms, "joint torques", "torque (N m)", &TS::Series::torque_Nm, -1, {"joint 1", "joint 2"});
   if (!tq.series.empty()) mot.figure(figures.line("torques", tq, std::string("Torques the motors apply at joints 1 and 2.") + joints_note));
-  LinePlot pw = motion_plot(ms, "electrical power", "power (W)", "power_W", -1, {"motor 1", "motor 2"});
+  LinePlot pw = motion_plot(ms, "electrical power", "power (W)", &TS::Series::power_W, -1, {"motor 1", "motor 2"});
   if (std::isfinite(pmax)) pw.references = {{pmax, "±" + format_sig(pmax, 3) + " W rating"}, {-pmax, ""}};
   if (!pw.series.empty()) mot.figure(figures.line("powers", pw, std::string("Electrical power e i drawn by the motors with the power rating; its integral is the energy in the table.") + joints_note));
   page.sections.push_back(std::move(mot));
@@ -361,15 +355,15 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   contact.id = "contact";
   contact.heading = "Contact of the ball with the tray";
   {
-    LinePlot nf = motion_plot(ms, "normal force of the tray on the ball", "N (N)", "normal_force_N", -1, {});
-    const double margin = jsonv::num(lim, "contact_margin_N");
+    LinePlot nf = motion_plot(ms, "normal force of the tray on the ball", "N (N)", &TS::Series::normal_force_N);
+    const double margin = lim.contact_margin_N;
     if (std::isfinite(margin)) nf.references = {{margin, "margin " + format_sig(margin, 3) + " N"}, {0.0, "0 N: the ball lifts off"}};
     if (!nf.series.empty())
       contact.figure(figures.line("normal_force", nf,
                                   "The tray's normal force on the ball, N = m4 (g − a)·n, at every "
                                   "integration step; below 0 the tray would have to pull the ball."));
-    LinePlot fr = motion_plot(ms, "friction needed to roll", "|F_t| / N", "friction_needed", -1, {});
-    const double mu = jsonv::num(lim, "friction_coefficient");
+    LinePlot fr = motion_plot(ms, "friction needed to roll", "|F_t| / N", &TS::Series::friction_needed);
+    const double mu = lim.friction_coefficient;
     if (std::isfinite(mu)) fr.references = {{mu, "μ = " + format_sig(mu, 3)}};
     // keep the axis readable: the raw start may need far more than μ where N is near 0
     for (auto& se : fr.series)
@@ -386,34 +380,33 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   Section ball;
   ball.id = "ball";
   ball.heading = "The ball in the tray, release and flight";
-  LinePlot t4 = motion_plot(ms, "ball angle θ4 in the tray", "θ4 (rad)", "q_rad", 3, {});
-  const auto tl = jsonv::vec(lim, "theta4_limit_rad");
+  LinePlot t4 = motion_plot(ms, "ball angle θ4 in the tray", "θ4 (rad)", &TS::Series::q_rad, 3, {});
+  const auto& tl = lim.theta4_limit_rad;
   if (tl.size() == 2) t4.references = {{tl[1], "tray limits ±λ/2"}, {tl[0], ""}};
   if (!t4.series.empty())
     ball.figure(figures.line("theta4", t4,
                              "The ball's angle relative to the tray with the tray's limits: "
                              "outside them the ball leaves the tray (eq. 9's penalty)."));
-  LinePlot q3 = motion_plot(ms, "tray angle θ3 (passive)", "θ3 (rad)", "q_rad", 2, {});
+  LinePlot q3 = motion_plot(ms, "tray angle θ3 (passive)", "θ3 (rad)", &TS::Series::q_rad, 2, {});
   if (!q3.series.empty())
     ball.figure(figures.line("theta3", q3, "The passive tray joint, moved only by the dynamics."));
-  const json& rel = obj(th, "release");
-  const json& fl = obj(th, "flight");
+  const auto& rel = th.release;
+  const auto& fl = th.flight;
   Table r;
   r.caption = "Release and flight of the ball (IDP optimum).";
   r.header = {"quantity", "value"};
-  auto pair = [](const json& j, const char* k) {
-    const auto v = jsonv::vec(j, k);
+  auto pair = [](const std::vector<double>& v) {
     return v.size() == 2 ? "(" + format_sig(v[0], 4) + ", " + format_sig(v[1], 4) + ")" : std::string("n/a");
   };
-  r.rows = {{"release time", jsonv::sig(rel, "time_s", 4) + " s"},
-            {"ball at release (x, y)", pair(rel, "ball_xy_m") + " m"},
-            {"ball velocity at release", pair(rel, "ball_velocity_m_s") + " m/s"},
-            {"reaches the landing height", jsonv::str(fl, "reaches")},
-            {"landing height", jsonv::sig(fl, "landing_height_m", 4) + " m"},
-            {"landing point (x, y)", pair(fl, "landing_xy_m") + " m"},
-            {"flight time", jsonv::sig(fl, "duration_s", 4) + " s"},
-            {"apex height", jsonv::sig(fl, "apex_m", 4) + " m"}};
-  ball.table(std::move(r));
+  r.rows = {{"release time", format_sig(rel.time_s, 4) + " s"},
+            {"ball at release (x, y)", pair(rel.ball_xy_m) + " m"},
+            {"ball velocity at release", pair(rel.ball_velocity_m_s) + " m/s"},
+            {"reaches the landing height", as_text(fl.reaches)},
+            {"landing height", format_sig(fl.landing_height_m, 4) + " m"},
+            {"landing point (x, y)", pair(fl.landing_xy_m) + " m"},
+            {"flight time", format_sig(fl.duration_s, 4) + " s"},
+            {"apex height", format_sig(fl.apex_m, 4) + " m"}};
+  if (ran) ball.table(std::move(r));
   // the locus of the throw (003 figure 7) and the flight, in the vertical plane
   {
     ShadedMap locus;
@@ -434,15 +427,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       locus.overlays.push_back(std::move(s));
     };
     for (const Motion& mo : ms) {
-      const json& s = obj(*mo.m, "series");
-      const size_t n = arr(s, "t_s").size();
-      add({mo.label + ": ball in the tray", jsonv::column(s, "ball_xy_m", 0, n),
-           jsonv::column(s, "ball_xy_m", 1, n), colour_for(mo.colour_key)});
+      const TS::Series& s = mo.m->series;
+      add({mo.label + ": ball in the tray", column(s.ball_xy_m, 0), column(s.ball_xy_m, 1),
+           colour_for(mo.colour_key)});
     }
-    const size_t nf = arr(fl, "t_s").size();
-    add({"flight after release", jsonv::column(fl, "path_xy_m", 0, nf),
-         jsonv::column(fl, "path_xy_m", 1, nf), colour_for("idp"), LineStyle::kDashed});
-    const auto land = jsonv::vec(fl, "landing_xy_m");
+    add({"flight after release", column(fl.path_xy_m, 0), column(fl.path_xy_m, 1), colour_for("idp"),
+         LineStyle::kDashed});
+    const auto& land = fl.landing_xy_m;
     if (land.size() == 2) {
       locus.markers.push_back({land[0], land[1], "landing point", colour_for("idp")});
       x0 = std::min(x0, land[0]);
@@ -477,21 +468,21 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                "else each pass's first and last and every fifth). Violation 0: feasible.";
   ct.header = {"pass", "iteration", "energy (J)", "violation", "region (rad/s)", "improvements", "simulations"};
   int k = 0;
-  const json& rows = arr(idp, "convergence");
+  const auto& rows = idp.convergence;
   for (size_t i = 0; i < rows.size(); ++i) {
-    const json& row = rows[i];
+    const auto& row = rows[i];
     ++k;
     en.x.push_back(k);
-    en.y.push_back(jsonv::num(row, "violation") > 0 ? NAN : jsonv::num(row, "energy_J"));
+    en.y.push_back(row.violation > 0 ? NAN : row.energy_J);
     // the table keeps each pass's first and last iteration and every fifth (the plot has all)
-    const bool last_of_pass = i + 1 == rows.size() || jsonv::str(rows[i + 1], "pass") != jsonv::str(row, "pass");
-    const double it = jsonv::num(row, "iteration");
+    const bool last_of_pass = i + 1 == rows.size() || rows[i + 1].pass != row.pass;
+    const double it = row.iteration;
     if (rows.size() > 25 && !(it == 1 || last_of_pass || std::fmod(it, 5) == 0)) continue;
-    const auto reg = jsonv::vec(row, "region_rad_s");
-    ct.rows.push_back({jsonv::str(row, "pass"), jsonv::str(row, "iteration"),
-                       jsonv::sig(row, "energy_J", 6), jsonv::sig(row, "violation", 3),
+    const auto& reg = row.region_rad_s;
+    ct.rows.push_back({as_text(row.pass), as_text(row.iteration),
+                       format_sig(row.energy_J, 6), format_sig(row.violation, 3),
                        reg.size() == 2 ? format_sig(reg[0], 3) + ", " + format_sig(reg[1], 3) : "n/a",
-                       jsonv::str(row, "improvements"), jsonv::str(row, "evaluations")});
+                       as_text(row.improvements), as_text(row.evaluations)});
   }
   en.markers = k <= 80;
   if (k > 0) {
@@ -501,7 +492,7 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                              "best seed, passes one after the other (the region is restored between "
                              "passes)."));
   }
-  const auto hist = jsonv::vec(nl, "history_J");
+  const auto hist = nl ? nl->history_J : std::vector<double>{};
   if (hist.size() >= 2) {
     LinePlot hp;
     hp.title = "gradient method history";
@@ -513,20 +504,20 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     conv.figure(figures.line("slsqp_history", hp, "The gradient method's energy at each of its evaluations (points may be infeasible)."));
   }
   if (!ct.rows.empty()) conv.table(std::move(ct));
-  const json& rep = obj(th, "replay");
-  const json& integ = obj(th, "integration");
-  const std::string fine = jsonv::str(integ, "fine_steps_factor") + "x";
+  const auto& rep = th.replay;
+  const auto& integ = th.integration;
+  const std::string fine = as_text(integ.fine_steps_factor) + "x";
   Table acc;
   acc.caption = "Accuracy of the simulation behind every number above.";
   acc.header = {"check", "value"};
-  acc.rows = {{"integration", jsonv::str(integ, "method")},
-              {"step", jsonv::sig(integ, "step_s", 3) + " s"},
-              {"energy error against " + fine + " the steps", jsonv::sig(integ, "energy_error_vs_fine_steps", 3)},
-              {"θ3 error against " + fine + " the steps", jsonv::sig(integ, "theta3_error_vs_fine_steps_rad", 3) + " rad"},
-              {"open-loop voltage replay", jsonv::str(rep, "integrator")},
-              {"largest replay error", jsonv::sig(rep, "max_error_rad", 3) + " rad (tolerance " +
-                                           jsonv::sig(rep, "tolerance_rad", 3) + " rad)"}};
-  conv.table(std::move(acc));
+  acc.rows = {{"integration", integ.method},
+              {"step", format_sig(integ.step_s, 3) + " s"},
+              {"energy error against " + fine + " the steps", format_sig(integ.energy_error_vs_fine_steps, 3)},
+              {"θ3 error against " + fine + " the steps", format_sig(integ.theta3_error_vs_fine_steps_rad, 3) + " rad"},
+              {"open-loop voltage replay", rep.integrator},
+              {"largest replay error", format_sig(rep.max_error_rad, 3) + " rad (tolerance " +
+                                           format_sig(rep.tolerance_rad, 3) + " rad)"}};
+  if (ran) conv.table(std::move(acc));
   page.sections.push_back(std::move(conv));
 }
 

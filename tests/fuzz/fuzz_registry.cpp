@@ -1,5 +1,5 @@
 // The fuzz build's study registry: each study's loader from src/cases, as the pipelines
-// (src/cli/<study>_pipeline.cpp) call it, without their solvers, scenes and reports, so
+// (src/app/<study>_pipeline.cpp) call it, without their solvers, scenes and reports, so
 // that the fuzz target links only the loading code (cases, core, studies) and builds in a
 // minute with the sanitizers. The pipelines' load() functions are these calls and a
 // check of the diagnostics; keep them in step.
@@ -34,12 +34,23 @@ std::unique_ptr<StudyRun> loaded(Spec spec) {
 }
 }  // namespace
 
+// the fuzz build has no results.json and no report: these parts are never called
+nlohmann::json no_schema() { return {}; }
+void no_check(const nlohmann::json&) {}
+void no_report(const nlohmann::json&, report::FigureWriter&, report::CasePage&) {
+  throw std::logic_error("the fuzz build loads cases; it does not report them");
+}
+
 const std::vector<StudyEntry>& study_registry() {
   static const std::vector<StudyEntry> registry = {
-      {"placement", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_placement(root)); }},
-      {"pendulum", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_pendulum_spec(root)); }},
-      {"throwing", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_throwing_spec(root)); }},
-      {"time_optimal", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_time_optimal(root)); }},
+      {"placement", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_placement(root)); },
+       &no_schema, &no_check, &no_report},
+      {"pendulum", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_pendulum_spec(root)); },
+       &no_schema, &no_check, &no_report},
+      {"throwing", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_throwing_spec(root)); },
+       &no_schema, &no_check, &no_report},
+      {"time_optimal", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_time_optimal(root)); },
+       &no_schema, &no_check, &no_report},
   };
   return registry;
 }

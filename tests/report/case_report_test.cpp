@@ -13,10 +13,12 @@
 #include <set>
 #include <sstream>
 
+#include "app/pipeline.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
 #include "studies/pendulum/results_section.hpp"
 #include "studies/placement/results_section.hpp"
+#include "studies/throwing/results_section.hpp"
 #include "studies/time_optimal/results_section.hpp"
 
 namespace armstudy::report {
@@ -25,6 +27,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 using armstudy::testing::slurp;
+
+// the study's report sections, from its registry record
+StudySections sections_of(const cases::CaseInfo& info) { return app::find_study(info.study)->report; }
 
 fs::path fresh_dir(const std::string& name) { return armstudy::testing::fresh_dir("case_report_test_" + name); }
 
@@ -112,15 +117,29 @@ json study_section(const std::string& study) {
     return to_json(s);
   }
   if (study == "throwing") {
-    json s;
-    for (const char* k : {"initial", "optimum"})
-      s[k] = {{"energy_J", 20.0},
-              {"series", {{"t_s", ts}, {"q_rad", s4(5)}, {"voltage_V", s2(6)}, {"current_A", s2(7)},
-                          {"torque_Nm", s2(8)}, {"power_W", s2(9)}, {"ball_xy_m", s2(1)}}}};
-    s["limits"] = {{"voltage_max_V", 24}, {"current_max_A", 5}, {"theta4_limit_rad", {-1, 1}}};
-    s["idp"]["convergence"] = json::array({{{"iteration", 1}, {"criterion_J", 22}, {"energy_J", 21}},
-                                           {{"iteration", 2}, {"criterion_J", 20}, {"energy_J", 20}}});
-    return s;
+    using TS = studies::ThrowingResultsSection;
+    TS s;
+    auto rows = [](const std::vector<std::array<double, 2>>& v) {
+      TS::Rows r;
+      for (const auto& x : v) r.push_back({x[0], x[1]});
+      return r;
+    };
+    TS::Optimised& o = s.run.emplace();
+    for (TS::Motion* m : {&o.initial, &o.optimum}) {
+      m->energy_J = 20.0;
+      m->series.t_s = ts;
+      m->series.q_rad = s4(5);
+      m->series.voltage_V = rows(s2(6));
+      m->series.current_A = rows(s2(7));
+      m->series.torque_Nm = rows(s2(8));
+      m->series.power_W = rows(s2(9));
+      m->series.ball_xy_m = rows(s2(1));
+    }
+    s.limits.voltage_max_V = 24;
+    s.limits.current_max_A = 5;
+    s.limits.theta4_limit_rad = {-1, 1};
+    o.idp.convergence = {{1, 1, 21, 0, {}, 0, 0}, {2, 1, 20, 0, {}, 0, 0}};
+    return to_json(s);
   }
   studies::time_optimal::ResultsSection s;
   for (const char* name : {"exact", "dp", "complex"}) {
@@ -175,7 +194,7 @@ std::vector<std::string> attribute_targets(const std::string& html) {
 TEST(CaseReport, EveryValueIsHtmlEscaped) {
   const auto info = hostile_info("placement");
   const fs::path d = fresh_dir("escape");
-  write_case_report(d, info, synthetic_results(info));
+  write_case_report(d, info, synthetic_results(info), sections_of(info));
   const std::string html = slurp(d / "index.html");
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("<b>bold"), std::string::npos);
@@ -186,7 +205,7 @@ TEST(CaseReport, EveryValueIsHtmlEscaped) {
 TEST(CaseReport, PageForbidsNetworkFetchesWithContentSecurityPolicy) {
   const auto info = hostile_info("pendulum");
   const fs::path d = fresh_dir("csp");
-  write_case_report(d, info, synthetic_results(info));
+  write_case_report(d, info, synthetic_results(info), sections_of(info));
   const std::string html = slurp(d / "index.html");
   const auto csp = html.find("http-equiv=\"Content-Security-Policy\"");
   ASSERT_NE(csp, std::string::npos);
@@ -205,7 +224,7 @@ TEST(CaseReport, EachStudyDrawsItsFiguresAndEveryLinkedFileExists) {
   for (const auto& [study, figures] : expected) {
     const auto info = hostile_info(study);
     const fs::path d = fresh_dir("links_" + study);
-    write_case_report(d, info, synthetic_results(info));
+    write_case_report(d, info, synthetic_results(info), sections_of(info));
     std::ofstream(d / "results.json") << synthetic_results(info).dump();
     const std::string html = slurp(d / "index.html");
     int images = 0;
@@ -225,7 +244,7 @@ TEST(CaseReport, IndexListsEveryCaseFolderWithItsKeyFigures) {
     fs::create_directories(out / info.name);
     const json r = synthetic_results(info);
     std::ofstream(out / info.name / "results.json") << r.dump();
-    write_case_report(out / info.name, info, r);
+    write_case_report(out / info.name, info, r, sections_of(info));
   }
   fs::create_directories(out / ".hidden-tmp");
   std::ofstream(out / ".hidden-tmp" / "results.json") << "{}";
@@ -267,7 +286,7 @@ TEST(CaseReport, UndrawableDataCostsTheFigureNotTheReport) {
   for (auto& v : r["pendulum"]["series"]["q_rad"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
   for (auto& v : r["pendulum"]["series"]["qd_rad_s"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
   const fs::path d = fresh_dir("undrawable");
-  ASSERT_NO_THROW(write_case_report(d, info, r));
+  ASSERT_NO_THROW(write_case_report(d, info, r, sections_of(info)));
   const std::string html = slurp(d / "index.html");
   EXPECT_NE(html.find("could not be drawn"), std::string::npos);
   EXPECT_NE(html.find("fig01_energies.svg"), std::string::npos);

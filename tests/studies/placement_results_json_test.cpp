@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "app/pipeline.hpp"
+#include "report/case_report.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -130,7 +131,7 @@ Page run_and_render(const std::string& yaml, const std::string& name) {
             {"placement", c.run->results()},
             {"checks", json::array()}};
   fs::create_directories(dir / "out");
-  c.run->report(dir / "out", c.info, j);
+  report::write_case_report(dir / "out", c.info, j, c.entry->report);
   std::ifstream in(dir / "out" / "index.html");
   std::stringstream html;
   html << in.rdbuf();
