@@ -5,6 +5,7 @@
 // rendering), as `armstudy run --no-render` does them.
 #include <benchmark/benchmark.h>
 
+#include <ctime>
 #include <filesystem>
 #include <random>
 #include <thread>
@@ -30,13 +31,19 @@ std::vector<Line> lines(double L, int count) {
   return out;
 }
 
+// second argument 1: the scalar reference (one arm2_sample at a time) instead of the
+// structure-of-arrays evaluator
 void BM_PlacementEvaluatorSamples(benchmark::State& state) {
   const int threads = int(state.range(0));
+  const auto eval = state.range(1) == 1 ? &evaluate_line_scalar : &evaluate_line;
   const Arm2 arm = make_arm2(testing::thesis_arm());
   const double L = 0.4 * annulus(0.4, 0.2).lmax;
   const ProgramTable table = make_program_table(core::MotionProgram::kCycloidal, 1.0, L, 401);
   const std::vector<Line> ls = lines(L, 512);
   long samples = 0;
+  // process CPU time too: on a shared machine samples per CPU second is what a core does
+  timespec c0{}, c1{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
   for (auto _ : state) {
     // every thread evaluates its share of the batch, both configurations
     std::vector<std::thread> pool;
@@ -44,8 +51,8 @@ void BM_PlacementEvaluatorSamples(benchmark::State& state) {
     for (int t = 0; t < threads; ++t) {
       pool.emplace_back([&, t] {
         for (size_t i = size_t(t); i < ls.size(); i += size_t(threads)) {
-          sink[t] += evaluate_line(arm, table, ls[i], 1).energy;
-          sink[t] += evaluate_line(arm, table, ls[i], 2).energy;
+          sink[t] += eval(arm, table, ls[i], 1).energy;
+          sink[t] += eval(arm, table, ls[i], 2).energy;
         }
       });
     }
@@ -53,11 +60,16 @@ void BM_PlacementEvaluatorSamples(benchmark::State& state) {
     benchmark::DoNotOptimize(sink.data());
     samples += long(ls.size()) * 2 * table.size();
   }
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+  const double cpu = double(c1.tv_sec - c0.tv_sec) + 1e-9 * double(c1.tv_nsec - c0.tv_nsec);
+  state.counters["samples_per_cpu_s"] = double(samples) / cpu;
   state.counters["samples_per_s"] = benchmark::Counter(double(samples), benchmark::Counter::kIsRate);
   state.counters["samples_per_s_per_thread"] =
       benchmark::Counter(double(samples) / threads, benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_PlacementEvaluatorSamples)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlacementEvaluatorSamples)
+    ->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})
+    ->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // the constrained refinement of one optimum (refine.hpp) from a nearby start: on the inner
 // circle's clearance margin (0.5 Lmax, arg 0) and interior (0.2 Lmax, arg 1)

@@ -23,16 +23,20 @@ struct Fixture {
   }
 };
 
-// one candidate of the default case: 16 stages x 20 RK4 steps
+// one candidate of the default case: 16 stages x 20 (80) RK4 steps; second argument 1: the
+// same simulation through the generic chain (the reference of the one-pass tray dynamics)
 void BM_ThrowSimulateProfile(benchmark::State& state) {
   Fixture f;
   f.setup.steps_per_stage = static_cast<int>(state.range(0));
+  f.setup.generic_dynamics = state.range(1) == 1;
   const long steps = static_cast<long>(f.setup.steps_per_stage) * f.profile.stages();
   for (auto _ : state) benchmark::DoNotOptimize(simulate_profile(f.setup, f.profile).energy);
   state.counters["rk4_steps_per_s"] =
       benchmark::Counter(static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_ThrowSimulateProfile)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ThrowSimulateProfile)
+    ->Args({20, 0})->Args({20, 1})->Args({80, 0})->Args({80, 1})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_ThrowReplayVoltages(benchmark::State& state) {
   Fixture f;
@@ -52,9 +56,11 @@ void BM_ThrowReplayVoltages(benchmark::State& state) {
 }
 BENCHMARK(BM_ThrowReplayVoltages)->Unit(benchmark::kMillisecond);
 
-// one IDP iteration (15 stage nodes x 8 candidates) on 1 and 2 threads
+// one IDP iteration (15 stage nodes x 8 candidates) on 1 and 2 threads; second argument 1:
+// through the generic chain
 void BM_IdpIteration(benchmark::State& state) {
   Fixture f;
+  f.setup.generic_dynamics = state.range(1) == 1;
   IdpSettings s;
   s.iterations = 1;
   s.max_passes = 1;
@@ -65,7 +71,7 @@ void BM_IdpIteration(benchmark::State& state) {
   state.counters["simulations_per_s"] =
       benchmark::Counter(static_cast<double>(evals), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_IdpIteration)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_IdpIteration)->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
 // (computed once, outside the timing), one seed on one core, or all seeds on both cores

@@ -122,3 +122,68 @@ TEST(PlacementArm2, RejectsGravityAndPassiveJoints) {
 
 }  // namespace
 }  // namespace armstudy::studies::placement
+
+namespace armstudy::studies::placement {
+namespace {
+
+// the structure-of-arrays evaluator returns the scalar reference's figures bit for bit
+// (lines of every kind: interior, near the boundaries, outside, singular; table sizes that
+// are and are not multiples of its block), and both equal the generic chain's IK and
+// inverse dynamics to 1e-12 relative on a well-conditioned line
+TEST(PlacementArm2, BlockedEvaluatorEqualsTheScalarReference) {
+  const Arm2 arm = make_arm2(testing::thesis_arm());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> xs(0.0, 0.7), ph(-core::kPi, core::kPi);
+  for (const int n : {3, 11, 12, 255, 256, 257, 401, 801}) {
+    const ProgramTable table = make_program_table(core::MotionProgram::kCycloidal, 1.0, 0.3, n);
+    for (int k = 0; k < 200; ++k) {
+      const Line line = thesis_line(xs(rng), ph(rng));
+      for (const int config : {1, 2}) {
+        const LineMetrics a = evaluate_line(arm, table, line, config);
+        const LineMetrics b = evaluate_line_scalar(arm, table, line, config);
+        const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+        ASSERT_TRUE(same(a.energy, b.energy)) << n << " " << a.energy << " " << b.energy;
+        ASSERT_TRUE(same(a.signed_work, b.signed_work));
+        ASSERT_TRUE(same(a.energy_coarse, b.energy_coarse));
+        ASSERT_TRUE(same(a.min_abs_sin, b.min_abs_sin));
+        for (int j = 0; j < 2; ++j) {
+          ASSERT_TRUE(same(a.peak_torque[j], b.peak_torque[j]));
+          ASSERT_TRUE(same(a.peak_power[j], b.peak_power[j]));
+        }
+      }
+    }
+  }
+}
+
+TEST(PlacementArm2, BlockedEvaluatorEqualsTheGenericChainTo1e12) {
+  const core::PlanarChain chain = testing::thesis_arm();
+  const Arm2 arm = make_arm2(chain);
+  const ProgramTable table = make_program_table(core::MotionProgram::kCycloidal, 1.0, 0.3, 401);
+  const Line line = thesis_line(0.5, 2.2);
+  for (const int config : {1, 2}) {
+    const LineMetrics m = evaluate_line(arm, table, line, config);
+    double e = 0, pk1 = 0, pk2 = 0, prev = 0;
+    for (int k = 0; k < table.size(); ++k) {
+      const Eigen::Vector2d p = line.start + table.s[k] * line.dir;
+      const auto st = core::ik_2link_motion(arm.L1, arm.L2, p, table.sd[k] * line.dir,
+                                            table.sdd[k] * line.dir, config);
+      ASSERT_TRUE(st);
+      core::JointVector q(2), qd(2), qdd(2);
+      q << st->q[0], st->q[1];
+      qd << st->qd[0], st->qd[1];
+      qdd << st->qdd[0], st->qdd[1];
+      const core::JointVector tau = core::inverse_dynamics(chain, q, qd, qdd);
+      const double pa = core::absolute_power(tau, qd);
+      if (k > 0) e += 0.5 * table.dt * (pa + prev);
+      prev = pa;
+      pk1 = std::max(pk1, std::abs(tau[0]));
+      pk2 = std::max(pk2, std::abs(tau[1]));
+    }
+    EXPECT_TRUE(testing::near_rel(m.energy, e, 1e-12)) << "config " << config;
+    EXPECT_TRUE(testing::near_rel(m.peak_torque[0], pk1, 1e-12));
+    EXPECT_TRUE(testing::near_rel(m.peak_torque[1], pk2, 1e-12));
+  }
+}
+
+}  // namespace
+}  // namespace armstudy::studies::placement

@@ -145,8 +145,16 @@ struct LineMetrics {
 
 /// Energy, signed work and peaks of the motion `table` along `line` in configuration 1 or
 /// 2. Non-finite energy when a sample is singular. Costs table.size() samples.
+/// Structure of arrays: arm2_sample's arithmetic over blocks of samples in a loop the
+/// compiler vectorises, then the sums and peaks in sample order, so that it returns exactly
+/// evaluate_line_scalar's figures (tests compare them bit for bit).
 LineMetrics evaluate_line(const Arm2& arm, const ProgramTable& table, const Line& line,
                           int configuration);
+
+/// The same metrics one sample at a time through arm2_sample: the reference of
+/// evaluate_line.
+LineMetrics evaluate_line_scalar(const Arm2& arm, const ProgramTable& table, const Line& line,
+                                 int configuration);
 
 /// Time series of one motion (for optima and evaluated placements). Angles are relative
 /// (q1 absolute angle of link 1, unwrapped; q2 elbow), rad; power_j = tau_j qd_j, W.

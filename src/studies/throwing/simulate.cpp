@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "core/dynamics.hpp"
 #include "studies/throwing/integrators.hpp"
+#include "studies/throwing/tray_dynamics.hpp"
 
 namespace armstudy::studies {
 namespace {
@@ -26,6 +28,7 @@ class Planner {
  public:
   Planner(const ThrowSetup& s, const VelocityProfile& p) : s_(s), p_(p) {
     B_ = motor_matrix(s.mount);
+    if (!s.generic_dynamics && s.chain.num_links() == 4) fast_.emplace(s.chain);
     h_ = p.stage_length();
     // angles at each stage start (trapezoids)
     q_start_.resize(p.stages() + 1);
@@ -46,9 +49,11 @@ class Planner {
     out.qd << qda, x[2], x[3];
     core::JointVector qdd_active(4);
     qdd_active << acc, 0.0, 0.0;
-    // passive joints from the dynamics, active torques that realise the motion
+    // passive joints from the dynamics, active torques that realise the motion (and the
+    // ball's contact forces): the one-pass fast path, or the generic chain (the reference)
     const core::MixedDynamics d =
-        core::passive_forward_dynamics(s_.chain, out.q, out.qd, qdd_active, core::JointVector::Zero(4));
+        fast_ ? fast_->mixed(out.q, out.qd, qdd_active, s_.ball_mass, out.force)
+              : core::passive_forward_dynamics(s_.chain, out.q, out.qd, qdd_active, core::JointVector::Zero(4));
     out.qdd = d.qdd;
     out.tau = d.tau;
     out.tau_m = motor_torques(s_.mount, d.tau);
@@ -62,7 +67,7 @@ class Planner {
       out.ms[m] = core::motor_sample(s_.motor[m], out.rate[m], acc_m[m], out.tau_m[m]);
       power += s_.count_regeneration ? out.ms[m].power : std::max(0.0, out.ms[m].power);
     }
-    out.force = ball_contact_forces(s_.chain, s_.ball_mass, out.q, out.qd, out.qdd);
+    if (!fast_) out.force = ball_contact_forces(s_.chain, s_.ball_mass, out.q, out.qd, out.qdd);
     out.dx.resize(5);
     out.dx << x[2], x[3], d.qdd[2], d.qdd[3], power;  // eq. 7 integrand as the fifth state
   }
@@ -73,6 +78,7 @@ class Planner {
   Eigen::Matrix<double, 2, 4> B_;
   double h_ = 0;
   std::vector<Eigen::Vector2d> q_start_;
+  std::optional<TrayDynamics> fast_;
 };
 
 void record(const PointEval& pe, int stage, double t, double energy, std::vector<ThrowSample>* out) {

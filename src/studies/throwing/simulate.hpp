@@ -52,6 +52,10 @@ struct ThrowSetup {
   double ball_mass = 0.012;                 ///< kg, m4 (forces from the ball's equation)
   bool count_regeneration = true;           ///< eq. 7 as printed (signed e i)
   int steps_per_stage = 40;                 ///< RK4 steps in each stage
+  /// true: the planning model's dynamics through the generic chain (core/dynamics.hpp and
+  /// ball_contact_forces), the reference of the one-pass fast path (tray_dynamics.hpp) that
+  /// simulations of a 4-joint chain use otherwise; both give the same results
+  bool generic_dynamics = false;
 };
 
 /// Scalar outcome of one profile.
