@@ -27,8 +27,11 @@ using Section = to::ResultsSection;
 
 std::vector<double> pair(const Eigen::Vector2d& v) { return {v[0], v[1]}; }
 
-// a 2 x N matrix as two per-joint rows
-Section::Rows rows(const Eigen::Matrix2Xd& m) {
+// one number per joint
+std::vector<double> joints(const core::JointVector& v) { return {v.data(), v.data() + v.size()}; }
+
+// a joints x N matrix as per-joint rows
+Section::Rows rows(const Eigen::MatrixXd& m) {
   Section::Rows out;
   for (int j = 0; j < m.rows(); ++j) {
     std::vector<double> r;
@@ -47,22 +50,22 @@ const char* path_kind(to::PathKind k) {
   return "line";
 }
 
-Section::Violation violation_section(const to::Violation& v) {
+Section::Violation violation_section(const to::Violation& v, int nj) {
   Section::Violation o;
   o.worst = v.worst;
   o.text = v.text;
   o.kind = to::limit_name(v.kind);
   o.joint = v.joint + 1;
-  o.s_m = v.s;
+  o.s = v.s;
   o.t_s = v.t;
   o.interval = v.interval;
-  o.ratio.velocity = {v.ratio[0][0], v.ratio[0][1]};
-  o.ratio.torque = {v.ratio[1][0], v.ratio[1][1]};
-  o.ratio.acceleration = {v.ratio[2][0], v.ratio[2][1]};
+  o.ratio.velocity.assign(v.ratio[0], v.ratio[0] + nj);
+  o.ratio.torque.assign(v.ratio[1], v.ratio[1] + nj);
+  o.ratio.acceleration.assign(v.ratio[2], v.ratio[2] + nj);
   return o;
 }
 
-Section::Solver solver_section(const to::SolverResult& r) {
+Section::Solver solver_section(const to::SolverResult& r, int nj) {
   Section::Solver o;
   o.name = r.name;
   o.method = r.method;
@@ -75,9 +78,9 @@ Section::Solver solver_section(const to::SolverResult& r) {
   o.evaluations = r.evaluations;
   o.iterations = r.iterations;
   if (!r.solved) return o;
-  o.violation = violation_section(r.violation);
-  o.node_s_m = r.node_s;
-  o.node_sd_m_s = r.node_sd;
+  o.violation = violation_section(r.violation, nj);
+  o.node_s = r.node_s;
+  o.node_sd = r.node_sd;
   o.node_t_s = r.node_t;
   const to::MotionSamples& s = r.samples;
   o.samples = Section::Samples{s.t, s.s, s.sd, s.sdd, rows(s.q), rows(s.qd), rows(s.qdd), rows(s.tau)};
@@ -134,7 +137,7 @@ class TimeOptimalRun final : public StudyRun {
     k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s"});
     if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, ""});
     if (replay_) k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad"});
-    k.push_back({"path_length_m", result_.path_length, "m"});
+    k.push_back({std::string("path_length_") + result_.s_unit(), result_.path_length, result_.s_unit()});
     return k;
   }
 
@@ -157,33 +160,49 @@ json TimeOptimalRun::results() const { return report::to_json(section()); }
 
 Section TimeOptimalRun::section() const {
   const to::Result& r = result_;
+  const bool joint_space = spec_.space == to::PathSpace::kJoint;
+  const int nj = spec_.chain.num_links();
   Section o;
-  o.path.kind = path_kind(spec_.path.kind);
-  for (const auto& p : spec_.path.points) o.path.points_m.push_back(pair(p));
-  o.path_length_m = r.path_length;
-  o.configuration = spec_.configuration;
-  o.limits.velocity_rad_s = pair(spec_.velocity_limit);
-  o.limits.torque_Nm = pair(spec_.torque_limit);
-  if (spec_.acceleration_limit) o.limits.acceleration_rad_s2 = pair(*spec_.acceleration_limit);
-  for (const auto& s : r.solvers) o.solvers.push_back(solver_section(s));
+  o.path.space = joint_space ? "joint" : "tip";
+  o.path.s_unit = r.s_unit();
+  if (joint_space) {
+    o.path.kind = path_kind(spec_.joint_path.kind);
+    o.path.points_rad.emplace();
+    for (const auto& q : spec_.joint_path.points) o.path.points_rad->push_back(joints(q));
+    if (!spec_.joint_path.range.empty()) {
+      o.path.range_rad.emplace();
+      for (const auto& lh : spec_.joint_path.range) o.path.range_rad->push_back(pair(lh));
+    }
+  } else {
+    o.path.kind = path_kind(spec_.path.kind);
+    o.path.points_m.emplace();
+    for (const auto& p : spec_.path.points) o.path.points_m->push_back(pair(p));
+    o.configuration = spec_.configuration;
+  }
+  o.path_length = r.path_length;
+  o.joints = nj;
+  o.limits.velocity_rad_s = joints(spec_.velocity_limit);
+  o.limits.torque_Nm = joints(spec_.torque_limit);
+  if (spec_.acceleration_limit) o.limits.acceleration_rad_s2 = joints(*spec_.acceleration_limit);
+  for (const auto& s : r.solvers) o.solvers.push_back(solver_section(s, nj));
   o.mvc = {r.mvc_s, r.mvc_sd, r.mvc_velocity_sd};
   for (const auto& row : r.convergence)
     o.convergence.push_back({row.segments, row.levels, row.solved, row.solved ? row.duration : NAN,
                              row.solved ? row.excess : NAN, row.run_time,
                              row.solved ? row.worst_violation : NAN, row.message});
   o.motion.t_s = r.motion_t;
-  o.motion.s_m = r.motion_s;
+  o.motion.s = r.motion_s;
   for (int k = 0; k < r.motion_p.cols(); ++k) {
     o.motion.tip_m.push_back(pair(r.motion_p.col(k)));
-    o.motion.q_rad.push_back(pair(r.motion_q.col(k)));
+    o.motion.q_rad.push_back(joints(r.motion_q.col(k)));
   }
   if (r.grid.computed) {
     const to::GridConvergence& g = r.grid;
     o.grid_convergence = Section::GridConvergence{
         g.grid_points, g.refined_points, g.refined_solved, g.duration,
         g.refined_solved ? g.refined_duration : NAN, g.change, g.tolerance, g.change <= g.tolerance,
-        {g.s_lo, g.s_hi}, {g.point_lo, g.point_hi}, g.share, g.max_sd, g.min_sin_q2,
-        g.path_min_sin_q2, g.text};
+        {g.s_lo, g.s_hi}, {g.point_lo, g.point_hi}, g.share, g.max_sd,
+        joint_space ? NAN : g.min_sin_q2, joint_space ? NAN : g.path_min_sin_q2, g.text};
   }
   if (replay_) o.mujoco_replay = replay_section(*replay_);
   return o;

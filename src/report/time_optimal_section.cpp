@@ -1,6 +1,7 @@
 // the time-optimal study of Ozkipcak (1994): solvers side by side, the phase plane
 // with the maximum velocity curve, joint torques and velocities with their limits, the dp
 // convergence table
+#include <algorithm>
 #include <cmath>
 
 #include "report/number_format.hpp"
@@ -31,13 +32,27 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   const auto to = read_section<Section_>(results, "time_optimal");
   const auto& solvers = to.solvers;
   const auto& limits = to.limits;
+  // a path given in joint space: s in rad (joint-space chord length)
+  const bool joint_space = to.path.space == "joint";
+  const std::string u = to.path.s_unit.empty() ? "m" : to.path.s_unit;
+  // joints: one limit per joint
+  const size_t joints = std::max<size_t>(2, limits.velocity_rad_s.size());
 
   Section method;
   method.id = "method";
   method.heading = "Method";
   method.new_page = false;
+  if (joint_space)
+    method.paragraph(
+        "The arm, a chain of " + std::to_string(joints) + " joints, follows a path given in joint "
+        "space: q(s) through the case's waypoints, s its chord length in joint space (rad). A "
+        "tip path would not fix the joint motion of a redundant arm, so the joint motion itself "
+        "is the path; the solvers see only q(s), q'(s) and q''(s), exactly as for a tip path "
+        "(whose joint path comes from the inverse kinematics of a 2-link arm), and every limit "
+        "is per joint. Path speed s' is then in rad/s.");
   method.paragraph(
-      "The tip of a 2-link arm in a horizontal plane follows a given path; the speed along it "
+      std::string(joint_space ? "The speed along the path "
+                              : "The tip of a 2-link arm in a horizontal plane follows a given path; the speed along it ") +
       "is chosen to reach the end in the least time under joint velocity and torque limits, "
       "at rest at both ends. Three solvers work on the same problem: dynamic programming as "
       "in the source (Ozkipcak 1994, docs/sources.md: N segments of constant acceleration, "
@@ -79,22 +94,22 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   // phase plane: s' over s, the maximum velocity curve and each solver's profile
   LinePlot phase;
   phase.title = "phase plane: path speed over path position";
-  phase.x_label = "path position s (m)";
-  phase.y_label = "path speed s' (m/s)";
-  const auto& mvc_s = to.mvc.s_m;
-  const auto& mvc_sd = to.mvc.sd_m_s;
-  const auto& mvc_v = to.mvc.velocity_sd_m_s;
+  phase.x_label = "path position s (" + u + ")";
+  phase.y_label = "path speed s' (" + u + "/s)";
+  const auto& mvc_s = to.mvc.s;
+  const auto& mvc_sd = to.mvc.sd;
+  const auto& mvc_v = to.mvc.velocity_sd;
   if (mvc_s.size() == mvc_sd.size() && !mvc_s.empty())
     phase.series.push_back({"maximum velocity curve", mvc_s, mvc_sd, colour_for("mvc")});
   if (mvc_s.size() == mvc_v.size() && !mvc_s.empty())
     phase.series.push_back({"velocity limits alone", mvc_s, mvc_v, colour_for("limit"), LineStyle::kDotted});
   for (const auto& s : solvers) {
-    auto x = s.samples ? s.samples->s_m : std::vector<double>{};
-    auto y = s.samples ? s.samples->sd_m_s : std::vector<double>{};
+    auto x = s.samples ? s.samples->s : std::vector<double>{};
+    auto y = s.samples ? s.samples->sd : std::vector<double>{};
     bool nodes = false;
     if (x.empty() || x.size() != y.size()) {
-      x = s.node_s_m.value_or(std::vector<double>{});
-      y = s.node_sd_m_s.value_or(std::vector<double>{});
+      x = s.node_s.value_or(std::vector<double>{});
+      y = s.node_sd.value_or(std::vector<double>{});
       nodes = true;
     }
     if (x.empty() || x.size() != y.size()) continue;
@@ -114,11 +129,11 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   LinePlot st;
   st.title = "path position over time";
   st.x_label = "time t (s)";
-  st.y_label = "path position s (m)";
+  st.y_label = "path position s (" + u + ")";
   for (const auto& s : solvers) {
     if (!s.samples) continue;
     const auto& t = s.samples->t_s;
-    const auto& x = s.samples->s_m;
+    const auto& x = s.samples->s;
     if (t.size() >= 2 && t.size() == x.size())
       st.series.push_back({s.name, t, x, colour_for(solver_key(s.name))});
   }
@@ -142,7 +157,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                         {"qd_rad_s", &Section_::Samples::qd_rad_s, &limits.velocity_rad_s,
                          "velocity", "rad/s"}};
   for (const Kind& k : kinds)
-    for (size_t j = 0; j < 2; ++j) {
+    for (size_t j = 0; j < joints; ++j) {
       LinePlot p;
       p.title = "joint " + std::to_string(j + 1) + " " + k.what;
       p.x_label = "time (s)";

@@ -227,7 +227,7 @@ TEST_F(ResultsNumbers, KeyFiguresEqualTheStudySectionBitForBit) {
   ASSERT_EQ(exact["name"], "exact");
   EXPECT_EQ(bits(key_figure(o, "duration_s[exact]")), bits(exact["duration_s"].get<double>()));
   EXPECT_EQ(bits(key_figure(o, "path_length_m")),
-            bits(o["time_optimal"]["path_length_m"].get<double>()));
+            bits(o["time_optimal"]["path_length"].get<double>()));
 }
 
 TEST_F(ResultsNumbers, TimeOptimalDurationFollowsFromTheWrittenNodes) {
@@ -237,8 +237,8 @@ TEST_F(ResultsNumbers, TimeOptimalDurationFollowsFromTheWrittenNodes) {
   ASSERT_TRUE(o.contains("time_optimal"));
   for (const json& s : o["time_optimal"]["solvers"]) {
     if (!s["solved"].get<bool>() || s["name"] == "dp_joint1") continue;  // q1'' law, not s''
-    const auto ns = s["node_s_m"].get<std::vector<double>>();
-    const auto sd = s["node_sd_m_s"].get<std::vector<double>>();
+    const auto ns = s["node_s"].get<std::vector<double>>();
+    const auto sd = s["node_sd"].get<std::vector<double>>();
     ASSERT_EQ(ns.size(), sd.size());
     double t = 0;
     for (size_t k = 0; k + 1 < ns.size(); ++k) t += 2 * (ns[k + 1] - ns[k]) / (sd[k] + sd[k + 1]);

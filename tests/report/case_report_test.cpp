@@ -149,14 +149,14 @@ json study_section(const std::string& study) {
     v.duration_s = 1.5;
     v.samples = studies::time_optimal::ResultsSection::Samples{};
     v.samples->t_s = ts;
-    v.samples->s_m = ts;
-    v.samples->sd_m_s = s1(1);
+    v.samples->s = ts;
+    v.samples->sd = s1(1);
     v.samples->tau_Nm = rows2(1);
     v.samples->qd_rad_s = rows2(2);
     s.solvers.push_back(v);
   }
-  s.mvc.s_m = ts;
-  s.mvc.sd_m_s = s1(0.5);
+  s.mvc.s = ts;
+  s.mvc.sd = s1(0.5);
   s.limits.torque_Nm = {10, 4};
   s.limits.velocity_rad_s = {3, 4};
   return to_json(s);

@@ -3,7 +3,10 @@
 /// writes (app/time_optimal_pipeline.cpp fills it from the Result) and what the report and
 /// `armstudy merge` read back. `fields` names every key once: report/results_fields.hpp
 /// turns it into the writer, the strict reader and the schema (results.schema.json). SI
-/// units, angles in rad; per-joint quantities hold one value (or one row) per joint.
+/// units, angles in rad; per-joint quantities hold one value (or one row) per joint. The
+/// path parameter s is the tip's arc length in m for a tip path (2 links) and the
+/// joint-space chord length in rad for a joint-space path (any number of links): keys of s
+/// and its derivatives carry no unit in their names, path.s_unit gives it ("m" or "rad").
 
 #include <optional>
 #include <string>
@@ -16,8 +19,8 @@ namespace armstudy::studies::time_optimal {
 struct ResultsSection {
   using Rows = std::vector<std::vector<double>>;
   struct Path {
-    std::string kind;
-    Rows points_m;
+    std::string space, kind, s_unit;
+    std::optional<Rows> points_m, points_rad, range_rad;
   };
   struct Limits {
     std::vector<double> velocity_rad_s, torque_Nm;
@@ -30,12 +33,12 @@ struct ResultsSection {
     double worst = 0;
     std::string text, kind;
     int joint = 1;
-    double s_m = 0, t_s = 0;
+    double s = 0, t_s = 0;
     int interval = 0;
     Ratio ratio;
   };
   struct Samples {
-    std::vector<double> t_s, s_m, sd_m_s, sdd_m_s2;
+    std::vector<double> t_s, s, sd, sdd;
     Rows q_rad, qd_rad_s, qdd_rad_s2, tau_Nm;
   };
   struct Solver {
@@ -47,11 +50,11 @@ struct ResultsSection {
     long evaluations = 0;
     int iterations = 0;
     std::optional<Violation> violation;  ///< the rest: only when solved
-    std::optional<std::vector<double>> node_s_m, node_sd_m_s, node_t_s;
+    std::optional<std::vector<double>> node_s, node_sd, node_t_s;
     std::optional<Samples> samples;
   };
   struct Mvc {
-    std::vector<double> s_m, sd_m_s, velocity_sd_m_s;
+    std::vector<double> s, sd, velocity_sd;
   };
   struct ConvergenceRow {
     int segments = 0, levels = 0;
@@ -60,7 +63,7 @@ struct ResultsSection {
     std::string message;
   };
   struct Motion {
-    std::vector<double> t_s, s_m;
+    std::vector<double> t_s, s;
     Rows tip_m, q_rad;
   };
   struct GridConvergence {
@@ -68,14 +71,15 @@ struct ResultsSection {
     bool refined_solved = false;
     double duration_s = 0, refined_duration_s = 0, change = 0, tolerance = 0;
     bool passed = false;
-    std::vector<double> s_range_m;
+    std::vector<double> s_range;
     std::vector<int> grid_point_range;
-    double share = 0, max_sd_m_s = 0, min_abs_sin_q2 = 0, path_min_abs_sin_q2 = 0;
+    double share = 0, max_sd = 0, min_abs_sin_q2 = 0, path_min_abs_sin_q2 = 0;
     std::string text;
   };
   Path path;
-  double path_length_m = 0;
-  int configuration = 1;
+  double path_length = 0;
+  int joints = 2;
+  std::optional<int> configuration;
   Limits limits;
   std::vector<Solver> solvers;  ///< exact first
   Mvc mvc;
@@ -87,8 +91,12 @@ struct ResultsSection {
 
 template <class V>
 void fields(V& v, ResultsSection::Path& x) {
+  v("space", x.space, "tip (a tip path of a 2-link arm) or joint (a path in joint space)");
   v("kind", x.kind, "line, polyline or spline");
-  v("points_m", x.points_m, "the path's points [x, y]");
+  v("s_unit", x.s_unit, "unit of the path parameter s: m (tip arc length) or rad (joint-space chord length)");
+  v("points_m", x.points_m, "the tip path's points [x, y] in m (null for a joint-space path)");
+  v("points_rad", x.points_rad, "the joint-space path's waypoints [q1, ..., qn] in rad (null for a tip path)");
+  v("range_rad", x.range_rad, "joint ranges [lo, hi] in rad the path must stay in (null: none given)");
 }
 template <class V>
 void fields(V& v, ResultsSection::Limits& x) {
@@ -108,7 +116,7 @@ void fields(V& v, ResultsSection::Violation& x) {
   v("text", x.text, "names the grid point, binding limit and margin");
   v("kind", x.kind, "the limit of the worst use: velocity, torque or acceleration");
   v("joint", x.joint, "joint of the worst use (1-based)");
-  v("s_m", x.s_m, "path position of the worst use");
+  v("s", x.s, "path position of the worst use (path.s_unit)");
   v("t_s", x.t_s, "time of the worst use");
   v("interval", x.interval, "solver interval of the worst use");
   v("ratio", x.ratio, "largest use of each limit");
@@ -116,9 +124,9 @@ void fields(V& v, ResultsSection::Violation& x) {
 template <class V>
 void fields(V& v, ResultsSection::Samples& x) {
   v("t_s", x.t_s, "sample times");
-  v("s_m", x.s_m, "path position");
-  v("sd_m_s", x.sd_m_s, "path speed s'");
-  v("sdd_m_s2", x.sdd_m_s2, "path acceleration s''");
+  v("s", x.s, "path position (path.s_unit)");
+  v("sd", x.sd, "path speed s' (path.s_unit per s)");
+  v("sdd", x.sdd, "path acceleration s'' (path.s_unit per s^2)");
   v("q_rad", x.q_rad, "joint angles, one row per joint");
   v("qd_rad_s", x.qd_rad_s, "joint velocities, one row per joint");
   v("qdd_rad_s2", x.qdd_rad_s2, "joint accelerations, one row per joint");
@@ -137,16 +145,16 @@ void fields(V& v, ResultsSection::Solver& x) {
   v("evaluations", x.evaluations, "DP transitions or Complex objective calls");
   v("iterations", x.iterations, "Complex reflections");
   v.optional("violation", x.violation, "limit use over the dense resampling (when solved)");
-  v.optional("node_s_m", x.node_s_m, "path position at the solver's nodes (when solved)");
-  v.optional("node_sd_m_s", x.node_sd_m_s, "path speed at the solver's nodes (when solved)");
+  v.optional("node_s", x.node_s, "path position at the solver's nodes, path.s_unit (when solved)");
+  v.optional("node_sd", x.node_sd, "path speed at the solver's nodes, path.s_unit per s (when solved)");
   v.optional("node_t_s", x.node_t_s, "time at the solver's nodes (when solved)");
   v.optional("samples", x.samples, "dense samples for plots (when solved)");
 }
 template <class V>
 void fields(V& v, ResultsSection::Mvc& x) {
-  v("s_m", x.s_m, "path position on the exact grid");
-  v("sd_m_s", x.sd_m_s, "maximum velocity curve (every limit)");
-  v("velocity_sd_m_s", x.velocity_sd_m_s, "maximum velocity curve of the velocity limits alone");
+  v("s", x.s, "path position on the exact grid (path.s_unit)");
+  v("sd", x.sd, "maximum velocity curve, every limit (path.s_unit per s)");
+  v("velocity_sd", x.velocity_sd, "maximum velocity curve of the velocity limits alone (path.s_unit per s)");
 }
 template <class V>
 void fields(V& v, ResultsSection::ConvergenceRow& x) {
@@ -162,8 +170,8 @@ void fields(V& v, ResultsSection::ConvergenceRow& x) {
 template <class V>
 void fields(V& v, ResultsSection::Motion& x) {
   v("t_s", x.t_s, "equal time steps");
-  v("s_m", x.s_m, "path position");
-  v("tip_m", x.tip_m, "tip [x, y] per sample");
+  v("s", x.s, "path position (path.s_unit)");
+  v("tip_m", x.tip_m, "tip [x, y] per sample (m)");
   v("q_rad", x.q_rad, "joint angles per sample");
 }
 template <class V>
@@ -176,19 +184,20 @@ void fields(V& v, ResultsSection::GridConvergence& x) {
   v("change", x.change, "|duration / refined duration - 1| (null: the refined solve failed)");
   v("tolerance", x.tolerance, "allowed change (check exact_grid_converged)");
   v("passed", x.passed, "change <= tolerance");
-  v("s_range_m", x.s_range_m, "[lo, hi] path range where the change arises");
+  v("s_range", x.s_range, "[lo, hi] path range where the change arises (path.s_unit)");
   v("grid_point_range", x.grid_point_range, "[lo, hi] grid points of that range");
   v("share", x.share, "share of the change from that range");
-  v("max_sd_m_s", x.max_sd_m_s, "largest path speed there");
-  v("min_abs_sin_q2", x.min_abs_sin_q2, "smallest |sin q2| there");
-  v("path_min_abs_sin_q2", x.path_min_abs_sin_q2, "smallest |sin q2| along the path");
+  v("max_sd", x.max_sd, "largest path speed there (path.s_unit per s)");
+  v("min_abs_sin_q2", x.min_abs_sin_q2, "smallest |sin q2| there (null for a joint-space path)");
+  v("path_min_abs_sin_q2", x.path_min_abs_sin_q2, "smallest |sin q2| along the path (null for a joint-space path)");
   v("text", x.text, "the sentence for the check and the page");
 }
 template <class V>
 void fields(V& v, ResultsSection& x) {
-  v("path", x.path, "the tip path");
-  v("path_length_m", x.path_length_m, "length of the tip path");
-  v("configuration", x.configuration, "elbow configuration (1 or 2)");
+  v("path", x.path, "the path: a tip path (2 links) or a path in joint space");
+  v("path_length", x.path_length, "length of the path (path.s_unit)");
+  v("joints", x.joints, "number of joints of the chain");
+  v("configuration", x.configuration, "elbow configuration of a tip path, 1 or 2 (null for a joint-space path)");
   v("limits", x.limits, "the joint limits");
   v("solvers", x.solvers, "every solver, exact first");
   v("mvc", x.mvc, "the maximum velocity curve on the exact grid");
