@@ -68,6 +68,47 @@ TEST(ChainExportsMujoco, ThreeLinkExactTorquesAreMujocosInverseDynamics) {
   EXPECT_LE(a.torque_rel, 1e-9) << "worst at sample " << a.worst_sample;
 }
 
+TEST(ChainExportsMujoco, SevenLinkJointSpaceLineSolvesAndMujocoAgrees) {
+  // the longest chain armstudy builds: a vertical 7-link arm with point masses, along a
+  // joint-space line; its generated MJCF has 7 hinges and MuJoCo's inverse dynamics agree
+  core::PlanarChain c;
+  for (int i = 0; i < core::kMaxLinks; ++i) c.links.push_back({0.15, 0.4 - 0.04 * i, 0.07, 0.01, 1e-3, true});
+  c.point_masses = {{6, 0.15, 0.0, 0.2}};
+  c.gravity = 9.81;
+  to::Spec spec;
+  spec.chain = core::make_chain(c);
+  spec.space = to::PathSpace::kJoint;
+  spec.joint_path.kind = to::PathKind::kLine;
+  core::JointVector a(7), b(7);
+  a << -2.0, 0.3, 0.2, 0.1, 0.0, -0.1, -0.2;
+  b << -1.0, -0.2, -0.1, 0.2, 0.3, 0.1, 0.0;
+  spec.joint_path.points = {a, b};
+  spec.velocity_limit = core::JointVector::Constant(7, 3.0);
+  spec.torque_limit = core::JointVector::Constant(7, 20.0);
+  spec.exact.grid_points = 200;
+  spec.dp.segments = 10;
+  spec.dp.levels = 50;
+  spec.dp.convergence_segments = {};
+  spec.complex.enabled = false;
+  const to::Result r = to::solve(spec);
+  ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
+  for (const studies::Check& ch : to::checks(r)) EXPECT_TRUE(ch.passed) << ch.name << ": " << ch.value;
+  const to::MotionSamples& s = r.solvers.front().samples;
+  ASSERT_EQ(s.q.rows(), 7);
+  std::vector<core::JointVector> q, qd, qdd, tau;
+  for (int k = 0; k < s.q.cols(); ++k) {
+    q.emplace_back(s.q.col(k));
+    qd.emplace_back(s.qd.col(k));
+    qdd.emplace_back(s.qdd.col(k));
+    tau.emplace_back(s.tau.col(k));
+  }
+  EXPECT_LE(mujoco_agreement(spec.chain, q, qd, qdd, tau).torque_rel, 1e-9);
+  const MujocoModel mm(write_mjcf(spec.chain), "7 links");
+  EXPECT_EQ(mm.model()->njnt, 7);
+  EXPECT_EQ(mm.model()->nu, 7);
+  expect_case_inertials(spec.chain, mm.model());
+}
+
 TEST(ChainExportsMujoco, ModelXmlHasTheCasesInertialsAndKeyframesAtTheStripsPoses) {
   const to::Spec spec = testing::three_link_spec();
   const to::Result r = to::solve(spec);
