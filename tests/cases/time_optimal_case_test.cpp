@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cases/arm_loader.hpp"
 #include "core/dynamics.hpp"
 
@@ -147,6 +149,19 @@ TEST(TimeOptimalCase, AJointPathRefusesATipPathBesideItAnElbowAndMissingLimits) 
   EXPECT_EQ(two.errors, "");
   EXPECT_EQ(two.spec.space, to::PathSpace::kJoint);
   EXPECT_EQ(two.spec.velocity_limit, to::joint_pair(3.0, 4.0));
+}
+
+TEST(TimeOptimalCase, ARefusedArmIsReportedOnceNotAgainstEveryWaypointAndLimit) {
+  // 8 links (one more than a chain may have): the joint path and the limits are not judged
+  // against the 2-link fallback arm, and nothing is read past a joint vector's capacity
+  std::string yaml = "arm:\n  links:\n";
+  for (int i = 0; i < 8; ++i) yaml += "    - {length: 0.1, mass: 1.0}\n";
+  const std::string eight = "[0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1]";
+  yaml += "time_optimal:\n  joint_path: {points_rad: [" + eight + ", [0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2]]}\n"
+          "  velocity_limit_rad_s: " + eight + "\n  torque_limit_Nm: " + eight + "\n";
+  const Loaded l = load(yaml);
+  EXPECT_NE(l.errors.find("'arm.links' has 8 links; expected 1 to 7 links"), std::string::npos) << l.errors;
+  EXPECT_EQ(std::count(l.errors.begin(), l.errors.end(), '\n'), 1) << l.errors;
 }
 
 }  // namespace
