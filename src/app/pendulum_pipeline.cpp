@@ -9,6 +9,11 @@
 #include "app/study_entry.hpp"
 #include "report/study_sections.hpp"
 #include "report/results_fields.hpp"
+#include "app/exports_json.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
+#include "report/motion_csv.hpp"
+#include "scene/model_export.hpp"
 #include "scene/pendulum_frames.hpp"
 #include "studies/pendulum/results_section.hpp"
 
@@ -87,6 +92,40 @@ class PendulumRun final : public StudyRun {
                 spec_.drift_tolerance};
     s.run_time_s = r.run_time;
     return s;
+  }
+
+  // model.xml (the frames' scene, keyframes at the snapshots) and the motion as CSV
+  json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
+    json out = json::array();
+    if (result_.status != studies::Status::kSolved || result_.t.empty()) return out;
+    const core::PlanarChain chain = studies::make_tray_arm(spec_.arm);
+    const scene::ArmScene sc = scene::pendulum_scene(spec_, result_, info.render);
+    const auto keys = scene::pendulum_snapshots(result_);
+    const std::string motion = "the pendulum's snapshots (pendulum_snapshots_strip.png)";
+    out.push_back(model_export_entry(scene::write_model_xml(dir, chain, sc.mjcf, keys, motion, info.path),
+                                     motion, keys));
+    report::MotionCsv t;
+    t.file = "motion_pendulum.csv";
+    t.what = "the simulated pendulum (joints 1 and 2 locked, the tray and the ball free; the "
+             "integrator's accepted steps): time, the four joint angles and rates, kinetic, potential "
+             "and total energy, the ball's centre; no joint torques (the locked joints hold still, the "
+             "others are passive) and no motors";
+    t.add("t", "s", result_.t);
+    t.add_joints("q", "rad", result_.q);
+    t.add_joints("qd", "rad/s", result_.qd);
+    if (result_.kinetic.size() == result_.t.size()) {
+      t.add("kinetic_energy", "J", result_.kinetic);
+      t.add("potential_energy", "J", result_.potential);
+      t.add("total_energy", "J", result_.total);
+    }
+    if (result_.ball.size() == result_.t.size()) {
+      t.add_joints("ball_", "m", result_.ball);
+      t.columns[t.columns.size() - 2].name = "ball_x";
+      t.columns[t.columns.size() - 1].name = "ball_y";
+    }
+    report::write_motion_csv(dir, t);
+    out.push_back(csv_export_entry(t, "pendulum"));
+    return out;
   }
 
   // frames: snapshots every snapshot_step, strip and locus (src/scene)

@@ -51,6 +51,12 @@ class StudyRun {
                                           const cases::CaseInfo& info) {
     return {};
   }
+  /// Writes the files other tools open into `dir` (model.xml, one motion CSV per solver or
+  /// optimiser) and returns results.json's "exports" entry: one object per file naming what
+  /// it holds. Called when the study is solved, with or without rendering, before the report.
+  virtual nlohmann::json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) {
+    return nlohmann::json::array();
+  }
 };
 
 /// A study's sections of its case page, built from the whole results.json (the study's

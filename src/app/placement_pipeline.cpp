@@ -11,6 +11,12 @@
 #include "app/replay_json.hpp"
 #include "report/study_sections.hpp"
 #include "report/results_fields.hpp"
+#include "app/exports_json.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
+#include "app/replay_json.hpp"
+#include "report/motion_csv.hpp"
+#include "scene/model_export.hpp"
 #include "scene/placement_frames.hpp"
 #include "scene/replay_frames.hpp"
 #include "scene/study_replays.hpp"
@@ -151,6 +157,54 @@ class PlacementRun final : public StudyRun {
       k.push_back({"candidates_singular", double(c.singular), ""});
     }
     return k;
+  }
+
+  // model.xml (the least-energy optimum's scene, keyframes at its strip's times) and one
+  // CSV per optimum
+  nlohmann::json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
+    json out = json::array();
+    const pl::ProgramConfig* best = nullptr;
+    for (const pl::ProgramConfig& pc : result_.cases) {
+      if (!pc.found || pc.series.t.size() < 2) continue;
+      const bool regular = !pc.refined.convergence.singular();
+      if (!best || (regular && (best->refined.convergence.singular() ||
+                                pc.refined.reported_metrics().energy < best->refined.reported_metrics().energy)))
+        best = &pc;
+    }
+    if (!best) return out;
+    const auto name = [](const pl::ProgramConfig& pc) {
+      return "placement_" + std::string(core::program_name(pc.program)) + "_c" + std::to_string(pc.configuration);
+    };
+    const std::string motion = "the " + prog(best->program) + " optimum, configuration " +
+                               std::to_string(best->configuration) + " (" + name(*best) +
+                               "_strip.png, drawn in the line's frame: the arm at its optimal root)";
+    const scene::ArmScene sc = scene::placement_scene(spec_, *best, info.render);
+    const auto keys = scene::strip_keyframes(scene::placement_motion(*best), info.render.frames);
+    out.push_back(model_export_entry(scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path),
+                                     motion, keys));
+    for (const pl::ProgramConfig& pc : result_.cases) {
+      if (!pc.found || pc.series.t.size() < 2) continue;
+      const pl::TimeSeries& ser = pc.series;
+      report::MotionCsv t;
+      t.file = "motion_" + name(pc) + ".csv";
+      t.what = "the refined " + prog(pc.program) + " optimum, configuration " + std::to_string(pc.configuration) +
+               " (results.json placement.optima[].series): time, tip in the arm's frame, joint angles, rates, "
+               "accelerations, torques, signed joint powers and the energy consumed so far (integral of "
+               "|P1| + |P2|); no motors";
+      t.add("t", "s", ser.t);
+      t.add_joints("tip_", "m", ser.tip);
+      t.columns[t.columns.size() - 2].name = "tip_x";
+      t.columns[t.columns.size() - 1].name = "tip_y";
+      t.add_joints("q", "rad", ser.q);
+      t.add_joints("qd", "rad/s", ser.qd);
+      t.add_joints("qdd", "rad/s^2", ser.qdd);
+      t.add_joints("tau", "N m", ser.tau);
+      t.add_joints("power", "W", ser.power);
+      t.add("energy", "J", ser.energy);
+      report::write_motion_csv(dir, t);
+      out.push_back(csv_export_entry(t, prog(pc.program) + "." + std::to_string(pc.configuration)));
+    }
+    return out;
   }
 
   // frames: the optimum of every program and configuration (src/scene)

@@ -152,6 +152,9 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       frames = c.run->render(tmp_dir, c.info);
     }
     j["frames"] = frames;
+    // files other tools open (model.xml, motion CSVs), listed under "files" as well
+    j["exports"] = status == studies::Status::kSolved ? c.run->write_exports(tmp_dir, c.info)
+                                                      : nlohmann::json::array();
     if (!frames.empty()) {
       const scene::GlInfo gl = scene::gl_info();
       j["provenance"]["gl_renderer"] = gl.renderer;

@@ -10,6 +10,11 @@
 #include "app/study_entry.hpp"
 #include "report/study_sections.hpp"
 #include "report/results_fields.hpp"
+#include "app/exports_json.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
+#include "report/motion_csv.hpp"
+#include "scene/model_export.hpp"
 #include "scene/throwing_frames.hpp"
 #include "studies/throwing/results_section.hpp"
 
@@ -385,6 +390,54 @@ class ThrowingRun final : public StudyRun {
                      r.rk4_theta3_error};
     o.run_time_s = r.run_time;
     return j;
+  }
+
+  // model.xml (the IDP motion's scene, keyframes at its strip's times) and one CSV per motion
+  json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
+    json out = json::array();
+    if (result_.status != st::Status::kSolved || result_.idp.series.t.size() < 2) return out;
+    const scene::ArmScene sc = scene::throwing_scene(spec_, result_, info.render);
+    const auto keys = scene::strip_keyframes(scene::throwing_motion(result_.idp.series), info.render.frames);
+    const std::string motion = "the IDP optimum (throwing_idp_strip.png)";
+    out.push_back(model_export_entry(scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path),
+                                     motion, keys));
+    const auto csv = [&](const st::ThrowMotion& tm, const std::string& name, const std::string& what) {
+      const st::ThrowSeries& s = tm.series;
+      if (s.t.size() < 2) return;
+      const size_t n = s.t.size();
+      report::MotionCsv t;
+      t.file = "motion_" + name + ".csv";
+      t.what = what + ": time, the four joint angles, rates and accelerations, the two motors' torques, "
+                      "voltages, currents and electrical powers, the energy consumed so far, the ball's centre "
+                      "and the tray's normal and tangential force on it (a stage boundary appears twice, once "
+                      "per stage)";
+      t.add("t", "s", s.t);
+      t.add_joints("q", "rad", s.q);
+      t.add_joints("qd", "rad/s", s.qd);
+      if (s.qdd.size() == n) t.add_joints("qdd", "rad/s^2", s.qdd);
+      const auto motors = [&](const std::vector<Eigen::Vector2d>& v, const std::string& col, const std::string& unit) {
+        if (v.size() == n) t.add_joints(col, unit, v);
+      };
+      motors(s.tau_m, "motor_torque", "N m");
+      motors(s.voltage, "voltage", "V");
+      motors(s.current, "current", "A");
+      motors(s.power, "power", "W");
+      if (s.energy.size() == n) t.add("energy", "J", s.energy);
+      if (s.ball.size() == n) {
+        t.add_joints("ball_", "m", s.ball);
+        t.columns[t.columns.size() - 2].name = "ball_x";
+        t.columns[t.columns.size() - 1].name = "ball_y";
+      }
+      if (s.normal_force.size() == n) t.add("normal_force", "N", s.normal_force);
+      if (s.tangential_force.size() == n) t.add("tangential_force", "N", s.tangential_force);
+      report::write_motion_csv(dir, t);
+      out.push_back(csv_export_entry(t, name));
+    };
+    csv(result_.idp, "idp", "the IDP optimum (iterative dynamic programming, the best seed)");
+    csv(result_.reference, "reference", "the feasible reference motion the saving is measured from");
+    csv(result_.initial, "initial", "the initial motion (eq. 8 profile, raw)");
+    if (result_.nlopt_ran) csv(result_.nlopt, "nlopt", "SLSQP's answer (its final point)");
+    return out;
   }
 
   // frames: the IDP optimum's strip and locus (Fig. 7) and the flight (src/scene)

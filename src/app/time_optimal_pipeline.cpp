@@ -11,6 +11,12 @@
 #include "app/replay_json.hpp"
 #include "report/study_sections.hpp"
 #include "report/results_fields.hpp"
+#include "app/json_numbers.hpp"
+#include "app/pipeline.hpp"
+#include "app/exports_json.hpp"
+#include "app/replay_json.hpp"
+#include "report/motion_csv.hpp"
+#include "scene/model_export.hpp"
 #include "scene/mujoco_check.hpp"
 #include "scene/replay_frames.hpp"
 #include "scene/study_replays.hpp"
@@ -150,6 +156,9 @@ class TimeOptimalRun final : public StudyRun {
     return files;
   }
 
+  nlohmann::json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override;
+
+
  private:
   to::Spec spec_;
   to::Result result_;
@@ -206,6 +215,38 @@ Section TimeOptimalRun::section() const {
   }
   if (replay_) o.mujoco_replay = replay_section(*replay_);
   return o;
+}
+
+// model.xml (the frames' scene, keyframes at the strip's times) and one CSV per solver
+json TimeOptimalRun::write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) {
+  json out = json::array();
+  if (result_.status != studies::Status::kSolved) return out;
+  const scene::ArmScene sc = scene::time_optimal_scene(spec_, result_, info.render);
+  const auto keys = scene::strip_keyframes(scene::time_optimal_motion(result_), info.render.frames);
+  const std::string motion = "the exact (reachability) solution";
+  out.push_back(model_export_entry(scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path),
+                                   motion, keys));
+  const std::string u = result_.s_unit();
+  for (const to::SolverResult& r : result_.solvers) {
+    if (!r.solved) continue;
+    const to::MotionSamples& s = r.samples;
+    report::MotionCsv t;
+    t.file = "motion_" + r.name + ".csv";
+    t.what = "the " + r.name + " solution (" + r.method + "), the samples of results.json time_optimal.solvers[" +
+             r.name + "].samples: time, path position s, speed s' and acceleration s'' (s in " + u +
+             "), joint angles, rates, accelerations and torques (inverse dynamics)";
+    t.add("t", "s", s.t);
+    t.add("s", u, s.s);
+    t.add("sd", u + "/s", s.sd);
+    t.add("sdd", u + "/s^2", s.sdd);
+    t.add_rows("q", "rad", s.q);
+    t.add_rows("qd", "rad/s", s.qd);
+    t.add_rows("qdd", "rad/s^2", s.qdd);
+    t.add_rows("tau", "N m", s.tau);
+    report::write_motion_csv(dir, t);
+    out.push_back(csv_export_entry(t, r.name));
+  }
+  return out;
 }
 
 std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {

@@ -35,6 +35,12 @@ std::string kind_text(to::PathKind k) {
 // optional ranges (the whole path must stay inside them)
 void load_joint_path(Map& path, int joints, to::Spec* spec) {
   spec->space = to::PathSpace::kJoint;
+  if (joints < 1 || joints > core::kMaxLinks) {
+    // the arm is already refused (arm.links, or 0 when it was): no joints to read against
+    for (const char* k : {"kind", "points_rad", "range_rad"}) path.get(k);
+    path.finish();
+    return;
+  }
   const auto kind = path.choice("kind", {"line", "polyline", "spline"});
   spec->joint_path.kind = !kind || *kind == "line" ? to::PathKind::kLine
                           : *kind == "polyline"   ? to::PathKind::kPolyline
@@ -255,7 +261,7 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
     t->error("joint_path", "'time_optimal' has both 'path' (a tip path) and 'joint_path'; expected one of them");
     t->get("path");
   } else if (t->has("joint_path")) {
-    if (auto jp = t->map("joint_path")) load_joint_path(*jp, joints, &spec);
+    if (auto jp = t->map("joint_path")) load_joint_path(*jp, arm_ok ? joints : 0, &spec);
     spec.space = to::PathSpace::kJoint;
     if (t->has("configuration"))
       t->error("configuration", "'time_optimal.configuration' chooses the elbow of a tip path's inverse "
@@ -277,12 +283,17 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
     }
   }
   spec.configuration = t->integer_or("configuration", 1, 1, 2);
-  const int nl = std::max(1, joints);
-  if (const auto v = joint_limits(*t, "velocity_limit_rad_s", "rad/s", nl)) spec.velocity_limit = *v;
-  if (const auto v = joint_limits(*t, "torque_limit_Nm", "N m", nl)) spec.torque_limit = *v;
-  if (const auto v = joint_limits(*t, "acceleration_limit_rad_s2", "rad/s^2", nl)) spec.acceleration_limit = *v;
+  // per-joint limits are judged against a valid arm only (a refused arm is reported once)
+  if (arm_ok) {
+    const int nl = std::clamp(joints, 1, core::kMaxLinks);
+    if (const auto v = joint_limits(*t, "velocity_limit_rad_s", "rad/s", nl)) spec.velocity_limit = *v;
+    if (const auto v = joint_limits(*t, "torque_limit_Nm", "N m", nl)) spec.torque_limit = *v;
+    if (const auto v = joint_limits(*t, "acceleration_limit_rad_s2", "rad/s^2", nl)) spec.acceleration_limit = *v;
+  } else {
+    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm", "acceleration_limit_rad_s2"}) t->get(key);
+  }
   // the default limits are the 2-link source's: a longer chain states its own
-  if (joints != 2) {
+  if (arm_ok && joints != 2) {
     for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm"})
       if (!t->has(key))
         t->error_here(std::string("missing required key 'time_optimal.") + key + "' for an arm of " +

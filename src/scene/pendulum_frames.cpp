@@ -10,17 +10,18 @@
 
 namespace armstudy::scene {
 
-std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spec,
-                                                const studies::PendulumResult& result,
-                                                const cases::RenderOptions& options,
-                                                const std::filesystem::path& dir) {
-  if (result.snapshot_index.empty()) return {};
-  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+std::vector<PoseSample> pendulum_snapshots(const studies::PendulumResult& result) {
   std::vector<PoseSample> snaps;
   for (size_t k = 0; k < result.snapshot_index.size(); ++k) {
     const int i = result.snapshot_index[k];
     snaps.push_back({result.t[i], result.q[i], result.qd[i]});
   }
+  return snaps;
+}
+
+ArmScene pendulum_scene(const studies::PendulumSpec& spec, const studies::PendulumResult& result,
+                        const cases::RenderOptions& options) {
+  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
   // frame the tray's swing: hinge, cup and ball over every sample, with room for the cup
   const double rb = spec.arm.rb, cup = spec.arm.r4 + spec.arm.rb;
   ViewBox v{1e9, -1e9, 1e9, -1e9};
@@ -42,7 +43,16 @@ std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spe
   decor.offwidth = options.width;
   decor.offheight = options.height;
   decor.view = v;
-  SceneRenderer sr(tray_arm_scene(chain, decor), "pendulum scene", render_settings(options));
+  return tray_arm_scene(chain, decor);
+}
+
+std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spec,
+                                                const studies::PendulumResult& result,
+                                                const cases::RenderOptions& options,
+                                                const std::filesystem::path& dir) {
+  if (result.snapshot_index.empty()) return {};
+  const std::vector<PoseSample> snaps = pendulum_snapshots(result);
+  SceneRenderer sr(pendulum_scene(spec, result, options), "pendulum scene", render_settings(options));
 
   std::vector<std::string> files;
   char title[160];

@@ -8,9 +8,18 @@
 #include <vector>
 
 #include "cases/case_info.hpp"
+#include "scene/arm_scene.hpp"
+#include "scene/replay.hpp"
 #include "studies/pendulum/pendulum.hpp"
 
 namespace armstudy::scene {
+
+/// The snapshots the strip shows (every snapshot_step).
+std::vector<PoseSample> pendulum_snapshots(const studies::PendulumResult& result);
+
+/// The scene of the frames (the tray arm framing the tray's swing).
+ArmScene pendulum_scene(const studies::PendulumSpec& spec, const studies::PendulumResult& result,
+                        const cases::RenderOptions& options);
 
 /// Writes pendulum_snapshots_strip.png and pendulum_snapshots_locus.png into `dir`; returns
 /// the file names. @throws SceneError.

@@ -9,32 +9,44 @@
 namespace armstudy::scene {
 namespace pl = studies::placement;
 
+ArmScene placement_scene(const pl::Spec& spec, const pl::ProgramConfig& pc,
+                         const cases::RenderOptions& options) {
+  // the line frame P: origin at S, x along the line; the arm frame A is rotated by phi
+  const Eigen::Vector2d S = pc.placement.start, F = pc.placement.end;
+  const double phi = std::atan2(F.y() - S.y(), F.x() - S.x());
+  const Eigen::Rotation2Dd to_P(-phi);
+  core::PlanarChain chain = spec.chain;
+  chain.base = to_P * (chain.base - S);
+  chain.base_angle = chain.base_angle - phi;
+  TableDecor decor;
+  decor.task_start = Eigen::Vector2d::Zero();
+  decor.task_end = to_P * (F - S);
+  decor.offwidth = options.width;
+  decor.offheight = options.height;
+  return horizontal_arm_scene(chain, decor);
+}
+
+SampledMotion placement_motion(const pl::ProgramConfig& pc) {
+  SampledMotion m;
+  m.t = pc.series.t;
+  for (size_t k = 0; k < pc.series.t.size(); ++k) {
+    m.q.push_back(core::JointVector(pc.series.q[k]));
+    m.qd.push_back(core::JointVector(pc.series.qd[k]));
+  }
+  return m;
+}
+
 std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl::Result& result,
                                                  const cases::RenderOptions& options,
                                                  const std::filesystem::path& dir) {
   std::vector<std::string> files;
   for (const pl::ProgramConfig& pc : result.cases) {
     if (!pc.found || pc.series.t.size() < 2) continue;
-    // the line frame P: origin at S, x along the line; the arm frame A is rotated by phi
     const Eigen::Vector2d S = pc.placement.start, F = pc.placement.end;
     const double phi = std::atan2(F.y() - S.y(), F.x() - S.x());
     const Eigen::Rotation2Dd to_P(-phi);
-    core::PlanarChain chain = spec.chain;
-    chain.base = to_P * (chain.base - S);
-    chain.base_angle = chain.base_angle - phi;
-    TableDecor decor;
-    decor.task_start = Eigen::Vector2d::Zero();
-    decor.task_end = to_P * (F - S);
-    decor.offwidth = options.width;
-    decor.offheight = options.height;
-    SceneRenderer sr(horizontal_arm_scene(chain, decor), "placement scene", render_settings(options));
-
-    SampledMotion m;
-    m.t = pc.series.t;
-    for (size_t k = 0; k < pc.series.t.size(); ++k) {
-      m.q.push_back(core::JointVector(pc.series.q[k]));
-      m.qd.push_back(core::JointVector(pc.series.qd[k]));
-    }
+    SceneRenderer sr(placement_scene(spec, pc, options), "placement scene", render_settings(options));
+    const SampledMotion m = placement_motion(pc);
     std::vector<Eigen::Vector2d> path;
     for (const Eigen::Vector2d& p : pc.series.tip) path.push_back(to_P * (p - S));
 

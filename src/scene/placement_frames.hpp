@@ -8,10 +8,20 @@
 #include <vector>
 
 #include "cases/case_info.hpp"
+#include "scene/arm_scene.hpp"
+#include "scene/study_frames.hpp"
 #include "studies/placement/result.hpp"
 #include "studies/placement/spec.hpp"
 
 namespace armstudy::scene {
+
+/// The scene one optimum's frames are drawn in (line frame P, the arm at its optimal root).
+ArmScene placement_scene(const studies::placement::Spec& spec,
+                         const studies::placement::ProgramConfig& pc,
+                         const cases::RenderOptions& options);
+
+/// The optimum's motion as its strip and locus show it.
+SampledMotion placement_motion(const studies::placement::ProgramConfig& pc);
 
 /// Writes placement_<program>_c<configuration>_{strip,locus}.png into `dir` and returns
 /// the file names. @throws SceneError (ModelError for an unloadable model).

@@ -8,13 +8,7 @@
 
 namespace armstudy::scene {
 
-std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
-                                                const studies::ThrowingResult& result,
-                                                const cases::RenderOptions& options,
-                                                const std::filesystem::path& dir) {
-  const studies::ThrowSeries& s = result.idp.series;
-  if (s.t.size() < 2) return {};
-  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+SampledMotion throwing_motion(const studies::ThrowSeries& s) {
   SampledMotion m;
   // the series repeats each interior stage boundary: keep strictly increasing times
   for (size_t k = 0; k < s.t.size(); ++k) {
@@ -23,11 +17,12 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
     m.q.push_back(s.q[k]);
     m.qd.push_back(s.qd[k]);
   }
-  std::vector<std::string> files;
-  const std::vector<Eigen::Vector2d>& flight = result.flight.path;
-  char title[200];
-  std::snprintf(title, sizeof title, "throwing, IDP optimum: %.3f J (eq. 7) in %.2f s",
-                result.idp.evaluation.energy, spec.tf);
+  return m;
+}
+
+namespace {
+TrayDecor throwing_decor(const studies::ThrowingSpec& spec, const core::PlanarChain& chain,
+                         const SampledMotion& m, const cases::RenderOptions& options) {
   TrayDecor decor;
   decor.ball_radius = spec.arm.rb;
   decor.cup_width = spec.tray_width;
@@ -38,6 +33,31 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
   ViewBox motion_box = fit_view(chain, m.q, {}, pad);
   motion_box.y_max += 0.12 * (motion_box.y_max - motion_box.y_min);
   decor.view = motion_box;
+  return decor;
+}
+}  // namespace
+
+ArmScene throwing_scene(const studies::ThrowingSpec& spec, const studies::ThrowingResult& result,
+                        const cases::RenderOptions& options) {
+  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+  return tray_arm_scene(chain, throwing_decor(spec, chain, throwing_motion(result.idp.series), options));
+}
+
+std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
+                                                const studies::ThrowingResult& result,
+                                                const cases::RenderOptions& options,
+                                                const std::filesystem::path& dir) {
+  const studies::ThrowSeries& s = result.idp.series;
+  if (s.t.size() < 2) return {};
+  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+  const SampledMotion m = throwing_motion(s);
+  std::vector<std::string> files;
+  const std::vector<Eigen::Vector2d>& flight = result.flight.path;
+  char title[200];
+  std::snprintf(title, sizeof title, "throwing, IDP optimum: %.3f J (eq. 7) in %.2f s",
+                result.idp.evaluation.energy, spec.tf);
+  const double pad = spec.arm.r4 + 2 * spec.arm.rb + 0.02;
+  TrayDecor decor = throwing_decor(spec, chain, m, options);
   {
     SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
     files.push_back(write_strip(sr, m, options.frames, title, dir, "throwing_idp"));

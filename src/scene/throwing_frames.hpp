@@ -8,9 +8,19 @@
 #include <vector>
 
 #include "cases/case_info.hpp"
+#include "scene/arm_scene.hpp"
+#include "scene/study_frames.hpp"
 #include "studies/throwing/throwing.hpp"
 
 namespace armstudy::scene {
+
+/// A motion's series with strictly increasing times (the series repeats every interior
+/// stage boundary), as the strip and locus show it.
+SampledMotion throwing_motion(const studies::ThrowSeries& series);
+
+/// The scene of the IDP motion's strip and locus (the tray arm framing the motion).
+ArmScene throwing_scene(const studies::ThrowingSpec& spec, const studies::ThrowingResult& result,
+                        const cases::RenderOptions& options);
 
 /// Writes throwing_idp_{strip,locus}.png and throwing_flight_locus.png (when the flight
 /// has a path) into `dir`; returns the file names. @throws SceneError.

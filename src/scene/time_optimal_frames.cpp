@@ -8,20 +8,32 @@
 namespace armstudy::scene {
 namespace to = studies::time_optimal;
 
+ArmScene time_optimal_scene(const to::Spec& spec, const to::Result& result,
+                            const cases::RenderOptions& options) {
+  TableDecor decor;
+  for (int k = 0; k < result.path_p.cols(); ++k) decor.task_path.push_back(result.path_p.col(k));
+  decor.offwidth = options.width;
+  decor.offheight = options.height;
+  return horizontal_arm_scene(spec.chain, decor);
+}
+
+SampledMotion time_optimal_motion(const to::Result& result) {
+  SampledMotion m;
+  m.t = result.motion_t;
+  for (int k = 0; k < result.motion_q.cols(); ++k) m.q.push_back(core::JointVector(result.motion_q.col(k)));
+  if (result.motion_qd.cols() == result.motion_q.cols())
+    for (int k = 0; k < result.motion_qd.cols(); ++k) m.qd.push_back(core::JointVector(result.motion_qd.col(k)));
+  return m;
+}
+
 std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const to::Result& result,
                                                     const cases::RenderOptions& options,
                                                     const std::filesystem::path& dir) {
   const int n = static_cast<int>(result.motion_t.size());
   if (n < 2 || result.motion_q.cols() != n) return {};
-  TableDecor decor;
-  for (int k = 0; k < result.path_p.cols(); ++k) decor.task_path.push_back(result.path_p.col(k));
-  decor.offwidth = options.width;
-  decor.offheight = options.height;
-  SceneRenderer sr(horizontal_arm_scene(spec.chain, decor), "time-optimal scene",
+  SceneRenderer sr(time_optimal_scene(spec, result, options), "time-optimal scene",
                    render_settings(options));
-  SampledMotion m;
-  m.t = result.motion_t;
-  for (int k = 0; k < n; ++k) m.q.push_back(core::JointVector(result.motion_q.col(k)));
+  const SampledMotion m = time_optimal_motion(result);
   std::vector<Eigen::Vector2d> path;
   for (int k = 0; k < result.motion_p.cols(); ++k) path.push_back(result.motion_p.col(k));
   char title[160];

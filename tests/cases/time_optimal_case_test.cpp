@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cases/arm_loader.hpp"
 #include "core/dynamics.hpp"
 
@@ -103,6 +105,63 @@ time_optimal:
 )");
   EXPECT_NE(l.errors.find("expected at least two segments per polyline piece (3 pieces)"), std::string::npos)
       << l.errors;
+}
+
+const char* kThreeLinks =
+    "arm:\n  links:\n    - {length: 0.4, mass: 3.0}\n    - {length: 0.35, mass: 2.0}\n"
+    "    - {length: 0.25, mass: 1.0}\ngravity: 9.81\n";
+
+TEST(TimeOptimalCase, ReadsAJointPathWithItsRangesAndOneLimitPerJoint) {
+  const Loaded l = load(std::string(kThreeLinks) +
+                        "time_optimal:\n  joint_path:\n    kind: spline\n"
+                        "    points_rad: [[-2.3, 0.5, 0.4], [-1.9, 0.2, 0.3], [-0.8, -0.5, -0.4]]\n"
+                        "    range_rad: [[-3, 0], [-1.5, 1.5], [-1.5, 1.5]]\n"
+                        "  velocity_limit_rad_s: [2, 3, 4]\n  torque_limit_Nm: [30, 12, 3]\n"
+                        "  acceleration_limit_rad_s2: [50, 60, 70]\n");
+  ASSERT_EQ(l.errors, "");
+  EXPECT_EQ(l.spec.space, to::PathSpace::kJoint);
+  EXPECT_EQ(l.spec.joint_path.kind, to::PathKind::kSpline);
+  ASSERT_EQ(l.spec.joint_path.points.size(), 3u);
+  EXPECT_EQ(l.spec.joint_path.points[1][2], 0.3);
+  ASSERT_EQ(l.spec.joint_path.range.size(), 3u);
+  EXPECT_EQ(l.spec.joint_path.range[0], Eigen::Vector2d(-3, 0));
+  EXPECT_EQ(l.spec.velocity_limit.size(), 3);
+  EXPECT_EQ(l.spec.torque_limit[2], 3.0);
+  EXPECT_EQ((*l.spec.acceleration_limit)[1], 60.0);
+  EXPECT_EQ(l.spec.chain.num_links(), 3);
+}
+
+TEST(TimeOptimalCase, AJointPathRefusesATipPathBesideItAnElbowAndMissingLimits) {
+  const std::string jp = "  joint_path: {kind: line, points_rad: [[-2.3, 0.5, 0.4], [-0.8, -0.5, -0.4]]}\n";
+  const std::string limits = "  velocity_limit_rad_s: [2, 3, 4]\n  torque_limit_Nm: [30, 12, 3]\n";
+  const auto has = [](const Loaded& l, const std::string& what) { return l.errors.find(what) != std::string::npos; };
+  const Loaded both = load(std::string(kThreeLinks) + "time_optimal:\n" + jp + limits +
+                           "  path: {points_m: [[0.3, 0.1], [0.0, 0.5]]}\n");
+  EXPECT_TRUE(has(both, "has both 'path' (a tip path) and 'joint_path'")) << both.errors;
+  const Loaded elbow = load(std::string(kThreeLinks) + "time_optimal:\n" + jp + limits + "  configuration: 2\n");
+  EXPECT_TRUE(has(elbow, "'time_optimal.configuration' chooses the elbow")) << elbow.errors;
+  // a 3-link arm has no default limits (the defaults are the 2-link source's)
+  const Loaded bare = load(std::string(kThreeLinks) + "time_optimal:\n" + jp);
+  EXPECT_TRUE(has(bare, "missing required key 'time_optimal.velocity_limit_rad_s' for an arm of 3 links")) << bare.errors;
+  EXPECT_TRUE(has(bare, "missing required key 'time_optimal.torque_limit_Nm'")) << bare.errors;
+  // a 2-link arm's joint path takes the default limits
+  const Loaded two = load("time_optimal:\n  joint_path: {points_rad: [[0.1, 1.0], [0.8, 0.4]]}\n");
+  EXPECT_EQ(two.errors, "");
+  EXPECT_EQ(two.spec.space, to::PathSpace::kJoint);
+  EXPECT_EQ(two.spec.velocity_limit, to::joint_pair(3.0, 4.0));
+}
+
+TEST(TimeOptimalCase, ARefusedArmIsReportedOnceNotAgainstEveryWaypointAndLimit) {
+  // 8 links (one more than a chain may have): the joint path and the limits are not judged
+  // against the 2-link fallback arm, and nothing is read past a joint vector's capacity
+  std::string yaml = "arm:\n  links:\n";
+  for (int i = 0; i < 8; ++i) yaml += "    - {length: 0.1, mass: 1.0}\n";
+  const std::string eight = "[0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1]";
+  yaml += "time_optimal:\n  joint_path: {points_rad: [" + eight + ", [0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2]]}\n"
+          "  velocity_limit_rad_s: " + eight + "\n  torque_limit_Nm: " + eight + "\n";
+  const Loaded l = load(yaml);
+  EXPECT_NE(l.errors.find("'arm.links' has 8 links; expected 1 to 7 links"), std::string::npos) << l.errors;
+  EXPECT_EQ(std::count(l.errors.begin(), l.errors.end(), '\n'), 1) << l.errors;
 }
 
 }  // namespace

@@ -108,7 +108,8 @@ struct Result {
   /// the exact solution at equal time steps (renderer): t, s, tip and joint angles
   std::vector<double> motion_t, motion_s;
   Eigen::Matrix2Xd motion_p;
-  Eigen::MatrixXd motion_q;  ///< (joints x steps)
+  Eigen::MatrixXd motion_q;   ///< (joints x steps) rad
+  Eigen::MatrixXd motion_qd;  ///< (joints x steps) rad/s
   /// the path at the exact grid (for plots): tip points
   Eigen::Matrix2Xd path_p;
   Limits limits;

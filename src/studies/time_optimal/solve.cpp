@@ -413,6 +413,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.motion_s.resize(steps + 1);
   res.motion_p.resize(2, steps + 1);
   res.motion_q.resize(nj, steps + 1);
+  res.motion_qd.resize(nj, steps + 1);
   size_t k = 0;
   for (int i = 0; i <= steps; ++i) {
     const double t = exact.duration * i / steps;
@@ -429,6 +430,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     res.motion_s[i] = s;
     res.motion_p.col(i) = jp.p;
     res.motion_q.col(i) = jp.q;
+    res.motion_qd.col(i) = jp.dq * std::max(0.0, exact.node_sd[k] + u * tau);
   }
 
   res.status = Status::kSolved;
