@@ -78,10 +78,11 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
   out.info.description = root.string_or("description", "");
   if (const auto e = root.choice("expect", {"solved", "unsolvable"})) out.info.expect_unsolvable = *e == "unsolvable";
   if (auto r = root.map("render")) {
-    out.info.render.width = r->integer_or("width", 640, 64, 4096);
-    out.info.render.height = r->integer_or("height", 480, 64, 4096);
-    out.info.render.frames = r->integer_or("frames", 6, 1, 24);
-    out.info.render.shadows = r->boolean_or("shadows", false);
+    const cases::RenderOptions defaults;  // each default written once, in RenderOptions
+    out.info.render.width = r->integer_or("width", defaults.width, 64, 4096);
+    out.info.render.height = r->integer_or("height", defaults.height, 64, 4096);
+    out.info.render.frames = r->integer_or("frames", defaults.frames, 1, 24);
+    out.info.render.shadows = r->boolean_or("shadows", defaults.shadows);
     r->finish();
   }
   if (auto sw = root.map("sweep")) {

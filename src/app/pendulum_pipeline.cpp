@@ -25,15 +25,15 @@ constexpr double kDeg = core::kPi / 180.0;
 std::array<double, 2> xy(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
 std::vector<double> vec(const core::JointVector& v) { return {v.data(), v.data() + v.size()}; }
 
-class PendulumRun final : public StudyRun {
+class PendulumRun final
+    : public TypedStudyRun<studies::PendulumSpec, studies::PendulumResult, studies::PendulumResultsSection> {
  public:
-  explicit PendulumRun(studies::PendulumSpec spec) : spec_(std::move(spec)) {}
+  using TypedStudyRun::TypedStudyRun;
 
   studies::Status solve(const studies::ProgressFn& progress) override {
     result_ = studies::solve_pendulum(spec_, progress);
     return result_.status;
   }
-  std::string message() const override { return result_.message; }
 
   std::vector<studies::Check> checks() const override {
     if (result_.status != studies::Status::kSolved) return {};
@@ -50,10 +50,7 @@ class PendulumRun final : public StudyRun {
             {"integrator_steps", static_cast<double>(result_.steps_accepted), ""}};
   }
 
-  json results() const override { return report::to_json(section()); }
-
-  // the typed results.json section (studies/pendulum/results_section.hpp)
-  studies::PendulumResultsSection section() const {
+  studies::PendulumResultsSection section() const override {
     const auto& a = spec_.arm;
     const auto& r = result_;
     studies::PendulumResultsSection s;
@@ -133,10 +130,6 @@ class PendulumRun final : public StudyRun {
                                   const cases::CaseInfo& info) override {
     return scene::render_pendulum_frames(spec_, result_, info.render, dir);
   }
-
- private:
-  studies::PendulumSpec spec_;
-  studies::PendulumResult result_;
 };
 
 std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {

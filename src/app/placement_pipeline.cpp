@@ -108,9 +108,9 @@ Section::Decision decision_section(const pl::Spec& spec, const pl::Decision& d) 
   return o;
 }
 
-class PlacementRun final : public StudyRun {
+class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
  public:
-  explicit PlacementRun(pl::Spec spec) : spec_(std::move(spec)) {}
+  using TypedStudyRun::TypedStudyRun;
 
   studies::Status solve(const studies::ProgressFn& progress) override {
     result_ = pl::solve(spec_, progress);
@@ -121,7 +121,6 @@ class PlacementRun final : public StudyRun {
     }
     return result_.status;
   }
-  std::string message() const override { return result_.message; }
   std::vector<studies::Check> checks() const override {
     std::vector<studies::Check> c = result_.checks;
     for (const scene::PlacementReplay& r : replays_) {
@@ -133,9 +132,7 @@ class PlacementRun final : public StudyRun {
     }
     return c;
   }
-  nlohmann::json results() const override;
-  /// the typed results.json section (studies/placement/results_section.hpp)
-  pl::ResultsSection section() const;
+  Section section() const override;
 
   // per program and configuration: the refined optimum's energy and root location
   std::vector<KeyFigure> key_figures() const override {
@@ -217,12 +214,8 @@ class PlacementRun final : public StudyRun {
   }
 
  private:
-  pl::Spec spec_;
-  pl::Result result_;
   std::vector<scene::PlacementReplay> replays_;
 };
-
-json PlacementRun::results() const { return report::to_json(section()); }
 
 Section PlacementRun::section() const {
   const pl::Result& r = result_;

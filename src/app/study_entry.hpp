@@ -7,6 +7,23 @@
 
 namespace armstudy::app {
 
+/// What every study's StudyRun has the same way: its spec, its result (with the message) and
+/// results() written from its typed results.json section. A study derives from it and
+/// writes solve(), section() and what it adds (checks, key figures, frames).
+template <class Spec, class Result, class Section>
+class TypedStudyRun : public StudyRun {
+ public:
+  explicit TypedStudyRun(Spec spec) : spec_(std::move(spec)) {}
+  std::string message() const override { return result_.message; }
+  nlohmann::json results() const final { return report::to_json(section()); }
+  /// The study's section of results.json, typed (studies/<study>/results_section.hpp).
+  virtual Section section() const = 0;
+
+ protected:
+  Spec spec_;
+  Result result_;
+};
+
 /// The record of `study`, whose results.json section is `Section`.
 template <class Section>
 StudyEntry study_entry(std::string_view study, std::string_view summary, StudyEntry::Loader load,

@@ -113,15 +113,14 @@ Section::Motion motion_of(const st::ThrowingSpec& sp, const st::ThrowMotion& m) 
   return j;
 }
 
-class ThrowingRun final : public StudyRun {
+class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingResult, Section> {
  public:
-  explicit ThrowingRun(st::ThrowingSpec spec) : spec_(std::move(spec)) {}
+  using TypedStudyRun::TypedStudyRun;
 
   st::Status solve(const st::ProgressFn& progress) override {
     result_ = st::solve_throwing(spec_, progress);
     return result_.status;
   }
-  std::string message() const override { return result_.message; }
 
   std::vector<st::Check> checks() const override {
     const auto& r = result_;
@@ -206,10 +205,7 @@ class ThrowingRun final : public StudyRun {
     return k;
   }
 
-  json results() const override { return report::to_json(section()); }
-
-  // the typed results.json section (studies/throwing/results_section.hpp)
-  Section section() const {
+  Section section() const override {
     const auto& a = spec_.arm;
     const auto& r = result_;
     Section j;
@@ -445,10 +441,6 @@ class ThrowingRun final : public StudyRun {
                                   const cases::CaseInfo& info) override {
     return scene::render_throwing_frames(spec_, result_, info.render, dir);
   }
-
- private:
-  st::ThrowingSpec spec_;
-  st::ThrowingResult result_;
 };
 
 std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {

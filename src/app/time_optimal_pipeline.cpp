@@ -93,9 +93,9 @@ Section::Solver solver_section(const to::SolverResult& r, int nj) {
   return o;
 }
 
-class TimeOptimalRun final : public StudyRun {
+class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section> {
  public:
-  explicit TimeOptimalRun(to::Spec spec) : spec_(std::move(spec)) {}
+  using TypedStudyRun::TypedStudyRun;
 
   studies::Status solve(const studies::ProgressFn& progress) override {
     result_ = to::solve(spec_, progress);
@@ -106,7 +106,6 @@ class TimeOptimalRun final : public StudyRun {
     }
     return result_.status;
   }
-  std::string message() const override { return result_.message; }
 
   // the study's own checks, and MuJoCo's inverse dynamics along the exact solution
   std::vector<studies::Check> checks() const override {
@@ -126,9 +125,7 @@ class TimeOptimalRun final : public StudyRun {
     return c;
   }
 
-  nlohmann::json results() const override;
-  /// the typed results.json section (studies/time_optimal/results_section.hpp)
-  to::ResultsSection section() const;
+  Section section() const override;
 
   std::vector<KeyFigure> key_figures() const override {
     std::vector<KeyFigure> k;
@@ -160,12 +157,8 @@ class TimeOptimalRun final : public StudyRun {
 
 
  private:
-  to::Spec spec_;
-  to::Result result_;
   std::optional<scene::DynamicReplay> replay_;
 };
-
-json TimeOptimalRun::results() const { return report::to_json(section()); }
 
 Section TimeOptimalRun::section() const {
   const to::Result& r = result_;

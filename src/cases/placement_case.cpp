@@ -51,7 +51,7 @@ Demand placement_demand(const studies::placement::Spec& spec, const YAML::Mark& 
 
 studies::placement::Spec load_placement(Map& root) {
   namespace pl = studies::placement;
-  pl::Spec spec;
+  pl::Spec spec;  // its defaults are the defaults of the keys below (written once, in spec.hpp)
   spec.chain = load_arm(root, placement_default_arm(), 2);
   if (spec.chain.gravity != 0.0) {
     root.error("gravity", "'gravity' is " + format_number(spec.chain.gravity) +
@@ -98,7 +98,7 @@ studies::placement::Spec load_placement(Map& root) {
       }
     }
   }
-  spec.duration = p->number_or("duration_s", 1.0, NumberRule::positive("s"));
+  spec.duration = p->number_or("duration_s", spec.duration, NumberRule::positive("s"));
 
   if (auto progs = p->seq("programs")) {
     spec.programs.clear();
@@ -131,11 +131,11 @@ studies::placement::Spec load_placement(Map& root) {
       spec.configurations.push_back(int(c));
     }
   }
-  spec.nx_s = p->integer_or("nx_s", 50, 1, 10000);
-  spec.phi_step = p->number_or("phi_step_deg", 1.0, NumberRule::range(1e-3, 45.0, "deg")) * kDeg;
+  spec.nx_s = p->integer_or("nx_s", spec.nx_s, 1, 10000);
+  spec.phi_step = p->number_or("phi_step_deg", spec.phi_step / kDeg, NumberRule::range(1e-3, 45.0, "deg")) * kDeg;
   if (!(spec.phi_step > 0)) spec.phi_step = kDeg;  // an error was recorded
-  spec.samples = p->integer_or("samples", 401, 21, 100001);
-  spec.singularity_margin = p->number_or("singularity_margin_m", 0.01, NumberRule::positive("m"));
+  spec.samples = p->integer_or("samples", spec.samples, 21, 100001);
+  spec.singularity_margin = p->number_or("singularity_margin_m", spec.singularity_margin, NumberRule::positive("m"));
   if (std::isfinite(spec.singularity_margin) && spec.singularity_margin >= (an.outer - an.inner) / 2) {
     p->error("singularity_margin_m", "'placement.singularity_margin_m' is " + format_number(spec.singularity_margin) +
                                          " m; expected less than half the annulus width, " +
@@ -145,10 +145,10 @@ studies::placement::Spec load_placement(Map& root) {
     spec.torque_limit = std::array<double, 2>{(*t)[0], (*t)[1]};
   if (const auto w = p->numbers("power_limits_W", NumberRule::positive("W"), 2))
     spec.power_limit = std::array<double, 2>{(*w)[0], (*w)[1]};
-  spec.refine = p->boolean_or("refine", true);
+  spec.refine = p->boolean_or("refine", spec.refine);
   if (auto m = p->map("map")) {
-    spec.map_nx = m->integer_or("nx", 200, 2, 1000);
-    spec.map_ny = m->integer_or("ny", 100, 2, 1000);
+    spec.map_nx = m->integer_or("nx", spec.map_nx, 2, 1000);
+    spec.map_ny = m->integer_or("ny", spec.map_ny, 2, 1000);
     m->finish();
   }
   if (auto ev = p->seq("evaluate")) {
@@ -177,7 +177,7 @@ studies::placement::Spec load_placement(Map& root) {
       spec.evaluations.push_back(es);
     }
   }
-  spec.threads = p->integer_or("threads", 0, 0, 256);
+  spec.threads = p->integer_or("threads", spec.threads, 0, 256);
   p->finish();
   if (p->diag().empty()) p->diag().demand(placement_demand(spec, p->node().Mark()));
   return spec;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "app/run_case.hpp"
+#include "report/results_fields.hpp"
 #include "report/number_format.hpp"
 
 namespace armstudy::app {
@@ -162,6 +163,14 @@ std::string results_problem(const json& r) {
   first(want(r, "", "checks", Want::kArray, false));
   first(want(r, "", "key_figures", Want::kArray, false));
   if (!e.empty()) return e;
+  // the study's own section, read strictly into its typed result (a misspelt key is an error)
+  if (const StudyEntry* study = find_study(r["study"].get<std::string>())) {
+    try {
+      study->check_section(r);
+    } catch (const report::ResultsError& x) {
+      return x.what();
+    }
+  }
   for (const char* list : {"checks", "key_figures"}) {
     if (!r.contains(list)) continue;
     size_t i = 0;

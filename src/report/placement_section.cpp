@@ -64,6 +64,45 @@ std::string status_text(const std::string& st) {
 }
 bool set_by_margin(const PS::Optimum& o) { return o.decided_by.set_by_margin; }
 
+// an optimum's motion in the plots over time
+struct SeriesOwner {
+  std::string label, colour_key;
+  const PS::Series* series;
+};
+using Column = std::vector<double> PS::Series::*;
+
+// one line plot over time of `columns` of every owner: colour per owner, line style per
+// column (solid joint 1, dashed joint 2), legend "<owner>, <column label>"
+LinePlot optima_plot(const std::string& title, const std::string& y_label,
+                     const std::vector<SeriesOwner>& owners, const std::vector<Column>& columns,
+                     const std::vector<std::string>& labels) {
+  LinePlot plot;
+  plot.title = title;
+  plot.x_label = "time (s)";
+  plot.y_label = y_label;
+  for (const SeriesOwner& o : owners) {
+    const std::vector<double>& t = o.series->t_s;
+    size_t curve = 0;
+    for (const Column c : columns) {
+      const std::vector<double>& y = o.series->*c;
+      if (y.empty() || y.size() != t.size()) continue;
+      Series s;
+      s.x = t;
+      s.y = y;
+      s.colour = colour_for(o.colour_key.empty() ? o.label : o.colour_key);
+      s.style = curve == 0 ? LineStyle::kSolid : curve == 1 ? LineStyle::kDashed : LineStyle::kDotted;
+      const std::string what = curve < labels.size() ? labels[curve] : "";
+      s.label = owners.size() > 1 ? o.label + ", " + what : what;
+      // a single owner: colour per curve reads better than style alone
+      if (owners.size() == 1 && columns.size() + labels.size() > 2)
+        s.colour = colour_for("joint" + std::to_string(curve + 1));
+      plot.series.push_back(std::move(s));
+      ++curve;
+    }
+  }
+  return plot;
+}
+
 Section task_section(const PS& pl) {
   Section s;
   s.id = "task";
@@ -196,9 +235,7 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
   t.header = {"program, configuration", "energy (J)", "grid energy (J)", "x_S (m)", "φ (deg)",
               "root (X, Y) (m)", "min |sin q2|", "peak torque (N m)", "peak power (W)",
               "signed work (J)"};
-  std::vector<Owner> owners;
-  std::vector<json> series;  // the optima's series as owners_plot reads them
-  series.reserve(pl.optima.size());
+  std::vector<SeriesOwner> owners;
   for (const auto& o : pl.optima) {
     t.rows.push_back({id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6),
                       format_sig(o.x_s_m, 6), format_sig(o.phi_deg, 6),
@@ -207,8 +244,7 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
                       pair_str(o.peak_power_W, 4),
                       format_sig(o.signed_work_J, 3)});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
-    series.push_back(to_json(o.series));
-    owners.push_back({id_label(o), id_key(o), &series.back()});
+    owners.push_back({id_label(o), id_key(o), &o.series});
   }
   if (t.rows.empty()) {
     s.paragraph("No program and configuration has an admissible placement.");
@@ -277,21 +313,21 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
   if (owners.empty()) return s;
   struct Quantity {
     const char* name;
-    const char* key1;
-    const char* key2;
+    Column key1;
+    Column key2;
     const char* unit_label;
     const char* thesis_fig;
   };
   const Quantity quantities[] = {
-      {"joint_angles", "q1_rad", "q2_rad", "joint angle (rad)", "9.1"},
-      {"joint_velocities", "qd1_rad_s", "qd2_rad_s", "joint velocity (rad/s)", "9.2"},
-      {"joint_accelerations", "qdd1_rad_s2", "qdd2_rad_s2", "joint acceleration (rad/s²)", "9.3"},
-      {"joint_torques", "tau1_Nm", "tau2_Nm", "joint torque (N m)", "9.4"},
-      {"joint_powers", "power1_W", "power2_W", "power (W)", "9.5"},
+      {"joint_angles", &PS::Series::q1_rad, &PS::Series::q2_rad, "joint angle (rad)", "9.1"},
+      {"joint_velocities", &PS::Series::qd1_rad_s, &PS::Series::qd2_rad_s, "joint velocity (rad/s)", "9.2"},
+      {"joint_accelerations", &PS::Series::qdd1_rad_s2, &PS::Series::qdd2_rad_s2, "joint acceleration (rad/s²)", "9.3"},
+      {"joint_torques", &PS::Series::tau1_Nm, &PS::Series::tau2_Nm, "joint torque (N m)", "9.4"},
+      {"joint_powers", &PS::Series::power1_W, &PS::Series::power2_W, "power (W)", "9.5"},
   };
   for (const Quantity& q : quantities) {
     const std::string what = std::string(q.unit_label).substr(0, std::string(q.unit_label).find(" ("));
-    LinePlot plot = owners_plot(what + "s of the optima", q.unit_label, owners, {q.key1, q.key2},
+    LinePlot plot = optima_plot(what + "s of the optima", q.unit_label, owners, {q.key1, q.key2},
                                 {"joint 1", "joint 2"});
     if (plot.series.empty()) continue;
     s.figure(figures.line(q.name, plot,
@@ -300,8 +336,8 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
                                  " style). Solid: joint 1 (q1, link 1 from the base); dashed: "
                                  "joint 2 (q2, the elbow, relative to link 1)."));
   }
-  LinePlot energy = owners_plot("actuator energy of the optima", "energy used so far (J)", owners,
-                                {"energy_J"}, {"energy"});
+  LinePlot energy = optima_plot("actuator energy of the optima", "energy used so far (J)", owners,
+                                {&PS::Series::energy_J}, {"energy"});
   if (!energy.series.empty())
     s.figure(figures.line("energy", energy,
                           "Actuator energy used up to each instant, ∫ |M1 dθ1| + |M2 d(θ2 - θ1)|; "

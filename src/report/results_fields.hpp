@@ -18,6 +18,7 @@
 /// v.optional(key, opt) is a key that may be absent; v.inline_if(flag, opt) and
 /// v.inline_when(first_key, opt) put an optional group's keys in the enclosing object.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -126,6 +127,61 @@ nlohmann::json write(const T& x) {
 template <class T>
 void read(const nlohmann::json& j, const std::string& path, T& x);
 
+// every key a T may hold (its optional and inline keys included)
+struct KeyCollector {
+  std::set<std::string>* keys;
+  template <class T>
+  void operator()(const char* key, T&, const char* = "") {
+    keys->insert(key);
+  }
+  template <class T>
+  void optional(const char* key, std::optional<T>&, const char* = "") {
+    keys->insert(key);
+  }
+  template <class T>
+  void inline_if(bool, std::optional<T>&) {
+    T probe{};
+    fields(*this, probe);
+  }
+  template <class T>
+  void inline_when(const char*, std::optional<T>& x) {
+    inline_if(true, x);
+  }
+};
+
+// edit distance of two keys, for "did you mean"
+inline size_t distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diag = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+template <class T>
+void reject_unknown_keys(const nlohmann::json& j, const std::string& path) {
+  std::set<std::string> keys;
+  KeyCollector c{&keys};
+  T probe{};
+  fields(c, probe);
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (keys.count(it.key())) continue;
+    std::string best;
+    size_t d = 3;  // suggest only a near miss
+    for (const std::string& k : keys)
+      if (const size_t e = distance(it.key(), k); e < d) d = e, best = k;
+    throw ResultsError(path + "/" + it.key(), "unknown key '" + it.key() + "'" +
+                                                  (best.empty() ? "" : "; did you mean '" + best + "'?"));
+  }
+}
+
 struct Reader {
   const nlohmann::json* in;
   std::string path;
@@ -207,11 +263,12 @@ void read(const nlohmann::json& j, const std::string& path, T& x) {
     }
   } else {
     if (!j.is_object()) expected(j, path, "an object");
+    reject_unknown_keys<T>(j, path);  // first: a misspelt key is named, not the key it hides
     Reader r{&j, path, {}};
     fields(r, x);
     for (auto it = j.begin(); it != j.end(); ++it)
-      if (!r.seen.count(it.key()))
-        throw ResultsError(path + "/" + it.key(), "unknown key '" + it.key() + "'");
+      if (!r.seen.count(it.key()))  // a key of an inline group that is not there
+        throw ResultsError(path + "/" + it.key(), "unexpected key '" + it.key() + "' here");
   }
 }
 

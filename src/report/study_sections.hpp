@@ -1,7 +1,9 @@
 #pragma once
-/// Per-study parts of a case page: each reads its study's section of results.json and adds
-/// sections (method, results tables, plots, notes on the source document) to the page.
-/// Missing keys are tolerated (shown as "n/a" or left out), never invented.
+/// Per-study parts of a case page: each reads its study's section of results.json into the
+/// study's typed result (report::read_section, studies/<study>/results_section.hpp; a
+/// section that is not the study's is a ResultsError naming the key) and adds sections
+/// (method, results tables, plots, notes on the source document) to the page. A value that
+/// is null in the file (not finite) is shown as "n/a", never invented.
 
 #include <string>
 #include <utility>

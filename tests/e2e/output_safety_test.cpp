@@ -168,6 +168,14 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
                       "/case/name: expected a string, found a number"}},
       {"future-schema", {json_with([](nlohmann::json& j) { j["schema_version"] = 2; }),
                          "schema_version 2 is not one this armstudy reads"}},
+      // the study's section is read into its typed result: a misspelt key is named, never "n/a"
+      {"misspelt-key", {json_with([](nlohmann::json& j) {
+                          auto& o = j["placement"]["optima"][0];
+                          o["energy_j"] = o["energy_J"];
+                          o.erase("energy_J");
+                        }),
+                        "/placement/optima/0/energy_j: unknown key 'energy_j'; did you mean 'energy_J'?"}},
+      {"section-missing", {json_with([](nlohmann::json& j) { j.erase("placement"); }), "/placement: missing"}},
   };
   for (const auto& [name, contents] : broken) {
     fs::create_directories(out / name);
@@ -176,9 +184,9 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
   const CmdRun r = armstudy("merge " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("(5 failed)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(7 failed)"), std::string::npos) << r.output;
   const std::string md = slurp(out / "summary.md"), junit = slurp(out / "junit.xml");
-  EXPECT_EQ(md.rfind("# armstudy: 6 case(s), 5 failed", 0), 0u) << md;
+  EXPECT_EQ(md.rfind("# armstudy: 8 case(s), 7 failed", 0), 0u) << md;
   for (const auto& [name, contents] : broken) {
     const std::string file = (out / name / "results.json").string();
     EXPECT_NE(r.output.find(file + ": " + contents.second), std::string::npos) << name << "\n" << r.output;

@@ -10,11 +10,17 @@
 #include <cmath>
 
 #include "core/dynamics.hpp"
-#include "studies/throwing/integrators.hpp"
+#include "core/integrators.hpp"
 #include "studies/throwing/throwing.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::studies {
+// the integrators of core/integrators.hpp
+using core::Dopri5Options;
+using core::Dopri5Stats;
+using core::integrate_dopri5;
+using core::OdeState;
+using core::rk4_step;
 namespace {
 
 ThrowingSpec spec() { return ThrowingSpec{}; }

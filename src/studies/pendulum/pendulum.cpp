@@ -10,9 +10,15 @@
 
 #include "core/dynamics.hpp"
 #include "core/kinematics.hpp"
-#include "studies/throwing/integrators.hpp"
+#include "core/integrators.hpp"
 
 namespace armstudy::studies {
+// the integrators of core/integrators.hpp
+using core::Dopri5Options;
+using core::Dopri5Stats;
+using core::integrate_dopri5;
+using core::OdeState;
+using core::rk4_step;
 
 PendulumSpec default_pendulum_spec() {
   PendulumSpec s;

@@ -424,7 +424,7 @@ void fields(V& v, ResultsSection& x) {
   v("pareto", x.pareto, "Pareto fronts of peak torque and energy (thinned to steps of >= 0.2 % in energy)");
   v("maps", x.maps, "energy and status over root locations");
   v.optional("convergence", x.convergence, "the first optimum's energy as the samples double");
-  v("mujoco_replay", x.mujoco_replay, "each optimum's torques applied open loop through mj_step");
+  v("mujoco_replay", x.mujoco_replay, "each optimum's torques applied open loop in MuJoCo");
   v("solve_seconds", x.solve_seconds, "wall time of the solve");
   v("samples_evaluated", x.samples_evaluated, "motion samples evaluated in all");
 }

@@ -7,10 +7,16 @@
 #include <stdexcept>
 
 #include "core/dynamics.hpp"
-#include "studies/throwing/integrators.hpp"
+#include "core/integrators.hpp"
 #include "studies/throwing/tray_dynamics.hpp"
 
 namespace armstudy::studies {
+// the integrators of core/integrators.hpp
+using core::Dopri5Options;
+using core::Dopri5Stats;
+using core::integrate_dopri5;
+using core::OdeState;
+using core::rk4_step;
 namespace {
 
 double sign(double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); }

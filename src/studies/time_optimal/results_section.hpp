@@ -206,7 +206,7 @@ void fields(V& v, ResultsSection& x) {
   v.optional("grid_convergence", x.grid_convergence,
              "the exact solver again with every grid interval halved (check exact_grid_converged)");
   v.optional("mujoco_replay", x.mujoco_replay,
-             "the exact solution's torques applied open loop through mj_step (check mujoco_dynamic_replay)");
+             "the exact solution's torques applied open loop in MuJoCo (check mujoco_dynamic_replay)");
 }
 
 }  // namespace armstudy::studies::time_optimal

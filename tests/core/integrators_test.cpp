@@ -1,12 +1,12 @@
 // The integrators of the tray-arm simulations: DOPRI5 meets its tolerance on a problem
 // with a known solution, hits the requested times exactly, and RK4 converges at 4th order.
-#include "studies/throwing/integrators.hpp"
+#include "core/integrators.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace armstudy::studies {
+namespace armstudy::core {
 namespace {
 
 // harmonic oscillator x'' = -w^2 x: x = cos(w t), v = -w sin(w t)
@@ -69,4 +69,4 @@ TEST(Integrators, Dopri5ReportsAStepUnderflowInsteadOfLooping) {
 }
 
 }  // namespace
-}  // namespace armstudy::studies
+}  // namespace armstudy::core

@@ -10,7 +10,8 @@
 ///   accepted when the scaled error norm max_i |err_i| / (atol + rtol max(|x_i|, |x_new_i|))
 ///   is <= 1, and the next step is h * clamp(0.9 err^(-1/5), 0.2, 5). Steps never cross the
 ///   requested output times, which are hit exactly.
-/// Both are templates over the right-hand side f(t, x) -> dx/dt (same size as x).
+/// Both are templates over the right-hand side f(t, x) -> dx/dt (same size as x). Used by
+/// the pendulum and throwing studies.
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,7 @@
 
 #include <Eigen/Dense>
 
-namespace armstudy::studies {
+namespace armstudy::core {
 
 /// A state vector of at most 16 entries (no heap allocation).
 using OdeState = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 16, 1>;
@@ -131,4 +132,4 @@ std::vector<OdeState> integrate_dopri5(F&& f, double t0, const OdeState& x0,
   return out;
 }
 
-}  // namespace armstudy::studies
+}  // namespace armstudy::core
