@@ -1,20 +1,26 @@
 // The time-optimal study in the pipeline: case -> studies::time_optimal::solve -> results.json.
 //
 // results.json "time_optimal" section (SI units, angles in rad):
-//   path {kind, points_m [[x, y]...]}, path_length_m, configuration,
-//   limits {velocity_rad_s [j1, j2], torque_Nm [j1, j2], acceleration_rad_s2 [j1, j2] or null},
+//   path {space "tip", kind, points_m [[x, y]...], s_unit "m"} for a tip path (2 links), or
+//   path {space "joint", kind, points_rad [[q1, ..., qn]...], range_rad [[lo, hi]...] or null,
+//   s_unit "rad"} for a path in joint space (n links). The path parameter s is then the
+//   joint-space chord length in rad, so every key below named *_m, *_m_s, *_m_s2 after s or
+//   s' is named *_rad, *_rad_s, *_rad_s2 instead (path_length_rad, node_s_rad, sd_rad_s, ...),
+//   and the |sin q2| figures of grid_convergence are null.
+//   path_length_m, joints (number of joints n), configuration (tip paths),
+//   limits {velocity_rad_s [j1..jn], torque_Nm [j1..jn], acceleration_rad_s2 [j1..jn] or null},
 //   solvers [{name ("exact", "dp", "dp_joint1", "complex"), method, solved, message,
 //             duration_s, run_time_s, intervals, levels, evaluations, iterations,
 //             violation {worst (largest limit use - 1; <= 0: every limit met), text, kind,
 //                        joint (1-based), s_m, t_s, interval,
-//                        ratio {velocity [j1, j2], torque [j1, j2], acceleration [j1, j2]}},
+//                        ratio {velocity [j1..jn], torque [j1..jn], acceleration [j1..jn]}},
 //             node_s_m, node_sd_m_s, node_t_s,
 //             samples {t_s, s_m, sd_m_s, sdd_m_s2, q_rad [[j1...], [j2...]], qd_rad_s,
 //                      qdd_rad_s2, tau_Nm (per joint rows)}}]: exact first,
 //   mvc {s_m, sd_m_s, velocity_sd_m_s}: the maximum velocity curve on the exact grid,
 //   convergence [{segments, levels, solved, duration_s, excess, run_time_s, worst_violation,
 //                 message (why not, when not solved)}],
-//   motion {t_s, s_m, tip_m [[x, y]...], q_rad [[q1, q2]...]}: the exact motion at equal
+//   motion {t_s, s_m, tip_m [[x, y]...], q_rad [[q1..qn]...]}: the exact motion at equal
 //   time steps (what the frames show),
 //   grid_convergence {grid_points, refined_points, refined_solved, duration_s,
 //                     refined_duration_s, change, tolerance, passed, s_range_m [lo, hi],
@@ -53,10 +59,17 @@ json list(const std::vector<double>& v) {
 
 json pair(const Eigen::Vector2d& v) { return json::array({num(v[0]), num(v[1])}); }
 
-// a 2 x N matrix as two per-joint rows
-json rows(const Eigen::Matrix2Xd& m) {
+// one number per joint
+json joints(const core::JointVector& v) {
+  json a = json::array();
+  for (int j = 0; j < v.size(); ++j) a.push_back(num(v[j]));
+  return a;
+}
+
+// a joints x N matrix as per-joint rows
+json rows(const Eigen::MatrixXd& m) {
   json out = json::array();
-  for (int j = 0; j < 2; ++j) {
+  for (int j = 0; j < m.rows(); ++j) {
     json r = json::array();
     for (int k = 0; k < m.cols(); ++k) r.push_back(num(m(j, k)));
     out.push_back(r);
@@ -73,18 +86,21 @@ const char* path_kind(to::PathKind k) {
   return "line";
 }
 
-json violation_json(const to::Violation& v) {
+json violation_json(const to::Violation& v, int nj, const std::string& u) {
   json ratio = json::object();
-  for (int kind = 0; kind < 3; ++kind)
-    ratio[to::limit_name(static_cast<to::LimitKind>(kind))] =
-        json::array({num(v.ratio[kind][0]), num(v.ratio[kind][1])});
+  for (int kind = 0; kind < 3; ++kind) {
+    json per = json::array();
+    for (int j = 0; j < nj; ++j) per.push_back(num(v.ratio[kind][j]));
+    ratio[to::limit_name(static_cast<to::LimitKind>(kind))] = per;
+  }
   return {{"worst", num(v.worst)},          {"text", v.text},
           {"kind", to::limit_name(v.kind)}, {"joint", v.joint + 1},
-          {"s_m", num(v.s)},                {"t_s", num(v.t)},
+          {"s_" + u, num(v.s)},             {"t_s", num(v.t)},
           {"interval", v.interval},         {"ratio", ratio}};
 }
 
-json solver_json(const to::SolverResult& r) {
+// `u` is the path parameter's unit in key names: "m" (tip path) or "rad" (joint path)
+json solver_json(const to::SolverResult& r, int nj, const std::string& u) {
   json j = {{"name", r.name},
             {"method", r.method},
             {"solved", r.solved},
@@ -96,13 +112,13 @@ json solver_json(const to::SolverResult& r) {
             {"evaluations", r.evaluations},
             {"iterations", r.iterations}};
   if (!r.solved) return j;
-  j["violation"] = violation_json(r.violation);
-  j["node_s_m"] = list(r.node_s);
-  j["node_sd_m_s"] = list(r.node_sd);
+  j["violation"] = violation_json(r.violation, nj, u);
+  j["node_s_" + u] = list(r.node_s);
+  j["node_sd_" + u + "_s"] = list(r.node_sd);
   j["node_t_s"] = list(r.node_t);
   const to::MotionSamples& s = r.samples;
-  j["samples"] = {{"t_s", list(s.t)},          {"s_m", list(s.s)},       {"sd_m_s", list(s.sd)},
-                  {"sdd_m_s2", list(s.sdd)},   {"q_rad", rows(s.q)},     {"qd_rad_s", rows(s.qd)},
+  j["samples"] = {{"t_s", list(s.t)},          {"s_" + u, list(s.s)},    {"sd_" + u + "_s", list(s.sd)},
+                  {"sdd_" + u + "_s2", list(s.sdd)}, {"q_rad", rows(s.q)}, {"qd_rad_s", rows(s.qd)},
                   {"qdd_rad_s2", rows(s.qdd)}, {"tau_Nm", rows(s.tau)}};
   return j;
 }
@@ -155,7 +171,7 @@ class TimeOptimalRun final : public StudyRun {
     k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s"});
     if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, ""});
     if (replay_) k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad"});
-    k.push_back({"path_length_m", result_.path_length, "m"});
+    k.push_back({std::string("path_length_") + result_.s_unit(), result_.path_length, result_.s_unit()});
     return k;
   }
 
@@ -181,19 +197,32 @@ class TimeOptimalRun final : public StudyRun {
 
 json TimeOptimalRun::results() const {
   const to::Result& r = result_;
-  json pts = json::array();
-  for (const auto& p : spec_.path.points) pts.push_back(pair(p));
+  const bool joint_space = spec_.space == to::PathSpace::kJoint;
+  const std::string u = joint_space ? "rad" : "m";
+  const int nj = spec_.chain.num_links();
   json j;
-  j["path"] = {{"kind", path_kind(spec_.path.kind)}, {"points_m", pts}};
-  j["path_length_m"] = num(r.path_length);
-  j["configuration"] = spec_.configuration;
-  j["limits"] = {{"velocity_rad_s", pair(spec_.velocity_limit)},
-                 {"torque_Nm", pair(spec_.torque_limit)},
-                 {"acceleration_rad_s2", spec_.acceleration_limit ? pair(*spec_.acceleration_limit) : json(nullptr)}};
+  if (joint_space) {
+    json pts = json::array(), range = json::array();
+    for (const auto& q : spec_.joint_path.points) pts.push_back(joints(q));
+    for (const auto& lh : spec_.joint_path.range) range.push_back(pair(lh));
+    j["path"] = {{"space", "joint"}, {"kind", path_kind(spec_.joint_path.kind)}, {"points_rad", pts},
+                 {"range_rad", spec_.joint_path.range.empty() ? json(nullptr) : range},
+                 {"s_unit", "rad"}};
+  } else {
+    json pts = json::array();
+    for (const auto& p : spec_.path.points) pts.push_back(pair(p));
+    j["path"] = {{"kind", path_kind(spec_.path.kind)}, {"points_m", pts}, {"space", "tip"}, {"s_unit", "m"}};
+  }
+  j["path_length_" + u] = num(r.path_length);
+  j["joints"] = nj;
+  if (!joint_space) j["configuration"] = spec_.configuration;
+  j["limits"] = {{"velocity_rad_s", joints(spec_.velocity_limit)},
+                 {"torque_Nm", joints(spec_.torque_limit)},
+                 {"acceleration_rad_s2", spec_.acceleration_limit ? joints(*spec_.acceleration_limit) : json(nullptr)}};
   json solvers = json::array();
-  for (const auto& s : r.solvers) solvers.push_back(solver_json(s));
+  for (const auto& s : r.solvers) solvers.push_back(solver_json(s, nj, u));
   j["solvers"] = solvers;
-  j["mvc"] = {{"s_m", list(r.mvc_s)}, {"sd_m_s", list(r.mvc_sd)}, {"velocity_sd_m_s", list(r.mvc_velocity_sd)}};
+  j["mvc"] = {{"s_" + u, list(r.mvc_s)}, {"sd_" + u + "_s", list(r.mvc_sd)}, {"velocity_sd_" + u + "_s", list(r.mvc_velocity_sd)}};
   json conv = json::array();
   for (const auto& row : r.convergence)
     conv.push_back({{"segments", row.segments},
@@ -208,9 +237,9 @@ json TimeOptimalRun::results() const {
   json tip = json::array(), q = json::array();
   for (int k = 0; k < r.motion_p.cols(); ++k) {
     tip.push_back(pair(r.motion_p.col(k)));
-    q.push_back(pair(r.motion_q.col(k)));
+    q.push_back(joints(r.motion_q.col(k)));
   }
-  j["motion"] = {{"t_s", list(r.motion_t)}, {"s_m", list(r.motion_s)}, {"tip_m", tip}, {"q_rad", q}};
+  j["motion"] = {{"t_s", list(r.motion_t)}, {"s_" + u, list(r.motion_s)}, {"tip_m", tip}, {"q_rad", q}};
   if (r.grid.computed) {
     const to::GridConvergence& g = r.grid;
     j["grid_convergence"] = {{"grid_points", g.grid_points},
@@ -221,12 +250,12 @@ json TimeOptimalRun::results() const {
                              {"change", num(g.change)},
                              {"tolerance", num(g.tolerance)},
                              {"passed", g.change <= g.tolerance},
-                             {"s_range_m", json::array({num(g.s_lo), num(g.s_hi)})},
+                             {"s_range_" + u, json::array({num(g.s_lo), num(g.s_hi)})},
                              {"grid_point_range", json::array({g.point_lo, g.point_hi})},
                              {"share", num(g.share)},
-                             {"max_sd_m_s", num(g.max_sd)},
-                             {"min_abs_sin_q2", num(g.min_sin_q2)},
-                             {"path_min_abs_sin_q2", num(g.path_min_sin_q2)},
+                             {"max_sd_" + u + "_s", num(g.max_sd)},
+                             {"min_abs_sin_q2", joint_space ? json(nullptr) : num(g.min_sin_q2)},
+                             {"path_min_abs_sin_q2", joint_space ? json(nullptr) : num(g.path_min_sin_q2)},
                              {"text", g.text}};
   }
   if (replay_) j["mujoco_replay"] = replay_json(*replay_);

@@ -5,15 +5,141 @@
 #include <cstdio>
 
 #include "cases/arm_loader.hpp"
+#include "studies/time_optimal/joint_path.hpp"
 
 namespace armstudy::cases {
 namespace {
 namespace to = studies::time_optimal;
 
-// a per-joint pair of limits >= 0
-std::optional<Eigen::Vector2d> joint_pair(Map& m, std::string_view key, const std::string& unit) {
-  if (const auto v = m.numbers(key, NumberRule::non_negative(unit), 2)) return Eigen::Vector2d((*v)[0], (*v)[1]);
+// a per-joint list of limits >= 0, one per joint of the arm
+std::optional<core::JointVector> joint_limits(Map& m, std::string_view key, const std::string& unit, int joints) {
+  const YAML::Node n = m.has(key) ? m.get(key) : YAML::Node();
+  if (n.IsDefined() && n.IsSequence() && n.size() != static_cast<size_t>(joints)) {
+    m.diag().error(n.Mark(), "'" + m.path_of(key) + "' has " + std::to_string(n.size()) +
+                                 " entries; expected " + std::to_string(joints) + ", one per joint of the arm");
+    return std::nullopt;
+  }
+  if (const auto v = m.numbers(key, NumberRule::non_negative(unit), joints)) {
+    core::JointVector out(joints);
+    for (int j = 0; j < joints; ++j) out[j] = (*v)[j];
+    return out;
+  }
   return std::nullopt;
+}
+
+std::string kind_text(to::PathKind k) {
+  return k == to::PathKind::kLine ? "line" : k == to::PathKind::kPolyline ? "polyline" : "spline";
+}
+
+// `time_optimal.joint_path`: waypoints in joint space, one angle per joint, and the joints'
+// optional ranges (the whole path must stay inside them)
+void load_joint_path(Map& path, int joints, to::Spec* spec) {
+  spec->space = to::PathSpace::kJoint;
+  const auto kind = path.choice("kind", {"line", "polyline", "spline"});
+  spec->joint_path.kind = !kind || *kind == "line" ? to::PathKind::kLine
+                          : *kind == "polyline"   ? to::PathKind::kPolyline
+                                                  : to::PathKind::kSpline;
+  const std::string want = std::to_string(joints) + " angle" + (joints == 1 ? "" : "s") +
+                           " in rad, one per joint of the arm's " + std::to_string(joints) + " links";
+  auto pts = path.seq("points_rad");
+  if (!pts) {
+    if (!path.has("points_rad"))
+      path.error_here("missing required key 'time_optimal.joint_path.points_rad'; expected a list of "
+                      "waypoints, each " + want);
+    path.get("range_rad");
+    path.finish();
+    return;
+  }
+  std::vector<YAML::Node> nodes;  // the YAML node of each waypoint read
+  bool all_read = true;
+  for (size_t i = 0; i < pts->size(); ++i) {
+    const YAML::Node n = pts->at(i);
+    if (!n.IsSequence() || n.size() != static_cast<size_t>(joints)) {
+      pts->diag().error(n.Mark(), "'" + pts->path_at(i) + "' " +
+                                      (n.IsSequence() ? "has " + std::to_string(n.size()) + " angle(s)"
+                                                      : std::string("is not a list of angles")) +
+                                      "; expected " + want);
+      all_read = false;
+      continue;
+    }
+    core::JointVector q(joints);
+    bool ok = true;
+    for (int j = 0; j < joints; ++j) {
+      const auto v = read_number(n[j], pts->diag(), pts->path_at(i) + "[" + std::to_string(j + 1) + "]",
+                                 NumberRule::range(-100.0, 100.0, "rad"));
+      if (v) q[j] = *v; else ok = false;
+    }
+    if (!ok) { all_read = false; continue; }
+    if (!spec->joint_path.points.empty() && (q - spec->joint_path.points.back()).norm() < 1e-9) {
+      pts->diag().error(n.Mark(), "'" + pts->path_at(i) + "' repeats the waypoint before it; expected "
+                                  "distinct consecutive waypoints");
+      all_read = false;
+      continue;
+    }
+    spec->joint_path.points.push_back(q);
+    nodes.push_back(n);
+  }
+  const size_t count = pts->size();
+  bool count_ok = true;
+  if (spec->joint_path.kind == to::PathKind::kLine && count != 2) {
+    path.error("points_rad", "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
+                                 " waypoints; expected exactly 2 for kind 'line' (polyline or spline for more)");
+    count_ok = false;
+  } else if (count < 2) {
+    path.error("points_rad", "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
+                                 " waypoint(s); expected at least 2 for kind '" + kind_text(spec->joint_path.kind) + "'");
+    count_ok = false;
+  }
+  // ranges: one [lo, hi] per joint
+  bool range_ok = true;
+  if (auto rs = path.seq("range_rad")) {
+    if (rs->size() != static_cast<size_t>(joints)) {
+      path.error("range_rad", "'time_optimal.joint_path.range_rad' has " + std::to_string(rs->size()) +
+                                  " entries; expected " + std::to_string(joints) + " [lo, hi] pairs in rad, one per joint");
+      range_ok = false;
+    }
+    for (size_t i = 0; i < rs->size() && range_ok; ++i) {
+      const YAML::Node n = rs->at(i);
+      if (!n.IsSequence() || n.size() != 2) {
+        rs->diag().error(n.Mark(), "'" + rs->path_at(i) + "' is not a range; expected [lo, hi] in rad");
+        range_ok = false;
+        continue;
+      }
+      const auto lo = read_number(n[0], rs->diag(), rs->path_at(i) + "[1]", NumberRule::range(-100.0, 100.0, "rad"));
+      const auto hi = read_number(n[1], rs->diag(), rs->path_at(i) + "[2]", NumberRule::range(-100.0, 100.0, "rad"));
+      if (!lo || !hi) { range_ok = false; continue; }
+      if (!(*lo < *hi)) {
+        rs->diag().error(n.Mark(), "'" + rs->path_at(i) + "' is [" + format_number(*lo) + ", " + format_number(*hi) +
+                                       "]; expected lo < hi");
+        range_ok = false;
+        continue;
+      }
+      spec->joint_path.range.emplace_back(*lo, *hi);
+    }
+    if (!range_ok) spec->joint_path.range.clear();
+  }
+  path.finish();
+  if (!all_read || !count_ok || !range_ok || spec->joint_path.range.empty()) return;
+  // the whole path inside the ranges: a waypoint outside is named itself; a spline that
+  // swings out between two waypoints is named at the first of them
+  const to::JointPathGeometry geometry(spec->joint_path);
+  const auto e = to::range_excursion(geometry, spec->joint_path.range);
+  if (!e) return;
+  const to::JointPathSpec& jp = spec->joint_path;
+  for (size_t i = 0; i < jp.points.size(); ++i)
+    for (int j = 0; j < joints; ++j)
+      if (jp.points[i][j] < jp.range[j][0] || jp.points[i][j] > jp.range[j][1]) {
+        pts->diag().error(nodes[i][j].Mark(),
+                          "'" + pts->path_at(i) + "[" + std::to_string(j + 1) + "]' is " + format_number(jp.points[i][j]) +
+                              " rad, outside joint " + std::to_string(j + 1) + "'s range [" + format_number(jp.range[j][0]) +
+                              ", " + format_number(jp.range[j][1]) + "] rad ('time_optimal.joint_path.range_rad[" +
+                              std::to_string(j + 1) + "]'); expected a waypoint inside every joint's range");
+        return;
+      }
+  pts->diag().error(nodes[e->piece].Mark(),
+                    "'" + pts->path_at(e->piece) + "': " + e->text + ", outside it although the waypoints are inside; "
+                    "expected a path inside every joint's range (move these waypoints, add one between them, or "
+                    "use kind polyline)");
 }
 
 void load_path(Map& t, to::Spec* spec) {
@@ -107,11 +233,17 @@ void load_dp(Map& t, to::DpSettings* dp) {
 
 studies::time_optimal::Spec load_time_optimal(Map& root) {
   to::Spec spec;
-  spec.chain = load_arm(root, to::default_arm(), 2);
-  for (int i = 0; i < spec.chain.num_links(); ++i) {
+  const size_t errors_before = root.diag().errors().size();
+  spec.chain = load_arm(root, to::default_arm(), 0);
+  const bool arm_ok = root.diag().errors().size() == errors_before;
+  const int joints = spec.chain.num_links();
+  if (arm_ok && joints < 2)
+    root.error("arm", "'arm.links' has " + std::to_string(joints) + " link; expected 2 to " +
+                          std::to_string(core::kMaxLinks) + " links for a time-optimal study");
+  for (int i = 0; i < joints; ++i) {
     if (!spec.chain.links[i].active)
       root.error("arm", "'arm.links[" + std::to_string(i + 1) +
-                            "]' has a passive joint; expected both joints active for a time-optimal study");
+                            "]' has a passive joint; expected every joint active for a time-optimal study");
   }
   auto t = root.map("time_optimal");
   if (!t) {
@@ -119,11 +251,44 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
       root.error_here("missing required key 'time_optimal'; expected the path and the joint limits");
     return spec;
   }
-  load_path(*t, &spec);
+  if (t->has("path") && t->has("joint_path")) {
+    t->error("joint_path", "'time_optimal' has both 'path' (a tip path) and 'joint_path'; expected one of them");
+    t->get("path");
+  } else if (t->has("joint_path")) {
+    if (auto jp = t->map("joint_path")) load_joint_path(*jp, joints, &spec);
+    spec.space = to::PathSpace::kJoint;
+    if (t->has("configuration"))
+      t->error("configuration", "'time_optimal.configuration' chooses the elbow of a tip path's inverse "
+                                "kinematics; expected no configuration with a joint_path (its joint angles are given)");
+  } else {
+    if (arm_ok && joints != 2 && t->has("path")) {
+      t->error("path", "'time_optimal.path' is a tip path, but the arm has " + std::to_string(joints) +
+                           " links: " + (joints > 2 ? "a redundant arm follows a tip path with many joint motions, "
+                                                      "so the path does not fix one; "
+                                                    : "") +
+                           "expected a path in joint space, 'time_optimal.joint_path' with points_rad (one "
+                           "angle per joint in every waypoint), or an arm of 2 links");
+      t->get("path");
+    } else if (!t->has("path")) {
+      t->error_here("missing required key 'time_optimal.path'; expected the tip path (kind and points_m) "
+                    "or 'time_optimal.joint_path' (kind and points_rad)");
+    } else {
+      load_path(*t, &spec);
+    }
+  }
   spec.configuration = t->integer_or("configuration", 1, 1, 2);
-  if (const auto v = joint_pair(*t, "velocity_limit_rad_s", "rad/s")) spec.velocity_limit = *v;
-  if (const auto v = joint_pair(*t, "torque_limit_Nm", "N m")) spec.torque_limit = *v;
-  if (const auto v = joint_pair(*t, "acceleration_limit_rad_s2", "rad/s^2")) spec.acceleration_limit = *v;
+  const int nl = std::max(1, joints);
+  if (const auto v = joint_limits(*t, "velocity_limit_rad_s", "rad/s", nl)) spec.velocity_limit = *v;
+  if (const auto v = joint_limits(*t, "torque_limit_Nm", "N m", nl)) spec.torque_limit = *v;
+  if (const auto v = joint_limits(*t, "acceleration_limit_rad_s2", "rad/s^2", nl)) spec.acceleration_limit = *v;
+  // the default limits are the 2-link source's: a longer chain states its own
+  if (joints != 2) {
+    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm"})
+      if (!t->has(key))
+        t->error_here(std::string("missing required key 'time_optimal.") + key + "' for an arm of " +
+                      std::to_string(joints) + " links; expected " + std::to_string(joints) +
+                      " limits, one per joint (the defaults are a 2-link arm's)");
+  }
   load_dp(*t, &spec.dp);
   if (auto c = t->map("complex")) {
     spec.complex.enabled = c->boolean_or("enabled", true);
@@ -140,8 +305,11 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
   }
   spec.motion_steps = t->integer_or("motion_steps", spec.motion_steps, 1, 100000);
   // a polyline needs at least one segment per piece
-  if (spec.path.kind == to::PathKind::kPolyline && spec.path.points.size() >= 2) {
-    const int pieces = static_cast<int>(spec.path.points.size()) - 1;
+  const bool joint_space = spec.space == to::PathSpace::kJoint;
+  const to::PathKind kind = joint_space ? spec.joint_path.kind : spec.path.kind;
+  const size_t waypoints = joint_space ? spec.joint_path.points.size() : spec.path.points.size();
+  if (kind == to::PathKind::kPolyline && waypoints >= 2) {
+    const int pieces = static_cast<int>(waypoints) - 1;
     if (spec.dp.segments < 2 * pieces)
       root.error("time_optimal", "'time_optimal.dp.segments' is " + std::to_string(spec.dp.segments) +
                                      "; expected at least two segments per polyline piece (" +

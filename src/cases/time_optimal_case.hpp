@@ -1,8 +1,11 @@
 #pragma once
 /// `study: time_optimal` case files -> studies::time_optimal::Spec.
 ///
-/// The arm (`arm:`, see arm_loader.hpp) must have 2 active links; without `arm:` it is the
-/// source's model (Ozkipcak 1994): massless links with a 1.0 kg point mass at the
+/// The arm (`arm:`, see arm_loader.hpp) has active joints only: 2 links for a tip path
+/// (`path`), 2 to core::kMaxLinks links for a path in joint space (`joint_path`, exactly one
+/// of the two); a tip path for a redundant arm is refused (it fixes no joint motion). With a
+/// joint path of other than 2 joints the velocity and torque limits must be given (the
+/// defaults are the 2-link source's). Without `arm:` it is the source's model (Ozkipcak 1994): massless links with a 1.0 kg point mass at the
 /// end of each, in a horizontal plane, with L1 = 0.5 m and L2 = 0.4 m (the source gives no
 /// lengths; studies::time_optimal::default_arm says why these). `gravity:` may be non-zero:
 /// the torque limits must then also hold the arm up.
@@ -13,8 +16,18 @@
 ///     kind: line             # line (2 points), polyline (stops at every corner) or spline
 ///                            # (natural cubic through the points); default line
 ///     points_m: [[0.6, -0.3], [0.3, 0.5]]   # tip points, m, in the arm's base frame (>= 2)
-///   configuration: 1         # elbow: 1 has q2 in (0, pi), 2 has q2 in (-pi, 0) (default 1)
-///   velocity_limit_rad_s: [3.0, 4.0]        # |q_j'| per joint, rad/s, >= 0 (default 3, 4)
+///   joint_path:              # instead of `path`: the joint motion q(s) itself, s its
+///                            # chord length in joint space (rad; see joint_path.hpp)
+///     kind: spline           # line (2 waypoints), polyline (stops at every corner) or
+///                            # spline (natural cubic through the waypoints); default line
+///     points_rad: [[-2.3, 0.5, 0.4], [-1.2, -0.2, -0.1], [-0.8, -0.5, -0.4]]
+///                            # waypoints, one relative joint angle (rad) per link (>= 2)
+///     range_rad: [[-3, 0], [-1.5, 1.5], [-1.5, 1.5]]   # optional [lo, hi] per joint: the
+///                            # whole path (the spline between waypoints too) must stay inside
+///   configuration: 1         # tip paths: elbow 1 has q2 in (0, pi), 2 has q2 in (-pi, 0)
+///                            # (default 1); not with a joint_path
+///   velocity_limit_rad_s: [3.0, 4.0]        # |q_j'| per joint (one per link), rad/s, >= 0
+///                                           # (default 3, 4 for 2 links)
 ///   torque_limit_Nm: [10.0, 4.0]            # |tau_j| per joint, N m, >= 0 (default 10, 4)
 ///   acceleration_limit_rad_s2: [50, 80]     # optional |q_j''| per joint, rad/s^2, >= 0
 ///   dp:                      # dynamic programming as in the source

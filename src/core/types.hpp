@@ -1,12 +1,12 @@
 #pragma once
-/// Fixed-capacity joint-space types: N is 2 or 4 at run time, with no heap allocation.
+/// Fixed-capacity joint-space types: N is 2 to kMaxLinks at run time, with no heap allocation.
 
 #include <Eigen/Dense>
 
 namespace armstudy::core {
 
 /// Largest number of joints of a planar chain.
-inline constexpr int kMaxLinks = 6;
+inline constexpr int kMaxLinks = 7;
 
 using JointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxLinks, 1>;
 using JointMatrix =

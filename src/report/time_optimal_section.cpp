@@ -1,6 +1,7 @@
 // the time-optimal study of Ozkipcak (1994): solvers side by side, the phase plane
 // with the maximum velocity curve, joint torques and velocities with their limits, the dp
 // convergence table
+#include <algorithm>
 #include <cmath>
 
 #include "report/number_format.hpp"
@@ -59,13 +60,29 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   const json& to = results.contains("time_optimal") ? results["time_optimal"] : json::object();
   const json& solvers = arr(to, "solvers");
   const json& limits = obj(to, "limits");
+  // a path given in joint space: s in rad (joint-space chord length), keys *_rad
+  const json& path = obj(to, "path");
+  const bool joint_space = jsonv::str(path, "space") == "joint";
+  const std::string u = joint_space ? "rad" : "m";
+  const std::string s_key = "s_" + u, sd_key = "sd_" + u + "_s";
+  // joints: one limit per joint
+  const size_t joints = std::max<size_t>(2, first_vec(limits, {"velocity_rad_s"}).size());
 
   Section method;
   method.id = "method";
   method.heading = "Method";
   method.new_page = false;
+  if (joint_space)
+    method.paragraph(
+        "The arm, a chain of " + std::to_string(joints) + " joints, follows a path given in joint "
+        "space: q(s) through the case's waypoints, s its chord length in joint space (rad). A "
+        "tip path would not fix the joint motion of a redundant arm, so the joint motion itself "
+        "is the path; the solvers see only q(s), q'(s) and q''(s), exactly as for a tip path "
+        "(whose joint path comes from the inverse kinematics of a 2-link arm), and every limit "
+        "is per joint. Path speed s' is then in rad/s.");
   method.paragraph(
-      "The tip of a 2-link arm in a horizontal plane follows a given path; the speed along it "
+      std::string(joint_space ? "The speed along the path "
+                              : "The tip of a 2-link arm in a horizontal plane follows a given path; the speed along it ") +
       "is chosen to reach the end in the least time under joint velocity and torque limits, "
       "at rest at both ends. Three solvers work on the same problem: dynamic programming as "
       "in the source (Ozkipcak 1994, docs/sources.md: N segments of constant acceleration, "
@@ -110,24 +127,25 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   // phase plane: s' over s, the maximum velocity curve and each solver's profile
   LinePlot phase;
   phase.title = "phase plane: path speed over path position";
-  phase.x_label = "path position s (m)";
-  phase.y_label = "path speed s' (m/s)";
+  phase.x_label = "path position s (" + u + ")";
+  phase.y_label = "path speed s' (" + u + "/s)";
   const json& mvc = obj(to, "mvc");
-  const auto mvc_s = first_vec(mvc.empty() ? to : mvc, {"s_m", "mvc_s_m"});
-  const auto mvc_sd = first_vec(mvc.empty() ? to : mvc, {"sd_m_s", "mvc_sd_m_s"});
-  const auto mvc_v = first_vec(mvc.empty() ? to : mvc, {"velocity_sd_m_s", "mvc_velocity_sd_m_s"});
+  const std::string mvc_v_key = "velocity_sd_" + u + "_s";
+  const auto mvc_s = first_vec(mvc.empty() ? to : mvc, {s_key.c_str(), "mvc_s_m"});
+  const auto mvc_sd = first_vec(mvc.empty() ? to : mvc, {sd_key.c_str(), "mvc_sd_m_s"});
+  const auto mvc_v = first_vec(mvc.empty() ? to : mvc, {mvc_v_key.c_str(), "mvc_velocity_sd_m_s"});
   if (mvc_s.size() == mvc_sd.size() && !mvc_s.empty())
     phase.series.push_back({"maximum velocity curve", mvc_s, mvc_sd, colour_for("mvc")});
   if (mvc_s.size() == mvc_v.size() && !mvc_s.empty())
     phase.series.push_back({"velocity limits alone", mvc_s, mvc_v, colour_for("limit"), LineStyle::kDotted});
   for (const json& s : solvers) {
     const json& sm = samples_of(s);
-    auto x = first_vec(sm, {"s_m"});
-    auto y = first_vec(sm, {"sd_m_s"});
+    auto x = first_vec(sm, {s_key.c_str()});
+    auto y = first_vec(sm, {sd_key.c_str()});
     bool nodes = false;
     if (x.empty() || x.size() != y.size()) {
-      x = first_vec(s, {"node_s_m"});
-      y = first_vec(s, {"node_sd_m_s"});
+      x = first_vec(s, {("node_" + s_key).c_str()});
+      y = first_vec(s, {("node_" + sd_key).c_str()});
       nodes = true;
     }
     if (x.empty() || x.size() != y.size()) continue;
@@ -147,11 +165,11 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   LinePlot st;
   st.title = "path position over time";
   st.x_label = "time t (s)";
-  st.y_label = "path position s (m)";
+  st.y_label = "path position s (" + u + ")";
   for (const json& s : solvers) {
     const json& sm = samples_of(s);
     const auto t = first_vec(sm, {"t_s"});
-    const auto x = first_vec(sm, {"s_m"});
+    const auto x = first_vec(sm, {s_key.c_str()});
     if (t.size() >= 2 && t.size() == x.size())
       st.series.push_back({solver_name(s), t, x, colour_for(solver_key(solver_name(s)))});
   }
@@ -174,7 +192,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                         {"qd_rad_s", {"velocity_rad_s", "qd_rad_s", "velocity_limit_rad_s"},
                          "velocity", "rad/s"}};
   for (const Kind& k : kinds)
-    for (size_t j = 0; j < 2; ++j) {
+    for (size_t j = 0; j < joints; ++j) {
       LinePlot p;
       p.title = "joint " + std::to_string(j + 1) + " " + k.what;
       p.x_label = "time (s)";

@@ -14,7 +14,7 @@ DynamicReplay replay_time_optimal(const to::Spec& spec, const to::Result& result
   if (result.status != studies::Status::kSolved || result.solvers.empty() || !result.solvers.front().solved)
     throw std::invalid_argument("replay_time_optimal: the study has no exact solution");
   const to::SolverResult& exact = result.solvers.front();
-  const to::Problem pb{spec.chain, to::PathGeometry(spec.path), spec.configuration, result.limits};
+  const to::Problem pb = to::make_problem(spec, result.limits);
   to::Profile pr;
   pr.law = exact.law;
   pr.s = exact.node_s;

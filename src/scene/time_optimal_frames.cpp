@@ -31,7 +31,8 @@ std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const 
   files.push_back(write_strip(sr, m, options.frames, title, dir, "time_optimal"));
   FrameLabels labels;
   labels.top_left = std::string(title) + "\nposes at equal time steps: dense where slow";
-  labels.bottom_left = "top view; grid 0.1 m";
+  labels.bottom_left = spec.chain.gravity != 0.0 ? "vertical plane, gravity down the image; grid 0.1 m"
+                                                 : "top view; grid 0.1 m";
   files.push_back(write_locus(sr, m, 15, path, {}, labels, dir, "time_optimal"));
   return files;
 }

@@ -116,7 +116,7 @@ TEST(TimeOptimalGrid, ComplexFailureNamesTheSegmentThePlaceAndTheLimit) {
   core::PlanarChain chain = default_arm();
   chain.gravity = 9.81;
   const Problem pb{chain, PathGeometry(PathSpec{PathKind::kLine, {{0.3, 0.3}, {0.8, 0.1}}}), 1,
-                   Limits{{3.0, 4.0}, {5.0, 4.0}, std::nullopt}};
+                   Limits{joint_pair(3.0, 4.0), joint_pair(5.0, 4.0), std::nullopt}};
   ComplexSettings cs;
   const SolverOutput o = solve_complex(pb, 10, 4, cs);
   ASSERT_FALSE(o.solved);

@@ -68,7 +68,7 @@ TEST(TimeOptimal, VelocityLimitedDurationConvergesToTheIntegralOfTheSlowestJoint
   // with s'_max = min_j qd_max_j / |dq_j/ds|. On a grid the first and last intervals start
   // and end at rest (O(1/N) extra time), so the exact duration converges to T from above.
   Spec spec = line_spec({0.3, 0.1}, {-0.1, 0.8});
-  spec.torque_limit = {1e7, 1e7};
+  spec.torque_limit = joint_pair(1e7, 1e7);
   spec.complex.enabled = false;
   spec.dp.states = {};
   const PathGeometry path(spec.path);
@@ -99,7 +99,7 @@ TEST(TimeOptimal, VelocityLimitedDurationConvergesToTheIntegralOfTheSlowestJoint
 
 TEST(TimeOptimal, WithTorqueBindingTheExactProfileUsesTheTorqueLimitFully) {
   Spec spec = line_spec({0.3, 0.1}, {-0.1, 0.8});
-  spec.velocity_limit = {100, 100};  // only the torques limit the motion
+  spec.velocity_limit = joint_pair(100, 100);  // only the torques limit the motion
   spec.complex.enabled = false;
   const Result r = solve(spec);
   ASSERT_EQ(r.status, Status::kSolved) << r.message;
@@ -158,7 +158,7 @@ TEST(TimeOptimal, JointOneVelocityStateFailsWhereJointOneTurnsBackAndSaysWhere) 
 TEST(TimeOptimal, InfeasibleProblemsNameTheLimitOrReasonAndThePlace) {
   {
     Spec spec = line_spec({0.3, 0.1}, {-0.1, 0.8});
-    spec.velocity_limit = {3.0, 0.0};  // joint 2 must move but may not
+    spec.velocity_limit = joint_pair(3.0, 0.0);  // joint 2 must move but may not
     const Result r = solve(spec);
     EXPECT_EQ(r.status, Status::kUnsolvable);
     EXPECT_NE(r.message.find("joint 2 velocity limit"), std::string::npos) << r.message;

@@ -64,7 +64,7 @@ Use worst_use(const JointPoint& jp, const Limits& lim, double x, double u) {
       out.tag = RowTag{j, kind, 0, jp.s};
     }
   };
-  for (int j = 0; j < 2; ++j) {
+  for (int j = 0; j < lim.joints(); ++j) {
     take(jp.dq[j] * std::sqrt(std::max(0.0, x)), j, LimitKind::kVelocity);
     take(jp.a[j] * u + jp.b[j] * x + jp.c[j], j, LimitKind::kTorque);
     if (lim.acceleration) take(jp.dq[j] * u + jp.ddq[j] * x, j, LimitKind::kAcceleration);
@@ -88,17 +88,30 @@ std::string segment_text(const Problem& pb, const Discretisation& d, int k) {
   std::ostringstream os;
   os.setf(std::ios::fixed);
   os.precision(3);
-  const Eigen::Vector2d a = pb.path.at(d.nodes[k]).p, b = pb.path.at(d.nodes[k + 1], true).p;
   os << "segment " << k + 1 << " of " << d.nodes.size() - 1 << " (s = " << d.nodes[k] << " to "
-     << d.nodes[k + 1] << " m, (x, y) = (" << a.x() << ", " << a.y() << ") to (" << b.x() << ", "
-     << b.y() << ") m)";
+     << d.nodes[k + 1] << " " << pb.path.unit() << ", ";
+  if (pb.path.joint_space()) {
+    const auto q = [&](double s, bool left) {
+      const core::JointVector v = pb.path.joint().at(s, left).q;
+      std::ostringstream o;
+      o.setf(std::ios::fixed);
+      o.precision(3);
+      for (int j = 0; j < v.size(); ++j) o << (j ? ", " : "(") << v[j];
+      o << ")";
+      return o.str();
+    };
+    os << "q = " << q(d.nodes[k], false) << " to " << q(d.nodes[k + 1], true) << " rad)";
+  } else {
+    const Eigen::Vector2d a = pb.tip(d.nodes[k]), b = pb.tip(d.nodes[k + 1], true);
+    os << "(x, y) = (" << a.x() << ", " << a.y() << ") to (" << b.x() << ", " << b.y() << ") m)";
+  }
   return os.str();
 }
 
-std::string use_text(const Use& u, const Limits& lim) {
+std::string use_text(const Use& u, const Limits& lim, const char* unit) {
   std::ostringstream os;
   os.precision(4);
-  os << describe(u.tag, lim) << ", used to " << 100 * (1 + u.excess) << " %";
+  os << describe(u.tag, lim, unit) << ", used to " << 100 * (1 + u.excess) << " %";
   return os.str();
 }
 
@@ -141,7 +154,7 @@ std::string dp_failure(const Problem& pb, const Discretisation& d, const std::ve
     os << segment_text(pb, d, k) << " cannot be crossed from any of the " << reach.size()
        << " state(s) reachable at its start";
     if (std::isfinite(least.excess))
-      os << ": every move breaks a limit, the least breach is " << use_text(least, pb.limits);
+      os << ": every move breaks a limit, the least breach is " << use_text(least, pb.limits, pb.path.unit());
     else
       os << ": only staying at rest meets the limits there";
     return os.str();
@@ -149,14 +162,7 @@ std::string dp_failure(const Problem& pb, const Discretisation& d, const std::ve
   return "every segment can be crossed, but no sequence reaches the end at rest";
 }
 
-std::string where(const Problem& pb, double s) {
-  const Eigen::Vector2d p = pb.path.at(s).p;
-  std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(3);
-  os << "s = " << s << " m, (x, y) = (" << p.x() << ", " << p.y() << ") m";
-  return os.str();
-}
+std::string where(const Problem& pb, double s) { return pb.where(s); }
 }  // namespace
 
 SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, DpState state) {
@@ -351,7 +357,7 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
     std::ostringstream os;
     os.precision(3);
     os << "the Complex method found no feasible crawl to start from: even at " << z0.maxCoeff()
-       << " m/s at most (2^-" << std::min(halvings, 60) + 1 << " of the maximum velocity curve)";
+       << " " << pb.path.unit() << "/s at most (2^-" << std::min(halvings, 60) + 1 << " of the maximum velocity curve)";
     for (int k = 0; k + 1 < n; ++k) {
       if (std::isfinite(path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1])))
         continue;
@@ -359,10 +365,10 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
         // the maximum velocity curve is 0 at both ends: no speed, not even rest, is allowed
         const Use at_rest = path_speed_use(pb, d, k, 0.0, 0.0);
         os << ", " << segment_text(pb, d, k) << " allows no speed";
-        if (at_rest.excess > 0) os << ": even at rest it breaks " << use_text(at_rest, pb.limits);
+        if (at_rest.excess > 0) os << ": even at rest it breaks " << use_text(at_rest, pb.limits, pb.path.unit());
       } else {
         os << ", " << segment_text(pb, d, k) << " breaks "
-           << use_text(path_speed_use(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1]), pb.limits);
+           << use_text(path_speed_use(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1]), pb.limits, pb.path.unit());
       }
       break;
     }

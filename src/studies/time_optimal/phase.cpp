@@ -47,7 +47,8 @@ void append_rows(const JointPoint& jp, const Limits& lim, double shift, int poin
   const auto add = [&](double cx, double cu, double lo, double hi, int j, LimitKind k) {
     rows->push_back({cx, cu + shift * cx, lo, hi, RowTag{j, k, point, jp.s}});
   };
-  for (int j = 0; j < 2; ++j) {
+  const int n = static_cast<int>(jp.dq.size());
+  for (int j = 0; j < n; ++j) {
     add(jp.dq[j] * jp.dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j], j,
         LimitKind::kVelocity);
     add(jp.b[j], jp.a[j], -lim.torque[j] - jp.c[j], lim.torque[j] - jp.c[j], j,
@@ -152,20 +153,20 @@ URange u_range(const std::vector<Row>& rows, double x) {
   return out;
 }
 
-std::string describe(const RowTag& tag, const Limits& limits) {
+std::string describe(const RowTag& tag, const Limits& limits, const char* unit) {
   std::ostringstream os;
   if (tag.joint < 0) {
     os << "the need to stop at the end of the path (from s = ";
     os.setf(std::ios::fixed);
     os.precision(3);
-    os << tag.s << " m)";
+    os << tag.s << " " << unit << ")";
     return os.str();
   }
   os << "the joint " << tag.joint + 1 << " " << limit_name(tag.kind) << " limit ";
   os << limits.of(tag.kind, tag.joint) << " " << limit_unit(tag.kind);
   os.setf(std::ios::fixed);
   os.precision(3);
-  os << " at s = " << tag.s << " m";
+  os << " at s = " << tag.s << " " << unit;
   return os.str();
 }
 

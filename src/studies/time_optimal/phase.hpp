@@ -15,6 +15,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/types.hpp"
 #include "studies/time_optimal/path.hpp"
 
 namespace armstudy::studies::time_optimal {
@@ -28,10 +29,11 @@ const char* limit_unit(LimitKind kind);
 
 /// Joint limits (per joint, >= 0).
 struct Limits {
-  Eigen::Vector2d velocity;
-  Eigen::Vector2d torque;
-  std::optional<Eigen::Vector2d> acceleration;
+  core::JointVector velocity;  ///< one entry per joint
+  core::JointVector torque;
+  std::optional<core::JointVector> acceleration;
   double of(LimitKind kind, int joint) const;
+  int joints() const { return static_cast<int>(velocity.size()); }
 };
 
 /// Which limit a row stands for; joint < 0 marks the reach-set row of the solver.
@@ -75,7 +77,8 @@ URange u_range(const std::vector<Row>& rows, double x);
 
 /// True when (x, u) at jp meets every limit (no tolerance); the solvers' hot check.
 inline bool within_limits(const JointPoint& jp, const Limits& lim, double x, double u) {
-  for (int j = 0; j < 2; ++j) {
+  const int n = static_cast<int>(jp.dq.size());
+  for (int j = 0; j < n; ++j) {
     if (jp.dq[j] * jp.dq[j] * x > lim.velocity[j] * lim.velocity[j]) return false;
     const double tau = jp.a[j] * u + jp.b[j] * x + jp.c[j];
     if (tau > lim.torque[j] || tau < -lim.torque[j]) return false;
@@ -87,7 +90,8 @@ inline bool within_limits(const JointPoint& jp, const Limits& lim, double x, dou
   return true;
 }
 
-/// Text naming a row's limit and place, e.g. "the joint 2 torque limit 4 N m at s = 0.310 m".
-std::string describe(const RowTag& tag, const Limits& limits);
+/// Text naming a row's limit and place, e.g. "the joint 2 torque limit 4 N m at s = 0.310 m";
+/// `unit` is the path parameter's ("m" for a tip path, "rad" for a joint-space path).
+std::string describe(const RowTag& tag, const Limits& limits, const char* unit = "m");
 
 }  // namespace armstudy::studies::time_optimal

@@ -7,17 +7,57 @@
 
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
+#include "core/kinematics.hpp"
 
 namespace armstudy::studies::time_optimal {
 
+const PathGeometry& SolverPath::tip() const {
+  if (!tip_) throw std::logic_error("time-optimal path: a joint-space path has no tip path geometry");
+  return *tip_;
+}
+
+const JointPathGeometry& SolverPath::joint() const {
+  if (!joint_) throw std::logic_error("time-optimal path: a tip path has no joint-space geometry");
+  return *joint_;
+}
+
 JointPoint Problem::at(double s, bool from_left) const {
+  if (path.joint_space()) return joint_space_point(chain, path.joint(), s, from_left);
   PathTrouble trouble;
-  const auto jp = joint_point(chain, path, configuration, s, from_left, &trouble);
+  const auto jp = joint_point(chain, path.tip(), configuration, s, from_left, &trouble);
   if (!jp) throw std::logic_error("time-optimal path point used unchecked: " + trouble.message);
   return *jp;
 }
 
-std::vector<double> make_nodes(const PathGeometry& path, int intervals) {
+Eigen::Vector2d Problem::tip(double s, bool from_left) const {
+  if (path.joint_space()) return core::end_effector(chain, path.joint().at(s, from_left).q);
+  return path.tip().at(s, from_left).p;
+}
+
+std::string Problem::where(double s, bool from_left) const {
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(3);
+  os << "s = " << s << " " << path.unit() << ", ";
+  if (path.joint_space()) {
+    const core::JointVector q = path.joint().at(s, from_left).q;
+    os << "q = (";
+    for (int j = 0; j < q.size(); ++j) os << (j ? ", " : "") << q[j];
+    os << ") rad";
+  } else {
+    const Eigen::Vector2d p = path.tip().at(s, from_left).p;
+    os << "(x, y) = (" << p.x() << ", " << p.y() << ") m";
+  }
+  return os.str();
+}
+
+Problem make_problem(const Spec& spec, const Limits& limits) {
+  if (spec.space == PathSpace::kJoint)
+    return Problem{spec.chain, JointPathGeometry(spec.joint_path), spec.configuration, limits};
+  return Problem{spec.chain, PathGeometry(spec.path), spec.configuration, limits};
+}
+
+std::vector<double> make_nodes(const SolverPath& path, int intervals) {
   std::vector<double> cuts{0.0};
   for (double s : path.stops()) cuts.push_back(s);
   cuts.push_back(path.length());
@@ -44,7 +84,7 @@ std::vector<double> make_nodes(const PathGeometry& path, int intervals) {
   return nodes;
 }
 
-std::vector<bool> rest_nodes(const PathGeometry& path, const std::vector<double>& nodes) {
+std::vector<bool> rest_nodes(const SolverPath& path, const std::vector<double>& nodes) {
   std::vector<bool> rest(nodes.size(), false);
   rest.front() = rest.back() = true;
   for (double st : path.stops()) {
@@ -142,7 +182,8 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
   const int total = K * per_interval + 1;
   const int stride = std::max(1, total / std::max(1, keep));
   *out = MotionSamples{};
-  std::vector<Eigen::Vector2d> q, qd, qdd, tau;
+  const int nj = problem.chain.num_links();
+  std::vector<core::JointVector> q, qd, qdd, tau;
   *viol = Violation{};
   viol->worst = -1;
   if (node_t) node_t->assign(pr.s.size(), 0.0);
@@ -183,12 +224,12 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
       const double t = t_node + dt;
       t_end = t;
       // limit use
-      const double vals[3][2] = {{qdv[0], qdv[1]}, {tv[0], tv[1]}, {qddv[0], qddv[1]}};
+      const core::JointVector* vals[3] = {&qdv, &tv, &qddv};
       for (int kind = 0; kind < 3; ++kind) {
         if (kind == 2 && !problem.limits.acceleration) continue;
-        for (int j = 0; j < 2; ++j) {
+        for (int j = 0; j < nj; ++j) {
           const double lim = problem.limits.of(static_cast<LimitKind>(kind), j);
-          const double v = std::abs(vals[kind][j]);
+          const double v = std::abs((*vals[kind])[j]);
           const double r = lim > 0 ? v / lim : (v > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0);
           if (r > viol->ratio[kind][j]) viol->ratio[kind][j] = r;
           if (r - 1 > viol->worst) {
@@ -216,8 +257,8 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
     t_node = t_end;
     if (node_t) (*node_t)[k + 1] = t_node;
   }
-  const auto pack = [](const std::vector<Eigen::Vector2d>& v) {
-    Eigen::Matrix2Xd m(2, v.size());
+  const auto pack = [nj](const std::vector<core::JointVector>& v) {
+    Eigen::MatrixXd m(nj, v.size());
     for (size_t i = 0; i < v.size(); ++i) m.col(i) = v[i];
     return m;
   };
@@ -232,7 +273,7 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
   const double used = (viol->worst + 1) * lim;
   os << "largest limit use: joint " << viol->joint + 1 << " " << limit_name(viol->kind) << " "
      << used << " of " << lim << " " << limit_unit(viol->kind) << " at s = " << viol->s
-     << " m, t = " << viol->t << " s (interval " << viol->interval << ", from grid point "
+     << " " << problem.path.unit() << ", t = " << viol->t << " s (interval " << viol->interval << ", from grid point "
      << viol->interval << "); ";
   if (viol->worst <= 0)
     os << "met with a margin of " << lim - used << " " << limit_unit(viol->kind) << " (" << 0.0 - viol->worst

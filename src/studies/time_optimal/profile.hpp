@@ -2,8 +2,11 @@
 /// Problem data shared by the solvers (arm, path, limits) and the dense resampling that
 /// re-checks every solution between its nodes.
 
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "studies/time_optimal/joint_path.hpp"
 #include "studies/time_optimal/path.hpp"
 #include "studies/time_optimal/phase.hpp"
 #include "studies/time_optimal/result.hpp"
@@ -11,24 +14,56 @@
 
 namespace armstudy::studies::time_optimal {
 
+/// The path the solvers see: s in [0, length] with its stops, and q(s), q'(s), q''(s)
+/// through Problem::at. Either a tip path of a 2-link arm (PathGeometry, s in m, the joint
+/// path by closed-form inverse kinematics) or a path given in joint space
+/// (JointPathGeometry, s in rad, any number of joints). Converts implicitly from both.
+class SolverPath {
+ public:
+  SolverPath(PathGeometry tip) : tip_(std::move(tip)) {}              // NOLINT: implicit
+  SolverPath(JointPathGeometry joint) : joint_(std::move(joint)) {}   // NOLINT: implicit
+  bool joint_space() const { return joint_.has_value(); }
+  double length() const { return joint_ ? joint_->length() : tip_->length(); }
+  const std::vector<double>& stops() const { return joint_ ? joint_->stops() : tip_->stops(); }
+  /// Unit of s: "m" (tip path) or "rad" (joint-space path).
+  const char* unit() const { return joint_ ? "rad" : "m"; }
+  /// @throws std::logic_error for the other kind of path.
+  const PathGeometry& tip() const;
+  const JointPathGeometry& joint() const;
+
+ private:
+  std::optional<PathGeometry> tip_;
+  std::optional<JointPathGeometry> joint_;
+};
+
 struct Problem {
   core::PlanarChain chain;
-  PathGeometry path;
-  int configuration = 1;
+  SolverPath path;
+  int configuration = 1;  ///< tip paths only
   Limits limits;
 
   /// Joint point at s (the caller has checked the path). @throws std::logic_error if the
   /// point is unreachable or singular.
   JointPoint at(double s, bool from_left = false) const;
+  /// The tip at s (world frame, m): the tip path itself, or the forward kinematics of a
+  /// joint-space path.
+  Eigen::Vector2d tip(double s, bool from_left = false) const;
+  /// "s = 0.310 m, (x, y) = (0.512, 0.100) m", or for a joint-space path
+  /// "s = 0.310 rad, q = (0.100, 1.200, -0.400) rad".
+  std::string where(double s, bool from_left = false) const;
 };
+
+/// The problem of `spec`: its path in the spec's space, the spec's chain and `limits`.
+/// @throws std::invalid_argument for an invalid path.
+Problem make_problem(const Spec& spec, const Limits& limits);
 
 /// Node arc lengths of `intervals` intervals over the path: uniform, except that every
 /// stop (polyline corner) is a node, the intervals split over the pieces in proportion to
 /// their length. @throws std::invalid_argument if intervals < number of pieces.
-std::vector<double> make_nodes(const PathGeometry& path, int intervals);
+std::vector<double> make_nodes(const SolverPath& path, int intervals);
 
 /// True at nodes where the arm must be at rest (both ends and every stop).
-std::vector<bool> rest_nodes(const PathGeometry& path, const std::vector<double>& nodes);
+std::vector<bool> rest_nodes(const SolverPath& path, const std::vector<double>& nodes);
 
 /// Joint points at the check points theta = m / checks (m = 0..checks) of every interval:
 /// out[k][m]; the last point of an interval ending at a stop is taken from the left.
@@ -51,8 +86,8 @@ double profile_duration(const Problem& problem, const Profile& profile);
 /// to [0, duration]: inside interval k, s = s_k + s'_k tau + u tau^2 / 2 with
 /// tau = t - t_k; joint velocities, accelerations and torques (core's inverse dynamics).
 struct TimedState {
-  double t = 0, s = 0, sd = 0, sdd = 0;  ///< s, m, m/s, m/s^2
-  Eigen::Vector2d q, qd, qdd, tau;       ///< rad, rad/s, rad/s^2, N m
+  double t = 0, s = 0, sd = 0, sdd = 0;  ///< s, m, m/s, m/s^2 (rad, rad/s, rad/s^2: joint path)
+  core::JointVector q, qd, qdd, tau;     ///< rad, rad/s, rad/s^2, N m
 };
 /// `node_t` are the profile's node times (resample's). @throws std::invalid_argument for a
 /// profile of another law or sizes that differ.

@@ -10,12 +10,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string place(const Problem& pb, double s, int node, int nodes) {
-  const Eigen::Vector2d p = pb.path.at(s).p;
   std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(3);
-  os << "s = " << s << " m, (x, y) = (" << p.x() << ", " << p.y() << ") m (grid point " << node
-     << " of " << nodes << ")";
+  os << pb.where(s) << " (grid point " << node << " of " << nodes << ")";
   return os.str();
 }
 }  // namespace
@@ -32,7 +28,7 @@ void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
     const XInterval xi = feasible_x(rows);
     (*sd_all)[k] = xi.empty() ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
     double v = kInf;
-    for (int j = 0; j < 2; ++j)
+    for (int j = 0; j < pb.limits.joints(); ++j)
       if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
     (*sd_velocity)[k] = v;
   }
@@ -71,9 +67,9 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
       const RowTag& a = crossed ? xi.hi_tag : xi.lo_tag;
       const RowTag& b = crossed ? xi.lo_tag : xi.lo_tag2;
       os << "no speed meets the limits near " << place(pb, nodes[k], k, n) << ": "
-         << describe(a, pb.limits);
+         << describe(a, pb.limits, pb.path.unit());
       if (b.joint != a.joint || b.kind != a.kind || b.s != a.s)
-        os << " conflicts with " << describe(b, pb.limits);
+        os << " conflicts with " << describe(b, pb.limits, pb.path.unit());
       if (rest[k] && xi.lo <= xi.hi + tol)
         os << " (the arm must be at rest there, but the limits need s'^2 >= " << xi.lo << " m^2/s^2)";
       out.message = os.str();
@@ -97,7 +93,7 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
       RowTag tag = ur.hi_tag;
       if (!(ur.hi <= (khi[k + 1] - x[k]) / (2 * ds))) tag = khi_tag[k + 1];
       out.message = "the limits hold the arm at rest near " + place(pb, nodes[k], k, n) +
-                    ": " + describe(tag, pb.limits) +
+                    ": " + describe(tag, pb.limits, pb.path.unit()) +
                     " allows no motion there, so the path cannot be traversed in finite time";
       return out;
     }

@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/types.hpp"
 #include "studies/common.hpp"
 #include "studies/time_optimal/phase.hpp"
 #include "studies/time_optimal/spec.hpp"
@@ -23,17 +24,18 @@ enum class SegmentLaw {
 
 /// Samples of a motion (columns are samples, ordered in s and t).
 struct MotionSamples {
-  std::vector<double> s;    ///< m
+  std::vector<double> s;    ///< m (rad for a joint-space path, so are sd and sdd per s)
   std::vector<double> t;    ///< s
   std::vector<double> sd;   ///< m/s
   std::vector<double> sdd;  ///< m/s^2
-  Eigen::Matrix2Xd q, qd, qdd, tau;  ///< rad, rad/s, rad/s^2, N m (inverse dynamics)
+  Eigen::MatrixXd q, qd, qdd, tau;  ///< (joints x samples) rad, rad/s, rad/s^2, N m (inverse dynamics)
 };
 
 /// The largest use of each limit over the densely resampled motion.
 struct Violation {
-  /// ratio[kind][joint] = max |value| / limit (> 1: violated); kind as LimitKind
-  double ratio[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  /// ratio[kind][joint] = max |value| / limit (> 1: violated); kind as LimitKind (entries
+  /// beyond the arm's joints stay 0)
+  double ratio[3][core::kMaxLinks] = {};
   double worst = 0;      ///< max over kinds and joints of ratio - 1 (<= 0: every limit met)
   int joint = 0;         ///< where the worst ratio occurs: joint (0-based)
   LimitKind kind = LimitKind::kVelocity;
@@ -96,7 +98,7 @@ struct GridConvergence {
 struct Result {
   Status status = Status::kUnsolvable;
   std::string message;
-  double path_length = 0;   ///< m
+  double path_length = 0;   ///< m (rad for a joint-space path)
   std::vector<SolverResult> solvers;  ///< exact first, then DP run(s), then Complex
   /// maximum velocity curve on the exact grid: the largest s' at which some s'' meets
   /// every limit at that point (m/s); and the speed allowed by velocity limits alone
@@ -105,10 +107,15 @@ struct Result {
   GridConvergence grid;
   /// the exact solution at equal time steps (renderer): t, s, tip and joint angles
   std::vector<double> motion_t, motion_s;
-  Eigen::Matrix2Xd motion_p, motion_q;
+  Eigen::Matrix2Xd motion_p;
+  Eigen::MatrixXd motion_q;  ///< (joints x steps)
   /// the path at the exact grid (for plots): tip points
   Eigen::Matrix2Xd path_p;
   Limits limits;
+  /// the path was given in joint space: s is in rad (joint-space chord length) and s' in
+  /// rad/s, not m and m/s; the elbow's sin q2 means nothing there (reported as 1)
+  bool joint_space = false;
+  const char* s_unit() const { return joint_space ? "rad" : "m"; }
 };
 
 }  // namespace armstudy::studies::time_optimal

@@ -50,9 +50,14 @@ int dense_points(int intervals, int at_least) {
 }
 // The path's worst point outside the workspace (largest excess, located to 1e-12 m of s
 // between the probes by golden-section search), or the first singular probe; "" if none.
-std::string path_trouble(const Problem& pb, int probes) {
+std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen::Vector2d>& joint_range) {
+  if (pb.path.joint_space()) {
+    // a joint-space path has no workspace or singularity to leave, only the joints' ranges
+    const auto e = range_excursion(pb.path.joint(), joint_range);
+    return e ? e->text : "";
+  }
   const std::vector<double> probe = make_nodes(pb.path, probes);
-  const auto margin = [&](double s) { return workspace_margin(pb.chain, pb.path, s); };
+  const auto margin = [&](double s) { return workspace_margin(pb.chain, pb.path.tip(), s); };
   size_t worst = 0, first_out = probe.size(), last_out = 0;
   std::vector<double> m(probe.size());
   for (size_t k = 0; k < probe.size(); ++k) {
@@ -86,7 +91,7 @@ std::string path_trouble(const Problem& pb, int probes) {
   if (m_worst < 0) {
     const core::Reach reach = core::reach_2link(pb.chain.links[0].length, pb.chain.links[1].length,
                                                 Eigen::Vector2d(1, 0));
-    const Eigen::Vector2d p = pb.path.at(s_worst).p;
+    const Eigen::Vector2d p = pb.tip(s_worst);
     std::ostringstream os;
     os.precision(6);
     os << "the path leaves the workspace at s = " << s_worst << " m, (x, y) = (" << p.x() << ", "
@@ -101,7 +106,7 @@ std::string path_trouble(const Problem& pb, int probes) {
   for (size_t k = 0; k < probe.size(); ++k)
     for (bool left : {false, true}) {
       PathTrouble trouble;
-      if (!joint_point(pb.chain, pb.path, pb.configuration, probe[k], left, &trouble))
+      if (!joint_point(pb.chain, pb.path.tip(), pb.configuration, probe[k], left, &trouble))
         return trouble.message;
     }
   return "";
@@ -184,12 +189,14 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact, i
   os.precision(3);
   os << g.change;
   if (g.change > tolerance) {
+    const std::string u = pb.path.unit();
     os << ", over the tolerance " << tolerance << ": the grid is too coarse, not converged. "
        << fixed(100 * g.share, 0) << " % of the change lies in s = " << fixed(g.s_lo, 4)
-       << " to " << fixed(g.s_hi, 4) << " m (grid points " << g.point_lo << " to " << g.point_hi
-       << " of " << n << "; path length " << fixed(pb.path.length(), 4) << " m), where s' <= "
-       << g.max_sd << " m/s and |sin q2| falls to " << g.min_sin_q2;
-    if (g.min_sin_q2 < 0.05)
+       << " to " << fixed(g.s_hi, 4) << " " << u << " (grid points " << g.point_lo << " to " << g.point_hi
+       << " of " << n << "; path length " << fixed(pb.path.length(), 4) << " " << u << "), where s' <= "
+       << g.max_sd << " " << u << "/s";
+    if (!pb.path.joint_space()) os << " and |sin q2| falls to " << g.min_sin_q2;
+    if (!pb.path.joint_space() && g.min_sin_q2 < 0.05)
       os << " (near a singular pose: the joint rates per metre of path grow without bound there)";
     os << "; refine the grid there (more exact.grid_points) or keep the path away from it";
   } else {
@@ -213,8 +220,24 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   const auto report = [&](double f, std::string_view stage) {
     if (progress) progress(f, stage);
   };
-  ARM_THROW_UNLESS(spec.chain.num_links() == 2,
-                   "time-optimal arm has " << spec.chain.num_links() << " links; should have 2");
+  const int nj = spec.chain.num_links();
+  if (spec.space == PathSpace::kTip) {
+    ARM_THROW_UNLESS(nj == 2, "time-optimal arm has " << nj << " links; a tip path needs 2 (give "
+                                                          "a redundant arm its path in joint space)");
+  } else {
+    ARM_THROW_UNLESS(nj >= 2, "time-optimal arm has " << nj << " links; should have 2 to " << core::kMaxLinks);
+    for (size_t i = 0; i < spec.joint_path.points.size(); ++i)
+      ARM_THROW_UNLESS(spec.joint_path.points[i].size() == nj,
+                       "joint path waypoint " << i + 1 << " has " << spec.joint_path.points[i].size()
+                                              << " angles; the arm has " << nj << " joints");
+    ARM_THROW_UNLESS(spec.joint_path.range.empty() || static_cast<int>(spec.joint_path.range.size()) == nj,
+                     "joint range has " << spec.joint_path.range.size() << " entries; the arm has " << nj << " joints");
+  }
+  for (int j = 0; j < nj; ++j)
+    ARM_THROW_UNLESS(spec.chain.links[j].active, "time-optimal joint " << j + 1 << " is passive; every joint must be active");
+  ARM_THROW_UNLESS(spec.velocity_limit.size() == nj && spec.torque_limit.size() == nj &&
+                       (!spec.acceleration_limit || spec.acceleration_limit->size() == nj),
+                   "time-optimal limits should have one entry per joint (" << nj << ")");
   ARM_THROW_UNLESS(spec.configuration == 1 || spec.configuration == 2,
                    "configuration " << spec.configuration << " should be 1 or 2");
   ARM_THROW_UNLESS(spec.exact.grid_points >= 2,
@@ -224,19 +247,21 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   ARM_THROW_UNLESS(spec.exact.grid_tolerance > 0,
                    "exact grid tolerance " << spec.exact.grid_tolerance << " should be > 0");
   ARM_THROW_UNLESS(spec.dp.levels >= 2, "DP levels " << spec.dp.levels << " should be >= 2");
-  for (int j = 0; j < 2; ++j) {
+  for (int j = 0; j < nj; ++j) {
     ARM_THROW_UNLESS(spec.velocity_limit[j] >= 0 && spec.torque_limit[j] >= 0,
                      "joint " << j + 1 << " limits should be >= 0");
   }
   Result res;
   res.limits = Limits{spec.velocity_limit, spec.torque_limit, spec.acceleration_limit};
-  const Problem pb{spec.chain, PathGeometry(spec.path), spec.configuration, res.limits};
+  res.joint_space = spec.space == PathSpace::kJoint;
+  const Problem pb = make_problem(spec, res.limits);
   res.path_length = pb.path.length();
 
   // the path must stay in the workspace and off singular poses: check it finely
   report(0.02, "checking the path");
   {
-    const std::string trouble = path_trouble(pb, std::max(4 * spec.exact.grid_points, 4000));
+    const std::string trouble =
+        path_trouble(pb, std::max(4 * spec.exact.grid_points, 4000), spec.joint_path.range);
     if (!trouble.empty()) {
       res.status = Status::kUnsolvable;
       res.message = trouble;
@@ -283,7 +308,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd);
   res.mvc_s = grid;
   res.path_p.resize(2, grid.size());
-  for (size_t k = 0; k < grid.size(); ++k) res.path_p.col(k) = pb.path.at(grid[k]).p;
+  for (size_t k = 0; k < grid.size(); ++k) res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());
 
   // DP and Complex enforce the limits at checks_per_segment + 1 points of each of their
   // long segments; between them a limit can be overshot. Like the exact solver, each is
@@ -387,7 +412,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.motion_t.resize(steps + 1);
   res.motion_s.resize(steps + 1);
   res.motion_p.resize(2, steps + 1);
-  res.motion_q.resize(2, steps + 1);
+  res.motion_q.resize(nj, steps + 1);
   size_t k = 0;
   for (int i = 0; i <= steps; ++i) {
     const double t = exact.duration * i / steps;
@@ -408,7 +433,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
 
   res.status = Status::kSolved;
   std::ostringstream os;
-  os << "fastest traversal of the " << fixed(res.path_length, 3) << " m path: "
+  os << "fastest traversal of the " << fixed(res.path_length, 3) << " " << pb.path.unit()
+     << (res.joint_space ? " joint-space path: " : " path: ")
      << fixed(exact.duration, 4) << " s (exact)";
   for (const SolverResult& r : res.solvers)
     if (r.name != "exact" && r.solved) os << ", " << fixed(r.duration, 4) << " s (" << r.name << ")";

@@ -1,7 +1,8 @@
 #pragma once
-/// The time-optimal study (Ozkipcak 1994): the fastest rest-to-rest motion of a
-/// 2-link arm's tip along a given path under joint velocity, torque and (optional)
-/// acceleration limits. SI units and radians throughout.
+/// The time-optimal study (Ozkipcak 1994): the fastest rest-to-rest motion along a given
+/// path under joint velocity, torque and (optional) acceleration limits: the tip path of a
+/// 2-link arm, or a path in joint space for a chain of 2 to core::kMaxLinks active joints.
+/// SI units and radians throughout.
 
 #include <optional>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "core/planar_chain.hpp"
+#include "core/types.hpp"
 
 namespace armstudy::studies::time_optimal {
 
@@ -22,6 +24,20 @@ enum class PathKind {
 struct PathSpec {
   PathKind kind = PathKind::kLine;
   std::vector<Eigen::Vector2d> points;  ///< m, world frame; >= 2 (line: exactly 2)
+};
+
+/// Where the path is given.
+enum class PathSpace {
+  kTip,    ///< a tip path (PathSpec) of a 2-link arm, joint path by inverse kinematics
+  kJoint,  ///< a path in joint space (JointPathSpec), any number of joints
+};
+
+/// A path through joint configurations (joint_path.hpp: s is the joint-space chord length).
+struct JointPathSpec {
+  PathKind kind = PathKind::kLine;
+  std::vector<core::JointVector> points;  ///< rad, one angle per joint; >= 2 (line: exactly 2)
+  /// Optional range [lo, hi] (rad) per joint that the whole path must stay in (empty: none).
+  std::vector<Eigen::Vector2d> range;
 };
 
 /// Which state the dynamic programme uses at its nodes.
@@ -59,13 +75,20 @@ struct ExactSettings {
 };
 
 /// The whole problem, validated by the case loader (the solver re-checks its invariants).
+/// A per-joint value of a 2-link arm, e.g. the default limits.
+inline core::JointVector joint_pair(double a, double b) {
+  return (core::JointVector(2) << a, b).finished();
+}
+
 struct Spec {
-  core::PlanarChain chain;  ///< exactly 2 links
-  PathSpec path;
-  int configuration = 1;    ///< 1: q2 in (0, pi), 2: q2 in (-pi, 0) (core::ik_2link)
-  Eigen::Vector2d velocity_limit{3.0, 4.0};  ///< rad/s per joint, >= 0
-  Eigen::Vector2d torque_limit{10.0, 4.0};   ///< N m per joint, >= 0
-  std::optional<Eigen::Vector2d> acceleration_limit;  ///< rad/s^2 per joint, >= 0
+  core::PlanarChain chain;  ///< 2 links (tip path) or 2 to kMaxLinks (joint path), all active
+  PathSpace space = PathSpace::kTip;
+  PathSpec path;            ///< space kTip
+  JointPathSpec joint_path; ///< space kJoint: one angle per link in every waypoint
+  int configuration = 1;    ///< tip path: 1: q2 in (0, pi), 2: q2 in (-pi, 0) (core::ik_2link)
+  core::JointVector velocity_limit = joint_pair(3.0, 4.0);  ///< rad/s per joint, >= 0
+  core::JointVector torque_limit = joint_pair(10.0, 4.0);   ///< N m per joint, >= 0
+  std::optional<core::JointVector> acceleration_limit;       ///< rad/s^2 per joint, >= 0
   DpSettings dp;
   ComplexSettings complex;
   ExactSettings exact;
