@@ -31,10 +31,11 @@ for r in $(seq "$rounds"); do
   a=$("$build/tests/armstudy_bench" --benchmark_filter='BM_TimeOptimalAnchor' \
         --benchmark_format=csv 2>/dev/null | grep '^"BM_TimeOptimalAnchor')
   echo "$a" | while IFS=, read -r name iters real cpu unit rest; do
-    echo "  armstudy $name real_${unit} $real"
+    echo "  armstudy $name real_${unit} $real cpu_${unit} $cpu"
   done
-  tm=$(echo "$t" | sed 's/.*median_ms \([0-9.]*\).*/\1/')
+  tm=$(echo "$t" | sed 's/.* median_ms \([0-9.]*\).*/\1/')
+  tc=$(echo "$t" | sed 's/.*cpu_median_ms \([0-9.]*\).*/\1/')
   echo "$a" | while IFS=, read -r name iters real cpu unit rest; do
-    python3 -c "print('  TOPP-RA / armstudy solve time, $name: %.2fx' % ($tm / $real))"
+    python3 -c "print('  TOPP-RA / armstudy solve time, $name: wall %.2fx, CPU %.2fx' % ($tm / $real, $tc / $cpu))"
   done
 done
