@@ -56,7 +56,7 @@ SceneRenderer::SceneRenderer(const ArmScene& scene, const std::string& source,
       scene_(scene),
       source_(source),
       settings_(settings),
-      strip_threads_(std::thread::hardware_concurrency() >= 2 ? 2 : 1) {}
+      strip_threads_(1) {}
 
 void SceneRenderer::set_strip_threads(int threads) { strip_threads_ = std::clamp(threads, 1, 8); }
 

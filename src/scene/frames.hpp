@@ -34,7 +34,10 @@ class SceneRenderer {
   /// model, OSMesa context and MuJoCo scene, made once and kept), each frame a function of
   /// its pose alone, so the strip is the same image on any number of threads.
   Image strip(std::span<const PoseSample> samples, const std::string& title, int columns);
-  /// Threads a strip renders on (default: 2 where the machine has 2 cores or more, else 1).
+  /// Threads a strip renders on (default 1: on a shared 2-core machine llvmpipe's own
+  /// rasteriser threads already fill both cores and a second thread measured no faster,
+  /// while each twin holds another model and OSMesa context; tests/bench/scene_bench.cpp
+  /// BM_Strip16Frames640x480 measures 1 against 2).
   int strip_threads() const { return strip_threads_; }
   void set_strip_threads(int threads);
 
