@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <thread>
 
 #include "core/kinematics.hpp"
 #include "scene/scene_error.hpp"
@@ -50,7 +52,13 @@ SceneRenderer::SceneRenderer(const ArmScene& scene, const std::string& source,
     : chain_(scene.chain),
       model_(scene.mjcf, source),
       map_(scene.chain, model_.model()),
-      renderer_(model_.model(), settings, scene.view) {}
+      renderer_(model_.model(), settings, scene.view),
+      scene_(scene),
+      source_(source),
+      settings_(settings),
+      strip_threads_(1) {}
+
+void SceneRenderer::set_strip_threads(int threads) { strip_threads_ = std::clamp(threads, 1, 8); }
 
 Image SceneRenderer::frame(const PoseSample& s, const FrameLabels& labels) {
   set_pose(model_, map_, s);
@@ -59,14 +67,36 @@ Image SceneRenderer::frame(const PoseSample& s, const FrameLabels& labels) {
 
 Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::string& title,
                            int columns) {
-  begin_replay(model_);
-  std::vector<Image> tiles;
-  for (size_t k = 0; k < samples.size(); ++k) {
+  const size_t n = samples.size();
+  std::vector<Image> tiles(n);
+  const auto label = [&](size_t k) {
     FrameLabels l;
     l.top_left = time_label(samples[k].t);
     if (k == 0 && !title.empty()) l.bottom_left = title;
-    tiles.push_back(frame(samples[k], l));
-  }
+    return l;
+  };
+  // frame k on thread k % threads; thread 0 is this one, thread j > 0 draws with twin j - 1
+  const int threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(strip_threads_), n / 2));
+  // twins are made here, on the calling thread (loading a model is not thread-safe)
+  while (static_cast<int>(twins_.size()) < threads - 1)
+    twins_.push_back(std::make_unique<SceneRenderer>(scene_, source_, settings_));
+  std::vector<std::exception_ptr> errors(static_cast<size_t>(std::max(threads, 1)));
+  const auto draw = [&](int j) {
+    try {
+      SceneRenderer& r = j == 0 ? *this : *twins_[static_cast<size_t>(j - 1)];
+      begin_replay(r.model_);
+      for (size_t k = static_cast<size_t>(j); k < n; k += static_cast<size_t>(std::max(threads, 1)))
+        tiles[k] = r.frame(samples[k], label(k));
+    } catch (...) {
+      errors[static_cast<size_t>(j)] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 1; j < threads; ++j) pool.emplace_back(draw, j);
+  draw(0);
+  for (auto& t : pool) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
   return tile(tiles, columns, 8, Rgb{255, 255, 255});
 }
 

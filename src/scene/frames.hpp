@@ -2,6 +2,7 @@
 /// Frame strips (N poses at given times, one PNG, time labels) and stroboscopic loci
 /// (several poses superimposed, older ones fainter, the end-effector path traced).
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,8 +29,17 @@ class SceneRenderer {
   Image frame(const PoseSample& s, const FrameLabels& labels);
 
   /// A strip: one frame per sample, labelled "t = 0.130 s" (plus `title` on the first),
-  /// tiled `columns` per row. Begins a replay (mj_resetData) first.
+  /// tiled `columns` per row. Begins a replay (mj_resetData) first. The frames render on
+  /// strip_threads() threads: the others draw through twins of this renderer (their own
+  /// model, OSMesa context and MuJoCo scene, made once and kept), each frame a function of
+  /// its pose alone, so the strip is the same image on any number of threads.
   Image strip(std::span<const PoseSample> samples, const std::string& title, int columns);
+  /// Threads a strip renders on (default 1: on a shared 2-core machine llvmpipe's own
+  /// rasteriser threads already fill both cores and a second thread measured no faster,
+  /// while each twin holds another model and OSMesa context; tests/bench/scene_bench.cpp
+  /// BM_Strip16Frames640x480 measures 1 against 2).
+  int strip_threads() const { return strip_threads_; }
+  void set_strip_threads(int threads);
 
   /// Colours of the locus's extra drawings (RGBA, 0-1).
   struct LocusStyle {
@@ -60,6 +70,11 @@ class SceneRenderer {
   MujocoModel model_;
   ChainMap map_;
   Renderer renderer_;
+  ArmScene scene_;  // what the twins load
+  std::string source_;
+  RenderSettings settings_;
+  int strip_threads_ = 1;
+  std::vector<std::unique_ptr<SceneRenderer>> twins_;
 };
 
 /// Segments of a traced path and dots of a flight a locus draws at most (longer ones are

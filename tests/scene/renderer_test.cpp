@@ -114,6 +114,23 @@ TEST(Renderer, SameCaseRendersToByteIdenticalPngs) {
   }
 }
 
+// a strip drawn on 2 threads (a twin renderer draws every other frame) is the strip drawn on
+// one, byte for byte, also the second time (the twin is kept) and for an odd frame count
+TEST(Renderer, StripOnTwoThreadsEqualsTheStripOnOne) {
+  const LineMotion m;
+  for (const int frames : {7, 16}) {
+    std::vector<PoseSample> samples;
+    for (double t : even_times(0, 1, frames)) samples.push_back(m.at(t));
+    SceneRenderer one(line_scene(m), "line", RenderSettings{});
+    one.set_strip_threads(1);
+    const std::string ref = encode_png(one.strip(samples, "one thread", 3));
+    SceneRenderer two(line_scene(m), "line", RenderSettings{});
+    two.set_strip_threads(2);
+    for (int run = 0; run < 2; ++run)
+      EXPECT_TRUE(encode_png(two.strip(samples, "one thread", 3)) == ref) << frames << " frames, run " << run;
+  }
+}
+
 TEST(Renderer, LocusDrawsOlderPosesFainterAndThePath) {
   const LineMotion m;
   SceneRenderer sr(line_scene(m), "line", RenderSettings{});

@@ -1,4 +1,5 @@
 #include "studies/time_optimal/path.hpp"
+#include "studies/time_optimal/two_link_dynamics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -212,11 +213,9 @@ std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const Path
   jp.dq = st->qd;
   jp.ddq = st->qdd;
   jp.sin_q2 = st->sin_q2;
-  // tau = M (q' s'' + q'' s'^2) + C(q, q' s') q' s' + g = a s'' + b s'^2 + c
-  const core::JointVector zero = core::JointVector::Zero(2);
-  jp.c = core::inverse_dynamics(chain, jp.q, zero, zero);
-  jp.a = core::mass_matrix(chain, jp.q) * jp.dq;
-  jp.b = core::inverse_dynamics(chain, jp.q, jp.dq, jp.ddq) - jp.c;
+  // tau = M (q' s'' + q'' s'^2) + C(q, q' s') q' s' + g = a s'' + b s'^2 + c, in closed form
+  // (two_link_dynamics.hpp; equal to core's generic chain to 1e-12, the tests' oracle)
+  path_dynamics(make_two_link_dynamics(chain), jp.q, jp.dq, jp.ddq, &jp.a, &jp.b, &jp.c);
   return jp;
 }
 

@@ -1,0 +1,40 @@
+#pragma once
+/// Closed-form dynamics of a 2-link planar chain for the path-projected torques of the
+/// time-optimal solvers: tau = a s'' + b s'^2 + c with a = M q', b = M q'' + C(q, q') q',
+/// c = g(q) (Pham and Pham 2018's a, b, c). The fast path of joint_point (path.hpp) for tip
+/// paths; core/dynamics.hpp (the generic chain) stays the reference, and the tests require
+/// the two to agree to 1e-12 relative.
+///
+/// Model (relative angles q1, q2, absolute theta1 = base_angle + q1, theta12 = theta1 + q2;
+/// every body of link i, links and point masses, at (x, y) in link i's frame):
+///   M = [[a11 + 2 g, a12 + g], [a12 + g, a22]],  g = A cos q2 - B sin q2,
+///   a11 = J1 + m2 L1^2 + J2, a12 = a22 = J2 (J_i: inertia of link i's bodies about joint i,
+///   m2: their mass on link 2), A = L1 sum(m x), B = L1 sum(m y) over link 2's bodies,
+///   plus I c c^T of every spinner;
+///   C(q, q') q' = (g' (2 q1' q2' + q2'^2), -g' q1'^2),  g' = -A sin q2 - B cos q2;
+///   gravity (G along -y): c2 = G (cos theta12 X2 - sin theta12 Y2),
+///   c1 = G (cos theta1 (X1 + L1 m2) - sin theta1 Y1) + c2, with (X_i, Y_i) = sum(m x, m y)
+///   over link i's bodies.
+
+#include "core/planar_chain.hpp"
+#include "core/types.hpp"
+
+namespace armstudy::studies::time_optimal {
+
+/// The constant parameters of the model above (SI).
+struct TwoLinkDynamics {
+  double L1 = 0;
+  double a11 = 0, a12 = 0, a22 = 0, A = 0, B = 0;
+  double X1 = 0, Y1 = 0, X2 = 0, Y2 = 0, m2 = 0;
+  double gravity = 0, base_angle = 0;
+};
+
+/// @throws std::invalid_argument unless `chain` has 2 links.
+TwoLinkDynamics make_two_link_dynamics(const core::PlanarChain& chain);
+
+/// a = M(q) dq, b = M(q) ddq + C(q, dq) dq, c = g(q) (2 entries each; N m per unit s'', s'^2).
+void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const core::JointVector& dq,
+                   const core::JointVector& ddq, core::JointVector* a, core::JointVector* b,
+                   core::JointVector* c);
+
+}  // namespace armstudy::studies::time_optimal

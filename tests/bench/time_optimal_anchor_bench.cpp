@@ -1,0 +1,61 @@
+// The exact time-optimal solve on the anchor problem that scripts/bench_toppra.sh runs beside
+// TOPP-RA (scripts/toppra_anchor.cpp is TOPP-RA's side): horizontal plane, massless links of
+// 1 m with a 1 kg point mass at the end of each, the tip on the line (1.6, 0.4) -> (0.4, 1.6)
+// m, |tau| <= 10 N m, |qd| <= 2 rad/s, rest to rest, elbow q2 > 0. TOPP-RA gives
+// 1.180762160 s at 1000 intervals with limits at the interval ends.
+//   BM_TimeOptimalAnchorExact/1000/1: the solver alone, 1000 intervals, limits at the ends of
+//     every interval (checks = 1, TOPP-RA's "interpolation"); /1000/2: the study's default
+//     2 checks per interval
+//   BM_TimeOptimalAnchorStudy: the study's default exact solve with its re-checks (dense
+//     resampling, the doubled check points where it fails, the halved grid), DP and Complex off
+#include <benchmark/benchmark.h>
+
+#include "studies/time_optimal/profile.hpp"
+#include "studies/time_optimal/solve.hpp"
+#include "studies/time_optimal/solvers.hpp"
+
+namespace {
+using namespace armstudy::studies::time_optimal;
+
+Spec anchor_spec() {
+  Spec spec;
+  spec.chain = default_arm(1.0, 1.0);
+  spec.path.kind = PathKind::kLine;
+  spec.path.points = {{1.6, 0.4}, {0.4, 1.6}};
+  spec.configuration = 1;
+  spec.velocity_limit = Eigen::Vector2d(2.0, 2.0);
+  spec.torque_limit = Eigen::Vector2d(10.0, 10.0);
+  return spec;
+}
+
+void BM_TimeOptimalAnchorExact(benchmark::State& state) {
+  const Spec spec = anchor_spec();
+  armstudy::core::JointVector v(2), t(2);
+  v << 2.0, 2.0;
+  t << 10.0, 10.0;
+  const Problem pb = make_problem(spec, Limits{v, t, std::nullopt});
+  const std::vector<double> nodes = make_nodes(pb.path, static_cast<int>(state.range(0)));
+  double duration = 0;
+  for (auto _ : state) duration = solve_exact(pb, nodes, static_cast<int>(state.range(1))).duration;
+  state.counters["duration_s"] = duration;
+  state.counters["duration_minus_toppra_s"] = duration - 1.180762160;
+}
+BENCHMARK(BM_TimeOptimalAnchorExact)->Args({1000, 1})->Args({1000, 2})->Unit(benchmark::kMillisecond);
+
+void BM_TimeOptimalAnchorStudy(benchmark::State& state) {
+  Spec spec = anchor_spec();
+  spec.dp.states = {};
+  spec.dp.convergence_segments = {};
+  spec.complex.enabled = false;
+  spec.exact.grid_points = 1001;  // 1000 intervals, as TOPP-RA's
+  double duration = 0;
+  for (auto _ : state) {
+    const Result r = solve(spec);
+    benchmark::DoNotOptimize(r.status);
+    duration = r.solvers.empty() ? 0.0 : r.solvers.front().duration;
+  }
+  state.counters["duration_s"] = duration;
+}
+BENCHMARK(BM_TimeOptimalAnchorStudy)->Unit(benchmark::kMillisecond);
+
+}  // namespace
