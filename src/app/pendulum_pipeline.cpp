@@ -53,9 +53,9 @@ class PendulumRun final : public StudyRun {
   }
 
   std::vector<KeyFigure> key_figures() const override {
-    return {{"energy_drift_relative", result_.energy_drift_rel, ""},
-            {"energy_exchanged_J", result_.energy_scale, "J"},
-            {"integrator_steps", static_cast<double>(result_.steps_accepted), ""}};
+    return {{"energy_drift_relative", result_.energy_drift_rel, "", "energy drift (share of the energy exchanged)"},
+            {"energy_exchanged_J", result_.energy_scale, "J", "largest kinetic energy"},
+            {"integrator_steps", static_cast<double>(result_.steps_accepted), "", "integrator steps"}};
   }
 
   // the study report: one call, everything else is src/report's

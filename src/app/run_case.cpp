@@ -133,7 +133,8 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     nlohmann::json kf = nlohmann::json::array();
     if (status == studies::Status::kSolved)
       for (const auto& k : c.run->key_figures())
-        kf.push_back({{"name", k.name}, {"value", k.value}, {"unit", k.unit}});
+        kf.push_back({{"name", k.name}, {"value", k.value}, {"unit", k.unit},
+                      {"label", k.label.empty() ? k.name : k.label}});
     j["key_figures"] = kf;
     // what decides whether a later run may keep this output (main.cpp, already_done)
     j["run_options"] = {{"render", options.render}};

@@ -239,12 +239,12 @@ class ThrowingRun final : public StudyRun {
   std::vector<KeyFigure> key_figures() const override {
     const auto& r = result_;
     std::vector<KeyFigure> k = {
-        {"energy_eq8_J", r.initial.evaluation.energy, "J"},
-        {"energy_reference_J", r.reference.evaluation.energy, "J"},
-        {"energy_idp_J", r.idp.evaluation.energy, "J"},
-        {"saving_percent", r.saving_percent, "%"},
-        {"idp_run_time_s", r.idp_time, "s"},
-        {"replay_error_rad", r.replay_error, "rad"},
+        {"energy_eq8_J", r.initial.evaluation.energy, "J", "energy of the eq. 8 start"},
+        {"energy_reference_J", r.reference.evaluation.energy, "J", "energy of the feasible reference"},
+        {"energy_idp_J", r.idp.evaluation.energy, "J", "energy of the IDP optimum"},
+        {"saving_percent", r.saving_percent, "%", "IDP saving against the reference"},
+        {"idp_run_time_s", r.idp_time, "s", "IDP run time"},
+        {"replay_error_rad", r.replay_error, "rad", "largest open-loop replay error"},
     };
     if (!r.idp_seeds.empty()) {
       double lo = INFINITY, hi = -INFINITY;
@@ -252,10 +252,10 @@ class ThrowingRun final : public StudyRun {
         lo = std::min(lo, sd.evaluation.energy);
         hi = std::max(hi, sd.evaluation.energy);
       }
-      k.push_back({"idp_seed_spread_J", hi - lo, "J"});
+      k.push_back({"idp_seed_spread_J", hi - lo, "J", "spread of the IDP seeds"});
     }
-    if (r.nlopt_ran) k.push_back({"energy_slsqp_J", r.nlopt.evaluation.energy, "J"});
-    if (r.flight.reaches) k.push_back({"landing_x_m", r.flight.landing.x(), "m"});
+    if (r.nlopt_ran) k.push_back({"energy_slsqp_J", r.nlopt.evaluation.energy, "J", "energy of the SLSQP optimum"});
+    if (r.flight.reaches) k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x"});
     return k;
   }
 

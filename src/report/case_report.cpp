@@ -55,52 +55,58 @@ void copy_stylesheet(const fs::path& dir) {
   write_text(dir / "report.css", css);
 }
 
-// the case file's values as rows of (dotted key path, value)
-void flatten_yaml(const YAML::Node& node, const std::string& path,
-                  std::vector<std::vector<std::string>>* rows) {
-  if (node.IsMap()) {
-    for (const auto& kv : node) {
-      const std::string key = kv.first.Scalar();
-      flatten_yaml(kv.second, path.empty() ? key : path + "." + key, rows);
-    }
-  } else if (node.IsSequence()) {
-    bool scalars = true;
-    for (const auto& e : node) scalars &= e.IsScalar();
-    if (scalars) {
-      std::string v = "[";
-      for (size_t i = 0; i < node.size(); ++i) v += (i ? ", " : "") + node[i].Scalar();
-      rows->push_back({path, v + "]"});
-    } else {
-      for (size_t i = 0; i < node.size(); ++i)
-        flatten_yaml(node[i], path + "[" + std::to_string(i) + "]", rows);
-    }
-  } else if (node.IsScalar()) {
-    rows->push_back({path, node.Scalar()});
-  } else {
-    rows->push_back({path, "~"});
-  }
-}
-
 Section case_section(const cases::CaseInfo& info) {
   Section s;
   s.id = "case";
   s.heading = "The case";
   s.new_page = false;
-  Table t;
-  t.caption = "Case parameters as written in " + fs::path(info.path).filename().string() +
-              " (keys carry their unit; the study sections list the defaults it filled in)";
-  t.header = {"key", "value"};
-  try {
-    const YAML::Node root = YAML::Load(info.yaml);
-    flatten_yaml(root, "", &t.rows);
-  } catch (const YAML::Exception& e) {
-    // the case was validated before it ran; show why it cannot be tabulated anyway
-    s.note(std::string("the case file could not be tabulated: ") + e.what());
-  }
-  if (!t.rows.empty()) s.table(std::move(t));
-  s.paragraph("The case file itself:");
+  // the file as written (keys carry their unit); the study's parameter table lists the
+  // defaults it filled in
+  s.paragraph("The case file " + fs::path(info.path).filename().string() +
+              " as written (keys carry their unit):");
   s.code(info.yaml);
   return s;
+}
+
+// page 1 is the answer; the details follow as one part and the appendix as another: only
+// those two start a printed page (a page per section left most of them half empty)
+void lay_out_case_page(const nlohmann::json& results, CasePage& page) {
+  page.answer = answer_box(results, page);
+  // the study's full parameter tables are reference material: to the appendix, in words
+  Section params;
+  params.id = "parameters";
+  params.heading = "Appendix A. Parameters used";
+  for (Section& s : page.sections)
+    for (auto b = s.blocks.begin(); b != s.blocks.end();) {
+      if (b->kind == Block::Kind::kTable && b->table.caption.starts_with("Parameters used")) {
+        Table t = std::move(b->table);
+        t.caption = "Parameters the study used, the defaults it filled in included (SI units).";
+        for (auto& row : t.rows) {
+          if (row.empty()) continue;
+          std::string words, part;
+          std::stringstream in(row[0]);
+          while (std::getline(in, part, '.')) words += (words.empty() ? "" : ", ") + label_from_key(part);
+          row[0] = words;
+        }
+        params.table(std::move(t));
+        b = s.blocks.erase(b);
+      } else {
+        ++b;
+      }
+    }
+  if (!params.blocks.empty()) {
+    auto at = std::find_if(page.sections.begin(), page.sections.end(),
+                           [](const Section& s) { return s.id == "case"; });
+    page.sections.insert(at, std::move(params));
+  }
+  const bool has_params = std::any_of(page.sections.begin(), page.sections.end(),
+                                      [](const Section& s) { return s.id == "parameters"; });
+  for (size_t k = 0; k < page.sections.size(); ++k) {
+    Section& s = page.sections[k];
+    s.new_page = k == 0 || s.id == "parameters" || (s.id == "case" && !has_params);
+    if (s.id == "case") s.heading = has_params ? "Appendix B. The case file" : "Appendix A. The case file";
+    if (s.id == "provenance") s.heading = has_params ? "Appendix C. Provenance" : "Appendix B. Provenance";
+  }
 }
 
 Section checks_section(const nlohmann::json& results) {
@@ -112,7 +118,7 @@ Section checks_section(const nlohmann::json& results) {
   if (results.contains("checks"))
     for (const auto& c : results["checks"]) {
       const bool passed = c.value("passed", false);
-      t.rows.push_back({jsonv::str(c, "name"), jsonv::str(c, "description"),
+      t.rows.push_back({check_label(jsonv::str(c, "name")), jsonv::str(c, "description"),
                         jsonv::sig(c, "value", 4), jsonv::sig(c, "tolerance", 3),
                         passed ? "passed" : "FAILED"});
     }
@@ -266,6 +272,7 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
           mus::data f;
           f.set("src", b.figure.file);
           f.set("caption", b.figure.caption);
+          f.set("half", b.figure.half);
           bd.set("figure", f);
           break;
         }
@@ -305,6 +312,37 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("links", links);
   d.set("has_links", !page.links.empty());
   d.set("data_link", "results.json");
+  d.set("has_answer", page.answer.has_value());
+  if (page.answer) {
+    const AnswerBox& a = *page.answer;
+    mus::data ad;
+    ad.set("sentence", a.sentence);
+    ad.set("has_picture", !a.picture.empty());
+    ad.set("picture", a.picture);
+    ad.set("picture_caption", a.picture_caption);
+    ad.set("picture_is_frame", a.picture.ends_with(".png"));
+    mus::data figs{mus::data::type::list};
+    for (const auto& [k, v] : a.figures) {
+      mus::data e;
+      e.set("label", k);
+      e.set("value", v);
+      figs << e;
+    }
+    ad.set("figures", figs);
+    ad.set("has_figures", !a.figures.empty());
+    ad.set("verdict", a.verdict);
+    ad.set("verdict_ok", a.verdict_ok);
+    auto list = [](const std::vector<std::string>& v) {
+      mus::data l{mus::data::type::list};
+      for (const auto& s : v) l << mus::data{"text", s};
+      return l;
+    };
+    ad.set("binding", list(a.binding));
+    ad.set("has_binding", !a.binding.empty());
+    ad.set("assumptions", list(a.assumptions));
+    ad.set("has_assumptions", !a.assumptions.empty());
+    d.set("answer", ad);
+  }
   return d;
 }
 
@@ -322,7 +360,9 @@ std::vector<std::pair<std::string, std::string>> key_figures(const nlohmann::jso
   for (const auto& k : results["key_figures"]) {
     if (!k.is_object()) continue;
     const std::string unit = jsonv::str(k, "unit");
-    out.emplace_back(jsonv::str(k, "name"), jsonv::sig(k, "value", 5) + (unit.empty() ? "" : " " + unit));
+    const std::string label = jsonv::str(k, "label");
+    out.emplace_back(label.empty() ? jsonv::str(k, "name") : label,
+                     jsonv::sig(k, "value", 5) + (unit.empty() ? "" : " " + unit));
   }
   return out;
 }
@@ -336,7 +376,6 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   page.message = results.value("message", "");
   page.description = info.description;
   page.key_figures = key_figures(results);
-  page.sections.push_back(case_section(info));
 
   FigureWriter figures(dir);
   const bool solved = page.status == "solved";
@@ -363,7 +402,10 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   }
   if (solved) page.sections.push_back(frames_section(results, info.study));
   page.sections.push_back(checks_section(results));
+  // the appendix: the case as written and where the numbers come from
+  page.sections.push_back(case_section(info));
   page.sections.push_back(provenance_section(results, info));
+  lay_out_case_page(results, page);
 
   if (results.value("/case/expect"_json_pointer, std::string()) == page.status)
     page.status += " (as the case expects)";

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/answer_box.hpp"
 #include "report/plot.hpp"
 
 namespace armstudy::report {
@@ -29,6 +30,7 @@ struct Table {
 struct Figure {
   std::string file;     ///< relative to the case folder
   std::string caption;  ///< what it shows; the alt text too
+  bool half = false;    ///< printed at half the page width, side by side with the next half
 };
 
 /// A strip of images (frames), each with a short label.
@@ -83,6 +85,8 @@ struct CasePage {
   std::vector<std::pair<std::string, std::string>> links;
   /// Whether the status badge is good news; unset: status == "solved".
   std::optional<bool> status_ok;
+  /// Page 1's answer box (case pages); unset: the key figures in the header.
+  std::optional<AnswerBox> answer;
 };
 
 /// Writes the figures of one page into its folder with stable, ordered names
