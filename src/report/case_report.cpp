@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "report/number_format.hpp"
+#include "report/animation_view.hpp"
 #include "report/page.hpp"
 #include "report/study_sections.hpp"
 
@@ -276,6 +277,23 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
           bd.set("figure", f);
           break;
         }
+        case Block::Kind::kMovies: {
+          mus::data list{mus::data::type::list};
+          for (const Movie& m : b.movies) {
+            mus::data md;
+            md.set("css_class", m.css_class);
+            md.set("still", m.still);
+            md.set("video", m.video);
+            md.set("has_video", !m.video.empty());
+            md.set("title", m.title);
+            md.set("caption", m.caption);
+            list << md;
+          }
+          mus::data mv;
+          mv.set("list", list);
+          bd.set("movies", mv);
+          break;
+        }
         case Block::Kind::kStrip: {
           mus::data st;
           st.set("caption", b.strip.caption);
@@ -400,7 +418,11 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   } else {
     generic_sections(section, figures, page);
   }
-  if (solved) page.sections.push_back(frames_section(results, info.study));
+  if (solved) {
+    Section motion = animation_section(results);
+    if (!motion.blocks.empty()) page.sections.push_back(std::move(motion));
+    page.sections.push_back(frames_section(results, info.study));
+  }
   page.sections.push_back(checks_section(results));
   // the appendix: the case as written and where the numbers come from
   page.sections.push_back(case_section(info));
@@ -410,6 +432,9 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   if (results.value("/case/expect"_json_pointer, std::string()) == page.status)
     page.status += " (as the case expects)";
   write_page(dir, page, info);
+  // the animations' rules after the shared stylesheet (the page's CSP allows no inline style)
+  if (const std::string css = animation_css(results); !css.empty())
+    write_text(dir / "report.css", read_text(dir / "report.css") + "\n/* animations, generated */\n" + css);
 }
 
 void write_page(const fs::path& dir, const CasePage& page, const cases::CaseInfo& info,

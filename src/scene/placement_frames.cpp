@@ -1,4 +1,5 @@
 #include "scene/placement_frames.hpp"
+#include "scene/animation.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -62,6 +63,10 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
     SceneRenderer::LocusStyle style;
     style.path_radius = 0.12;
     files.push_back(write_locus(sr, m, 9, path, {}, labels, dir, name, style));
+    write_animation(sr, m,
+                    std::string(core::program_label(pc.program)) + ", configuration " +
+                        std::to_string(pc.configuration),
+                    dir, name);
   }
   return files;
 }

@@ -4,17 +4,16 @@
 #include <cstdio>
 
 #include "scene/arm_scene.hpp"
+#include "scene/animation.hpp"
 #include "scene/study_frames.hpp"
+#include "studies/throwing/tray_arm.hpp"
 
 namespace armstudy::scene {
 
-std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
-                                                const studies::ThrowingResult& result,
-                                                const cases::RenderOptions& options,
-                                                const std::filesystem::path& dir) {
-  const studies::ThrowSeries& s = result.idp.series;
-  if (s.t.size() < 2) return {};
-  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+namespace {
+
+// the motion of one optimiser, its samples strictly increasing in time
+SampledMotion sampled(const studies::ThrowSeries& s) {
   SampledMotion m;
   // the series repeats each interior stage boundary: keep strictly increasing times
   for (size_t k = 0; k < s.t.size(); ++k) {
@@ -23,44 +22,78 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
     m.q.push_back(s.q[k]);
     m.qd.push_back(s.qd[k]);
   }
-  std::vector<std::string> files;
-  const std::vector<Eigen::Vector2d>& flight = result.flight.path;
-  char title[200];
-  std::snprintf(title, sizeof title, "throwing, IDP optimum: %.3f J (eq. 7) in %.2f s",
-                result.idp.evaluation.energy, spec.tf);
-  TrayDecor decor;
-  decor.ball_radius = spec.arm.rb;
-  decor.cup_width = spec.tray_width;
-  decor.offwidth = options.width;
-  decor.offheight = options.height;
-  // frame the motion itself (with room for the cup, the pedestal and the labels)
-  const double pad = spec.arm.r4 + 2 * spec.arm.rb + 0.02;
-  ViewBox motion_box = fit_view(chain, m.q, {}, pad);
-  motion_box.y_max += 0.12 * (motion_box.y_max - motion_box.y_min);
-  decor.view = motion_box;
-  {
-    SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
-    files.push_back(write_strip(sr, m, options.frames, title, dir, "throwing_idp"));
-    FrameLabels labels;
-    labels.top_left = std::string(title) + "\nlocus of the throw (Fig. 7); ball path traced";
-    labels.bottom_left = "side view, gravity down; grid 0.05 m";
-    files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, "throwing_idp"));
+  return m;
+}
+
+}  // namespace
+
+std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
+                                                const studies::ThrowingResult& result,
+                                                const cases::RenderOptions& options,
+                                                const std::filesystem::path& dir) {
+  if (result.idp.series.t.size() < 2) return {};
+  const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
+  // both optimisers: IDP (the files keep their names) and SLSQP when it ran
+  struct Thrown {
+    const studies::ThrowMotion* motion;
+    std::string who, stem, flight_stem;
+    studies::Flight flight;
+    bool strip;
+  };
+  std::vector<Thrown> thrown = {{&result.idp, "IDP optimum", "throwing_idp", "throwing_flight",
+                                 result.flight, true}};
+  if (result.nlopt_ran && result.nlopt.series.t.size() >= 2) {
+    const core::JointVector& qf = result.nlopt.series.q.back();
+    const core::JointVector& qdf = result.nlopt.series.qd.back();
+    thrown.push_back({&result.nlopt, "SLSQP optimum", "throwing_slsqp", "throwing_slsqp_flight",
+                      studies::ballistic_flight(studies::ball_position(chain, qf),
+                                                studies::ball_velocity(chain, qf, qdf),
+                                                spec.arm.gravity, spec.landing_height),
+                      false});
   }
-  if (flight.size() >= 2) {
-    // frame the motion and the whole flight
-    ViewBox v = fit_view(chain, m.q, flight, pad);
-    v.y_max += 0.15 * (v.y_max - v.y_min);  // room for the labels
-    decor.view = v;
-    SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
-    FrameLabels labels;
-    char t2[200];
-    std::snprintf(t2, sizeof t2, "release and flight: %.2f s, lands at x = %.3f m", 
-                  result.flight.duration, result.flight.landing.x());
-    labels.top_left = std::string(title) + "\n" + t2;
-    labels.bottom_left = "side view; red dots: the ball after release";
-    std::vector<Eigen::Vector2d> dots;
-    for (size_t k = 0; k < flight.size(); ++k) dots.push_back(flight[k]);
-    files.push_back(write_locus(sr, m, 11, s.ball, dots, labels, dir, "throwing_flight"));
+  std::vector<std::string> files;
+  for (const Thrown& th : thrown) {
+    const studies::ThrowSeries& s = th.motion->series;
+    const SampledMotion m = sampled(s);
+    const std::vector<Eigen::Vector2d>& flight = th.flight.path;
+    char title[200];
+    std::snprintf(title, sizeof title, "throwing, %s: %.3f J (eq. 7) in %.2f s", th.who.c_str(),
+                  th.motion->evaluation.energy, spec.tf);
+    TrayDecor decor;
+    decor.ball_radius = spec.arm.rb;
+    decor.cup_width = spec.tray_width;
+    decor.offwidth = options.width;
+    decor.offheight = options.height;
+    // frame the motion itself (with room for the cup, the pedestal and the labels)
+    const double pad = spec.arm.r4 + 2 * spec.arm.rb + 0.02;
+    ViewBox motion_box = fit_view(chain, m.q, {}, pad);
+    motion_box.y_max += 0.12 * (motion_box.y_max - motion_box.y_min);
+    decor.view = motion_box;
+    {
+      SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
+      if (th.strip) files.push_back(write_strip(sr, m, options.frames, title, dir, th.stem));
+      FrameLabels labels;
+      labels.top_left = std::string(title) + "\nlocus of the throw (Fig. 7); ball path traced";
+      labels.bottom_left = "side view, gravity down; grid 0.05 m";
+      files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, th.stem));
+      write_animation(sr, m, "throwing, " + th.who, dir, th.stem);
+    }
+    if (flight.size() >= 2) {
+      // frame the motion and the whole flight
+      ViewBox v = fit_view(chain, m.q, flight, pad);
+      v.y_max += 0.15 * (v.y_max - v.y_min);  // room for the labels
+      decor.view = v;
+      SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
+      FrameLabels labels;
+      char t2[200];
+      std::snprintf(t2, sizeof t2, "release and flight: %.2f s, lands at x = %.3f m",
+                    th.flight.duration, th.flight.landing.x());
+      labels.top_left = std::string(title) + "\n" + t2;
+      labels.bottom_left = "side view; red dots: the ball after release";
+      std::vector<Eigen::Vector2d> dots;
+      for (size_t k = 0; k < flight.size(); ++k) dots.push_back(flight[k]);
+      files.push_back(write_locus(sr, m, 11, s.ball, dots, labels, dir, th.flight_stem));
+    }
   }
   return files;
 }

@@ -1,4 +1,5 @@
 #include "scene/time_optimal_frames.hpp"
+#include "scene/animation.hpp"
 
 #include <cstdio>
 
@@ -33,6 +34,7 @@ std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const 
   labels.top_left = std::string(title) + "\nposes at equal time steps: dense where slow";
   labels.bottom_left = "top view; grid 0.1 m";
   files.push_back(write_locus(sr, m, 15, path, {}, labels, dir, "time_optimal"));
+  write_animation(sr, m, "time-optimal (exact)", dir, "time_optimal");
   return files;
 }
 
