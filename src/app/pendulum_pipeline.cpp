@@ -78,12 +78,12 @@ class PendulumRun final : public StudyRun {
         {"ball", {{"mass_kg", a.m4}, {"circle_radius_m", a.r4}, {"radius_m", a.rb},
                   {"inertia_kg_m2", a.Ib}}},
         {"choices",
-         {"joints 1 and 2 locked at the angles of locked_deg (0, 0 by default: at -45, -45 deg "
+         {"joints 1 and 2 locked at the case's locked angles (0, 0 deg by default: at -45, -45 deg "
           "the ball would sit above the hinge)",
           "ball spin = tray rate - (r4/r_b) theta4' (eq. 3 drops the tray rate; a5 is printed "
           "inverted)",
           "tray centre of mass, inertia and circle offset are not given for the test rig; "
-          "the values used are in tray"}}};
+          "the values used are in the parameters' tray entries"}}};
     j["integrator"] = {{"name", r.integrator}, {"rtol", r.rtol}, {"atol", r.atol},
                        {"steps_accepted", r.steps_accepted}, {"steps_rejected", r.steps_rejected},
                        {"evaluations", r.evaluations}};

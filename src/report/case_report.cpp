@@ -467,7 +467,20 @@ int write_index(const fs::path& out_dir) {
         rows.push_back({name, nlohmann::json{{"status", "unreadable results.json"}}});
       }
     }
-  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.name < b.name; });
+  // failures first (not solved when the case expects it, or a check failed), then by name
+  auto failed = [](const nlohmann::json& r) {
+    const std::string status = r.value("status", "");
+    const bool expected = r.value("/case/expect"_json_pointer, std::string()) == status;
+    if (status != "solved" && !expected) return true;
+    if (r.contains("checks") && r["checks"].is_array())
+      for (const auto& c : r["checks"])
+        if (c.is_object() && !c.value("passed", false)) return true;
+    return false;
+  };
+  std::sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) {
+    const bool fa = failed(a.results), fb = failed(b.results);
+    return fa != fb ? fa : a.name < b.name;
+  });
 
   mus::data d;
   mus::data list{mus::data::type::list};
@@ -480,8 +493,13 @@ int write_index(const fs::path& out_dir) {
     e.set("status", expected ? status + " (as the case expects)" : status);
     e.set("solved", status == "solved");
     e.set("message", r.results.value("message", ""));
+    e.set("failed", failed(r.results));
+    // the check verdict and the key picture of the case's answer box
+    const AnswerBox answer = answer_box(r.results, CasePage{});
+    e.set("verdict", answer.verdict);
+    e.set("verdict_ok", answer.verdict_ok);
     // the first few key figures; the case page has them all
-    constexpr size_t kIndexFigures = 6;
+    constexpr size_t kIndexFigures = 4;
     mus::data kf{mus::data::type::list};
     const auto figures = key_figures(r.results);
     for (size_t k = 0; k < figures.size() && k < kIndexFigures; ++k) {
@@ -495,11 +513,8 @@ int write_index(const fs::path& out_dir) {
                               ? "and " + std::to_string(figures.size() - kIndexFigures) + " more"
                               : "");
     e.set("has_more_figures", figures.size() > kIndexFigures);
-    // thumbnail: first frame, else the first figure of the page
-    std::string thumb;
-    if (r.results.contains("frames") && r.results["frames"].is_array() &&
-        !r.results["frames"].empty() && r.results["frames"][0].is_string())
-      thumb = r.results["frames"][0].get<std::string>();
+    // thumbnail: the answer's key picture, else the first figure of the page
+    std::string thumb = answer.picture;
     if (thumb.empty()) {
       std::vector<std::string> svgs;
       for (const auto& f : fs::directory_iterator(out_dir / r.name))

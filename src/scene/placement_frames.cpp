@@ -48,9 +48,9 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
     else
       std::snprintf(energy, sizeof energy, "%.3f J", pc.refined.reported_metrics().energy);
     char title[200];
-    std::snprintf(title, sizeof title, "%s, configuration %d: root (%.3f, %.3f) m, %s",
-                  std::string(core::program_label(pc.program)).c_str(), pc.configuration,
-                  pc.refined.root.x(), pc.refined.root.y(), energy);
+    // short enough for the frame at print size (the locus names the root)
+    std::snprintf(title, sizeof title, "%s, config. %d: %s",
+                  std::string(core::program_label(pc.program)).c_str(), pc.configuration, energy);
     files.push_back(write_strip(sr, m, options.frames, title, dir, name));
     FrameLabels labels;
     char line2[160];

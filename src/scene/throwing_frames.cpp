@@ -1,6 +1,7 @@
 #include "scene/throwing_frames.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "scene/arm_scene.hpp"
@@ -57,7 +58,7 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
     const SampledMotion m = sampled(s);
     const std::vector<Eigen::Vector2d>& flight = th.flight.path;
     char title[200];
-    std::snprintf(title, sizeof title, "throwing, %s: %.3f J (eq. 7) in %.2f s", th.who.c_str(),
+    std::snprintf(title, sizeof title, "%s: %.3f J (eq. 7), %.2f s", th.who.c_str(),
                   th.motion->evaluation.energy, spec.tf);
     TrayDecor decor;
     decor.ball_radius = spec.arm.rb;
@@ -78,6 +79,29 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
       files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, th.stem));
       write_animation(sr, m, "throwing, " + th.who, dir, th.stem);
     }
+    {
+      // a close-up of the tray over the last tenth of the throw: the 15 mm ball and the
+      // tray's angle at release, which the whole-motion view draws a few pixels large
+      SampledMotion end;
+      const double t_from = m.t.back() - 0.1 * (m.t.back() - m.t.front());
+      for (size_t k = 0; k < m.t.size(); ++k)
+        if (m.t[k] >= t_from) {
+          end.t.push_back(m.t[k]);
+          end.q.push_back(m.q[k]);
+          end.qd.push_back(m.qd[k]);
+        }
+      if (end.t.size() >= 2) {
+        const Eigen::Vector2d b = s.ball.back();
+        const double r = spec.arm.r4 + 3 * spec.arm.rb + 0.02;
+        const double aspect = double(options.width) / options.height;
+        decor.view = {b.x() - r * aspect, b.x() + r * aspect, b.y() - r, b.y() + r};
+        SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
+        FrameLabels labels;
+        labels.top_left = "close-up at release, " + th.who + "\nlast tenth of the throw; ball path traced";
+        labels.bottom_left = "side view; ball radius " + std::to_string(static_cast<int>(std::lround(spec.arm.rb * 1000))) + " mm";
+        files.push_back(write_locus(sr, end, 5, s.ball, {}, labels, dir, th.stem + "_release"));
+      }
+    }
     if (flight.size() >= 2) {
       // frame the motion and the whole flight
       ViewBox v = fit_view(chain, m.q, flight, pad);
@@ -86,7 +110,7 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
       SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
       FrameLabels labels;
       char t2[200];
-      std::snprintf(t2, sizeof t2, "release and flight: %.2f s, lands at x = %.3f m",
+      std::snprintf(t2, sizeof t2, "flight %.2f s, lands at x = %.3f m",
                     th.flight.duration, th.flight.landing.x());
       labels.top_left = std::string(title) + "\n" + t2;
       labels.bottom_left = "side view; red dots: the ball after release";
