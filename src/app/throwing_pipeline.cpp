@@ -296,13 +296,13 @@ class ThrowingRun final : public StudyRun {
          {"model derived from first principles (docs/derivations/throwing.md): ball spin = "
           "tray rate - (r4/r_b) "
           "theta4'; eq. 3's spin term and a5 as printed are wrong",
-          "the centre of the ball's circle lies circle_offset_m from the tray hinge (Table 1's l3 "
+          "the centre of the ball's circle lies at the tray's circle offset from its hinge (Table 1's l3 "
           "by default)",
           "ball inertia 2/5 m r_b^2 unless given (equals Table 1's 4.8e-7 kg m^2)",
           "motor 2 drives theta2 (on_link1, eq. 5 as printed) unless motor2: on_base",
-          "rotor inertia (missing from Table 1) as given in motors.rotor_inertia_kg_m2",
-          "tray width lambda (eq. 9) as tray.width_deg; current limit as motors.current_max_A",
-          "energy = eq. 7 (signed e i: regeneration counted) unless count_regeneration: false",
+          "rotor inertia (missing from Table 1) as the case's motors give it",
+          "tray width lambda (eq. 9) and the current limit as the case gives them",
+          "energy = eq. 7 (signed e i: regeneration counted) unless the case counts only e i > 0",
           "theta3 at release is a constraint (within the release tolerance), reached through the "
           "passive dynamics"}}};
     j["assumptions"] = json::array({

@@ -34,14 +34,10 @@ std::string binding_words(const json& d) {
   const std::string b = jsonv::str(d, "binding");
   const std::string margin = jsonv::sig(d, "margin_m", 3) + " m";
   if (b == "interior")
-    return "interior optimum, no constraint binds (clearances " + jsonv::sig(d, "inner_slack_m", 3) +
-           " m to the inner and " + jsonv::sig(d, "outer_slack_m", 3) + " m to the outer circle)";
-  if (b == "inner_clearance")
-    return "the clearance margin to the inner circle binds (set by the " + margin +
-           " margin, a setting)";
-  if (b == "outer_clearance")
-    return "the clearance margin to the outer circle binds (set by the " + margin +
-           " margin, a setting)";
+    return "interior, nothing binds (clearances " + jsonv::sig(d, "inner_slack_m", 3) +
+           " m inner, " + jsonv::sig(d, "outer_slack_m", 3) + " m outer)";
+  if (b == "inner_clearance") return "the " + margin + " clearance margin to the inner circle (a setting)";
+  if (b == "outer_clearance") return "the " + margin + " clearance margin to the outer circle (a setting)";
   if (b == "torque_limit") return "the torque limit of joint " + jsonv::str(d, "joint") + " binds";
   if (b == "power_limit") return "the power limit of joint " + jsonv::str(d, "joint") + " binds";
   return b.empty() ? "not reported" : b;
@@ -50,23 +46,21 @@ std::string binding_words(const json& d) {
 void placement(const json& results, AnswerBox& a) {
   const json& pl = obj(results, "placement");
   for (const json& o : arr(pl, "optima")) {
-    const std::string who = jsonv::str(o, "program") + ", configuration " + jsonv::str(o, "configuration");
+    const std::string who = jsonv::str(o, "program") + " " + jsonv::str(o, "configuration");
     a.binding.push_back(who + ": " + binding_words(obj(o, "decided_by")));
   }
   for (const json& u : arr(pl, "unsolved"))
     a.binding.push_back(jsonv::str(u, "program") + ", configuration " + jsonv::str(u, "configuration") +
                         ": no optimum (" + jsonv::str(u, "reason") + ")");
-  a.assumptions.push_back("energy integral (8.1) sampled at " + jsonv::str(pl, "samples") +
-                          " instants, the samples doubled until the energy changes by less than 1e-4");
-  a.assumptions.push_back("a line closer than " + jsonv::sig(pl, "singularity_margin_m", 3) +
-                          " m to a boundary of the reachable annulus counts as singular (a setting, "
-                          "not physics)");
+  a.assumptions.push_back("energy integral (8.1): " + jsonv::str(pl, "samples") +
+                          " samples, doubled until it changes by < 1e-4");
+  a.assumptions.push_back("singular: a line within " + jsonv::sig(pl, "singularity_margin_m", 3) +
+                          " m of the annulus' boundary (a setting)");
   const bool tl = jsonv::has(pl, "torque_limits_Nm") && !pl["torque_limits_Nm"].is_null();
   const bool plim = jsonv::has(pl, "power_limits_W") && !pl["power_limits_W"].is_null();
   a.assumptions.push_back(tl || plim ? "actuator limits as the case gives them"
-                                     : "no actuator limits: the actuators deliver any torque, as in the thesis");
-  a.assumptions.push_back("payload moved rest to rest with zero end accelerations; actuator masses "
-                          "left out, as in the thesis");
+                                     : "no actuator limits (any torque, as in the thesis)");
+  a.assumptions.push_back("rest to rest, zero end accelerations; no actuator masses (as the thesis)");
 }
 
 void pendulum(const json& results, AnswerBox& a) {

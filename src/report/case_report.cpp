@@ -222,6 +222,8 @@ mus::data table_data(const Table& t) {
       cell.set("swatch", ok ? sw.substr(1) : "");
       cell.set("has_swatch", ok);
       cell.set("failed", t.rows[r][c] == "FAILED" || t.rows[r][c] == "BEYOND");
+      // a column of case keys reads as code, not as labels
+      cell.set("code", c < t.header.size() && (t.header[c] == "case key" || t.header[c] == "key"));
       cells << cell;
     }
     row.set("cells", cells);
@@ -236,6 +238,9 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("title", page.title);
   d.set("case_name", info.name);
   d.set("study", page.study);
+  std::string study_words = page.study;
+  std::replace(study_words.begin(), study_words.end(), '_', '-');
+  d.set("study_words", study_words);
   d.set("status", page.status);
   d.set("solved", page.status_ok.value_or(page.status == "solved"));
   d.set("message", page.message);

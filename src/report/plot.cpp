@@ -129,7 +129,7 @@ class Page {
     p.scol0(kSlotInk, kBlack.r, kBlack.g, kBlack.b);
     p.col0(kSlotInk);
     p.adv(0);
-    p.schr(0, 0.85);
+    p.schr(0, 1.0);
   }
   Page(const Page&) = delete;
   Page& operator=(const Page&) = delete;
@@ -578,7 +578,7 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
       p.schr(0, m.primary ? 2.2 : 1.2);
       p.col0(c);
       p.string(1, &x, &y, glyph);
-      p.schr(0, 0.85);
+      p.schr(0, 1.0);
       if (!m.label.empty()) legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, glyph);
     }
   p.col0(kSlotInk);

@@ -133,8 +133,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       jsonv::str(idp, "max_passes") + " passes), for " +
       jsonv::str(idp, "seeds") + " seeds." +
       (jsonv::has(nl, "motion") ? " The same constrained problem is solved by a gradient method (" +
-                                      jsonv::str(nl, "algorithm") + ") to ftol_rel " +
-                                      jsonv::sig(nl, "ftol_rel", 2) + " / xtol_rel " +
+                                      jsonv::str(nl, "algorithm") + ") to a relative energy change of " +
+                                      jsonv::sig(nl, "ftol_rel", 2) + " / a relative step of " +
                                       jsonv::sig(nl, "xtol_rel", 2) + " (budget " +
                                       jsonv::str(nl, "max_evaluations") + " iterations, " +
                                       jsonv::sig(nl, "max_time_s", 3) + " s)."
