@@ -497,7 +497,9 @@ int write_index(const fs::path& out_dir) {
     const bool expected = r.results.value("/case/expect"_json_pointer, std::string()) == status;
     e.set("status", expected ? status + " (as the case expects)" : status);
     e.set("solved", status == "solved");
-    e.set("message", r.results.value("message", ""));
+    // the answer in one line: the message up to its first ';' (the case page has it all)
+    const std::string message = r.results.value("message", "");
+    e.set("message", message.substr(0, message.find("; ")));
     e.set("failed", failed(r.results));
     // the check verdict and the key picture of the case's answer box
     const AnswerBox answer = answer_box(r.results, CasePage{});
