@@ -69,8 +69,8 @@ Section case_section(const cases::CaseInfo& info) {
   return s;
 }
 
-// page 1 is the answer; the details follow as one part and the appendix as another: only
-// those two start a printed page (a page per section left most of them half empty)
+// page 1 is the answer; the details follow from page 2 as one part, then the appendix:
+// only the details start a printed page (a page per section left most of them half empty)
 void lay_out_case_page(const nlohmann::json& results, CasePage& page) {
   page.answer = answer_box(results, page);
   // the study's full parameter tables are reference material: to the appendix, in words
@@ -104,7 +104,9 @@ void lay_out_case_page(const nlohmann::json& results, CasePage& page) {
                                       [](const Section& s) { return s.id == "parameters"; });
   for (size_t k = 0; k < page.sections.size(); ++k) {
     Section& s = page.sections[k];
-    s.new_page = k == 0 || s.id == "parameters" || (s.id == "case" && !has_params);
+    // the appendix follows on the same page: a forced break left the last rows of a long
+    // table alone on a page
+    s.new_page = k == 0;
     if (s.id == "case") s.heading = has_params ? "Appendix B. The case file" : "Appendix A. The case file";
     if (s.id == "provenance") s.heading = has_params ? "Appendix C. Provenance" : "Appendix B. Provenance";
   }
