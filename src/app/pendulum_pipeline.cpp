@@ -45,9 +45,9 @@ class PendulumRun final
   }
 
   std::vector<KeyFigure> key_figures() const override {
-    return {{"energy_drift_relative", result_.energy_drift_rel, ""},
-            {"energy_exchanged_J", result_.energy_scale, "J"},
-            {"integrator_steps", static_cast<double>(result_.steps_accepted), ""}};
+    return {{"energy_drift_relative", result_.energy_drift_rel, "", "energy drift (share of the energy exchanged)"},
+            {"energy_exchanged_J", result_.energy_scale, "J", "largest kinetic energy"},
+            {"integrator_steps", static_cast<double>(result_.steps_accepted), "", "integrator steps"}};
   }
 
   studies::PendulumResultsSection section() const override {
@@ -63,12 +63,12 @@ class PendulumRun final
     p.tray = {a.circle_offset, a.m3, a.r3, a.r3_lateral, a.I3};
     p.ball = {a.m4, a.r4, a.rb, a.Ib};
     p.choices = {
-        "joints 1 and 2 locked at the angles of locked_deg (0, 0 by default: at -45, -45 deg "
+        "joints 1 and 2 locked at the case's locked angles (0, 0 deg by default: at -45, -45 deg "
         "the ball would sit above the hinge)",
         "ball spin = tray rate - (r4/r_b) theta4' (eq. 3 drops the tray rate; a5 is printed "
         "inverted)",
         "tray centre of mass, inertia and circle offset are not given for the test rig; "
-        "the values used are in tray"};
+        "the values used are in the parameters' tray entries"};
     s.integrator = {r.integrator, r.rtol, r.atol, r.steps_accepted, r.steps_rejected, r.evaluations};
     auto& se = s.series;
     for (size_t k = 0; k < r.t.size(); ++k) {

@@ -27,6 +27,7 @@ struct KeyFigure {
   std::string name;  ///< stable identifier, e.g. "min_energy_J"
   double value = 0;
   std::string unit;  ///< e.g. "J", "s", "%", "" for none
+  std::string label;  ///< what a reader sees, in words, e.g. "lowest energy"; empty: the name
 };
 
 /// One loaded case of some study, ready to solve. Stages are called in this order:

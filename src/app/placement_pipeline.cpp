@@ -141,17 +141,18 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
     for (const pl::ProgramConfig& pc : result_.cases) {
       if (!pc.found || pc.refined.convergence.singular()) continue;
       const std::string id = "[" + prog(pc.program) + "," + std::to_string(pc.configuration) + "]";
+      const std::string who = ", " + prog(pc.program) + " " + std::to_string(pc.configuration);
       const double energy = pc.refined.reported_metrics().energy;
-      k.push_back({"energy_J" + id, energy, "J"});
-      k.push_back({"root_x_m" + id, pc.refined.root.x(), "m"});
-      k.push_back({"root_y_m" + id, pc.refined.root.y(), "m"});
+      k.push_back({"energy_J" + id, energy, "J", "energy" + who});
+      k.push_back({"root_x_m" + id, pc.refined.root.x(), "m", "root x" + who});
+      k.push_back({"root_y_m" + id, pc.refined.root.y(), "m", "root y" + who});
       best = std::min(best, energy);
     }
-    if (std::isfinite(best)) k.insert(k.begin(), {"min_energy_J", best, "J"});
+    if (std::isfinite(best)) k.insert(k.begin(), {"min_energy_J", best, "J", "lowest energy (the optimum)"});
     if (!result_.cases.empty()) {
       const pl::Counts& c = result_.cases.front().counts;
-      k.push_back({"candidates_clear", double(c.feasible + c.over_limit), ""});
-      k.push_back({"candidates_singular", double(c.singular), ""});
+      k.push_back({"candidates_clear", double(c.feasible + c.over_limit), "", "candidate lines clear"});
+      k.push_back({"candidates_singular", double(c.singular), "", "candidate lines singular"});
     }
     return k;
   }

@@ -112,6 +112,27 @@ void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::pa
 
 }  // namespace
 
+namespace {
+
+// the manifests the animations left beside their files (scene/animation.hpp), sorted by
+// name, into results.json "animations"; the manifests themselves go
+nlohmann::json collect_animations(const fs::path& dir) {
+  std::vector<fs::path> found;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().ends_with(".anim.json")) found.push_back(e.path());
+  std::sort(found.begin(), found.end());
+  nlohmann::json out = nlohmann::json::array();
+  for (const fs::path& p : found) {
+    std::ifstream in(p);
+    out.push_back(nlohmann::json::parse(in));
+    in.close();
+    fs::remove(p);
+  }
+  return out;
+}
+
+}  // namespace
+
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   CaseOutcome outcome;
@@ -133,7 +154,8 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     nlohmann::json kf = nlohmann::json::array();
     if (status == studies::Status::kSolved)
       for (const auto& k : c.run->key_figures())
-        kf.push_back({{"name", k.name}, {"value", k.value}, {"unit", k.unit}});
+        kf.push_back({{"name", k.name}, {"value", k.value}, {"unit", k.unit},
+                      {"label", k.label.empty() ? k.name : k.label}});
     j["key_figures"] = kf;
     // what decides whether a later run may keep this output (main.cpp, already_done)
     j["run_options"] = {{"render", options.render}};
@@ -155,6 +177,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     // files other tools open (model.xml, motion CSVs), listed under "files" as well
     j["exports"] = status == studies::Status::kSolved ? c.run->write_exports(tmp_dir, c.info)
                                                       : nlohmann::json::array();
+    j["animations"] = collect_animations(tmp_dir);
     if (!frames.empty()) {
       const scene::GlInfo gl = scene::gl_info();
       j["provenance"]["gl_renderer"] = gl.renderer;

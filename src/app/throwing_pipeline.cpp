@@ -185,12 +185,12 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
   std::vector<KeyFigure> key_figures() const override {
     const auto& r = result_;
     std::vector<KeyFigure> k = {
-        {"energy_eq8_J", r.initial.evaluation.energy, "J"},
-        {"energy_reference_J", r.reference.evaluation.energy, "J"},
-        {"energy_idp_J", r.idp.evaluation.energy, "J"},
-        {"saving_percent", r.saving_percent, "%"},
-        {"idp_run_time_s", r.idp_time, "s"},
-        {"replay_error_rad", r.replay_error, "rad"},
+        {"energy_eq8_J", r.initial.evaluation.energy, "J", "energy of the eq. 8 start"},
+        {"energy_reference_J", r.reference.evaluation.energy, "J", "energy of the feasible reference"},
+        {"energy_idp_J", r.idp.evaluation.energy, "J", "energy of the IDP optimum"},
+        {"saving_percent", r.saving_percent, "%", "IDP saving against the reference"},
+        {"idp_run_time_s", r.idp_time, "s", "IDP run time"},
+        {"replay_error_rad", r.replay_error, "rad", "largest open-loop replay error"},
     };
     if (!r.idp_seeds.empty()) {
       double lo = INFINITY, hi = -INFINITY;
@@ -198,10 +198,10 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
         lo = std::min(lo, sd.evaluation.energy);
         hi = std::max(hi, sd.evaluation.energy);
       }
-      k.push_back({"idp_seed_spread_J", hi - lo, "J"});
+      k.push_back({"idp_seed_spread_J", hi - lo, "J", "spread of the IDP seeds"});
     }
-    if (r.nlopt_ran) k.push_back({"energy_slsqp_J", r.nlopt.evaluation.energy, "J"});
-    if (r.flight.reaches) k.push_back({"landing_x_m", r.flight.landing.x(), "m"});
+    if (r.nlopt_ran) k.push_back({"energy_slsqp_J", r.nlopt.evaluation.energy, "J", "energy of the SLSQP optimum"});
+    if (r.flight.reaches) k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x"});
     return k;
   }
 
@@ -227,13 +227,13 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
         "model derived from first principles (docs/derivations/throwing.md): ball spin = "
         "tray rate - (r4/r_b) "
         "theta4'; eq. 3's spin term and a5 as printed are wrong",
-        "the centre of the ball's circle lies circle_offset_m from the tray hinge (Table 1's l3 "
+        "the centre of the ball's circle lies at the tray's circle offset from its hinge (Table 1's l3 "
         "by default)",
         "ball inertia 2/5 m r_b^2 unless given (equals Table 1's 4.8e-7 kg m^2)",
         "motor 2 drives theta2 (on_link1, eq. 5 as printed) unless motor2: on_base",
-        "rotor inertia (missing from Table 1) as given in motors.rotor_inertia_kg_m2",
-        "tray width lambda (eq. 9) as tray.width_deg; current limit as motors.current_max_A",
-        "energy = eq. 7 (signed e i: regeneration counted) unless count_regeneration: false",
+        "rotor inertia (missing from Table 1) as the case's motors give it",
+        "tray width lambda (eq. 9) and the current limit as the case gives them",
+        "energy = eq. 7 (signed e i: regeneration counted) unless the case counts only e i > 0",
         "theta3 at release is a constraint (within the release tolerance), reached through the "
         "passive dynamics"};
     j.assumptions = {

@@ -131,16 +131,16 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
     std::vector<KeyFigure> k;
     if (result_.status != studies::Status::kSolved) return k;
     const double exact = result_.solvers.front().duration;
-    k.push_back({"duration_s[exact]", exact, "s"});
+    k.push_back({"duration_s[exact]", exact, "s", "shortest duration (exact solver)"});
     for (const auto& r : result_.solvers) {
       if (r.name == "exact" || !r.solved) continue;
-      k.push_back({"duration_s[" + r.name + "]", r.duration, "s"});
-      k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%"});
+      k.push_back({"duration_s[" + r.name + "]", r.duration, "s", "duration (" + r.name + ")"});
+      k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%", "excess over exact (" + r.name + ")"});
     }
-    k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s"});
-    if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, ""});
-    if (replay_) k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad"});
-    k.push_back({std::string("path_length_") + result_.s_unit(), result_.path_length, result_.s_unit()});
+    k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s", "run time (exact solver)"});
+    if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, "", "duration change on a finer grid (relative)"});
+    if (replay_) k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad", "largest MuJoCo replay deviation"});
+    k.push_back({std::string("path_length_") + result_.s_unit(), result_.path_length, result_.s_unit(), "path length"});
     return k;
   }
 

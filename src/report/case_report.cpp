@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "report/number_format.hpp"
+#include "report/animation_view.hpp"
 #include "report/page.hpp"
 #include "report/study_sections.hpp"
 
@@ -55,52 +56,60 @@ void copy_stylesheet(const fs::path& dir) {
   write_text(dir / "report.css", css);
 }
 
-// the case file's values as rows of (dotted key path, value)
-void flatten_yaml(const YAML::Node& node, const std::string& path,
-                  std::vector<std::vector<std::string>>* rows) {
-  if (node.IsMap()) {
-    for (const auto& kv : node) {
-      const std::string key = kv.first.Scalar();
-      flatten_yaml(kv.second, path.empty() ? key : path + "." + key, rows);
-    }
-  } else if (node.IsSequence()) {
-    bool scalars = true;
-    for (const auto& e : node) scalars &= e.IsScalar();
-    if (scalars) {
-      std::string v = "[";
-      for (size_t i = 0; i < node.size(); ++i) v += (i ? ", " : "") + node[i].Scalar();
-      rows->push_back({path, v + "]"});
-    } else {
-      for (size_t i = 0; i < node.size(); ++i)
-        flatten_yaml(node[i], path + "[" + std::to_string(i) + "]", rows);
-    }
-  } else if (node.IsScalar()) {
-    rows->push_back({path, node.Scalar()});
-  } else {
-    rows->push_back({path, "~"});
-  }
-}
-
 Section case_section(const cases::CaseInfo& info) {
   Section s;
   s.id = "case";
   s.heading = "The case";
   s.new_page = false;
-  Table t;
-  t.caption = "Case parameters as written in " + fs::path(info.path).filename().string() +
-              " (keys carry their unit; the study sections list the defaults it filled in)";
-  t.header = {"key", "value"};
-  try {
-    const YAML::Node root = YAML::Load(info.yaml);
-    flatten_yaml(root, "", &t.rows);
-  } catch (const YAML::Exception& e) {
-    // the case was validated before it ran; show why it cannot be tabulated anyway
-    s.note(std::string("the case file could not be tabulated: ") + e.what());
-  }
-  if (!t.rows.empty()) s.table(std::move(t));
-  s.paragraph("The case file itself:");
+  // the file as written (keys carry their unit); the study's parameter table lists the
+  // defaults it filled in
+  s.paragraph("The case file " + fs::path(info.path).filename().string() +
+              " as written (keys carry their unit):");
   s.code(info.yaml);
   return s;
+}
+
+// page 1 is the answer; the details follow from page 2 as one part, then the appendix:
+// only the details start a printed page (a page per section left most of them half empty)
+void lay_out_case_page(const nlohmann::json& results, CasePage& page) {
+  page.answer = answer_box(results, page);
+  // the study's full parameter tables are reference material: to the appendix, in words
+  Section params;
+  params.id = "parameters";
+  params.heading = "Appendix A. Parameters used";
+  for (Section& s : page.sections)
+    for (auto b = s.blocks.begin(); b != s.blocks.end();) {
+      if (b->kind == Block::Kind::kTable && b->table.caption.starts_with("Parameters used")) {
+        Table t = std::move(b->table);
+        t.caption = "Parameters the study used, the defaults it filled in included (SI units).";
+        for (auto& row : t.rows) {
+          if (row.empty()) continue;
+          std::string words, part;
+          std::stringstream in(row[0]);
+          while (std::getline(in, part, '.')) words += (words.empty() ? "" : ", ") + label_from_key(part);
+          row[0] = words;
+        }
+        params.table(std::move(t));
+        b = s.blocks.erase(b);
+      } else {
+        ++b;
+      }
+    }
+  if (!params.blocks.empty()) {
+    auto at = std::find_if(page.sections.begin(), page.sections.end(),
+                           [](const Section& s) { return s.id == "case"; });
+    page.sections.insert(at, std::move(params));
+  }
+  const bool has_params = std::any_of(page.sections.begin(), page.sections.end(),
+                                      [](const Section& s) { return s.id == "parameters"; });
+  for (size_t k = 0; k < page.sections.size(); ++k) {
+    Section& s = page.sections[k];
+    // the appendix follows on the same page: a forced break left the last rows of a long
+    // table alone on a page
+    s.new_page = k == 0;
+    if (s.id == "case") s.heading = has_params ? "Appendix B. The case file" : "Appendix A. The case file";
+    if (s.id == "provenance") s.heading = has_params ? "Appendix C. Provenance" : "Appendix B. Provenance";
+  }
 }
 
 Section checks_section(const nlohmann::json& results) {
@@ -112,7 +121,7 @@ Section checks_section(const nlohmann::json& results) {
   if (results.contains("checks"))
     for (const auto& c : results["checks"]) {
       const bool passed = c.value("passed", false);
-      t.rows.push_back({jsonv::str(c, "name"), jsonv::str(c, "description"),
+      t.rows.push_back({check_label(jsonv::str(c, "name")), jsonv::str(c, "description"),
                         jsonv::sig(c, "value", 4), jsonv::sig(c, "tolerance", 3),
                         passed ? "passed" : "FAILED"});
     }
@@ -215,6 +224,8 @@ mus::data table_data(const Table& t) {
       cell.set("swatch", ok ? sw.substr(1) : "");
       cell.set("has_swatch", ok);
       cell.set("failed", t.rows[r][c] == "FAILED" || t.rows[r][c] == "BEYOND");
+      // a column of case keys reads as code, not as labels
+      cell.set("code", c < t.header.size() && (t.header[c] == "case key" || t.header[c] == "key"));
       cells << cell;
     }
     row.set("cells", cells);
@@ -229,6 +240,9 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("title", page.title);
   d.set("case_name", info.name);
   d.set("study", page.study);
+  std::string study_words = page.study;
+  std::replace(study_words.begin(), study_words.end(), '_', '-');
+  d.set("study_words", study_words);
   d.set("status", page.status);
   d.set("solved", page.status_ok.value_or(page.status == "solved"));
   d.set("message", page.message);
@@ -266,7 +280,25 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
           mus::data f;
           f.set("src", b.figure.file);
           f.set("caption", b.figure.caption);
+          f.set("half", b.figure.half);
           bd.set("figure", f);
+          break;
+        }
+        case Block::Kind::kMovies: {
+          mus::data list{mus::data::type::list};
+          for (const Movie& m : b.movies) {
+            mus::data md;
+            md.set("css_class", m.css_class);
+            md.set("still", m.still);
+            md.set("video", m.video);
+            md.set("has_video", !m.video.empty());
+            md.set("title", m.title);
+            md.set("caption", m.caption);
+            list << md;
+          }
+          mus::data mv;
+          mv.set("list", list);
+          bd.set("movies", mv);
           break;
         }
         case Block::Kind::kStrip: {
@@ -305,6 +337,37 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("links", links);
   d.set("has_links", !page.links.empty());
   d.set("data_link", "results.json");
+  d.set("has_answer", page.answer.has_value());
+  if (page.answer) {
+    const AnswerBox& a = *page.answer;
+    mus::data ad;
+    ad.set("sentence", a.sentence);
+    ad.set("has_picture", !a.picture.empty());
+    ad.set("picture", a.picture);
+    ad.set("picture_caption", a.picture_caption);
+    ad.set("picture_is_frame", a.picture.ends_with(".png"));
+    mus::data figs{mus::data::type::list};
+    for (const auto& [k, v] : a.figures) {
+      mus::data e;
+      e.set("label", k);
+      e.set("value", v);
+      figs << e;
+    }
+    ad.set("figures", figs);
+    ad.set("has_figures", !a.figures.empty());
+    ad.set("verdict", a.verdict);
+    ad.set("verdict_ok", a.verdict_ok);
+    auto list = [](const std::vector<std::string>& v) {
+      mus::data l{mus::data::type::list};
+      for (const auto& s : v) l << mus::data{"text", s};
+      return l;
+    };
+    ad.set("binding", list(a.binding));
+    ad.set("has_binding", !a.binding.empty());
+    ad.set("assumptions", list(a.assumptions));
+    ad.set("has_assumptions", !a.assumptions.empty());
+    d.set("answer", ad);
+  }
   return d;
 }
 
@@ -322,7 +385,9 @@ std::vector<std::pair<std::string, std::string>> key_figures(const nlohmann::jso
   for (const auto& k : results["key_figures"]) {
     if (!k.is_object()) continue;
     const std::string unit = jsonv::str(k, "unit");
-    out.emplace_back(jsonv::str(k, "name"), jsonv::sig(k, "value", 5) + (unit.empty() ? "" : " " + unit));
+    const std::string label = jsonv::str(k, "label");
+    out.emplace_back(label.empty() ? jsonv::str(k, "name") : label,
+                     jsonv::sig(k, "value", 5) + (unit.empty() ? "" : " " + unit));
   }
   return out;
 }
@@ -336,7 +401,6 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   page.message = results.value("message", "");
   page.description = info.description;
   page.key_figures = key_figures(results);
-  page.sections.push_back(case_section(info));
 
   FigureWriter figures(dir);
   const bool solved = page.status == "solved";
@@ -355,13 +419,23 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   } else {
     generic_sections(section, figures, page);
   }
-  if (solved) page.sections.push_back(frames_section(results, info.study));
+  if (solved) {
+    Section motion = animation_section(results);
+    if (!motion.blocks.empty()) page.sections.push_back(std::move(motion));
+    page.sections.push_back(frames_section(results, info.study));
+  }
   page.sections.push_back(checks_section(results));
+  // the appendix: the case as written and where the numbers come from
+  page.sections.push_back(case_section(info));
   page.sections.push_back(provenance_section(results, info));
+  lay_out_case_page(results, page);
 
   if (results.value("/case/expect"_json_pointer, std::string()) == page.status)
     page.status += " (as the case expects)";
   write_page(dir, page, info);
+  // the animations' rules after the shared stylesheet (the page's CSP allows no inline style)
+  if (const std::string css = animation_css(results); !css.empty())
+    write_text(dir / "report.css", read_text(dir / "report.css") + "\n/* animations, generated */\n" + css);
 }
 
 void write_page(const fs::path& dir, const CasePage& page, const cases::CaseInfo& info,
@@ -394,7 +468,20 @@ int write_index(const fs::path& out_dir) {
         rows.push_back({name, nlohmann::json{{"status", "unreadable results.json"}}});
       }
     }
-  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.name < b.name; });
+  // failures first (not solved when the case expects it, or a check failed), then by name
+  auto failed = [](const nlohmann::json& r) {
+    const std::string status = r.value("status", "");
+    const bool expected = r.value("/case/expect"_json_pointer, std::string()) == status;
+    if (status != "solved" && !expected) return true;
+    if (r.contains("checks") && r["checks"].is_array())
+      for (const auto& c : r["checks"])
+        if (c.is_object() && !c.value("passed", false)) return true;
+    return false;
+  };
+  std::sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) {
+    const bool fa = failed(a.results), fb = failed(b.results);
+    return fa != fb ? fa : a.name < b.name;
+  });
 
   mus::data d;
   mus::data list{mus::data::type::list};
@@ -406,9 +493,16 @@ int write_index(const fs::path& out_dir) {
     const bool expected = r.results.value("/case/expect"_json_pointer, std::string()) == status;
     e.set("status", expected ? status + " (as the case expects)" : status);
     e.set("solved", status == "solved");
-    e.set("message", r.results.value("message", ""));
+    // the answer in one line: the message up to its first ';' (the case page has it all)
+    const std::string message = r.results.value("message", "");
+    e.set("message", message.substr(0, message.find("; ")));
+    e.set("failed", failed(r.results));
+    // the check verdict and the key picture of the case's answer box
+    const AnswerBox answer = answer_box(r.results, CasePage{});
+    e.set("verdict", answer.verdict);
+    e.set("verdict_ok", answer.verdict_ok);
     // the first few key figures; the case page has them all
-    constexpr size_t kIndexFigures = 6;
+    constexpr size_t kIndexFigures = 4;
     mus::data kf{mus::data::type::list};
     const auto figures = key_figures(r.results);
     for (size_t k = 0; k < figures.size() && k < kIndexFigures; ++k) {
@@ -422,11 +516,8 @@ int write_index(const fs::path& out_dir) {
                               ? "and " + std::to_string(figures.size() - kIndexFigures) + " more"
                               : "");
     e.set("has_more_figures", figures.size() > kIndexFigures);
-    // thumbnail: first frame, else the first figure of the page
-    std::string thumb;
-    if (r.results.contains("frames") && r.results["frames"].is_array() &&
-        !r.results["frames"].empty() && r.results["frames"][0].is_string())
-      thumb = r.results["frames"][0].get<std::string>();
+    // thumbnail: the answer's key picture, else the first figure of the page
+    std::string thumb = answer.picture;
     if (thumb.empty()) {
       std::vector<std::string> svgs;
       for (const auto& f : fs::directory_iterator(out_dir / r.name))

@@ -1,6 +1,7 @@
 // the parts of a page every study shares: axis labels from unit-suffixed keys, time series
 // found anywhere in a results section, and a table of scalar results
 #include <algorithm>
+#include <sstream>
 #include <map>
 
 #include "report/number_format.hpp"
@@ -191,6 +192,14 @@ Table json_table(const json& obj, std::string caption) {
   t.caption = std::move(caption);
   t.header = {"quantity", "value"};
   flatten_json(obj, "", &t);
+  // the dotted key paths in words: "tray.circle_offset_m" -> "tray, circle offset (m)"
+  for (auto& row : t.rows) {
+    if (row.empty()) continue;
+    std::string words, part;
+    std::stringstream in(row[0]);
+    while (std::getline(in, part, '.')) words += (words.empty() ? "" : ", ") + label_from_key(part);
+    row[0] = words;
+  }
   return t;
 }
 

@@ -22,6 +22,13 @@ void Section::note(std::string text) {
   blocks.push_back(std::move(b));
 }
 
+void Section::movies(std::vector<Movie> m) {
+  Block b;
+  b.kind = Block::Kind::kMovies;
+  b.movies = std::move(m);
+  blocks.push_back(std::move(b));
+}
+
 void Section::code(std::string text) {
   Block b;
   b.kind = Block::Kind::kCode;

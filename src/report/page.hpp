@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/answer_box.hpp"
 #include "report/plot.hpp"
 
 namespace armstudy::report {
@@ -29,6 +30,7 @@ struct Table {
 struct Figure {
   std::string file;     ///< relative to the case folder
   std::string caption;  ///< what it shows; the alt text too
+  bool half = false;    ///< printed at half the page width, side by side with the next half
 };
 
 /// A strip of images (frames), each with a short label.
@@ -39,14 +41,25 @@ struct Strip {
   std::vector<bool> wide;  ///< per file: a full-width image (a composed strip), else half
 };
 
+/// A moving picture of a motion: a CSS animation over a sprite sheet (no script), its
+/// still for print, and the video file beside it.
+struct Movie {
+  std::string css_class;  ///< the stylesheet's rule for this sprite (letters, digits, '-', '_')
+  std::string still;      ///< still image (printed, and shown when motion is reduced)
+  std::string video;      ///< video file; empty: none
+  std::string title;      ///< which motion
+  std::string caption;    ///< speed, frames, how to pause
+};
+
 /// One element of a section, in reading order.
 struct Block {
-  enum class Kind { kParagraph, kNote, kTable, kFigure, kStrip, kCode };
+  enum class Kind { kParagraph, kNote, kTable, kFigure, kStrip, kCode, kMovies };
   Kind kind = Kind::kParagraph;
   std::string text;  ///< paragraph, note or code text
   Table table;
   Figure figure;
   Strip strip;
+  std::vector<Movie> movies;  ///< kMovies: shown side by side
 };
 
 /// A section of the page (printed from a new page unless `new_page` is false).
@@ -68,6 +81,8 @@ struct Section {
   void figure(Figure f);
   /// Adds a strip of images (frames).
   void strip(Strip s);
+  /// Adds moving pictures, side by side.
+  void movies(std::vector<Movie> m);
 };
 
 /// Everything a case page shows, filled by the generic writer and the study's section builder.
@@ -83,6 +98,8 @@ struct CasePage {
   std::vector<std::pair<std::string, std::string>> links;
   /// Whether the status badge is good news; unset: status == "solved".
   std::optional<bool> status_ok;
+  /// Page 1's answer box (case pages); unset: the key figures in the header.
+  std::optional<AnswerBox> answer;
 };
 
 /// Writes the figures of one page into its folder with stable, ordered names

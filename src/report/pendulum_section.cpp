@@ -121,8 +121,8 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     // the ball's path in the plane with the snapshots (fig. 2 style)
     ShadedMap path;
     path.title = "ball path and snapshots (cf. Figure 2 of Sato et al.)";
-    path.x_label = "x (m)";
-    path.y_label = "y (m)";
+    path.x_label = "horizontal position x (m)";
+    path.y_label = "height y (m)";
     path.nx = path.ny = 2;
     path.z.assign(4, NAN);
     Series ball{"ball centre", column(series.ball_xy_m, 0),

@@ -497,14 +497,16 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
                              "thesis-interval best (" + status_text(th.status) + ")", {0, 0, 0},
                              false});
   const std::string name = "map_" + m.program + "_" + as_text(m.configuration);
-  s.figure(figures.map(name, map,
+  Figure f = figures.map(name, map,
                        "Energy of the task over root locations (X, Y) in the frame fixed to the "
                        "line (the line runs from the origin along X), " + id_label(m) +
                            ", on a " + std::to_string(nx) + " × " + std::to_string(ny) +
                            " grid (drawn " + std::to_string(mx) + " × " + std::to_string(my) +
                            "). Only admissible placements are shaded; unreachable, inside-the-margin "
                            "and over-limit regions are flat colours; Y < 0 is the mirror image with "
-                           "the configurations swapped." + saturation));
+                           "the configurations swapped." + saturation);
+  f.half = true;  // the four maps print two by two
+  s.figure(std::move(f));
   return true;
 }
 

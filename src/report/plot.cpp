@@ -129,7 +129,7 @@ class Page {
     p.scol0(kSlotInk, kBlack.r, kBlack.g, kBlack.b);
     p.col0(kSlotInk);
     p.adv(0);
-    p.schr(0, 0.85);
+    p.schr(0, 1.0);
   }
   Page(const Page&) = delete;
   Page& operator=(const Page&) = delete;
@@ -275,7 +275,43 @@ void draw_box(plstream& p, int width_pt, int height_pt, double x_range, double y
   p.gvpd(vx0, vx1, vy0, vy1);
   const double xt = nice_step(x_range, std::max(2.0, (vx1 - vx0) * width_pt / 50));
   const double yt = log_y ? 0 : nice_step(y_range, std::max(2.0, (vy1 - vy0) * height_pt / 30));
-  p.box("bcnst", xt, 0, log_y ? "bcnstvl" : "bcnstv", yt, 0);
+  // fixed-point numbers with the decimals the tick step needs: plplot's own choice puts a
+  // "(x10^k)" over the axis that the page's edge cuts off (line plots scale their values
+  // into a readable range first, see write_line_plot)
+  auto decimals = [](double step) {
+    return step > 0 ? std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9))) : 2;
+  };
+  p.prec(1, decimals(xt));
+  p.box("bcnstf", xt, 0, "", 0, 0);
+  p.prec(1, decimals(yt));
+  p.box("", 0, 0, log_y ? "bcnstvl" : "bcnstvf", yt, 0);
+  p.prec(0, 0);
+}
+
+// "10⁻¹³": a power of ten with its exponent in superscript digits (drawn in full, unlike
+// plplot's own "(x10^k)" over the axis, which the page's top edge cut off)
+std::string power_of_ten(int k) {
+  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string e = std::to_string(std::abs(k)), out = "10";
+  if (k < 0) out += "⁻";
+  for (char c : e) out += digits[c - '0'];
+  return out;
+}
+
+// the exponent that brings values of magnitude up to `m` into [1, 1000), 0 when they are
+// readable as they are (0.01 .. 99999)
+int axis_exponent(double m) {
+  if (!(m > 0) || !std::isfinite(m) || (m >= 1e-2 && m < 1e5)) return 0;
+  return static_cast<int>(std::floor(std::log10(m)));
+}
+
+// "E (J)" with values scaled by 10^-k -> "E (10⁻¹³ J)"; no unit: "E (×10⁻¹³)"
+std::string scaled_label(const std::string& label, int k) {
+  if (k == 0) return label;
+  const size_t open = label.rfind(" (");
+  if (!label.empty() && label.back() == ')' && open != std::string::npos)
+    return label.substr(0, open + 2) + power_of_ten(k) + " " + label.substr(open + 2);
+  return label + " (×" + power_of_ten(k) + ")";
 }
 
 // the map being shaded, for plplot's "defined" callback (which carries no user data);
@@ -337,7 +373,31 @@ std::string css_colour(const Rgb& c) {
   return buf;
 }
 
-void write_line_plot(const LinePlot& plot, const fs::path& svg) {
+void write_line_plot(const LinePlot& input, const fs::path& svg) {
+  // values far from 1 are drawn scaled, the power of ten written into the axis label
+  LinePlot plot = input;
+  {
+    double mx = 0, my = 0;
+    for (const auto& s : plot.series) {
+      check_series(s);
+      for (size_t k = 0; k < s.x.size(); ++k)
+        if (std::isfinite(s.x[k]) && std::isfinite(s.y[k])) {
+          mx = std::max(mx, std::abs(s.x[k]));
+          my = std::max(my, std::abs(s.y[k]));
+        }
+    }
+    for (const auto& r : plot.references)
+      if (std::isfinite(r.y)) my = std::max(my, std::abs(r.y));
+    const int kx = axis_exponent(mx), ky = plot.log_y ? 0 : axis_exponent(my);
+    const double fx = std::pow(10.0, -kx), fy = std::pow(10.0, -ky);
+    for (auto& s : plot.series) {
+      for (double& v : s.x) v *= fx;
+      for (double& v : s.y) v *= fy;
+    }
+    for (auto& r : plot.references) r.y *= fy;
+    plot.x_label = scaled_label(plot.x_label, kx);
+    plot.y_label = scaled_label(plot.y_label, ky);
+  }
   double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
   for (const auto& s : plot.series) {
     check_series(s);
@@ -518,7 +578,7 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
       p.schr(0, m.primary ? 2.2 : 1.2);
       p.col0(c);
       p.string(1, &x, &y, glyph);
-      p.schr(0, 0.85);
+      p.schr(0, 1.0);
       if (!m.label.empty()) legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, glyph);
     }
   p.col0(kSlotInk);

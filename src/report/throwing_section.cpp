@@ -136,8 +136,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       as_text(idp.max_passes) + " passes), for " +
       as_text(idp.seeds) + " seeds." +
       (nl ? " The same constrained problem is solved by a gradient method (" +
-                nl->algorithm + ") to ftol_rel " +
-                format_sig(nl->ftol_rel, 2) + " / xtol_rel " +
+                nl->algorithm + ") to a relative energy change of " +
+                format_sig(nl->ftol_rel, 2) + " / a relative step of " +
                 format_sig(nl->xtol_rel, 2) + " (budget " +
                 as_text(nl->max_evaluations) + " iterations, " +
                 format_sig(nl->max_time_s, 3) + " s)."
@@ -355,14 +355,14 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   contact.id = "contact";
   contact.heading = "Contact of the ball with the tray";
   {
-    LinePlot nf = motion_plot(ms, "normal force of the tray on the ball", "N (N)", &TS::Series::normal_force_N);
+    LinePlot nf = motion_plot(ms, "normal force of the tray on the ball", "normal force N (N)", &TS::Series::normal_force_N);
     const double margin = lim.contact_margin_N;
     if (std::isfinite(margin)) nf.references = {{margin, "margin " + format_sig(margin, 3) + " N"}, {0.0, "0 N: the ball lifts off"}};
     if (!nf.series.empty())
       contact.figure(figures.line("normal_force", nf,
                                   "The tray's normal force on the ball, N = m4 (g − a)·n, at every "
                                   "integration step; below 0 the tray would have to pull the ball."));
-    LinePlot fr = motion_plot(ms, "friction needed to roll", "|F_t| / N", &TS::Series::friction_needed);
+    LinePlot fr = motion_plot(ms, "friction needed to roll", "friction needed |F_t|/N (ratio)", &TS::Series::friction_needed);
     const double mu = lim.friction_coefficient;
     if (std::isfinite(mu)) fr.references = {{mu, "μ = " + format_sig(mu, 3)}};
     // keep the axis readable: the raw start may need far more than μ where N is near 0
@@ -380,16 +380,36 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   Section ball;
   ball.id = "ball";
   ball.heading = "The ball in the tray, release and flight";
-  LinePlot t4 = motion_plot(ms, "ball angle θ4 in the tray", "θ4 (rad)", &TS::Series::q_rad, 3, {});
+  LinePlot t4 = motion_plot(ms, "ball angle θ4 in the tray", "ball angle in the tray θ4 (rad)", &TS::Series::q_rad, 3, {});
   const auto& tl = lim.theta4_limit_rad;
   if (tl.size() == 2) t4.references = {{tl[1], "tray limits ±λ/2"}, {tl[0], ""}};
   if (!t4.series.empty())
     ball.figure(figures.line("theta4", t4,
                              "The ball's angle relative to the tray with the tray's limits: "
                              "outside them the ball leaves the tray (eq. 9's penalty)."));
-  LinePlot q3 = motion_plot(ms, "tray angle θ3 (passive)", "θ3 (rad)", &TS::Series::q_rad, 2, {});
+  LinePlot q3 = motion_plot(ms, "tray angle θ3 (passive)", "tray angle θ3 (rad)", &TS::Series::q_rad, 2, {});
+  // the release target: θ3 at the end of the throw, within the release tolerance
+  const auto& rel_deg = par.task.release_deg;
+  const double rel_tol = lim.release_tolerance_rad;
+  std::string target_text;
+  if (rel_deg.size() == 3 && std::isfinite(rel_deg[2])) {
+    const double target = rel_deg[2] * 3.14159265358979 / 180;
+    const double tf = par.task.duration_s;
+    const double tol = std::isfinite(rel_tol) ? rel_tol : 0;
+    q3.references.push_back({target, ""});
+    if (std::isfinite(tf)) {
+      // a bar at the release time spanning the tolerance, with a dot on the target
+      q3.series.push_back({"release target θ3 = " + format_sig(rel_deg[2], 4) + "° ± " +
+                               format_sig(tol * 180 / 3.14159265358979, 2) + "° at release",
+                           {tf, tf, tf}, {target - tol, target, target + tol}, Rgb{0, 0, 0},
+                           LineStyle::kSolid, true, 4.0});
+    }
+    target_text = " Black: the release target θ3 = " + format_sig(rel_deg[2], 4) +
+                  "° at the release time, the bar its tolerance (the dashed grey line the same "
+                  "angle over the whole throw).";
+  }
   if (!q3.series.empty())
-    ball.figure(figures.line("theta3", q3, "The passive tray joint, moved only by the dynamics."));
+    ball.figure(figures.line("theta3", q3, "The passive tray joint, moved only by the dynamics." + target_text));
   const auto& rel = th.release;
   const auto& fl = th.flight;
   Table r;
@@ -411,8 +431,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   {
     ShadedMap locus;
     locus.title = "ball path: throw and flight (cf. Figure 7 of Sato et al.)";
-    locus.x_label = "x (m)";
-    locus.y_label = "y (m)";
+    locus.x_label = "horizontal position x (m)";
+    locus.y_label = "height y (m)";
     locus.nx = locus.ny = 2;
     locus.z.assign(4, NAN);
     double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
@@ -465,10 +485,15 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   Series en{"energy of the best (feasible)", {}, {}, colour_for("idp"), LineStyle::kSolid, true};
   Table ct;
   ct.caption = "IDP (best seed): the best at the end of iterations (all of them when few; "
-               "else each pass's first and last and every fifth). Violation 0: feasible.";
+               "else the last of each pass). Violation 0: feasible.";
   ct.header = {"pass", "iteration", "energy (J)", "violation", "region (rad/s)", "improvements", "simulations"};
   int k = 0;
   const auto& rows = idp.convergence;
+  // the start: pass 0 is the feasible reference both optimisers begin from
+  if (ran && std::isfinite(section.energy_reference_J)) {
+    en.x.push_back(0);
+    en.y.push_back(section.energy_reference_J);
+  }
   for (size_t i = 0; i < rows.size(); ++i) {
     const auto& row = rows[i];
     ++k;
@@ -476,8 +501,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     en.y.push_back(row.violation > 0 ? NAN : row.energy_J);
     // the table keeps each pass's first and last iteration and every fifth (the plot has all)
     const bool last_of_pass = i + 1 == rows.size() || rows[i + 1].pass != row.pass;
-    const double it = row.iteration;
-    if (rows.size() > 25 && !(it == 1 || last_of_pass || std::fmod(it, 5) == 0)) continue;
+    // (many rows: each pass's last only; the plot has every iteration)
+    if (rows.size() > 25 && !last_of_pass) continue;
     const auto& reg = row.region_rad_s;
     ct.rows.push_back({as_text(row.pass), as_text(row.iteration),
                        format_sig(row.energy_J, 6), format_sig(row.violation, 3),
@@ -486,6 +511,7 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   }
   en.markers = k <= 80;
   if (k > 0) {
+    cp.x_label = "iteration (all passes; 0: the reference start)";
     cp.series = {en};
     conv.figure(figures.line("idp_convergence", cp,
                              "Energy of the best feasible profile after each IDP iteration of the "
@@ -500,6 +526,12 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     hp.y_label = "energy (J)";
     Series h{"SLSQP energy", {}, hist, colour_for("gradient")};
     for (size_t i = 0; i < hist.size(); ++i) h.x.push_back(static_cast<double>(i + 1));
+    // from the start: the reference energy at evaluation 0
+    if (std::isfinite(jsonv::num(th, "energy_reference_J"))) {
+      h.x.insert(h.x.begin(), 0.0);
+      h.y.insert(h.y.begin(), jsonv::num(th, "energy_reference_J"));
+      hp.x_label = "iteration (0: the reference start)";
+    }
     hp.series = {h};
     conv.figure(figures.line("slsqp_history", hp, "The gradient method's energy at each of its evaluations (points may be infeasible)."));
   }

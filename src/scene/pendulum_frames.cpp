@@ -1,4 +1,5 @@
 #include "scene/pendulum_frames.hpp"
+#include "scene/animation.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -67,6 +68,16 @@ std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spe
   labels.bottom_left = "side view, gravity down; grid 0.05 m";
   write_png(dir / "pendulum_snapshots_locus.png", sr.locus(snaps, result.ball, {}, labels));
   files.push_back("pendulum_snapshots_locus.png");
+  {
+    SampledMotion m;
+    for (size_t i = 0; i < result.t.size(); ++i) {
+      if (!m.t.empty() && result.t[i] <= m.t.back()) continue;
+      m.t.push_back(result.t[i]);
+      m.q.push_back(result.q[i]);
+      m.qd.push_back(result.qd[i]);
+    }
+    if (m.t.size() >= 2) write_animation(sr, m, "pendulum, free swing", dir, "pendulum");
+  }
   return files;
 }
 

@@ -1,4 +1,5 @@
 #include "scene/placement_frames.hpp"
+#include "scene/animation.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -59,9 +60,9 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
     else
       std::snprintf(energy, sizeof energy, "%.3f J", pc.refined.reported_metrics().energy);
     char title[200];
-    std::snprintf(title, sizeof title, "%s, configuration %d: root (%.3f, %.3f) m, %s",
-                  std::string(core::program_label(pc.program)).c_str(), pc.configuration,
-                  pc.refined.root.x(), pc.refined.root.y(), energy);
+    // short enough for the frame at print size (the locus names the root)
+    std::snprintf(title, sizeof title, "%s, config. %d: %s",
+                  std::string(core::program_label(pc.program)).c_str(), pc.configuration, energy);
     files.push_back(write_strip(sr, m, options.frames, title, dir, name));
     FrameLabels labels;
     char line2[160];
@@ -74,6 +75,10 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
     SceneRenderer::LocusStyle style;
     style.path_radius = 0.12;
     files.push_back(write_locus(sr, m, 9, path, {}, labels, dir, name, style));
+    write_animation(sr, m,
+                    std::string(core::program_label(pc.program)) + ", configuration " +
+                        std::to_string(pc.configuration),
+                    dir, name);
   }
   return files;
 }

@@ -11,10 +11,11 @@ namespace {
 constexpr int kMaxGeom = 6000;
 
 int font_scale(int height) {
-  if (height <= 400) return mjFONTSCALE_100;
-  if (height <= 640) return mjFONTSCALE_150;
-  if (height <= 960) return mjFONTSCALE_200;
-  return mjFONTSCALE_250;
+  // large enough to read in print, where a frame is a third of the page wide
+  if (height <= 400) return mjFONTSCALE_150;
+  if (height <= 640) return mjFONTSCALE_200;
+  if (height <= 960) return mjFONTSCALE_250;
+  return mjFONTSCALE_300;
 }
 }  // namespace
 

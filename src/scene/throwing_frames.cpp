@@ -1,13 +1,17 @@
 #include "scene/throwing_frames.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "scene/arm_scene.hpp"
+#include "scene/animation.hpp"
 #include "scene/study_frames.hpp"
+#include "studies/throwing/tray_arm.hpp"
 
 namespace armstudy::scene {
 
+// the motion of one optimiser, its samples strictly increasing in time
 SampledMotion throwing_motion(const studies::ThrowSeries& s) {
   SampledMotion m;
   // the series repeats each interior stage boundary: keep strictly increasing times
@@ -47,40 +51,84 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
                                                 const studies::ThrowingResult& result,
                                                 const cases::RenderOptions& options,
                                                 const std::filesystem::path& dir) {
-  const studies::ThrowSeries& s = result.idp.series;
-  if (s.t.size() < 2) return {};
+  if (result.idp.series.t.size() < 2) return {};
   const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
-  const SampledMotion m = throwing_motion(s);
-  std::vector<std::string> files;
-  const std::vector<Eigen::Vector2d>& flight = result.flight.path;
-  char title[200];
-  std::snprintf(title, sizeof title, "throwing, IDP optimum: %.3f J (eq. 7) in %.2f s",
-                result.idp.evaluation.energy, spec.tf);
-  const double pad = spec.arm.r4 + 2 * spec.arm.rb + 0.02;
-  TrayDecor decor = throwing_decor(spec, chain, m, options);
-  {
-    SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
-    files.push_back(write_strip(sr, m, options.frames, title, dir, "throwing_idp"));
-    FrameLabels labels;
-    labels.top_left = std::string(title) + "\nlocus of the throw (Fig. 7); ball path traced";
-    labels.bottom_left = "side view, gravity down; grid 0.05 m";
-    files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, "throwing_idp"));
+  // both optimisers: IDP (the files keep their names) and SLSQP when it ran
+  struct Thrown {
+    const studies::ThrowMotion* motion;
+    std::string who, stem, flight_stem;
+    studies::Flight flight;
+    bool strip;
+  };
+  std::vector<Thrown> thrown = {{&result.idp, "IDP optimum", "throwing_idp", "throwing_flight",
+                                 result.flight, true}};
+  if (result.nlopt_ran && result.nlopt.series.t.size() >= 2) {
+    const core::JointVector& qf = result.nlopt.series.q.back();
+    const core::JointVector& qdf = result.nlopt.series.qd.back();
+    thrown.push_back({&result.nlopt, "SLSQP optimum", "throwing_slsqp", "throwing_slsqp_flight",
+                      studies::ballistic_flight(studies::ball_position(chain, qf),
+                                                studies::ball_velocity(chain, qf, qdf),
+                                                spec.arm.gravity, spec.landing_height),
+                      false});
   }
-  if (flight.size() >= 2) {
-    // frame the motion and the whole flight
-    ViewBox v = fit_view(chain, m.q, flight, pad);
-    v.y_max += 0.15 * (v.y_max - v.y_min);  // room for the labels
-    decor.view = v;
-    SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
-    FrameLabels labels;
-    char t2[200];
-    std::snprintf(t2, sizeof t2, "release and flight: %.2f s, lands at x = %.3f m", 
-                  result.flight.duration, result.flight.landing.x());
-    labels.top_left = std::string(title) + "\n" + t2;
-    labels.bottom_left = "side view; red dots: the ball after release";
-    std::vector<Eigen::Vector2d> dots;
-    for (size_t k = 0; k < flight.size(); ++k) dots.push_back(flight[k]);
-    files.push_back(write_locus(sr, m, 11, s.ball, dots, labels, dir, "throwing_flight"));
+  std::vector<std::string> files;
+  for (const Thrown& th : thrown) {
+    const studies::ThrowSeries& s = th.motion->series;
+    const SampledMotion m = throwing_motion(s);
+    const std::vector<Eigen::Vector2d>& flight = th.flight.path;
+    char title[200];
+    std::snprintf(title, sizeof title, "%s: %.3f J (eq. 7), %.2f s", th.who.c_str(),
+                  th.motion->evaluation.energy, spec.tf);
+    TrayDecor decor = throwing_decor(spec, chain, m, options);
+    const double pad = spec.arm.r4 + 2 * spec.arm.rb + 0.02;
+    {
+      SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
+      if (th.strip) files.push_back(write_strip(sr, m, options.frames, title, dir, th.stem));
+      FrameLabels labels;
+      labels.top_left = std::string(title) + "\nlocus of the throw (Fig. 7); ball path traced";
+      labels.bottom_left = "side view, gravity down; grid 0.05 m";
+      files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, th.stem));
+      write_animation(sr, m, "throwing, " + th.who, dir, th.stem);
+    }
+    {
+      // a close-up of the tray over the last tenth of the throw: the 15 mm ball and the
+      // tray's angle at release, which the whole-motion view draws a few pixels large
+      SampledMotion end;
+      const double t_from = m.t.back() - 0.1 * (m.t.back() - m.t.front());
+      for (size_t k = 0; k < m.t.size(); ++k)
+        if (m.t[k] >= t_from) {
+          end.t.push_back(m.t[k]);
+          end.q.push_back(m.q[k]);
+          end.qd.push_back(m.qd[k]);
+        }
+      if (end.t.size() >= 2) {
+        const Eigen::Vector2d b = s.ball.back();
+        const double r = spec.arm.r4 + 3 * spec.arm.rb + 0.02;
+        const double aspect = double(options.width) / options.height;
+        decor.view = {b.x() - r * aspect, b.x() + r * aspect, b.y() - r, b.y() + r};
+        SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
+        FrameLabels labels;
+        labels.top_left = "close-up at release, " + th.who + "\nlast tenth of the throw; ball path traced";
+        labels.bottom_left = "side view; ball radius " + std::to_string(static_cast<int>(std::lround(spec.arm.rb * 1000))) + " mm";
+        files.push_back(write_locus(sr, end, 5, s.ball, {}, labels, dir, th.stem + "_release"));
+      }
+    }
+    if (flight.size() >= 2) {
+      // frame the motion and the whole flight
+      ViewBox v = fit_view(chain, m.q, flight, pad);
+      v.y_max += 0.15 * (v.y_max - v.y_min);  // room for the labels
+      decor.view = v;
+      SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
+      FrameLabels labels;
+      char t2[200];
+      std::snprintf(t2, sizeof t2, "flight %.2f s, lands at x = %.3f m",
+                    th.flight.duration, th.flight.landing.x());
+      labels.top_left = std::string(title) + "\n" + t2;
+      labels.bottom_left = "side view; red dots: the ball after release";
+      std::vector<Eigen::Vector2d> dots;
+      for (size_t k = 0; k < flight.size(); ++k) dots.push_back(flight[k]);
+      files.push_back(write_locus(sr, m, 11, s.ball, dots, labels, dir, th.flight_stem));
+    }
   }
   return files;
 }

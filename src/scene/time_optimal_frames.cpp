@@ -1,4 +1,5 @@
 #include "scene/time_optimal_frames.hpp"
+#include "scene/animation.hpp"
 
 #include <cstdio>
 
@@ -37,15 +38,16 @@ std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const 
   std::vector<Eigen::Vector2d> path;
   for (int k = 0; k < result.motion_p.cols(); ++k) path.push_back(result.motion_p.col(k));
   char title[160];
-  std::snprintf(title, sizeof title, "time-optimal (exact): %.4f s, equal time steps",
+  std::snprintf(title, sizeof title, "time-optimal (exact): %.4f s",
                 result.motion_t.back() - result.motion_t.front());
   std::vector<std::string> files;
   files.push_back(write_strip(sr, m, options.frames, title, dir, "time_optimal"));
   FrameLabels labels;
-  labels.top_left = std::string(title) + "\nposes at equal time steps: dense where slow";
+  labels.top_left = std::string(title) + "\nequal time steps: dense where slow";
   labels.bottom_left = spec.chain.gravity != 0.0 ? "vertical plane, gravity down the image; grid 0.1 m"
                                                  : "top view; grid 0.1 m";
   files.push_back(write_locus(sr, m, 15, path, {}, labels, dir, "time_optimal"));
+  write_animation(sr, m, "time-optimal (exact)", dir, "time_optimal");
   return files;
 }
 

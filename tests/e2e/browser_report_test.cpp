@@ -10,6 +10,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -287,6 +289,203 @@ TEST_F(BrowserReport, BundledResultsValidateAndCiFilesCountEveryCheck) {
   for (size_t at = junit.find("<failure"); at != std::string::npos; at = junit.find("<failure", at + 1))
     ++failed;
   EXPECT_EQ(failed, failures);
+}
+
+}  // namespace
+
+namespace {
+
+// the page's Content-Security-Policy as the templates write it: no script, nothing fetched
+constexpr const char* kCsp =
+    "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src 'self'; "
+    "style-src 'self'; base-uri 'none'; form-action 'none'\">";
+
+// whitespace runs as one space (pdftotext breaks lines where the page does)
+std::string squeezed(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    const bool space = std::isspace(static_cast<unsigned char>(c));
+    if (space && (out.empty() || out.back() == ' ')) continue;
+    out += space ? ' ' : c;
+  }
+  return out;
+}
+
+// text without tags, code and preformatted blocks
+std::string text_of(std::string html) {
+  html = std::regex_replace(html, std::regex(R"(<pre[\s\S]*?</pre>)"), " ");
+  html = std::regex_replace(html, std::regex(R"(<code>[\s\S]*?</code>)"), " ");
+  return std::regex_replace(html, std::regex(R"(<[^>]*>)"), " ");
+}
+
+// what the page uses as labels before its appendix: headings, table headers and first
+// cells, key figure names, the bold title of a caption; and the whole answer box
+std::string labels_before_appendix(std::string html) {
+  for (const char* start : {"<section id=\"parameters\"", "<section id=\"case\"", "<footer"}) {
+    const size_t at = html.find(start);
+    if (at != std::string::npos) html.resize(at);
+  }
+  html = std::regex_replace(html, std::regex(R"(<head>[\s\S]*?</head>)"), " ");
+  static const std::regex kLabel(
+      R"re(<(h[1-4]|th|dt|strong)\b[^>]*>([\s\S]*?)</\1>|<tr>\s*<td[^>]*>([\s\S]*?)</td>)re");
+  std::string out;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), kLabel); it != std::sregex_iterator(); ++it)
+    out += " " + text_of((*it)[2].str() + (*it)[3].str());
+  const size_t box = html.find("<section id=\"answer\"");
+  if (box != std::string::npos) out += " " + text_of(html.substr(box, html.find("</section>", box) - box));
+  return out;
+}
+
+std::string sha256_of(const fs::path& file, const fs::path& work) {
+  const fs::path out = work / "sha256.txt";
+  if (run("sha256sum " + quote(file.string()) + " > " + quote(out.string())) != 0) return "";
+  return slurp(out).substr(0, 64);
+}
+
+// page 1 of every report: the answer in one sentence, the key picture and the verdict of
+// the checks, in the PDF a reviewer prints as well as in the page; a screenshot of it is
+// kept (browser_e2e/page1/<case>.png) to look at
+TEST_F(BrowserReport, PageOneHoldsTheAnswerTheKeyPictureAndTheCheckVerdict) {
+  const fs::path shots = out_.parent_path() / "page1";
+  fs::create_directories(shots);
+  for (const auto& name : bundled_case_names()) {
+    const auto j = nlohmann::json::parse(slurp(out_ / name / "results.json"));
+    const std::string html = slurp(out_ / name / "index.html");
+    const size_t box = html.find("<section id=\"answer\"");
+    ASSERT_NE(box, std::string::npos) << name << ": no answer box";
+    const std::string answer = html.substr(box, html.find("</section>", box) - box);
+    // the key picture is in the box and on disk
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(answer, m, std::regex(R"re(<img src="([^"]+)")re"))) << name;
+    const std::string picture = m[1];
+    EXPECT_TRUE(fs::exists(out_ / name / picture)) << name << ": " << picture;
+    if (!j["frames"].empty())
+      EXPECT_TRUE(picture.ends_with(".png")) << name << ": a rendered motion answers with its frame";
+    // the verdict counts the checks
+    const size_t checks = j["checks"].size();
+    size_t failed = 0;
+    for (const auto& c : j["checks"]) failed += !c["passed"].get<bool>();
+    const std::string verdict = checks == 0 ? "The study ran no checks"
+                                : failed == 0 ? (checks == 1 ? "check passed" : "All " + std::to_string(checks) + " checks passed")
+                                              : std::to_string(failed) + " of " + std::to_string(checks) + " checks FAILED";
+    EXPECT_NE(answer.find(verdict), std::string::npos) << name << ": verdict '" << verdict << "' missing";
+    // the printed page 1 says the same: the answer's first words, the verdict, the picture
+    const fs::path txt = work_ / (name + "-page1.txt");
+    ASSERT_EQ(run("pdftotext -f 1 -l 1 " + quote((out_ / name / "report.pdf").string()) + " " + quote(txt.string())), 0);
+    const std::string page1 = squeezed(slurp(txt));
+    EXPECT_NE(page1.find("The answer"), std::string::npos) << name;
+    const std::string message = squeezed(j["message"].get<std::string>());
+    EXPECT_NE(page1.find(message.substr(0, std::min<size_t>(40, message.size()))), std::string::npos)
+        << name << ": page 1 does not start with the answer '" << message << "'";
+    EXPECT_NE(page1.find(verdict), std::string::npos) << name << ": page 1 lacks the verdict";
+    if (picture.ends_with(".png")) {
+      const fs::path list = work_ / (name + "-images.txt");
+      ASSERT_EQ(run("pdfimages -list -f 1 -l 1 " + quote((out_ / name / "report.pdf").string()) + " > " + quote(list.string())), 0);
+      size_t lines = 0;
+      std::istringstream in(slurp(list));
+      for (std::string l; std::getline(in, l);) lines += !l.empty();
+      EXPECT_GE(lines, 3u) << name << ": page 1 of the PDF has no image";  // 2 header lines
+    }
+    ASSERT_EQ(run("pdftoppm -png -r 60 -f 1 -l 1 -singlefile " + quote((out_ / name / "report.pdf").string()) +
+                  " " + quote((shots / name).string())), 0);
+  }
+}
+
+// labels are words: no results.json key (snake_case like energy_eq8_J) is printed as a
+// label, nor anywhere in the answer box, outside code and the appendix (which shows the
+// case file's own keys)
+TEST_F(BrowserReport, NoMachineKeyNamesAsLabels) {
+  static const std::regex kKey(R"(\b[a-z][a-z0-9]{2,}(?:_[A-Za-z0-9]+)+\b)");
+  for (const auto& name : bundled_case_names()) {
+    const std::string text = labels_before_appendix(slurp(out_ / name / "index.html"));
+    std::set<std::string> found;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), kKey); it != std::sregex_iterator(); ++it)
+      found.insert((*it)[0]);
+    std::string all;
+    for (const auto& f : found) all += " " + f;
+    EXPECT_TRUE(found.empty()) << name << ": machine keys on the page:" << all;
+  }
+  // the key figures carry their human label in results.json too
+  for (const auto& name : bundled_case_names()) {
+    const auto j = nlohmann::json::parse(slurp(out_ / name / "results.json"));
+    for (const auto& k : j["key_figures"]) {
+      ASSERT_TRUE(k.contains("label")) << name << ": " << k.dump();
+      EXPECT_FALSE(std::regex_search(k["label"].get<std::string>(), kKey)) << name << ": " << k.dump();
+    }
+  }
+}
+
+// every motion is an animation on the page (CSS over its sprite sheet, no script: the CSP is
+// the templates' own) and a video beside it that decodes to the frames at the motion's speed
+TEST_F(BrowserReport, EveryMotionHasAnAnimationAndAVideoThatDecodes) {
+  size_t videos = 0;
+  for (const auto& name : bundled_case_names()) {
+    const fs::path dir = out_ / name;
+    const auto j = nlohmann::json::parse(slurp(dir / "results.json"));
+    const std::string html = slurp(dir / "index.html"), css = slurp(dir / "report.css");
+    EXPECT_NE(html.find(kCsp), std::string::npos) << name << ": the CSP changed";
+    EXPECT_EQ(html.find("<script"), std::string::npos) << name;
+    if (j["status"] == "solved") EXPECT_FALSE(j["animations"].empty()) << name << ": no animation";
+    std::map<std::string, std::string> listed;  // files with their sha256
+    for (const auto& f : j["files"]) listed[f["path"]] = f["sha256"];
+    for (const auto& a : j["animations"]) {
+      const std::string cls = "a-" + a["name"].get<std::string>();
+      EXPECT_NE(html.find("class=\"anim " + cls + "\""), std::string::npos) << name << ": " << cls;
+      EXPECT_NE(css.find(".anim." + cls + " {"), std::string::npos) << name << ": " << cls;
+      EXPECT_NE(css.find("@keyframes " + cls + " {"), std::string::npos) << name << ": " << cls;
+      for (const char* key : {"sprite", "still", "video"}) {
+        ASSERT_TRUE(a[key].is_string()) << name << ": " << cls << " has no " << key << " (ffmpeg missing?)";
+        const std::string f = a[key];
+        ASSERT_TRUE(fs::exists(dir / f)) << name << ": " << f;
+        EXPECT_EQ(listed[f], sha256_of(dir / f, work_)) << name << ": " << f << " not in files with its sha256";
+      }
+      EXPECT_NE(html.find("href=\"" + a["video"].get<std::string>() + "\""), std::string::npos) << name;
+      // the video: as many frames as the animation, at the motion's real speed
+      const fs::path probe = work_ / "probe.json";
+      ASSERT_EQ(run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                    "stream=nb_read_frames,duration -of json " +
+                    quote((dir / a["video"].get<std::string>()).string()) + " > " + quote(probe.string())),
+                0)
+          << name << ": " << a["video"];
+      const auto p = nlohmann::json::parse(slurp(probe))["streams"][0];
+      const int frames = a["frames"], decoded = std::stoi(p["nb_read_frames"].get<std::string>());
+      const double fps = a["fps"], duration = std::stod(p["duration"].get<std::string>());
+      EXPECT_EQ(decoded, frames) << name << ": " << a["video"];
+      EXPECT_NEAR(duration, frames / fps, 0.5 / fps) << name << ": " << a["video"];
+      // frame k at t0 + k / fps: the last frame is the motion's end
+      EXPECT_NEAR((frames - 1) / fps, a["duration_s"].get<double>(), 1e-6) << name;
+      ++videos;
+    }
+  }
+  EXPECT_GE(videos, 5u);
+}
+
+// page economy: the page counts of every report (kept in browser_e2e/page_counts.txt), and
+// no page nearly blank but the last one of a part (the answer page, the page before the
+// appendix, the last page)
+TEST_F(BrowserReport, PdfPagesAreNotNearlyBlankAndTheirCountsAreRecorded) {
+  std::ofstream counts(out_.parent_path() / "page_counts.txt");
+  for (const auto& name : bundled_case_names()) {
+    const fs::path pdf = out_ / name / "report.pdf";
+    const fs::path prefix = work_ / ("eco-" + name);
+    ASSERT_EQ(run("pdftoppm -gray -r 24 " + quote(pdf.string()) + " " + quote(prefix.string())), 0);
+    std::vector<fs::path> pgm;
+    for (const auto& e : fs::directory_iterator(work_))
+      if (e.path().filename().string().rfind("eco-" + name + "-", 0) == 0) pgm.push_back(e.path());
+    std::sort(pgm.begin(), pgm.end());
+    ASSERT_FALSE(pgm.empty()) << name;
+    counts << name << " " << pgm.size() << "\n";
+    RecordProperty(name + "_pages", static_cast<int>(pgm.size()));
+    for (size_t k = 0; k + 1 < pgm.size(); ++k) {
+      // the page after starts a part: the details after page 1, or the appendix
+      const fs::path txt = work_ / "next-page.txt";
+      ASSERT_EQ(run("pdftotext -f " + std::to_string(k + 2) + " -l " + std::to_string(k + 2) + " " +
+                    quote(pdf.string()) + " " + quote(txt.string())), 0);
+      const bool part_ends = k == 0 || squeezed(slurp(txt)).rfind("Appendix A.", 0) == 0;
+      if (part_ends) continue;
+      EXPECT_GT(ink_fraction_pgm(pgm[k]), 0.012) << name << ": page " << k + 1 << " of " << pgm.size() << " is nearly blank";
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,38 @@
+#pragma once
+/// The answer box on page 1 of a case report: the one-sentence result, the key picture,
+/// the key figures in words with units, the verdict of the study's checks (passed or
+/// failed, and what binds the optimum) and the assumptions the case makes where its source
+/// is silent. Everything is read from results.json; nothing is computed anew but counts
+/// and shares of samples.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace armstudy::report {
+
+struct CasePage;
+
+/// What page 1 says about a case.
+struct AnswerBox {
+  std::string sentence;   ///< the result in one sentence (the study's message)
+  std::string picture;    ///< key image, relative to the case folder; empty: none
+  std::string picture_caption;
+  std::vector<std::pair<std::string, std::string>> figures;  ///< (label in words, value with unit)
+  std::string verdict;    ///< "all 10 checks passed" / "2 of 10 checks FAILED: ..."
+  bool verdict_ok = true;
+  std::vector<std::string> binding;      ///< what binds / decides the optimum, in words
+  std::vector<std::string> assumptions;  ///< where the source is silent: value used and why
+};
+
+/// The answer box of a case from its results.json; `page` supplies the key figures and,
+/// when no frame was rendered, the first figure of the page as the key picture.
+AnswerBox answer_box(const nlohmann::json& results, const CasePage& page);
+
+/// A check's name in words: "mujoco_dynamic_replay.poly345.1" -> "MuJoCo dynamic replay,
+/// poly345, 1".
+std::string check_label(const std::string& name);
+
+}  // namespace armstudy::report

@@ -1,0 +1,157 @@
+#include "scene/animation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/png_writer.hpp"
+#include "scene/replay.hpp"
+#include "scene/scene_error.hpp"
+
+namespace armstudy::scene {
+namespace fs = std::filesystem;
+
+namespace {
+
+// every `factor`-th of the image, averaged over factor x factor blocks (a box filter)
+Image downscale(const Image& in, int w, int h) {
+  Image out(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int x0 = x * in.width / w, x1 = std::max(x0 + 1, (x + 1) * in.width / w);
+      const int y0 = y * in.height / h, y1 = std::max(y0 + 1, (y + 1) * in.height / h);
+      unsigned r = 0, g = 0, b = 0, n = 0;
+      for (int yy = y0; yy < y1; ++yy)
+        for (int xx = x0; xx < x1; ++xx) {
+          const Rgb c = in.at(xx, yy);
+          r += c.r, g += c.g, b += c.b, ++n;
+        }
+      out.set(x, y, Rgb{static_cast<std::uint8_t>(r / n), static_cast<std::uint8_t>(g / n),
+                        static_cast<std::uint8_t>(b / n)});
+    }
+  return out;
+}
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// frames as raw RGB into ffmpeg's stdin: H.264 in MP4, yuv420p (plays everywhere), one
+// thread and bit-exact flags so that the same frames give the same file
+bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, double fps,
+                 const fs::path& out, std::string* why) {
+  const int w = frames.front().width & ~1, h = frames.front().height & ~1;
+  char rate[64];
+  std::snprintf(rate, sizeof rate, "%.6f", fps);
+  const fs::path tmp = out.string() + ".tmp.mp4";
+  const std::string cmd = quote(ffmpeg) + " -loglevel error -nostdin -y -f rawvideo -pix_fmt rgb24 -s " +
+                          std::to_string(frames.front().width) + "x" + std::to_string(frames.front().height) +
+                          " -framerate " + rate + " -i - -vf crop=" + std::to_string(w) + ":" +
+                          std::to_string(h) + ":0:0 -c:v libx264 -preset medium -crf 20 -pix_fmt yuv420p"
+                          " -threads 1 -map_metadata -1 -fflags +bitexact -flags:v +bitexact"
+                          " -movflags +faststart " + quote(tmp.string()) + " 2>&1";
+  FILE* p = ::popen(cmd.c_str(), "w");
+  if (!p) {
+    *why = "cannot start ffmpeg";
+    return false;
+  }
+  bool ok = true;
+  for (const Image& f : frames)
+    ok &= std::fwrite(f.rgb.data(), 1, f.rgb.size(), p) == f.rgb.size();
+  const int rc = ::pclose(p);
+  if (!ok || rc != 0) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    *why = "ffmpeg failed (exit status " + std::to_string(rc) + ")";
+    return false;
+  }
+  fs::rename(tmp, out);
+  return true;
+}
+
+}  // namespace
+
+std::string find_ffmpeg() {
+  if (const char* env = std::getenv("ARMSTUDY_FFMPEG"); env && *env) return env;
+  if (const char* path = std::getenv("PATH"))
+    for (std::string dirs = path; !dirs.empty();) {
+      const size_t colon = dirs.find(':');
+      const std::string d = dirs.substr(0, colon);
+      dirs = colon == std::string::npos ? "" : dirs.substr(colon + 1);
+      if (!d.empty() && ::access((fs::path(d) / "ffmpeg").c_str(), X_OK) == 0)
+        return (fs::path(d) / "ffmpeg").string();
+    }
+  return "";
+}
+
+int animation_frames(double duration) {
+  if (!(duration > 0)) return kAnimationMinFrames;
+  const int n = static_cast<int>(std::ceil(duration * kAnimationFps)) + 1;
+  return std::clamp(n, kAnimationMinFrames, kAnimationMaxFrames);
+}
+
+Animation write_animation(SceneRenderer& sr, const SampledMotion& m, const std::string& title,
+                          const fs::path& dir, const std::string& name) {
+  Animation a;
+  a.name = name;
+  a.title = title;
+  if (m.t.size() < 2) throw SceneError("animation " + name + ": fewer than 2 samples");
+  a.duration_s = m.t.back() - m.t.front();
+  a.frames = animation_frames(a.duration_s);
+  // frame k at t0 + k / fps: the last frame is the end of the motion
+  a.fps = a.duration_s > 0 ? (a.frames - 1) / a.duration_s : 1;
+  const std::vector<double> at = even_times(m.t.front(), m.t.back(), a.frames);
+  const std::vector<PoseSample> samples = resample(m.t, m.q, m.qd, at);
+  begin_replay(sr.model());
+  std::vector<Image> frames;
+  for (const PoseSample& s : samples) {
+    FrameLabels l;
+    l.top_left = title + "\n" + time_label(s.t);
+    frames.push_back(sr.frame(s, l));
+  }
+  // the sprite: frames at 3/4 size, 8 to a row
+  a.columns = std::min(a.frames, 8);
+  a.frame_width = frames.front().width * 3 / 4;
+  a.frame_height = frames.front().height * 3 / 4;
+  const int rows = (a.frames + a.columns - 1) / a.columns;
+  Image sheet(a.columns * a.frame_width, rows * a.frame_height);
+  for (int k = 0; k < a.frames; ++k)
+    blit(downscale(frames[k], a.frame_width, a.frame_height), &sheet,
+         (k % a.columns) * a.frame_width, (k / a.columns) * a.frame_height);
+  a.sprite = name + "_anim.png";
+  write_png(dir / a.sprite, sheet);
+  a.still = name + "_still.png";
+  write_png(dir / a.still, frames.back());
+  const std::string ffmpeg = find_ffmpeg();
+  if (ffmpeg.empty()) {
+    a.note = "no video: ffmpeg was not found (apt-get install ffmpeg)";
+  } else {
+    std::string why;
+    if (write_video(ffmpeg, frames, a.fps, dir / (name + ".mp4"), &why))
+      a.video = name + ".mp4";
+    else
+      a.note = "no video: " + why;
+  }
+  nlohmann::json j = {{"name", a.name},         {"title", a.title},
+                      {"sprite", a.sprite},     {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
+                      {"still", a.still},       {"frames", a.frames},
+                      {"columns", a.columns},   {"frame_width_px", a.frame_width},
+                      {"frame_height_px", a.frame_height}, {"fps", a.fps},
+                      {"duration_s", a.duration_s}, {"video_duration_s", a.frames / a.fps}};
+  if (!a.note.empty()) j["note"] = a.note;
+  std::ofstream out(dir / (name + ".anim.json"));
+  out << j.dump(1) << "\n";
+  if (!out) throw std::runtime_error("cannot write " + (dir / (name + ".anim.json")).string());
+  return a;
+}
+
+}  // namespace armstudy::scene
