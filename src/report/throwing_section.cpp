@@ -527,9 +527,9 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     Series h{"SLSQP energy", {}, hist, colour_for("gradient")};
     for (size_t i = 0; i < hist.size(); ++i) h.x.push_back(static_cast<double>(i + 1));
     // from the start: the reference energy at evaluation 0
-    if (std::isfinite(jsonv::num(th, "energy_reference_J"))) {
+    if (std::isfinite(section.energy_reference_J)) {
       h.x.insert(h.x.begin(), 0.0);
-      h.y.insert(h.y.begin(), jsonv::num(th, "energy_reference_J"));
+      h.y.insert(h.y.begin(), section.energy_reference_J);
       hp.x_label = "iteration (0: the reference start)";
     }
     hp.series = {h};
