@@ -112,7 +112,7 @@ TEST(StudyFrames, ThrowingLocusWithTheFlightAfterRelease) {
                                        spec.landing_height);
   const fs::path dir = out_dir("throwing");
   expect_images(dir, render_throwing_frames(spec, r, cases::RenderOptions{}, dir),
-                r.flight.path.size() >= 2 ? 3 : 2);
+                r.flight.path.size() >= 2 ? 4 : 3);  // strip, locus, close-up at release, flight
 }
 
 // the renderer's input only (the solver is tested by its own engineer): a motion along the
