@@ -132,9 +132,16 @@ void time_optimal(const json& results, AnswerBox& a) {
     if (shares.empty() && n > 0) a.binding.push_back("no limit is within 1 % of its bound at any sample");
   }
   const std::string path = jsonv::str(obj(to, "path"), "kind");
-  if (!path.empty()) a.assumptions.push_back("the tip follows the given path (" + path + "), parametrised by its arc length");
-  a.assumptions.push_back("elbow configuration " + jsonv::str(to, "configuration") +
-                          " throughout; rigid links and ideal torque sources");
+  if (jsonv::str(obj(to, "path"), "space") == "joint") {
+    if (!path.empty())
+      a.assumptions.push_back("the joints follow the given joint-space path (" + path +
+                              "), parametrised by its chord length in joint space");
+    a.assumptions.push_back("rigid links and ideal torque sources");
+  } else {
+    if (!path.empty()) a.assumptions.push_back("the tip follows the given path (" + path + "), parametrised by its arc length");
+    a.assumptions.push_back("elbow configuration " + jsonv::str(to, "configuration") +
+                            " throughout; rigid links and ideal torque sources");
+  }
   if (!jsonv::has(lim, "acceleration_rad_s2") || lim["acceleration_rad_s2"].is_null())
     a.assumptions.push_back("no joint acceleration limit (only velocity and torque limits)");
 }
