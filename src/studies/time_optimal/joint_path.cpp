@@ -7,6 +7,7 @@
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
 #include "core/kinematics.hpp"
+#include "studies/time_optimal/natural_spline.hpp"
 
 namespace armstudy::studies::time_optimal {
 
@@ -39,26 +40,8 @@ JointPathGeometry::JointPathGeometry(const JointPathSpec& spec) : kind_(spec.kin
     }
     return;
   }
-  // natural cubic spline: tridiagonal system for the second derivatives, m_0 = m_n-1 = 0
-  // (Thomas algorithm), each joint at once
-  const int k = n - 2;
-  std::vector<double> diag(k), up(k), low(k);
-  std::vector<core::JointVector> rhs(k);
-  for (int j = 0; j < k; ++j) {
-    const int i = j + 1;
-    const double h0 = knot_[i] - knot_[i - 1], h1 = knot_[i + 1] - knot_[i];
-    low[j] = h0;
-    diag[j] = 2.0 * (h0 + h1);
-    up[j] = h1;
-    rhs[j] = 6.0 * ((pts_[i + 1] - pts_[i]) / h1 - (pts_[i] - pts_[i - 1]) / h0);
-  }
-  for (int j = 1; j < k; ++j) {
-    const double w = low[j] / diag[j - 1];
-    diag[j] -= w * up[j - 1];
-    rhs[j] -= w * rhs[j - 1];
-  }
-  m_[k] = rhs[k - 1] / diag[k - 1];
-  for (int j = k - 2; j >= 0; --j) m_[j + 1] = (rhs[j] - up[j] * m_[j + 2]) / diag[j];
+  // natural cubic spline through the waypoints, each joint at once
+  natural_spline_second_derivatives(knot_, pts_, m_);
 }
 
 JointPathPoint JointPathGeometry::at(double s, bool from_left) const {

@@ -8,6 +8,7 @@
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
 #include "core/ik2.hpp"
+#include "studies/time_optimal/natural_spline.hpp"
 
 namespace armstudy::studies::time_optimal {
 namespace {
@@ -49,30 +50,11 @@ PathGeometry::PathGeometry(const PathSpec& spec) : kind_(spec.kind), pts_(spec.p
     return;
   }
   // natural cubic spline with chord-length knots: tridiagonal system for the second
-  // derivatives m_i, m_0 = m_n-1 = 0 (Thomas algorithm)
+  // derivatives m_i, m_0 = m_n-1 = 0 (natural_spline.hpp)
   tau_.assign(n, 0.0);
   for (int i = 1; i < n; ++i) tau_[i] = tau_[i - 1] + (pts_[i] - pts_[i - 1]).norm();
   m_.assign(n, Eigen::Vector2d::Zero());
-  if (n > 2) {
-    const int k = n - 2;
-    std::vector<double> diag(k), up(k), low(k);
-    std::vector<Eigen::Vector2d> rhs(k);
-    for (int j = 0; j < k; ++j) {
-      const int i = j + 1;
-      const double h0 = tau_[i] - tau_[i - 1], h1 = tau_[i + 1] - tau_[i];
-      low[j] = h0;
-      diag[j] = 2.0 * (h0 + h1);
-      up[j] = h1;
-      rhs[j] = 6.0 * ((pts_[i + 1] - pts_[i]) / h1 - (pts_[i] - pts_[i - 1]) / h0);
-    }
-    for (int j = 1; j < k; ++j) {
-      const double w = low[j] / diag[j - 1];
-      diag[j] -= w * up[j - 1];
-      rhs[j] -= w * rhs[j - 1];
-    }
-    m_[k] = rhs[k - 1] / diag[k - 1];
-    for (int j = k - 2; j >= 0; --j) m_[j + 1] = (rhs[j] - up[j] * m_[j + 2]) / diag[j];
-  }
+  if (n > 2) natural_spline_second_derivatives(tau_, pts_, m_);
   // arc-length tables
   piece_s_.push_back(0.0);
   tab_tau_.resize(n - 1);
