@@ -142,7 +142,7 @@ StudyEntry pendulum_entry() {
   return study_entry<studies::PendulumResultsSection>(
       "pendulum",
       "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
-      &load, &report::pendulum_sections);
+      &load, &report::pendulum_sections, &report::pendulum_answer);
 }
 
 }  // namespace armstudy::app

@@ -13,6 +13,7 @@
 
 #include "cases/case_info.hpp"
 #include "cases/yaml_reader.hpp"
+#include "report/case_report.hpp"
 #include "studies/common.hpp"
 
 namespace armstudy::report {
@@ -68,17 +69,19 @@ using ReportSections = void (*)(const nlohmann::json& results, report::FigureWri
 /// One study kind, the one record of it the registry holds (nothing else dispatches on the
 /// study name): its name, its loader (which returns the StudyRun: solver, checks, key
 /// figures, frames, results()), its results.json section's schema and strict reader (from
-/// its typed result, studies/<study>/results_section.hpp) and its report sections. Every
-/// part is required: there is no default, and a null part is an error at registration.
-/// Build one with study_entry<Section>() (app/study_entry.hpp).
+/// its typed result, studies/<study>/results_section.hpp), its report sections, its lines of
+/// the answer box and its figure over all its cases on the index page. The first five are
+/// required (a null one is an error at registration); the answer lines and the index figure
+/// default to none. Build one with study_entry<Section>() (app/study_entry.hpp).
 struct StudyEntry {
   using Loader = std::unique_ptr<StudyRun> (*)(cases::Map& root, const cases::CaseInfo& info);
   using SectionSchema = nlohmann::json (*)();
   using SectionCheck = void (*)(const nlohmann::json& results);
 
-  /// @throws std::invalid_argument when a part is missing.
+  /// @throws std::invalid_argument when a required part is missing.
   StudyEntry(std::string_view study, std::string_view summary, Loader load, SectionSchema schema,
-             SectionCheck check, ReportSections report);
+             SectionCheck check, ReportSections report, report::StudyAnswer answer = nullptr,
+             report::IndexFigure index_figure = {});
 
   std::string_view study;    ///< "placement", "pendulum", "throwing", "time_optimal"
   std::string_view summary;  ///< one line for --help
@@ -91,6 +94,10 @@ struct StudyEntry {
   SectionCheck check_section;
   /// The study's sections of its case page.
   ReportSections report;
+  /// What binds its answer and what the case assumes, on page 1 (and its key picture).
+  report::StudyAnswer answer = nullptr;
+  /// Its figure over all its cases on the index page (none when `draw` is null).
+  report::IndexFigure index_figure;
 };
 
 /// Every study armstudy knows.
@@ -98,6 +105,9 @@ const std::vector<StudyEntry>& study_registry();
 
 /// The registry's record of `study`; nullptr when there is none.
 const StudyEntry* find_study(std::string_view study);
+
+/// What the index page needs of every study in the registry (report::write_index).
+std::vector<report::IndexStudy> index_studies();
 
 /// A case file loaded and validated.
 struct LoadedCase {

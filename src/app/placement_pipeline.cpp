@@ -431,7 +431,15 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 StudyEntry placement_entry() {
   return study_entry<pl::ResultsSection>(
       "placement", "energy-optimal root location of a 2-link arm for a straight-line task", &load,
-      &report::placement_sections);
+      &report::placement_sections, &report::placement_answer,
+      {"placement_root_loci.svg", "Optimal root locations across the placement cases",
+       "optimal root locations of every placement case",
+       "The optimal root location of each program and configuration in the frame fixed to the task "
+       "line (every line starts at the origin and runs along X), one point per placement case, "
+       "joined from the shortest line to the longest: Figure 9.30 of Kopmaz's thesis (2016; "
+       "docs/sources.md), from this run's cases. Cases without an admissible optimum contribute no "
+       "point.",
+       &report::placement_loci_across_cases});
 }
 
 }  // namespace armstudy::app

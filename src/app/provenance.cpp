@@ -26,36 +26,35 @@ std::string cpu_model() {
 }
 }  // namespace
 
-nlohmann::json provenance() {
-  nlohmann::json p;
-  p["armstudy_version"] = kVersion;
-  if (*git_commit()) p["git_commit"] = git_commit();
-  p["mujoco_version"] = mj_versionString();
+report::ProvenanceRecord provenance() {
+  report::ProvenanceRecord p;
+  p.armstudy_version = kVersion;
+  if (*git_commit()) p.git_commit = git_commit();
+  p.mujoco_version = mj_versionString();
 #if defined(__clang__)
-  p["compiler"] = std::string("clang ") + __clang_version__;
+  p.compiler = std::string("clang ") + __clang_version__;
 #elif defined(__GNUC__)
-  p["compiler"] = std::string("gcc ") + __VERSION__;
+  p.compiler = std::string("gcc ") + __VERSION__;
 #else
-  p["compiler"] = "unknown";
+  p.compiler = "unknown";
 #endif
-  p["cpu_model"] = cpu_model();
+  p.cpu_model = cpu_model();
   return p;
 }
 
-nlohmann::json list_files(const fs::path& dir, const std::string& skip) {
+std::vector<report::FileRecord> list_files(const fs::path& dir, const std::string& skip) {
   std::vector<fs::path> files;
   for (const auto& e : fs::recursive_directory_iterator(dir))
     if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir));
   std::sort(files.begin(), files.end());
-  nlohmann::json out = nlohmann::json::array();
+  std::vector<report::FileRecord> out;
   for (const auto& rel : files) {
     if (rel.generic_string() == skip) continue;
     std::ifstream in(dir / rel, std::ios::binary);
     std::ostringstream ss;
     ss << in.rdbuf();
     const std::string bytes = ss.str();
-    out.push_back({{"path", rel.generic_string()}, {"bytes", bytes.size()},
-                   {"sha256", cases::sha256_hex(bytes)}});
+    out.push_back({rel.generic_string(), static_cast<long long>(bytes.size()), cases::sha256_hex(bytes)});
   }
   return out;
 }

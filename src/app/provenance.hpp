@@ -3,15 +3,18 @@
 
 #include <filesystem>
 
-#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "report/results_record.hpp"
 
 namespace armstudy::app {
 
-/// {armstudy_version, git_commit (if known), mujoco_version, compiler, cpu_model}.
-nlohmann::json provenance();
+/// armstudy_version, git_commit (if known), mujoco_version, compiler, cpu_model.
+report::ProvenanceRecord provenance();
 
 /// Every regular file under `dir` (relative path, size, sha256), sorted by path,
 /// except `skip` (relative), e.g. results.json itself.
-nlohmann::json list_files(const std::filesystem::path& dir, const std::string& skip);
+std::vector<report::FileRecord> list_files(const std::filesystem::path& dir, const std::string& skip);
 
 }  // namespace armstudy::app

@@ -30,32 +30,30 @@ void write_file_atomic(const fs::path& path, const std::string& text) {
   report::write_file_atomic(path, text);
 }
 
-nlohmann::json results_header(const cases::CaseInfo& info, studies::Status status,
-                              const std::string& message,
-                              const std::vector<studies::Check>& checks) {
-  nlohmann::json j;
-  j["schema_version"] = 1;
-  j["armstudy_version"] = kVersion;
-  if (*git_commit()) j["git_commit"] = git_commit();
-  j["study"] = info.study;
-  j["case"] = {{"name", info.name}, {"path", info.path}, {"sha256", info.sha256}};
-  if (!info.description.empty()) j["case"]["description"] = info.description;
-  if (info.expect_unsolvable) j["case"]["expect"] = "unsolvable";
+report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Status status,
+                                     const std::string& message,
+                                     const std::vector<studies::Check>& checks) {
+  report::ResultsRecord r;
+  r.schema_version = report::kSchemaVersion;
+  r.armstudy_version = kVersion;
+  if (*git_commit()) r.git_commit = git_commit();
+  r.study = info.study;
+  r.case_info.name = info.name;
+  r.case_info.path = info.path;
+  r.case_info.sha256 = info.sha256;
+  if (!info.description.empty()) r.case_info.description = info.description;
+  if (info.expect_unsolvable) r.case_info.expect = "unsolvable";
   if (!info.sweep_name.empty() || !info.sweep_point.empty()) {
-    nlohmann::json point = nlohmann::json::object();
-    for (const auto& [path, value] : info.sweep_point) point[path] = value;
-    j["case"]["sweep"] = {{"name", info.sweep_name}, {"point", point}};
+    report::CaseRecord::Sweep sweep;
+    sweep.name = info.sweep_name;
+    for (const auto& [path, value] : info.sweep_point) sweep.point[path] = value;
+    r.case_info.sweep = std::move(sweep);
   }
-  j["provenance"] = provenance();
-  j["status"] = status == studies::Status::kSolved ? "solved" : "unsolvable";
-  j["message"] = message;
-  nlohmann::json cj = nlohmann::json::array();
-  for (const auto& c : checks) {
-    cj.push_back({{"name", c.name}, {"description", c.description}, {"value", c.value},
-                  {"tolerance", c.tolerance}, {"passed", c.passed}});
-  }
-  j["checks"] = cj;
-  return j;
+  r.provenance = provenance();
+  r.status = status == studies::Status::kSolved ? "solved" : "unsolvable";
+  r.message = message;
+  for (const auto& c : checks) r.checks.push_back({c.name, c.description, c.value, c.tolerance, c.passed});
+  return r;
 }
 
 std::string process_tag() { return report::process_tag(); }
@@ -116,15 +114,16 @@ namespace {
 
 // the manifests the animations left beside their files (scene/animation.hpp), sorted by
 // name, into results.json "animations"; the manifests themselves go
-nlohmann::json collect_animations(const fs::path& dir) {
+std::vector<report::AnimationRecord> collect_animations(const fs::path& dir) {
   std::vector<fs::path> found;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().filename().string().ends_with(".anim.json")) found.push_back(e.path());
   std::sort(found.begin(), found.end());
-  nlohmann::json out = nlohmann::json::array();
+  std::vector<report::AnimationRecord> out;
   for (const fs::path& p : found) {
     std::ifstream in(p);
-    out.push_back(nlohmann::json::parse(in));
+    out.push_back(report::from_json<report::AnimationRecord>(nlohmann::json::parse(in),
+                                                             "/animations/" + std::to_string(out.size())));
     in.close();
     fs::remove(p);
   }
@@ -149,16 +148,13 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     // solve
     const studies::Status status = c.run->solve(progress);
     const auto checks = c.run->checks();
-    nlohmann::json j = results_header(c.info, status, c.run->message(), checks);
-    j[c.info.study] = c.run->results();
-    nlohmann::json kf = nlohmann::json::array();
+    report::ResultsRecord r = results_header(c.info, status, c.run->message(), checks);
+    const nlohmann::json section = c.run->results();
     if (status == studies::Status::kSolved)
       for (const auto& k : c.run->key_figures())
-        kf.push_back({{"name", k.name}, {"value", k.value}, {"unit", k.unit},
-                      {"label", k.label.empty() ? k.name : k.label}});
-    j["key_figures"] = kf;
+        r.key_figures.push_back({k.name, k.value, k.unit, k.label.empty() ? k.name : k.label});
     // what decides whether a later run may keep this output (main.cpp, already_done)
-    j["run_options"] = {{"render", options.render}};
+    r.run_options.render = options.render;
     bool checks_ok = true;
     std::string failed;
     for (const auto& ch : checks) {
@@ -168,26 +164,27 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       }
     }
     // render and report only what was solved
-    std::vector<std::string> frames;
     if (status == studies::Status::kSolved && options.render) {
       if (progress) progress(0.99, "rendering");
-      frames = c.run->render(tmp_dir, c.info);
+      r.frames = c.run->render(tmp_dir, c.info);
     }
-    j["frames"] = frames;
     // files other tools open (model.xml, motion CSVs), listed under "files" as well
-    j["exports"] = status == studies::Status::kSolved ? c.run->write_exports(tmp_dir, c.info)
-                                                      : nlohmann::json::array();
-    j["animations"] = collect_animations(tmp_dir);
-    if (!frames.empty()) {
+    if (status == studies::Status::kSolved)
+      r.exports = report::from_json<std::vector<report::ExportRecord>>(c.run->write_exports(tmp_dir, c.info),
+                                                                       "/exports");
+    r.animations = collect_animations(tmp_dir);
+    if (!r.frames.empty()) {
       const scene::GlInfo gl = scene::gl_info();
-      j["provenance"]["gl_renderer"] = gl.renderer;
-      j["provenance"]["gl_version"] = gl.version;
+      r.provenance.gl_renderer = gl.renderer;
+      r.provenance.gl_version = gl.version;
       if (const size_t at = gl.version.find("Mesa "); at != std::string::npos)
-        j["provenance"]["mesa_version"] = gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
+        r.provenance.mesa_version = gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
     }
-    report::write_case_report(tmp_dir, c.info, j, c.entry->report);
+    nlohmann::json j = report::write_record(r);
+    j[c.info.study] = section;
+    report::write_case_report(tmp_dir, c.info, j, c.entry->report, c.entry->answer);
     // results.json last, listing every file written beside it with its sha256
-    j["files"] = list_files(tmp_dir, "results.json");
+    j["files"] = report::to_json(list_files(tmp_dir, "results.json"));
     write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
 
     swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name);
@@ -260,7 +257,7 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
     for (auto& t : pool) t.join();
   }
   try {
-    report::write_index(options.out_dir);
+    report::write_index(options.out_dir, index_studies());
   } catch (const std::exception& e) {
     problems.push_back(std::string("cannot write the index page: ") + e.what());
   }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/pipeline.hpp"
+#include "report/results_record.hpp"
 #include "report/scratch_dir.hpp"
 #include "studies/common.hpp"
 
@@ -32,8 +33,9 @@ struct CaseOutcome {
 /// still gets its results.json (status "unsolvable") so CI can read why.
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress);
 
-/// The fields of results.json every study shares (version, study, case, status, checks).
-nlohmann::json results_header(const cases::CaseInfo& info, studies::Status status,
+/// The fields of results.json every study shares (version, study, case, status, checks);
+/// run_case adds the rest (key figures, frames, exports, animations, files).
+report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Status status,
                               const std::string& message,
                               const std::vector<studies::Check>& checks);
 

@@ -24,14 +24,17 @@ class TypedStudyRun : public StudyRun {
   Result result_;
 };
 
-/// The record of `study`, whose results.json section is `Section`.
+/// The record of `study`, whose results.json section is `Section` (its answer-box lines and
+/// index figure optional).
 template <class Section>
 StudyEntry study_entry(std::string_view study, std::string_view summary, StudyEntry::Loader load,
-                       ReportSections report) {
+                       ReportSections report, report::StudyAnswer answer = nullptr,
+                       report::IndexFigure index_figure = {}) {
   static const std::string name(study);
   return StudyEntry(
       study, summary, load, [] { return report::json_schema<Section>(); },
-      [](const nlohmann::json& results) { (void)report::read_section<Section>(results, name); }, report);
+      [](const nlohmann::json& results) { (void)report::read_section<Section>(results, name); }, report,
+      answer, index_figure);
 }
 
 }  // namespace armstudy::app

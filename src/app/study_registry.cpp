@@ -24,4 +24,10 @@ const StudyEntry* find_study(std::string_view study) {
   return nullptr;
 }
 
+std::vector<report::IndexStudy> index_studies() {
+  std::vector<report::IndexStudy> out;
+  for (const StudyEntry& e : study_registry()) out.push_back({e.study, e.answer, e.index_figure});
+  return out;
+}
+
 }  // namespace armstudy::app

@@ -453,7 +453,7 @@ StudyEntry throwing_entry() {
   return study_entry<st::ThrowingResultsSection>(
       "throwing",
       "tray arm with a passive joint: energy-saving throw by IDP and SLSQP (Sato et al. Sec. 4)",
-      &load, &report::throwing_sections);
+      &load, &report::throwing_sections, &report::throwing_answer);
 }
 
 }  // namespace armstudy::app

@@ -254,7 +254,7 @@ StudyEntry time_optimal_entry() {
   return study_entry<to::ResultsSection>(
       "time_optimal",
       "fastest motion along a given tip path under joint velocity, torque and acceleration limits",
-      &load, &report::time_optimal_sections);
+      &load, &report::time_optimal_sections, &report::time_optimal_answer);
 }
 
 }  // namespace armstudy::app

@@ -308,7 +308,7 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
                                                              table, name);
       std::fprintf(stderr, "sweep report: %s/sweep/index.html (%d plot(s))\n", out.c_str(), plots);
     }
-    armstudy::report::write_index(out);
+    armstudy::report::write_index(out, armstudy::app::index_studies());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: cannot write the pages: %s\n", e.what());
     return kExitRuntime;

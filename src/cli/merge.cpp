@@ -10,6 +10,7 @@
 
 #include "app/run_case.hpp"
 #include "report/results_fields.hpp"
+#include "report/results_record.hpp"
 #include "report/number_format.hpp"
 
 namespace armstudy::app {
@@ -98,36 +99,6 @@ std::optional<double> figure(const json& r, const std::string& name) {
   return std::nullopt;
 }
 
-const char* type_name(const json& j) {
-  switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::discarded: return "nothing";
-    default: return "a number";
-  }
-}
-
-enum class Want { kString, kBool, kNumberOrNull, kObject, kArray };
-
-// "" if j[key] has the wanted type (or is absent and optional), else "<path>/<key>: expected ..."
-std::string want(const json& j, const std::string& path, const char* key, Want w, bool required = true) {
-  const auto it = j.find(key);
-  if (it == j.end()) return required ? path + "/" + key + ": missing" : "";
-  bool ok = false;
-  const char* what = "";
-  switch (w) {
-    case Want::kString: ok = it->is_string(); what = "a string"; break;
-    case Want::kBool: ok = it->is_boolean(); what = "a boolean"; break;
-    case Want::kNumberOrNull: ok = it->is_number() || it->is_null(); what = "a number"; break;
-    case Want::kObject: ok = it->is_object(); what = "an object"; break;
-    case Want::kArray: ok = it->is_array(); what = "an array"; break;
-  }
-  return ok ? "" : path + "/" + key + ": expected " + what + ", found " + type_name(*it);
-}
-
 }  // namespace
 
 const char* run_level_file(const std::string& name) {
@@ -137,60 +108,17 @@ const char* run_level_file(const std::string& name) {
 }
 
 std::string results_problem(const json& r) {
-  if (!r.is_object()) return "expected a JSON object, found " + std::string(type_name(r));
-  const auto sv = r.find("schema_version");
-  if (sv == r.end()) return "no schema_version: not an armstudy results.json";
-  if (!sv->is_number_integer() || sv->get<long long>() != 1)
-    return "schema_version " + sv->dump() + " is not one this armstudy reads (1); merge it with the armstudy that wrote it";
-  std::string e;
-  const auto first = [&](std::string p) { if (e.empty()) e = std::move(p); };
-  first(want(r, "", "study", Want::kString));
-  first(want(r, "", "status", Want::kString));
-  first(want(r, "", "message", Want::kString, false));
-  first(want(r, "", "case", Want::kObject));
-  if (!e.empty()) return e;
-  const json& c = r["case"];
-  first(want(c, "/case", "name", Want::kString));
-  first(want(c, "/case", "expect", Want::kString, false));
-  first(want(c, "/case", "sweep", Want::kObject, false));
-  if (e.empty() && c.contains("sweep")) {
-    first(want(c["sweep"], "/case/sweep", "name", Want::kString, false));
-    first(want(c["sweep"], "/case/sweep", "point", Want::kObject));
-    if (e.empty())
-      for (auto it = c["sweep"]["point"].begin(); it != c["sweep"]["point"].end(); ++it)
-        if (!it->is_string()) first("/case/sweep/point/" + it.key() + ": expected a string, found " + type_name(*it));
+  try {
+    // the shared record, typed and strict (schema_version first), then the study's own
+    // section read into its typed result: a misspelt key is an error naming it
+    const report::ResultsRecord record = report::read_record(r);
+    if (const StudyEntry* study = find_study(record.study)) study->check_section(r);
+  } catch (const report::ResultsError& x) {
+    if (x.path() == "/schema_version")
+      return std::string(x.what()).substr(std::string("/schema_version: ").size());
+    return x.what();
   }
-  first(want(r, "", "checks", Want::kArray, false));
-  first(want(r, "", "key_figures", Want::kArray, false));
-  if (!e.empty()) return e;
-  // the study's own section, read strictly into its typed result (a misspelt key is an error)
-  if (const StudyEntry* study = find_study(r["study"].get<std::string>())) {
-    try {
-      study->check_section(r);
-    } catch (const report::ResultsError& x) {
-      return x.what();
-    }
-  }
-  for (const char* list : {"checks", "key_figures"}) {
-    if (!r.contains(list)) continue;
-    size_t i = 0;
-    for (const auto& x : r[list]) {
-      const std::string p = "/" + std::string(list) + "/" + std::to_string(i++);
-      if (!x.is_object()) return p + ": expected an object, found " + type_name(x);
-      first(want(x, p, "name", Want::kString));
-      if (list[0] == 'c') {
-        first(want(x, p, "passed", Want::kBool));
-        first(want(x, p, "value", Want::kNumberOrNull, false));
-        first(want(x, p, "tolerance", Want::kNumberOrNull, false));
-        first(want(x, p, "description", Want::kString, false));
-      } else {
-        first(want(x, p, "value", Want::kNumberOrNull, false));
-        first(want(x, p, "unit", Want::kString, false));
-      }
-      if (!e.empty()) return e;
-    }
-  }
-  return e;
+  return "";
 }
 
 std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::vector<std::string>* warnings) {

@@ -10,19 +10,10 @@
 namespace armstudy::report {
 namespace {
 
-using nlohmann::json;
-
-const json& animations(const json& results) {
-  static const json empty = json::array();
-  return results.is_object() && results.contains("animations") && results["animations"].is_array()
-             ? results["animations"]
-             : empty;
-}
-
 // the loop the page plays: real speed, or slowed to kShortestLoop_s
-double loop_seconds(const json& a) {
-  const double real = jsonv::num(a, "video_duration_s");
-  const double d = std::isfinite(real) && real > 0 ? real : jsonv::num(a, "duration_s");
+double loop_seconds(const AnimationRecord& a) {
+  const double real = a.video_duration_s;
+  const double d = std::isfinite(real) && real > 0 ? real : a.duration_s;
   return std::isfinite(d) && d >= kShortestLoop_s ? d : kShortestLoop_s;
 }
 
@@ -41,27 +32,27 @@ std::string animation_class(const std::string& name) {
   return out;
 }
 
-Section animation_section(const json& results) {
+Section animation_section(const std::vector<AnimationRecord>& animations) {
   Section s;
   s.id = "motion";
   s.heading = "The motion, moving";
   s.new_page = false;
   std::vector<Movie> movies;
-  for (const json& a : animations(results)) {
+  for (const AnimationRecord& a : animations) {
     Movie m;
-    m.css_class = animation_class(jsonv::str(a, "name"));
-    m.still = jsonv::str(a, "still");
-    m.video = a.contains("video") && a["video"].is_string() ? a["video"].get<std::string>() : "";
-    m.title = jsonv::str(a, "title");
-    const double real = jsonv::num(a, "duration_s"), loop = loop_seconds(a);
-    const double fps = jsonv::num(a, "fps");
-    const double slow = std::isfinite(jsonv::num(a, "video_duration_s")) ? loop / jsonv::num(a, "video_duration_s") : 1;
-    m.caption = jsonv::str(a, "frames") + " frames over " + format_sig(real, 3) + " s (" +
+    m.css_class = animation_class(a.name);
+    m.still = a.still;
+    m.video = a.video.value_or("");
+    m.title = a.title;
+    const double real = a.duration_s, loop = loop_seconds(a);
+    const double fps = a.fps;
+    const double slow = std::isfinite(a.video_duration_s) ? loop / a.video_duration_s : 1;
+    m.caption = as_text(a.frames) + " frames over " + format_sig(real, 3) + " s (" +
                 format_sig(fps, 3) + " per second of the motion), " +
                 (slow > 1.001 ? "played " + format_sig(slow, 2) + "× slower than real time"
                               : std::string("played at real speed")) +
                 "; hover to pause; printed as its last frame.";
-    if (a.contains("note") && a["note"].is_string()) m.caption += " " + a["note"].get<std::string>() + ".";
+    if (a.note) m.caption += " " + *a.note + ".";
     if (!m.title.empty()) m.title[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(m.title[0])));
     movies.push_back(std::move(m));
   }
@@ -73,14 +64,14 @@ Section animation_section(const json& results) {
   return s;
 }
 
-std::string animation_css(const json& results) {
+std::string animation_css(const std::vector<AnimationRecord>& animations) {
   std::string css;
-  for (const json& a : animations(results)) {
-    const std::string cls = animation_class(jsonv::str(a, "name"));
-    const std::string sprite = jsonv::str(a, "sprite");
-    const int n = static_cast<int>(jsonv::num(a, "frames"));
-    const int cols = static_cast<int>(jsonv::num(a, "columns"));
-    const double w = jsonv::num(a, "frame_width_px"), h = jsonv::num(a, "frame_height_px");
+  for (const AnimationRecord& a : animations) {
+    const std::string cls = animation_class(a.name);
+    const std::string& sprite = a.sprite;
+    const int n = a.frames;
+    const int cols = a.columns;
+    const double w = a.frame_width_px, h = a.frame_height_px;
     // the sprite's name comes from the scene (letters, digits, '_', '-', '.'); checked anyway
     const bool safe = !sprite.empty() && std::all_of(sprite.begin(), sprite.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';

@@ -4,10 +4,10 @@
 /// still and its video file, and the stylesheet rules that step through each sprite.
 
 #include <string>
-
-#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "report/page.hpp"
+#include "report/results_record.hpp"
 
 namespace armstudy::report {
 
@@ -16,11 +16,11 @@ namespace armstudy::report {
 inline constexpr double kShortestLoop_s = 2.5;
 
 /// The "Motion" section (empty blocks when the case has no animations).
-Section animation_section(const nlohmann::json& results);
+Section animation_section(const std::vector<AnimationRecord>& animations);
 
-/// Stylesheet rules for the animations of `results`: one class and one @keyframes per
+/// Stylesheet rules for `animations` (results.json "animations"): one class and one @keyframes per
 /// sprite (frame k of a grid of `columns` at k / frames of the loop, held: step-end).
-std::string animation_css(const nlohmann::json& results);
+std::string animation_css(const std::vector<AnimationRecord>& animations);
 
 /// The CSS class of animation `name` ("a-" + name, other characters than letters, digits,
 /// '-' and '_' dropped).

@@ -14,6 +14,7 @@
 namespace armstudy::report {
 
 struct CasePage;
+struct ResultsRecord;
 
 /// What page 1 says about a case.
 struct AnswerBox {
@@ -27,9 +28,18 @@ struct AnswerBox {
   std::vector<std::string> assumptions;  ///< where the source is silent: value used and why
 };
 
-/// The answer box of a case from its results.json; `page` supplies the key figures and,
-/// when no frame was rendered, the first figure of the page as the key picture.
-AnswerBox answer_box(const nlohmann::json& results, const CasePage& page);
+/// A study's own lines of its answer box (its registry record, app::StudyEntry::answer): what
+/// binds or decides its answer and what the case assumes (`binding`, `assumptions`), read
+/// from its typed section of `results`; it may name its key picture (one of record.frames),
+/// else the box takes the first locus, else the first strip.
+/// @throws ResultsError when results[study] is not the study's section.
+using StudyAnswer = void (*)(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box);
+
+/// The answer box of a case from its results.json (read_record, report/results_record.hpp),
+/// with the lines of `study` (none when null); `page` supplies the key figures and, when no
+/// frame was rendered, the first figure of the page as the key picture.
+/// @throws ResultsError naming the first key of `results` that does not read.
+AnswerBox answer_box(const nlohmann::json& results, const CasePage& page, StudyAnswer study);
 
 /// A check's name in words: "mujoco_dynamic_replay.poly345.1" -> "MuJoCo dynamic replay,
 /// poly345, 1".

@@ -14,6 +14,7 @@
 #include "report/number_format.hpp"
 #include "report/animation_view.hpp"
 #include "report/page.hpp"
+#include "report/results_record.hpp"
 #include "report/study_sections.hpp"
 
 namespace armstudy::report {
@@ -71,8 +72,8 @@ Section case_section(const cases::CaseInfo& info) {
 
 // page 1 is the answer; the details follow from page 2 as one part, then the appendix:
 // only the details start a printed page (a page per section left most of them half empty)
-void lay_out_case_page(const nlohmann::json& results, CasePage& page) {
-  page.answer = answer_box(results, page);
+void lay_out_case_page(const nlohmann::json& results, StudyAnswer answer, CasePage& page) {
+  page.answer = answer_box(results, page, answer);
   // the study's full parameter tables are reference material: to the appendix, in words
   Section params;
   params.id = "parameters";
@@ -112,19 +113,15 @@ void lay_out_case_page(const nlohmann::json& results, CasePage& page) {
   }
 }
 
-Section checks_section(const nlohmann::json& results) {
+Section checks_section(const ResultsRecord& record) {
   Section s;
   s.id = "checks";
   s.heading = "Checks the study ran on its answer";
   Table t;
   t.header = {"check", "what it verifies", "value", "tolerance", "result"};
-  if (results.contains("checks"))
-    for (const auto& c : results["checks"]) {
-      const bool passed = c.value("passed", false);
-      t.rows.push_back({check_label(jsonv::str(c, "name")), jsonv::str(c, "description"),
-                        jsonv::sig(c, "value", 4), jsonv::sig(c, "tolerance", 3),
-                        passed ? "passed" : "FAILED"});
-    }
+  for (const CheckRecord& c : record.checks)
+    t.rows.push_back({check_label(c.name), c.description, format_sig(c.value, 4), format_sig(c.tolerance, 3),
+                      c.passed ? "passed" : "FAILED"});
   if (t.rows.empty())
     s.paragraph("The study reported no checks for this case.");
   else
@@ -156,19 +153,17 @@ std::string frame_label(const std::string& file, bool* wide) {
   return words;
 }
 
-Section frames_section(const nlohmann::json& results, const std::string& study) {
+Section frames_section(const ResultsRecord& record) {
   Section s;
   s.id = "frames";
   s.heading = "Frames of the motion (MuJoCo replay)";
   Strip strip;
-  if (results.contains("frames"))
-    for (const auto& f : results["frames"]) {
-      if (!f.is_string()) continue;
-      bool wide = false;
-      strip.labels.push_back(frame_label(f.get<std::string>(), &wide));
-      strip.files.push_back(f.get<std::string>());
-      strip.wide.push_back(wide);
-    }
+  for (const std::string& f : record.frames) {
+    bool wide = false;
+    strip.labels.push_back(frame_label(f, &wide));
+    strip.files.push_back(f);
+    strip.wide.push_back(wide);
+  }
   if (strip.files.empty()) {
     s.paragraph("No frames were rendered for this case (run without --no-render to get them).");
   } else {
@@ -180,21 +175,25 @@ Section frames_section(const nlohmann::json& results, const std::string& study) 
   return s;
 }
 
-Section provenance_section(const nlohmann::json& results, const cases::CaseInfo& info) {
+Section provenance_section(const ResultsRecord& record, const cases::CaseInfo& info) {
   Section s;
   s.id = "provenance";
   s.heading = "Provenance";
   s.new_page = false;
   Table t;
   t.header = {"item", "value"};
-  t.rows.push_back({"armstudy version", jsonv::str(results, "armstudy_version")});
-  const std::string commit = jsonv::str(results, "git_commit");
+  t.rows.push_back({"armstudy version", record.armstudy_version});
+  const std::string commit = record.git_commit.value_or("");
   t.rows.push_back({"git commit", commit.empty() ? "unknown" : commit});
   // the machine and libraries behind the numbers and frames
-  if (results.contains("provenance") && results["provenance"].is_object())
-    for (const auto& [k, v] : results["provenance"].items())
-      if (v.is_string() && k != "armstudy_version" && k != "git_commit")
-        t.rows.push_back({label_from_key(k), v.get<std::string>()});
+  const ProvenanceRecord& p = record.provenance;
+  for (const auto& [k, v] : {std::pair<const char*, std::optional<std::string>>{"compiler", p.compiler},
+                             {"cpu_model", p.cpu_model},
+                             {"gl_renderer", p.gl_renderer},
+                             {"gl_version", p.gl_version},
+                             {"mesa_version", p.mesa_version},
+                             {"mujoco_version", p.mujoco_version}})
+    if (v) t.rows.push_back({label_from_key(k), *v});
   t.rows.push_back({"case file", info.path});
   t.rows.push_back({"case sha256", info.sha256});
   t.rows.push_back({"machine-readable results", "results.json (in this folder)"});
@@ -378,34 +377,29 @@ fs::path template_dir() {
   return ARMSTUDY_TEMPLATE_DIR;
 }
 
-std::vector<std::pair<std::string, std::string>> key_figures(const nlohmann::json& results) {
-  // the study's own choice, results.json "key_figures": [{name, value, unit}]
+std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord& record) {
+  // the study's own choice, results.json "key_figures": [{name, value, unit, label}]
   std::vector<std::pair<std::string, std::string>> out;
-  if (!results.contains("key_figures") || !results["key_figures"].is_array()) return out;
-  for (const auto& k : results["key_figures"]) {
-    if (!k.is_object()) continue;
-    const std::string unit = jsonv::str(k, "unit");
-    const std::string label = jsonv::str(k, "label");
-    out.emplace_back(label.empty() ? jsonv::str(k, "name") : label,
-                     jsonv::sig(k, "value", 5) + (unit.empty() ? "" : " " + unit));
-  }
+  for (const KeyFigureRecord& k : record.key_figures)
+    out.emplace_back(k.label.empty() ? k.name : k.label,
+                     format_sig(k.value, 5) + (k.unit.empty() ? "" : " " + k.unit));
   return out;
 }
 
 void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
-                       const nlohmann::json& results, StudySections sections) {
+                       const nlohmann::json& results, StudySections sections, StudyAnswer answer) {
+  if (!sections) throw std::invalid_argument("study '" + info.study + "' has no report sections");
+  const ResultsRecord record = read_record(results);
   CasePage page;
   page.title = info.name;
   page.study = info.study;
-  page.status = results.value("status", "unknown");
-  page.message = results.value("message", "");
+  page.status = record.status;
+  page.message = record.message;
   page.description = info.description;
-  page.key_figures = key_figures(results);
+  page.key_figures = key_figures(record);
 
   FigureWriter figures(dir);
-  const bool solved = page.status == "solved";
-  const nlohmann::json section =
-      results.contains(info.study) ? results[info.study] : nlohmann::json::object();
+  const bool solved = record.solved();
   if (!solved) {
     Section s;
     s.id = "unsolved";
@@ -414,27 +408,22 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
     s.paragraph(page.message.empty() ? "The study could not be solved." : page.message);
     page.sections.push_back(std::move(s));
   }
-  if (sections) {
-    sections(results, figures, page);  // the study's own (its registry record)
-  } else {
-    generic_sections(section, figures, page);
-  }
+  sections(results, figures, page);  // the study's own (its registry record)
   if (solved) {
-    Section motion = animation_section(results);
+    Section motion = animation_section(record.animations);
     if (!motion.blocks.empty()) page.sections.push_back(std::move(motion));
-    page.sections.push_back(frames_section(results, info.study));
+    page.sections.push_back(frames_section(record));
   }
-  page.sections.push_back(checks_section(results));
+  page.sections.push_back(checks_section(record));
   // the appendix: the case as written and where the numbers come from
   page.sections.push_back(case_section(info));
-  page.sections.push_back(provenance_section(results, info));
-  lay_out_case_page(results, page);
+  page.sections.push_back(provenance_section(record, info));
+  lay_out_case_page(results, answer, page);
 
-  if (results.value("/case/expect"_json_pointer, std::string()) == page.status)
-    page.status += " (as the case expects)";
+  if (record.case_info.expect == page.status) page.status += " (as the case expects)";
   write_page(dir, page, info);
   // the animations' rules after the shared stylesheet (the page's CSP allows no inline style)
-  if (const std::string css = animation_css(results); !css.empty())
+  if (const std::string css = animation_css(record.animations); !css.empty())
     write_text(dir / "report.css", read_text(dir / "report.css") + "\n/* animations, generated */\n" + css);
 }
 
@@ -446,10 +435,17 @@ void write_page(const fs::path& dir, const CasePage& page, const cases::CaseInfo
   write_text(dir / file_name, render_template("case.html", d));
 }
 
-int write_index(const fs::path& out_dir) {
+int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies) {
+  auto study_of = [&](const std::string& name) -> const IndexStudy* {
+    for (const IndexStudy& st : studies)
+      if (st.study == name) return &st;
+    return nullptr;
+  };
   struct Row {
     std::string name;
     nlohmann::json results;
+    std::optional<ResultsRecord> record;  ///< empty: unreadable
+    AnswerBox answer;
   };
   std::vector<Row> rows;
   if (fs::is_directory(out_dir))
@@ -458,32 +454,27 @@ int write_index(const fs::path& out_dir) {
       if (!e.is_directory() || name.empty() || name[0] == '.') continue;
       const fs::path rj = e.path() / "results.json";
       if (!fs::exists(rj)) continue;
+      Row row{name, {}, {}, {}};
       try {
-        auto j = nlohmann::json::parse(read_text(rj));
-        // the fields read below, with the types they must have (else: unreadable)
-        (void)j.value("study", ""), (void)j.value("status", ""), (void)j.value("message", "");
-        (void)j.value("/case/expect"_json_pointer, std::string()), (void)key_figures(j);
-        if (j.contains("checks") && j["checks"].is_array())
-          for (const auto& c : j["checks"])
-            if (c.is_object()) (void)c.value("passed", false);
-        (void)answer_box(j, CasePage{});
-        rows.push_back({name, std::move(j)});
+        row.results = nlohmann::json::parse(read_text(rj));
+        row.record = read_record(row.results);  // every shared key, typed (else: unreadable)
+        const IndexStudy* st = study_of(row.record->study);
+        row.answer = answer_box(row.results, CasePage{}, st ? st->answer : nullptr);
       } catch (const nlohmann::json::exception&) {
-        rows.push_back({name, nlohmann::json{{"status", "unreadable results.json"}}});
+        row.record.reset();
+      } catch (const ResultsError&) {
+        row.record.reset();
       }
+      if (!row.record) row.answer = AnswerBox{};
+      rows.push_back(std::move(row));
     }
   // failures first (not solved when the case expects it, or a check failed), then by name
-  auto failed = [](const nlohmann::json& r) {
-    const std::string status = r.value("status", "");
-    const bool expected = r.value("/case/expect"_json_pointer, std::string()) == status;
-    if (status != "solved" && !expected) return true;
-    if (r.contains("checks") && r["checks"].is_array())
-      for (const auto& c : r["checks"])
-        if (c.is_object() && !c.value("passed", false)) return true;
-    return false;
+  auto failed = [](const Row& r) {
+    if (!r.record) return true;
+    return r.record->status != r.record->expected_status() || !r.record->checks_passed();
   };
   std::sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) {
-    const bool fa = failed(a.results), fb = failed(b.results);
+    const bool fa = failed(a), fb = failed(b);
     return fa != fb ? fa : a.name < b.name;
   });
 
@@ -492,23 +483,23 @@ int write_index(const fs::path& out_dir) {
   for (const auto& r : rows) {
     mus::data e;
     e.set("name", r.name);
-    e.set("study", r.results.value("study", ""));
-    const std::string status = r.results.value("status", "");
-    const bool expected = r.results.value("/case/expect"_json_pointer, std::string()) == status;
+    const std::string status = r.record ? r.record->status : "unreadable results.json";
+    const bool expected = r.record && r.record->case_info.expect == status;
+    e.set("study", r.record ? r.record->study : "");
     e.set("status", expected ? status + " (as the case expects)" : status);
     e.set("solved", status == "solved");
     // the answer in one line: the message up to its first ';' (the case page has it all)
-    const std::string message = r.results.value("message", "");
+    const std::string message = r.record ? r.record->message : "";
     e.set("message", message.substr(0, message.find("; ")));
-    e.set("failed", failed(r.results));
+    e.set("failed", failed(r));
     // the check verdict and the key picture of the case's answer box
-    const AnswerBox answer = answer_box(r.results, CasePage{});
-    e.set("verdict", answer.verdict);
+    const AnswerBox& answer = r.answer;
+    e.set("verdict", r.record ? answer.verdict : "The study ran no checks on this case.");
     e.set("verdict_ok", answer.verdict_ok);
     // the first few key figures; the case page has them all
     constexpr size_t kIndexFigures = 4;
     mus::data kf{mus::data::type::list};
-    const auto figures = key_figures(r.results);
+    const auto figures = r.record ? key_figures(*r.record) : std::vector<std::pair<std::string, std::string>>{};
     for (size_t k = 0; k < figures.size() && k < kIndexFigures; ++k) {
       mus::data x;
       x.set("label", figures[k].first);
@@ -540,13 +531,27 @@ int write_index(const fs::path& out_dir) {
   d.set("count", std::to_string(rows.size()));
   d.set("has_sweep", fs::exists(out_dir / "sweep" / "index.html"));
   fs::create_directories(out_dir);
-  // the thesis's figure 9.30 needs every example: drawn over the placement cases here
-  std::vector<std::pair<std::string, const nlohmann::json*>> all;
-  for (const auto& r : rows) all.emplace_back(r.name, &r.results);
-  const fs::path loci = out_dir / "placement_root_loci.svg";
-  const bool has_loci = placement_loci_across_cases(all, loci);
-  if (!has_loci) fs::remove(loci);
-  d.set("has_loci", has_loci);
+  // each study's figure over all of its cases (e.g. the thesis's figure 9.30 over the
+  // placement cases), drawn here where every case is
+  mus::data across{mus::data::type::list};
+  for (const IndexStudy& st : studies) {
+    if (!st.figure.draw) continue;
+    std::vector<std::pair<std::string, const nlohmann::json*>> cases;
+    for (const auto& r : rows)
+      if (r.record && r.record->study == st.study) cases.emplace_back(r.name, &r.results);
+    const fs::path svg = out_dir / std::string(st.figure.file);
+    if (!st.figure.draw(cases, svg)) {
+      fs::remove(svg);
+      continue;
+    }
+    mus::data f;
+    f.set("file", std::string(st.figure.file));
+    f.set("heading", std::string(st.figure.heading));
+    f.set("alt", std::string(st.figure.alt));
+    f.set("caption", std::string(st.figure.caption));
+    across << f;
+  }
+  d.set("across_cases", across);
   copy_stylesheet(out_dir);
   write_text(out_dir / "index.html", render_template("index.html", d));
   return static_cast<int>(rows.size());

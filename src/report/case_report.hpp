@@ -5,17 +5,20 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "cases/case_info.hpp"
+#include "report/answer_box.hpp"
 
 namespace armstudy::report {
 
 struct CasePage;
 class FigureWriter;
+struct ResultsRecord;
 
 /// A study's own sections of its page, from the whole results.json (its registry record,
 /// app::StudyEntry::report; report/study_sections.hpp).
@@ -23,14 +26,15 @@ using StudySections = void (*)(const nlohmann::json& results, FigureWriter& figu
 
 /// Writes the report of one case into `dir` (the case folder, which already holds
 /// results.json and the frames listed in results["frames"]): index.html, report.css and
-/// one SVG per plot. `results` is the case's results.json: the shared header (see
-/// app::results_header), the study's own section under results[info.study] and "frames";
-/// `sections` adds the study's own sections. Reads the templates from template_dir().
+/// one SVG per plot. `results` is the case's results.json: the shared record
+/// (report/results_record.hpp) and the study's own section under results[info.study];
+/// `sections` adds the study's own sections (required) and `answer` its lines of the answer
+/// box (none when null). Reads the templates from template_dir().
 /// @throws std::runtime_error when a template is missing or a file cannot be written;
-/// std::invalid_argument when a plot cannot be drawn from the data; ResultsError
-/// (report/results_fields.hpp) when results[info.study] is not the study's section.
+/// std::invalid_argument when a plot cannot be drawn from the data or `sections` is null;
+/// ResultsError (report/results_fields.hpp) naming the first key that does not read.
 void write_case_report(const std::filesystem::path& dir, const cases::CaseInfo& info,
-                       const nlohmann::json& results, StudySections sections);
+                       const nlohmann::json& results, StudySections sections, StudyAnswer answer);
 
 /// Writes `page` as `dir`/`file_name` (with report.css) through the case template; the
 /// header links to `data_link` (default: the case's results.json) unless page.links is set.
@@ -39,16 +43,37 @@ void write_page(const std::filesystem::path& dir, const CasePage& page,
                 const cases::CaseInfo& info, const std::string& data_link = "",
                 const std::string& file_name = "index.html");
 
-/// Writes `out_dir`/index.html (and its report.css): one row per case folder in out_dir that
-/// holds a results.json (folders starting with '.' are skipped), sorted by name, with the
-/// study, status, key figures, a thumbnail (the first frame, else the first figure) and a
-/// link to the case's report. Returns the number of cases listed.
-/// @throws std::runtime_error when out_dir/index.html cannot be written.
-int write_index(const std::filesystem::path& out_dir);
+/// A figure the index page draws over every case of one study (its registry record,
+/// app::StudyEntry::index_figure), e.g. the placement optima's root loci across the cases.
+struct IndexFigure {
+  std::string_view file;     ///< the SVG in out_dir, e.g. "placement_root_loci.svg"
+  std::string_view heading;  ///< of its section on the index page
+  std::string_view alt;      ///< the image's alternative text
+  std::string_view caption;
+  /// Draws `svg` from (case name, results.json) of the study's readable cases; false when
+  /// there are too few to draw (nothing written). Null: the study has no such figure.
+  bool (*draw)(const std::vector<std::pair<std::string, const nlohmann::json*>>& cases,
+               const std::filesystem::path& svg) = nullptr;
+};
 
-/// Key figures of a case for the index and the page header (label, value with unit),
-/// read from its results.json.
-std::vector<std::pair<std::string, std::string>> key_figures(const nlohmann::json& results);
+/// What the index page needs of a study's registry record.
+struct IndexStudy {
+  std::string_view study;
+  StudyAnswer answer = nullptr;  ///< its lines of the answer box (the thumbnail among them)
+  IndexFigure figure;            ///< its figure over all its cases, if any
+};
+
+/// Writes `out_dir`/index.html (and its report.css): one row per case folder in out_dir that
+/// holds a results.json (folders starting with '.' are skipped), failures first, then by
+/// name, with the study, status, key figures, a thumbnail (the answer box's key picture,
+/// else the first figure) and a link to the case's report; then each study's figure over
+/// its cases (`studies`, from the registry). A results.json that does not read
+/// (read_record) is listed as unreadable. Returns the number of cases listed.
+/// @throws std::runtime_error when out_dir/index.html cannot be written.
+int write_index(const std::filesystem::path& out_dir, const std::vector<IndexStudy>& studies);
+
+/// Key figures of a case for the index and the page header (label, value with unit).
+std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord& record);
 
 /// The folder holding the templates: $ARMSTUDY_TEMPLATE_DIR if set, else the source tree's
 /// templates/ (compiled in).

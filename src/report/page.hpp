@@ -123,23 +123,4 @@ class FigureWriter {
   int count_ = 0;
 };
 
-/// Small readers of results.json values that tolerate missing keys.
-namespace jsonv {
-/// j[key] as a number, NaN when missing or not a number.
-double num(const nlohmann::json& j, const char* key);
-/// j[key] as a string ("" when missing); numbers and booleans are formatted.
-std::string str(const nlohmann::json& j, const char* key);
-/// j[key] formatted with `digits` significant digits, "n/a" when missing.
-std::string sig(const nlohmann::json& j, const char* key, int digits = 4);
-/// j[key] formatted with `decimals` decimals, "n/a" when missing.
-std::string fixed(const nlohmann::json& j, const char* key, int decimals);
-/// j[key] as a vector of numbers (empty when missing); nulls become NaN.
-std::vector<double> vec(const nlohmann::json& j, const char* key);
-/// Column `col` of j[key] when it is an array of arrays (rows of samples), or row `col` when
-/// it is an array of per-joint arrays whose length is not `n_rows`; empty when missing.
-std::vector<double> column(const nlohmann::json& j, const char* key, size_t col, size_t n_rows);
-/// true if j is an object holding key.
-bool has(const nlohmann::json& j, const char* key);
-}  // namespace jsonv
-
 }  // namespace armstudy::report

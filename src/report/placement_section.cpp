@@ -8,6 +8,7 @@
 
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
+#include "report/results_record.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
 #include "studies/placement/results_section.hpp"
@@ -764,7 +765,7 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   // MuJoCo's open-loop replay of every optimum (report/replay_section.hpp)
   std::vector<ReplayOf> replays;
   for (const auto& r : pl.mujoco_replay) replays.push_back({r.program, r.configuration, &r});
-  mujoco_replay_section(replays, jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
+  mujoco_replay_section(replays, read_record(results).frames, figures, page);
 }
 
 bool placement_loci_across_cases(const std::vector<std::pair<std::string, const json*>>& cases,
@@ -779,7 +780,6 @@ bool placement_loci_across_cases(const std::vector<std::pair<std::string, const 
   double longest = 0;
   int placement_cases = 0;
   for (const auto& [name, results] : cases) {
-    if (!results->contains("placement") || results->value("study", "") != "placement") continue;
     PS pl;
     try {
       pl = read_section<PS>(*results, "placement");

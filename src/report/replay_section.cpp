@@ -25,7 +25,7 @@ std::vector<double> joint_row(const std::vector<std::vector<double>>& rows, size
 }
 }  // namespace
 
-void mujoco_replay_section(const std::vector<ReplayOf>& rs, const json& frames,
+void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<std::string>& frames,
                            FigureWriter& figures, CasePage& page) {
   if (rs.empty()) return;
 
@@ -97,16 +97,15 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const json& frames,
                           "the check's tolerance."));
 
   Strip strip;
-  if (frames.is_array())
-    for (const json& f : frames) {
-      if (!f.is_string() || f.get<std::string>().find("planned-and-simulated") == std::string::npos) continue;
-      strip.files.push_back(f.get<std::string>());
-      // "placement_cycloidal_c1_planned-and-simulated_strip.png" -> "placement cycloidal c1: ..."
-      std::string what = f.get<std::string>().substr(0, f.get<std::string>().find("_planned-and-simulated"));
-      std::replace(what.begin(), what.end(), '_', ' ');
-      strip.labels.push_back(what + ": planned (arm) and simulated by MuJoCo (magenta skeleton)");
-      strip.wide.push_back(true);
-    }
+  for (const std::string& f : frames) {
+    if (f.find("planned-and-simulated") == std::string::npos) continue;
+    strip.files.push_back(f);
+    // "placement_cycloidal_c1_planned-and-simulated_strip.png" -> "placement cycloidal c1: ..."
+    std::string what = f.substr(0, f.find("_planned-and-simulated"));
+    std::replace(what.begin(), what.end(), '_', ' ');
+    strip.labels.push_back(what + ": planned (arm) and simulated by MuJoCo (magenta skeleton)");
+    strip.wide.push_back(true);
+  }
   if (!strip.files.empty()) {
     strip.caption = "The planned motion (the arm, posed from the plan) with the motion MuJoCo "
                     "simulated from the plan's torques drawn over it as a magenta skeleton, at "

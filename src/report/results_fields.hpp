@@ -14,13 +14,16 @@
 /// comes from the key's suffix, e.g. "_J" -> J).
 ///
 /// Field types: double (null reads as NaN), int, long long, bool, std::string, std::vector,
-/// std::array, std::optional (written as null when empty), and any type with a `fields`.
+/// std::array, std::map<std::string, T> (an object), std::optional (written as null when
+/// empty), and any type with a `fields`. A fourth argument adds JSON Schema keywords the type
+/// alone does not say: v("status", x.status, "...", {{"enum", json::array({"a", "b"})}}).
 /// v.optional(key, opt) is a key that may be absent; v.inline_if(flag, opt) and
 /// v.inline_when(first_key, opt) put an optional group's keys in the enclosing object.
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -60,6 +63,10 @@ struct is_array : std::false_type {};
 template <class T, size_t N>
 struct is_array<std::array<T, N>> : std::true_type {};
 template <class T>
+struct is_map : std::false_type {};
+template <class T>
+struct is_map<std::map<std::string, T>> : std::true_type {};
+template <class T>
 struct is_optional : std::false_type {};
 template <class T>
 struct is_optional<std::optional<T>> : std::true_type {};
@@ -83,11 +90,11 @@ nlohmann::json write(const T& x);
 struct Writer {
   nlohmann::json* out;
   template <class T>
-  void operator()(const char* key, const T& x, const char* = "") {
+  void operator()(const char* key, const T& x, const char* = "", const nlohmann::json& = {}) {
     (*out)[key] = write(x);
   }
   template <class T>
-  void optional(const char* key, const std::optional<T>& x, const char* = "") {
+  void optional(const char* key, const std::optional<T>& x, const char* = "", const nlohmann::json& = {}) {
     if (x) (*out)[key] = write(*x);
   }
   /// the keys of `x`, in this object, when `present` (an earlier field says so)
@@ -109,6 +116,10 @@ nlohmann::json write(const T& x) {
   } else if constexpr (std::is_same_v<T, bool> || std::is_integral_v<T> ||
                        std::is_same_v<T, std::string>) {
     return nlohmann::json(x);
+  } else if constexpr (is_map<T>::value) {
+    nlohmann::json o = nlohmann::json::object();
+    for (const auto& [k, e] : x) o[k] = write(e);
+    return o;
   } else if constexpr (is_vector<T>::value || is_array<T>::value) {
     nlohmann::json a = nlohmann::json::array();
     for (const auto& e : x) a.push_back(write(static_cast<const typename T::value_type&>(e)));
@@ -131,11 +142,11 @@ void read(const nlohmann::json& j, const std::string& path, T& x);
 struct KeyCollector {
   std::set<std::string>* keys;
   template <class T>
-  void operator()(const char* key, T&, const char* = "") {
+  void operator()(const char* key, T&, const char* = "", const nlohmann::json& = {}) {
     keys->insert(key);
   }
   template <class T>
-  void optional(const char* key, std::optional<T>&, const char* = "") {
+  void optional(const char* key, std::optional<T>&, const char* = "", const nlohmann::json& = {}) {
     keys->insert(key);
   }
   template <class T>
@@ -187,14 +198,14 @@ struct Reader {
   std::string path;
   std::set<std::string> seen;
   template <class T>
-  void operator()(const char* key, T& x, const char* = "") {
+  void operator()(const char* key, T& x, const char* = "", const nlohmann::json& = {}) {
     seen.insert(key);
     const auto it = in->find(key);
     if (it == in->end()) throw ResultsError(path + "/" + key, "missing");
     read(*it, path + "/" + key, x);
   }
   template <class T>
-  void optional(const char* key, std::optional<T>& x, const char* = "") {
+  void optional(const char* key, std::optional<T>& x, const char* = "", const nlohmann::json& = {}) {
     seen.insert(key);
     const auto it = in->find(key);
     if (it == in->end()) {
@@ -244,6 +255,10 @@ void read(const nlohmann::json& j, const std::string& path, T& x) {
       read(j[k], path + "/" + std::to_string(k), b);
       x.push_back(b);
     }
+  } else if constexpr (is_map<T>::value) {
+    if (!j.is_object()) expected(j, path, "an object");
+    x.clear();
+    for (auto it = j.begin(); it != j.end(); ++it) read(it.value(), path + "/" + it.key(), x[it.key()]);
   } else if constexpr (is_vector<T>::value) {
     if (!j.is_array()) expected(j, path, "an array");
     x.clear();
@@ -287,13 +302,13 @@ struct SchemaWriter {
   nlohmann::json* properties;
   nlohmann::json* required;
   template <class T>
-  void operator()(const char* key, T&, const char* text = "") {
+  void operator()(const char* key, T&, const char* text = "", const nlohmann::json& extra = {}) {
     required->push_back(key);
-    add(key, schema<T>(), text);
+    add(key, schema<T>(), text, extra);
   }
   template <class T>
-  void optional(const char* key, std::optional<T>&, const char* text = "") {
-    add(key, schema<T>(), text);
+  void optional(const char* key, std::optional<T>&, const char* text = "", const nlohmann::json& extra = {}) {
+    add(key, schema<T>(), text, extra);
   }
   template <class T>
   void inline_if(bool, std::optional<T>&) {
@@ -306,9 +321,12 @@ struct SchemaWriter {
   void inline_when(const char*, std::optional<T>& x) {
     inline_if(true, x);
   }
-  void add(const char* key, nlohmann::json s, const char* text) {
+  // `extra`: keywords the type alone does not say (a pattern, an enum, a minimum)
+  void add(const char* key, nlohmann::json s, const char* text, const nlohmann::json& extra) {
     const std::string d = describe(key, text);
     if (!d.empty()) s["description"] = d;
+    if (extra.is_object())
+      for (auto it = extra.begin(); it != extra.end(); ++it) s[it.key()] = it.value();
     (*properties)[key] = std::move(s);
   }
 };
@@ -324,6 +342,8 @@ nlohmann::json schema() {
     return {{"type", "integer"}};
   } else if constexpr (std::is_same_v<T, std::string>) {
     return {{"type", "string"}};
+  } else if constexpr (is_map<T>::value) {
+    return {{"type", "object"}, {"additionalProperties", schema<typename T::mapped_type>()}};
   } else if constexpr (is_vector<T>::value) {
     return {{"type", "array"}, {"items", schema<typename T::value_type>()}};
   } else if constexpr (is_array<T>::value) {

@@ -6,6 +6,7 @@
 
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
+#include "report/results_record.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
 #include "studies/time_optimal/results_section.hpp"
@@ -225,7 +226,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   page.sections.push_back(std::move(conv));
   std::vector<ReplayOf> replays;
   if (to.mujoco_replay) replays.push_back({"", 0, &*to.mujoco_replay});
-  mujoco_replay_section(replays, jsonv::has(results, "frames") ? results["frames"] : json(), figures, page);
+  mujoco_replay_section(replays, read_record(results).frames, figures, page);
 }
 
 }  // namespace armstudy::report

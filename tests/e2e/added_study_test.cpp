@@ -14,7 +14,10 @@
 #include "app/run_case.hpp"
 #include "app/study_entry.hpp"
 #include "cases/yaml_reader.hpp"
+#include "report/answer_box.hpp"
+#include "report/case_report.hpp"
 #include "report/page.hpp"
+#include "report/results_record.hpp"
 #include "report/results_fields.hpp"
 #include "testing/files.hpp"
 
@@ -83,11 +86,17 @@ void tally_sections(const json& results, report::FigureWriter&, report::CasePage
   page.sections.push_back(std::move(sec));
 }
 
-// src/app/study_registry.cpp: its one line
-const StudyEntry kTally = study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections);
+// src/report/<study>_answer.cpp (optional): its lines of the answer box on page 1
+void tally_answer(const json& results, const report::ResultsRecord&, report::AnswerBox& a) {
+  a.binding.push_back("nothing binds a count to " + std::to_string(report::read_section<TallySection>(results, "tally").n));
+}
 
-TEST(AddedStudy, RunsThroughRunCaseIntoResultsJsonAndIndexHtml) {
-  const fs::path out = armstudy::testing::fresh_dir("added_study");
+// src/app/study_registry.cpp: its one line (the answer lines and the index figure optional)
+const StudyEntry kTally = study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections);
+const StudyEntry kTallyAnswered =
+    study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections, &tally_answer);
+
+CaseOutcome run_tally(const StudyEntry& entry, const fs::path& out) {
   const std::string yaml = "study: tally\nname: tally-case\ntally: {n: 4}\n";
   LoadedCase c;
   c.info.name = "tally-case";
@@ -99,14 +108,19 @@ TEST(AddedStudy, RunsThroughRunCaseIntoResultsJsonAndIndexHtml) {
   cases::Map root(YAML::Load(yaml), diag, "");
   root.get("study");
   root.get("name");
-  c.run = kTally.load(root, c.info);
+  c.run = entry.load(root, c.info);
   root.finish();
-  ASSERT_TRUE(diag.empty());
-  c.entry = &kTally;
+  EXPECT_TRUE(diag.empty());
+  c.entry = &entry;
   RunOptions options;
   options.out_dir = out;
   options.render = false;
-  const CaseOutcome o = run_case(c, options, {});
+  return run_case(c, options, {});
+}
+
+TEST(AddedStudy, RunsThroughRunCaseIntoResultsJsonAndIndexHtml) {
+  const fs::path out = armstudy::testing::fresh_dir("added_study");
+  const CaseOutcome o = run_tally(kTally, out);
   EXPECT_EQ(o.exit_code, 0) << o.message;
   const json r = json::parse(armstudy::testing::slurp(out / "tally-case" / "results.json"));
   EXPECT_EQ(r["study"], "tally");
@@ -118,6 +132,21 @@ TEST(AddedStudy, RunsThroughRunCaseIntoResultsJsonAndIndexHtml) {
   EXPECT_EQ(kTally.section_schema()["properties"]["sum"]["type"], "integer");
   const std::string html = armstudy::testing::slurp(out / "tally-case" / "index.html");
   EXPECT_NE(html.find("1 + ... + 4 = 10"), std::string::npos);
+  // the shared record reads back typed; the parts a study may leave out default to none
+  EXPECT_EQ(report::read_record(r).key_figures.at(0).value, 10);
+  EXPECT_EQ(kTally.answer, nullptr);
+  EXPECT_EQ(kTally.index_figure.draw, nullptr);
+  EXPECT_EQ(report::write_index(out, {{kTally.study, kTally.answer, kTally.index_figure}}), 1);
+  EXPECT_NE(armstudy::testing::slurp(out / "index.html").find("tally-case/index.html"), std::string::npos);
+  fs::remove_all(out);
+}
+
+// a study's own lines of the answer box come from its record, not from its name
+TEST(AddedStudy, ItsAnswerLinesComeFromItsRecord) {
+  const fs::path out = armstudy::testing::fresh_dir("added_study_answer");
+  EXPECT_EQ(run_tally(kTallyAnswered, out).exit_code, 0);
+  const std::string html = armstudy::testing::slurp(out / "tally-case" / "index.html");
+  EXPECT_NE(html.find("nothing binds a count to 4"), std::string::npos);
   fs::remove_all(out);
 }
 

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/results_record.hpp"
 #include "testing/files.hpp"
 
 namespace {
@@ -165,9 +166,9 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
       {"wrong-type", {json_with([](nlohmann::json& j) { j["checks"][0]["passed"] = "yes"; }),
                       "/checks/0/passed: expected a boolean, found a string"}},
       {"wrong-name", {json_with([](nlohmann::json& j) { j["case"]["name"] = 7; }),
-                      "/case/name: expected a string, found a number"}},
-      {"future-schema", {json_with([](nlohmann::json& j) { j["schema_version"] = 2; }),
-                         "schema_version 2 is not one this armstudy reads"}},
+                      "/case/name: expected a string, found an integer"}},
+      {"future-schema", {json_with([](nlohmann::json& j) { j["schema_version"] = armstudy::report::kSchemaVersion + 1; }),
+                         "schema_version " + std::to_string(armstudy::report::kSchemaVersion + 1) + " is not one this armstudy reads"}},
       // the study's section is read into its typed result: a misspelt key is named, never "n/a"
       {"misspelt-key", {json_with([](nlohmann::json& j) {
                           auto& o = j["placement"]["optima"][0];

@@ -1,5 +1,6 @@
-// The answer box of page 1 and the CSS animations, from hand-made results.json: what the
-// reviewer reads first must follow the checks and the study's own account of what binds.
+// The answer box of page 1 and the CSS animations, from results.json written from the typed
+// record and study sections: what the reviewer reads first must follow the checks and the
+// study's own account of what binds.
 #include "report/answer_box.hpp"
 
 #include <gtest/gtest.h>
@@ -8,47 +9,79 @@
 
 #include "report/animation_view.hpp"
 #include "report/page.hpp"
+#include "report/results_record.hpp"
+#include "report/study_sections.hpp"
+#include "studies/placement/results_section.hpp"
+#include "studies/time_optimal/results_section.hpp"
 
 namespace armstudy::report {
 namespace {
 using nlohmann::json;
 
+// a results.json as run_case writes it: the shared record and the study's typed section
+json results_of(const std::string& study, const json& section, std::vector<CheckRecord> checks,
+                std::vector<std::string> frames, const std::string& message = "") {
+  ResultsRecord r;
+  r.armstudy_version = "0.1.0";
+  r.study = study;
+  r.case_info.name = "a-case";
+  r.case_info.path = "a-case.yaml";
+  r.case_info.sha256 = std::string(64, '0');
+  r.provenance = {"0.1.0", {}, "2.2.2", "a compiler", "a CPU", {}, {}, {}};
+  r.status = "solved";
+  r.message = message;
+  r.checks = std::move(checks);
+  r.frames = std::move(frames);
+  json j = write_record(r);
+  j[study] = section;
+  return j;
+}
+
 json placement_results(bool failed_check) {
-  return json{{"study", "placement"},
-              {"status", "solved"},
-              {"message", "least energy 3.5 J (poly345, configuration 1)"},
-              {"checks", json::array({{{"name", "energy_converged"}, {"passed", true}},
-                                      {{"name", "mujoco_dynamic_replay.poly345.1"}, {"passed", !failed_check}}})},
-              {"frames", json::array({"placement_cycloidal_c1_locus.png", "placement_poly345_c1_strip.png",
-                                      "placement_poly345_c1_locus.png"})},
-              {"placement",
-               {{"samples", 401},
-                {"singularity_margin_m", 0.01},
-                {"torque_limits_Nm", nullptr},
-                {"power_limits_W", nullptr},
-                {"optima", json::array({{{"program", "cycloidal"}, {"configuration", 1}, {"energy_J", 4.0},
-                                         {"decided_by", {{"binding", "interior"}, {"inner_slack_m", 0.1}, {"outer_slack_m", 0.2}}}},
-                                        {{"program", "poly345"}, {"configuration", 1}, {"energy_J", 3.5},
-                                         {"decided_by", {{"binding", "inner_clearance"}, {"margin_m", 0.01}}}}})}}}};
+  using PS = studies::placement::ResultsSection;
+  PS pl;
+  pl.samples = 401;
+  pl.singularity_margin_m = 0.01;
+  PS::Optimum a, b;
+  a.program = "cycloidal";
+  a.energy_J = 4.0;
+  a.decided_by.binding = "interior";
+  a.decided_by.inner_slack_m = 0.1;
+  a.decided_by.outer_slack_m = 0.2;
+  b.program = "poly345";
+  b.energy_J = 3.5;
+  b.decided_by.binding = "inner_clearance";
+  b.decided_by.margin_m = 0.01;
+  pl.optima = {a, b};
+  return results_of("placement", to_json(pl),
+                    {{"energy_converged", "", 0, 0, true},
+                     {"mujoco_dynamic_replay.poly345.1", "", 0, 0, !failed_check}},
+                    {"placement_cycloidal_c1_locus.png", "placement_poly345_c1_strip.png",
+                     "placement_poly345_c1_locus.png"},
+                    "least energy 3.5 J (poly345, configuration 1)");
 }
 
 TEST(AnswerBox, VerdictCountsTheChecksAndNamesTheFailedOnesInWords) {
-  const AnswerBox ok = answer_box(placement_results(false), CasePage{});
+  const AnswerBox ok = answer_box(placement_results(false), CasePage{}, &placement_answer);
   EXPECT_TRUE(ok.verdict_ok);
   EXPECT_EQ(ok.verdict, "All 2 checks passed.");
-  const AnswerBox bad = answer_box(placement_results(true), CasePage{});
+  const AnswerBox bad = answer_box(placement_results(true), CasePage{}, &placement_answer);
   EXPECT_FALSE(bad.verdict_ok);
   EXPECT_EQ(bad.verdict, "1 of 2 checks FAILED: MuJoCo dynamic replay, poly345, 1.");
 }
 
 TEST(AnswerBox, KeyPictureIsTheLocusOfTheOptimumOfLeastEnergyAndBindingFollowsTheStudy) {
-  const AnswerBox a = answer_box(placement_results(false), CasePage{});
+  const AnswerBox a = answer_box(placement_results(false), CasePage{}, &placement_answer);
   EXPECT_EQ(a.picture, "placement_poly345_c1_locus.png");
   EXPECT_EQ(a.sentence, "least energy 3.5 J (poly345, configuration 1)");
   ASSERT_EQ(a.binding.size(), 2u);
   EXPECT_NE(a.binding[0].find("interior"), std::string::npos) << a.binding[0];
   EXPECT_NE(a.binding[1].find("clearance margin to the inner circle"), std::string::npos) << a.binding[1];
   EXPECT_FALSE(a.assumptions.empty());
+  // without the study's lines: the first locus, and nothing said about what binds
+  const AnswerBox plain = answer_box(placement_results(false), CasePage{}, nullptr);
+  EXPECT_EQ(plain.picture, "placement_cycloidal_c1_locus.png");
+  EXPECT_TRUE(plain.binding.empty());
 }
 
 TEST(AnswerBox, WithoutFramesThePageFirstFigureIsThePicture) {
@@ -58,33 +91,66 @@ TEST(AnswerBox, WithoutFramesThePageFirstFigureIsThePicture) {
   Section s;
   s.figure({"fig01_map.svg", "the energy map"});
   page.sections.push_back(s);
-  const AnswerBox a = answer_box(r, page);
+  const AnswerBox a = answer_box(r, page, &placement_answer);
   EXPECT_EQ(a.picture, "fig01_map.svg");
   EXPECT_EQ(a.picture_caption, page.sections[0].blocks[0].figure.caption);
 }
 
+TEST(AnswerBox, AMisspeltKeyIsAnErrorNamingItNotAnEmptyBox) {
+  json r = placement_results(false);
+  r["checks"][0]["pased"] = r["checks"][0]["passed"];
+  r["checks"][0].erase("passed");
+  try {
+    answer_box(r, CasePage{}, &placement_answer);
+    FAIL() << "expected a ResultsError";
+  } catch (const ResultsError& e) {
+    EXPECT_EQ(e.path(), "/checks/0/pased");
+    EXPECT_NE(std::string(e.what()).find("did you mean 'passed'?"), std::string::npos) << e.what();
+  }
+  json s = placement_results(false);
+  s["placement"]["optima"][0]["decided_by"]["bindng"] = "interior";
+  EXPECT_THROW(answer_box(s, CasePage{}, &placement_answer), ResultsError);
+}
+
 TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
-  json r = {{"study", "time_optimal"},
-            {"checks", json::array()},
-            {"time_optimal",
-             {{"limits", {{"velocity_rad_s", {1.0, 2.0}}, {"torque_Nm", {10.0, 10.0}}, {"acceleration_rad_s2", nullptr}}},
-              {"configuration", 1},
-              {"solvers", json::array({{{"samples",
-                                         {{"t_s", {0, 1, 2, 3}},
-                                          {"qd_rad_s", {{0.5, 0}, {1.0, 0}, {1.0, 0}, {0.2, 2.0}}},
-                                          {"tau_Nm", {{10, 0}, {1, 0}, {1, 0}, {1, 0}}}}}}})}}}};
-  const AnswerBox a = answer_box(r, CasePage{});
+  using TO = studies::time_optimal::ResultsSection;
+  TO to;
+  to.limits.velocity_rad_s = {1.0, 2.0};
+  to.limits.torque_Nm = {10.0, 10.0};
+  to.configuration = 1;
+  TO::Solver exact;
+  exact.samples = TO::Samples{};
+  exact.samples->t_s = {0, 1, 2, 3};
+  exact.samples->qd_rad_s = {{0.5, 1.0, 1.0, 0.2}, {0, 0, 0, 2.0}};  // one row per joint
+  exact.samples->tau_Nm = {{10, 1, 1, 1}, {0, 0, 0, 0}};
+  to.solvers = {exact};
+  const AnswerBox a = answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{}, &time_optimal_answer);
   ASSERT_EQ(a.binding.size(), 3u);
   EXPECT_NE(a.binding[0].find("velocity of joint 1 limit binds at 50 %"), std::string::npos) << a.binding[0];
+  EXPECT_NE(a.binding[1].find("binds at 25 %"), std::string::npos) << a.binding[1];
   EXPECT_EQ(a.verdict, "The study ran no checks on this case.");
+  EXPECT_NE(a.assumptions.back().find("no joint acceleration limit"), std::string::npos) << a.assumptions.back();
+}
+
+AnimationRecord arm_animation() {
+  AnimationRecord a;
+  a.name = "arm";
+  a.title = "the arm";
+  a.sprite = "arm_anim.png";
+  a.still = "arm_still.png";
+  a.video = "arm.mp4";
+  a.frames = 10;
+  a.columns = 4;
+  a.frame_width_px = 480;
+  a.frame_height_px = 360;
+  a.fps = 9.0;
+  a.duration_s = 1.0;
+  a.video_duration_s = 10 / 9.0;
+  return a;
 }
 
 TEST(AnimationView, KeyframesStepThroughEveryFrameOfTheGridAndHoldTheLast) {
-  const json r = {{"animations", json::array({{{"name", "arm"}, {"title", "the arm"}, {"sprite", "arm_anim.png"},
-                                               {"still", "arm_still.png"}, {"video", "arm.mp4"},
-                                               {"frames", 10}, {"columns", 4}, {"frame_width_px", 480},
-                                               {"frame_height_px", 360}, {"fps", 9.0}, {"duration_s", 1.0},
-                                               {"video_duration_s", 10 / 9.0}}})}};
+  const std::vector<AnimationRecord> r = {arm_animation()};
   const std::string css = animation_css(r);
   EXPECT_NE(css.find(".anim.a-arm { aspect-ratio: 480 / 360; background-image: url(\"arm_anim.png\"); "
                      "background-size: 400% 300%; animation: a-arm 2.5s step-end infinite; }"),
@@ -104,10 +170,9 @@ TEST(AnimationView, KeyframesStepThroughEveryFrameOfTheGridAndHoldTheLast) {
 }
 
 TEST(AnimationView, AnUnsafeSpriteNameWritesNoRule) {
-  const json r = {{"animations", json::array({{{"name", "x"}, {"sprite", "a\");}body{x:url(\"y.png"},
-                                               {"frames", 4}, {"columns", 2}, {"frame_width_px", 10},
-                                               {"frame_height_px", 10}, {"fps", 3.0}, {"duration_s", 1.0}}})}};
-  EXPECT_EQ(animation_css(r), "");
+  AnimationRecord a = arm_animation();
+  a.sprite = "a\");}body{x:url(\"y.png";
+  EXPECT_EQ(animation_css({a}), "");
 }
 
 }  // namespace

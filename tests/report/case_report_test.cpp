@@ -15,6 +15,7 @@
 
 #include "app/pipeline.hpp"
 #include "report/results_fields.hpp"
+#include "report/results_record.hpp"
 #include "report/study_sections.hpp"
 #include "studies/pendulum/results_section.hpp"
 #include "studies/placement/results_section.hpp"
@@ -28,8 +29,9 @@ using nlohmann::json;
 
 using armstudy::testing::slurp;
 
-// the study's report sections, from its registry record
+// the study's report sections and answer-box lines, from its registry record
 StudySections sections_of(const cases::CaseInfo& info) { return app::find_study(info.study)->report; }
+StudyAnswer answer_of(const cases::CaseInfo& info) { return app::find_study(info.study)->answer; }
 
 fs::path fresh_dir(const std::string& name) { return armstudy::testing::fresh_dir("case_report_test_" + name); }
 
@@ -162,24 +164,22 @@ json study_section(const std::string& study) {
   return to_json(s);
 }
 
-// a results.json as run_case writes it
+// a results.json as run_case writes it: the shared record and the study's section
 json synthetic_results(const cases::CaseInfo& info) {
-  json j;
-  j["schema_version"] = 1;
-  j["armstudy_version"] = "0.1.0";
-  j["git_commit"] = "0123456789ab";
-  j["study"] = info.study;
-  j["case"] = {{"name", info.name}, {"path", info.path}, {"sha256", info.sha256}};
-  j["status"] = "solved";
-  j["message"] = "optimum <found> & checked";
-  j["checks"] = json::array({{{"name", "work_energy"},
-                               {"description", "signed work equals ΔE < 1e-9"},
-                               {"value", 1e-12},
-                               {"tolerance", 1e-9},
-                               {"passed", true}}});
-  j["key_figures"] = json::array({{{"name", "energy_J"}, {"value", 12.5}, {"unit", "J"}}});
+  ResultsRecord r;
+  r.armstudy_version = "0.1.0";
+  r.git_commit = "0123456789ab";
+  r.study = info.study;
+  r.case_info.name = info.name;
+  r.case_info.path = info.path;
+  r.case_info.sha256 = info.sha256;
+  r.provenance = {"0.1.0", "0123456789ab", "2.2.2", "a compiler", "a CPU", {}, {}, {}};
+  r.status = "solved";
+  r.message = "optimum <found> & checked";
+  r.checks = {{"work_energy", "signed work equals ΔE < 1e-9", 1e-12, 1e-9, true}};
+  r.key_figures = {{"energy_J", 12.5, "J", "energy"}};
+  json j = write_record(r);
   j[info.study] = study_section(info.study);
-  j["frames"] = json::array();
   return j;
 }
 
@@ -194,7 +194,7 @@ std::vector<std::string> attribute_targets(const std::string& html) {
 TEST(CaseReport, EveryValueIsHtmlEscaped) {
   const auto info = hostile_info("placement");
   const fs::path d = fresh_dir("escape");
-  write_case_report(d, info, synthetic_results(info), sections_of(info));
+  write_case_report(d, info, synthetic_results(info), sections_of(info), answer_of(info));
   const std::string html = slurp(d / "index.html");
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("<b>bold"), std::string::npos);
@@ -205,7 +205,7 @@ TEST(CaseReport, EveryValueIsHtmlEscaped) {
 TEST(CaseReport, PageForbidsNetworkFetchesWithContentSecurityPolicy) {
   const auto info = hostile_info("pendulum");
   const fs::path d = fresh_dir("csp");
-  write_case_report(d, info, synthetic_results(info), sections_of(info));
+  write_case_report(d, info, synthetic_results(info), sections_of(info), answer_of(info));
   const std::string html = slurp(d / "index.html");
   const auto csp = html.find("http-equiv=\"Content-Security-Policy\"");
   ASSERT_NE(csp, std::string::npos);
@@ -224,7 +224,7 @@ TEST(CaseReport, EachStudyDrawsItsFiguresAndEveryLinkedFileExists) {
   for (const auto& [study, figures] : expected) {
     const auto info = hostile_info(study);
     const fs::path d = fresh_dir("links_" + study);
-    write_case_report(d, info, synthetic_results(info), sections_of(info));
+    write_case_report(d, info, synthetic_results(info), sections_of(info), answer_of(info));
     std::ofstream(d / "results.json") << synthetic_results(info).dump();
     const std::string html = slurp(d / "index.html");
     int images = 0;
@@ -244,11 +244,11 @@ TEST(CaseReport, IndexListsEveryCaseFolderWithItsKeyFigures) {
     fs::create_directories(out / info.name);
     const json r = synthetic_results(info);
     std::ofstream(out / info.name / "results.json") << r.dump();
-    write_case_report(out / info.name, info, r, sections_of(info));
+    write_case_report(out / info.name, info, r, sections_of(info), answer_of(info));
   }
   fs::create_directories(out / ".hidden-tmp");
   std::ofstream(out / ".hidden-tmp" / "results.json") << "{}";
-  EXPECT_EQ(write_index(out), 2);
+  EXPECT_EQ(write_index(out, app::index_studies()), 2);
   const std::string html = slurp(out / "index.html");
   EXPECT_NE(html.find("href=\"hostile-placement/index.html\""), std::string::npos);
   EXPECT_NE(html.find("href=\"hostile-time_optimal/index.html\""), std::string::npos);
@@ -286,7 +286,7 @@ TEST(CaseReport, UndrawableDataCostsTheFigureNotTheReport) {
   for (auto& v : r["pendulum"]["series"]["q_rad"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
   for (auto& v : r["pendulum"]["series"]["qd_rad_s"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
   const fs::path d = fresh_dir("undrawable");
-  ASSERT_NO_THROW(write_case_report(d, info, r, sections_of(info)));
+  ASSERT_NO_THROW(write_case_report(d, info, r, sections_of(info), answer_of(info)));
   const std::string html = slurp(d / "index.html");
   EXPECT_NE(html.find("could not be drawn"), std::string::npos);
   EXPECT_NE(html.find("fig01_energies.svg"), std::string::npos);

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "app/pipeline.hpp"
+#include "app/run_case.hpp"
 #include "report/case_report.hpp"
 
 namespace armstudy::app {
@@ -125,13 +126,10 @@ Page run_and_render(const std::string& yaml, const std::string& name) {
   std::ofstream(file) << yaml;
   LoadedCase c = load_case(file.string());
   const studies::Status st = c.run->solve({});
-  json j = {{"study", "placement"},
-            {"status", st == studies::Status::kSolved ? "solved" : "unsolvable"},
-            {"message", c.run->message()},
-            {"placement", c.run->results()},
-            {"checks", json::array()}};
+  json j = report::write_record(results_header(c.info, st, c.run->message(), {}));
+  j["placement"] = c.run->results();
   fs::create_directories(dir / "out");
-  report::write_case_report(dir / "out", c.info, j, c.entry->report);
+  report::write_case_report(dir / "out", c.info, j, c.entry->report, c.entry->answer);
   std::ifstream in(dir / "out" / "index.html");
   std::stringstream html;
   html << in.rdbuf();

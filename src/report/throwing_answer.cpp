@@ -1,0 +1,39 @@
+// the throwing study's lines of the answer box (page 1): what binds each optimiser's
+// answer, the values the source leaves open, and the ball's flight as the key picture
+#include <vector>
+
+#include "report/answer_box.hpp"
+#include "report/number_format.hpp"
+#include "report/results_record.hpp"
+#include "report/study_sections.hpp"
+#include "studies/throwing/results_section.hpp"
+
+namespace armstudy::report {
+namespace {
+
+std::string constraint_words(const std::string& c) {
+  if (c == "contact") return "contact force";
+  if (c == "friction") return "friction needed";
+  if (c == "tray") return "ball within the tray";
+  if (c == "release") return "release angle";
+  return c;
+}
+
+}  // namespace
+
+void throwing_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& a) {
+  const auto th = read_section<studies::ThrowingResultsSection>(results, "throwing");
+  if (th.run)
+    for (const auto& row : th.run->comparison) {
+      std::string b;
+      for (const std::string& n : row.binding) b += (b.empty() ? "" : ", ") + constraint_words(n);
+      a.binding.push_back(row.optimiser + ": " + (b.empty() ? "no constraint binds" : b + " bind") +
+                          "; motor rating nearest its limit: " + row.binding_rating);
+    }
+  for (const auto& x : th.assumptions)
+    a.assumptions.push_back(x.name + ": " + format_sig(x.value, 4) + (x.unit.empty() ? "" : " " + x.unit));
+  for (const std::string& f : record.frames)
+    if (f == "throwing_flight_locus.png") a.picture = f;
+}
+
+}  // namespace armstudy::report
