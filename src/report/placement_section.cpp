@@ -483,8 +483,16 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
     const size_t pad_x = std::max<size_t>(2, (i1 - i0) / 12), pad_y = std::max<size_t>(2, (j1 - j0) / 12);
     i0 = i0 > pad_x ? i0 - pad_x : 0, j0 = j0 > pad_y ? j0 - pad_y : 0;
     i1 = std::min(nx - 1, i1 + pad_x), j1 = std::min(ny - 1, j1 + pad_y);
-    if (i1 - i0 < 1) i1 = std::min(nx - 1, i0 + 1), i0 = i1 - 1;
-    if (j1 - j0 < 1) j1 = std::min(ny - 1, j0 + 1), j0 = j1 - 1;
+    // at least a quarter of the grid along each axis: a thin reachable band stays readable
+    auto widen_to = [](size_t& lo, size_t& hi, size_t n) {
+      const size_t want = std::max<size_t>(2, n / 4);
+      while (hi - lo + 1 < want) {
+        if (lo > 0) --lo;
+        if (hi - lo + 1 < want && hi + 1 < n) ++hi;
+      }
+    };
+    widen_to(i0, i1, nx);
+    widen_to(j0, j1, ny);
     cropped = i0 > 0 || j0 > 0 || i1 < nx - 1 || j1 < ny - 1;
   }
   const size_t cx = i1 - i0 + 1, cy = j1 - j0 + 1;
@@ -720,10 +728,13 @@ Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps) {
                                      ": the least admissible energy whose peak torque of joint " +
                                      std::to_string(joint) + " stays below the abscissa.")));
   }
-  s.paragraph("The trade-off plots show what a stronger motor buys: the least energy over the "
-              "admissible placements only (clear of the margin, within every limit, energy "
-              "converged) whose peak torque stays below the abscissa. Grey dotted: the same over "
-              "candidates inside the margin, which are inadmissible and never part of a front.");
+  if (s.blocks.empty())
+    s.paragraph("No admissible placement, so no trade-off between peak torque and energy.");
+  else
+    s.paragraph("The trade-off plots show what a stronger motor buys: the least energy over the "
+                "admissible placements only (clear of the margin, within every limit, energy "
+                "converged) whose peak torque stays below the abscissa. Grey dotted: the same over "
+                "candidates inside the margin, which are inadmissible and never part of a front.");
   return s;
 }
 
