@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "report/number_format.hpp"
@@ -205,6 +206,7 @@ mus::data table_data(const Table& t) {
   mus::data d;
   d.set("caption", t.caption);
   d.set("has_caption", !t.caption.empty());
+  d.set("narrow", t.narrow);
   mus::data header{mus::data::type::list};
   for (const auto& h : t.header) header << mus::data{"cell", h};
   d.set("header", header);
@@ -412,7 +414,35 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   if (solved) {
     Section motion = animation_section(record.animations);
     if (!motion.blocks.empty()) page.sections.push_back(std::move(motion));
-    page.sections.push_back(frames_section(record));
+    Section frames = frames_section(record);
+    // a strip another section shows already (MuJoCo's replay of the plan) is not repeated,
+    // nor the plain strip of a motion whose replay strip (the same frames with MuJoCo's
+    // simulated skeleton drawn over the arm) is shown
+    std::set<std::string> shown;
+    const std::string kReplay = "_planned-and-simulated_strip.png";
+    for (const Section& other : page.sections)
+      for (const Block& ob : other.blocks)
+        if (ob.kind == Block::Kind::kStrip)
+          for (const std::string& f : ob.strip.files) {
+            shown.insert(f);
+            if (f.ends_with(kReplay)) shown.insert(f.substr(0, f.size() - kReplay.size()) + "_strip.png");
+          }
+    for (Block& b : frames.blocks) {
+      if (b.kind != Block::Kind::kStrip) continue;
+      Strip kept = b.strip;
+      kept.files.clear(), kept.labels.clear(), kept.wide.clear();
+      for (size_t k = 0; k < b.strip.files.size(); ++k)
+        if (!shown.count(b.strip.files[k])) {
+          kept.files.push_back(b.strip.files[k]);
+          kept.labels.push_back(b.strip.labels[k]);
+          kept.wide.push_back(b.strip.wide[k]);
+        }
+      if (kept.files.size() < b.strip.files.size())
+        kept.caption += " The strips of frames at equal time steps are in the MuJoCo dynamic "
+                        "replay above, with MuJoCo's simulated motion drawn over them.";
+      b.strip = std::move(kept);
+    }
+    page.sections.push_back(std::move(frames));
   }
   page.sections.push_back(checks_section(record));
   // the appendix: the case as written and where the numbers come from

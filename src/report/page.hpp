@@ -24,6 +24,8 @@ struct Table {
   /// Optional colour swatch per row ("#rrggbb", empty for none), shown before the first cell:
   /// ties a row to the colour of its curves in the plots.
   std::vector<std::string> swatches;
+  /// A short table of few columns: printed at half the page width, beside the next narrow one.
+  bool narrow = false;
 };
 
 /// A figure: an image file in the case folder (embedded as <img>, never inlined).

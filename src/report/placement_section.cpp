@@ -93,7 +93,8 @@ LinePlot optima_plot(const std::string& title, const std::string& y_label,
       s.colour = colour_for(o.colour_key.empty() ? o.label : o.colour_key);
       s.style = curve == 0 ? LineStyle::kSolid : curve == 1 ? LineStyle::kDashed : LineStyle::kDotted;
       const std::string what = curve < labels.size() ? labels[curve] : "";
-      s.label = owners.size() > 1 ? o.label + ", " + what : what;
+      // several owners: colour names the owner, style the column (legend entries below)
+      s.label = owners.size() == 1 ? what : columns.size() == 1 ? o.label : "";
       // a single owner: colour per curve reads better than style alone
       if (owners.size() == 1 && columns.size() + labels.size() > 2)
         s.colour = colour_for("joint" + std::to_string(curve + 1));
@@ -101,7 +102,36 @@ LinePlot optima_plot(const std::string& title, const std::string& y_label,
       ++curve;
     }
   }
+  // the legend of several owners' curves: one entry per owner (its colour), one per column
+  // (its line style), instead of every owner-column pair
+  if (owners.size() > 1 && columns.size() > 1) {
+    for (const SeriesOwner& o : owners) {
+      Series key;
+      key.label = o.label;
+      key.colour = colour_for(o.colour_key.empty() ? o.label : o.colour_key);
+      plot.series.push_back(std::move(key));
+    }
+    for (size_t c = 0; c < columns.size() && c < labels.size(); ++c) {
+      Series key;
+      key.label = labels[c];
+      key.colour = {60, 60, 60};
+      key.style = c == 0 ? LineStyle::kSolid : c == 1 ? LineStyle::kDashed : LineStyle::kDotted;
+      plot.series.push_back(std::move(key));
+    }
+  }
   return plot;
+}
+
+// a figure printed at half the page width, beside the next half one
+Figure half(Figure f) {
+  f.half = true;
+  return f;
+}
+// a line plot drawn for half the page width: a smaller drawing whose text prints larger
+LinePlot half_size(LinePlot p) {
+  p.width_pt = 360;
+  p.height_pt = 225;
+  return p;
 }
 
 Section task_section(const PS& pl) {
@@ -129,6 +159,7 @@ Section task_section(const PS& pl) {
     row("thesis x_S interval (case " + as_text(ti.x_s_case) + " of 4.7-4.9)",
         "[" + format_sig(ti.x_s_init_m, 5) + ", " + format_sig(ti.x_s_fin_m, 5) + "] m");
   }
+  t.narrow = true;
   s.table(std::move(t));
   if (pl.geometry_counts) {
     const auto& c = *pl.geometry_counts;
@@ -146,6 +177,7 @@ Section task_section(const PS& pl) {
              {c.exact_accepted_outside_thesis,
               "accepted by the exact check outside the thesis's φ interval"}})
       ct.rows.push_back({label, as_text(n)});
+    ct.narrow = true;
     s.table(std::move(ct));
   }
   return s;
@@ -314,47 +346,45 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
   if (owners.empty()) return s;
   struct Quantity {
     const char* name;
+    const char* plural;
     Column key1;
     Column key2;
     const char* unit_label;
     const char* thesis_fig;
   };
   const Quantity quantities[] = {
-      {"joint_angles", &PS::Series::q1_rad, &PS::Series::q2_rad, "joint angle (rad)", "9.1"},
-      {"joint_velocities", &PS::Series::qd1_rad_s, &PS::Series::qd2_rad_s, "joint velocity (rad/s)", "9.2"},
-      {"joint_accelerations", &PS::Series::qdd1_rad_s2, &PS::Series::qdd2_rad_s2, "joint acceleration (rad/s²)", "9.3"},
-      {"joint_torques", &PS::Series::tau1_Nm, &PS::Series::tau2_Nm, "joint torque (N m)", "9.4"},
-      {"joint_powers", &PS::Series::power1_W, &PS::Series::power2_W, "power (W)", "9.5"},
+      {"joint_angles", "joint angles", &PS::Series::q1_rad, &PS::Series::q2_rad, "joint angle (rad)", "9.1"},
+      {"joint_velocities", "joint velocities", &PS::Series::qd1_rad_s, &PS::Series::qd2_rad_s, "joint velocity (rad/s)", "9.2"},
+      {"joint_accelerations", "joint accelerations", &PS::Series::qdd1_rad_s2, &PS::Series::qdd2_rad_s2, "joint acceleration (rad/s²)", "9.3"},
+      {"joint_torques", "joint torques", &PS::Series::tau1_Nm, &PS::Series::tau2_Nm, "joint torque (N m)", "9.4"},
+      {"joint_powers", "powers", &PS::Series::power1_W, &PS::Series::power2_W, "power (W)", "9.5"},
   };
+  s.paragraph("The motion of each optimum over time, two plots to a row: colour is the "
+              "program and configuration (as in the tables), solid is joint 1 (q1, link 1 from "
+              "the base), dashed joint 2 (q2, the elbow, relative to link 1).");
   for (const Quantity& q : quantities) {
-    const std::string what = std::string(q.unit_label).substr(0, std::string(q.unit_label).find(" ("));
-    LinePlot plot = optima_plot(what + "s of the optima", q.unit_label, owners, {q.key1, q.key2},
+    const std::string what = q.plural;
+    LinePlot plot = optima_plot(what + " of the optima", q.unit_label, owners, {q.key1, q.key2},
                                 {"joint 1", "joint 2"});
     if (plot.series.empty()) continue;
-    s.figure(figures.line(q.name, plot,
-                          what + "s over time for the optimum of each program and configuration "
-                                 "(the thesis's Figure " + q.thesis_fig +
-                                 " style). Solid: joint 1 (q1, link 1 from the base); dashed: "
-                                 "joint 2 (q2, the elbow, relative to link 1)."));
+    s.figure(half(figures.line(q.name, half_size(plot),
+                               what + " over time (the thesis's Figure " + q.thesis_fig + ").")));
   }
   LinePlot energy = optima_plot("actuator energy of the optima", "energy used so far (J)", owners,
                                 {&PS::Series::energy_J}, {"energy"});
   if (!energy.series.empty())
-    s.figure(figures.line("energy", energy,
-                          "Actuator energy used up to each instant, ∫ |M1 dθ1| + |M2 d(θ2 - θ1)|; "
-                          "the end value is the optimum's energy."));
+    s.figure(half(figures.line("energy", half_size(energy),
+                               "Actuator energy used up to each instant, ∫ |M1 dθ1| + "
+                               "|M2 d(θ2 - θ1)|; the end value is the optimum's energy.")));
   return s;
 }
 
-Section curves_section(const PS& pl, FigureWriter& figures) {
-  Section s;
-  s.id = "direction-angle";
-  s.heading = "Energy versus direction angle";
+// energy over the direction angle at each optimum's x_S (the thesis's Fig. 9.11), into s
+void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
   LinePlot plot;
   plot.title = "energy over the direction angle φ";
   plot.x_label = "direction angle φ (deg)";
   plot.y_label = "energy (J)";
-  std::string abscissae;
   for (const auto& c : pl.curves) {
     const auto& phi = c.phi_deg;
     const auto& e = c.energy_J;
@@ -391,25 +421,21 @@ Section curves_section(const PS& pl, FigureWriter& figures) {
       mark.y = {o.energy_J};
       if (std::isfinite(mark.x[0]) && std::isfinite(mark.y[0])) plot.series.push_back(std::move(mark));
     }
-    abscissae += (abscissae.empty() ? "" : ", ") + id_label(c) + ": " + format_sig(c.x_s_m, 4) + " m";
   }
   bool any = false;
   for (const auto& se : plot.series)
     for (double y : se.y) any |= std::isfinite(y);
   if (!any) {
     s.paragraph("No energy-versus-direction curve has a reachable point.");
-    return s;
+    return;
   }
-  s.figure(figures.line("energy_vs_phi", plot,
+  // (each curve's x_S is in its legend entry)
+  s.figure(half(figures.line("energy_vs_phi", half_size(plot),
                         "Energy of the motion over the direction angle φ at each optimum's own "
-                        "start abscissa x_S (" + abscissae +
-                            "), as the thesis's Figure 9.11; the marker is the optimum itself (an "
-                            "optimum on the margin sits where its curve turns dotted: the energy "
-                            "keeps falling inside the margin). "
-                            "Solid: admissible; dotted: inside the margin or over a limit "
-                            "(excluded from the optimum); gaps: unreachable or the sampled energy "
-                            "not converged."));
-  return s;
+                        "start abscissa x_S, as the thesis's Figure 9.11; the marker is the "
+                        "optimum itself (an optimum on the margin sits where its curve turns "
+                        "dotted). Solid: admissible; dotted: inside the margin or over a limit "
+                        "(excluded); gaps: unreachable or the energy not converged.")));
 }
 
 // one placement map (rows of text in results.json) as a shaded map
@@ -432,9 +458,48 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
       if (i < status.size()) st[j * nx + i] = status[i];
     }
   }
+  // drawn over the reachable part of the grid and the marked points (a few cells around
+  // them): the rest is unreachable, and a map of mostly grey told little at print size
+  size_t i0 = nx, i1 = 0, j0 = ny, j1 = 0;
+  auto include = [&](size_t i, size_t j) {
+    i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+  };
+  for (size_t j = 0; j < ny; ++j)
+    for (size_t i = 0; i < nx; ++i)
+      if (st[j * nx + i] != '.') include(i, j);
+  auto nearest = [](const std::vector<double>& v, double x) {
+    const auto at = std::lower_bound(v.begin(), v.end(), x);
+    return static_cast<size_t>(std::min<std::ptrdiff_t>(at - v.begin(), static_cast<std::ptrdiff_t>(v.size()) - 1));
+  };
+  auto include_point = [&](double x, double y) {
+    if (std::isfinite(x) && std::isfinite(y)) include(nearest(xs, x), nearest(ys, y));
+  };
+  if (m.optimum_xy_m) include_point((*m.optimum_xy_m)[0], (*m.optimum_xy_m)[1]);
+  for (const auto& th : pl.thesis_search)
+    if (id_key(th) == id_key(m)) include_point(th.root_xy_m[0], th.root_xy_m[1]);
+  bool cropped = false;
+  if (i0 > i1 || j0 > j1) {
+    i0 = j0 = 0, i1 = nx - 1, j1 = ny - 1;  // nothing reachable: the whole grid
+  } else {
+    const size_t pad_x = std::max<size_t>(2, (i1 - i0) / 12), pad_y = std::max<size_t>(2, (j1 - j0) / 12);
+    i0 = i0 > pad_x ? i0 - pad_x : 0, j0 = j0 > pad_y ? j0 - pad_y : 0;
+    i1 = std::min(nx - 1, i1 + pad_x), j1 = std::min(ny - 1, j1 + pad_y);
+    // at least a quarter of the grid along each axis: a thin reachable band stays readable
+    auto widen_to = [](size_t& lo, size_t& hi, size_t n) {
+      const size_t want = std::max<size_t>(2, n / 4);
+      while (hi - lo + 1 < want) {
+        if (lo > 0) --lo;
+        if (hi - lo + 1 < want && hi + 1 < n) ++hi;
+      }
+    };
+    widen_to(i0, i1, nx);
+    widen_to(j0, j1, ny);
+    cropped = i0 > 0 || j0 > 0 || i1 < nx - 1 || j1 < ny - 1;
+  }
+  const size_t cx = i1 - i0 + 1, cy = j1 - j0 + 1;
   // thinned grid for drawing; a drawn cell takes the most severe status of its block
-  const size_t kx = (nx + kMaxMapCells - 1) / kMaxMapCells, ky = (ny + kMaxMapCells - 1) / kMaxMapCells;
-  const size_t mx = (nx - 1) / kx + 1, my = (ny - 1) / ky + 1;
+  const size_t kx = (cx + kMaxMapCells - 1) / kMaxMapCells, ky = (cy + kMaxMapCells - 1) / kMaxMapCells;
+  const size_t mx = (cx - 1) / kx + 1, my = (cy - 1) / ky + 1;
   ShadedMap map;
   map.title = "energy over root locations, " + id_label(m);
   map.x_label = "root X (m), along the line";
@@ -442,10 +507,11 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   map.z_label = "energy (J)";
   map.nx = static_cast<int>(mx);
   map.ny = static_cast<int>(my);
-  map.x_min = xs.front();
-  map.x_max = xs[(mx - 1) * kx];
-  map.y_min = ys.front();
-  map.y_max = ys[(my - 1) * ky];
+  map.fit_height = true;
+  map.x_min = xs[i0];
+  map.x_max = xs[i0 + (mx - 1) * kx];
+  map.y_min = ys[j0];
+  map.y_max = ys[j0 + (my - 1) * ky];
   map.z.assign(mx * my, NAN);
   MapRegion unreachable{"unreachable", kUnreachable, std::vector<std::uint8_t>(mx * my, 0)};
   MapRegion singular{"inside the margin (inadmissible)", kSingular, std::vector<std::uint8_t>(mx * my, 0)};
@@ -454,8 +520,8 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   for (size_t j = 0; j < my; ++j)
     for (size_t i = 0; i < mx; ++i) {
       int worst = 3;  // 0 unreachable, 1 singular, 2 over, 3 feasible
-      for (size_t b = j * ky; b < std::min(ny, (j + 1) * ky); ++b)
-        for (size_t a = i * kx; a < std::min(nx, (i + 1) * kx); ++a) {
+      for (size_t b = j0 + j * ky; b < std::min(j1 + 1, j0 + (j + 1) * ky); ++b)
+        for (size_t a = i0 + i * kx; a < std::min(i1 + 1, i0 + (i + 1) * kx); ++a) {
           const char c = st[b * nx + a];
           worst = std::min(worst, c == '.' ? 0 : c == 's' ? 1 : c == 'x' ? 2 : 3);
         }
@@ -464,7 +530,7 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
       else if (worst == 1) singular.mask[k] = 1;
       else if (worst == 2) over.mask[k] = 1;
       else {
-        map.z[k] = z[(j * ky) * nx + i * kx];
+        map.z[k] = z[(j0 + j * ky) * nx + i0 + i * kx];
         if (std::isfinite(map.z[k])) feasible.push_back(map.z[k]);
       }
     }
@@ -477,8 +543,8 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
     if (cap < sorted.back()) {
       for (double& v : map.z)
         if (std::isfinite(v)) v = std::min(v, cap);
-      saturation = " Colours saturate at the 95th percentile of the admissible energies (" +
-                   format_sig(cap, 4) + " J; the largest is " + format_sig(sorted.back(), 4) + " J).";
+      saturation = " Colours saturate at " + format_sig(cap, 4) + " J (95th percentile; the "
+                   "largest admissible energy is " + format_sig(sorted.back(), 4) + " J).";
     }
   }
   map.regions = {unreachable, singular, over};
@@ -498,14 +564,15 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
                              "thesis-interval best (" + status_text(th.status) + ")", {0, 0, 0},
                              false});
   const std::string name = "map_" + m.program + "_" + as_text(m.configuration);
+  const std::string drawn =
+      cropped ? ", drawn where the line is reachable (X " + format_sig(map.x_min, 3) + " to " +
+                    format_sig(map.x_max, 3) + " m, Y " + format_sig(map.y_min, 3) + " to " +
+                    format_sig(map.y_max, 3) + " m; "
+              : " (";
   Figure f = figures.map(name, map,
-                       "Energy of the task over root locations (X, Y) in the frame fixed to the "
-                       "line (the line runs from the origin along X), " + id_label(m) +
-                           ", on a " + std::to_string(nx) + " × " + std::to_string(ny) +
-                           " grid (drawn " + std::to_string(mx) + " × " + std::to_string(my) +
-                           "). Only admissible placements are shaded; unreachable, inside-the-margin "
-                           "and over-limit regions are flat colours; Y < 0 is the mirror image with "
-                           "the configurations swapped." + saturation);
+                         id_label(m) + ": a " + std::to_string(nx) + " × " + std::to_string(ny) +
+                             " grid" + drawn + std::to_string(mx) + " × " +
+                             std::to_string(my) + " cells drawn)." + saturation);
   f.half = true;  // the four maps print two by two
   s.figure(std::move(f));
   return true;
@@ -514,17 +581,27 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
 Section maps_section(const PS& pl, FigureWriter& figures) {
   Section s;
   s.id = "maps";
-  s.heading = "Placement maps";
+  s.heading = "Placement maps and optimal root locations";
+  if (!pl.maps.empty())
+    s.paragraph("The energy of the task over root locations (X, Y) in the frame fixed to the "
+                "line (the line runs from the origin along X), one map per program and "
+                "configuration. Only admissible placements are shaded; unreachable, "
+                "inside-the-margin and over-limit regions are flat colours; the circled cross "
+                "is the optimum, the square the best of the thesis's own intervals. Y < 0 is "
+                "the mirror image with the configurations swapped.");
   int n = 0;
   for (const auto& m : pl.maps) n += map_figure(pl, m, figures, s);
   if (n == 0) s.paragraph("The result holds no placement map.");
+  add_energy_vs_phi(pl, figures, s);
   return s;
 }
 
-Section loci_section(const PS& pl, FigureWriter& figures) {
+// the optimal root locations (the thesis's Fig. 9.30) into `maps`, the torque trade-off
+// (Pareto fronts) as a section of its own
+Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps) {
   Section s;
   s.id = "root-loci";
-  s.heading = "Optimal root locations and the torque trade-off";
+  s.heading = "The torque trade-off";
   const double length = pl.length_m;
   const double r_in = pl.annulus_m[0], r_out = pl.annulus_m[1];
   ShadedMap loci;
@@ -597,12 +674,13 @@ Section loci_section(const PS& pl, FigureWriter& figures) {
     loci.x_max = x1;
     loci.y_min = y0;
     loci.y_max = y1;
-    s.figure(figures.map("root_loci", loci,
+    loci.fit_height = true;
+    maps.figure(half(figures.map("root_loci", loci,
                          "Optimal root location of each program and configuration in the line's "
                          "frame (the line starts at the origin), as the thesis's Figure 9.30, "
                          "with each optimum's workspace annulus (dotted) and the locus of the "
-                         "least-energy root as the allowed peak torque grows (the Pareto front "
-                         "below, limit on joint 1)."));
+                         "least-energy root as the allowed peak torque of joint 1 grows (the "
+                         "trade-off below).")));
   }
   for (int joint = 1; joint <= 2; ++joint) {
     LinePlot plot;
@@ -646,14 +724,18 @@ Section loci_section(const PS& pl, FigureWriter& figures) {
     bool any = false;
     for (const auto& se : plot.series) any |= se.x.size() >= 1;
     if (any)
-      s.figure(figures.line("pareto_joint" + std::to_string(joint), plot,
-                            "Trade-off: the least energy over the admissible placements only "
-                            "(clear of the margin, within every limit, energy converged) whose "
-                            "peak torque of joint " + std::to_string(joint) +
-                                " stays below the abscissa — what a stronger motor buys. Grey "
-                                "dotted: the same over candidates inside the margin, which are "
-                                "inadmissible and never part of a front."));
+      s.figure(half(figures.line("pareto_joint" + std::to_string(joint), half_size(plot),
+                                 "Trade-off for joint " + std::to_string(joint) +
+                                     ": the least admissible energy whose peak torque of joint " +
+                                     std::to_string(joint) + " stays below the abscissa.")));
   }
+  if (s.blocks.empty())
+    s.paragraph("No admissible placement, so no trade-off between peak torque and energy.");
+  else
+    s.paragraph("The trade-off plots show what a stronger motor buys: the least energy over the "
+                "admissible placements only (clear of the margin, within every limit, energy "
+                "converged) whose peak torque stays below the abscissa. Grey dotted: the same over "
+                "candidates inside the margin, which are inadmissible and never part of a front.");
   return s;
 }
 
@@ -668,6 +750,7 @@ Section convergence_and_evaluations(const PS& pl) {
                 ") as the samples per trajectory grow: the sampled integral converges.";
     t.header = {"samples", "energy (J)"};
     for (const auto& r : c.rows) t.rows.push_back({as_text(r.samples), format_sig(r.energy_J, 10)});
+    t.narrow = true;
     if (!t.rows.empty()) s.table(std::move(t));
   }
   {
@@ -758,9 +841,10 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   page.sections.push_back(std::move(method));
   page.sections.push_back(task_section(pl));
   page.sections.push_back(optima_section(pl, figures));
-  page.sections.push_back(curves_section(pl, figures));
-  page.sections.push_back(maps_section(pl, figures));
-  page.sections.push_back(loci_section(pl, figures));
+  Section maps = maps_section(pl, figures);
+  Section tradeoff = loci_and_tradeoff(pl, figures, maps);
+  page.sections.push_back(std::move(maps));
+  page.sections.push_back(std::move(tradeoff));
   page.sections.push_back(convergence_and_evaluations(pl));
   // MuJoCo's open-loop replay of every optimum (report/replay_section.hpp)
   std::vector<ReplayOf> replays;

@@ -528,11 +528,16 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
   for (const auto& o : map.overlays) entries += !o.label.empty();
   for (const auto& m : map.markers) entries += !m.label.empty();
   const double legend_pt = entries ? 14.0 * ((entries + 1) / 2) + 14 : 0;
-  const int height_pt = map.height_pt - 60 + static_cast<int>(legend_pt);
+  const double aspect = map.equal_aspect ? (wy1 - wy0) / (wx1 - wx0) : 0.8;
+  // the viewport box below spans 0.70 of the width; 84 pt go to the title, axis numbers
+  // and label; a fitted drawing is as tall as the aspect needs (at least 160 pt of plot)
+  int body_pt = map.height_pt - 60;
+  if (map.fit_height && std::isfinite(aspect) && aspect > 0)
+    body_pt = std::clamp(static_cast<int>(std::ceil(0.70 * map.width_pt * aspect)) + 84, 160 + 84, body_pt);
+  const int height_pt = body_pt + static_cast<int>(legend_pt);
   Page page(svg, map.width_pt, height_pt,
             static_cast<int>(map.regions.size() + map.overlays.size() + map.markers.size()));
   plstream& p = page.p;
-  const double aspect = map.equal_aspect ? (wy1 - wy0) / (wx1 - wx0) : 0.8;
   p.vpas(0.10, 0.80, (50.0 + legend_pt) / height_pt, 1 - 34.0 / height_pt, aspect);
   p.wind(wx0, wx1, wy0, wy1);
   set_viridis(p);

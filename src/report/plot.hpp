@@ -98,7 +98,10 @@ struct ShadedMap {
   int levels = 16;  ///< colour bands
   bool equal_aspect = true;
   int width_pt = 560;
-  int height_pt = 460;
+  int height_pt = 460;  ///< the most it takes; see fit_height
+  /// with equal_aspect: the drawing is only as tall as the data's aspect needs (a wide
+  /// region gives a short figure rather than white space above and below it)
+  bool fit_height = false;
 };
 
 /// Writes `map` as an SVG file.
