@@ -12,6 +12,7 @@
 #include "core/planar_chain.hpp"
 #include "core/types.hpp"
 #include "studies/time_optimal/spec.hpp"
+#include "studies/time_optimal/two_link_dynamics.hpp"
 
 namespace armstudy::studies::time_optimal {
 
@@ -76,6 +77,26 @@ double workspace_margin(const core::PlanarChain& chain, const PathGeometry& path
 
 /// "7.31e-04 m (0.731 mm)": a small length with enough digits to see it.
 std::string length_text(double metres);
+
+/// joint_point's evaluation with the chain's constant parts (base rotation, dynamics
+/// parameters) computed once, for the solvers' many points: the same numbers as
+/// joint_point (the same operations in the same order), no allocation. The chain and the
+/// path must outlive it.
+class TipPointEvaluator {
+ public:
+  /// @throws std::invalid_argument if the chain does not have 2 links.
+  TipPointEvaluator(const core::PlanarChain& chain, const PathGeometry& path, int configuration);
+  /// The joint point at s into `jp`; false (jp unspecified) where joint_point gives nullopt.
+  bool at(double s, bool from_left, JointPoint* jp) const;
+
+ private:
+  const PathGeometry* path_;
+  Eigen::Vector2d base_;
+  Eigen::Matrix2d rt_;  // world -> base frame rotation
+  double L1_, L2_;
+  int configuration_;
+  TwoLinkDynamics dyn_;
+};
 
 /// Joint point of a 2-link `chain` at s; nullopt and `trouble` set when the point lies
 /// outside the reachable annulus or at a singular pose (|sin q2| < 1e-9).

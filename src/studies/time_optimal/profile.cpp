@@ -51,6 +51,14 @@ std::string Problem::where(double s, bool from_left) const {
   return os.str();
 }
 
+PointSource::PointSource(const Problem& problem) : problem_(&problem) {
+  if (!problem.path.joint_space()) tip_.emplace(problem.chain, problem.path.tip(), problem.configuration);
+}
+
+void PointSource::at(double s, bool from_left, JointPoint* jp) const {
+  if (!tip_ || !tip_->at(s, from_left, jp)) *jp = problem_->at(s, from_left);
+}
+
 Problem make_problem(const Spec& spec, const Limits& limits) {
   if (spec.space == PathSpace::kJoint)
     return Problem{spec.chain, JointPathGeometry(spec.joint_path), spec.configuration, limits};
@@ -99,6 +107,7 @@ std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
                                                      int checks) {
   ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
   const auto& stops = problem.path.stops();
+  const PointSource source(problem);
   std::vector<std::vector<JointPoint>> out(nodes.size() - 1);
   for (size_t k = 0; k + 1 < nodes.size(); ++k) {
     const double ds = nodes[k + 1] - nodes[k];
@@ -109,7 +118,8 @@ std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
         continue;
       }
       const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
-      out[k].push_back(problem.at(s, m == checks));
+      out[k].emplace_back();
+      source.at(s, m == checks, &out[k].back());
     }
   }
   return out;

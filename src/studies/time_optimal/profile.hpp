@@ -53,6 +53,20 @@ struct Problem {
   std::string where(double s, bool from_left = false) const;
 };
 
+/// Problem::at for many points: a tip path's joint points through TipPointEvaluator (the
+/// same numbers as Problem::at, the chain's constant parts computed once), a joint-space
+/// path's through Problem::at. The problem must outlive it.
+class PointSource {
+ public:
+  explicit PointSource(const Problem& problem);
+  /// @throws std::logic_error as Problem::at does.
+  void at(double s, bool from_left, JointPoint* jp) const;
+
+ private:
+  const Problem* problem_;
+  std::optional<TipPointEvaluator> tip_;
+};
+
 /// The problem of `spec`: its path in the spec's space, the spec's chain and `limits`.
 /// @throws std::invalid_argument for an invalid path.
 Problem make_problem(const Spec& spec, const Limits& limits);

@@ -27,6 +27,12 @@ struct SolverOutput {
 /// and at every stop. Cost O(nodes * rows^2) with rows ~ 4-6 per check point.
 SolverOutput solve_exact(const Problem& problem, const std::vector<double>& nodes, int checks);
 
+/// solve_exact's plain implementation: every row with the tag of its limit, the arrays
+/// allocated per solve. solve_exact gives the same numbers (the tests compare the two
+/// bitwise) without allocating once its per-thread arrays have grown, and words its
+/// failures through this one.
+SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes, int checks);
+
 /// Maximum velocity curve at `nodes`: the largest s' (m/s) at which some s'' meets every
 /// limit at that point (`sd_all`), and the s' allowed by the velocity limits alone.
 void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes,
