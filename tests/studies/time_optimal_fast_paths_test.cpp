@@ -2,7 +2,9 @@
 // without tags) gives solve_exact_reference's numbers bitwise and its failure messages word
 // for word, on tip paths (line, polyline, spline, acceleration limits, a rotated base with
 // gravity) and on a 3-link joint-space path; the joint points of a tip path equal core's
-// generic chain (forward kinematics, the Jacobian and the generic recursion) to 1e-12 relative.
+// generic chain (forward kinematics, the Jacobian and the generic recursion) to 1e-12 relative,
+// and so do the dense re-check's joint rates without angles (TipRateEvaluator) and its
+// closed-form torques; resample gives resample_reference's samples and limit uses bitwise.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +72,55 @@ TEST(TimeOptimalFastPaths, SolveExactGivesTheReferenceNumbersBitwise) {
   }
 }
 
+void expect_same_samples(const MotionSamples& a, const MotionSamples& b) {
+  EXPECT_EQ(a.s, b.s);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_EQ(a.sd, b.sd);
+  EXPECT_EQ(a.sdd, b.sdd);
+  EXPECT_EQ(a.q, b.q);
+  EXPECT_EQ(a.qd, b.qd);
+  EXPECT_EQ(a.qdd, b.qdd);
+  EXPECT_EQ(a.tau, b.tau);
+}
+
+void expect_same_violation(const Violation& a, const Violation& b) {
+  for (int kind = 0; kind < 3; ++kind)
+    for (int j = 0; j < core::kMaxLinks; ++j) EXPECT_EQ(a.ratio[kind][j], b.ratio[kind][j]) << kind << " " << j;
+  EXPECT_EQ(a.worst, b.worst);
+  EXPECT_EQ(a.joint, b.joint);
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.s, b.s);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_EQ(a.interval, b.interval);
+  EXPECT_EQ(a.text, b.text);
+}
+
+TEST(TimeOptimalFastPaths, ResampleGivesTheReferenceSamplesAndLimitUsesBitwise) {
+  // the exact profile on coarse grids with one check per interval overshoots its limits
+  // between the nodes: the dense re-check's worst points are away from the nodes
+  int overshot = 0;
+  for (const Problem& pb : problems()) {
+    for (int intervals : {9, 120}) {
+      const SolverOutput o = solve_exact(pb, make_nodes(pb.path, intervals), 1);
+      ASSERT_TRUE(o.solved) << o.message;
+      for (int per : {1, 16}) {
+        MotionSamples fs, rs;
+        Violation fv, rv;
+        std::vector<double> ft, rt, fw, rw;
+        resample(pb, o.profile, per, 50, &fs, &fv, &ft, &fw);
+        resample_reference(pb, o.profile, per, 50, &rs, &rv, &rt, &rw);
+        expect_same_samples(fs, rs);
+        expect_same_violation(fv, rv);
+        EXPECT_EQ(ft, rt);
+        ASSERT_EQ(fw.size(), rw.size());
+        for (size_t k = 0; k < rw.size(); ++k) EXPECT_NEAR(fw[k], rw[k], 1e-12) << k;
+        if (rv.worst > kExactTolerance) ++overshot;
+      }
+    }
+  }
+  EXPECT_GT(overshot, 4);
+}
+
 TEST(TimeOptimalFastPaths, SolveExactFailsWithTheReferenceMessage) {
   // torque too small to hold the arm against gravity, and velocity limits of zero
   std::vector<Problem> bad;
@@ -108,6 +159,22 @@ TEST(TimeOptimalFastPaths, TipPathJointPointsEqualTheGenericChainTo1e12) {
       ASSERT_TRUE(testing::near_rel_vec(jp.b, core::inverse_dynamics(pb.chain, jp.q, jp.dq, jp.ddq) - c_ref, 1e-12))
           << s;
       ASSERT_TRUE(testing::near_rel_vec(jp.c, c_ref, 1e-12)) << s;
+      // the dense re-check's scan: rates without angles, torques from their cosines and sines
+      const TipRateEvaluator rates(pb.chain, pb.path.tip(), pb.configuration);
+      TipRates r;
+      ASSERT_TRUE(rates.at(s, false, &r)) << s;
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(r.dq[0], r.dq[1]), jp.dq, 1e-12)) << s;
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(r.ddq[0], r.ddq[1]), jp.ddq, 1e-12)) << s;
+      const double t1 = pb.chain.base_angle + jp.q[0];
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector4d(r.c1, r.s1, r.c2, r.s2),
+                                        Eigen::Vector4d(std::cos(t1), std::sin(t1), std::cos(jp.q[1]), std::sin(jp.q[1])),
+                                        1e-12)) << s;
+      const double qd[2] = {0.7 * r.dq[0], 0.7 * r.dq[1]};
+      const double qdd[2] = {0.3 * r.dq[0] + 0.49 * r.ddq[0], 0.3 * r.dq[1] + 0.49 * r.ddq[1]};
+      double tau[2];
+      inverse_dynamics_cs(make_two_link_dynamics(pb.chain), r.c1, r.s1, r.c2, r.s2, qd, qdd, tau);
+      const core::JointVector tau_ref = core::inverse_dynamics(pb.chain, jp.q, jp.dq * 0.7, jp.dq * 0.3 + jp.ddq * 0.49);
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(tau[0], tau[1]), tau_ref, 1e-12)) << s;
     }
   }
 }

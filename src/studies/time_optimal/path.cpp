@@ -188,6 +188,53 @@ bool TipPointEvaluator::at(double s, bool from_left, JointPoint* jp) const {
   return true;
 }
 
+TipRateEvaluator::TipRateEvaluator(const core::PlanarChain& chain, const PathGeometry& path,
+                                   int configuration)
+    : path_(&path), base_(chain.base), configuration_(configuration) {
+  ARM_THROW_UNLESS(chain.num_links() == 2,
+                   "time-optimal arm has " << chain.num_links() << " links; should have 2");
+  ARM_THROW_UNLESS(configuration == 1 || configuration == 2,
+                   "configuration " << configuration << " should be 1 or 2");
+  L1_ = chain.links[0].length;
+  L2_ = chain.links[1].length;
+  cb_ = std::cos(chain.base_angle);
+  sb_ = std::sin(chain.base_angle);
+  rt_ << cb_, sb_, -sb_, cb_;
+}
+
+bool TipRateEvaluator::at(double s, bool from_left, TipRates* out) const {
+  const PathPoint pp = path_->at(s, from_left);
+  const Eigen::Vector2d p = rt_ * (pp.p - base_);
+  const Eigen::Vector2d v = rt_ * pp.dp, a = rt_ * pp.ddp;
+  const double r2 = p.squaredNorm();
+  const double c2 = (r2 - L1_ * L1_ - L2_ * L2_) / (2.0 * L1_ * L2_);
+  // inside the annulus with the elbow clearly bent (joint_point's test is |sin q2| >= 1e-9)
+  const double w = (1.0 - c2) * (1.0 + c2);
+  if (!(w > 1e-16)) return false;
+  const double s2 = configuration_ == 1 ? std::sqrt(w) : -std::sqrt(w);
+  // p = R(q1) (k1, k2): link 1's direction (base frame)
+  const double k1 = L1_ + L2_ * c2, k2 = L2_ * s2;
+  const double kk = k1 * k1 + k2 * k2;
+  const double c1 = (p.x() * k1 + p.y() * k2) / kk, s1 = (p.y() * k1 - p.x() * k2) / kk;
+  const double c12 = c1 * c2 - s1 * s2, s12 = s1 * c2 + c1 * s2;
+  const double det = L1_ * L2_ * s2;
+  const double j11 = -L1_ * s1 - L2_ * s12, j12 = -L2_ * s12;
+  const double j21 = L1_ * c1 + L2_ * c12, j22 = L2_ * c12;
+  const double qd1 = (j22 * v.x() - j12 * v.y()) / det, qd2 = (-j21 * v.x() + j11 * v.y()) / det;
+  const double w1 = qd1, w12 = qd1 + qd2;
+  const double bx = a.x() + L1_ * c1 * w1 * w1 + L2_ * c12 * w12 * w12;
+  const double by = a.y() + L1_ * s1 * w1 * w1 + L2_ * s12 * w12 * w12;
+  out->dq[0] = qd1;
+  out->dq[1] = qd2;
+  out->ddq[0] = (j22 * bx - j12 * by) / det;
+  out->ddq[1] = (-j21 * bx + j11 * by) / det;
+  out->c1 = cb_ * c1 - sb_ * s1;  // base_angle + q1
+  out->s1 = sb_ * c1 + cb_ * s1;
+  out->c2 = c2;
+  out->s2 = s2;
+  return true;
+}
+
 std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,
                                       int configuration, double s, bool from_left,
                                       PathTrouble* trouble) {

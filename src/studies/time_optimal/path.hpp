@@ -98,6 +98,31 @@ class TipPointEvaluator {
   TwoLinkDynamics dyn_;
 };
 
+/// The joint rates of a tip path at one point without trigonometric functions, for scans
+/// over many points: q' and q'' from the elbow's cosine and sine, c2 = (r^2 - L1^2 - L2^2)
+/// / (2 L1 L2) and s2 = +-sqrt(1 - c2^2), and link 1's direction as an algebraic function
+/// of the tip; no angles. Equal to joint_point's to rounding (the tests: 1e-12 relative).
+struct TipRates {
+  double dq[2], ddq[2];  ///< q'(s), q''(s): rad/m, rad/m^2
+  double c1, s1;         ///< cos, sin of link 1's absolute angle base_angle + q1
+  double c2, s2;         ///< cos q2, sin q2
+};
+
+class TipRateEvaluator {
+ public:
+  /// @throws std::invalid_argument if the chain does not have 2 links.
+  TipRateEvaluator(const core::PlanarChain& chain, const PathGeometry& path, int configuration);
+  /// false where joint_point gives nullopt (unreachable or singular), or on its edge.
+  bool at(double s, bool from_left, TipRates* r) const;
+
+ private:
+  const PathGeometry* path_;
+  Eigen::Vector2d base_;
+  Eigen::Matrix2d rt_;
+  double cb_, sb_, L1_, L2_;
+  int configuration_;
+};
+
 /// Joint point of a 2-link `chain` at s; nullopt and `trouble` set when the point lies
 /// outside the reachable annulus or at a singular pose (|sin q2| < 1e-9).
 /// @throws std::invalid_argument if the chain does not have 2 links.

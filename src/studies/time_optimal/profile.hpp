@@ -111,8 +111,19 @@ TimedState state_at_time(const Problem& problem, const Profile& profile,
 /// Resamples a profile at `per_interval` points per interval (from its own segment law),
 /// with joint velocities, accelerations and torques from core's inverse dynamics, and finds
 /// the largest use of each limit. `samples` keeps about `keep` evenly spaced samples; node
-/// times go to `node_t`.
+/// times go to `node_t`; the largest use of any limit inside each interval, as ratio - 1,
+/// to `interval_worst` (one per interval) when given. On a 2-link tip path with constant
+/// s'' the closed-form inverse dynamics find the worst points, and core's generic inverse
+/// dynamics give the torques at them and at every kept sample (the same numbers as core's
+/// everywhere, the tests check).
 void resample(const Problem& problem, const Profile& profile, int per_interval, int keep,
-              MotionSamples* samples, Violation* violation, std::vector<double>* node_t);
+              MotionSamples* samples, Violation* violation, std::vector<double>* node_t,
+              std::vector<double>* interval_worst = nullptr);
+
+/// resample's plain implementation, for any path and law: core's inverse dynamics at every
+/// point. resample gives its numbers (the tests compare the two bitwise).
+void resample_reference(const Problem& problem, const Profile& profile, int per_interval, int keep,
+                        MotionSamples* samples, Violation* violation, std::vector<double>* node_t,
+                        std::vector<double>* interval_worst = nullptr);
 
 }  // namespace armstudy::studies::time_optimal
