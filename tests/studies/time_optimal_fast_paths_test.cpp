@@ -121,6 +121,42 @@ TEST(TimeOptimalFastPaths, ResampleGivesTheReferenceSamplesAndLimitUsesBitwise) 
   EXPECT_GT(overshot, 4);
 }
 
+TEST(TimeOptimalFastPaths, MaximumVelocityCurveIsTheTaggedRowsOne) {
+  for (const Problem& pb : problems()) {
+    const std::vector<double> nodes = make_nodes(pb.path, 150);
+    std::vector<double> all, vel;
+    max_velocity_curve(pb, nodes, &all, &vel);
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      const JointPoint jp = pb.at(nodes[k], k + 1 == nodes.size());
+      std::vector<Row> rows;
+      append_rows(jp, pb.limits, 0.0, static_cast<int>(k), &rows);
+      const XInterval xi = feasible_x(rows);
+      ASSERT_EQ(all[k], xi.empty() ? 0.0 : std::sqrt(std::max(0.0, xi.hi))) << k;
+      double v = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < pb.limits.joints(); ++j)
+        if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
+      ASSERT_EQ(vel[k], v) << k;
+    }
+  }
+}
+
+TEST(TimeOptimalFastPaths, SolveExactWithMoreChecksInSomeIntervalsIsTheReferences) {
+  for (const Problem& pb : problems()) {
+    const std::vector<double> nodes = make_nodes(pb.path, 60);
+    std::vector<int> checks(60, 2);
+    for (int k = 10; k < 20; ++k) checks[k] = 8;
+    checks[41] = 4;
+    const SolverOutput fast = solve_exact(pb, nodes, checks);
+    const SolverOutput ref = solve_exact_reference(pb, nodes, checks);
+    ASSERT_TRUE(ref.solved) << ref.message;
+    EXPECT_EQ(fast.profile.sd, ref.profile.sd);
+    // more check points only add limits: never faster than with fewer, never slower than with
+    // the most everywhere
+    EXPECT_GE(fast.duration, solve_exact(pb, nodes, 2).duration);
+    EXPECT_LE(fast.duration, solve_exact(pb, nodes, 8).duration);
+  }
+}
+
 TEST(TimeOptimalFastPaths, SolveExactFailsWithTheReferenceMessage) {
   // torque too small to hold the arm against gravity, and velocity limits of zero
   std::vector<Problem> bad;

@@ -108,10 +108,20 @@ std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
                                                      const std::vector<double>& nodes,
                                                      int checks) {
   ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
+  return interval_points(problem, nodes, std::vector<int>(nodes.size() - 1, checks));
+}
+
+std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
+                                                     const std::vector<double>& nodes,
+                                                     const std::vector<int>& checks_per) {
+  ARM_THROW_UNLESS(checks_per.size() + 1 == nodes.size(), "interval_points: " << checks_per.size()
+                   << " check counts for " << nodes.size() - 1 << " intervals");
   const auto& stops = problem.path.stops();
   const PointSource source(problem);
   std::vector<std::vector<JointPoint>> out(nodes.size() - 1);
   for (size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const int checks = checks_per[k];
+    ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
     const double ds = nodes[k + 1] - nodes[k];
     out[k].reserve(checks + 1);
     for (int m = 0; m <= checks; ++m) {

@@ -84,6 +84,10 @@ std::vector<bool> rest_nodes(const SolverPath& path, const std::vector<double>& 
 std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
                                                      const std::vector<double>& nodes,
                                                      int checks);
+/// The same with `checks[k]` check points in interval k (one entry per interval).
+std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
+                                                     const std::vector<double>& nodes,
+                                                     const std::vector<int>& checks);
 
 /// A solution described at its nodes.
 struct Profile {

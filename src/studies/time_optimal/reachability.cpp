@@ -17,34 +17,23 @@ std::string place(const Problem& pb, double s, int node, int nodes) {
 }
 }  // namespace
 
-void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
-                        std::vector<double>* sd_all, std::vector<double>* sd_velocity) {
-  sd_all->assign(nodes.size(), 0.0);
-  sd_velocity->assign(nodes.size(), 0.0);
-  std::vector<Row> rows;
-  for (size_t k = 0; k < nodes.size(); ++k) {
-    const JointPoint jp = pb.at(nodes[k], k + 1 == nodes.size());
-    rows.clear();
-    append_rows(jp, pb.limits, 0.0, static_cast<int>(k), &rows);
-    const XInterval xi = feasible_x(rows);
-    (*sd_all)[k] = xi.empty() ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
-    double v = kInf;
-    for (int j = 0; j < pb.limits.joints(); ++j)
-      if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
-    (*sd_velocity)[k] = v;
-  }
+SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes, int checks) {
+  ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
+  return solve_exact_reference(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
 }
 
-SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes, int checks) {
+SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes,
+                                   const std::vector<int>& checks_per) {
   SolverOutput out;
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
-  const auto pts = interval_points(pb, nodes, checks);
+  const auto pts = interval_points(pb, nodes, checks_per);
   const std::vector<bool> rest = rest_nodes(pb.path, nodes);
 
   // rows of every interval in (x_i, u), limits at theta = m / checks
   std::vector<std::vector<Row>> rows(N);
   for (int k = 0; k < N; ++k) {
+    const int checks = checks_per[k];
     const double ds = nodes[k + 1] - nodes[k];
     rows[k].reserve((checks + 1) * 6 + 1);
     for (int m = 0; m <= checks; ++m)
@@ -122,7 +111,8 @@ struct Ln {
 // The arrays of solve_exact, kept between solves of a thread so that a solve allocates
 // nothing once they have grown.
 struct ExactWorkspace {
-  std::vector<Coef> rows;       // every interval's rows, `per` apiece
+  std::vector<Coef> rows;       // every interval's rows
+  std::vector<size_t> start;    // interval k's rows begin at rows[start[k]]
   std::vector<int> count;       // rows used per interval
   std::vector<double> klo, khi, x;
   std::vector<unsigned char> rest;
@@ -210,14 +200,47 @@ double u_hi_fast(const Coef* rows, int n, double x) {
 }
 }  // namespace
 
+void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
+                        std::vector<double>* sd_all, std::vector<double>* sd_velocity) {
+  sd_all->assign(nodes.size(), 0.0);
+  sd_velocity->assign(nodes.size(), 0.0);
+  thread_local ExactWorkspace ws;
+  const PointSource source(pb);
+  const Coef none{0.0, 0.0, -kInf, kInf};  // no extra row
+  ws.rows.resize(static_cast<size_t>(pb.limits.joints()) * 3);
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    source.at(nodes[k], k + 1 == nodes.size(), &ws.cur);
+    const JointPoint& jp = ws.cur;
+    const int c = add_rows(jp, pb.limits, 0.0, ws.rows.data());
+    const XRange xi = feasible_x_fast(ws.rows.data(), c, none, ws);
+    (*sd_all)[k] = xi.lo > xi.hi ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
+    double v = kInf;
+    for (int j = 0; j < pb.limits.joints(); ++j)
+      if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
+    (*sd_velocity)[k] = v;
+  }
+}
+
 SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, int checks) {
   ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
+  return solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
+}
+
+SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, const std::vector<int>& checks_per) {
   thread_local ExactWorkspace ws;
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
+  ARM_THROW_UNLESS(static_cast<int>(checks_per.size()) == N,
+                   "solve_exact: " << checks_per.size() << " check counts for " << N << " intervals");
   const int nj = pb.limits.joints();
-  const int per = (checks + 1) * nj * (pb.limits.acceleration ? 3 : 2);
-  ws.rows.resize(static_cast<size_t>(N) * per);
+  const int kinds = pb.limits.acceleration ? 3 : 2;
+  ws.start.resize(N + 1);
+  ws.start[0] = 0;
+  for (int k = 0; k < N; ++k) {
+    ARM_THROW_UNLESS(checks_per[k] >= 1, "checks per interval " << checks_per[k] << " should be >= 1");
+    ws.start[k + 1] = ws.start[k] + static_cast<size_t>(checks_per[k] + 1) * nj * kinds;
+  }
+  ws.rows.resize(ws.start[N]);
   ws.count.assign(N, 0);
   ws.klo.assign(n, 0.0);
   ws.khi.assign(n, 0.0);
@@ -233,8 +256,9 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
   // points: the first point of an interval is the last of the one before, except at a stop)
   const PointSource source(pb);
   for (int k = 0; k < N; ++k) {
+    const int checks = checks_per[k];
     const double ds = nodes[k + 1] - nodes[k];
-    Coef* rows = ws.rows.data() + static_cast<size_t>(k) * per;
+    Coef* rows = ws.rows.data() + ws.start[k];
     int c = 0;
     for (int m = 0; m <= checks; ++m) {
       if (m == 0 && k > 0 && std::find(stops.begin(), stops.end(), nodes[k]) == stops.end()) {
@@ -254,9 +278,9 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
   for (int k = N - 1; k >= 0; --k) {
     const double ds = nodes[k + 1] - nodes[k];
     const Coef reach{1.0, 2.0 * ds, ws.klo[k + 1], ws.khi[k + 1]};
-    const XRange xi = feasible_x_fast(ws.rows.data() + static_cast<size_t>(k) * per, ws.count[k], reach, ws);
+    const XRange xi = feasible_x_fast(ws.rows.data() + ws.start[k], ws.count[k], reach, ws);
     const double tol = 1e-12 * std::max(1.0, std::abs(xi.hi));
-    if (xi.lo > xi.hi + tol || (ws.rest[k] && xi.lo > tol)) return solve_exact_reference(pb, nodes, checks);
+    if (xi.lo > xi.hi + tol || (ws.rest[k] && xi.lo > tol)) return solve_exact_reference(pb, nodes, checks_per);
     ws.klo[k] = ws.rest[k] ? 0.0 : std::max(0.0, xi.lo);
     ws.khi[k] = ws.rest[k] ? 0.0 : std::max(ws.klo[k], xi.hi);
   }
@@ -264,11 +288,11 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
   // forward pass: greedy largest u, x_0 = 0
   for (int k = 0; k < N; ++k) {
     const double ds = nodes[k + 1] - nodes[k];
-    const double uhi = u_hi_fast(ws.rows.data() + static_cast<size_t>(k) * per, ws.count[k], ws.x[k]);
+    const double uhi = u_hi_fast(ws.rows.data() + ws.start[k], ws.count[k], ws.x[k]);
     const double u = std::min(uhi, (ws.khi[k + 1] - ws.x[k]) / (2 * ds));
     const double next = std::clamp(ws.x[k] + 2 * ds * u, ws.klo[k + 1], ws.khi[k + 1]);
     ws.x[k + 1] = std::max(0.0, next);
-    if (ws.x[k] <= 0 && ws.x[k + 1] <= 0) return solve_exact_reference(pb, nodes, checks);
+    if (ws.x[k] <= 0 && ws.x[k + 1] <= 0) return solve_exact_reference(pb, nodes, checks_per);
   }
   SolverOutput out;
   out.profile.law = SegmentLaw::kPathAcceleration;
