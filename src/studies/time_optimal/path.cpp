@@ -157,48 +157,113 @@ std::string length_text(double m) {
   return os.str();
 }
 
+TipPointEvaluator::TipPointEvaluator(const core::PlanarChain& chain, const PathGeometry& path,
+                                     int configuration)
+    : path_(&path), base_(chain.base), configuration_(configuration) {
+  ARM_THROW_UNLESS(chain.num_links() == 2,
+                   "time-optimal arm has " << chain.num_links() << " links; should have 2");
+  L1_ = chain.links[0].length;
+  L2_ = chain.links[1].length;
+  const double cb = std::cos(chain.base_angle), sb = std::sin(chain.base_angle);
+  rt_ << cb, sb, -sb, cb;
+  dyn_ = make_two_link_dynamics(chain);
+}
+
+bool TipPointEvaluator::at(double s, bool from_left, JointPoint* jp) const {
+  const PathPoint pp = path_->at(s, from_left);
+  // path in the base frame: rotate by -base_angle about the base
+  const Eigen::Vector2d p = rt_ * (pp.p - base_);
+  if (!core::reach_2link(L1_, L2_, p).reachable()) return false;
+  const auto st = core::ik_2link_motion(L1_, L2_, p, rt_ * pp.dp, rt_ * pp.ddp, configuration_);
+  if (!st || std::abs(st->sin_q2) < 1e-9) return false;
+  jp->s = s;
+  jp->p = pp.p;
+  jp->q = st->q;
+  jp->dq = st->qd;
+  jp->ddq = st->qdd;
+  jp->sin_q2 = st->sin_q2;
+  // tau = M (q' s'' + q'' s'^2) + C(q, q' s') q' s' + g = a s'' + b s'^2 + c, in closed form
+  // (two_link_dynamics.hpp; equal to core's generic chain to 1e-12, the tests' oracle)
+  path_dynamics(dyn_, jp->q, jp->dq, jp->ddq, &jp->a, &jp->b, &jp->c);
+  return true;
+}
+
+TipRateEvaluator::TipRateEvaluator(const core::PlanarChain& chain, const PathGeometry& path,
+                                   int configuration)
+    : path_(&path), base_(chain.base), configuration_(configuration) {
+  ARM_THROW_UNLESS(chain.num_links() == 2,
+                   "time-optimal arm has " << chain.num_links() << " links; should have 2");
+  ARM_THROW_UNLESS(configuration == 1 || configuration == 2,
+                   "configuration " << configuration << " should be 1 or 2");
+  L1_ = chain.links[0].length;
+  L2_ = chain.links[1].length;
+  cb_ = std::cos(chain.base_angle);
+  sb_ = std::sin(chain.base_angle);
+  rt_ << cb_, sb_, -sb_, cb_;
+}
+
+bool TipRateEvaluator::at(double s, bool from_left, TipRates* out) const {
+  const PathPoint pp = path_->at(s, from_left);
+  const Eigen::Vector2d p = rt_ * (pp.p - base_);
+  const Eigen::Vector2d v = rt_ * pp.dp, a = rt_ * pp.ddp;
+  const double r2 = p.squaredNorm();
+  const double c2 = (r2 - L1_ * L1_ - L2_ * L2_) / (2.0 * L1_ * L2_);
+  // inside the annulus with the elbow clearly bent (joint_point's test is |sin q2| >= 1e-9)
+  const double w = (1.0 - c2) * (1.0 + c2);
+  if (!(w > 1e-16)) return false;
+  const double s2 = configuration_ == 1 ? std::sqrt(w) : -std::sqrt(w);
+  // p = R(q1) (k1, k2): link 1's direction (base frame)
+  const double k1 = L1_ + L2_ * c2, k2 = L2_ * s2;
+  const double kk = k1 * k1 + k2 * k2;
+  const double c1 = (p.x() * k1 + p.y() * k2) / kk, s1 = (p.y() * k1 - p.x() * k2) / kk;
+  const double c12 = c1 * c2 - s1 * s2, s12 = s1 * c2 + c1 * s2;
+  const double det = L1_ * L2_ * s2;
+  const double j11 = -L1_ * s1 - L2_ * s12, j12 = -L2_ * s12;
+  const double j21 = L1_ * c1 + L2_ * c12, j22 = L2_ * c12;
+  const double qd1 = (j22 * v.x() - j12 * v.y()) / det, qd2 = (-j21 * v.x() + j11 * v.y()) / det;
+  const double w1 = qd1, w12 = qd1 + qd2;
+  const double bx = a.x() + L1_ * c1 * w1 * w1 + L2_ * c12 * w12 * w12;
+  const double by = a.y() + L1_ * s1 * w1 * w1 + L2_ * s12 * w12 * w12;
+  out->dq[0] = qd1;
+  out->dq[1] = qd2;
+  out->ddq[0] = (j22 * bx - j12 * by) / det;
+  out->ddq[1] = (-j21 * bx + j11 * by) / det;
+  out->c1 = cb_ * c1 - sb_ * s1;  // base_angle + q1
+  out->s1 = sb_ * c1 + cb_ * s1;
+  out->c2 = c2;
+  out->s2 = s2;
+  return true;
+}
+
 std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,
                                       int configuration, double s, bool from_left,
                                       PathTrouble* trouble) {
-  ARM_THROW_UNLESS(chain.num_links() == 2,
-                   "time-optimal arm has " << chain.num_links() << " links; should have 2");
+  const TipPointEvaluator eval(chain, path, configuration);
+  JointPoint jp;
+  if (eval.at(s, from_left, &jp)) return jp;
+  if (!trouble) return std::nullopt;
+  // why not: the same steps again, with the words
   const PathPoint pp = path.at(s, from_left);
   const double L1 = chain.links[0].length, L2 = chain.links[1].length;
-  // path in the base frame: rotate by -base_angle about the base
-  const double cb = std::cos(chain.base_angle), sb = std::sin(chain.base_angle);
-  Eigen::Matrix2d Rt;
-  Rt << cb, sb, -sb, cb;
-  const Eigen::Vector2d p = Rt * (pp.p - chain.base);
+  const Eigen::Vector2d p = in_base_frame(chain, pp.p);
   const auto where = [&] {
     return "at s = " + fmt(s) + " m, (x, y) = (" + fmt(pp.p.x()) + ", " + fmt(pp.p.y()) + ") m";
   };
   const core::Reach reach = core::reach_2link(L1, L2, p);
   if (!reach.reachable()) {
-    if (trouble)
-      trouble->message = "the path leaves the workspace " + where() + ": it is " +
-                         length_text(-reach.margin) + " outside the reachable annulus [" +
-                         fmt(reach.inner, 2) + ", " + fmt(reach.outer, 2) + "] m";
+    trouble->message = "the path leaves the workspace " + where() + ": it is " +
+                       length_text(-reach.margin) + " outside the reachable annulus [" +
+                       fmt(reach.inner, 2) + ", " + fmt(reach.outer, 2) + "] m";
     return std::nullopt;
   }
+  const double cb = std::cos(chain.base_angle), sb = std::sin(chain.base_angle);
+  Eigen::Matrix2d Rt;
+  Rt << cb, sb, -sb, cb;
   const auto st = core::ik_2link_motion(L1, L2, p, Rt * pp.dp, Rt * pp.ddp, configuration);
-  if (!st || std::abs(st->sin_q2) < 1e-9) {
-    if (trouble)
-      trouble->message = "the path passes through a singular pose " + where() +
-                         ": the elbow is " + (std::cos(st ? st->q[1] : 0.0) > 0 ? "straight" : "folded") +
-                         " (sin q2 = 0), where no finite joint speed follows the path";
-    return std::nullopt;
-  }
-  JointPoint jp;
-  jp.s = s;
-  jp.p = pp.p;
-  jp.q = st->q;
-  jp.dq = st->qd;
-  jp.ddq = st->qdd;
-  jp.sin_q2 = st->sin_q2;
-  // tau = M (q' s'' + q'' s'^2) + C(q, q' s') q' s' + g = a s'' + b s'^2 + c, in closed form
-  // (two_link_dynamics.hpp; equal to core's generic chain to 1e-12, the tests' oracle)
-  path_dynamics(make_two_link_dynamics(chain), jp.q, jp.dq, jp.ddq, &jp.a, &jp.b, &jp.c);
-  return jp;
+  trouble->message = "the path passes through a singular pose " + where() +
+                     ": the elbow is " + (std::cos(st ? st->q[1] : 0.0) > 0 ? "straight" : "folded") +
+                     " (sin q2 = 0), where no finite joint speed follows the path";
+  return std::nullopt;
 }
 
 }  // namespace armstudy::studies::time_optimal

@@ -12,6 +12,7 @@
 #include "core/planar_chain.hpp"
 #include "core/types.hpp"
 #include "studies/time_optimal/spec.hpp"
+#include "studies/time_optimal/two_link_dynamics.hpp"
 
 namespace armstudy::studies::time_optimal {
 
@@ -76,6 +77,51 @@ double workspace_margin(const core::PlanarChain& chain, const PathGeometry& path
 
 /// "7.31e-04 m (0.731 mm)": a small length with enough digits to see it.
 std::string length_text(double metres);
+
+/// joint_point's evaluation with the chain's constant parts (base rotation, dynamics
+/// parameters) computed once, for the solvers' many points: the same numbers as
+/// joint_point (the same operations in the same order), no allocation. The chain and the
+/// path must outlive it.
+class TipPointEvaluator {
+ public:
+  /// @throws std::invalid_argument if the chain does not have 2 links.
+  TipPointEvaluator(const core::PlanarChain& chain, const PathGeometry& path, int configuration);
+  /// The joint point at s into `jp`; false (jp unspecified) where joint_point gives nullopt.
+  bool at(double s, bool from_left, JointPoint* jp) const;
+
+ private:
+  const PathGeometry* path_;
+  Eigen::Vector2d base_;
+  Eigen::Matrix2d rt_;  // world -> base frame rotation
+  double L1_, L2_;
+  int configuration_;
+  TwoLinkDynamics dyn_;
+};
+
+/// The joint rates of a tip path at one point without trigonometric functions, for scans
+/// over many points: q' and q'' from the elbow's cosine and sine, c2 = (r^2 - L1^2 - L2^2)
+/// / (2 L1 L2) and s2 = +-sqrt(1 - c2^2), and link 1's direction as an algebraic function
+/// of the tip; no angles. Equal to joint_point's to rounding (the tests: 1e-12 relative).
+struct TipRates {
+  double dq[2], ddq[2];  ///< q'(s), q''(s): rad/m, rad/m^2
+  double c1, s1;         ///< cos, sin of link 1's absolute angle base_angle + q1
+  double c2, s2;         ///< cos q2, sin q2
+};
+
+class TipRateEvaluator {
+ public:
+  /// @throws std::invalid_argument if the chain does not have 2 links.
+  TipRateEvaluator(const core::PlanarChain& chain, const PathGeometry& path, int configuration);
+  /// false where joint_point gives nullopt (unreachable or singular), or on its edge.
+  bool at(double s, bool from_left, TipRates* r) const;
+
+ private:
+  const PathGeometry* path_;
+  Eigen::Vector2d base_;
+  Eigen::Matrix2d rt_;
+  double cb_, sb_, L1_, L2_;
+  int configuration_;
+};
 
 /// Joint point of a 2-link `chain` at s; nullopt and `trouble` set when the point lies
 /// outside the reachable annulus or at a singular pose (|sin q2| < 1e-9).

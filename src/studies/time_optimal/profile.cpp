@@ -1,6 +1,7 @@
 #include "studies/time_optimal/profile.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
 #include "core/kinematics.hpp"
+#include "studies/time_optimal/two_link_dynamics.hpp"
 
 namespace armstudy::studies::time_optimal {
 
@@ -49,6 +51,14 @@ std::string Problem::where(double s, bool from_left) const {
     os << "(x, y) = (" << p.x() << ", " << p.y() << ") m";
   }
   return os.str();
+}
+
+PointSource::PointSource(const Problem& problem) : problem_(&problem) {
+  if (!problem.path.joint_space()) tip_.emplace(problem.chain, problem.path.tip(), problem.configuration);
+}
+
+void PointSource::at(double s, bool from_left, JointPoint* jp) const {
+  if (!tip_ || !tip_->at(s, from_left, jp)) *jp = problem_->at(s, from_left);
 }
 
 Problem make_problem(const Spec& spec, const Limits& limits) {
@@ -98,9 +108,20 @@ std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
                                                      const std::vector<double>& nodes,
                                                      int checks) {
   ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
+  return interval_points(problem, nodes, std::vector<int>(nodes.size() - 1, checks));
+}
+
+std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
+                                                     const std::vector<double>& nodes,
+                                                     const std::vector<int>& checks_per) {
+  ARM_THROW_UNLESS(checks_per.size() + 1 == nodes.size(), "interval_points: " << checks_per.size()
+                   << " check counts for " << nodes.size() - 1 << " intervals");
   const auto& stops = problem.path.stops();
+  const PointSource source(problem);
   std::vector<std::vector<JointPoint>> out(nodes.size() - 1);
   for (size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const int checks = checks_per[k];
+    ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
     const double ds = nodes[k + 1] - nodes[k];
     out[k].reserve(checks + 1);
     for (int m = 0; m <= checks; ++m) {
@@ -109,7 +130,8 @@ std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
         continue;
       }
       const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
-      out[k].push_back(problem.at(s, m == checks));
+      out[k].emplace_back();
+      source.at(s, m == checks, &out[k].back());
     }
   }
   return out;
@@ -175,8 +197,43 @@ TimedState state_at_time(const Problem& problem, const Profile& pr,
   return out;
 }
 
-void resample(const Problem& problem, const Profile& pr, int per_interval, int keep,
-              MotionSamples* out, Violation* viol, std::vector<double>* node_t) {
+namespace {
+Eigen::MatrixXd pack(int nj, const std::vector<core::JointVector>& v) {
+  Eigen::MatrixXd m(nj, v.size());
+  for (size_t i = 0; i < v.size(); ++i) m.col(i) = v[i];
+  return m;
+}
+
+// the sentence: grid point, binding limit, margin
+std::string violation_text(const Problem& problem, const Violation& v) {
+  std::ostringstream os;
+  os.precision(4);
+  const double lim = problem.limits.of(v.kind, v.joint);
+  const double used = (v.worst + 1) * lim;
+  os << "largest limit use: joint " << v.joint + 1 << " " << limit_name(v.kind) << " "
+     << used << " of " << lim << " " << limit_unit(v.kind) << " at s = " << v.s
+     << " " << problem.path.unit() << ", t = " << v.t << " s (interval " << v.interval << ", from grid point "
+     << v.interval << "); ";
+  if (v.worst <= 0)
+    os << "met with a margin of " << lim - used << " " << limit_unit(v.kind) << " (" << 0.0 - v.worst
+       << " relative)";
+  else
+    os << "over it by " << used - lim << " " << limit_unit(v.kind) << " (" << v.worst
+       << " relative, between the solver's check points)";
+  return os.str();
+}
+
+// |value| / limit (infinite for any use of a zero limit)
+inline double use_ratio(double value, double lim) {
+  const double v = std::abs(value);
+  return lim > 0 ? v / lim : (v > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0);
+}
+
+}  // namespace
+
+void resample_reference(const Problem& problem, const Profile& pr, int per_interval, int keep,
+                      MotionSamples* out, Violation* viol, std::vector<double>* node_t,
+                      std::vector<double>* interval_worst) {
   ARM_THROW_UNLESS(per_interval >= 1, "resampling points " << per_interval << " should be >= 1");
   const int K = static_cast<int>(pr.s.size()) - 1;
   const int total = K * per_interval + 1;
@@ -187,6 +244,7 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
   *viol = Violation{};
   viol->worst = -1;
   if (node_t) node_t->assign(pr.s.size(), 0.0);
+  if (interval_worst) interval_worst->assign(K, -1.0);
   double t_node = 0;
   int index = 0;
   for (int k = 0; k < K; ++k) {
@@ -229,9 +287,9 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
         if (kind == 2 && !problem.limits.acceleration) continue;
         for (int j = 0; j < nj; ++j) {
           const double lim = problem.limits.of(static_cast<LimitKind>(kind), j);
-          const double v = std::abs((*vals[kind])[j]);
-          const double r = lim > 0 ? v / lim : (v > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0);
+          const double r = use_ratio((*vals[kind])[j], lim);
           if (r > viol->ratio[kind][j]) viol->ratio[kind][j] = r;
+          if (interval_worst && r - 1 > (*interval_worst)[k]) (*interval_worst)[k] = r - 1;
           if (r - 1 > viol->worst) {
             viol->worst = r - 1;
             viol->joint = j;
@@ -257,31 +315,196 @@ void resample(const Problem& problem, const Profile& pr, int per_interval, int k
     t_node = t_end;
     if (node_t) (*node_t)[k + 1] = t_node;
   }
-  const auto pack = [nj](const std::vector<core::JointVector>& v) {
-    Eigen::MatrixXd m(nj, v.size());
-    for (size_t i = 0; i < v.size(); ++i) m.col(i) = v[i];
-    return m;
+  out->q = pack(nj, q);
+  out->qd = pack(nj, qd);
+  out->qdd = pack(nj, qdd);
+  out->tau = pack(nj, tau);
+  viol->text = violation_text(problem, *viol);
+}
+
+namespace {
+// resample of a constant-s'' profile on a 2-link tip path: the same samples and the same
+// largest uses as resample_reference. The scan over every point takes the joint rates
+// without trigonometric functions (TipRateEvaluator) and the closed-form inverse dynamics
+// (two_link_dynamics.hpp), both equal to the reference to rounding; every point within
+// 1e-12 of a limit's largest use is a candidate, and the candidates and the kept samples
+// are evaluated again as resample_reference does (joint_point, core's inverse dynamics)
+void resample_two_link(const Problem& problem, const Profile& pr, int per_interval, int keep,
+                       MotionSamples* out, Violation* viol, std::vector<double>* node_t,
+                       std::vector<double>* interval_worst) {
+  const int K = static_cast<int>(pr.s.size()) - 1;
+  const int total = K * per_interval + 1;
+  const int stride = std::max(1, total / std::max(1, keep));
+  *out = MotionSamples{};
+  constexpr int nj = 2;
+  std::vector<core::JointVector> q, qd, qdd, tau;
+  *viol = Violation{};
+  viol->worst = -1;
+  std::vector<double> nt(pr.s.size(), 0.0);
+  if (interval_worst) interval_worst->assign(K, -1.0);
+  const PointSource source(problem);
+  const TipRateEvaluator rates(problem.chain, problem.path.tip(), problem.configuration);
+  const TwoLinkDynamics dyn = make_two_link_dynamics(problem.chain);
+  const int kinds = problem.limits.acceleration ? 3 : 2;
+  double lim[3][nj];
+  for (int kind = 0; kind < kinds; ++kind)
+    for (int j = 0; j < nj; ++j) lim[kind][j] = problem.limits.of(static_cast<LimitKind>(kind), j);
+  constexpr double kRounding = 1e-12;
+  struct Candidate {
+    int k, m;
+    double r;
   };
-  out->q = pack(q);
-  out->qd = pack(qd);
-  out->qdd = pack(qdd);
-  out->tau = pack(tau);
-  // the sentence: grid point, binding limit, margin
-  std::ostringstream os;
-  os.precision(4);
-  const double lim = problem.limits.of(viol->kind, viol->joint);
-  const double used = (viol->worst + 1) * lim;
-  os << "largest limit use: joint " << viol->joint + 1 << " " << limit_name(viol->kind) << " "
-     << used << " of " << lim << " " << limit_unit(viol->kind) << " at s = " << viol->s
-     << " " << problem.path.unit() << ", t = " << viol->t << " s (interval " << viol->interval << ", from grid point "
-     << viol->interval << "); ";
-  if (viol->worst <= 0)
-    os << "met with a margin of " << lim - used << " " << limit_unit(viol->kind) << " (" << 0.0 - viol->worst
-       << " relative)";
+  double best[3][nj] = {};
+  std::vector<Candidate> cand[3][nj];
+
+  // where point m of interval k lies: s and the side (the interval's end from the left)
+  const auto where = [&](int k, int m, double* s) {
+    if (m == 0) {
+      *s = pr.s[k];
+      return false;
+    }
+    if (m == per_interval) {
+      *s = pr.s[k + 1];
+      return true;
+    }
+    *s = pr.s[k] + static_cast<double>(m) / per_interval * (pr.s[k + 1] - pr.s[k]);
+    return false;
+  };
+  // the reference state at point m of interval k, as resample_reference computes it
+  struct Reference {
+    JointPoint jp;
+    double sd, u, dt;
+    core::JointVector qd, qdd;
+  };
+  const auto reference = [&](int k, int m) {
+    Reference r;
+    double s;
+    const bool left = where(k, m, &s);
+    source.at(s, left, &r.jp);
+    const LocalState ls = path_acceleration_state(pr, k, static_cast<double>(m) / per_interval);
+    r.sd = std::sqrt(std::max(0.0, ls.x));
+    r.u = ls.u;
+    r.dt = ls.dt;
+    r.qd = r.jp.dq * r.sd;
+    r.qdd = r.jp.dq * ls.u + r.jp.ddq * ls.x;
+    return r;
+  };
+
+  double t_node = 0;
+  int index = 0;
+  TipRates tr;
+  for (int k = 0; k < K; ++k) {
+    const double ds = pr.s[k + 1] - pr.s[k];
+    double t_end = t_node;
+    for (int m = (k == 0 ? 0 : 1); m <= per_interval; ++m) {
+      const double theta = static_cast<double>(m) / per_interval;
+      double s;
+      const bool left = m == 0 ? false : m == per_interval;
+      s = m == 0 ? pr.s[k] : (m == per_interval ? pr.s[k + 1] : pr.s[k] + theta * ds);
+      if (!rates.at(s, left, &tr)) {
+        // on the edge of the fast path: the reference point's rates
+        JointPoint jp;
+        source.at(s, left, &jp);
+        const double t1 = problem.chain.base_angle + jp.q[0];
+        tr = TipRates{{jp.dq[0], jp.dq[1]}, {jp.ddq[0], jp.ddq[1]}, std::cos(t1), std::sin(t1),
+                      std::cos(jp.q[1]), std::sin(jp.q[1])};
+      }
+      const LocalState ls = path_acceleration_state(pr, k, theta);
+      const double sd = std::sqrt(std::max(0.0, ls.x));
+      const double vq[2] = {tr.dq[0] * sd, tr.dq[1] * sd};
+      const double aq[2] = {tr.dq[0] * ls.u + tr.ddq[0] * ls.x, tr.dq[1] * ls.u + tr.ddq[1] * ls.x};
+      double tq[2];
+      inverse_dynamics_cs(dyn, tr.c1, tr.s1, tr.c2, tr.s2, vq, aq, tq);
+      const double t = t_node + ls.dt;
+      t_end = t;
+      const double* vals[3] = {vq, tq, aq};
+      double worst_here = -1;
+      for (int kind = 0; kind < kinds; ++kind) {
+        for (int j = 0; j < nj; ++j) {
+          const double r = use_ratio(vals[kind][j], lim[kind][j]);
+          auto& c = cand[kind][j];
+          if (r > best[kind][j]) {
+            best[kind][j] = r;
+            const double floor = r - kRounding * std::max(1.0, r);
+            if (!c.empty() && c.front().r < floor)
+              c.erase(std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
+                      c.end());
+          }
+          if (r > 0 && r >= best[kind][j] - kRounding * std::max(1.0, best[kind][j])) c.push_back({k, m, r});
+          worst_here = std::max(worst_here, r - 1);
+        }
+      }
+      if (interval_worst && worst_here > (*interval_worst)[k]) (*interval_worst)[k] = worst_here;
+      if (index % stride == 0 || (k == K - 1 && m == per_interval)) {
+        const Reference ref = reference(k, m);
+        out->s.push_back(ref.jp.s);
+        out->t.push_back(t);
+        out->sd.push_back(ref.sd);
+        out->sdd.push_back(ref.u);
+        q.push_back(ref.jp.q);
+        qd.push_back(ref.qd);
+        qdd.push_back(ref.qdd);
+        tau.push_back(core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd));
+      }
+      ++index;
+    }
+    t_node = t_end;
+    nt[k + 1] = t_node;
+  }
+  // every candidate again as resample_reference: the first point of each limit's largest
+  // use; the overall worst is the first point (then kind, then joint) of the largest use
+  long worst_index = -1;
+  for (int kind = 0; kind < kinds; ++kind) {
+    for (int j = 0; j < nj; ++j) {
+      double r_best = 0;
+      int k_best = -1;
+      Reference at_best;
+      long i_best = -1;
+      for (const Candidate& c : cand[kind][j]) {
+        const Reference ref = reference(c.k, c.m);
+        double v;
+        if (kind == 0) v = ref.qd[j];
+        else if (kind == 2) v = ref.qdd[j];
+        else v = core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd)[j];
+        const double r = use_ratio(v, lim[kind][j]);
+        if (r > r_best) {
+          r_best = r;
+          k_best = c.k;
+          at_best = ref;
+          i_best = static_cast<long>(c.k) * per_interval + c.m;
+        }
+      }
+      viol->ratio[kind][j] = r_best;
+      if (k_best < 0) continue;
+      if (r_best - 1 > viol->worst || (r_best - 1 == viol->worst && i_best < worst_index)) {
+        viol->worst = r_best - 1;
+        viol->joint = j;
+        viol->kind = static_cast<LimitKind>(kind);
+        viol->s = at_best.jp.s;
+        viol->t = nt[k_best] + at_best.dt;
+        viol->interval = k_best;
+        worst_index = i_best;
+      }
+    }
+  }
+  if (node_t) *node_t = nt;
+  out->q = pack(nj, q);
+  out->qd = pack(nj, qd);
+  out->qdd = pack(nj, qdd);
+  out->tau = pack(nj, tau);
+  viol->text = violation_text(problem, *viol);
+}
+}  // namespace
+
+void resample(const Problem& problem, const Profile& pr, int per_interval, int keep,
+              MotionSamples* out, Violation* viol, std::vector<double>* node_t,
+              std::vector<double>* interval_worst) {
+  ARM_THROW_UNLESS(per_interval >= 1, "resampling points " << per_interval << " should be >= 1");
+  if (!problem.path.joint_space() && problem.chain.num_links() == 2 &&
+      pr.law == SegmentLaw::kPathAcceleration)
+    resample_two_link(problem, pr, per_interval, keep, out, viol, node_t, interval_worst);
   else
-    os << "over it by " << used - lim << " " << limit_unit(viol->kind) << " (" << viol->worst
-       << " relative, between the solver's check points)";
-  viol->text = os.str();
+    resample_reference(problem, pr, per_interval, keep, out, viol, node_t, interval_worst);
 }
 
 }  // namespace armstudy::studies::time_optimal

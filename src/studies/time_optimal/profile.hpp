@@ -53,6 +53,20 @@ struct Problem {
   std::string where(double s, bool from_left = false) const;
 };
 
+/// Problem::at for many points: a tip path's joint points through TipPointEvaluator (the
+/// same numbers as Problem::at, the chain's constant parts computed once), a joint-space
+/// path's through Problem::at. The problem must outlive it.
+class PointSource {
+ public:
+  explicit PointSource(const Problem& problem);
+  /// @throws std::logic_error as Problem::at does.
+  void at(double s, bool from_left, JointPoint* jp) const;
+
+ private:
+  const Problem* problem_;
+  std::optional<TipPointEvaluator> tip_;
+};
+
 /// The problem of `spec`: its path in the spec's space, the spec's chain and `limits`.
 /// @throws std::invalid_argument for an invalid path.
 Problem make_problem(const Spec& spec, const Limits& limits);
@@ -70,6 +84,10 @@ std::vector<bool> rest_nodes(const SolverPath& path, const std::vector<double>& 
 std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
                                                      const std::vector<double>& nodes,
                                                      int checks);
+/// The same with `checks[k]` check points in interval k (one entry per interval).
+std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
+                                                     const std::vector<double>& nodes,
+                                                     const std::vector<int>& checks);
 
 /// A solution described at its nodes.
 struct Profile {
@@ -97,8 +115,19 @@ TimedState state_at_time(const Problem& problem, const Profile& profile,
 /// Resamples a profile at `per_interval` points per interval (from its own segment law),
 /// with joint velocities, accelerations and torques from core's inverse dynamics, and finds
 /// the largest use of each limit. `samples` keeps about `keep` evenly spaced samples; node
-/// times go to `node_t`.
+/// times go to `node_t`; the largest use of any limit inside each interval, as ratio - 1,
+/// to `interval_worst` (one per interval) when given. On a 2-link tip path with constant
+/// s'' the closed-form inverse dynamics find the worst points, and core's generic inverse
+/// dynamics give the torques at them and at every kept sample (the same numbers as core's
+/// everywhere, the tests check).
 void resample(const Problem& problem, const Profile& profile, int per_interval, int keep,
-              MotionSamples* samples, Violation* violation, std::vector<double>* node_t);
+              MotionSamples* samples, Violation* violation, std::vector<double>* node_t,
+              std::vector<double>* interval_worst = nullptr);
+
+/// resample's plain implementation, for any path and law: core's inverse dynamics at every
+/// point. resample gives its numbers (the tests compare the two bitwise).
+void resample_reference(const Problem& problem, const Profile& profile, int per_interval, int keep,
+                        MotionSamples* samples, Violation* violation, std::vector<double>* node_t,
+                        std::vector<double>* interval_worst = nullptr);
 
 }  // namespace armstudy::studies::time_optimal

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/check.hpp"
 #include "studies/time_optimal/solvers.hpp"
 
 namespace armstudy::studies::time_optimal {
@@ -16,34 +17,23 @@ std::string place(const Problem& pb, double s, int node, int nodes) {
 }
 }  // namespace
 
-void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
-                        std::vector<double>* sd_all, std::vector<double>* sd_velocity) {
-  sd_all->assign(nodes.size(), 0.0);
-  sd_velocity->assign(nodes.size(), 0.0);
-  std::vector<Row> rows;
-  for (size_t k = 0; k < nodes.size(); ++k) {
-    const JointPoint jp = pb.at(nodes[k], k + 1 == nodes.size());
-    rows.clear();
-    append_rows(jp, pb.limits, 0.0, static_cast<int>(k), &rows);
-    const XInterval xi = feasible_x(rows);
-    (*sd_all)[k] = xi.empty() ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
-    double v = kInf;
-    for (int j = 0; j < pb.limits.joints(); ++j)
-      if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
-    (*sd_velocity)[k] = v;
-  }
+SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes, int checks) {
+  ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
+  return solve_exact_reference(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
 }
 
-SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, int checks) {
+SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes,
+                                   const std::vector<int>& checks_per) {
   SolverOutput out;
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
-  const auto pts = interval_points(pb, nodes, checks);
+  const auto pts = interval_points(pb, nodes, checks_per);
   const std::vector<bool> rest = rest_nodes(pb.path, nodes);
 
   // rows of every interval in (x_i, u), limits at theta = m / checks
   std::vector<std::vector<Row>> rows(N);
   for (int k = 0; k < N; ++k) {
+    const int checks = checks_per[k];
     const double ds = nodes[k + 1] - nodes[k];
     rows[k].reserve((checks + 1) * 6 + 1);
     for (int m = 0; m <= checks; ++m)
@@ -102,6 +92,213 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
   out.profile.s = nodes;
   out.profile.sd.resize(n);
   for (int k = 0; k < n; ++k) out.profile.sd[k] = std::sqrt(x[k]);
+  out.duration = profile_duration(pb, out.profile);
+  out.solved = std::isfinite(out.duration);
+  if (!out.solved) out.message = "the exact profile has an infinite duration";
+  return out;
+}
+
+namespace {
+// solve_exact's rows without their tags: lo <= cx x + cu u <= hi
+struct Coef {
+  double cx, cu, lo, hi;
+};
+// a bound on u, affine in x (phase.cpp's Line without its tag)
+struct Ln {
+  double p, r;
+};
+
+// The arrays of solve_exact, kept between solves of a thread so that a solve allocates
+// nothing once they have grown.
+struct ExactWorkspace {
+  std::vector<Coef> rows;       // every interval's rows
+  std::vector<size_t> start;    // interval k's rows begin at rows[start[k]]
+  std::vector<int> count;       // rows used per interval
+  std::vector<double> klo, khi, x;
+  std::vector<unsigned char> rest;
+  std::vector<Ln> lower, upper;
+  JointPoint prev, cur;
+};
+
+// append_rows without tags (the same values in the same order)
+inline int add_rows(const JointPoint& jp, const Limits& lim, double shift, Coef* out) {
+  int n = 0;
+  const auto add = [&](double cx, double cu, double lo, double hi) {
+    out[n++] = Coef{cx, cu + shift * cx, lo, hi};
+  };
+  const int nj = static_cast<int>(jp.dq.size());
+  for (int j = 0; j < nj; ++j) {
+    add(jp.dq[j] * jp.dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j]);
+    add(jp.b[j], jp.a[j], -lim.torque[j] - jp.c[j], lim.torque[j] - jp.c[j]);
+    if (lim.acceleration) add(jp.ddq[j], jp.dq[j], -(*lim.acceleration)[j], (*lim.acceleration)[j]);
+  }
+  return n;
+}
+
+// feasible_x of rows[0..n) and the extra row `last`, without tags: the same bounds (every
+// candidate is the same quotient; min and max do not depend on the order)
+struct XRange {
+  double lo = 0, hi = kInf;
+};
+XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace& ws) {
+  XRange out;
+  ws.lower.clear();
+  ws.upper.clear();
+  const auto take = [&](const Coef& r) {
+    if (r.cu == 0.0) {
+      if (r.cx > 0) {
+        if (std::isfinite(r.hi)) { const double v = r.hi / r.cx; if (v < out.hi) out.hi = v; }
+        if (std::isfinite(r.lo)) { const double v = r.lo / r.cx; if (v > out.lo) out.lo = v; }
+      } else if (r.cx < 0) {
+        if (std::isfinite(r.hi)) { const double v = r.hi / r.cx; if (v > out.lo) out.lo = v; }
+        if (std::isfinite(r.lo)) { const double v = r.lo / r.cx; if (v < out.hi) out.hi = v; }
+      } else if (r.lo > 1e-12 * std::max(1.0, std::abs(r.lo)) || r.hi < -1e-12) {
+        return false;
+      }
+      return true;
+    }
+    const double inv = 1.0 / r.cu;
+    const bool pos = r.cu > 0;
+    if (std::isfinite(r.hi)) (pos ? ws.upper : ws.lower).push_back(Ln{r.hi * inv, -r.cx * inv});
+    if (std::isfinite(r.lo)) (pos ? ws.lower : ws.upper).push_back(Ln{r.lo * inv, -r.cx * inv});
+    return true;
+  };
+  for (int i = 0; i < n; ++i)
+    if (!take(rows[i])) return XRange{1, 0};
+  if (!take(last)) return XRange{1, 0};
+  const Ln* L = ws.lower.data();
+  const Ln* U = ws.upper.data();
+  const int nl = static_cast<int>(ws.lower.size()), nu = static_cast<int>(ws.upper.size());
+  for (int a = 0; a < nl; ++a) {
+    for (int b = 0; b < nu; ++b) {
+      const double d = L[a].r - U[b].r, g = U[b].p - L[a].p;
+      if (d > 0) {
+        const double v = g / d;
+        if (v < out.hi) out.hi = v;
+      } else if (d < 0) {
+        const double v = g / d;
+        if (v > out.lo) out.lo = v;
+      } else if (g < -1e-12 * std::max({1.0, std::abs(L[a].p), std::abs(U[b].p)})) {
+        return XRange{1, 0};
+      }
+    }
+  }
+  return out;
+}
+
+// u_range(rows, x).hi without tags
+double u_hi_fast(const Coef* rows, int n, double x) {
+  double hi = kInf;
+  for (int i = 0; i < n; ++i) {
+    const Coef& r = rows[i];
+    if (r.cu == 0.0) continue;
+    const double inv = 1.0 / r.cu;
+    const double b = (r.cu < 0 ? r.lo - r.cx * x : r.hi - r.cx * x) * inv;
+    if (b < hi) hi = b;
+  }
+  return hi;
+}
+}  // namespace
+
+void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
+                        std::vector<double>* sd_all, std::vector<double>* sd_velocity) {
+  sd_all->assign(nodes.size(), 0.0);
+  sd_velocity->assign(nodes.size(), 0.0);
+  thread_local ExactWorkspace ws;
+  const PointSource source(pb);
+  const Coef none{0.0, 0.0, -kInf, kInf};  // no extra row
+  ws.rows.resize(static_cast<size_t>(pb.limits.joints()) * 3);
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    source.at(nodes[k], k + 1 == nodes.size(), &ws.cur);
+    const JointPoint& jp = ws.cur;
+    const int c = add_rows(jp, pb.limits, 0.0, ws.rows.data());
+    const XRange xi = feasible_x_fast(ws.rows.data(), c, none, ws);
+    (*sd_all)[k] = xi.lo > xi.hi ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
+    double v = kInf;
+    for (int j = 0; j < pb.limits.joints(); ++j)
+      if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
+    (*sd_velocity)[k] = v;
+  }
+}
+
+SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, int checks) {
+  ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
+  return solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
+}
+
+SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, const std::vector<int>& checks_per) {
+  thread_local ExactWorkspace ws;
+  const int n = static_cast<int>(nodes.size());
+  const int N = n - 1;
+  ARM_THROW_UNLESS(static_cast<int>(checks_per.size()) == N,
+                   "solve_exact: " << checks_per.size() << " check counts for " << N << " intervals");
+  const int nj = pb.limits.joints();
+  const int kinds = pb.limits.acceleration ? 3 : 2;
+  ws.start.resize(N + 1);
+  ws.start[0] = 0;
+  for (int k = 0; k < N; ++k) {
+    ARM_THROW_UNLESS(checks_per[k] >= 1, "checks per interval " << checks_per[k] << " should be >= 1");
+    ws.start[k + 1] = ws.start[k] + static_cast<size_t>(checks_per[k] + 1) * nj * kinds;
+  }
+  ws.rows.resize(ws.start[N]);
+  ws.count.assign(N, 0);
+  ws.klo.assign(n, 0.0);
+  ws.khi.assign(n, 0.0);
+  ws.x.assign(n, 0.0);
+  ws.rest.assign(n, 0);
+  ws.rest.front() = ws.rest.back() = 1;
+  const auto& stops = pb.path.stops();
+  for (double st : stops)
+    for (int k = 0; k < n; ++k)
+      if (nodes[k] == st) ws.rest[k] = 1;
+
+  // rows of every interval in (x_i, u), limits at theta = m / checks (interval_points'
+  // points: the first point of an interval is the last of the one before, except at a stop)
+  const PointSource source(pb);
+  for (int k = 0; k < N; ++k) {
+    const int checks = checks_per[k];
+    const double ds = nodes[k + 1] - nodes[k];
+    Coef* rows = ws.rows.data() + ws.start[k];
+    int c = 0;
+    for (int m = 0; m <= checks; ++m) {
+      if (m == 0 && k > 0 && std::find(stops.begin(), stops.end(), nodes[k]) == stops.end()) {
+        c += add_rows(ws.prev, pb.limits, 0.0, rows + c);
+        continue;
+      }
+      const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
+      source.at(s, m == checks, &ws.cur);
+      c += add_rows(ws.cur, pb.limits, 2.0 * ds * m / checks, rows + c);
+      if (m == checks) std::swap(ws.prev, ws.cur);
+    }
+    ws.count[k] = c;
+  }
+
+  // backward pass: controllable sets, K_N = {0}; on any failure the reference solver
+  // (the same numbers, with the rows' tags) words the message
+  for (int k = N - 1; k >= 0; --k) {
+    const double ds = nodes[k + 1] - nodes[k];
+    const Coef reach{1.0, 2.0 * ds, ws.klo[k + 1], ws.khi[k + 1]};
+    const XRange xi = feasible_x_fast(ws.rows.data() + ws.start[k], ws.count[k], reach, ws);
+    const double tol = 1e-12 * std::max(1.0, std::abs(xi.hi));
+    if (xi.lo > xi.hi + tol || (ws.rest[k] && xi.lo > tol)) return solve_exact_reference(pb, nodes, checks_per);
+    ws.klo[k] = ws.rest[k] ? 0.0 : std::max(0.0, xi.lo);
+    ws.khi[k] = ws.rest[k] ? 0.0 : std::max(ws.klo[k], xi.hi);
+  }
+
+  // forward pass: greedy largest u, x_0 = 0
+  for (int k = 0; k < N; ++k) {
+    const double ds = nodes[k + 1] - nodes[k];
+    const double uhi = u_hi_fast(ws.rows.data() + ws.start[k], ws.count[k], ws.x[k]);
+    const double u = std::min(uhi, (ws.khi[k + 1] - ws.x[k]) / (2 * ds));
+    const double next = std::clamp(ws.x[k] + 2 * ds * u, ws.klo[k + 1], ws.khi[k + 1]);
+    ws.x[k + 1] = std::max(0.0, next);
+    if (ws.x[k] <= 0 && ws.x[k + 1] <= 0) return solve_exact_reference(pb, nodes, checks_per);
+  }
+  SolverOutput out;
+  out.profile.law = SegmentLaw::kPathAcceleration;
+  out.profile.s = nodes;
+  out.profile.sd.resize(n);
+  for (int k = 0; k < n; ++k) out.profile.sd[k] = std::sqrt(ws.x[k]);
   out.duration = profile_duration(pb, out.profile);
   out.solved = std::isfinite(out.duration);
   if (!out.solved) out.message = "the exact profile has an infinite duration";

@@ -17,7 +17,7 @@ namespace armstudy::studies::time_optimal {
 namespace {
 constexpr int kKeepSamples = 600;    // samples per solver kept for plots
 constexpr int kDenseTotal = 4000;    // least dense re-check points of a coarse solution
-constexpr int kMaxRefinements = 3;   // doublings of the exact solver's check points
+constexpr int kMaxRefinements = 3;   // doublings of the solvers' check points
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -32,7 +32,8 @@ std::string fixed(double v, int digits) {
 }
 
 // re-check a solver's profile densely and fill its result
-void finish(const Problem& pb, const SolverOutput& o, int per_interval, SolverResult* r) {
+void finish(const Problem& pb, const SolverOutput& o, int per_interval, SolverResult* r,
+            std::vector<double>* interval_worst = nullptr) {
   r->solved = o.solved;
   r->message = o.message;
   r->evaluations = o.evaluations;
@@ -42,7 +43,7 @@ void finish(const Problem& pb, const SolverOutput& o, int per_interval, SolverRe
   r->law = o.profile.law;
   r->node_s = o.profile.s;
   r->node_sd = o.profile.sd;
-  resample(pb, o.profile, per_interval, kKeepSamples, &r->samples, &r->violation, &r->node_t);
+  resample(pb, o.profile, per_interval, kKeepSamples, &r->samples, &r->violation, &r->node_t, interval_worst);
 }
 
 int dense_points(int intervals, int at_least) {
@@ -103,8 +104,13 @@ std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen:
          << pb.path.length() << " m)";
     return os.str();
   }
+  // singular poses: a probe whose elbow is clearly bent (|sin q2| > 1e-6 without angles)
+  // passes joint_point's test (|sin q2| >= 1e-9); any other goes through joint_point itself
+  const TipRateEvaluator rates(pb.chain, pb.path.tip(), pb.configuration);
   for (size_t k = 0; k < probe.size(); ++k)
     for (bool left : {false, true}) {
+      TipRates r;
+      if (rates.at(probe[k], left, &r) && std::abs(r.s2) > 1e-6) continue;
       PathTrouble trouble;
       if (!joint_point(pb.chain, pb.path.tip(), pb.configuration, probe[k], left, &trouble))
         return trouble.message;
@@ -112,10 +118,40 @@ std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen:
   return "";
 }
 
+// The smallest |sin q2| of Problem::at over points lo..hi of `s` (the last one from the
+// left), 1 on a joint-space path: the elbow's sine without angles (TipRateEvaluator) finds
+// the candidates within 1e-12 of the smallest, Problem::at gives their values.
+class MinSinQ2 {
+ public:
+  MinSinQ2(const Problem& pb, const std::vector<double>& s) : pb_(pb), s_(s), fast_(s.size(), 1.0) {
+    if (pb.path.joint_space()) return;
+    const TipRateEvaluator rates(pb.chain, pb.path.tip(), pb.configuration);
+    for (size_t k = 0; k < s.size(); ++k) {
+      TipRates r;
+      fast_[k] = rates.at(s[k], k + 1 == s.size(), &r) ? std::abs(r.s2) : 0.0;
+    }
+  }
+  double operator()(size_t lo, size_t hi) const {
+    if (pb_.path.joint_space()) return 1.0;
+    double least = std::numeric_limits<double>::infinity();
+    for (size_t k = lo; k <= hi; ++k) least = std::min(least, fast_[k]);
+    double out = std::numeric_limits<double>::infinity();
+    for (size_t k = lo; k <= hi; ++k)
+      if (fast_[k] <= least + 1e-12 * std::max(1.0, least))
+        out = std::min(out, std::abs(pb_.at(s_[k], k + 1 == s_.size()).sin_q2));
+    return out;
+  }
+
+ private:
+  const Problem& pb_;
+  const std::vector<double>& s_;
+  std::vector<double> fast_;
+};
+
 // The exact solution on the case's grid against the same problem on the grid with every
 // interval halved: the relative change and where it lies.
-GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact, int checks,
-                                 double tolerance) {
+GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
+                                 const std::vector<int>& checks, double tolerance) {
   GridConvergence g;
   g.computed = true;
   g.tolerance = tolerance;
@@ -130,13 +166,13 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact, i
   g.grid_points = n;
   g.refined_points = static_cast<int>(fine.size());
   g.duration = exact.duration;
-  const SolverOutput o = solve_exact(pb, fine, checks);
-  // |sin q2| along the path (at the refined grid's points)
-  std::vector<double> sin_q2(fine.size());
-  for (size_t k = 0; k < fine.size(); ++k) {
-    sin_q2[k] = std::abs(pb.at(fine[k], k + 1 == fine.size()).sin_q2);
-    g.path_min_sin_q2 = std::min(g.path_min_sin_q2, sin_q2[k]);
-  }
+  // both halves of interval k keep its check points per interval
+  std::vector<int> fine_checks(fine.size() - 1);
+  for (size_t i = 0; i < fine_checks.size(); ++i) fine_checks[i] = checks[i / 2];
+  const SolverOutput o = solve_exact(pb, fine, fine_checks);
+  // |sin q2| along the path (at the refined grid's points); the smallest over a range of them
+  const MinSinQ2 min_sin_q2(pb, fine);
+  g.path_min_sin_q2 = std::min(g.path_min_sin_q2, min_sin_q2(0, fine.size() - 1));
   std::ostringstream os;
   os.precision(4);
   if (!o.solved) {
@@ -182,7 +218,7 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact, i
   g.s_lo = grid[best_lo];
   g.s_hi = grid[best_hi + 1];
   for (int k = best_lo; k <= best_hi + 1; ++k) g.max_sd = std::max(g.max_sd, exact.node_sd[k]);
-  for (int i = 2 * best_lo; i <= 2 * best_hi + 2; ++i) g.min_sin_q2 = std::min(g.min_sin_q2, sin_q2[i]);
+  g.min_sin_q2 = std::min(g.min_sin_q2, min_sin_q2(2 * best_lo, 2 * best_hi + 2));
   os.precision(7);
   os << "duration " << exact.duration << " s on " << n << " grid points, " << o.duration
      << " s on " << g.refined_points << " (every interval halved): relative change ";
@@ -272,28 +308,53 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   // exact solver
   report(0.05, "exact solver (reachability)");
   const std::vector<double> grid = make_nodes(pb.path, spec.exact.grid_points - 1);
-  int exact_checks = spec.exact.checks_per_interval;
+  std::vector<int> exact_checks(grid.size() - 1, spec.exact.checks_per_interval);
   {
     // limits hold at the check points of each interval; between them a limit may be
-    // overshot by O(h^2). The checks are doubled until the dense resampling meets every
-    // limit to kExactTolerance (at most kMaxRefinements times); run time includes it.
+    // overshot by O(h^2). While the dense resampling of the whole answer finds a limit
+    // overshot by more than kExactTolerance (at most kMaxRefinements times), the check
+    // points are doubled where it fails (first in the intervals over the tolerance only,
+    // then in every interval with any overshoot and its neighbours) and the grid solved
+    // again; run time includes it.
     SolverResult r;
     r.name = "exact";
     r.intervals = static_cast<int>(grid.size()) - 1;
     const auto t0 = std::chrono::steady_clock::now();
-    int checks = spec.exact.checks_per_interval;
-    SolverOutput o = solve_exact(pb, grid, checks);
-    finish(pb, o, spec.resample_per_interval, &r);
+    std::vector<double> interval_worst;
+    SolverOutput o = solve_exact(pb, grid, exact_checks);
+    finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance; ++k) {
-      checks *= 2;
-      o = solve_exact(pb, grid, checks);
-      finish(pb, o, spec.resample_per_interval, &r);
+      bool refined = false;
+      // (a re-solve can move the overshoot next door: hence the wider second round)
+      const double over = k == 0 ? kExactTolerance : 0.0;
+      const int around = k == 0 ? 0 : 1;
+      const int N = static_cast<int>(exact_checks.size());
+      std::vector<char> mark(N, 0);
+      for (int i = 0; i < N; ++i)
+        if (interval_worst[i] > over)
+          for (int d = std::max(0, i - around); d <= std::min(N - 1, i + around); ++d) mark[d] = 1;
+      for (int i = 0; i < N; ++i)
+        if (mark[i]) {
+          exact_checks[i] *= 2;
+          refined = true;
+        }
+      if (!refined) exact_checks[r.violation.interval] *= 2;  // (its excess by the closed form rounds below)
+      o = solve_exact(pb, grid, exact_checks);
+      finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     }
     r.run_time = seconds_since(t0);
-    exact_checks = checks;
+    const int base = spec.exact.checks_per_interval;
+    int more = 0, most = base;
+    for (int c : exact_checks) {
+      if (c > base) ++more;
+      most = std::max(most, c);
+    }
     r.method = "reachability analysis (backward controllable sets, greedy forward pass) on " +
                std::to_string(spec.exact.grid_points) + " grid points, limits enforced at " +
-               std::to_string(checks + 1) + " points of every interval";
+               std::to_string(base + 1) + " points of every interval";
+    if (more > 0)
+      r.method += " and at up to " + std::to_string(most + 1) + " in the " + std::to_string(more) +
+                  " interval(s) where the dense re-check found a limit overshot between them";
     res.solvers.push_back(r);
     if (!o.solved) {
       res.status = Status::kUnsolvable;

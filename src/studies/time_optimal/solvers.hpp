@@ -26,6 +26,18 @@ struct SolverOutput {
 /// at `checks` + 1 points of every interval (constant s'' per interval). Rest at both ends
 /// and at every stop. Cost O(nodes * rows^2) with rows ~ 4-6 per check point.
 SolverOutput solve_exact(const Problem& problem, const std::vector<double>& nodes, int checks);
+/// The same with `checks[k]` + 1 points in interval k (one entry per interval, each >= 1):
+/// more of them only where the dense re-check finds a limit overshot.
+SolverOutput solve_exact(const Problem& problem, const std::vector<double>& nodes,
+                         const std::vector<int>& checks);
+
+/// solve_exact's plain implementation: every row with the tag of its limit, the arrays
+/// allocated per solve. solve_exact gives the same numbers (the tests compare the two
+/// bitwise) without allocating once its per-thread arrays have grown, and words its
+/// failures through this one.
+SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes, int checks);
+SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes,
+                                   const std::vector<int>& checks);
 
 /// Maximum velocity curve at `nodes`: the largest s' (m/s) at which some s'' meets every
 /// limit at that point (`sd_all`), and the s' allowed by the velocity limits alone.

@@ -69,4 +69,21 @@ void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const c
   (*c)[0] = d.gravity * (ct1 * (d.X1 + d.L1 * d.m2) - st1 * d.Y1) + (*c)[1];
 }
 
+void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const core::JointVector& qd,
+                      const core::JointVector& qdd, core::JointVector* tau) {
+  const double c2 = std::cos(q[1]), s2 = std::sin(q[1]);
+  const double g = d.A * c2 - d.B * s2;
+  const double gp = -d.A * s2 - d.B * c2;
+  const double m11 = d.a11 + 2.0 * g, m12 = d.a12 + g, m22 = d.a22;
+  tau->resize(2);
+  (*tau)[0] = m11 * qdd[0] + m12 * qdd[1] + gp * (2.0 * qd[0] * qd[1] + qd[1] * qd[1]);
+  (*tau)[1] = m12 * qdd[0] + m22 * qdd[1] - gp * qd[0] * qd[0];
+  if (d.gravity == 0.0) return;
+  const double t1 = d.base_angle + q[0], t12 = t1 + q[1];
+  const double ct1 = std::cos(t1), st1 = std::sin(t1), ct12 = std::cos(t12), st12 = std::sin(t12);
+  const double g2 = d.gravity * (ct12 * d.X2 - st12 * d.Y2);
+  (*tau)[1] += g2;
+  (*tau)[0] += d.gravity * (ct1 * (d.X1 + d.L1 * d.m2) - st1 * d.Y1) + g2;
+}
+
 }  // namespace armstudy::studies::time_optimal

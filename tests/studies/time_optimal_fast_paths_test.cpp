@@ -1,0 +1,219 @@
+// The time-optimal study's fast paths keep its answers: solve_exact (no allocation, rows
+// without tags) gives solve_exact_reference's numbers bitwise and its failure messages word
+// for word, on tip paths (line, polyline, spline, acceleration limits, a rotated base with
+// gravity) and on a 3-link joint-space path; the joint points of a tip path equal core's
+// generic chain (forward kinematics, the Jacobian and the generic recursion) to 1e-12 relative,
+// and so do the dense re-check's joint rates without angles (TipRateEvaluator) and its
+// closed-form torques; resample gives resample_reference's samples and limit uses bitwise.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/dynamics.hpp"
+#include "core/kinematics.hpp"
+#include "studies/time_optimal/profile.hpp"
+#include "studies/time_optimal/solve.hpp"
+#include "studies/time_optimal/solvers.hpp"
+#include "testing/arms.hpp"
+#include "testing/three_link.hpp"
+
+namespace armstudy::studies::time_optimal {
+namespace {
+
+core::PlanarChain rich_arm(double gravity) {
+  core::PlanarChain c;
+  c.links = {{0.5, 2.0, 0.2, 0.03, 0.04, true}, {0.4, 1.5, 0.25, -0.02, 0.02, true}};
+  c.point_masses = {{1, 0.4, 0.01, 0.7}, {0, 0.3, -0.02, 0.2}};
+  c.gravity = gravity;
+  c.base_angle = 0.4;
+  c.base = Eigen::Vector2d(0.1, 0.2);
+  return core::make_chain(c);
+}
+
+Problem tip_problem(const core::PlanarChain& chain, PathKind kind, std::vector<Eigen::Vector2d> pts,
+                    core::JointVector v, core::JointVector t, std::optional<core::JointVector> acc) {
+  PathSpec ps;
+  ps.kind = kind;
+  ps.points = std::move(pts);
+  return Problem{chain, PathGeometry(ps), 1, Limits{v, t, acc}};
+}
+
+std::vector<Problem> problems() {
+  std::vector<Problem> out;
+  out.push_back(tip_problem(default_arm(1.0, 1.0), PathKind::kLine, {{1.6, 0.4}, {0.4, 1.6}},
+                            joint_pair(2, 2), joint_pair(10, 10), std::nullopt));
+  out.push_back(tip_problem(default_arm(), PathKind::kPolyline, {{0.3, 0.1}, {0.1, 0.6}, {-0.3, 0.5}},
+                            joint_pair(3, 4), joint_pair(10, 4), joint_pair(40, 60)));
+  out.push_back(tip_problem(default_arm(), PathKind::kSpline,
+                            {{0.5, 0.2}, {0.3, 0.5}, {-0.1, 0.6}, {-0.4, 0.3}}, joint_pair(3, 4),
+                            joint_pair(10, 4), std::nullopt));
+  out.push_back(tip_problem(rich_arm(9.81), PathKind::kLine, {{0.55, 0.35}, {0.05, 0.8}},
+                            joint_pair(3, 4), joint_pair(40, 20), std::nullopt));
+  const Spec three = testing::three_link_spec();  // the bundled 3-link case's joint-space spline
+  out.push_back(make_problem(three, Limits{three.velocity_limit, three.torque_limit, three.acceleration_limit}));
+  return out;
+}
+
+TEST(TimeOptimalFastPaths, SolveExactGivesTheReferenceNumbersBitwise) {
+  for (const Problem& pb : problems()) {
+    for (int intervals : {7, 200}) {
+      const std::vector<double> nodes = make_nodes(pb.path, intervals);
+      for (int checks : {1, 2, 5}) {
+        const SolverOutput fast = solve_exact(pb, nodes, checks);
+        const SolverOutput ref = solve_exact_reference(pb, nodes, checks);
+        ASSERT_TRUE(ref.solved) << ref.message;
+        ASSERT_TRUE(fast.solved) << fast.message;
+        EXPECT_EQ(fast.duration, ref.duration);
+        ASSERT_EQ(fast.profile.sd.size(), ref.profile.sd.size());
+        for (size_t k = 0; k < ref.profile.sd.size(); ++k) ASSERT_EQ(fast.profile.sd[k], ref.profile.sd[k]) << k;
+      }
+    }
+  }
+}
+
+void expect_same_samples(const MotionSamples& a, const MotionSamples& b) {
+  EXPECT_EQ(a.s, b.s);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_EQ(a.sd, b.sd);
+  EXPECT_EQ(a.sdd, b.sdd);
+  EXPECT_EQ(a.q, b.q);
+  EXPECT_EQ(a.qd, b.qd);
+  EXPECT_EQ(a.qdd, b.qdd);
+  EXPECT_EQ(a.tau, b.tau);
+}
+
+void expect_same_violation(const Violation& a, const Violation& b) {
+  for (int kind = 0; kind < 3; ++kind)
+    for (int j = 0; j < core::kMaxLinks; ++j) EXPECT_EQ(a.ratio[kind][j], b.ratio[kind][j]) << kind << " " << j;
+  EXPECT_EQ(a.worst, b.worst);
+  EXPECT_EQ(a.joint, b.joint);
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.s, b.s);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_EQ(a.interval, b.interval);
+  EXPECT_EQ(a.text, b.text);
+}
+
+TEST(TimeOptimalFastPaths, ResampleGivesTheReferenceSamplesAndLimitUsesBitwise) {
+  // the exact profile on coarse grids with one check per interval overshoots its limits
+  // between the nodes: the dense re-check's worst points are away from the nodes
+  int overshot = 0;
+  for (const Problem& pb : problems()) {
+    for (int intervals : {9, 120}) {
+      const SolverOutput o = solve_exact(pb, make_nodes(pb.path, intervals), 1);
+      ASSERT_TRUE(o.solved) << o.message;
+      for (int per : {1, 16}) {
+        MotionSamples fs, rs;
+        Violation fv, rv;
+        std::vector<double> ft, rt, fw, rw;
+        resample(pb, o.profile, per, 50, &fs, &fv, &ft, &fw);
+        resample_reference(pb, o.profile, per, 50, &rs, &rv, &rt, &rw);
+        expect_same_samples(fs, rs);
+        expect_same_violation(fv, rv);
+        EXPECT_EQ(ft, rt);
+        ASSERT_EQ(fw.size(), rw.size());
+        for (size_t k = 0; k < rw.size(); ++k) EXPECT_NEAR(fw[k], rw[k], 1e-12) << k;
+        if (rv.worst > kExactTolerance) ++overshot;
+      }
+    }
+  }
+  EXPECT_GT(overshot, 4);
+}
+
+TEST(TimeOptimalFastPaths, MaximumVelocityCurveIsTheTaggedRowsOne) {
+  for (const Problem& pb : problems()) {
+    const std::vector<double> nodes = make_nodes(pb.path, 150);
+    std::vector<double> all, vel;
+    max_velocity_curve(pb, nodes, &all, &vel);
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      const JointPoint jp = pb.at(nodes[k], k + 1 == nodes.size());
+      std::vector<Row> rows;
+      append_rows(jp, pb.limits, 0.0, static_cast<int>(k), &rows);
+      const XInterval xi = feasible_x(rows);
+      ASSERT_EQ(all[k], xi.empty() ? 0.0 : std::sqrt(std::max(0.0, xi.hi))) << k;
+      double v = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < pb.limits.joints(); ++j)
+        if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
+      ASSERT_EQ(vel[k], v) << k;
+    }
+  }
+}
+
+TEST(TimeOptimalFastPaths, SolveExactWithMoreChecksInSomeIntervalsIsTheReferences) {
+  for (const Problem& pb : problems()) {
+    const std::vector<double> nodes = make_nodes(pb.path, 60);
+    std::vector<int> checks(60, 2);
+    for (int k = 10; k < 20; ++k) checks[k] = 8;
+    checks[41] = 4;
+    const SolverOutput fast = solve_exact(pb, nodes, checks);
+    const SolverOutput ref = solve_exact_reference(pb, nodes, checks);
+    ASSERT_TRUE(ref.solved) << ref.message;
+    EXPECT_EQ(fast.profile.sd, ref.profile.sd);
+    // more check points only add limits: never faster than with fewer, never slower than with
+    // the most everywhere
+    EXPECT_GE(fast.duration, solve_exact(pb, nodes, 2).duration);
+    EXPECT_LE(fast.duration, solve_exact(pb, nodes, 8).duration);
+  }
+}
+
+TEST(TimeOptimalFastPaths, SolveExactFailsWithTheReferenceMessage) {
+  // torque too small to hold the arm against gravity, and velocity limits of zero
+  std::vector<Problem> bad;
+  bad.push_back(tip_problem(rich_arm(9.81), PathKind::kLine, {{0.55, 0.35}, {0.05, 0.8}}, joint_pair(3, 4),
+                            joint_pair(0.5, 0.5), std::nullopt));
+  bad.push_back(tip_problem(default_arm(), PathKind::kLine, {{0.3, 0.1}, {-0.1, 0.8}}, joint_pair(0, 4),
+                            joint_pair(10, 4), std::nullopt));
+  for (const Problem& pb : bad) {
+    const std::vector<double> nodes = make_nodes(pb.path, 50);
+    const SolverOutput fast = solve_exact(pb, nodes, 2);
+    const SolverOutput ref = solve_exact_reference(pb, nodes, 2);
+    EXPECT_FALSE(ref.solved);
+    EXPECT_FALSE(fast.solved);
+    EXPECT_FALSE(ref.message.empty());
+    EXPECT_EQ(fast.message, ref.message);
+  }
+}
+
+TEST(TimeOptimalFastPaths, TipPathJointPointsEqualTheGenericChainTo1e12) {
+  // q checked by forward kinematics, q' by the Jacobian, a, b, c by the generic recursion
+  for (const Problem& pb : problems()) {
+    if (pb.path.joint_space()) continue;
+    const PointSource source(pb);
+    const std::vector<double> nodes = make_nodes(pb.path, 300);
+    for (double s : nodes) {
+      JointPoint jp;
+      source.at(s, false, &jp);
+      const Eigen::Vector2d tip = core::end_effector(pb.chain, jp.q);
+      ASSERT_NEAR((tip - pb.path.tip().at(s).p).norm(), 0.0, 1e-12) << s;
+      const core::PointJacobian J = core::end_effector_jacobian(pb.chain, jp.q);
+      const PathPoint pp = pb.path.tip().at(s);
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(J * jp.dq), pp.dp, 1e-12)) << s;
+      const core::JointVector zero = core::JointVector::Zero(2);
+      const core::JointVector c_ref = core::inverse_dynamics(pb.chain, jp.q, zero, zero);
+      ASSERT_TRUE(testing::near_rel_vec(jp.a, core::mass_matrix(pb.chain, jp.q) * jp.dq, 1e-12)) << s;
+      ASSERT_TRUE(testing::near_rel_vec(jp.b, core::inverse_dynamics(pb.chain, jp.q, jp.dq, jp.ddq) - c_ref, 1e-12))
+          << s;
+      ASSERT_TRUE(testing::near_rel_vec(jp.c, c_ref, 1e-12)) << s;
+      // the dense re-check's scan: rates without angles, torques from their cosines and sines
+      const TipRateEvaluator rates(pb.chain, pb.path.tip(), pb.configuration);
+      TipRates r;
+      ASSERT_TRUE(rates.at(s, false, &r)) << s;
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(r.dq[0], r.dq[1]), jp.dq, 1e-12)) << s;
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(r.ddq[0], r.ddq[1]), jp.ddq, 1e-12)) << s;
+      const double t1 = pb.chain.base_angle + jp.q[0];
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector4d(r.c1, r.s1, r.c2, r.s2),
+                                        Eigen::Vector4d(std::cos(t1), std::sin(t1), std::cos(jp.q[1]), std::sin(jp.q[1])),
+                                        1e-12)) << s;
+      const double qd[2] = {0.7 * r.dq[0], 0.7 * r.dq[1]};
+      const double qdd[2] = {0.3 * r.dq[0] + 0.49 * r.ddq[0], 0.3 * r.dq[1] + 0.49 * r.ddq[1]};
+      double tau[2];
+      inverse_dynamics_cs(make_two_link_dynamics(pb.chain), r.c1, r.s1, r.c2, r.s2, qd, qdd, tau);
+      const core::JointVector tau_ref = core::inverse_dynamics(pb.chain, jp.q, jp.dq * 0.7, jp.dq * 0.3 + jp.ddq * 0.49);
+      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(tau[0], tau[1]), tau_ref, 1e-12)) << s;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace armstudy::studies::time_optimal
