@@ -13,12 +13,14 @@
 #include <chrono>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
 #include "app/json_numbers.hpp"
 #include "app/provenance.hpp"
 #include "scene/osmesa_context.hpp"
+#include "scene/phase_times.hpp"
 #include "report/case_report.hpp"
 #include "report/scratch_dir.hpp"
 #include "version.hpp"
@@ -147,7 +149,10 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     fs::create_directories(tmp_dir);
 
     // solve
+    scene::take_phase_times();  // ARMSTUDY_PHASE_TIMES: this case's phases only
+    std::optional<scene::PhaseScope> solve_phase(std::in_place, "solve");
     const studies::Status status = c.run->solve(progress);
+    solve_phase.reset();
     const auto checks = c.run->checks();
     nlohmann::json j = results_header(c.info, status, c.run->message(), checks);
     j[c.info.study] = c.run->results();
@@ -171,12 +176,15 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     std::vector<std::string> frames;
     if (status == studies::Status::kSolved && options.render) {
       if (progress) progress(0.99, "rendering");
+      scene::PhaseScope phase("render");
       frames = c.run->render(tmp_dir, c.info);
     }
     j["frames"] = frames;
     // files other tools open (model.xml, motion CSVs), listed under "files" as well
+    std::optional<scene::PhaseScope> exports_phase(std::in_place, "exports");
     j["exports"] = status == studies::Status::kSolved ? c.run->write_exports(tmp_dir, c.info)
                                                       : nlohmann::json::array();
+    exports_phase.reset();
     j["animations"] = collect_animations(tmp_dir);
     if (!frames.empty()) {
       const scene::GlInfo gl = scene::gl_info();
@@ -185,7 +193,10 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       if (const size_t at = gl.version.find("Mesa "); at != std::string::npos)
         j["provenance"]["mesa_version"] = gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
     }
-    report::write_case_report(tmp_dir, c.info, j, c.entry->report);
+    {
+      scene::PhaseScope phase("report");
+      report::write_case_report(tmp_dir, c.info, j, c.entry->report);
+    }
     // results.json last, listing every file written beside it with its sha256
     j["files"] = list_files(tmp_dir, "results.json");
     write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
@@ -212,6 +223,9 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     throw;
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (scene::phase_times_enabled())
+    std::fprintf(stderr, "phase-times: %s: %.3f s: %s\n", c.info.name.c_str(), outcome.seconds,
+                 scene::take_phase_times().c_str());
   return outcome;
 }
 
@@ -240,7 +254,11 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
           const fs::path dir = report::scratch_dir(options.out_dir) / "pdf";
           fs::create_directories(dir);
           const fs::path printed = dir / (todo[i].filename().string() + ".pdf");
+          const auto p0 = std::chrono::steady_clock::now();
           report::print_pdf(todo[i] / "index.html", printed);
+          if (scene::phase_times_enabled())
+            std::fprintf(stderr, "phase-times: %s: pdf %.3f s\n", todo[i].filename().c_str(),
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count());
           if (::rename(printed.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
             const int e = errno;
             std::error_code ec;

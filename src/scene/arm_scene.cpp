@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "scene/mjcf_writer.hpp"
+#include "scene/polyline.hpp"
 
 namespace armstudy::scene {
 namespace {
@@ -70,6 +71,15 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   s.view = v;
   const double cx = 0.5 * (v.x_min + v.x_max), cy = 0.5 * (v.y_min + v.y_max);
   const double half = 2.0 * std::max(v.x_max - v.x_min, v.y_max - v.y_min);
+  // a finely sampled task path (a thousand points) as the few segments that draw the same
+  // picture: every dropped point within a tenth of a pixel of the line drawn
+  {
+    std::vector<Eigen::Vector2d> drawn;
+    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min, decor.offwidth,
+                                          decor.offheight);
+    for (const size_t k : simplify_polyline(task, tol)) drawn.push_back(task[k]);
+    task = std::move(drawn);
+  }
 
   MjcfOptions o;
   o.model_name = "horizontal_arm";
