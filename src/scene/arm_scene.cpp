@@ -40,6 +40,12 @@ std::string shadow_light(double height) {
   return x.str();
 }
 
+// the spacing of a plane's rendering grid (its third size): MuJoCo draws a plane as a grid
+// of quads, lit per vertex; the lights here are directional (the headlight and the sun), so a
+// plane is lit alike at every vertex and a 4 x 4 grid draws what 0.01 m quads did (up to
+// 200 x 200 of them, each drawn again for every shadow pass)
+double plane_grid(double half) { return 0.5 * half; }
+
 // a narrow field of view: nearly orthographic, little parallax between drawing heights
 constexpr double kFovy = 20;
 
@@ -103,7 +109,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   auto w = xml();
   w << shadow_light(0.5 * half);
   w << "    <geom name=\"table\" type=\"plane\" pos=\"" << cx << " " << cy << " " << -3 * r
-    << "\" size=\"" << half << " " << half << " 0.01\" material=\"table\"/>\n";
+    << "\" size=\"" << half << " " << half << " " << plane_grid(half) << "\" material=\"table\"/>\n";
   // root: pedestal and a cross on the table
   w << "    <geom name=\"root\" type=\"cylinder\" pos=\"" << b.x() << " " << b.y() << " "
     << -1.5 * r << "\" size=\"" << 2.2 * r << " " << 1.4 * r
@@ -200,7 +206,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   w << shadow_light(0.5 * half);
   w << "    <geom name=\"wall\" type=\"plane\" pos=\"" << cx << " " << cy << " "
     << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half
-    << " 0.01\" material=\"wall\"/>\n";
+    << " " << plane_grid(half) << "\" material=\"wall\"/>\n";
   // base: a pedestal under joint 1 and a floor line
   w << "    <geom name=\"pedestal\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 2.5 * r
     << " " << -2 * r << "\" size=\"" << 2.2 * r << " " << 2.5 * r << " " << r
