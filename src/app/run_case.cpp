@@ -244,38 +244,36 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
       }
     std::sort(todo.begin(), todo.end());
     report::remove_stale_profiles();  // what killed runs' browsers left in /tmp
-    std::atomic<size_t> next{0};
-    std::mutex mu;
-    auto worker = [&] {
-      for (size_t i = next++; i < todo.size(); i = next++) {
-        try {
-          // printed in the scratch folder, then renamed into the case folder: a kill never
-          // leaves a half-written report.pdf (or its temporary file) beside the report
-          const fs::path dir = report::scratch_dir(options.out_dir) / "pdf";
-          fs::create_directories(dir);
-          const fs::path printed = dir / (todo[i].filename().string() + ".pdf");
-          const auto p0 = std::chrono::steady_clock::now();
-          report::print_pdf(todo[i] / "index.html", printed);
-          if (scene::phase_times_enabled())
-            std::fprintf(stderr, "phase-times: %s: pdf %.3f s\n", todo[i].filename().c_str(),
-                         std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count());
-          if (::rename(printed.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
-            const int e = errno;
-            std::error_code ec;
-            fs::remove(printed, ec);
-            throw std::runtime_error(report::system_error_text("write", todo[i] / "report.pdf", e));
-          }
-        } catch (const std::exception& e) {
-          std::lock_guard<std::mutex> lock(mu);
-          problems.push_back(todo[i].filename().string() + ": no report.pdf: " + e.what());
-        }
+    // one browser prints every page, `jobs` at a time, into the scratch folder; each PDF
+    // is then renamed into its case folder: a kill never leaves a half-written report.pdf
+    // (or its temporary file) beside the report
+    std::vector<report::PdfJob> prints;
+    for (const fs::path& d : todo) {
+      const fs::path dir = report::scratch_dir(options.out_dir) / "pdf";
+      fs::create_directories(dir);
+      prints.push_back({d / "index.html", dir / (d.filename().string() + ".pdf")});
+    }
+    const auto p0 = std::chrono::steady_clock::now();
+    std::vector<std::string> failed(prints.size());
+    try {
+      failed = report::print_pdfs(prints, std::max(1, jobs));
+    } catch (const std::exception& e) {  // no Chromium: every page says so
+      for (std::string& f : failed) f = e.what();
+    }
+    if (scene::phase_times_enabled())
+      std::fprintf(stderr, "phase-times: pdf: %zu pages %.3f s\n", prints.size(),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count());
+    for (size_t i = 0; i < todo.size(); ++i) {
+      if (failed[i].empty() && ::rename(prints[i].pdf.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
+        const int e = errno;
+        std::error_code ec;
+        fs::remove(prints[i].pdf, ec);
+        problems.push_back(todo[i].filename().string() + ": no report.pdf: " +
+                           report::system_error_text("write", todo[i] / "report.pdf", e));
+      } else if (!failed[i].empty()) {
+        problems.push_back(todo[i].filename().string() + ": no report.pdf: " + failed[i]);
       }
-    };
-    std::vector<std::thread> pool;
-    const size_t n = std::min<size_t>(std::max(1, jobs), std::max<size_t>(1, todo.size()));
-    for (size_t k = 1; k < n; ++k) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    }
   }
   try {
     report::write_index(options.out_dir);
