@@ -13,12 +13,14 @@
 #include <chrono>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
 #include "app/json_numbers.hpp"
 #include "app/provenance.hpp"
 #include "scene/osmesa_context.hpp"
+#include "scene/phase_times.hpp"
 #include "report/case_report.hpp"
 #include "report/scratch_dir.hpp"
 #include "version.hpp"
@@ -146,7 +148,10 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     fs::create_directories(tmp_dir);
 
     // solve
+    scene::take_phase_times();  // ARMSTUDY_PHASE_TIMES: this case's phases only
+    std::optional<scene::PhaseScope> solve_phase(std::in_place, "solve");
     const studies::Status status = c.run->solve(progress);
+    solve_phase.reset();
     const auto checks = c.run->checks();
     report::ResultsRecord r = results_header(c.info, status, c.run->message(), checks);
     const nlohmann::json section = c.run->results();
@@ -166,12 +171,15 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     // render and report only what was solved
     if (status == studies::Status::kSolved && options.render) {
       if (progress) progress(0.99, "rendering");
+      scene::PhaseScope phase("render");
       r.frames = c.run->render(tmp_dir, c.info);
     }
     // files other tools open (model.xml, motion CSVs), listed under "files" as well
+    std::optional<scene::PhaseScope> exports_phase(std::in_place, "exports");
     if (status == studies::Status::kSolved)
       r.exports = report::from_json<std::vector<report::ExportRecord>>(c.run->write_exports(tmp_dir, c.info),
                                                                        "/exports");
+    exports_phase.reset();
     r.animations = collect_animations(tmp_dir);
     if (!r.frames.empty()) {
       const scene::GlInfo gl = scene::gl_info();
@@ -182,7 +190,10 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     }
     nlohmann::json j = report::write_record(r);
     j[c.info.study] = section;
-    report::write_case_report(tmp_dir, c.info, j, c.entry->report, c.entry->answer);
+    {
+      scene::PhaseScope phase("report");
+      report::write_case_report(tmp_dir, c.info, j, c.entry->report, c.entry->answer);
+    }
     // results.json last, listing every file written beside it with its sha256
     j["files"] = report::to_json(list_files(tmp_dir, "results.json"));
     write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
@@ -209,6 +220,9 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     throw;
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (scene::phase_times_enabled())
+    std::fprintf(stderr, "phase-times: %s: %.3f s: %s\n", c.info.name.c_str(), outcome.seconds,
+                 scene::take_phase_times().c_str());
   return outcome;
 }
 
@@ -227,34 +241,36 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
       }
     std::sort(todo.begin(), todo.end());
     report::remove_stale_profiles();  // what killed runs' browsers left in /tmp
-    std::atomic<size_t> next{0};
-    std::mutex mu;
-    auto worker = [&] {
-      for (size_t i = next++; i < todo.size(); i = next++) {
-        try {
-          // printed in the scratch folder, then renamed into the case folder: a kill never
-          // leaves a half-written report.pdf (or its temporary file) beside the report
-          const fs::path dir = report::scratch_dir(options.out_dir) / "pdf";
-          fs::create_directories(dir);
-          const fs::path printed = dir / (todo[i].filename().string() + ".pdf");
-          report::print_pdf(todo[i] / "index.html", printed);
-          if (::rename(printed.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
-            const int e = errno;
-            std::error_code ec;
-            fs::remove(printed, ec);
-            throw std::runtime_error(report::system_error_text("write", todo[i] / "report.pdf", e));
-          }
-        } catch (const std::exception& e) {
-          std::lock_guard<std::mutex> lock(mu);
-          problems.push_back(todo[i].filename().string() + ": no report.pdf: " + e.what());
-        }
+    // one browser prints every page, `jobs` at a time, into the scratch folder; each PDF
+    // is then renamed into its case folder: a kill never leaves a half-written report.pdf
+    // (or its temporary file) beside the report
+    std::vector<report::PdfJob> prints;
+    for (const fs::path& d : todo) {
+      const fs::path dir = report::scratch_dir(options.out_dir) / "pdf";
+      fs::create_directories(dir);
+      prints.push_back({d / "index.html", dir / (d.filename().string() + ".pdf")});
+    }
+    const auto p0 = std::chrono::steady_clock::now();
+    std::vector<std::string> failed(prints.size());
+    try {
+      failed = report::print_pdfs(prints, std::max(1, jobs));
+    } catch (const std::exception& e) {  // no Chromium: every page says so
+      for (std::string& f : failed) f = e.what();
+    }
+    if (scene::phase_times_enabled())
+      std::fprintf(stderr, "phase-times: pdf: %zu pages %.3f s\n", prints.size(),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count());
+    for (size_t i = 0; i < todo.size(); ++i) {
+      if (failed[i].empty() && ::rename(prints[i].pdf.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
+        const int e = errno;
+        std::error_code ec;
+        fs::remove(prints[i].pdf, ec);
+        problems.push_back(todo[i].filename().string() + ": no report.pdf: " +
+                           report::system_error_text("write", todo[i] / "report.pdf", e));
+      } else if (!failed[i].empty()) {
+        problems.push_back(todo[i].filename().string() + ": no report.pdf: " + failed[i]);
       }
-    };
-    std::vector<std::thread> pool;
-    const size_t n = std::min<size_t>(std::max(1, jobs), std::max<size_t>(1, todo.size()));
-    for (size_t k = 1; k < n; ++k) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    }
   }
   try {
     report::write_index(options.out_dir, index_studies());

@@ -96,6 +96,23 @@ std::string find_chromium();
 void print_pdf(const std::filesystem::path& html, const std::filesystem::path& pdf,
                double timeout_s = 120);
 
+/// One page to print: its HTML and the PDF to write.
+struct PdfJob {
+  std::filesystem::path html;
+  std::filesystem::path pdf;
+};
+
+/// Prints every page of `jobs` as print_pdf does, through ONE headless Chromium for all of
+/// them (DevTools protocol over --remote-debugging-pipe, Page.printToPDF with the options of
+/// --print-to-pdf: backgrounds, CSS page size, no header or footer), up to `parallel` pages
+/// at a time in their own tabs; each PDF written through a temporary file. A page that does
+/// not print within `timeout_s` s of its start fails alone. If the browser does not speak
+/// the protocol (or dies), the pages it has not printed go through print_pdf one by one.
+/// Returns one message per job: empty when printed, else why not.
+/// @throws PdfError when Chromium is missing.
+std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel,
+                                    double timeout_s = 120);
+
 /// Kills the process group of every browser printing now and removes their profiles (the
 /// clean-up of a signal; the prints then fail).
 void kill_browsers();

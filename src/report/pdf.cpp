@@ -1,13 +1,19 @@
-// html -> pdf through headless chromium, one fresh profile per print
+// html -> pdf through headless chromium: one fresh profile per browser; one browser per page
+// (print_pdf, --print-to-pdf) or one for all pages of a run (print_pdfs, DevTools protocol)
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/file.h>
 #include <sys/prctl.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -15,11 +21,15 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "report/part_name.hpp"
+#include "report/scratch_dir.hpp"
 
 #include "report/case_report.hpp"
 
@@ -124,6 +134,11 @@ struct BrowserGroup {
 
 }  // namespace
 
+namespace {
+std::atomic<bool> g_stopping{false};
+bool stopping() { return g_stopping.load(); }
+}  // namespace
+
 std::string find_chromium() {
   if (const char* env = std::getenv("ARMSTUDY_CHROMIUM"); env && *env)
     return is_executable(env) ? env : "";
@@ -138,13 +153,21 @@ std::string find_chromium() {
   return "";
 }
 
-void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
+namespace {
+std::string chromium_or_throw() {
   const std::string chromium = find_chromium();
   if (chromium.empty())
     throw PdfError(
         "--pdf needs headless Chromium, and none was found (looked for $ARMSTUDY_CHROMIUM, then "
         "chromium, chromium-browser and google-chrome on PATH); install it with "
         "'apt-get install chromium' or set ARMSTUDY_CHROMIUM to the browser's path");
+  return chromium;
+}
+}  // namespace
+
+void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
+  const std::string chromium = chromium_or_throw();
+  if (stopping()) throw PdfError("stopped by a signal");
   if (!fs::exists(html)) throw PdfError("cannot print " + html.string() + ": no such file");
 
   // a fresh profile: no state shared between prints or with a user's browser
@@ -254,7 +277,365 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
   }
 }
 
+namespace {
+
+std::string base64_decode(const std::string& in) {
+  static const auto table = [] {
+    std::array<int, 256> t{};
+    t.fill(-1);
+    const char* a = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    for (int i = 0; i < 64; ++i) t[static_cast<unsigned char>(a[i])] = i;
+    return t;
+  }();
+  std::string out;
+  out.reserve(in.size() / 4 * 3);
+  unsigned acc = 0;
+  int bits = 0;
+  for (unsigned char c : in) {
+    const int v = table[c];
+    if (v < 0) continue;  // '=' padding, line breaks
+    acc = (acc << 6) | static_cast<unsigned>(v);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out += static_cast<char>((acc >> bits) & 0xFF);
+    }
+  }
+  return out;
+}
+
+// One headless Chromium driven over --remote-debugging-pipe: it reads DevTools messages
+// (JSON, each ended by '\0') on fd 3 and writes its answers and events on fd 4; both are
+// one end of a socket pair here (a socket, so that a browser that died is an error, not
+// SIGPIPE). Killed with its process group when this goes out of scope.
+class PipeBrowser {
+ public:
+  explicit PipeBrowser(const std::string& chromium) {
+    if (stopping()) throw PdfError("stopped by a signal");
+    const fs::path log = profile_.path / "chromium.log";
+    std::vector<std::string> args = {chromium,
+                                     "--headless",
+                                     "--no-sandbox",
+                                     "--disable-gpu",
+                                     "--disable-quic",
+                                     "--no-first-run",
+                                     "--disable-background-networking",
+                                     "--disable-component-update",
+                                     "--disable-sync",
+                                     "--disable-extensions",
+                                     "--user-data-dir=" + profile_.path.string(),
+                                     "--remote-debugging-pipe",
+                                     "about:blank"};
+    const fs::path browser_tmp = profile_.path / "tmp";
+    fs::create_directories(browser_tmp);
+    std::vector<std::string> env_text = {"TMPDIR=" + browser_tmp.string()};
+    for (char** e = environ; *e; ++e)
+      if (std::strncmp(*e, "TMPDIR=", 7) != 0) env_text.emplace_back(*e);
+    std::vector<char*> envp;
+    for (auto& e : env_text) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    int sv[2];
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
+      throw PdfError(std::string("cannot start Chromium: socketpair: ") + std::strerror(errno));
+    const pid_t parent = ::getpid();
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+      ::close(sv[0]);
+      ::close(sv[1]);
+      throw PdfError("cannot start Chromium: fork failed");
+    }
+    if (pid == 0) {
+      // only async-signal-safe calls between fork and exec
+      ::setpgid(0, 0);
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(127);
+      sigset_t none;
+      sigemptyset(&none);
+      ::sigprocmask(SIG_SETMASK, &none, nullptr);
+      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+      if (fd >= 0) {
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
+      }
+      const int null_in = ::open("/dev/null", O_RDONLY);
+      if (null_in >= 0) ::dup2(null_in, 0);
+      // the browser's end as fd 3 and fd 4 (dup2 clears close-on-exec; via a high fd so
+      // that it never is 3 or 4 itself)
+      const int high = ::fcntl(sv[1], F_DUPFD_CLOEXEC, 10);
+      if (high < 0 || ::dup2(high, 3) < 0 || ::dup2(high, 4) < 0) ::_exit(127);
+      ::execve(argv[0], argv.data(), envp.data());
+      ::_exit(127);
+    }
+    ::close(sv[1]);
+    fd_ = sv[0];
+    ::setpgid(pid, pid);
+    group_.emplace(pid);
+  }
+  ~PipeBrowser() {
+    if (fd_ >= 0) {
+      // a polite close first (the browser flushes and exits), then its group is killed
+      try {
+        send("Browser.close", nlohmann::json::object());
+      } catch (const PdfError&) {
+        // gone already
+      }
+      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+      int status = 0;
+      while (std::chrono::steady_clock::now() < until) {
+        if (::waitpid(group_->pid, &status, WNOHANG) == group_->pid) {
+          group_->reaped = true;
+          break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      ::close(fd_);
+    }
+  }
+  PipeBrowser(const PipeBrowser&) = delete;
+  PipeBrowser& operator=(const PipeBrowser&) = delete;
+
+  /// Sends a command (to a page's session when `session` is not empty); returns its id.
+  int send(const std::string& method, const nlohmann::json& params, const std::string& session = "") {
+    nlohmann::json m = {{"id", ++next_id_}, {"method", method}, {"params", params}};
+    if (!session.empty()) m["sessionId"] = session;
+    std::string text = m.dump();
+    text += '\0';
+    for (size_t at = 0; at < text.size();) {
+      const ssize_t n = ::send(fd_, text.data() + at, text.size() - at, MSG_NOSIGNAL);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) throw PdfError("lost the connection to Chromium (" + std::string(std::strerror(errno)) + ")");
+      at += static_cast<size_t>(n);
+    }
+    return next_id_;
+  }
+
+  /// The next message, waiting at most `wait_ms`; nullopt when none came in time.
+  /// @throws PdfError when the browser closed its end (it exited or died).
+  std::optional<nlohmann::json> receive(int wait_ms) {
+    while (true) {
+      const size_t end = in_.find('\0', scanned_);
+      if (end != std::string::npos) {
+        nlohmann::json m = nlohmann::json::parse(in_.begin(), in_.begin() + static_cast<long>(end), nullptr, false);
+        in_.erase(0, end + 1);
+        scanned_ = 0;
+        if (m.is_discarded()) throw PdfError("Chromium sent a message that is not JSON");
+        return m;
+      }
+      scanned_ = in_.size();
+      pollfd p{fd_, POLLIN, 0};
+      const int r = ::poll(&p, 1, wait_ms);
+      if (r < 0 && errno == EINTR) continue;
+      if (r <= 0) return std::nullopt;
+      char buf[1 << 16];
+      const ssize_t n = ::read(fd_, buf, sizeof buf);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) throw PdfError("Chromium closed the DevTools pipe: " + tail_of(profile_.path / "chromium.log", 400));
+      in_.append(buf, static_cast<size_t>(n));
+      wait_ms = 0;  // the rest of a message that has begun is read at once
+    }
+  }
+
+ private:
+  Profile profile_;  // first: removed after the browser is gone
+  std::optional<BrowserGroup> group_;
+  int fd_ = -1;
+  int next_id_ = 0;
+  std::string in_;
+  size_t scanned_ = 0;
+};
+
+// one tab printing one page: create a target, attach, enable page events, navigate, wait
+// for the load event, print, close
+struct Tab {
+  enum Step { kIdle, kCreate, kAttach, kEnable, kNavigate, kPrint, kClose };
+  Step step = kIdle;
+  int job = -1;
+  int pending = -1;  // id of the command waiting for its answer
+  bool navigated = false, loaded = false;
+  std::string target, session;
+  std::chrono::steady_clock::time_point deadline;
+};
+
+// writes a printed page through its temporary sibling; "" or why not
+std::string write_printed(const std::string& bytes, const fs::path& pdf) {
+  if (bytes.compare(0, 4, "%PDF") != 0) return "Chromium printed something that is not a PDF";
+  const fs::path part = part_path(pdf);
+  {
+    std::ofstream out(part, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      const int e = errno;
+      std::error_code ec;
+      fs::remove(part, ec);
+      return system_error_text("write", pdf, e);
+    }
+  }
+  if (::rename(part.c_str(), pdf.c_str()) != 0) {
+    const int e = errno;
+    std::error_code ec;
+    fs::remove(part, ec);
+    return system_error_text("write", pdf, e);
+  }
+  return "";
+}
+
+// prints what it can of `jobs` through one browser; done[i] is set for every page printed
+// or failed on its own (message in errors[i]); throws PdfError when the browser fails
+void print_through_one_browser(const std::string& chromium, const std::vector<PdfJob>& jobs,
+                               int parallel, double timeout_s, std::vector<std::string>& errors,
+                               std::vector<char>& done) {
+  using clock = std::chrono::steady_clock;
+  PipeBrowser browser(chromium);
+  std::vector<Tab> tabs(static_cast<size_t>(std::clamp(parallel, 1, 8)));
+  size_t next = 0, finished = 0;
+  const auto limit = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(timeout_s));
+  const auto fail = [&](Tab& t, const std::string& why) {
+    errors[static_cast<size_t>(t.job)] = why;
+    done[static_cast<size_t>(t.job)] = 1;
+    ++finished;
+    if (!t.target.empty()) browser.send("Target.closeTarget", {{"targetId", t.target}});
+    t = Tab{};
+  };
+  const auto start = [&](Tab& t) {
+    while (next < jobs.size() && t.step == Tab::kIdle) {
+      const size_t j = next++;
+      if (!fs::exists(jobs[j].html)) {
+        errors[j] = "cannot print " + jobs[j].html.string() + ": no such file";
+        done[j] = 1;
+        ++finished;
+        continue;
+      }
+      t = Tab{};
+      t.job = static_cast<int>(j);
+      t.deadline = clock::now() + limit;
+      t.step = Tab::kCreate;
+      t.pending = browser.send("Target.createTarget", {{"url", "about:blank"}});
+    }
+  };
+  const auto print = [&](Tab& t) {
+    t.step = Tab::kPrint;
+    // the options of headless Chromium's --print-to-pdf with --no-pdf-header-footer
+    t.pending = browser.send("Page.printToPDF",
+                             {{"displayHeaderFooter", false}, {"printBackground", true},
+                              {"preferCSSPageSize", true}, {"transferMode", "ReturnAsBase64"}},
+                             t.session);
+  };
+  for (Tab& t : tabs) start(t);
+  auto last_message = clock::now();
+  while (finished < jobs.size()) {
+    if (stopping()) throw PdfError("stopped by a signal");
+    const std::optional<nlohmann::json> got = browser.receive(50);
+    const auto now = clock::now();
+    for (Tab& t : tabs)
+      if (t.step != Tab::kIdle && now > t.deadline) {
+        fail(t, "Chromium did not print " + jobs[static_cast<size_t>(t.job)].html.string() +
+                    " within " + std::to_string(static_cast<int>(timeout_s)) + " s");
+        start(t);
+      }
+    if (!got) {
+      // a browser that answers nothing at all is not printing (nor speaking the protocol)
+      if (now - last_message > limit) throw PdfError("Chromium did not answer on the DevTools pipe");
+      continue;
+    }
+    last_message = now;
+    const nlohmann::json& m = *got;
+    if (m.contains("method")) {
+      if (m["method"] == "Page.loadEventFired" && m.contains("sessionId"))
+        for (Tab& t : tabs)
+          if (t.session == m["sessionId"] && (t.step == Tab::kNavigate)) {
+            t.loaded = true;
+            if (t.navigated) print(t);
+          }
+      continue;
+    }
+    if (!m.contains("id")) continue;
+    Tab* tab = nullptr;
+    for (Tab& t : tabs)
+      if (t.step != Tab::kIdle && t.pending == m["id"]) tab = &t;
+    if (!tab) continue;  // the answer to a close, or to a page given up
+    Tab& t = *tab;
+    const PdfJob& job = jobs[static_cast<size_t>(t.job)];
+    if (m.contains("error")) {
+      fail(t, "Chromium could not print " + job.html.string() + ": " + m["error"].value("message", m["error"].dump()));
+      start(t);
+      continue;
+    }
+    const nlohmann::json& r = m.contains("result") ? m["result"] : nlohmann::json::object();
+    switch (t.step) {
+      case Tab::kCreate:
+        t.target = r.value("targetId", "");
+        t.step = Tab::kAttach;
+        t.pending = browser.send("Target.attachToTarget", {{"targetId", t.target}, {"flatten", true}});
+        break;
+      case Tab::kAttach:
+        t.session = r.value("sessionId", "");
+        t.step = Tab::kEnable;
+        t.pending = browser.send("Page.enable", nlohmann::json::object(), t.session);
+        break;
+      case Tab::kEnable:
+        t.step = Tab::kNavigate;
+        t.pending = browser.send("Page.navigate", {{"url", file_url(job.html)}}, t.session);
+        break;
+      case Tab::kNavigate:
+        if (r.contains("errorText") && !r["errorText"].get<std::string>().empty()) {
+          fail(t, "Chromium could not open " + job.html.string() + ": " + r["errorText"].get<std::string>());
+          start(t);
+          break;
+        }
+        t.navigated = true;
+        t.pending = -1;
+        if (t.loaded) print(t);
+        break;
+      case Tab::kPrint: {
+        const std::string why = write_printed(base64_decode(r.value("data", "")), job.pdf);
+        if (!why.empty()) {
+          fail(t, why);
+        } else {
+          done[static_cast<size_t>(t.job)] = 1;
+          ++finished;
+          browser.send("Target.closeTarget", {{"targetId", t.target}});
+          t = Tab{};
+        }
+        start(t);
+        break;
+      }
+      default:
+        break;
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel, double timeout_s) {
+  std::vector<std::string> errors(jobs.size());
+  if (jobs.empty()) return errors;
+  const std::string chromium = chromium_or_throw();
+  std::vector<char> done(jobs.size(), 0);
+  if (jobs.size() > 1) {
+    try {
+      print_through_one_browser(chromium, jobs, parallel, timeout_s, errors, done);
+    } catch (const std::exception&) {
+      // the pages not printed yet go one browser each (below)
+    }
+  }
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (done[i]) continue;
+    try {
+      print_pdf(jobs[i].html, jobs[i].pdf, timeout_s);
+    } catch (const std::exception& e) {
+      errors[i] = e.what();
+    }
+  }
+  return errors;
+}
+
 void kill_browsers() {
+  g_stopping = true;  // no browser starts after this
   std::lock_guard<std::mutex> lock(live().mu);
   for (const pid_t pid : live().groups) ::kill(-pid, SIGKILL);
   // SIGKILL takes effect on the next return to user space: give it a moment before

@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
+#include "scene/phase_times.hpp"
 #include "scene/png_writer.hpp"
 #include "scene/replay.hpp"
 #include "scene/scene_error.hpp"
@@ -49,6 +51,7 @@ std::string quote(const std::string& s) {
 // thread and bit-exact flags so that the same frames give the same file
 bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, double fps,
                  const fs::path& out, std::string* why) {
+  PhaseScope phase("video");
   const int w = frames.front().width & ~1, h = frames.front().height & ~1;
   char rate[64];
   std::snprintf(rate, sizeof rate, "%.6f", fps);
@@ -124,9 +127,11 @@ Animation write_animation(SceneRenderer& sr, const SampledMotion& m, const std::
   a.frame_height = frames.front().height * 3 / 4;
   const int rows = (a.frames + a.columns - 1) / a.columns;
   Image sheet(a.columns * a.frame_width, rows * a.frame_height);
+  std::optional<PhaseScope> sprite_phase(std::in_place, "sprite");
   for (int k = 0; k < a.frames; ++k)
     blit(downscale(frames[k], a.frame_width, a.frame_height), &sheet,
          (k % a.columns) * a.frame_width, (k / a.columns) * a.frame_height);
+  sprite_phase.reset();
   a.sprite = name + "_anim.png";
   write_png(dir / a.sprite, sheet);
   a.still = name + "_still.png";

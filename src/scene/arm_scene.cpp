@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "scene/mjcf_writer.hpp"
+#include "scene/polyline.hpp"
 
 namespace armstudy::scene {
 namespace {
@@ -39,6 +40,12 @@ std::string shadow_light(double height) {
   return x.str();
 }
 
+// the spacing of a plane's rendering grid (its third size): MuJoCo draws a plane as a grid
+// of quads, lit per vertex; the lights here are directional (the headlight and the sun), so a
+// plane is lit alike at every vertex and a 4 x 4 grid draws what 0.01 m quads did (up to
+// 200 x 200 of them, each drawn again for every shadow pass)
+double plane_grid(double half) { return 0.5 * half; }
+
 // a narrow field of view: nearly orthographic, little parallax between drawing heights
 constexpr double kFovy = 20;
 
@@ -70,6 +77,15 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   s.view = v;
   const double cx = 0.5 * (v.x_min + v.x_max), cy = 0.5 * (v.y_min + v.y_max);
   const double half = 2.0 * std::max(v.x_max - v.x_min, v.y_max - v.y_min);
+  // a finely sampled task path (a thousand points) as the few segments that draw the same
+  // picture: every dropped point within a tenth of a pixel of the line drawn
+  {
+    std::vector<Eigen::Vector2d> drawn;
+    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min, decor.offwidth,
+                                          decor.offheight);
+    for (const size_t k : simplify_polyline(task, tol)) drawn.push_back(task[k]);
+    task = std::move(drawn);
+  }
 
   MjcfOptions o;
   o.model_name = "horizontal_arm";
@@ -93,7 +109,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   auto w = xml();
   w << shadow_light(0.5 * half);
   w << "    <geom name=\"table\" type=\"plane\" pos=\"" << cx << " " << cy << " " << -3 * r
-    << "\" size=\"" << half << " " << half << " 0.01\" material=\"table\"/>\n";
+    << "\" size=\"" << half << " " << half << " " << plane_grid(half) << "\" material=\"table\"/>\n";
   // root: pedestal and a cross on the table
   w << "    <geom name=\"root\" type=\"cylinder\" pos=\"" << b.x() << " " << b.y() << " "
     << -1.5 * r << "\" size=\"" << 2.2 * r << " " << 1.4 * r
@@ -190,7 +206,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   w << shadow_light(0.5 * half);
   w << "    <geom name=\"wall\" type=\"plane\" pos=\"" << cx << " " << cy << " "
     << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half
-    << " 0.01\" material=\"wall\"/>\n";
+    << " " << plane_grid(half) << "\" material=\"wall\"/>\n";
   // base: a pedestal under joint 1 and a floor line
   w << "    <geom name=\"pedestal\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 2.5 * r
     << " " << -2 * r << "\" size=\"" << 2.2 * r << " " << 2.5 * r << " " << r

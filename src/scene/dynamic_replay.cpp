@@ -9,6 +9,7 @@
 #include "scene/chain_map.hpp"
 #include "scene/mjcf_writer.hpp"
 #include "scene/mujoco_model.hpp"
+#include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
@@ -105,6 +106,7 @@ Run run(MujocoModel& mm, const ChainMap& map, const core::PlanarChain& chain,
 
 DynamicReplay replay_torques(const core::PlanarChain& chain, double duration,
                              const PlanFunction& plan, const DynamicReplayOptions& o) {
+  PhaseScope phase("mujoco_replay");
   if (!(duration > 0)) throw std::invalid_argument("dynamic replay: duration should be > 0");
   if (o.steps < 2) throw std::invalid_argument("dynamic replay: steps should be >= 2");
   const int steps = o.steps + (o.steps % 2);  // even, for the replay at 2 h

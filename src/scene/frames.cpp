@@ -7,6 +7,8 @@
 #include <thread>
 
 #include "core/kinematics.hpp"
+#include "scene/polyline.hpp"
+#include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
@@ -49,14 +51,17 @@ std::vector<PoseSample> resample(std::span<const double> t, std::span<const core
 
 SceneRenderer::SceneRenderer(const ArmScene& scene, const std::string& source,
                              const RenderSettings& settings)
-    : chain_(scene.chain),
+    : load_phase_(std::in_place, "scene_load"),
+      chain_(scene.chain),
       model_(scene.mjcf, source),
       map_(scene.chain, model_.model()),
       renderer_(model_.model(), settings, scene.view),
       scene_(scene),
       source_(source),
       settings_(settings),
-      strip_threads_(1) {}
+      strip_threads_(1) {
+  load_phase_.reset();
+}
 
 void SceneRenderer::set_strip_threads(int threads) { strip_threads_ = std::clamp(threads, 1, 8); }
 
@@ -146,7 +151,16 @@ Image SceneRenderer::locus(std::span<const PoseSample> samples,
   }
   // a long path is traced through evenly spaced points of it (both ends kept): the scene
   // has room for a few thousand geoms and a frame for fewer distinct segments than that
-  const std::vector<size_t> along = evenly_spaced(path.size(), kMaxTracedSegments + 1);
+  // then as the fewest of those segments that draw the same line (every point dropped
+  // within a tenth of a pixel of it)
+  std::vector<size_t> along;
+  {
+    const std::vector<size_t> even = evenly_spaced(path.size(), kMaxTracedSegments + 1);
+    std::vector<Eigen::Vector2d> pts;
+    for (const size_t k : even) pts.push_back(path[k]);
+    for (const size_t k : simplify_polyline(pts, 0.1 * renderer_.metres_per_pixel()))
+      along.push_back(even[k]);
+  }
   for (size_t k = 1; k < along.size(); ++k)
     extra.push_back(segment_geom(Eigen::Vector3d(path[along[k - 1]].x(), path[along[k - 1]].y(), top),
                                  Eigen::Vector3d(path[along[k]].x(), path[along[k]].y(), top),

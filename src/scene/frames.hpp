@@ -3,6 +3,7 @@
 /// (several poses superimposed, older ones fainter, the end-effector path traced).
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "scene/chain_map.hpp"
 #include "scene/image.hpp"
 #include "scene/mujoco_model.hpp"
+#include "scene/phase_times.hpp"
 #include "scene/renderer.hpp"
 #include "scene/replay.hpp"
 
@@ -66,6 +68,7 @@ class SceneRenderer {
   Renderer& renderer() { return renderer_; }
 
  private:
+  std::optional<PhaseScope> load_phase_;  // times the members' construction (phase_times.hpp)
   core::PlanarChain chain_;
   MujocoModel model_;
   ChainMap map_;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <vector>
 
+#include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
@@ -24,6 +25,7 @@ void flush(png_structp) {}
 }  // namespace
 
 std::string encode_png(const Image& image) {
+  PhaseScope phase("png");
   std::string out;
   png_structp png =
       png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, &on_png_warning);

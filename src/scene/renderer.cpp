@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
+#include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
@@ -77,7 +79,9 @@ Renderer::~Renderer() {
 }
 
 Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const mjvGeom> extra) {
+  PhaseScope phase("gl");
   context_->make_current();
+  std::optional<PhaseScope> part(std::in_place, "update");
   mjv_updateScene(model_, data, &opt_, nullptr, &cam_, mjCAT_ALL, &scene_);
   if (scene_.ngeom + static_cast<int>(extra.size()) > scene_.maxgeom)
     throw SceneError("the scene has room for " + std::to_string(scene_.maxgeom) + " geoms, " +
@@ -87,8 +91,10 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
   glcam_ = mjv_averageCamera(scene_.camera, scene_.camera + 1);
   have_glcam_ = true;
   const mjrRect viewport{0, 0, settings_.width, settings_.height};
+  part.emplace("draw");
   mjr_setBuffer(mjFB_OFFSCREEN, &con_);
   mjr_render(viewport, &scene_, &con_);
+  part.emplace("labels");
   if (!labels.top_left.empty() || !labels.top_right.empty())
     mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, labels.top_left.c_str(), nullptr, &con_);
   if (!labels.top_right.empty())
@@ -97,6 +103,7 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
   if (!labels.bottom_left.empty())
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, labels.bottom_left.c_str(), nullptr,
                 &con_);
+  part.emplace("readback");
   mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
   // OpenGL rows run bottom-up
   Image img(settings_.width, settings_.height);
