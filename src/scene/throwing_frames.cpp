@@ -7,7 +7,7 @@
 #include "scene/arm_scene.hpp"
 #include "scene/animation.hpp"
 #include "scene/study_frames.hpp"
-#include "studies/throwing/tray_arm.hpp"
+#include "studies/tray_arm.hpp"
 
 namespace armstudy::scene {
 
