@@ -43,7 +43,7 @@ void check_budget(cases::Map& root, const cases::RenderOptions& render) {
     demands.push_back(d);
   }
   for (const cases::Demand& d : demands) {
-    for (const cases::OverBudget& o : cases::over_budget(d, render.frames, render.width, render.height)) {
+    for (const cases::OverBudget& o : cases::over_budget(d, render.frames, render.frame.width, render.frame.height)) {
       if (o.frames && root.has("render")) root.error("render", o.message);
       else diag.error(d.mark, o.message);
     }
@@ -79,8 +79,8 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
   if (const auto e = root.choice("expect", {"solved", "unsolvable"})) out.info.expect_unsolvable = *e == "unsolvable";
   if (auto r = root.map("render")) {
     const cases::RenderOptions defaults;  // each default written once, in RenderOptions
-    out.info.render.width = r->integer_or("width", defaults.width, 64, 4096);
-    out.info.render.height = r->integer_or("height", defaults.height, 64, 4096);
+    out.info.render.frame.width = r->integer_or("width", defaults.frame.width, 64, 4096);
+    out.info.render.frame.height = r->integer_or("height", defaults.frame.height, 64, 4096);
     out.info.render.frames = r->integer_or("frames", defaults.frames, 1, 24);
     out.info.render.shadows = r->boolean_or("shadows", defaults.shadows);
     r->finish();

@@ -7,10 +7,17 @@
 
 namespace armstudy::cases {
 
+/// The size of a rendered frame, px: the one place its default is written. The case's
+/// `render:` options carry it to the renderer (scene::RenderSettings) and to the model's
+/// off-screen buffer (scene::MjcfOptions, via the scenes' decor).
+struct FrameSize {
+  int width = 640;   ///< px
+  int height = 480;  ///< px
+};
+
 /// Frame rendering settings of a case (`render:` in YAML).
 struct RenderOptions {
-  int width = 640;    ///< px
-  int height = 480;   ///< px
+  FrameSize frame;    ///< `width`, `height`
   int frames = 6;     ///< frames in a strip
   bool shadows = false;
 };

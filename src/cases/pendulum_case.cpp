@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "cases/throwing_case.hpp"
+#include "cases/tray_arm_case.hpp"
 #include "core/types.hpp"
 
 namespace armstudy::cases {

@@ -31,7 +31,7 @@
 /// ```
 
 #include "cases/yaml_reader.hpp"
-#include "studies/pendulum/pendulum.hpp"
+#include "studies/pendulum/solve.hpp"
 
 namespace armstudy::cases {
 

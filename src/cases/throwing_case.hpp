@@ -76,15 +76,11 @@
 /// ```
 
 #include "cases/yaml_reader.hpp"
-#include "studies/throwing/throwing.hpp"
-#include "studies/throwing/tray_arm.hpp"
+#include "studies/throwing/solve.hpp"
+#include "cases/tray_arm_case.hpp"
 
 namespace armstudy::cases {
 
-/// Reads `link1`, `link2`, `tray`, `ball` and `gravity_m_s2` of a section into `arm` (keys
-/// absent keep `arm`'s values). If `width` is given, `tray.width_deg` is read into it (rad;
-/// absent keeps its value); otherwise that key is unknown. Errors go to the Diagnostics.
-void read_tray_arm(Map& section, studies::TrayArmParams& arm, double* width);
 
 /// The work and memory `spec` asks for (cases/budget.hpp), reported at `mark`.
 Demand throwing_demand(const studies::ThrowingSpec& spec, const YAML::Mark& mark);

@@ -18,8 +18,8 @@ std::string binding_words(const PS::Decision& d) {
   const std::string margin = format_sig(d.margin_m, 3) + " m";
   const std::string joint = d.joint ? as_text(*d.joint) : "n/a";
   if (b == "interior")
-    return "interior, nothing binds (clearances " + format_sig(d.inner_slack_m, 3) + " m inner, " +
-           format_sig(d.outer_slack_m, 3) + " m outer)";
+    return "interior, nothing binds (clearances beyond the " + margin + " margin: " +
+           format_sig(d.inner_slack_m, 3) + " m inner, " + format_sig(d.outer_slack_m, 3) + " m outer)";
   if (b == "inner_clearance") return "the " + margin + " clearance margin to the inner circle (a setting)";
   if (b == "outer_clearance") return "the " + margin + " clearance margin to the outer circle (a setting)";
   if (b == "torque_limit") return "the torque limit of joint " + joint + " binds";

@@ -90,8 +90,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   MjcfOptions o;
   o.model_name = "horizontal_arm";
   o.fovy = kFovy;
-  o.offwidth = decor.offwidth;
-  o.offheight = decor.offheight;
+  o.offscreen = decor.offscreen;
   o.link_radius = r;
   o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.45 0.35 0.65 1"};
   o.visual_extra = kVisual;
@@ -174,8 +173,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   MjcfOptions o;
   o.model_name = "tray_arm";
   o.fovy = kFovy;
-  o.offwidth = decor.offwidth;
-  o.offheight = decor.offheight;
+  o.offscreen = decor.offscreen;
   o.link_radius = r;
   o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.40 0.40 0.45 1",
                  "0.85 0.15 0.15 0"};

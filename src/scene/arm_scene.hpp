@@ -28,7 +28,7 @@ struct TableDecor {
   std::optional<Eigen::Vector2d> task_end;
   /// A task path as a polyline (used when task_start/task_end are not set), m.
   std::vector<Eigen::Vector2d> task_path;
-  int offwidth = 640, offheight = 480;  ///< px, at least the frame size
+  cases::FrameSize offscreen;  ///< the model's off-screen buffer, px: at least the frame
 };
 
 /// The horizontal arm on a table (top view): links in blue and teal, the payload as an
@@ -40,7 +40,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
 struct TrayDecor {
   double ball_radius = 0.010;             ///< m (r_b)
   double cup_width = 2.0;                 ///< rad, the tray's angular width (lambda of eq. 9)
-  int offwidth = 640, offheight = 480;    ///< px
+  cases::FrameSize offscreen;             ///< the model's off-screen buffer, px
   std::optional<ViewBox> view;            ///< default: everything the arm can reach
 };
 

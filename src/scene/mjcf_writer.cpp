@@ -115,7 +115,7 @@ std::string write_mjcf(const core::PlanarChain& chain, const MjcfOptions& o) {
     << "    <flag contact=\"disable\"/>\n"
     << "  </option>\n"
     << "  <visual>\n"
-    << "    <global offwidth=\"" << o.offwidth << "\" offheight=\"" << o.offheight << "\" fovy=\""
+    << "    <global offwidth=\"" << o.offscreen.width << "\" offheight=\"" << o.offscreen.height << "\" fovy=\""
     << o.fovy << "\"/>\n"
     << "    <quality shadowsize=\"1024\" offsamples=\"0\"/>\n"
     << o.visual_extra

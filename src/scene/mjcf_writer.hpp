@@ -21,6 +21,7 @@
 
 #include <Eigen/Dense>
 
+#include "cases/case_info.hpp"
 #include "core/planar_chain.hpp"
 
 namespace armstudy::scene {
@@ -29,8 +30,7 @@ struct MjcfOptions {
   std::string model_name = "armstudy_chain";
   double timestep = 1e-3;         ///< s
   std::string integrator = "RK4"; ///< "Euler" or "RK4"
-  int offwidth = 640;             ///< px, off-screen buffer
-  int offheight = 480;
+  cases::FrameSize offscreen;     ///< px, off-screen buffer (<global offwidth offheight>)
   double fovy = 45;               ///< deg, the free camera's vertical field of view
   /// Extra XML inserted in <worldbody> before the chain (table, task line, markers).
   std::string world_extra;

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 
 namespace armstudy::scene {
 

@@ -41,8 +41,7 @@ ArmScene pendulum_scene(const studies::PendulumSpec& spec, const studies::Pendul
   TrayDecor decor;
   decor.ball_radius = rb;
   decor.cup_width = 2.0 * core::kPi / 3;
-  decor.offwidth = options.width;
-  decor.offheight = options.height;
+  decor.offscreen = options.frame;
   decor.view = v;
   return tray_arm_scene(chain, decor);
 }

@@ -10,7 +10,7 @@
 #include "cases/case_info.hpp"
 #include "scene/arm_scene.hpp"
 #include "scene/replay.hpp"
-#include "studies/pendulum/pendulum.hpp"
+#include "studies/pendulum/solve.hpp"
 
 namespace armstudy::scene {
 

@@ -22,8 +22,7 @@ ArmScene placement_scene(const pl::Spec& spec, const pl::ProgramConfig& pc,
   TableDecor decor;
   decor.task_start = Eigen::Vector2d::Zero();
   decor.task_end = to_P * (F - S);
-  decor.offwidth = options.width;
-  decor.offheight = options.height;
+  decor.offscreen = options.frame;
   return horizontal_arm_scene(chain, decor);
 }
 

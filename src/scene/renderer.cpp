@@ -24,7 +24,7 @@ int font_scale(int height) {
 Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox& view)
     : model_(model), settings_(s) {
   install_mujoco_handlers();
-  context_ = std::make_unique<OsmesaContext>(s.width, s.height);
+  context_ = std::make_unique<OsmesaContext>(s.frame.width, s.frame.height);
   mjv_defaultScene(&scene_);
   mjv_defaultScene(&scratch_);
   mjr_defaultContext(&con_);
@@ -32,7 +32,7 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
   mjv_defaultCamera(&cam_);
   mjv_makeScene(model, &scene_, kMaxGeom);
   mjv_makeScene(model, &scratch_, kMaxGeom);
-  mjr_makeContext(model, &con_, font_scale(s.height));
+  mjr_makeContext(model, &con_, font_scale(s.frame.height));
   mjr_setBuffer(mjFB_OFFSCREEN, &con_);
   if (con_.currentBuffer != mjFB_OFFSCREEN) {
     mjr_freeContext(&con_);
@@ -41,10 +41,10 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
     throw SceneError("MuJoCo's off-screen buffer is not available in the OSMesa context; run "
                      "with --no-render");
   }
-  if (con_.offWidth < s.width || con_.offHeight < s.height) {
+  if (con_.offWidth < s.frame.width || con_.offHeight < s.frame.height) {
     const std::string msg = "MuJoCo's off-screen buffer is " + std::to_string(con_.offWidth) +
                             " x " + std::to_string(con_.offHeight) + " px, smaller than the " +
-                            std::to_string(s.width) + " x " + std::to_string(s.height) +
+                            std::to_string(s.frame.width) + " x " + std::to_string(s.frame.height) +
                             " px frame; expected <global offwidth offheight> of at least that";
     mjr_freeContext(&con_);
     mjv_freeScene(&scene_);
@@ -59,7 +59,7 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
   const double m = s.margin;
   const double w = (view.x_max - view.x_min) * (1 + 2 * m);
   const double h = (view.y_max - view.y_min) * (1 + 2 * m);
-  const double aspect = static_cast<double>(s.width) / s.height;
+  const double aspect = static_cast<double>(s.frame.width) / s.frame.height;
   const double half_h = 0.5 * std::max(h, w / aspect);
   const double fovy = model->vis.global.fovy * mjPI / 180.0;
   cam_.type = mjCAMERA_FREE;
@@ -69,7 +69,7 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
   cam_.azimuth = 90;
   cam_.elevation = -90;
   cam_.distance = half_h / std::tan(fovy / 2);
-  pixels_.resize(static_cast<size_t>(s.width) * s.height * 3);
+  pixels_.resize(static_cast<size_t>(s.frame.width) * s.frame.height * 3);
 }
 
 Renderer::~Renderer() {
@@ -90,7 +90,7 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
   // mono rendering draws the average of the two eye cameras (mjr_render)
   glcam_ = mjv_averageCamera(scene_.camera, scene_.camera + 1);
   have_glcam_ = true;
-  const mjrRect viewport{0, 0, settings_.width, settings_.height};
+  const mjrRect viewport{0, 0, settings_.frame.width, settings_.frame.height};
   part.emplace("draw");
   mjr_setBuffer(mjFB_OFFSCREEN, &con_);
   mjr_render(viewport, &scene_, &con_);
@@ -106,10 +106,10 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
   part.emplace("readback");
   mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
   // OpenGL rows run bottom-up
-  Image img(settings_.width, settings_.height);
-  const size_t row = static_cast<size_t>(settings_.width) * 3;
-  for (int y = 0; y < settings_.height; ++y)
-    std::memcpy(&img.rgb[y * row], &pixels_[(settings_.height - 1 - y) * row], row);
+  Image img(settings_.frame.width, settings_.frame.height);
+  const size_t row = static_cast<size_t>(settings_.frame.width) * 3;
+  for (int y = 0; y < settings_.frame.height; ++y)
+    std::memcpy(&img.rgb[y * row], &pixels_[(settings_.frame.height - 1 - y) * row], row);
   return img;
 }
 
@@ -127,19 +127,19 @@ Eigen::Vector2d Renderer::project(const Eigen::Vector3d& p) const {
   const Eigen::Vector3d v = p - pos;
   const double z = v.dot(fwd);
   // glFrustum(center -/+ halfwidth, bottom, top, near) as in mjr_render
-  const double aspect = static_cast<double>(settings_.width) / settings_.height;
+  const double aspect = static_cast<double>(settings_.frame.width) / settings_.frame.height;
   const double halfwidth = 0.5 * aspect * (glcam_.frustum_top - glcam_.frustum_bottom);
   const double xn = v.dot(right) * glcam_.frustum_near / z;
   const double yn = v.dot(up) * glcam_.frustum_near / z;
   const double ndc_x = (xn - glcam_.frustum_center) / halfwidth;
   const double ndc_y = (2 * yn - glcam_.frustum_top - glcam_.frustum_bottom) /
                        (glcam_.frustum_top - glcam_.frustum_bottom);
-  return {0.5 * (ndc_x + 1) * settings_.width, 0.5 * (1 - ndc_y) * settings_.height};
+  return {0.5 * (ndc_x + 1) * settings_.frame.width, 0.5 * (1 - ndc_y) * settings_.frame.height};
 }
 
 double Renderer::metres_per_pixel() const {
   const double fovy = model_->vis.global.fovy * mjPI / 180.0;
-  return 2 * cam_.distance * std::tan(fovy / 2) / settings_.height;
+  return 2 * cam_.distance * std::tan(fovy / 2) / settings_.frame.height;
 }
 
 mjvGeom segment_geom(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius,

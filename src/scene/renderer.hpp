@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 #include <mujoco/mujoco.h>
 
+#include "cases/case_info.hpp"
 #include "scene/image.hpp"
 #include "scene/osmesa_context.hpp"
 
@@ -23,8 +24,7 @@ struct ViewBox {
 };
 
 struct RenderSettings {
-  int width = 640;       ///< px
-  int height = 480;      ///< px
+  cases::FrameSize frame;  ///< px
   bool shadows = false;  ///< shadow mapping (about 2.5x slower on llvmpipe)
   double margin = 0.06;  ///< fraction of the view box added on every side
 };
@@ -66,8 +66,8 @@ class Renderer {
   double metres_per_pixel() const;
 
   /// Frame size, px, and the GL renderer's name (e.g. "llvmpipe ...").
-  int width() const { return settings_.width; }
-  int height() const { return settings_.height; }
+  int width() const { return settings_.frame.width; }
+  int height() const { return settings_.frame.height; }
   const std::string& gl_renderer() const { return context_->renderer(); }
 
  private:

@@ -61,8 +61,7 @@ std::vector<std::string> render_time_optimal_replay(const studies::time_optimal:
   if (replay.t.size() < 2) return {};
   TableDecor decor;
   for (int k = 0; k < result.path_p.cols(); ++k) decor.task_path.push_back(result.path_p.col(k));
-  decor.offwidth = options.width;
-  decor.offheight = options.height;
+  decor.offscreen = options.frame;
   SceneRenderer sr(horizontal_arm_scene(spec.chain, decor), "time-optimal replay scene",
                    render_settings(options));
   char title[200];
@@ -93,8 +92,7 @@ std::vector<std::string> render_placement_replay(const studies::placement::Spec&
     TableDecor decor;
     decor.task_start = Eigen::Vector2d::Zero();
     decor.task_end = to_P * (F - S);
-    decor.offwidth = options.width;
-    decor.offheight = options.height;
+    decor.offscreen = options.frame;
     SceneRenderer sr(horizontal_arm_scene(chain, decor), "placement replay scene", render_settings(options));
     char title[200];
     std::snprintf(title, sizeof title, "%s, configuration %d: planned (arm)\nMuJoCo mj_step in magenta: max |dq| %.2g rad",

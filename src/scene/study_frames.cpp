@@ -9,8 +9,7 @@ namespace armstudy::scene {
 
 RenderSettings render_settings(const cases::RenderOptions& o) {
   RenderSettings s;
-  s.width = o.width;
-  s.height = o.height;
+  s.frame = o.frame;
   s.shadows = o.shadows;
   return s;
 }

@@ -7,7 +7,7 @@
 #include "scene/arm_scene.hpp"
 #include "scene/animation.hpp"
 #include "scene/study_frames.hpp"
-#include "studies/throwing/tray_arm.hpp"
+#include "studies/tray_arm.hpp"
 
 namespace armstudy::scene {
 
@@ -30,8 +30,7 @@ TrayDecor throwing_decor(const studies::ThrowingSpec& spec, const core::PlanarCh
   TrayDecor decor;
   decor.ball_radius = spec.arm.rb;
   decor.cup_width = spec.tray_width;
-  decor.offwidth = options.width;
-  decor.offheight = options.height;
+  decor.offscreen = options.frame;
   // frame the motion itself (with room for the cup, the pedestal and the labels)
   const double pad = spec.arm.r4 + 2 * spec.arm.rb + 0.02;
   ViewBox motion_box = fit_view(chain, m.q, {}, pad);
@@ -104,7 +103,7 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
       if (end.t.size() >= 2) {
         const Eigen::Vector2d b = s.ball.back();
         const double r = spec.arm.r4 + 3 * spec.arm.rb + 0.02;
-        const double aspect = double(options.width) / options.height;
+        const double aspect = double(options.frame.width) / options.frame.height;
         decor.view = {b.x() - r * aspect, b.x() + r * aspect, b.y() - r, b.y() + r};
         SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
         FrameLabels labels;

@@ -10,7 +10,7 @@
 #include "cases/case_info.hpp"
 #include "scene/arm_scene.hpp"
 #include "scene/study_frames.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 
 namespace armstudy::scene {
 

@@ -13,8 +13,7 @@ ArmScene time_optimal_scene(const to::Spec& spec, const to::Result& result,
                             const cases::RenderOptions& options) {
   TableDecor decor;
   for (int k = 0; k < result.path_p.cols(); ++k) decor.task_path.push_back(result.path_p.col(k));
-  decor.offwidth = options.width;
-  decor.offheight = options.height;
+  decor.offscreen = options.frame;
   return horizontal_arm_scene(spec.chain, decor);
 }
 

@@ -23,8 +23,7 @@ PoseSample pose(double t) {
 
 void run(benchmark::State& state, bool png, bool shadows) {
   RenderSettings rs;
-  rs.width = 640;
-  rs.height = 480;
+  rs.frame = {640, 480};
   rs.shadows = shadows;
   SceneRenderer sr(default_tray_scene(), "bench", rs);
   int k = 0;

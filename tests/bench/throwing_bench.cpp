@@ -4,10 +4,10 @@
 // and the 4 seeds on both cores), and the pendulum study.
 #include <benchmark/benchmark.h>
 
-#include "studies/pendulum/pendulum.hpp"
+#include "studies/pendulum/solve.hpp"
 #include "studies/throwing/idp.hpp"
 #include "studies/throwing/nlopt_solve.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 
 namespace {
 using namespace armstudy::studies;

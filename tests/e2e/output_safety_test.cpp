@@ -177,6 +177,13 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
                         }),
                         "/placement/optima/0/energy_j: unknown key 'energy_j'; did you mean 'energy_J'?"}},
       {"section-missing", {json_with([](nlohmann::json& j) { j.erase("placement"); }), "/placement: missing"}},
+      // the shared record is typed as well
+      {"misspelt-shared-key", {json_with([](nlohmann::json& j) {
+                                 auto& k = j["key_figures"][0];
+                                 k["unti"] = k["unit"];
+                                 k.erase("unit");
+                               }),
+                               "/key_figures/0/unti: unknown key 'unti'; did you mean 'unit'?"}},
   };
   for (const auto& [name, contents] : broken) {
     fs::create_directories(out / name);
@@ -185,9 +192,9 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
   const CmdRun r = armstudy("merge " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("(7 failed)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(8 failed)"), std::string::npos) << r.output;
   const std::string md = slurp(out / "summary.md"), junit = slurp(out / "junit.xml");
-  EXPECT_EQ(md.rfind("# armstudy: 8 case(s), 7 failed", 0), 0u) << md;
+  EXPECT_EQ(md.rfind("# armstudy: 9 case(s), 8 failed", 0), 0u) << md;
   for (const auto& [name, contents] : broken) {
     const std::string file = (out / name / "results.json").string();
     EXPECT_NE(r.output.find(file + ": " + contents.second), std::string::npos) << name << "\n" << r.output;

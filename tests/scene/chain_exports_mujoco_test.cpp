@@ -18,8 +18,8 @@
 #include "scene/mujoco_model.hpp"
 #include "scene/pendulum_frames.hpp"
 #include "scene/time_optimal_frames.hpp"
-#include "studies/pendulum/pendulum.hpp"
-#include "studies/throwing/tray_arm.hpp"
+#include "studies/pendulum/solve.hpp"
+#include "studies/tray_arm.hpp"
 #include "studies/time_optimal/solve.hpp"
 #include "testing/three_link.hpp"
 

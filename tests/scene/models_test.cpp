@@ -13,7 +13,7 @@
 #include "scene/model_files.hpp"
 #include "scene/mujoco_model.hpp"
 #include "scene/scene_error.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::scene {

@@ -7,7 +7,7 @@
 
 #include "scene/mujoco_check.hpp"
 #include "studies/placement/solve.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::scene {

@@ -16,7 +16,7 @@
 #include "scene/mujoco_model.hpp"
 #include "scene/replay.hpp"
 #include "scene/scene_error.hpp"
-#include "studies/pendulum/pendulum.hpp"
+#include "studies/pendulum/solve.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::scene {

@@ -187,8 +187,7 @@ TEST(Renderer, ShadowsOptionCastsShadowsOnTheTable) {
 TEST(Renderer, TooLargeFrameForTheModelsOffscreenBufferIsASceneError) {
   const LineMotion m;
   TableDecor d;
-  d.offwidth = 320;
-  d.offheight = 240;
+  d.offscreen = {320, 240};
   try {
     SceneRenderer sr(horizontal_arm_scene(m.chain, d), "small", RenderSettings{});
     FAIL() << "no exception";

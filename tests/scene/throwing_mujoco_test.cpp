@@ -13,7 +13,7 @@
 #include "scene/mujoco_model.hpp"
 #include "scene/scene_error.hpp"
 #include "studies/throwing/idp.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 
 namespace armstudy::scene {
 namespace {

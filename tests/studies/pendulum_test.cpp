@@ -1,7 +1,7 @@
 // The pendulum test of 003 Sec. 3 (pendulum.hpp): with joints 1 and 2 locked the tray and
 // the rolling ball conserve mechanical energy to 1e-8 over 2 s; the equilibrium stays at
 // rest; snapshots come every 0.13 s; small swings have the period of the linearised system.
-#include "studies/pendulum/pendulum.hpp"
+#include "studies/pendulum/solve.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "studies/throwing/nlopt_solve.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 
 namespace armstudy::studies {
 namespace {

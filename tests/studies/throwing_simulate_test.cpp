@@ -11,7 +11,7 @@
 
 #include "core/dynamics.hpp"
 #include "core/integrators.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::studies {

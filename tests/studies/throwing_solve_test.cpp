@@ -3,7 +3,7 @@
 // with 4x the steps (independently of the optimiser) and the release state within its
 // tolerance, the optimum replays open loop within the stated tolerance, and the ball's
 // flight obeys the ballistic formulas.
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// The tray arm as a core::PlanarChain (src/studies/throwing/tray_arm.hpp): its kinetic and
+// The tray arm as a core::PlanarChain (src/studies/tray_arm.hpp): its kinetic and
 // potential energy equal the first-principles expressions written out here independently
 // (positions of every centre of mass, rolling ball spin), and the motor mapping is
 // power-consistent for both mounts of motor 2.
-#include "studies/throwing/tray_arm.hpp"
+#include "studies/tray_arm.hpp"
 
 #include <gtest/gtest.h>
 

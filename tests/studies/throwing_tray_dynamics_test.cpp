@@ -10,7 +10,7 @@
 #include <random>
 
 #include "studies/throwing/simulate.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::studies {

@@ -7,7 +7,7 @@
 /// Planning model: joints 1 and 2 follow the profile exactly (their accelerations are given
 /// stage by stage); the tray and the ball (joints 3, 4) follow core::passive_forward_dynamics,
 /// which also returns the joint torques Q1, Q2 that realise the motion. Motor torques are
-/// tau_m = B^-T Q (tray_arm.hpp), and eq. 5-6 give voltages and currents. Each stage is
+/// tau_m = B^-T Q (studies/tray_arm.hpp), and eq. 5-6 give voltages and currents. Each stage is
 /// integrated with `steps_per_stage` RK4 steps, so the accelerations never jump inside a step;
 /// the consumed energy (eq. 7) is integrated as a fifth state by the same RK4 steps.
 ///
@@ -31,7 +31,7 @@
 #include "core/planar_chain.hpp"
 #include "core/types.hpp"
 #include "studies/throwing/profile.hpp"
-#include "studies/throwing/tray_arm.hpp"
+#include "studies/tray_arm.hpp"
 
 namespace armstudy::studies {
 

@@ -1,4 +1,4 @@
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/solve.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -28,7 +28,7 @@ ThrowSetup make_throw_setup(const ThrowingSpec& spec) {
   ThrowSetup s;
   s.chain = make_tray_arm(spec.arm);
   s.mount = spec.arm.motor2;
-  // rotor inertia lives in the chain (tray_arm.hpp), so eq. 5 gets Im = 0
+  // rotor inertia lives in the chain (studies/tray_arm.hpp), so eq. 5 gets Im = 0
   for (auto& m : s.motor) {
     m = spec.motor;
     m.Im = 0.0;

@@ -1,4 +1,4 @@
-#include "studies/throwing/tray_arm.hpp"
+#include "studies/tray_arm.hpp"
 
 #include <cmath>
 

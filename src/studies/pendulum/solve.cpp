@@ -1,4 +1,4 @@
-#include "studies/pendulum/pendulum.hpp"
+#include "studies/pendulum/solve.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,0 +1,30 @@
+#pragma once
+/// Solves the throwing study (spec.hpp -> result.hpp; the method: docs/throwing.md).
+
+#include <Eigen/Dense>
+
+#include "studies/common.hpp"
+#include "studies/throwing/result.hpp"
+#include "studies/throwing/spec.hpp"
+
+namespace armstudy::studies {
+
+/// Builds the simulation setup of a spec. @throws std::invalid_argument on bad parameters.
+ThrowSetup make_throw_setup(const ThrowingSpec& spec);
+
+/// Simulates one profile and records its series, split and release errors.
+ThrowMotion record_motion(const ThrowSetup& setup, const ThrowingSpec& spec,
+                          const VelocityProfile& profile);
+
+/// Re-simulates `profile` with `refinement` x the setup's steps and checks every constraint
+/// (no backoff).
+Verification verify_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                            int refinement);
+
+/// Ballistic flight from (p, v) under gravity g (m/s^2, > 0) down or up to height h.
+Flight ballistic_flight(const Eigen::Vector2d& p, const Eigen::Vector2d& v, double g, double h);
+
+/// Solves the study: eq. 8 start, IDP, SLSQP (if enabled), replay, flight.
+ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progress = {});
+
+}  // namespace armstudy::studies
