@@ -34,8 +34,8 @@ std::string binding_words(const json& d) {
   const std::string b = jsonv::str(d, "binding");
   const std::string margin = jsonv::sig(d, "margin_m", 3) + " m";
   if (b == "interior")
-    return "interior, nothing binds (clearances " + jsonv::sig(d, "inner_slack_m", 3) +
-           " m inner, " + jsonv::sig(d, "outer_slack_m", 3) + " m outer)";
+    return "interior, nothing binds (clearances beyond the " + margin + " margin: " +
+           jsonv::sig(d, "inner_slack_m", 3) + " m inner, " + jsonv::sig(d, "outer_slack_m", 3) + " m outer)";
   if (b == "inner_clearance") return "the " + margin + " clearance margin to the inner circle (a setting)";
   if (b == "outer_clearance") return "the " + margin + " clearance margin to the outer circle (a setting)";
   if (b == "torque_limit") return "the torque limit of joint " + jsonv::str(d, "joint") + " binds";
