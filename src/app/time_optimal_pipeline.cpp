@@ -134,8 +134,8 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
     k.push_back({"duration_s[exact]", exact, "s", "shortest duration (exact solver)"});
     for (const auto& r : result_.solvers) {
       if (r.name == "exact" || !r.solved) continue;
-      k.push_back({"duration_s[" + r.name + "]", r.duration, "s", "duration (" + r.name + ")"});
-      k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%", "excess over exact (" + r.name + ")"});
+      k.push_back({"duration_s[" + r.name + "]", r.duration, "s", "duration (" + r.words() + ")"});
+      k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%", "excess over exact (" + r.words() + ")"});
     }
     k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s", "run time (exact solver)"});
     if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, "", "duration change on a finer grid (relative)"});

@@ -512,6 +512,10 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   map.x_max = xs[i0 + (mx - 1) * kx];
   map.y_min = ys[j0];
   map.y_max = ys[j0 + (my - 1) * ky];
+  // a grid far longer one way than the other is drawn with axes not to scale (to scale it
+  // was a sliver)
+  const double span_ratio = (map.y_max - map.y_min) / (map.x_max - map.x_min);
+  if (!(span_ratio < 2.5 && span_ratio > 0.4)) map.equal_aspect = false;
   map.z.assign(mx * my, NAN);
   MapRegion unreachable{"unreachable", kUnreachable, std::vector<std::uint8_t>(mx * my, 0)};
   MapRegion singular{"inside the margin (inadmissible)", kSingular, std::vector<std::uint8_t>(mx * my, 0)};
@@ -572,7 +576,8 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   Figure f = figures.map(name, map,
                          id_label(m) + ": a " + std::to_string(nx) + " × " + std::to_string(ny) +
                              " grid" + drawn + std::to_string(mx) + " × " +
-                             std::to_string(my) + " cells drawn)." + saturation);
+                             std::to_string(my) + " cells drawn" +
+                             (map.equal_aspect ? "" : "; axes not to scale") + ")." + saturation);
   f.half = true;  // the four maps print two by two
   s.figure(std::move(f));
   return true;
@@ -582,16 +587,19 @@ Section maps_section(const PS& pl, FigureWriter& figures) {
   Section s;
   s.id = "maps";
   s.heading = "Placement maps and optimal root locations";
-  if (!pl.maps.empty())
-    s.paragraph("The energy of the task over root locations (X, Y) in the frame fixed to the "
-                "line (the line runs from the origin along X), one map per program and "
-                "configuration. Only admissible placements are shaded; unreachable, "
+  int n = 0;
+  for (const auto& m : pl.maps) n += map_figure(pl, m, figures, s);
+  // the maps' common explanation after them: a heading followed by a paragraph was left at
+  // the foot of a page when the first row of maps did not fit under them
+  if (n == 0)
+    s.paragraph("The result holds no placement map.");
+  else
+    s.paragraph("The maps above: the energy of the task over root locations (X, Y) in the "
+                "frame fixed to the line (the line runs from the origin along X), one map per "
+                "program and configuration. Only admissible placements are shaded; unreachable, "
                 "inside-the-margin and over-limit regions are flat colours; the circled cross "
                 "is the optimum, the square the best of the thesis's own intervals. Y < 0 is "
                 "the mirror image with the configurations swapped.");
-  int n = 0;
-  for (const auto& m : pl.maps) n += map_figure(pl, m, figures, s);
-  if (n == 0) s.paragraph("The result holds no placement map.");
   add_energy_vs_phi(pl, figures, s);
   return s;
 }

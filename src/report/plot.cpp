@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -288,6 +289,38 @@ void draw_box(plstream& p, int width_pt, int height_pt, double x_range, double y
   p.prec(0, 0);
 }
 
+// the number of characters of the widest y tick label draw_box writes for [lo, hi] in steps
+// of `step` (a log axis writes powers of ten, about four characters)
+int widest_tick_label(double lo, double hi, double step, bool log_y) {
+  if (log_y || !(step > 0)) return 4;
+  const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+  int widest = 1;
+  char buf[64];
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1) {
+    const double v = std::abs(k * step) < 1e-12 * step ? 0.0 : k * step;
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    widest = std::max(widest, static_cast<int>(std::strlen(buf)));
+  }
+  return widest;
+}
+
+// axis labels and title; the y label clear of the widest y tick label (plplot's own place,
+// five character heights out, ran into labels such as "-0.015")
+double y_label_offset(int widest_tick) { return std::max(5.0, 0.8 * widest_tick + 1.4); }
+void draw_labels(plstream& p, const std::string& x, const std::string& y, const std::string& title,
+                 double y_offset) {
+  p.mtex("b", 3.2, 0.5, 0.5, pl_text(x).c_str());
+  p.mtex("l", y_offset, 0.5, 0.5, pl_text(y).c_str());
+  p.mtex("t", 2.0, 0.5, 0.5, pl_text(title).c_str());
+}
+// the left edge of the viewport (a fraction of the page) that leaves room for the y label
+double left_edge_for(plstream& p, double y_offset) {
+  PLFLT def = 0, ht = 0, x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  p.gchr(def, ht);
+  p.gspa(x0, x1, y0, y1);
+  return x1 > x0 ? (y_offset + 1.0) * ht / (x1 - x0) : 0;
+}
+
 // "10⁻¹³": a power of ten with its exponent in superscript digits (drawn in full, unlike
 // plplot's own "(x10^k)" over the axis, which the page's top edge cut off)
 std::string power_of_ten(int k) {
@@ -437,7 +470,10 @@ void write_line_plot(const LinePlot& input, const fs::path& svg) {
             static_cast<int>(plot.series.size() + plot.references.size()));
   plstream& p = page.p;
   const double bottom = (44.0 + legend_pt) / height_pt, top = 1 - 26.0 / height_pt;
-  p.vpor(0.11, 0.96, bottom, top);
+  // the y ticks draw_box will write (the same step: it depends on the viewport's height only)
+  const double y_step = plot.log_y ? 0 : nice_step(y_hi - y_lo, std::max(2.0, (top - bottom) * height_pt / 30));
+  const double y_offset = y_label_offset(widest_tick_label(y_lo, y_hi, y_step, plot.log_y));
+  p.vpor(std::max(0.11, left_edge_for(p, y_offset)), 0.96, bottom, top);
   p.wind(x_lo, x_hi, y_lo, y_hi);
   p.col0(kSlotInk);
   p.width(0.8);
@@ -445,7 +481,7 @@ void write_line_plot(const LinePlot& input, const fs::path& svg) {
   draw_box(p, plot.width_pt, height_pt, x_hi - x_lo, y_hi - y_lo, plot.log_y);
   // light grid for reading values off
   p.scol0(kSlotBackground, kWhite.r, kWhite.g, kWhite.b);
-  p.lab(pl_text(plot.x_label).c_str(), pl_text(plot.y_label).c_str(), pl_text(plot.title).c_str());
+  draw_labels(p, plot.x_label, plot.y_label, plot.title, y_offset);
 
   LegendEntries legend;
   for (const auto& s : plot.series) {
@@ -539,6 +575,17 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
             static_cast<int>(map.regions.size() + map.overlays.size() + map.markers.size()));
   plstream& p = page.p;
   p.vpas(0.10, 0.80, (50.0 + legend_pt) / height_pt, 1 - 34.0 / height_pt, aspect);
+  double y_offset = 5.0;
+  {
+    // the y label clear of the y ticks draw_box will write: the box moves right if need be
+    PLFLT vx0, vx1, vy0, vy1;
+    p.gvpd(vx0, vx1, vy0, vy1);
+    const double step = nice_step(wy1 - wy0, std::max(2.0, (vy1 - vy0) * height_pt / 30));
+    y_offset = y_label_offset(widest_tick_label(wy0, wy1, step, false));
+    const double need = left_edge_for(p, y_offset);
+    if (need > vx0)
+      p.vpas(0.10 + (need - vx0), 0.80, (50.0 + legend_pt) / height_pt, 1 - 34.0 / height_pt, aspect);
+  }
   p.wind(wx0, wx1, wy0, wy1);
   set_viridis(p);
 
@@ -589,7 +636,7 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
   p.col0(kSlotInk);
   p.width(0.8);
   draw_box(p, map.width_pt, height_pt, wx1 - wx0, wy1 - wy0, false);
-  p.lab(pl_text(map.x_label).c_str(), pl_text(map.y_label).c_str(), pl_text(map.title).c_str());
+  draw_labels(p, map.x_label, map.y_label, map.title, y_offset);
 
   if (has_values) {
     PLINT label_opts[] = {PL_COLORBAR_LABEL_RIGHT};

@@ -9,6 +9,7 @@
 #include "report/results_record.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
+#include "studies/time_optimal/result.hpp"
 #include "studies/time_optimal/results_section.hpp"
 
 namespace armstudy::report {
@@ -81,7 +82,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
               "largest limit use", "where"};
   for (const auto& s : solvers) {
     const double worst = s.violation ? s.violation->worst : NAN;
-    t.rows.push_back({s.name, as_text(s.solved), format_sig(s.duration_s, 7),
+    t.rows.push_back({studies::time_optimal::solver_words(s.name), as_text(s.solved), format_sig(s.duration_s, 7),
                       format_sig(s.run_time_s, 3), as_text(s.intervals), as_text(s.levels),
                       std::isfinite(worst)  ? format_sig(1 + worst, 6)
                       : s.violation ? to_json(s.violation->ratio).dump()
@@ -90,7 +91,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     t.swatches.push_back(css_colour(colour_for(solver_key(s.name))));
   }
   if (!t.rows.empty()) res.table(std::move(t));
-  for (const auto& s : solvers) res.paragraph(s.name + ": " + s.method);
+  for (const auto& s : solvers) res.paragraph(studies::time_optimal::solver_words(s.name) + ": " + s.method);
 
   // phase plane: s' over s, the maximum velocity curve and each solver's profile
   LinePlot phase;
@@ -114,7 +115,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       nodes = true;
     }
     if (x.empty() || x.size() != y.size()) continue;
-    Series se{s.name, x, y, colour_for(solver_key(s.name))};
+    Series se{studies::time_optimal::solver_words(s.name), x, y, colour_for(solver_key(s.name))};
     se.markers = nodes && x.size() <= 60;
     phase.series.push_back(std::move(se));
   }
@@ -136,7 +137,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     const auto& t = s.samples->t_s;
     const auto& x = s.samples->s;
     if (t.size() >= 2 && t.size() == x.size())
-      st.series.push_back({s.name, t, x, colour_for(solver_key(s.name))});
+      st.series.push_back({studies::time_optimal::solver_words(s.name), t, x, colour_for(solver_key(s.name))});
   }
   if (!st.series.empty())
     res.figure(figures.line("path_position", st,
@@ -166,7 +167,7 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       for (const auto& s : solvers) {
         if (!s.samples || s.samples->t_s.size() < 2) continue;
         const auto& ts = s.samples->t_s;
-        p.series.push_back({s.name, ts, row((*s.samples).*k.rows, j), colour_for(solver_key(s.name))});
+        p.series.push_back({studies::time_optimal::solver_words(s.name), ts, row((*s.samples).*k.rows, j), colour_for(solver_key(s.name))});
         if (p.series.back().y.empty()) p.series.pop_back();
       }
       const double l = at(*k.limit, j);

@@ -419,8 +419,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       out.reason = "no candidate keeps the line " + fmt(spec.singularity_margin) +
                    " m inside the reachable annulus [" + fmt(an.inner, 3) + ", " + fmt(an.outer, 3) +
                    "] m" + (spec.torque_limit || spec.power_limit ? " within the actuator limits" : "") +
-                   " (" + std::to_string(n.singular) + " of " + std::to_string(n.total) +
-                   " sweep candidates singular, " + std::to_string(n.over_limit) + " over a limit)";
+                   "; of the " + std::to_string(n.total) + " sweep candidates " +
+                   std::to_string(n.unreachable) + " are unreachable, " + std::to_string(n.singular) +
+                   " inside the margin, " + std::to_string(n.over_limit) + " over a limit";
     } else {
       out.found = true;
       out.grid = candidate(size_t(best));

@@ -45,6 +45,14 @@ struct Violation {
   std::string text;      ///< names the grid point, binding limit and margin
 };
 
+/// A solver's name ("exact", "dp", "dp_joint1", "complex") in words, for sentences and labels.
+inline std::string solver_words(const std::string& name) {
+  if (name == "dp") return "DP";
+  if (name == "dp_joint1") return "DP, joint-1 velocity state";
+  if (name == "complex") return "Complex method";
+  return name;
+}
+
 struct SolverResult {
   std::string name;         ///< "exact", "dp", "dp_joint1", "complex"
   std::string method;       ///< a sentence
@@ -60,6 +68,9 @@ struct SolverResult {
   Violation violation;      ///< over the full dense resampling
   long evaluations = 0;     ///< DP transitions / Complex objective calls
   int iterations = 0;       ///< Complex reflections
+
+  /// The solver in words, for sentences and labels ("dp_joint1" is a results.json key).
+  std::string words() const { return solver_words(name); }
 };
 
 struct ConvergenceRow {

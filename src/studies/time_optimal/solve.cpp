@@ -500,9 +500,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
      << (res.joint_space ? " joint-space path: " : " path: ")
      << fixed(exact.duration, 4) << " s (exact)";
   for (const SolverResult& r : res.solvers)
-    if (r.name != "exact" && r.solved) os << ", " << fixed(r.duration, 4) << " s (" << r.name << ")";
+    if (r.name != "exact" && r.solved) os << ", " << fixed(r.duration, 4) << " s (" << r.words() << ")";
   for (const SolverResult& r : res.solvers)
-    if (r.name != "exact" && !r.solved) os << "; " << r.name << " failed: " << r.message;
+    if (r.name != "exact" && !r.solved) os << "; " << r.words() << " failed: " << r.message;
   if (res.grid.computed && !(res.grid.change <= res.grid.tolerance))
     os << "; the exact duration is NOT converged in its grid: " << res.grid.text;
   res.message = os.str();
