@@ -142,8 +142,14 @@ struct XRange {
 };
 XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace& ws) {
   XRange out;
-  ws.lower.clear();
-  ws.upper.clear();
+  const size_t most = 2 * static_cast<size_t>(n + 1);
+  if (ws.lower.size() < most) {
+    ws.lower.resize(most);
+    ws.upper.resize(most);
+  }
+  Ln* L = ws.lower.data();
+  Ln* U = ws.upper.data();
+  int nl = 0, nu = 0;
   const auto take = [&](const Coef& r) {
     if (r.cu == 0.0) {
       if (r.cx > 0) {
@@ -158,17 +164,19 @@ XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace
       return true;
     }
     const double inv = 1.0 / r.cu;
-    const bool pos = r.cu > 0;
-    if (std::isfinite(r.hi)) (pos ? ws.upper : ws.lower).push_back(Ln{r.hi * inv, -r.cx * inv});
-    if (std::isfinite(r.lo)) (pos ? ws.lower : ws.upper).push_back(Ln{r.lo * inv, -r.cx * inv});
+    const double slope = -r.cx * inv;
+    if (r.cu > 0) {
+      if (std::isfinite(r.hi)) U[nu++] = Ln{r.hi * inv, slope};
+      if (std::isfinite(r.lo)) L[nl++] = Ln{r.lo * inv, slope};
+    } else {
+      if (std::isfinite(r.hi)) L[nl++] = Ln{r.hi * inv, slope};
+      if (std::isfinite(r.lo)) U[nu++] = Ln{r.lo * inv, slope};
+    }
     return true;
   };
   for (int i = 0; i < n; ++i)
     if (!take(rows[i])) return XRange{1, 0};
   if (!take(last)) return XRange{1, 0};
-  const Ln* L = ws.lower.data();
-  const Ln* U = ws.upper.data();
-  const int nl = static_cast<int>(ws.lower.size()), nu = static_cast<int>(ws.upper.size());
   for (int a = 0; a < nl; ++a) {
     for (int b = 0; b < nu; ++b) {
       const double d = L[a].r - U[b].r, g = U[b].p - L[a].p;

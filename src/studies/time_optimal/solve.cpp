@@ -109,6 +109,7 @@ std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen:
   const TipRateEvaluator rates(pb.chain, pb.path.tip(), pb.configuration);
   for (size_t k = 0; k < probe.size(); ++k)
     for (bool left : {false, true}) {
+      if (left && !pb.path.tip().joins_pieces(probe[k])) continue;  // the same point
       TipRates r;
       if (rates.at(probe[k], left, &r) && std::abs(r.s2) > 1e-6) continue;
       PathTrouble trouble;
