@@ -1,6 +1,7 @@
 // exact solver: reachability analysis (backward controllable sets, greedy forward pass)
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 #include "core/check.hpp"
@@ -117,7 +118,7 @@ struct ExactWorkspace {
   std::vector<double> klo, khi, x;
   std::vector<unsigned char> rest;
   std::vector<Ln> lower, upper;
-  JointPoint prev, cur;
+  JointPoint buf[2], cur;
 };
 
 // append_rows without tags (the same values in the same order)
@@ -131,6 +132,21 @@ inline int add_rows(const JointPoint& jp, const Limits& lim, double shift, Coef*
     add(jp.dq[j] * jp.dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j]);
     add(jp.b[j], jp.a[j], -lim.torque[j] - jp.c[j], lim.torque[j] - jp.c[j]);
     if (lim.acceleration) add(jp.ddq[j], jp.dq[j], -(*lim.acceleration)[j], (*lim.acceleration)[j]);
+  }
+  return n;
+}
+
+// add_rows from a point's numbers as ExactPointCache keeps them (q', q'', a, b, c)
+inline int add_rows(const double* p, int nj, const Limits& lim, double shift, Coef* out) {
+  int n = 0;
+  const auto add = [&](double cx, double cu, double lo, double hi) {
+    out[n++] = Coef{cx, cu + shift * cx, lo, hi};
+  };
+  const double *dq = p, *ddq = p + nj, *a = p + 2 * nj, *b = p + 3 * nj, *c = p + 4 * nj;
+  for (int j = 0; j < nj; ++j) {
+    add(dq[j] * dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j]);
+    add(b[j], a[j], -lim.torque[j] - c[j], lim.torque[j] - c[j]);
+    if (lim.acceleration) add(ddq[j], dq[j], -(*lim.acceleration)[j], (*lim.acceleration)[j]);
   }
   return n;
 }
@@ -234,7 +250,35 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
   return solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
 }
 
-SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, const std::vector<int>& checks_per) {
+ExactPointCache::ExactPointCache(const Problem& problem) : joints_(problem.limits.joints()) {
+  if (!problem.path.joint_space()) path_ = &problem.path.tip();
+}
+
+const double* ExactPointCache::find(double s, bool from_left) const {
+  if (!path_) return nullptr;
+  auto it = std::lower_bound(index_.begin(), index_.end(), s, [](const Entry& e, double v) { return e.s < v; });
+  for (; it != index_.end() && it->s == s; ++it)
+    if (it->from_left == from_left || !path_->joins_pieces(s)) return coef_.data() + it->at;
+  return nullptr;
+}
+
+void ExactPointCache::add(const JointPoint& p, bool from_left) {
+  if (!path_) return;
+  fresh_.push_back({p.s, from_left, coef_.size()});
+  for (const core::JointVector* v : {&p.dq, &p.ddq, &p.a, &p.b, &p.c})
+    for (int j = 0; j < joints_; ++j) coef_.push_back((*v)[j]);
+}
+
+void ExactPointCache::merge() {
+  std::vector<Entry> all(index_.size() + fresh_.size());
+  std::merge(index_.begin(), index_.end(), fresh_.begin(), fresh_.end(), all.begin(),
+             [](const Entry& a, const Entry& b) { return a.s < b.s; });
+  index_.swap(all);
+  fresh_.clear();
+}
+
+SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, const std::vector<int>& checks_per,
+                         ExactPointCache* cache) {
   thread_local ExactWorkspace ws;
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
@@ -263,6 +307,9 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, co
   // rows of every interval in (x_i, u), limits at theta = m / checks (interval_points'
   // points: the first point of an interval is the last of the one before, except at a stop)
   const PointSource source(pb);
+  const JointPoint* prev = nullptr;  // the last point of the interval before, or its
+  const double* prev_known = nullptr;  // numbers from the cache
+  int next = 0;                       // the buffer of the next new point
   for (int k = 0; k < N; ++k) {
     const int checks = checks_per[k];
     const double ds = nodes[k + 1] - nodes[k];
@@ -270,16 +317,31 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, co
     int c = 0;
     for (int m = 0; m <= checks; ++m) {
       if (m == 0 && k > 0 && std::find(stops.begin(), stops.end(), nodes[k]) == stops.end()) {
-        c += add_rows(ws.prev, pb.limits, 0.0, rows + c);
+        c += prev ? add_rows(*prev, pb.limits, 0.0, rows + c) : add_rows(prev_known, nj, pb.limits, 0.0, rows + c);
         continue;
       }
       const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
-      source.at(s, m == checks, &ws.cur);
-      c += add_rows(ws.cur, pb.limits, 2.0 * ds * m / checks, rows + c);
-      if (m == checks) std::swap(ws.prev, ws.cur);
+      const double shift = 2.0 * ds * m / checks;
+      const double* known = cache ? cache->find(s, m == checks) : nullptr;
+      if (known) {
+        c += add_rows(known, nj, pb.limits, shift, rows + c);
+        if (m == checks) {
+          prev = nullptr;
+          prev_known = known;
+        }
+        continue;
+      }
+      // (after m = 0, the point of the interval before is no longer needed)
+      JointPoint& fresh = ws.buf[next];
+      next ^= 1;
+      source.at(s, m == checks, &fresh);
+      if (cache) cache->add(fresh, m == checks);
+      c += add_rows(fresh, pb.limits, shift, rows + c);
+      if (m == checks) prev = &fresh;
     }
     ws.count[k] = c;
   }
+  if (cache) cache->merge();
 
   // backward pass: controllable sets, K_N = {0}; on any failure the reference solver
   // (the same numbers, with the rows' tags) words the message
