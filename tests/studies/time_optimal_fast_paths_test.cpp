@@ -137,6 +137,13 @@ TEST(TimeOptimalFastPaths, MaximumVelocityCurveIsTheTaggedRowsOne) {
         if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
       ASSERT_EQ(vel[k], v) << k;
     }
+    // the same from the points of a solve on the same nodes
+    ExactPointCache cache(pb);
+    solve_exact(pb, nodes, std::vector<int>(150, 2), &cache);
+    std::vector<double> all_c, vel_c;
+    max_velocity_curve(pb, nodes, &all_c, &vel_c, &cache);
+    EXPECT_EQ(all_c, all);
+    EXPECT_EQ(vel_c, vel);
   }
 }
 

@@ -122,7 +122,7 @@ class TipRateEvaluator {
   const PathGeometry* path_;
   Eigen::Vector2d base_;
   Eigen::Matrix2d rt_;
-  double cb_, sb_, L1_, L2_, c2_shift_, c2_scale_;
+  double cb_, sb_, L1_, L2_, c2_shift_, c2_scale_, inv_l1l2_;
   int configuration_;
 };
 

@@ -225,7 +225,8 @@ double u_hi_fast(const Coef* rows, int n, double x) {
 }  // namespace
 
 void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
-                        std::vector<double>* sd_all, std::vector<double>* sd_velocity) {
+                        std::vector<double>* sd_all, std::vector<double>* sd_velocity,
+                        const ExactPointCache* cache) {
   sd_all->assign(nodes.size(), 0.0);
   sd_velocity->assign(nodes.size(), 0.0);
   thread_local ExactWorkspace ws;
@@ -233,14 +234,21 @@ void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
   const Coef none{0.0, 0.0, -kInf, kInf};  // no extra row
   ws.rows.resize(static_cast<size_t>(pb.limits.joints()) * 3);
   for (size_t k = 0; k < nodes.size(); ++k) {
-    source.at(nodes[k], k + 1 == nodes.size(), &ws.cur);
-    const JointPoint& jp = ws.cur;
-    const int c = add_rows(jp, pb.limits, 0.0, ws.rows.data());
+    const int nj = pb.limits.joints();
+    const double* known = cache ? cache->find(nodes[k], k + 1 == nodes.size()) : nullptr;
+    int c;
+    if (known) {
+      c = add_rows(known, nj, pb.limits, 0.0, ws.rows.data());
+    } else {
+      source.at(nodes[k], k + 1 == nodes.size(), &ws.cur);
+      c = add_rows(ws.cur, pb.limits, 0.0, ws.rows.data());
+    }
+    const double* dq = known ? known : ws.cur.dq.data();
     const XRange xi = feasible_x_fast(ws.rows.data(), c, none, ws);
     (*sd_all)[k] = xi.lo > xi.hi ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
     double v = kInf;
-    for (int j = 0; j < pb.limits.joints(); ++j)
-      if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
+    for (int j = 0; j < nj; ++j)
+      if (dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(dq[j]));
     (*sd_velocity)[k] = v;
   }
 }

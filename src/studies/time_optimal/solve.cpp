@@ -369,7 +369,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   const double exact_duration = res.solvers.front().duration;
   report(0.1, "exact solver on the refined grid");
   res.grid = grid_convergence(pb, res.solvers.front(), exact_checks, spec.exact.grid_tolerance, &points);
-  max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd);
+  max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
   res.mvc_s = grid;
   res.path_p.resize(2, grid.size());
   for (size_t k = 0; k < grid.size(); ++k) res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());

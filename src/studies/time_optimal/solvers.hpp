@@ -70,8 +70,10 @@ SolverOutput solve_exact_reference(const Problem& problem, const std::vector<dou
 
 /// Maximum velocity curve at `nodes`: the largest s' (m/s) at which some s'' meets every
 /// limit at that point (`sd_all`), and the s' allowed by the velocity limits alone.
+/// The points come from `cache` where it has them (the same numbers).
 void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes,
-                        std::vector<double>* sd_all, std::vector<double>* sd_velocity);
+                        std::vector<double>* sd_all, std::vector<double>* sd_velocity,
+                        const ExactPointCache* cache = nullptr);
 
 /// Dynamic programming as in Ozkipcak (1994): `segments` intervals, constant
 /// acceleration in each, Bellman recursion over `levels` velocity levels per interior node;
