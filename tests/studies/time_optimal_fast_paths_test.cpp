@@ -137,6 +137,13 @@ TEST(TimeOptimalFastPaths, MaximumVelocityCurveIsTheTaggedRowsOne) {
         if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
       ASSERT_EQ(vel[k], v) << k;
     }
+    // the same from the points of a solve on the same nodes
+    ExactPointCache cache(pb);
+    solve_exact(pb, nodes, std::vector<int>(150, 2), &cache);
+    std::vector<double> all_c, vel_c;
+    max_velocity_curve(pb, nodes, &all_c, &vel_c, &cache);
+    EXPECT_EQ(all_c, all);
+    EXPECT_EQ(vel_c, vel);
   }
 }
 
@@ -154,6 +161,30 @@ TEST(TimeOptimalFastPaths, SolveExactWithMoreChecksInSomeIntervalsIsTheReference
     // the most everywhere
     EXPECT_GE(fast.duration, solve_exact(pb, nodes, 2).duration);
     EXPECT_LE(fast.duration, solve_exact(pb, nodes, 8).duration);
+  }
+}
+
+TEST(TimeOptimalFastPaths, SolveExactWithThePointsOfEarlierSolvesGivesTheSameNumbers) {
+  for (const Problem& pb : problems()) {
+    const std::vector<double> nodes = make_nodes(pb.path, 80);
+    std::vector<double> fine;
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      if (k > 0) fine.push_back(0.5 * (nodes[k - 1] + nodes[k]));
+      fine.push_back(nodes[k]);
+    }
+    ExactPointCache cache(pb);
+    std::vector<int> checks(80, 2);
+    const std::vector<double> first = solve_exact(pb, nodes, checks, &cache).profile.sd;
+    EXPECT_EQ(first, solve_exact(pb, nodes, checks).profile.sd);
+    for (int k = 30; k < 40; ++k) checks[k] = 4;
+    EXPECT_EQ(solve_exact(pb, nodes, checks, &cache).profile.sd, solve_exact(pb, nodes, checks).profile.sd);
+    std::vector<int> fine_checks(160);
+    for (int i = 0; i < 160; ++i) fine_checks[i] = checks[i / 2];
+    EXPECT_EQ(solve_exact(pb, fine, fine_checks, &cache).profile.sd, solve_exact(pb, fine, fine_checks).profile.sd);
+    if (!pb.path.joint_space()) {
+      // the halved grid's nodes are the grid's nodes and check points: found in the cache
+      for (double s : fine) EXPECT_NE(cache.find(s, true), nullptr) << s;
+    }
   }
 }
 

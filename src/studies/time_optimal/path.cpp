@@ -41,6 +41,7 @@ PathGeometry::PathGeometry(const PathSpec& spec) : kind_(spec.kind), pts_(spec.p
     piece_s_.push_back(0.0);
     for (int i = 0; i + 1 < n; ++i) piece_s_.push_back(piece_s_.back() + (pts_[i + 1] - pts_[i]).norm());
     length_ = piece_s_.back();
+    for (int i = 0; i + 1 < n; ++i) dir_.push_back((pts_[i + 1] - pts_[i]).normalized());
     for (int i = 1; i + 1 < n; ++i) {
       // a corner only where the direction changes
       const Eigen::Vector2d d0 = (pts_[i] - pts_[i - 1]).normalized();
@@ -92,6 +93,10 @@ double PathGeometry::spline_arc(int i, double t0, double t1) const {
   return s * half;
 }
 
+bool PathGeometry::joins_pieces(double s) const {
+  return piece_s_.size() > 2 && std::binary_search(piece_s_.begin() + 1, piece_s_.end() - 1, s);
+}
+
 PathPoint PathGeometry::at(double s, bool from_left) const {
   s = std::clamp(s, 0.0, length_);
   const int pieces = static_cast<int>(piece_s_.size()) - 1;
@@ -105,7 +110,7 @@ PathPoint PathGeometry::at(double s, bool from_left) const {
   i = std::clamp(i, 0, pieces - 1);
   PathPoint out;
   if (kind_ != PathKind::kSpline) {
-    const Eigen::Vector2d d = (pts_[i + 1] - pts_[i]).normalized();
+    const Eigen::Vector2d& d = dir_[i];
     out.p = pts_[i] + d * (s - piece_s_[i]);
     out.dp = d;
     out.ddp.setZero();
@@ -197,6 +202,9 @@ TipRateEvaluator::TipRateEvaluator(const core::PlanarChain& chain, const PathGeo
                    "configuration " << configuration << " should be 1 or 2");
   L1_ = chain.links[0].length;
   L2_ = chain.links[1].length;
+  c2_shift_ = L1_ * L1_ + L2_ * L2_;
+  c2_scale_ = 1.0 / (2.0 * L1_ * L2_);
+  inv_l1l2_ = 1.0 / (L1_ * L2_);
   cb_ = std::cos(chain.base_angle);
   sb_ = std::sin(chain.base_angle);
   rt_ << cb_, sb_, -sb_, cb_;
@@ -207,27 +215,28 @@ bool TipRateEvaluator::at(double s, bool from_left, TipRates* out) const {
   const Eigen::Vector2d p = rt_ * (pp.p - base_);
   const Eigen::Vector2d v = rt_ * pp.dp, a = rt_ * pp.ddp;
   const double r2 = p.squaredNorm();
-  const double c2 = (r2 - L1_ * L1_ - L2_ * L2_) / (2.0 * L1_ * L2_);
+  const double c2 = (r2 - c2_shift_) * c2_scale_;
   // inside the annulus with the elbow clearly bent (joint_point's test is |sin q2| >= 1e-9)
   const double w = (1.0 - c2) * (1.0 + c2);
   if (!(w > 1e-16)) return false;
-  const double s2 = configuration_ == 1 ? std::sqrt(w) : -std::sqrt(w);
-  // p = R(q1) (k1, k2): link 1's direction (base frame)
+  const double ir2 = 1.0 / r2;  // (independent of the square root: both run at once)
+  const double root = std::sqrt(w);
+  const double s2 = configuration_ == 1 ? root : -root;
+  // p = R(q1) (k1, k2) with |(k1, k2)| = |p|: link 1's direction (base frame)
   const double k1 = L1_ + L2_ * c2, k2 = L2_ * s2;
-  const double kk = k1 * k1 + k2 * k2;
-  const double c1 = (p.x() * k1 + p.y() * k2) / kk, s1 = (p.y() * k1 - p.x() * k2) / kk;
+  const double c1 = (p.x() * k1 + p.y() * k2) * ir2, s1 = (p.y() * k1 - p.x() * k2) * ir2;
   const double c12 = c1 * c2 - s1 * s2, s12 = s1 * c2 + c1 * s2;
-  const double det = L1_ * L2_ * s2;
+  const double idet = inv_l1l2_ / s2;
   const double j11 = -L1_ * s1 - L2_ * s12, j12 = -L2_ * s12;
   const double j21 = L1_ * c1 + L2_ * c12, j22 = L2_ * c12;
-  const double qd1 = (j22 * v.x() - j12 * v.y()) / det, qd2 = (-j21 * v.x() + j11 * v.y()) / det;
+  const double qd1 = (j22 * v.x() - j12 * v.y()) * idet, qd2 = (-j21 * v.x() + j11 * v.y()) * idet;
   const double w1 = qd1, w12 = qd1 + qd2;
   const double bx = a.x() + L1_ * c1 * w1 * w1 + L2_ * c12 * w12 * w12;
   const double by = a.y() + L1_ * s1 * w1 * w1 + L2_ * s12 * w12 * w12;
   out->dq[0] = qd1;
   out->dq[1] = qd2;
-  out->ddq[0] = (j22 * bx - j12 * by) / det;
-  out->ddq[1] = (-j21 * bx + j11 * by) / det;
+  out->ddq[0] = (j22 * bx - j12 * by) * idet;
+  out->ddq[1] = (-j21 * bx + j11 * by) * idet;
   out->c1 = cb_ * c1 - sb_ * s1;  // base_angle + q1
   out->s1 = sb_ * c1 + cb_ * s1;
   out->c2 = c2;

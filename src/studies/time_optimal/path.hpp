@@ -35,6 +35,8 @@ class PathGeometry {
   PathPoint at(double s, bool from_left = false) const;
   /// Arc lengths where the tangent jumps (interior polyline corners): the arm must stop.
   const std::vector<double>& stops() const { return stops_; }
+  /// True when at(s, true) and at(s, false) may differ: s is where two pieces meet.
+  bool joins_pieces(double s) const;
 
  private:
   PathKind kind_;
@@ -42,6 +44,7 @@ class PathGeometry {
   double length_ = 0;
   std::vector<double> stops_;
   std::vector<double> piece_s_;  // arc length at the start of each piece (+ total)
+  std::vector<Eigen::Vector2d> dir_;  // line and polyline: unit direction of each piece
   // spline: knots tau (chord length), second derivatives per point, and an arc-length
   // table per piece (tau, s) for inversion
   std::vector<double> tau_;
@@ -119,7 +122,7 @@ class TipRateEvaluator {
   const PathGeometry* path_;
   Eigen::Vector2d base_;
   Eigen::Matrix2d rt_;
-  double cb_, sb_, L1_, L2_;
+  double cb_, sb_, L1_, L2_, c2_shift_, c2_scale_, inv_l1l2_;
   int configuration_;
 };
 

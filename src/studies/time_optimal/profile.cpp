@@ -422,16 +422,21 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
       for (int kind = 0; kind < kinds; ++kind) {
         for (int j = 0; j < nj; ++j) {
           const double r = use_ratio(vals[kind][j], lim[kind][j]);
+          worst_here = std::max(worst_here, r - 1);
+          double& b = best[kind][j];
+          if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
           auto& c = cand[kind][j];
-          if (r > best[kind][j]) {
-            best[kind][j] = r;
+          if (r > b) {
             const double floor = r - kRounding * std::max(1.0, r);
-            if (!c.empty() && c.front().r < floor)
+            if (b < floor) {
+              c.clear();  // every earlier candidate is below the new floor
+            } else {
               c.erase(std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
                       c.end());
+            }
+            b = r;
           }
-          if (r > 0 && r >= best[kind][j] - kRounding * std::max(1.0, best[kind][j])) c.push_back({k, m, r});
-          worst_here = std::max(worst_here, r - 1);
+          c.push_back({k, m, r});
         }
       }
       if (interval_worst && worst_here > (*interval_worst)[k]) (*interval_worst)[k] = worst_here;

@@ -1,6 +1,7 @@
 // exact solver: reachability analysis (backward controllable sets, greedy forward pass)
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 #include "core/check.hpp"
@@ -117,7 +118,7 @@ struct ExactWorkspace {
   std::vector<double> klo, khi, x;
   std::vector<unsigned char> rest;
   std::vector<Ln> lower, upper;
-  JointPoint prev, cur;
+  JointPoint buf[2], cur;
 };
 
 // append_rows without tags (the same values in the same order)
@@ -135,6 +136,21 @@ inline int add_rows(const JointPoint& jp, const Limits& lim, double shift, Coef*
   return n;
 }
 
+// add_rows from a point's numbers as ExactPointCache keeps them (q', q'', a, b, c)
+inline int add_rows(const double* p, int nj, const Limits& lim, double shift, Coef* out) {
+  int n = 0;
+  const auto add = [&](double cx, double cu, double lo, double hi) {
+    out[n++] = Coef{cx, cu + shift * cx, lo, hi};
+  };
+  const double *dq = p, *ddq = p + nj, *a = p + 2 * nj, *b = p + 3 * nj, *c = p + 4 * nj;
+  for (int j = 0; j < nj; ++j) {
+    add(dq[j] * dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j]);
+    add(b[j], a[j], -lim.torque[j] - c[j], lim.torque[j] - c[j]);
+    if (lim.acceleration) add(ddq[j], dq[j], -(*lim.acceleration)[j], (*lim.acceleration)[j]);
+  }
+  return n;
+}
+
 // feasible_x of rows[0..n) and the extra row `last`, without tags: the same bounds (every
 // candidate is the same quotient; min and max do not depend on the order)
 struct XRange {
@@ -142,8 +158,14 @@ struct XRange {
 };
 XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace& ws) {
   XRange out;
-  ws.lower.clear();
-  ws.upper.clear();
+  const size_t most = 2 * static_cast<size_t>(n + 1);
+  if (ws.lower.size() < most) {
+    ws.lower.resize(most);
+    ws.upper.resize(most);
+  }
+  Ln* L = ws.lower.data();
+  Ln* U = ws.upper.data();
+  int nl = 0, nu = 0;
   const auto take = [&](const Coef& r) {
     if (r.cu == 0.0) {
       if (r.cx > 0) {
@@ -158,17 +180,19 @@ XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace
       return true;
     }
     const double inv = 1.0 / r.cu;
-    const bool pos = r.cu > 0;
-    if (std::isfinite(r.hi)) (pos ? ws.upper : ws.lower).push_back(Ln{r.hi * inv, -r.cx * inv});
-    if (std::isfinite(r.lo)) (pos ? ws.lower : ws.upper).push_back(Ln{r.lo * inv, -r.cx * inv});
+    const double slope = -r.cx * inv;
+    if (r.cu > 0) {
+      if (std::isfinite(r.hi)) U[nu++] = Ln{r.hi * inv, slope};
+      if (std::isfinite(r.lo)) L[nl++] = Ln{r.lo * inv, slope};
+    } else {
+      if (std::isfinite(r.hi)) L[nl++] = Ln{r.hi * inv, slope};
+      if (std::isfinite(r.lo)) U[nu++] = Ln{r.lo * inv, slope};
+    }
     return true;
   };
   for (int i = 0; i < n; ++i)
     if (!take(rows[i])) return XRange{1, 0};
   if (!take(last)) return XRange{1, 0};
-  const Ln* L = ws.lower.data();
-  const Ln* U = ws.upper.data();
-  const int nl = static_cast<int>(ws.lower.size()), nu = static_cast<int>(ws.upper.size());
   for (int a = 0; a < nl; ++a) {
     for (int b = 0; b < nu; ++b) {
       const double d = L[a].r - U[b].r, g = U[b].p - L[a].p;
@@ -201,7 +225,8 @@ double u_hi_fast(const Coef* rows, int n, double x) {
 }  // namespace
 
 void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
-                        std::vector<double>* sd_all, std::vector<double>* sd_velocity) {
+                        std::vector<double>* sd_all, std::vector<double>* sd_velocity,
+                        const ExactPointCache* cache) {
   sd_all->assign(nodes.size(), 0.0);
   sd_velocity->assign(nodes.size(), 0.0);
   thread_local ExactWorkspace ws;
@@ -209,14 +234,21 @@ void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
   const Coef none{0.0, 0.0, -kInf, kInf};  // no extra row
   ws.rows.resize(static_cast<size_t>(pb.limits.joints()) * 3);
   for (size_t k = 0; k < nodes.size(); ++k) {
-    source.at(nodes[k], k + 1 == nodes.size(), &ws.cur);
-    const JointPoint& jp = ws.cur;
-    const int c = add_rows(jp, pb.limits, 0.0, ws.rows.data());
+    const int nj = pb.limits.joints();
+    const double* known = cache ? cache->find(nodes[k], k + 1 == nodes.size()) : nullptr;
+    int c;
+    if (known) {
+      c = add_rows(known, nj, pb.limits, 0.0, ws.rows.data());
+    } else {
+      source.at(nodes[k], k + 1 == nodes.size(), &ws.cur);
+      c = add_rows(ws.cur, pb.limits, 0.0, ws.rows.data());
+    }
+    const double* dq = known ? known : ws.cur.dq.data();
     const XRange xi = feasible_x_fast(ws.rows.data(), c, none, ws);
     (*sd_all)[k] = xi.lo > xi.hi ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
     double v = kInf;
-    for (int j = 0; j < pb.limits.joints(); ++j)
-      if (jp.dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(jp.dq[j]));
+    for (int j = 0; j < nj; ++j)
+      if (dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(dq[j]));
     (*sd_velocity)[k] = v;
   }
 }
@@ -226,7 +258,35 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, in
   return solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
 }
 
-SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, const std::vector<int>& checks_per) {
+ExactPointCache::ExactPointCache(const Problem& problem) : joints_(problem.limits.joints()) {
+  if (!problem.path.joint_space()) path_ = &problem.path.tip();
+}
+
+const double* ExactPointCache::find(double s, bool from_left) const {
+  if (!path_) return nullptr;
+  auto it = std::lower_bound(index_.begin(), index_.end(), s, [](const Entry& e, double v) { return e.s < v; });
+  for (; it != index_.end() && it->s == s; ++it)
+    if (it->from_left == from_left || !path_->joins_pieces(s)) return coef_.data() + it->at;
+  return nullptr;
+}
+
+void ExactPointCache::add(const JointPoint& p, bool from_left) {
+  if (!path_) return;
+  fresh_.push_back({p.s, from_left, coef_.size()});
+  for (const core::JointVector* v : {&p.dq, &p.ddq, &p.a, &p.b, &p.c})
+    for (int j = 0; j < joints_; ++j) coef_.push_back((*v)[j]);
+}
+
+void ExactPointCache::merge() {
+  std::vector<Entry> all(index_.size() + fresh_.size());
+  std::merge(index_.begin(), index_.end(), fresh_.begin(), fresh_.end(), all.begin(),
+             [](const Entry& a, const Entry& b) { return a.s < b.s; });
+  index_.swap(all);
+  fresh_.clear();
+}
+
+SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, const std::vector<int>& checks_per,
+                         ExactPointCache* cache) {
   thread_local ExactWorkspace ws;
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
@@ -255,6 +315,9 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, co
   // rows of every interval in (x_i, u), limits at theta = m / checks (interval_points'
   // points: the first point of an interval is the last of the one before, except at a stop)
   const PointSource source(pb);
+  const JointPoint* prev = nullptr;  // the last point of the interval before, or its
+  const double* prev_known = nullptr;  // numbers from the cache
+  int next = 0;                       // the buffer of the next new point
   for (int k = 0; k < N; ++k) {
     const int checks = checks_per[k];
     const double ds = nodes[k + 1] - nodes[k];
@@ -262,16 +325,31 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, co
     int c = 0;
     for (int m = 0; m <= checks; ++m) {
       if (m == 0 && k > 0 && std::find(stops.begin(), stops.end(), nodes[k]) == stops.end()) {
-        c += add_rows(ws.prev, pb.limits, 0.0, rows + c);
+        c += prev ? add_rows(*prev, pb.limits, 0.0, rows + c) : add_rows(prev_known, nj, pb.limits, 0.0, rows + c);
         continue;
       }
       const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
-      source.at(s, m == checks, &ws.cur);
-      c += add_rows(ws.cur, pb.limits, 2.0 * ds * m / checks, rows + c);
-      if (m == checks) std::swap(ws.prev, ws.cur);
+      const double shift = 2.0 * ds * m / checks;
+      const double* known = cache ? cache->find(s, m == checks) : nullptr;
+      if (known) {
+        c += add_rows(known, nj, pb.limits, shift, rows + c);
+        if (m == checks) {
+          prev = nullptr;
+          prev_known = known;
+        }
+        continue;
+      }
+      // (after m = 0, the point of the interval before is no longer needed)
+      JointPoint& fresh = ws.buf[next];
+      next ^= 1;
+      source.at(s, m == checks, &fresh);
+      if (cache) cache->add(fresh, m == checks);
+      c += add_rows(fresh, pb.limits, shift, rows + c);
+      if (m == checks) prev = &fresh;
     }
     ws.count[k] = c;
   }
+  if (cache) cache->merge();
 
   // backward pass: controllable sets, K_N = {0}; on any failure the reference solver
   // (the same numbers, with the rows' tags) words the message

@@ -109,6 +109,7 @@ std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen:
   const TipRateEvaluator rates(pb.chain, pb.path.tip(), pb.configuration);
   for (size_t k = 0; k < probe.size(); ++k)
     for (bool left : {false, true}) {
+      if (left && !pb.path.tip().joins_pieces(probe[k])) continue;  // the same point
       TipRates r;
       if (rates.at(probe[k], left, &r) && std::abs(r.s2) > 1e-6) continue;
       PathTrouble trouble;
@@ -151,7 +152,8 @@ class MinSinQ2 {
 // The exact solution on the case's grid against the same problem on the grid with every
 // interval halved: the relative change and where it lies.
 GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
-                                 const std::vector<int>& checks, double tolerance) {
+                                 const std::vector<int>& checks, double tolerance,
+                                 ExactPointCache* points) {
   GridConvergence g;
   g.computed = true;
   g.tolerance = tolerance;
@@ -169,7 +171,7 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
   // both halves of interval k keep its check points per interval
   std::vector<int> fine_checks(fine.size() - 1);
   for (size_t i = 0; i < fine_checks.size(); ++i) fine_checks[i] = checks[i / 2];
-  const SolverOutput o = solve_exact(pb, fine, fine_checks);
+  const SolverOutput o = solve_exact(pb, fine, fine_checks, points);
   // |sin q2| along the path (at the refined grid's points); the smallest over a range of them
   const MinSinQ2 min_sin_q2(pb, fine);
   g.path_min_sin_q2 = std::min(g.path_min_sin_q2, min_sin_q2(0, fine.size() - 1));
@@ -309,6 +311,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   report(0.05, "exact solver (reachability)");
   const std::vector<double> grid = make_nodes(pb.path, spec.exact.grid_points - 1);
   std::vector<int> exact_checks(grid.size() - 1, spec.exact.checks_per_interval);
+  ExactPointCache points(pb);  // the re-solves and the halved grid evaluate only new points
   {
     // limits hold at the check points of each interval; between them a limit may be
     // overshot by O(h^2). While the dense resampling of the whole answer finds a limit
@@ -321,7 +324,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     r.intervals = static_cast<int>(grid.size()) - 1;
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<double> interval_worst;
-    SolverOutput o = solve_exact(pb, grid, exact_checks);
+    SolverOutput o = solve_exact(pb, grid, exact_checks, &points);
     finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance; ++k) {
       bool refined = false;
@@ -339,7 +342,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
           refined = true;
         }
       if (!refined) exact_checks[r.violation.interval] *= 2;  // (its excess by the closed form rounds below)
-      o = solve_exact(pb, grid, exact_checks);
+      o = solve_exact(pb, grid, exact_checks, &points);
       finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     }
     r.run_time = seconds_since(t0);
@@ -365,8 +368,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   // (no reference into res.solvers: it grows below)
   const double exact_duration = res.solvers.front().duration;
   report(0.1, "exact solver on the refined grid");
-  res.grid = grid_convergence(pb, res.solvers.front(), exact_checks, spec.exact.grid_tolerance);
-  max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd);
+  res.grid = grid_convergence(pb, res.solvers.front(), exact_checks, spec.exact.grid_tolerance, &points);
+  max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
   res.mvc_s = grid;
   res.path_p.resize(2, grid.size());
   for (size_t k = 0; k < grid.size(); ++k) res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());

@@ -20,6 +20,35 @@ struct SolverOutput {
   int restarts = 0;      ///< Complex restarts from its best point
 };
 
+/// Joint points of earlier exact solves of one problem, by s and side, so that a re-solve
+/// with more check points in some intervals, or on the grid with every interval halved,
+/// evaluates only its new points (the same numbers: a point is found only at the same s,
+/// from the same side unless no two pieces of the path join there). Tip paths only; on a
+/// joint-space path it holds nothing. One cache per Problem, which must outlive it.
+class ExactPointCache {
+ public:
+  explicit ExactPointCache(const Problem& problem);
+  /// The solver's numbers of the point at s from that side (q', q'', a, b, c, one entry per
+  /// joint each), or nullptr.
+  const double* find(double s, bool from_left) const;
+  /// Keeps the numbers of a point, to be found after the next `merge` (a solve's points
+  /// come in increasing s).
+  void add(const JointPoint& point, bool from_left);
+  void merge();
+  int stride() const { return 5 * joints_; }
+
+ private:
+  const PathGeometry* path_ = nullptr;
+  int joints_ = 0;
+  struct Entry {
+    double s;
+    bool from_left;
+    size_t at;  // into coef_
+  };
+  std::vector<Entry> index_, fresh_;  // index_ sorted by s; fresh_ in increasing s
+  std::vector<double> coef_;          // stride() numbers per point
+};
+
 /// Exact solver on the grid `nodes` (TOPP-RA's reachability analysis, Pham & Pham 2018):
 /// backward controllable sets K_i = {x_i : some u meets the limits over interval i and
 /// lands in K_i+1}, then the greedy forward pass taking the largest u. Limits are enforced
@@ -29,7 +58,7 @@ SolverOutput solve_exact(const Problem& problem, const std::vector<double>& node
 /// The same with `checks[k]` + 1 points in interval k (one entry per interval, each >= 1):
 /// more of them only where the dense re-check finds a limit overshot.
 SolverOutput solve_exact(const Problem& problem, const std::vector<double>& nodes,
-                         const std::vector<int>& checks);
+                         const std::vector<int>& checks, ExactPointCache* cache = nullptr);
 
 /// solve_exact's plain implementation: every row with the tag of its limit, the arrays
 /// allocated per solve. solve_exact gives the same numbers (the tests compare the two
@@ -41,8 +70,10 @@ SolverOutput solve_exact_reference(const Problem& problem, const std::vector<dou
 
 /// Maximum velocity curve at `nodes`: the largest s' (m/s) at which some s'' meets every
 /// limit at that point (`sd_all`), and the s' allowed by the velocity limits alone.
+/// The points come from `cache` where it has them (the same numbers).
 void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes,
-                        std::vector<double>* sd_all, std::vector<double>* sd_velocity);
+                        std::vector<double>* sd_all, std::vector<double>* sd_velocity,
+                        const ExactPointCache* cache = nullptr);
 
 /// Dynamic programming as in Ozkipcak (1994): `segments` intervals, constant
 /// acceleration in each, Bellman recursion over `levels` velocity levels per interior node;
