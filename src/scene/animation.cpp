@@ -7,6 +7,7 @@
 #include <fstream>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include <unistd.h>
 
@@ -22,22 +23,36 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// every `factor`-th of the image, averaged over factor x factor blocks (a box filter)
+// the image at w x h px, each pixel the mean of the block of source pixels it covers
+// (a box filter; block bounds x * in.width / w .. (x + 1) * in.width / w, at least one
+// pixel), the mean rounded down
 Image downscale(const Image& in, int w, int h) {
   Image out(w, h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int x0 = x * in.width / w, x1 = std::max(x0 + 1, (x + 1) * in.width / w);
-      const int y0 = y * in.height / h, y1 = std::max(y0 + 1, (y + 1) * in.height / h);
-      unsigned r = 0, g = 0, b = 0, n = 0;
-      for (int yy = y0; yy < y1; ++yy)
-        for (int xx = x0; xx < x1; ++xx) {
-          const Rgb c = in.at(xx, yy);
-          r += c.r, g += c.g, b += c.b, ++n;
+  std::vector<int> xs0(static_cast<size_t>(w)), xs1(static_cast<size_t>(w));
+  for (int x = 0; x < w; ++x) {
+    xs0[x] = x * in.width / w;
+    xs1[x] = std::max(xs0[x] + 1, (x + 1) * in.width / w);
+  }
+  const size_t stride = static_cast<size_t>(in.width) * 3;
+  for (int y = 0; y < h; ++y) {
+    const int y0 = y * in.height / h, y1 = std::max(y0 + 1, (y + 1) * in.height / h);
+    std::uint8_t* o = &out.rgb[static_cast<size_t>(y) * w * 3];
+    for (int x = 0; x < w; ++x, o += 3) {
+      unsigned r = 0, g = 0, b = 0;
+      for (int yy = y0; yy < y1; ++yy) {
+        const std::uint8_t* p = &in.rgb[yy * stride + static_cast<size_t>(xs0[x]) * 3];
+        for (int xx = xs0[x]; xx < xs1[x]; ++xx, p += 3) {
+          r += p[0];
+          g += p[1];
+          b += p[2];
         }
-      out.set(x, y, Rgb{static_cast<std::uint8_t>(r / n), static_cast<std::uint8_t>(g / n),
-                        static_cast<std::uint8_t>(b / n)});
+      }
+      const unsigned n = static_cast<unsigned>((y1 - y0) * (xs1[x] - xs0[x]));
+      o[0] = static_cast<std::uint8_t>(r / n);
+      o[1] = static_cast<std::uint8_t>(g / n);
+      o[2] = static_cast<std::uint8_t>(b / n);
     }
+  }
   return out;
 }
 

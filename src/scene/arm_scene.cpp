@@ -11,6 +11,7 @@
 
 namespace armstudy::scene {
 namespace {
+constexpr double kPi = 3.14159265358979323846;
 
 std::ostringstream xml() {
   std::ostringstream x;
@@ -45,6 +46,21 @@ std::string shadow_light(double height) {
 // plane is lit alike at every vertex and a 4 x 4 grid draws what 0.01 m quads did (up to
 // 200 x 200 of them, each drawn again for every shadow pass)
 double plane_grid(double half) { return 0.5 * half; }
+
+// The fewest sides that draw the scene's round geoms (largest radius `radius` m, the view
+// `span_y` m high on `height` px) as the circles they are: each polygon within a quarter of a
+// pixel of its circle, r (1 - cos(pi / n)) <= 0.25 px, at least 12 and at most MuJoCo's
+// default 28 (a joint disc 6 px across needs 12, a close-up of the ball all 28); stacks
+// (the meridians of a capsule's end seen from the side) at the same angular step.
+void set_quality(MjcfOptions* o, double radius, double span_y, int height) {
+  const double r_px = radius * height / std::max(span_y, 1e-9);
+  int n = 28;
+  if (r_px > 0.25) n = static_cast<int>(std::ceil(kPi / std::acos(1 - 0.25 / r_px)));
+  n = std::clamp(n + (n % 2), 12, 28);
+  if (n == 28) return;  // MuJoCo's defaults
+  o->numslices = n;
+  o->numstacks = std::max(8, static_cast<int>(std::ceil(n * 16.0 / 28.0)) + 1) & ~1;
+}
 
 // a narrow field of view: nearly orthographic, little parallax between drawing heights
 constexpr double kFovy = 20;
@@ -91,6 +107,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   o.model_name = "horizontal_arm";
   o.fovy = kFovy;
   o.offscreen = decor.offscreen;
+  set_quality(&o, 2.2 * r, v.y_max - v.y_min, decor.offscreen.height);  // the pedestal is the roundest
   o.link_radius = r;
   o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.45 0.35 0.65 1"};
   o.visual_extra = kVisual;
@@ -174,6 +191,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   o.model_name = "tray_arm";
   o.fovy = kFovy;
   o.offscreen = decor.offscreen;
+  set_quality(&o, std::max(1.35 * r, rb), v.y_max - v.y_min, decor.offscreen.height);  // discs, ball
   o.link_radius = r;
   o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.40 0.40 0.45 1",
                  "0.85 0.15 0.15 0"};

@@ -117,7 +117,10 @@ std::string write_mjcf(const core::PlanarChain& chain, const MjcfOptions& o) {
     << "  <visual>\n"
     << "    <global offwidth=\"" << o.offscreen.width << "\" offheight=\"" << o.offscreen.height << "\" fovy=\""
     << o.fovy << "\"/>\n"
-    << "    <quality shadowsize=\"1024\" offsamples=\"0\"/>\n"
+    << "    <quality shadowsize=\"1024\" offsamples=\"0\"";
+  if (o.numslices > 0) x << " numslices=\"" << o.numslices << "\"";
+  if (o.numstacks > 0) x << " numstacks=\"" << o.numstacks << "\"";
+  x << "/>\n"
     << o.visual_extra
     << "  </visual>\n";
   if (!o.asset_extra.empty()) x << "  <asset>\n" << o.asset_extra << "  </asset>\n";

@@ -46,6 +46,10 @@ struct MjcfOptions {
   std::vector<std::string> spinner_extra;
   /// Extra XML inserted inside link i's body (index = link), e.g. a tray geom.
   std::vector<std::string> link_extra;
+  /// Sides of the polygons that draw spheres, capsules and cylinders (<quality numslices
+  /// numstacks>); 0: MuJoCo's own (28, 16).
+  int numslices = 0;
+  int numstacks = 0;
   /// Extra XML appended in <visual> (after global and quality), e.g. headlight settings.
   std::string visual_extra;
   /// Extra XML inserted right after <compiler> (e.g. <statistic>).

@@ -1,10 +1,15 @@
 #include "scene/png_writer.hpp"
 
 #include <png.h>
+#include <zlib.h>
 
+#include <algorithm>
 #include <csetjmp>
+#include <cstdint>
+#include <exception>
 #include <cstdio>
 #include <fstream>
+#include <thread>
 #include <vector>
 
 #include "scene/phase_times.hpp"
@@ -24,8 +29,102 @@ void flush(png_structp) {}
 
 }  // namespace
 
-std::string encode_png(const Image& image) {
+namespace {
+
+void put32(std::string* out, std::uint32_t v) {
+  for (int s = 24; s >= 0; s -= 8) out->push_back(static_cast<char>((v >> s) & 0xFF));
+}
+
+void chunk(std::string* out, const char* type, const std::string& data) {
+  put32(out, static_cast<std::uint32_t>(data.size()));
+  const size_t at = out->size();
+  out->append(type, 4);
+  out->append(data);
+  const uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(out->data() + at), static_cast<uInt>(4 + data.size()));
+  put32(out, static_cast<std::uint32_t>(crc));
+}
+
+// rows [y0, y1) of `image`, each after its filter byte 0 (none), as raw deflate at level 1;
+// the last band ends the stream, the others end on a byte boundary (sync flush)
+std::string deflate_band(const Image& image, int y0, int y1, bool last, uLong* adler) {
+  const size_t row = static_cast<size_t>(image.width) * 3;
+  std::string raw;
+  raw.reserve((row + 1) * static_cast<size_t>(y1 - y0));
+  for (int y = y0; y < y1; ++y) {
+    raw.push_back('\0');
+    raw.append(reinterpret_cast<const char*>(&image.rgb[static_cast<size_t>(y) * row]), row);
+  }
+  *adler = adler32(1L, reinterpret_cast<const Bytef*>(raw.data()), static_cast<uInt>(raw.size()));
+  z_stream z{};
+  if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+    throw SceneError("zlib: cannot start a deflate stream");
+  std::string out(deflateBound(&z, raw.size()) + 16, '\0');
+  z.next_in = reinterpret_cast<Bytef*>(raw.data());
+  z.avail_in = static_cast<uInt>(raw.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  const int rc = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
+  const size_t n = out.size() - z.avail_out;
+  deflateEnd(&z);
+  if (rc != (last ? Z_STREAM_END : Z_OK) || z.avail_in != 0)
+    throw SceneError("zlib could not compress a band of a " + std::to_string(image.width) + " x " +
+                     std::to_string(image.height) + " image");
+  out.resize(n);
+  return out;
+}
+
+// the PNG of `image` with its rows compressed in `threads` bands at once
+std::string encode_png_bands(const Image& image, int threads) {
+  const int bands = std::clamp(threads, 1, std::max(1, image.height));
+  std::vector<std::string> parts(static_cast<size_t>(bands));
+  std::vector<uLong> adlers(static_cast<size_t>(bands));
+  std::vector<std::exception_ptr> errors(static_cast<size_t>(bands));
+  const auto run = [&](int b) {
+    try {
+      const int y0 = static_cast<int>(static_cast<long>(image.height) * b / bands);
+      const int y1 = static_cast<int>(static_cast<long>(image.height) * (b + 1) / bands);
+      parts[b] = deflate_band(image, y0, y1, b == bands - 1, &adlers[b]);
+    } catch (...) {
+      errors[b] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int b = 1; b < bands; ++b) pool.emplace_back(run, b);
+  run(0);
+  for (auto& t : pool) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  std::string z = "\x78\x01";  // zlib header: deflate, 32 KiB window, fastest
+  uLong adler = adler32(0L, nullptr, 0);
+  const size_t row_bytes = static_cast<size_t>(image.width) * 3 + 1;
+  for (int b = 0; b < bands; ++b) {
+    const int y0 = static_cast<int>(static_cast<long>(image.height) * b / bands);
+    const int y1 = static_cast<int>(static_cast<long>(image.height) * (b + 1) / bands);
+    z += parts[b];
+    adler = adler32_combine(adler, adlers[b], static_cast<z_off_t>(row_bytes * static_cast<size_t>(y1 - y0)));
+  }
+  put32(&z, static_cast<std::uint32_t>(adler));
+  std::string out = "\x89PNG\r\n\x1a\n";
+  std::string ihdr;
+  put32(&ihdr, static_cast<std::uint32_t>(image.width));
+  put32(&ihdr, static_cast<std::uint32_t>(image.height));
+  ihdr += std::string("\x08\x02\x00\x00\x00", 5);  // 8 bits, RGB, deflate, filters, no interlace
+  chunk(&out, "IHDR", ihdr);
+  chunk(&out, "IDAT", z);
+  chunk(&out, "IEND", "");
+  return out;
+}
+
+// an image this large is worth compressing on several threads (the tiled strips and the
+// animation sprites; a single frame is not)
+constexpr size_t kBandedBytes = 4u << 20;
+
+}  // namespace
+
+std::string encode_png(const Image& image, int threads) {
   PhaseScope phase("png");
+  if (threads > 1 && image.rgb.size() >= kBandedBytes && image.width > 0)
+    return encode_png_bands(image, threads);
   std::string out;
   png_structp png =
       png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, &on_png_warning);
@@ -51,8 +150,8 @@ std::string encode_png(const Image& image) {
   return out;
 }
 
-void write_png(const std::filesystem::path& path, const Image& image) {
-  const std::string bytes = encode_png(image);
+void write_png(const std::filesystem::path& path, const Image& image, int threads) {
+  const std::string bytes = encode_png(image, threads);
   std::ofstream f(path, std::ios::binary);
   f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   f.close();

@@ -9,11 +9,15 @@
 
 namespace armstudy::scene {
 
-/// The PNG bytes of `image`. @throws SceneError if libpng fails.
-std::string encode_png(const Image& image);
+/// The PNG bytes of `image`. @throws SceneError if libpng fails. With threads > 1, an image
+/// of more than a few frames is compressed in `threads` bands of rows at once (each band
+/// its own deflate run, ended by a sync flush, the bands' streams one zlib stream, as
+/// pigz does): the same pixels, other bytes (a fresh dictionary per band).
+std::string encode_png(const Image& image, int threads = 1);
 
-/// Writes `image` to `path` as PNG. @throws SceneError naming the file if it cannot be written.
-void write_png(const std::filesystem::path& path, const Image& image);
+/// Writes `image` to `path` as PNG (encode_png). @throws SceneError naming the file if it
+/// cannot be written.
+void write_png(const std::filesystem::path& path, const Image& image, int threads = 1);
 
 /// Reads an 8-bit RGB or RGBA PNG (alpha dropped). @throws SceneError naming the file.
 Image read_png(const std::filesystem::path& path);

@@ -41,7 +41,7 @@ std::string write_strip(SceneRenderer& sr, const SampledMotion& m, int frames,
   const std::vector<double> at = even_times(m.t.front(), m.t.back(), frames);
   const std::vector<PoseSample> samples = resample(m.t, m.q, m.qd, at);
   const std::string file = name + "_strip.png";
-  write_png(dir / file, sr.strip(samples, title, strip_columns(frames)));
+  write_png(dir / file, sr.strip(samples, title, strip_columns(frames)), sr.strip_threads());
   return file;
 }
 
