@@ -97,8 +97,8 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   // picture: every dropped point within a tenth of a pixel of the line drawn
   {
     std::vector<Eigen::Vector2d> drawn;
-    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min, decor.offwidth,
-                                          decor.offheight);
+    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min, decor.offscreen.width,
+                                          decor.offscreen.height);
     for (const size_t k : simplify_polyline(task, tol)) drawn.push_back(task[k]);
     task = std::move(drawn);
   }

@@ -9,7 +9,8 @@
 
 #include "scene/arm_scene.hpp"
 #include "scene/model_files.hpp"
-#include "studies/throwing/throwing.hpp"
+#include "studies/throwing/spec.hpp"
+#include "studies/tray_arm.hpp"
 
 namespace armstudy::scene {
 namespace {
