@@ -48,8 +48,9 @@ void read_tray_arm(Map& section, studies::TrayArmParams& a, double* width) {
     num(*b, "radius_m", a.rb, NumberRule::positive("m"));
     const YAML::Node in = b->get("inertia");
     if (in.IsDefined() && !(in.IsScalar() && in.Scalar() == "solid_sphere")) {
-      const auto v = read_number(in, b->diag(), "'" + b->path_of("inertia") + "' (or 'solid_sphere')",
-                                 NumberRule::non_negative("kg m^2"));
+      const auto v =
+          read_number(in, b->diag(), "'" + b->path_of("inertia") + "' (or 'solid_sphere')",
+                      NumberRule::non_negative("kg m^2"));
       if (v) {
         a.Ib = *v;
         solid_sphere = false;

@@ -10,10 +10,11 @@ namespace armstudy::report {
 
 void pendulum_answer(const nlohmann::json& results, const ResultsRecord&, AnswerBox& a) {
   const auto pe = read_section<studies::PendulumResultsSection>(results, "pendulum");
-  a.binding.push_back("no optimum: a free swing of the passive tray and ball, checked by the "
-                      "conservation of its mechanical energy (drift " +
-                      format_sig(pe.energy.drift_relative, 3) + " of the energy exchanged, tolerance " +
-                      format_sig(pe.energy.tolerance_relative, 2) + ")");
+  a.binding.push_back(
+      "no optimum: a free swing of the passive tray and ball, checked by the "
+      "conservation of its mechanical energy (drift " +
+      format_sig(pe.energy.drift_relative, 3) + " of the energy exchanged, tolerance " +
+      format_sig(pe.energy.tolerance_relative, 2) + ")");
   for (const std::string& c : pe.parameters.choices) a.assumptions.push_back(c);
 }
 

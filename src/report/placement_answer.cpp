@@ -18,10 +18,13 @@ std::string binding_words(const PS::Decision& d) {
   const std::string margin = format_sig(d.margin_m, 3) + " m";
   const std::string joint = d.joint ? as_text(*d.joint) : "n/a";
   if (b == "interior")
-    return "interior, nothing binds (clearances beyond the " + margin + " margin: " +
-           format_sig(d.inner_slack_m, 3) + " m inner, " + format_sig(d.outer_slack_m, 3) + " m outer)";
-  if (b == "inner_clearance") return "the " + margin + " clearance margin to the inner circle (a setting)";
-  if (b == "outer_clearance") return "the " + margin + " clearance margin to the outer circle (a setting)";
+    return "interior, nothing binds (clearances beyond the " + margin +
+           " margin: " + format_sig(d.inner_slack_m, 3) + " m inner, " +
+           format_sig(d.outer_slack_m, 3) + " m outer)";
+  if (b == "inner_clearance")
+    return "the " + margin + " clearance margin to the inner circle (a setting)";
+  if (b == "outer_clearance")
+    return "the " + margin + " clearance margin to the outer circle (a setting)";
   if (b == "torque_limit") return "the torque limit of joint " + joint + " binds";
   if (b == "power_limit") return "the power limit of joint " + joint + " binds";
   return b.empty() ? "not reported" : b;
@@ -32,10 +35,11 @@ std::string binding_words(const PS::Decision& d) {
 void placement_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& a) {
   const auto pl = read_section<PS>(results, "placement");
   for (const auto& o : pl.optima)
-    a.binding.push_back(o.program + " " + as_text(o.configuration) + ": " + binding_words(o.decided_by));
+    a.binding.push_back(o.program + " " + as_text(o.configuration) + ": " +
+                        binding_words(o.decided_by));
   for (const auto& u : pl.unsolved)
-    a.binding.push_back(u.program + ", configuration " + as_text(u.configuration) + ": no optimum (" +
-                        u.reason + ")");
+    a.binding.push_back(u.program + ", configuration " + as_text(u.configuration) +
+                        ": no optimum (" + u.reason + ")");
   a.assumptions.push_back("energy integral (8.1): " + as_text(pl.samples) +
                           " samples, doubled until it changes by < 1e-4");
   a.assumptions.push_back("singular: a line within " + format_sig(pl.singularity_margin_m, 3) +
@@ -43,7 +47,8 @@ void placement_answer(const nlohmann::json& results, const ResultsRecord& record
   a.assumptions.push_back(pl.torque_limits_Nm || pl.power_limits_W
                               ? "actuator limits as the case gives them"
                               : "no actuator limits (any torque, as in the thesis)");
-  a.assumptions.push_back("rest to rest, zero end accelerations; no actuator masses (as the thesis)");
+  a.assumptions.push_back(
+      "rest to rest, zero end accelerations; no actuator masses (as the thesis)");
   // the key picture: the locus of the optimum of least energy
   double least = INFINITY;
   std::string best;

@@ -4,9 +4,11 @@ namespace armstudy::report {
 
 ResultsRecord read_record(const nlohmann::json& results) {
   if (!results.is_object())
-    throw ResultsError("", std::string("expected an object, found ") + fields_detail::type_name(results));
+    throw ResultsError(
+        "", std::string("expected an object, found ") + fields_detail::type_name(results));
   const auto sv = results.find("schema_version");
-  if (sv == results.end()) throw ResultsError("/schema_version", "no schema_version: not an armstudy results.json");
+  if (sv == results.end())
+    throw ResultsError("/schema_version", "no schema_version: not an armstudy results.json");
   if (!sv->is_number_integer() || sv->get<long long>() != kSchemaVersion)
     throw ResultsError("/schema_version", "schema_version " + sv->dump() +
                                               " is not one this armstudy reads (" +

@@ -121,7 +121,8 @@ void fields(V& v, CaseRecord::Sweep& x) {
 }
 template <class V>
 void fields(V& v, CaseRecord& x) {
-  v("name", x.name, "the case's name (its folder)", {{"pattern", "^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$"}});
+  v("name", x.name, "the case's name (its folder)",
+    {{"pattern", "^[A-Za-z0-9][A-Za-z0-9._-]{0,99}$"}});
   v("path", x.path, "the case file as given", {{"minLength", 1}});
   v("sha256", x.sha256, "SHA-256 of the case file", kSha256);
   v.optional("description", x.description, "the case's description");
@@ -173,7 +174,8 @@ template <class V>
 void fields(V& v, AnimationRecord& x) {
   v("name", x.name, "stem of its files");
   v("title", x.title, "which motion, in words");
-  v("sprite", x.sprite, "the frames in a grid, left to right, top to bottom", {{"pattern", "\\.png$"}});
+  v("sprite", x.sprite, "the frames in a grid, left to right, top to bottom",
+    {{"pattern", "\\.png$"}});
   v("still", x.still, "the last frame (the print and no-motion view)", {{"pattern", "\\.png$"}});
   v("video", x.video, "H.264 MP4 at real speed (null when ffmpeg is missing)");
   v("frames", x.frames, "frames of the animation", {{"minimum", 2}});
@@ -206,7 +208,8 @@ void fields(V& v, ResultsRecord& x) {
     {{"enum", nlohmann::json::array({"solved", "unsolvable"})}});
   v("message", x.message, "the study's answer (or why there is none) in one sentence");
   v("checks", x.checks, "the checks the study ran on its answer");
-  v("key_figures", x.key_figures, "the numbers a reader compares across cases (none when unsolved)");
+  v("key_figures", x.key_figures,
+    "the numbers a reader compares across cases (none when unsolved)");
   v("run_options", x.run_options,
     "the options of the run that change its output; a later run keeps the output only if they "
     "match its own");

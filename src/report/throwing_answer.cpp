@@ -31,7 +31,8 @@ void throwing_answer(const nlohmann::json& results, const ResultsRecord& record,
                           "; motor rating nearest its limit: " + row.binding_rating);
     }
   for (const auto& x : th.assumptions)
-    a.assumptions.push_back(x.name + ": " + format_sig(x.value, 4) + (x.unit.empty() ? "" : " " + x.unit));
+    a.assumptions.push_back(x.name + ": " + format_sig(x.value, 4) +
+                            (x.unit.empty() ? "" : " " + x.unit));
   for (const std::string& f : record.frames)
     if (f == "throwing_flight_locus.png") a.picture = f;
 }

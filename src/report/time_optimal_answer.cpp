@@ -26,24 +26,28 @@ void time_optimal_answer(const nlohmann::json& results, const ResultsRecord&, An
       const char* words;
     };
     std::vector<std::pair<double, std::string>> shares;
-    for (const Kind& k : {Kind{&s.tau_Nm, to.limits.torque_Nm, "torque"},
-                          Kind{&s.qd_rad_s, to.limits.velocity_rad_s, "velocity"},
-                          Kind{&s.qdd_rad_s2, to.limits.acceleration_rad_s2.value_or(std::vector<double>{}),
-                               "acceleration"}}) {
+    for (const Kind& k :
+         {Kind{&s.tau_Nm, to.limits.torque_Nm, "torque"},
+          Kind{&s.qd_rad_s, to.limits.velocity_rad_s, "velocity"},
+          Kind{&s.qdd_rad_s2, to.limits.acceleration_rad_s2.value_or(std::vector<double>{}),
+               "acceleration"}}) {
       const auto& l = k.limit;
       for (size_t j = 0; j < l.size() && n > 0; ++j) {
         if (j >= k.samples->size() || (*k.samples)[j].size() != n || !(l[j] > 0)) continue;
         size_t at = 0;
         for (double x : (*k.samples)[j]) at += std::isfinite(x) && std::abs(x) >= 0.99 * l[j];
         if (at > 0)
-          shares.push_back({double(at) / n, std::string(k.words) + " of joint " + std::to_string(j + 1)});
+          shares.push_back(
+              {double(at) / n, std::string(k.words) + " of joint " + std::to_string(j + 1)});
       }
     }
-    std::stable_sort(shares.begin(), shares.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    std::stable_sort(shares.begin(), shares.end(),
+                     [](const auto& x, const auto& y) { return x.first > y.first; });
     for (const auto& [share, what] : shares)
       a.binding.push_back("the " + what + " limit binds at " + format_sig(100 * share, 2) +
                           " % of the samples (within 1 %)");
-    if (shares.empty() && n > 0) a.binding.push_back("no limit is within 1 % of its bound at any sample");
+    if (shares.empty() && n > 0)
+      a.binding.push_back("no limit is within 1 % of its bound at any sample");
   }
   const std::string& path = to.path.kind;
   if (to.path.space == "joint") {
@@ -53,11 +57,14 @@ void time_optimal_answer(const nlohmann::json& results, const ResultsRecord&, An
     a.assumptions.push_back("rigid links and ideal torque sources");
   } else {
     if (!path.empty())
-      a.assumptions.push_back("the tip follows the given path (" + path + "), parametrised by its arc length");
-    a.assumptions.push_back("elbow configuration " + (to.configuration ? as_text(*to.configuration) : "n/a") +
+      a.assumptions.push_back("the tip follows the given path (" + path +
+                              "), parametrised by its arc length");
+    a.assumptions.push_back("elbow configuration " +
+                            (to.configuration ? as_text(*to.configuration) : "n/a") +
                             " throughout; rigid links and ideal torque sources");
   }
-  if (!to.limits.acceleration_rad_s2) a.assumptions.push_back("no joint acceleration limit (only velocity and torque limits)");
+  if (!to.limits.acceleration_rad_s2)
+    a.assumptions.push_back("no joint acceleration limit (only velocity and torque limits)");
 }
 
 }  // namespace armstudy::report

@@ -76,7 +76,8 @@ TEST(AnswerBox, KeyPictureIsTheLocusOfTheOptimumOfLeastEnergyAndBindingFollowsTh
   EXPECT_EQ(a.sentence, "least energy 3.5 J (poly345, configuration 1)");
   ASSERT_EQ(a.binding.size(), 2u);
   EXPECT_NE(a.binding[0].find("interior"), std::string::npos) << a.binding[0];
-  EXPECT_NE(a.binding[1].find("clearance margin to the inner circle"), std::string::npos) << a.binding[1];
+  EXPECT_NE(a.binding[1].find("clearance margin to the inner circle"), std::string::npos)
+      << a.binding[1];
   EXPECT_FALSE(a.assumptions.empty());
   // without the study's lines: the first locus, and nothing said about what binds
   const AnswerBox plain = answer_box(placement_results(false), CasePage{}, nullptr);
@@ -124,12 +125,15 @@ TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
   exact.samples->qd_rad_s = {{0.5, 1.0, 1.0, 0.2}, {0, 0, 0, 2.0}};  // one row per joint
   exact.samples->tau_Nm = {{10, 1, 1, 1}, {0, 0, 0, 0}};
   to.solvers = {exact};
-  const AnswerBox a = answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{}, &time_optimal_answer);
+  const AnswerBox a =
+      answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{}, &time_optimal_answer);
   ASSERT_EQ(a.binding.size(), 3u);
-  EXPECT_NE(a.binding[0].find("velocity of joint 1 limit binds at 50 %"), std::string::npos) << a.binding[0];
+  EXPECT_NE(a.binding[0].find("velocity of joint 1 limit binds at 50 %"), std::string::npos)
+      << a.binding[0];
   EXPECT_NE(a.binding[1].find("binds at 25 %"), std::string::npos) << a.binding[1];
   EXPECT_EQ(a.verdict, "The study ran no checks on this case.");
-  EXPECT_NE(a.assumptions.back().find("no joint acceleration limit"), std::string::npos) << a.assumptions.back();
+  EXPECT_NE(a.assumptions.back().find("no joint acceleration limit"), std::string::npos)
+      << a.assumptions.back();
 }
 
 AnimationRecord arm_animation() {
@@ -152,13 +156,16 @@ AnimationRecord arm_animation() {
 TEST(AnimationView, KeyframesStepThroughEveryFrameOfTheGridAndHoldTheLast) {
   const std::vector<AnimationRecord> r = {arm_animation()};
   const std::string css = animation_css(r);
-  EXPECT_NE(css.find(".anim.a-arm { aspect-ratio: 480 / 360; background-image: url(\"arm_anim.png\"); "
-                     "background-size: 400% 300%; animation: a-arm 2.5s step-end infinite; }"),
-            std::string::npos)
+  EXPECT_NE(
+      css.find(".anim.a-arm { aspect-ratio: 480 / 360; background-image: url(\"arm_anim.png\"); "
+               "background-size: 400% 300%; animation: a-arm 2.5s step-end infinite; }"),
+      std::string::npos)
       << css;
   // 10 frames and the held end: 11 stops; frame 9 is column 1 of row 2 (of 0..2)
   const std::regex stop(R"(\d+(\.\d+)?% \{ background-position)");
-  EXPECT_EQ(std::distance(std::sregex_iterator(css.begin(), css.end(), stop), std::sregex_iterator()), 11);
+  EXPECT_EQ(
+      std::distance(std::sregex_iterator(css.begin(), css.end(), stop), std::sregex_iterator()),
+      11);
   EXPECT_NE(css.find("90% { background-position: 33.33% 100%; }"), std::string::npos) << css;
   EXPECT_NE(css.find("100% { background-position: 33.33% 100%; }"), std::string::npos) << css;
   const Section s = animation_section(r);
