@@ -210,40 +210,6 @@ TipRateEvaluator::TipRateEvaluator(const core::PlanarChain& chain, const PathGeo
   rt_ << cb_, sb_, -sb_, cb_;
 }
 
-bool TipRateEvaluator::at(double s, bool from_left, TipRates* out) const {
-  const PathPoint pp = path_->at(s, from_left);
-  const Eigen::Vector2d p = rt_ * (pp.p - base_);
-  const Eigen::Vector2d v = rt_ * pp.dp, a = rt_ * pp.ddp;
-  const double r2 = p.squaredNorm();
-  const double c2 = (r2 - c2_shift_) * c2_scale_;
-  // inside the annulus with the elbow clearly bent (joint_point's test is |sin q2| >= 1e-9)
-  const double w = (1.0 - c2) * (1.0 + c2);
-  if (!(w > 1e-16)) return false;
-  const double ir2 = 1.0 / r2;  // (independent of the square root: both run at once)
-  const double root = std::sqrt(w);
-  const double s2 = configuration_ == 1 ? root : -root;
-  // p = R(q1) (k1, k2) with |(k1, k2)| = |p|: link 1's direction (base frame)
-  const double k1 = L1_ + L2_ * c2, k2 = L2_ * s2;
-  const double c1 = (p.x() * k1 + p.y() * k2) * ir2, s1 = (p.y() * k1 - p.x() * k2) * ir2;
-  const double c12 = c1 * c2 - s1 * s2, s12 = s1 * c2 + c1 * s2;
-  const double idet = inv_l1l2_ / s2;
-  const double j11 = -L1_ * s1 - L2_ * s12, j12 = -L2_ * s12;
-  const double j21 = L1_ * c1 + L2_ * c12, j22 = L2_ * c12;
-  const double qd1 = (j22 * v.x() - j12 * v.y()) * idet, qd2 = (-j21 * v.x() + j11 * v.y()) * idet;
-  const double w1 = qd1, w12 = qd1 + qd2;
-  const double bx = a.x() + L1_ * c1 * w1 * w1 + L2_ * c12 * w12 * w12;
-  const double by = a.y() + L1_ * s1 * w1 * w1 + L2_ * s12 * w12 * w12;
-  out->dq[0] = qd1;
-  out->dq[1] = qd2;
-  out->ddq[0] = (j22 * bx - j12 * by) * idet;
-  out->ddq[1] = (-j21 * bx + j11 * by) * idet;
-  out->c1 = cb_ * c1 - sb_ * s1;  // base_angle + q1
-  out->s1 = sb_ * c1 + cb_ * s1;
-  out->c2 = c2;
-  out->s2 = s2;
-  return true;
-}
-
 std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,
                                       int configuration, double s, bool from_left,
                                       PathTrouble* trouble) {
