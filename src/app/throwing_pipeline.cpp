@@ -262,6 +262,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     j.saving_percent = r.saving_percent;
     if (r.idp.series.t.empty()) return j;
     Section::Optimised& o = j.run.emplace();
+    o.answer = r.answer;
     {
       const Section::Margins mg = margins_of(spec_, r.initial.evaluation);
       const char* units[st::kConstraintKinds] = {"N", "", "rad", "V", "A", "W", "rad"};

@@ -33,8 +33,14 @@ void throwing_answer(const nlohmann::json& results, const ResultsRecord& record,
   for (const auto& x : th.assumptions)
     a.assumptions.push_back(x.name + ": " + format_sig(x.value, 4) +
                             (x.unit.empty() ? "" : " " + x.unit));
+  // the key picture is the flight of the throw the study answers with
+  const std::string flight = th.run && th.run->answer == "slsqp" ? "throwing_slsqp_flight_locus.png"
+                                                                 : "throwing_flight_locus.png";
   for (const std::string& f : record.frames)
-    if (f == "throwing_flight_locus.png") a.picture = f;
+    if (f == flight) a.picture = f;
+  if (a.picture.empty())
+    for (const std::string& f : record.frames)
+      if (f == "throwing_flight_locus.png") a.picture = f;
 }
 
 }  // namespace armstudy::report

@@ -219,6 +219,7 @@ struct ThrowingResultsSection {
     Idp idp;
     Nlopt nlopt;
     std::vector<Comparison> comparison;
+    std::string answer;  ///< "idp" or "slsqp": the optimiser whose throw the study answers with
     Verification verification;
     Release release;
     Flight flight;
@@ -544,6 +545,9 @@ void fields(V& v, ThrowingResultsSection::Optimised& x) {
   v("optimum", x.optimum, "the IDP optimum");
   v("idp", x.idp, "the IDP runs");
   v("nlopt", x.nlopt, "the gradient optimiser");
+  v("answer", x.answer,
+    "the optimiser whose throw is the answer: slsqp when its converged answer is feasible in the "
+    "re-check and lower than IDP's, else idp");
   v("comparison", x.comparison, "the optimisers on equal terms");
   v("verification", x.verification, "the optima re-simulated with finer steps");
   v("release", x.release, "the release");

@@ -260,15 +260,34 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   const std::string ref = r.reference_kind == "eq8"        ? "eq. 8"
                           : r.reference_kind == "repaired" ? "repaired eq. 8"
                                                            : "infeasible eq. 8";
-  r.message = std::string("IDP") + (r.idp_converged ? "" : " (NOT converged)") + ": " +
-              fixed(r.idp.evaluation.energy, 3) + " J (" + ref + ": " +
-              fixed(r.reference.evaluation.energy, 3) + " J, saving " +
-              fixed(r.saving_percent, 1) + " %); ball lands at x = " +
-              fixed(r.flight.landing.x(), 3) + " m";
-  if (r.nlopt_ran)
-    r.message += "; SLSQP" + std::string(r.nlopt_run.converged ? "" : " (NOT converged)") + ": " +
-                 fixed(r.nlopt.evaluation.energy, 3) + " J" +
-                 (r.nlopt_run.feasible ? "" : " (infeasible)");
+  // the sentence leads with the lowest energy of a converged answer that the independent
+  // re-check found feasible; the other optimiser follows as the comparison
+  const std::string idp_words = std::string("IDP") + (r.idp_converged ? "" : " (NOT converged)") +
+                                (r.idp_check.feasible ? "" : " (infeasible in the re-check)") + " " +
+                                fixed(r.idp.evaluation.energy, 3) + " J";
+  const std::string ref_words = ref + ": " + fixed(r.reference.evaluation.energy, 3) + " J";
+  const bool slsqp_answer = r.nlopt_ran && r.nlopt_run.converged && r.nlopt_run.feasible &&
+                            r.nlopt_check.feasible &&
+                            r.nlopt.evaluation.energy < r.idp.evaluation.energy &&
+                            !(r.idp_converged && r.idp_check.feasible &&
+                              r.idp.evaluation.energy <= r.nlopt.evaluation.energy);
+  if (slsqp_answer) {
+    r.answer = "slsqp";
+    const double saving = 100.0 * (r.reference.evaluation.energy - r.nlopt.evaluation.energy) /
+                          r.reference.evaluation.energy;
+    r.message = "lowest-energy throw found: SLSQP's, " + fixed(r.nlopt.evaluation.energy, 3) +
+                " J, converged and feasible in the re-check (" + ref_words + ", saving " +
+                fixed(saving, 1) + " %); " + idp_words + " (saving " + fixed(r.saving_percent, 1) +
+                " %), a stall above it; IDP's ball lands at x = " + fixed(r.flight.landing.x(), 3) +
+                " m";
+  } else {
+    r.message = idp_words + " (" + ref_words + ", saving " + fixed(r.saving_percent, 1) +
+                " %); ball lands at x = " + fixed(r.flight.landing.x(), 3) + " m";
+    if (r.nlopt_ran)
+      r.message += "; SLSQP" + std::string(r.nlopt_run.converged ? "" : " (NOT converged)") + ": " +
+                   fixed(r.nlopt.evaluation.energy, 3) + " J" +
+                   (r.nlopt_run.feasible && r.nlopt_check.feasible ? "" : " (infeasible)");
+  }
   return r;
 }
 
