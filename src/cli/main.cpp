@@ -32,7 +32,6 @@
 #include "app/run_case.hpp"
 #include "report/case_report.hpp"
 #include "report/sweep_report.hpp"
-#include "scene/osmesa_context.hpp"
 #include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 #include "version.hpp"
@@ -208,7 +207,6 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     }
   };
   const int n = std::clamp(jobs, 1, static_cast<int>(std::max<size_t>(1, cases.size())));
-  if (options.render) armstudy::scene::choose_llvmpipe_threads(n);  // before the first frame
   std::vector<std::thread> pool;
   for (int k = 1; k < n; ++k) pool.emplace_back(worker);
   worker();
