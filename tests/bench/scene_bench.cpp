@@ -138,9 +138,9 @@ BENCHMARK(BM_RealScene640x480)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->U
 
 // a 16-frame strip (SceneRenderer::strip, PNG of the tiled strip included, compressed in
 // as many bands as threads) on 1 or 2 threads (argument); frames_per_s counts the strip's
-// frames. llvmpipe's own rasteriser threads per context are LP_NUM_THREADS, read once per
-// process: run it with LP_NUM_THREADS=1 (what the bundled set uses) to compare one worker
-// (with one rasteriser thread) against two
+// frames. llvmpipe's rasteriser threads (LP_NUM_THREADS, read once per process; one per
+// core by default) are shared by every context of the process: LP_NUM_THREADS=0 gives one
+// core's rate (all work on the calling thread), the default both cores' from one thread
 void BM_Strip16Frames640x480(benchmark::State& state) {
   SceneRenderer sr(default_tray_scene(), "bench", RenderSettings{});
   sr.set_strip_threads(static_cast<int>(state.range(0)));
