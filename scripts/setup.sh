@@ -37,7 +37,8 @@ echo "setup: built $root/build/armstudy"
 
 # --- bundled reports -------------------------------------------------------------------
 if [ "$reports" = 1 ]; then
-  export LP_NUM_THREADS=1
+  # LP_NUM_THREADS left to llvmpipe (one rasteriser thread per core): its threads are shared
+  # by all the cases --jobs runs at once, and LP_NUM_THREADS=1 would give the whole run one
   status=0
   ./build/armstudy run reports/cases/*.yaml --out reports/out --pdf --jobs "$jobs" || status=$?
   echo "setup: reports in $root/reports/out/ (open $root/reports/out/index.html)"

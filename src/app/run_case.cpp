@@ -199,6 +199,17 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
 
     swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name);
+    if (options.printer) {
+      // printed in the scratch folder, renamed into the case folder (a failure is printed
+      // again, and reported, by finish_reports)
+      const fs::path printed = report::scratch_dir(options.out_dir) / "pdf" / (c.info.name + ".pdf");
+      fs::create_directories(printed.parent_path());
+      options.printer->add({final_dir / "index.html", printed}, [printed, final_dir](const std::string& error) {
+        std::error_code ec;
+        if (!error.empty() || ::rename(printed.c_str(), (final_dir / "report.pdf").c_str()) != 0)
+          fs::remove(printed, ec);
+      });
+    }
     if (status != studies::Status::kSolved && c.info.expect_unsolvable) {
       outcome.message = "could not be solved, as the case expects: " + c.run->message();
     } else if (status != studies::Status::kSolved) {

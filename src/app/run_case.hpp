@@ -10,12 +10,19 @@
 #include "report/scratch_dir.hpp"
 #include "studies/common.hpp"
 
+namespace armstudy::report {
+class PdfPrinter;
+}
+
 namespace armstudy::app {
 
 struct RunOptions {
   std::filesystem::path out_dir = "reports/out";
   bool render = true;
   bool pdf = false;
+  /// With --pdf: prints each case's page as soon as the case is in place (one browser for
+  /// the run, beside the cases still solving); finish_reports prints what it did not.
+  report::PdfPrinter* printer = nullptr;
 };
 
 /// How one case ended. exit_code: 0 done, 1 unsolvable or a failed check, 3 a runtime

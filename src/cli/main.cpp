@@ -32,7 +32,7 @@
 #include "app/run_case.hpp"
 #include "report/case_report.hpp"
 #include "report/sweep_report.hpp"
-#include "scene/osmesa_context.hpp"
+#include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 #include "version.hpp"
 
@@ -171,6 +171,13 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
                            "file, armstudy version and options (--force redoes them)\n", skipped);
     cases = std::move(todo);
   }
+  // with --pdf, one browser prints each case's page as soon as the case is in place
+  armstudy::app::RunOptions case_options = options;
+  std::unique_ptr<armstudy::report::PdfPrinter> printer;
+  if (options.pdf && !cases.empty()) {
+    printer = std::make_unique<armstudy::report::PdfPrinter>(std::max(1, jobs));
+    case_options.printer = printer.get();
+  }
   armstudy::app::ProgressReporter progress(stderr, armstudy::app::stderr_is_terminal());
   std::atomic<size_t> next{0};
   std::mutex mu;
@@ -181,7 +188,7 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
       int code = kExitDone;
       std::string line;
       try {
-        const auto o = armstudy::app::run_case(c, options, progress.task(c.info.name));
+        const auto o = armstudy::app::run_case(c, case_options, progress.task(c.info.name));
         code = o.exit_code;
         char secs[32];
         std::snprintf(secs, sizeof secs, "%.1f s", o.seconds);
@@ -200,12 +207,18 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     }
   };
   const int n = std::clamp(jobs, 1, static_cast<int>(std::max<size_t>(1, cases.size())));
-  if (options.render) armstudy::scene::choose_llvmpipe_threads(n);  // before the first frame
   std::vector<std::thread> pool;
   for (int k = 1; k < n; ++k) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
   progress.finish();
+  if (printer) {
+    const auto t0 = std::chrono::steady_clock::now();
+    printer->finish();  // the pages still printing
+    if (armstudy::scene::phase_times_enabled())
+      std::fprintf(stderr, "phase-times: waited %.3f s for the last pages after the cases\n",
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
   // the page of all cases and, with --pdf, every case's report.pdf
   for (const auto& problem : armstudy::app::finish_reports(options, jobs)) {
     std::fprintf(stderr, "armstudy: %s\n", problem.c_str());

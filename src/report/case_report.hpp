@@ -3,6 +3,8 @@
 /// the page of all cases (DIR/index.html) and the PDF print through headless Chromium.
 
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -112,6 +114,25 @@ struct PdfJob {
 /// @throws PdfError when Chromium is missing.
 std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel,
                                     double timeout_s = 120);
+
+/// Prints pages while a run goes on: each page given to add() is printed, as print_pdfs
+/// does, by one headless Chromium on a thread of its own (started with the first page),
+/// `parallel` at a time; `done` is called on that thread with "" or why the page was not
+/// printed. finish() (also the destructor) waits for every page added.
+/// @throws PdfError when Chromium is missing.
+class PdfPrinter {
+ public:
+  explicit PdfPrinter(int parallel, double timeout_s = 120);
+  ~PdfPrinter();
+  PdfPrinter(const PdfPrinter&) = delete;
+  PdfPrinter& operator=(const PdfPrinter&) = delete;
+  void add(PdfJob job, std::function<void(const std::string& error)> done);
+  void finish();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// Kills the process group of every browser printing now and removes their profiles (the
 /// clean-up of a signal; the prints then fail).

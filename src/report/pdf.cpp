@@ -15,6 +15,8 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <condition_variable>
+#include <functional>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -483,34 +485,82 @@ std::string write_printed(const std::string& bytes, const fs::path& pdf) {
   return "";
 }
 
-// prints what it can of `jobs` through one browser; done[i] is set for every page printed
-// or failed on its own (message in errors[i]); throws PdfError when the browser fails
-void print_through_one_browser(const std::string& chromium, const std::vector<PdfJob>& jobs,
-                               int parallel, double timeout_s, std::vector<std::string>& errors,
-                               std::vector<char>& done) {
+// the pages to print, given all at once (print_pdfs) or as the cases finish (PdfPrinter)
+struct PrintQueue {
+  std::mutex mu;
+  std::condition_variable cv;
+  std::vector<PdfJob> jobs;
+  std::vector<std::function<void(const std::string&)>> on_done;  // per job, may be empty
+  std::vector<std::string> errors;
+  std::vector<char> done;  // printed, or failed on its own (errors)
+  size_t next = 0;         // the first job no browser has taken
+  bool closed = false;     // no more jobs will come
+
+  size_t add(PdfJob job, std::function<void(const std::string&)> f) {
+    std::lock_guard<std::mutex> lock(mu);
+    jobs.push_back(std::move(job));
+    on_done.push_back(std::move(f));
+    errors.emplace_back();
+    done.push_back(0);
+    cv.notify_all();
+    return jobs.size() - 1;
+  }
+  void finish(size_t i, const std::string& error) {
+    std::function<void(const std::string&)> f;
+    {
+      std::lock_guard<std::mutex> lock(mu);
+      errors[i] = error;
+      done[i] = 1;
+      f = on_done[i];
+      cv.notify_all();
+    }
+    if (f) f(error);
+  }
+  // the next job to start (index), or nullopt when none is waiting now
+  std::optional<size_t> take() {
+    std::lock_guard<std::mutex> lock(mu);
+    if (next < jobs.size()) return next++;
+    return std::nullopt;
+  }
+  bool drained() {
+    std::lock_guard<std::mutex> lock(mu);
+    return closed && next == jobs.size();
+  }
+};
+
+// prints the queue's pages through one browser, as they come, until the queue is closed
+// and drained; every page printed or failed on its own is finished in the queue; throws
+// PdfError when the browser fails (the pages it took and did not finish are left undone)
+void print_through_one_browser(const std::string& chromium, PrintQueue& q, int parallel,
+                               double timeout_s) {
   using clock = std::chrono::steady_clock;
   PipeBrowser browser(chromium);
   std::vector<Tab> tabs(static_cast<size_t>(std::clamp(parallel, 1, 8)));
-  size_t next = 0, finished = 0;
   const auto limit = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(timeout_s));
+  const auto job_of = [&](const Tab& t) -> PdfJob {
+    std::lock_guard<std::mutex> lock(q.mu);
+    return q.jobs[static_cast<size_t>(t.job)];
+  };
   const auto fail = [&](Tab& t, const std::string& why) {
-    errors[static_cast<size_t>(t.job)] = why;
-    done[static_cast<size_t>(t.job)] = 1;
-    ++finished;
+    const size_t j = static_cast<size_t>(t.job);
     if (!t.target.empty()) browser.send("Target.closeTarget", {{"targetId", t.target}});
     t = Tab{};
+    q.finish(j, why);
   };
   const auto start = [&](Tab& t) {
-    while (next < jobs.size() && t.step == Tab::kIdle) {
-      const size_t j = next++;
-      if (!fs::exists(jobs[j].html)) {
-        errors[j] = "cannot print " + jobs[j].html.string() + ": no such file";
-        done[j] = 1;
-        ++finished;
+    while (t.step == Tab::kIdle) {
+      const std::optional<size_t> j = q.take();
+      if (!j) return;
+      const PdfJob job = [&] {
+        std::lock_guard<std::mutex> lock(q.mu);
+        return q.jobs[*j];
+      }();
+      if (!fs::exists(job.html)) {
+        q.finish(*j, "cannot print " + job.html.string() + ": no such file");
         continue;
       }
       t = Tab{};
-      t.job = static_cast<int>(j);
+      t.job = static_cast<int>(*j);
       t.deadline = clock::now() + limit;
       t.step = Tab::kCreate;
       t.pending = browser.send("Target.createTarget", {{"url", "about:blank"}});
@@ -524,20 +574,25 @@ void print_through_one_browser(const std::string& chromium, const std::vector<Pd
                               {"preferCSSPageSize", true}, {"transferMode", "ReturnAsBase64"}},
                              t.session);
   };
-  for (Tab& t : tabs) start(t);
   auto last_message = clock::now();
-  while (finished < jobs.size()) {
+  while (true) {
     if (stopping()) throw PdfError("stopped by a signal");
+    bool busy = false;
+    for (Tab& t : tabs) {
+      if (t.step == Tab::kIdle) start(t);
+      busy |= t.step != Tab::kIdle;
+    }
+    if (!busy && q.drained()) return;
     const std::optional<nlohmann::json> got = browser.receive(50);
     const auto now = clock::now();
     for (Tab& t : tabs)
-      if (t.step != Tab::kIdle && now > t.deadline) {
-        fail(t, "Chromium did not print " + jobs[static_cast<size_t>(t.job)].html.string() +
-                    " within " + std::to_string(static_cast<int>(timeout_s)) + " s");
-        start(t);
-      }
+      if (t.step != Tab::kIdle && now > t.deadline)
+        fail(t, "Chromium did not print " + job_of(t).html.string() + " within " +
+                    std::to_string(static_cast<int>(timeout_s)) + " s");
     if (!got) {
-      // a browser that answers nothing at all is not printing (nor speaking the protocol)
+      // a browser that answers nothing while it has pages to print is not printing (nor
+      // speaking the protocol)
+      if (!busy) last_message = now;
       if (now - last_message > limit) throw PdfError("Chromium did not answer on the DevTools pipe");
       continue;
     }
@@ -546,7 +601,7 @@ void print_through_one_browser(const std::string& chromium, const std::vector<Pd
     if (m.contains("method")) {
       if (m["method"] == "Page.loadEventFired" && m.contains("sessionId"))
         for (Tab& t : tabs)
-          if (t.session == m["sessionId"] && (t.step == Tab::kNavigate)) {
+          if (t.step == Tab::kNavigate && t.session == m["sessionId"]) {
             t.loaded = true;
             if (t.navigated) print(t);
           }
@@ -558,10 +613,10 @@ void print_through_one_browser(const std::string& chromium, const std::vector<Pd
       if (t.step != Tab::kIdle && t.pending == m["id"]) tab = &t;
     if (!tab) continue;  // the answer to a close, or to a page given up
     Tab& t = *tab;
-    const PdfJob& job = jobs[static_cast<size_t>(t.job)];
+    const PdfJob job = job_of(t);
     if (m.contains("error")) {
-      fail(t, "Chromium could not print " + job.html.string() + ": " + m["error"].value("message", m["error"].dump()));
-      start(t);
+      fail(t, "Chromium could not print " + job.html.string() + ": " +
+                  m["error"].value("message", m["error"].dump()));
       continue;
     }
     const nlohmann::json& r = m.contains("result") ? m["result"] : nlohmann::json::object();
@@ -581,9 +636,9 @@ void print_through_one_browser(const std::string& chromium, const std::vector<Pd
         t.pending = browser.send("Page.navigate", {{"url", file_url(job.html)}}, t.session);
         break;
       case Tab::kNavigate:
-        if (r.contains("errorText") && !r["errorText"].get<std::string>().empty()) {
+        if (r.contains("errorText") && r["errorText"].is_string() &&
+            !r["errorText"].get<std::string>().empty()) {
           fail(t, "Chromium could not open " + job.html.string() + ": " + r["errorText"].get<std::string>());
-          start(t);
           break;
         }
         t.navigated = true;
@@ -595,12 +650,11 @@ void print_through_one_browser(const std::string& chromium, const std::vector<Pd
         if (!why.empty()) {
           fail(t, why);
         } else {
-          done[static_cast<size_t>(t.job)] = 1;
-          ++finished;
+          const size_t j = static_cast<size_t>(t.job);
           browser.send("Target.closeTarget", {{"targetId", t.target}});
           t = Tab{};
+          q.finish(j, "");
         }
-        start(t);
         break;
       }
       default:
@@ -609,29 +663,87 @@ void print_through_one_browser(const std::string& chromium, const std::vector<Pd
   }
 }
 
-}  // namespace
-
-std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel, double timeout_s) {
-  std::vector<std::string> errors(jobs.size());
-  if (jobs.empty()) return errors;
-  const std::string chromium = chromium_or_throw();
-  std::vector<char> done(jobs.size(), 0);
-  if (jobs.size() > 1) {
+// prints the queue's pages: through one browser, then whatever it left one browser each
+void drain(const std::string& chromium, PrintQueue& q, int parallel, double timeout_s,
+           bool one_browser) {
+  if (one_browser) {
     try {
-      print_through_one_browser(chromium, jobs, parallel, timeout_s, errors, done);
+      print_through_one_browser(chromium, q, parallel, timeout_s);
     } catch (const std::exception&) {
       // the pages not printed yet go one browser each (below)
     }
   }
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    if (done[i]) continue;
-    try {
-      print_pdf(jobs[i].html, jobs[i].pdf, timeout_s);
-    } catch (const std::exception& e) {
-      errors[i] = e.what();
+  while (true) {
+    std::unique_lock<std::mutex> lock(q.mu);
+    size_t i = 0;
+    while (i < q.jobs.size() && q.done[i]) ++i;
+    if (i == q.jobs.size()) {
+      if (q.closed) return;
+      q.cv.wait(lock);
+      continue;
     }
+    const PdfJob job = q.jobs[i];
+    q.next = std::max(q.next, i + 1);
+    lock.unlock();
+    std::string error;
+    try {
+      print_pdf(job.html, job.pdf, timeout_s);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    q.finish(i, error);
   }
-  return errors;
+}
+
+}  // namespace
+
+std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel, double timeout_s) {
+  if (jobs.empty()) return {};
+  const std::string chromium = chromium_or_throw();
+  PrintQueue q;
+  for (const PdfJob& j : jobs) q.add(j, {});
+  q.closed = true;
+  drain(chromium, q, parallel, timeout_s, jobs.size() > 1);
+  return q.errors;
+}
+
+struct PdfPrinter::State {
+  PrintQueue queue;
+  std::thread thread;
+  int parallel = 1;
+  double timeout_s = 120;
+};
+
+PdfPrinter::PdfPrinter(int parallel, double timeout_s) : state_(std::make_unique<State>()) {
+  state_->parallel = parallel;
+  state_->timeout_s = timeout_s;
+  const std::string chromium = chromium_or_throw();
+  State* s = state_.get();
+  s->thread = std::thread([s, chromium] {
+    {
+      // the browser starts with the first page (a run that prints nothing starts none)
+      std::unique_lock<std::mutex> lock(s->queue.mu);
+      s->queue.cv.wait(lock, [s] { return !s->queue.jobs.empty() || s->queue.closed; });
+      if (s->queue.jobs.empty()) return;
+    }
+    drain(chromium, s->queue, s->parallel, s->timeout_s, true);
+  });
+}
+
+PdfPrinter::~PdfPrinter() { finish(); }
+
+void PdfPrinter::add(PdfJob job, std::function<void(const std::string&)> done) {
+  state_->queue.add(std::move(job), std::move(done));
+}
+
+void PdfPrinter::finish() {
+  if (!state_ || !state_->thread.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(state_->queue.mu);
+    state_->queue.closed = true;
+    state_->queue.cv.notify_all();
+  }
+  state_->thread.join();
 }
 
 void kill_browsers() {

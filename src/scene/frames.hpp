@@ -36,10 +36,12 @@ class SceneRenderer {
   /// model, OSMesa context and MuJoCo scene, made once and kept), each frame a function of
   /// its pose alone, so the strip is the same image on any number of threads.
   Image strip(std::span<const PoseSample> samples, const std::string& title, int columns);
-  /// Threads a strip renders on (default 1: on a shared 2-core machine llvmpipe's own
-  /// rasteriser threads already fill both cores and a second thread measured no faster,
-  /// while each twin holds another model and OSMesa context; tests/bench/scene_bench.cpp
-  /// BM_Strip16Frames640x480 measures 1 against 2).
+  /// Threads a strip renders on (default 1). llvmpipe rasterises every context of a process
+  /// on ONE set of LP_NUM_THREADS threads (the screen's, one per core by default; the
+  /// scenes of all contexts queue for it), so one thread's strip already rasterises on every
+  /// core, and twins only add their model and context: 2 threads measured no faster
+  /// (slower with LP_NUM_THREADS=1, where the whole process has one rasteriser thread);
+  /// tests/bench/scene_bench.cpp BM_Strip16Frames640x480 measures 1 against 2.
   int strip_threads() const { return strip_threads_; }
   void set_strip_threads(int threads);
 

@@ -2,11 +2,8 @@
 
 #include <GL/osmesa.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <mutex>
-#include <string>
-#include <thread>
 
 #include "scene/scene_error.hpp"
 
@@ -45,14 +42,6 @@ OsmesaContext::OsmesaContext(int width, int height, unsigned format)
   version_ = v ? reinterpret_cast<const char*>(v) : "";
   std::lock_guard<std::mutex> lock(g_info_mutex);
   g_info = {renderer_, version_};
-}
-
-std::string choose_llvmpipe_threads(int jobs) {
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  if (const char* set = std::getenv("LP_NUM_THREADS")) return set;
-  if (jobs >= static_cast<int>(cores)) ::setenv("LP_NUM_THREADS", "1", 0);
-  const char* now = std::getenv("LP_NUM_THREADS");
-  return now ? now : "";
 }
 
 GlInfo gl_info() {

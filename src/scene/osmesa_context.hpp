@@ -7,14 +7,6 @@
 
 namespace armstudy::scene {
 
-/// llvmpipe's rasteriser threads for a run of `jobs` cases at once: when the jobs alone fill
-/// the cores (jobs >= cores) and the environment does not set LP_NUM_THREADS, sets it to 1,
-/// so that every case's context rasterises on one thread of its own instead of each
-/// starting one per core (2 jobs x 2 threads on 2 cores). llvmpipe reads it once, when the
-/// first context is made: call before any rendering. Returns the value in force ("" when
-/// llvmpipe chooses: one thread per core).
-std::string choose_llvmpipe_threads(int jobs);
-
 class OsmesaContext {
  public:
   /// Creates an RGBA context with a 24-bit depth and 8-bit stencil buffer and makes it
