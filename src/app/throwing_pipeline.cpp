@@ -201,7 +201,9 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
       k.push_back({"idp_seed_spread_J", hi - lo, "J", "spread of the IDP seeds"});
     }
     if (r.nlopt_ran) k.push_back({"energy_slsqp_J", r.nlopt.evaluation.energy, "J", "energy of the SLSQP optimum"});
-    if (r.flight.reaches) k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x"});
+    if (r.flight.reaches) k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x of IDP's throw"});
+    if (r.nlopt_flight.reaches)
+      k.push_back({"landing_slsqp_x_m", r.nlopt_flight.landing.x(), "m", "landing point x of SLSQP's throw"});
     return k;
   }
 

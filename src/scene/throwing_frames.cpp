@@ -61,15 +61,9 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
   };
   std::vector<Thrown> thrown = {{&result.idp, "IDP optimum", "throwing_idp", "throwing_flight",
                                  result.flight, true}};
-  if (result.nlopt_ran && result.nlopt.series.t.size() >= 2) {
-    const core::JointVector& qf = result.nlopt.series.q.back();
-    const core::JointVector& qdf = result.nlopt.series.qd.back();
+  if (result.nlopt_ran && result.nlopt.series.t.size() >= 2)
     thrown.push_back({&result.nlopt, "SLSQP optimum", "throwing_slsqp", "throwing_slsqp_flight",
-                      studies::ballistic_flight(studies::ball_position(chain, qf),
-                                                studies::ball_velocity(chain, qf, qdf),
-                                                spec.arm.gravity, spec.landing_height),
-                      false});
-  }
+                      result.nlopt_flight, false});
   std::vector<std::string> files;
   for (const Thrown& th : thrown) {
     const studies::ThrowSeries& s = th.motion->series;

@@ -92,7 +92,8 @@ struct ThrowingResult {
   Verification nlopt_check;
   double saving_percent = 0;  ///< 100 (E_ref - E_idp) / E_ref
   std::string answer = "idp";  ///< "slsqp" when its converged, re-checked throw costs less
-  Flight flight;
+  Flight flight;         ///< after IDP's release
+  Flight nlopt_flight;   ///< after SLSQP's release (when it ran)
   double replay_error = 0;    ///< rad, max |q_replay - q_plan (16x steps)|, 4 joints
   std::vector<double> replay_t;
   std::vector<core::JointVector> replay_q;

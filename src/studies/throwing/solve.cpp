@@ -250,6 +250,12 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   const core::JointVector& qdf = r.idp.series.qd.back();
   r.flight = ballistic_flight(ball_position(setup.chain, qf), ball_velocity(setup.chain, qf, qdf),
                               spec.arm.gravity, spec.landing_height);
+  if (r.nlopt_ran && r.nlopt.series.t.size() >= 2) {
+    const core::JointVector& qn = r.nlopt.series.q.back();
+    const core::JointVector& qdn = r.nlopt.series.qd.back();
+    r.nlopt_flight = ballistic_flight(ball_position(setup.chain, qn), ball_velocity(setup.chain, qn, qdn),
+                                      spec.arm.gravity, spec.landing_height);
+  }
   r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if (!r.flight.reaches) {
     r.message = "the ball never reaches the landing height " + fixed(spec.landing_height, 3) +
@@ -267,7 +273,7 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
                                 fixed(r.idp.evaluation.energy, 3) + " J";
   const std::string ref_words = ref + ": " + fixed(r.reference.evaluation.energy, 3) + " J";
   const bool slsqp_answer = r.nlopt_ran && r.nlopt_run.converged && r.nlopt_run.feasible &&
-                            r.nlopt_check.feasible &&
+                            r.nlopt_check.feasible && r.nlopt_flight.reaches &&
                             r.nlopt.evaluation.energy < r.idp.evaluation.energy &&
                             !(r.idp_converged && r.idp_check.feasible &&
                               r.idp.evaluation.energy <= r.nlopt.evaluation.energy);
@@ -278,7 +284,7 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
     r.message = "lowest-energy throw found: SLSQP's, " + fixed(r.nlopt.evaluation.energy, 3) +
                 " J, converged and feasible in the re-check (" + ref_words + ", saving " +
                 fixed(saving, 1) + " %); " + idp_words + " (saving " + fixed(r.saving_percent, 1) +
-                " %), a stall above it; IDP's ball lands at x = " + fixed(r.flight.landing.x(), 3) +
+                " %), a stall above it; the ball lands at x = " + fixed(r.nlopt_flight.landing.x(), 3) +
                 " m";
   } else {
     r.message = idp_words + " (" + ref_words + ", saving " + fixed(r.saving_percent, 1) +
