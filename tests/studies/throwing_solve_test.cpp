@@ -72,6 +72,15 @@ TEST(ThrowingStudy, OptimaMeetEveryConstraintAt4xStepsAndBeatAFeasibleReference)
   EXPECT_NEAR(r.idp.series.t.back(), s.tf, 1e-12);
   EXPECT_EQ(r.idp.series.q.front().size(), 4);
   EXPECT_TRUE(r.nlopt_ran);
+  // the answer is the lower of the two re-checked, converged throws, and its sentence says so
+  const double e_slsqp = r.nlopt.evaluation.energy, e_idp = r.idp.evaluation.energy;
+  EXPECT_EQ(r.answer, e_slsqp < e_idp ? "slsqp" : "idp") << e_slsqp << " J vs " << e_idp << " J";
+  if (r.answer == "slsqp") {
+    EXPECT_TRUE(r.nlopt_flight.reaches);
+    EXPECT_EQ(r.message.rfind("lowest-energy throw found: SLSQP's", 0), 0u) << r.message;
+  } else {
+    EXPECT_EQ(r.message.rfind("IDP", 0), 0u) << r.message;
+  }
 }
 
 TEST(ThrowingStudy, FlightLandsWhereTheBallisticFormulasSay) {
