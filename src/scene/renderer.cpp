@@ -5,6 +5,7 @@
 #include <cstring>
 #include <optional>
 
+#include "scene/overlay_wrap.hpp"
 #include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 
@@ -95,14 +96,21 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
   mjr_setBuffer(mjFB_OFFSCREEN, &con_);
   mjr_render(viewport, &scene_, &con_);
   part.emplace("labels");
-  if (!labels.top_left.empty() || !labels.top_right.empty())
-    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, labels.top_left.c_str(), nullptr, &con_);
-  if (!labels.top_right.empty())
-    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPRIGHT, viewport, labels.top_right.c_str(), nullptr,
-                &con_);
-  if (!labels.bottom_left.empty())
-    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, labels.bottom_left.c_str(), nullptr,
-                &con_);
+  // labels wrapped to the frame: MuJoCo cuts a line off at the frame's edge; the top-left
+  // label leaves room for the top-right one, which shares its rows
+  const std::span<const int> glyphs(con_.charWidth, 127);
+  const int pad = 3 * con_.charWidth[static_cast<int>('M')];
+  const int width = settings_.frame.width;
+  const std::string top_right = wrap_overlay_text(labels.top_right, glyphs, width / 2 - pad);
+  const int right_px = top_right.empty() ? 0 : overlay_text_width(top_right, glyphs) + pad;
+  const std::string top_left = wrap_overlay_text(labels.top_left, glyphs, width - right_px - pad);
+  const std::string bottom_left = wrap_overlay_text(labels.bottom_left, glyphs, width - pad);
+  if (!top_left.empty() || !top_right.empty())
+    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, top_left.c_str(), nullptr, &con_);
+  if (!top_right.empty())
+    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPRIGHT, viewport, top_right.c_str(), nullptr, &con_);
+  if (!bottom_left.empty())
+    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, bottom_left.c_str(), nullptr, &con_);
   part.emplace("readback");
   mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
   // OpenGL rows run bottom-up
