@@ -19,77 +19,15 @@ using report::FigureDiff;
 
 namespace {
 
-// the fields the diff reads, with their types; "" when fine, else what is wrong
-std::string shape_problem(const json& r) {
-  auto type_of = [](const json& v) -> std::string {
-    if (v.is_null()) return "null";
-    if (v.is_string()) return "a string";
-    if (v.is_number()) return "a number";
-    if (v.is_boolean()) return "a boolean";
-    if (v.is_array()) return "a list";
-    return "an object";
-  };
-  if (!r.is_object()) return "the file is " + type_of(r) + "; expected an object";
-  if (!r.contains("case") || !r["case"].is_object() || !r["case"].contains("name") ||
-      !r["case"]["name"].is_string())
-    return "'case.name' is missing or not a string; expected the case's name";
-  for (const char* k : {"study", "status"})
-    if (!r.contains(k) || !r[k].is_string()) return std::string("'") + k + "' is missing or not a string";
-  if (r.contains("message") && !r["message"].is_string()) return "'message' is " + type_of(r["message"]) + "; expected a string";
-  if (r.contains("key_figures")) {
-    const json& kf = r["key_figures"];
-    if (!kf.is_array()) return "'key_figures' is " + type_of(kf) + "; expected a list";
-    for (size_t i = 0; i < kf.size(); ++i) {
-      const std::string at = "'key_figures[" + std::to_string(i) + "]";
-      if (!kf[i].is_object()) return at + "' is " + type_of(kf[i]) + "; expected an object";
-      if (!kf[i].contains("name") || !kf[i]["name"].is_string()) return at + ".name' is missing or not a string";
-      if (!kf[i].contains("value") || !(kf[i]["value"].is_number() || kf[i]["value"].is_null()))
-        return at + ".value' is missing or not a number";
-      if (kf[i].contains("unit") && !kf[i]["unit"].is_string()) return at + ".unit' is not a string";
-    }
-  }
-  if (r.contains("checks")) {
-    const json& cs = r["checks"];
-    if (!cs.is_array()) return "'checks' is " + type_of(cs) + "; expected a list";
-    for (size_t i = 0; i < cs.size(); ++i) {
-      const std::string at = "'checks[" + std::to_string(i) + "]";
-      if (!cs[i].is_object() || !cs[i].contains("name") || !cs[i]["name"].is_string())
-        return at + ".name' is missing or not a string";
-      if (!cs[i].contains("passed") || !cs[i]["passed"].is_boolean()) return at + ".passed' is missing or not true/false";
-      for (const char* k : {"value", "tolerance"})
-        if (cs[i].contains(k) && !(cs[i][k].is_number() || cs[i][k].is_null())) return at + "." + k + "' is not a number";
-    }
-  }
-  if (r.contains("frames")) {
-    if (!r["frames"].is_array()) return "'frames' is " + type_of(r["frames"]) + "; expected a list";
-    for (const auto& f : r["frames"])
-      if (!f.is_string()) return "'frames' holds " + type_of(f) + "; expected file names";
-  }
-  if (r.contains("provenance") && !r["provenance"].is_object())
-    return "'provenance' is " + type_of(r["provenance"]) + "; expected an object";
-  if (r.contains("case") && r["case"].contains("sweep")) {
-    const json& sw = r["case"]["sweep"];
-    if (!sw.is_object() || !sw.contains("point") || !sw["point"].is_object())
-      return "'case.sweep.point' is missing or not an object";
-    for (const auto& [k, v] : sw["point"].items())
-      if (!v.is_string()) return "'case.sweep.point." + k + "' is " + type_of(v) + "; expected a string";
-  }
-  return "";
-}
-
-std::string case_name(const json& r) { return r["case"]["name"].get<std::string>(); }
-
 // a key figure's value: nullopt when absent, NaN when null
 struct Figure {
   std::string unit;
   double value;
 };
 
-std::vector<std::pair<std::string, Figure>> figures_of(const json& r) {
+std::vector<std::pair<std::string, Figure>> figures_of(const report::ResultsRecord& r) {
   std::vector<std::pair<std::string, Figure>> out;
-  for (const auto& k : r.value("key_figures", json::array()))
-    out.push_back({k["name"].get<std::string>(),
-                   {k.value("unit", std::string()), k["value"].is_number() ? k["value"].get<double>() : NAN}});
+  for (const auto& k : r.key_figures) out.push_back({k.name, {k.unit, k.value}});
   return out;
 }
 
@@ -115,14 +53,17 @@ const std::vector<std::pair<std::string, std::string>>& provenance_labels() {
 }
 
 // provenance items of a results.json (top-level version and commit as fallbacks)
-std::map<std::string, std::string> provenance_of(const json& r) {
-  std::map<std::string, std::string> p;
-  if (r.contains("provenance"))
-    for (const auto& [k, v] : r["provenance"].items())
-      if (v.is_string()) p[k] = v.get<std::string>();
-  for (const char* k : {"armstudy_version", "git_commit"})
-    if (!p.count(k) && r.contains(k) && r[k].is_string()) p[k] = r[k].get<std::string>();
-  return p;
+std::map<std::string, std::string> provenance_of(const report::ResultsRecord& r) {
+  const report::ProvenanceRecord& p = r.provenance;
+  std::map<std::string, std::string> m = {{"armstudy_version", p.armstudy_version},
+                                          {"mujoco_version", p.mujoco_version},
+                                          {"compiler", p.compiler},
+                                          {"cpu_model", p.cpu_model}};
+  if (p.git_commit) m["git_commit"] = *p.git_commit;
+  if (p.gl_renderer) m["gl_renderer"] = *p.gl_renderer;
+  if (p.gl_version) m["gl_version"] = *p.gl_version;
+  if (p.mesa_version) m["mesa_version"] = *p.mesa_version;
+  return m;
 }
 
 std::string label_of(const std::string& key) {
@@ -143,12 +84,6 @@ std::vector<std::string> provenance_keys(const std::set<std::string>& present) {
   return keys;
 }
 
-std::vector<std::string> frames_of(const json& r) {
-  std::vector<std::string> out;
-  for (const auto& f : r.value("frames", json::array())) out.push_back(f.get<std::string>());
-  return out;
-}
-
 // a folder name safe for a case's frame copies
 std::string safe_name(const std::string& s) {
   std::string o;
@@ -159,24 +94,24 @@ std::string safe_name(const std::string& s) {
 CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolerances& tol,
                       const FrameOptions& fo) {
   CaseDiff d;
-  const json& any = (n ? n : b)->results;
-  d.name = case_name(any);
-  d.study = any["study"].get<std::string>();
+  const report::ResultsRecord& any = (n ? n : b)->record;
+  d.name = any.case_info.name;
+  d.study = any.study;
   d.presence = b && n ? CaseDiff::Presence::kBoth : (n ? CaseDiff::Presence::kAdded : CaseDiff::Presence::kRemoved);
   if (b) {
-    d.base_status = b->results["status"].get<std::string>();
-    d.base_passed = case_passed(b->results);
-    d.base_message = b->results.value("message", std::string());
+    d.base_status = b->record.status;
+    d.base_passed = case_passed(b->record);
+    d.base_message = b->record.message;
   }
   if (n) {
-    d.new_status = n->results["status"].get<std::string>();
-    d.new_passed = case_passed(n->results);
-    d.new_message = n->results.value("message", std::string());
+    d.new_status = n->record.status;
+    d.new_passed = case_passed(n->record);
+    d.new_message = n->record.message;
   }
   // key figures: the base's order, then the new run's additions
   std::vector<std::pair<std::string, Figure>> bf, nf;
-  if (b) bf = figures_of(b->results);
-  if (n) nf = figures_of(n->results);
+  if (b) bf = figures_of(b->record);
+  if (n) nf = figures_of(n->record);
   std::vector<std::string> order;
   std::map<std::string, Figure> bm, nm;
   for (const auto& [k, v] : bf) { if (!bm.count(k)) order.push_back(k); bm.emplace(k, v); }
@@ -192,40 +127,37 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
   }
   if (b && n) {
     // checks whose verdict changed, and checks of one run only
-    const json base_checks = b->results.value("checks", json::array());
-    const json new_checks = n->results.value("checks", json::array());
-    std::map<std::string, const json*> bc, nc;
+    std::map<std::string, const report::CheckRecord*> bc, nc;
     std::vector<std::string> names;
-    for (const auto& c : base_checks) {
-      const std::string k = c["name"].get<std::string>();
-      if (!bc.count(k)) names.push_back(k);
-      bc[k] = &c;
+    for (const auto& c : b->record.checks) {
+      if (!bc.count(c.name)) names.push_back(c.name);
+      bc[c.name] = &c;
     }
-    for (const auto& c : new_checks) {
-      const std::string k = c["name"].get<std::string>();
-      if (!bc.count(k) && !nc.count(k)) names.push_back(k);
-      nc[k] = &c;
+    for (const auto& c : n->record.checks) {
+      if (!bc.count(c.name) && !nc.count(c.name)) names.push_back(c.name);
+      nc[c.name] = &c;
     }
-    auto num = [](const json* c, const char* k) -> std::optional<double> {
-      if (!c || !c->contains(k)) return std::nullopt;
-      return (*c)[k].is_number() ? (*c)[k].get<double>() : NAN;
+    auto num = [](const report::CheckRecord* c, double report::CheckRecord::*field) -> std::optional<double> {
+      if (!c) return std::nullopt;
+      return c->*field;
     };
     for (const auto& k : names) {
-      const json* x = bc.count(k) ? bc[k] : nullptr;
-      const json* y = nc.count(k) ? nc[k] : nullptr;
+      const report::CheckRecord* x = bc.count(k) ? bc[k] : nullptr;
+      const report::CheckRecord* y = nc.count(k) ? nc[k] : nullptr;
       report::CheckDiff c;
       c.name = k;
-      if (x) c.base_passed = (*x)["passed"].get<bool>();
-      if (y) c.new_passed = (*y)["passed"].get<bool>();
+      if (x) c.base_passed = x->passed;
+      if (y) c.new_passed = y->passed;
       if (c.base_passed == c.new_passed) continue;
-      c.base_value = num(x, "value");
-      c.new_value = num(y, "value");
-      c.base_tolerance = num(x, "tolerance");
-      c.new_tolerance = num(y, "tolerance");
+      c.base_value = num(x, &report::CheckRecord::value);
+      c.new_value = num(y, &report::CheckRecord::value);
+      c.base_tolerance = num(x, &report::CheckRecord::tolerance);
+      c.new_tolerance = num(y, &report::CheckRecord::tolerance);
       d.checks.push_back(std::move(c));
     }
     // frames: every file of either run; a run rendered without frames (--no-render) has none
-    const auto fb = frames_of(b->results), fn = frames_of(n->results);
+    const auto& fb = b->record.frames;
+    const auto& fn = n->record.frames;
     std::vector<std::string> files = fb;
     for (const auto& f : fn)
       if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
@@ -246,7 +178,7 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
       }
     }
     // provenance
-    const auto pb = provenance_of(b->results), pn = provenance_of(n->results);
+    const auto pb = provenance_of(b->record), pn = provenance_of(n->record);
     std::set<std::string> keys;
     for (const auto& [k, v] : pb) keys.insert(k);
     for (const auto& [k, v] : pn) keys.insert(k);
@@ -275,8 +207,8 @@ void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutp
   if (tb["rows"].empty() && tn["rows"].empty()) return;
   for (const auto* run : {&now, &base})
     for (const auto& c : *run)
-      if (out->sweep_name.empty() && c.results["case"].contains("sweep"))
-        out->sweep_name = c.results["case"]["sweep"].value("name", std::string("sweep"));
+      if (out->sweep_name.empty() && c.record.case_info.sweep)
+        out->sweep_name = c.record.case_info.sweep->name;
   std::map<std::string, const json*> rb, rn;
   for (const auto& r : tb["rows"]) rb[r["case"].get<std::string>()] = &r;
   for (const auto& r : tn["rows"]) rn[r["case"].get<std::string>()] = &r;
@@ -343,10 +275,8 @@ std::vector<CaseOutput> read_run(const fs::path& dir) {
   if (!fs::is_directory(dir)) throw DiffInputError(dir.string() + ": not a folder; expected an output folder of 'armstudy run' or 'merge'");
   std::vector<std::string> problems;
   std::vector<CaseOutput> out = collect_outputs({dir}, &problems);
-  for (const auto& c : out) {
-    const std::string p = shape_problem(c.results);
-    if (!p.empty()) problems.push_back((c.folder / "results.json").string() + ": " + p);
-  }
+  // collect_outputs read every shared key of each file strictly (a misspelt, missing or
+  // mistyped one is a problem named there), so the records below are whole
   if (!problems.empty()) {
     std::string msg;
     for (const auto& p : problems) msg += (msg.empty() ? "" : "\n") + p;
@@ -366,8 +296,8 @@ report::RunDiff diff_runs(const std::vector<CaseOutput>& base, const std::vector
   d.base_cases = base.size();
   d.new_cases = now.size();
   std::map<std::string, const CaseOutput*> b, n;
-  for (const auto& c : base) b[case_name(c.results)] = &c;
-  for (const auto& c : now) n[case_name(c.results)] = &c;
+  for (const auto& c : base) b[c.record.case_info.name] = &c;
+  for (const auto& c : now) n[c.record.case_info.name] = &c;
   std::set<std::string> names;
   for (const auto& [k, v] : b) names.insert(k);
   for (const auto& [k, v] : n) names.insert(k);
@@ -376,8 +306,8 @@ report::RunDiff diff_runs(const std::vector<CaseOutput>& base, const std::vector
                                    tolerances, frames));
   // the runs' provenance as a whole: each item's distinct values over all cases
   std::map<std::string, std::set<std::string>> pb, pn;
-  for (const auto& c : base) for (const auto& [k, v] : provenance_of(c.results)) pb[k].insert(v);
-  for (const auto& c : now) for (const auto& [k, v] : provenance_of(c.results)) pn[k].insert(v);
+  for (const auto& c : base) for (const auto& [k, v] : provenance_of(c.record)) pb[k].insert(v);
+  for (const auto& c : now) for (const auto& [k, v] : provenance_of(c.record)) pn[k].insert(v);
   std::set<std::string> keys;
   for (const auto& [k, v] : pb) keys.insert(k);
   for (const auto& [k, v] : pn) keys.insert(k);

@@ -110,13 +110,11 @@ bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c, con
   if (!std::filesystem::exists(rj)) return false;
   try {
     std::ifstream in(rj);
-    const auto j = nlohmann::json::parse(in);
+    const auto r = armstudy::report::read_record(nlohmann::json::parse(in));  // strict: else redone
     const std::string commit = armstudy::git_commit();
-    return j.value("/case/sha256"_json_pointer, std::string()) == c.info.sha256 &&
-           j.value("armstudy_version", std::string()) == armstudy::kVersion &&
-           j.value("git_commit", std::string()) == commit &&
-           j.value("/run_options/render"_json_pointer, !options.render) == options.render &&
-           armstudy::app::case_passed(j);
+    return r.case_info.sha256 == c.info.sha256 && r.armstudy_version == armstudy::kVersion &&
+           r.git_commit.value_or("") == commit && r.run_options.render == options.render &&
+           armstudy::app::case_passed(r);
   } catch (const std::exception&) {
     return false;
   }
@@ -315,8 +313,8 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
     if (!table["rows"].empty()) {
       std::string name = "sweep";
       for (const auto& o : outputs)
-        if (o.results.contains("case") && o.results["case"].contains("sweep")) {
-          name = o.results["case"]["sweep"].value("name", name);
+        if (o.record.case_info.sweep) {
+          name = o.record.case_info.sweep->name;
           break;
         }
       const int plots = armstudy::report::write_sweep_report(std::filesystem::path(out) / "sweep",

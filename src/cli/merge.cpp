@@ -46,31 +46,21 @@ std::string md_cell(std::string s) {
   return o;
 }
 
-std::string case_name(const json& r) { return r.value("/case/name"_json_pointer, std::string("?")); }
-
-// the status the case expects ("solved" unless its file says `expect: unsolvable`)
-std::string expected_status(const json& r) { return r.value("/case/expect"_json_pointer, std::string("solved")); }
+using report::ResultsRecord;
 
 // the case ended as it expects
-bool status_as_expected(const json& r) { return r.value("status", "") == expected_status(r); }
+bool status_as_expected(const ResultsRecord& r) { return r.status == r.expected_status(); }
 
-// a check's or key figure's number; NaN for null (how JSON writes a NaN) or a missing one
-double number(const json& j, const char* key) {
-  const auto it = j.find(key);
-  return it != j.end() && it->is_number() ? it->get<double>() : std::nan("");
-}
-
-std::string failure_text(const json& r) {
-  if (r.value("status", "") == "unreadable") return r.value("message", std::string());
-  if (!status_as_expected(r) && expected_status(r) == "unsolvable")
+std::string failure_text(const ResultsRecord& r) {
+  if (r.status == "unreadable") return r.message;
+  if (!status_as_expected(r) && r.expected_status() == "unsolvable")
     return "solved, but the case expects it to be unsolvable";
-  if (!status_as_expected(r)) return "could not be solved: " + r.value("message", std::string());
+  if (!status_as_expected(r)) return "could not be solved: " + r.message;
   std::string s;
-  for (const auto& c : r.value("checks", json::array()))
-    if (!c.value("passed", false))
-      s += (s.empty() ? "failed checks: " : ", ") + c.value("name", std::string()) + " (" +
-           report::format_sig(number(c, "value"), 4) + " > " +
-           report::format_sig(number(c, "tolerance"), 4) + ")";
+  for (const auto& c : r.checks)
+    if (!c.passed)
+      s += (s.empty() ? "failed checks: " : ", ") + c.name + " (" + report::format_sig(c.value, 4) +
+           " > " + report::format_sig(c.tolerance, 4) + ")";
   return s;
 }
 
@@ -85,17 +75,16 @@ std::string csv_cell(const std::string& s) {
 std::vector<std::pair<std::string, std::string>> figure_columns(const std::vector<const CaseOutput*>& cases) {
   std::vector<std::pair<std::string, std::string>> cols;
   for (const auto* c : cases)
-    for (const auto& k : c->results.value("key_figures", json::array())) {
-      const std::string n = k.value("name", std::string());
-      if (std::none_of(cols.begin(), cols.end(), [&](auto& p) { return p.first == n; }))
-        cols.emplace_back(n, k.value("unit", std::string()));
-    }
+    for (const auto& k : c->record.key_figures)
+      if (std::none_of(cols.begin(), cols.end(), [&](auto& p) { return p.first == k.name; }))
+        cols.emplace_back(k.name, k.unit);
   return cols;
 }
 
-std::optional<double> figure(const json& r, const std::string& name) {
-  for (const auto& k : r.value("key_figures", json::array()))
-    if (k.value("name", std::string()) == name && k["value"].is_number()) return k["value"].get<double>();
+// a key figure's value; none for a missing one or NaN (how JSON's null reads)
+std::optional<double> figure(const ResultsRecord& r, const std::string& name) {
+  for (const auto& k : r.key_figures)
+    if (k.name == name && std::isfinite(k.value)) return k.value;
   return std::nullopt;
 }
 
@@ -142,6 +131,7 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::
         if (!in) throw std::runtime_error("cannot open it");
         c.results = json::parse(in);
         problem = results_problem(c.results);
+        if (problem.empty()) c.record = report::read_record(c.results);
       } catch (const json::parse_error& e) {
         // "[json.exception.parse_error.101] parse error at line 3, column 1: ..." without the tag
         std::string what = e.what();
@@ -154,16 +144,17 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::
         // a failed case, named after its folder: CI must not go green on it
         const std::string reason = rj.string() + ": " + problem;
         if (warnings) warnings->push_back(reason);
-        json bad = {{"study", c.results.is_object() && c.results.contains("study") && c.results["study"].is_string()
-                                  ? c.results["study"].get<std::string>() : std::string("unreadable")},
-                    {"case", {{"name", f.filename().string()}}},
-                    {"status", "unreadable"},
-                    {"message", "results.json unreadable: " + reason},
-                    {"checks", json::array()},
-                    {"key_figures", json::array()}};
-        c.results = std::move(bad);
+        ResultsRecord bad;
+        bad.study = c.results.is_object() && c.results.contains("study") && c.results["study"].is_string()
+                        ? c.results["study"].get<std::string>()
+                        : std::string("unreadable");
+        bad.case_info.name = f.filename().string();
+        bad.status = "unreadable";
+        bad.message = "results.json unreadable: " + reason;
+        c.record = std::move(bad);
+        c.results = json::object();
       }
-      const std::string n = case_name(c.results);
+      const std::string n = c.record.case_info.name;
       if (by_name.count(n)) {
         if (warnings) warnings->push_back(rj.string() + ": case '" + n + "' already found in " + by_name[n].folder.string() + "; skipped");
         continue;
@@ -176,28 +167,23 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::
   return out;
 }
 
-bool case_passed(const json& r) {
-  if (!status_as_expected(r)) return false;
-  for (const auto& c : r.value("checks", json::array()))
-    if (!c.value("passed", false)) return false;
-  return true;
-}
+bool case_passed(const ResultsRecord& r) { return status_as_expected(r) && r.checks_passed(); }
 
 std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_bytes) {
   size_t failed = 0;
-  for (const auto& c : cases) failed += !case_passed(c.results);
+  for (const auto& c : cases) failed += !case_passed(c.record);
   std::ostringstream md;
   md << "# armstudy: " << cases.size() << " case(s), " << failed << " failed\n\n";
   if (failed) {
     md << "## Failures\n\n| case | study | what failed |\n|---|---|---|\n";
     for (const auto& c : cases)
-      if (!case_passed(c.results))
-        md << "| " << md_cell(case_name(c.results)) << " | " << md_cell(c.results.value("study", "")) << " | "
-           << md_cell(failure_text(c.results)) << " |\n";
+      if (!case_passed(c.record))
+        md << "| " << md_cell(c.record.case_info.name) << " | " << md_cell(c.record.study) << " | "
+           << md_cell(failure_text(c.record)) << " |\n";
     md << "\n";
   }
   std::map<std::string, std::vector<const CaseOutput*>> by_study;
-  for (const auto& c : cases) by_study[c.results.value("study", std::string("?"))].push_back(&c);
+  for (const auto& c : cases) by_study[c.record.study].push_back(&c);
   for (const auto& [study, list] : by_study) {
     const auto cols = figure_columns(list);
     md << "## " << study << " (" << list.size() << ")\n\n| case | status | checks |";
@@ -206,10 +192,10 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
     for (size_t i = 0; i < cols.size(); ++i) md << "---:|";
     md << "\n";
     for (const auto* c : list) {
-      const auto& r = c->results;
+      const auto& r = c->record;
       size_t passed = 0, total = 0;
-      for (const auto& ch : r.value("checks", json::array())) { ++total; passed += ch.value("passed", false); }
-      md << "| " << md_cell(case_name(r)) << " | " << (case_passed(r) ? "ok" : "FAILED") << " | " << passed << "/"
+      for (const auto& ch : r.checks) { ++total; passed += ch.passed; }
+      md << "| " << md_cell(r.case_info.name) << " | " << (case_passed(r) ? "ok" : "FAILED") << " | " << passed << "/"
          << total << " |";
       for (const auto& [n, u] : cols) {
         const auto v = figure(r, n);
@@ -232,15 +218,15 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
 
 std::string junit_xml(const std::vector<CaseOutput>& cases) {
   std::map<std::string, std::vector<const CaseOutput*>> by_study;
-  for (const auto& c : cases) by_study[c.results.value("study", std::string("?"))].push_back(&c);
+  for (const auto& c : cases) by_study[c.record.study].push_back(&c);
   size_t tests = 0, failures = 0;
   std::ostringstream body;
   for (const auto& [study, list] : by_study) {
     size_t st = 0, sf = 0;
     std::ostringstream tc;
     for (const auto* c : list) {
-      const auto& r = c->results;
-      const std::string cls = xml_escape(study + "." + case_name(r));
+      const auto& r = c->record;
+      const std::string cls = xml_escape(study + "." + r.case_info.name);
       ++st;
       tc << "    <testcase classname=\"" << cls << "\" name=\"solve\"";
       if (!status_as_expected(r)) {
@@ -249,14 +235,14 @@ std::string junit_xml(const std::vector<CaseOutput>& cases) {
       } else {
         tc << "/>\n";
       }
-      for (const auto& ch : r.value("checks", json::array())) {
+      for (const auto& ch : r.checks) {
         ++st;
-        tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_escape(ch.value("name", std::string())) << "\"";
-        if (!ch.value("passed", false)) {
+        tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_escape(ch.name) << "\"";
+        if (!ch.passed) {
           ++sf;
-          tc << "><failure message=\"" << xml_escape("value " + report::format_sig(number(ch, "value"), 6) +
-                                                     " exceeds tolerance " + report::format_sig(number(ch, "tolerance"), 6))
-             << "\">" << xml_escape(ch.value("description", std::string())) << "</failure></testcase>\n";
+          tc << "><failure message=\"" << xml_escape("value " + report::format_sig(ch.value, 6) +
+                                                     " exceeds tolerance " + report::format_sig(ch.tolerance, 6))
+             << "\">" << xml_escape(ch.description) << "</failure></testcase>\n";
         } else {
           tc << "/>\n";
         }
@@ -283,11 +269,10 @@ struct SweepTable {
 SweepTable sweep_table(const std::vector<CaseOutput>& cases) {
   SweepTable t;
   for (const auto& c : cases) {
-    const auto sw = c.results.value("/case/sweep/point"_json_pointer, json());
-    if (!sw.is_object()) continue;
+    if (!c.record.case_info.sweep) continue;
     t.rows.push_back(&c);
-    for (auto it = sw.begin(); it != sw.end(); ++it)
-      if (std::find(t.params.begin(), t.params.end(), it.key()) == t.params.end()) t.params.push_back(it.key());
+    for (const auto& [key, value] : c.record.case_info.sweep->point)
+      if (std::find(t.params.begin(), t.params.end(), key) == t.params.end()) t.params.push_back(key);
   }
   std::sort(t.params.begin(), t.params.end());
   t.figures = figure_columns(t.rows);
@@ -304,10 +289,10 @@ std::string sweep_csv(const std::vector<CaseOutput>& cases) {
   for (const auto& [n, u] : t.figures) csv << "," << csv_cell(u.empty() ? n : n + " (" + u + ")");
   csv << "\n";
   for (const auto* c : t.rows) {
-    const auto& r = c->results;
-    csv << csv_cell(case_name(r)) << "," << (case_passed(r) ? "ok" : "failed");
-    const auto point = r["case"]["sweep"]["point"];
-    for (const auto& p : t.params) csv << "," << csv_cell(point.contains(p) ? point[p].get<std::string>() : "");
+    const auto& r = c->record;
+    csv << csv_cell(r.case_info.name) << "," << (case_passed(r) ? "ok" : "failed");
+    const auto& point = r.case_info.sweep->point;
+    for (const auto& p : t.params) csv << "," << csv_cell(point.count(p) ? point.at(p) : "");
     for (const auto& [n, u] : t.figures) {
       const auto v = figure(r, n);
       csv << "," << (v ? report::format_sig(*v, 10) : "");
@@ -321,11 +306,11 @@ json sweep_json(const std::vector<CaseOutput>& cases) {
   const SweepTable t = sweep_table(cases);
   json rows = json::array();
   for (const auto* c : t.rows) {
-    const auto& r = c->results;
-    json row = {{"case", case_name(r)}, {"status", case_passed(r) ? "ok" : "failed"}};
+    const auto& r = c->record;
+    json row = {{"case", r.case_info.name}, {"status", case_passed(r) ? "ok" : "failed"}};
     json params = json::object();
-    const auto point = r["case"]["sweep"]["point"];
-    for (const auto& p : t.params) params[p] = point.contains(p) ? point[p] : json();
+    const auto& point = r.case_info.sweep->point;
+    for (const auto& p : t.params) params[p] = point.count(p) ? json(point.at(p)) : json();
     row["parameters"] = params;
     json figs = json::object();
     for (const auto& [n, u] : t.figures) {
@@ -354,7 +339,7 @@ size_t write_merged(const std::vector<CaseOutput>& cases, const fs::path& out_di
     write_file_atomic(out_dir / "sweep.json", sweep_json(cases).dump(2) + "\n");
   }
   size_t failed = 0;
-  for (const auto& c : cases) failed += !case_passed(c.results);
+  for (const auto& c : cases) failed += !case_passed(c.record);
   return failed;
 }
 

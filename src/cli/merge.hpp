@@ -9,12 +9,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/results_record.hpp"
+
 namespace armstudy::app {
 
 /// One case output found on disk.
 struct CaseOutput {
   std::filesystem::path folder;  ///< DIR/<case name>
-  nlohmann::json results;        ///< its results.json
+  nlohmann::json results;        ///< its results.json as read (empty when unreadable)
+  /// its shared record, typed (what merge reads); for a file that cannot be used, status
+  /// "unreadable", the folder's name and a message saying what is wrong
+  report::ResultsRecord record;
 };
 
 /// Every DIR/<case>/results.json under the given folders, sorted by case name (the first
@@ -37,7 +42,7 @@ const char* run_level_file(const std::string& name);
 
 /// True if the case ended as its file expects (solved, unless it says `expect: unsolvable`)
 /// and every one of its checks passed.
-bool case_passed(const nlohmann::json& results);
+bool case_passed(const report::ResultsRecord& record);
 
 /// GitHub-flavoured markdown: failures first, one table per study; at most max_bytes
 /// (truncated with a note).

@@ -324,18 +324,17 @@ TEST(DiffCli, HelpAndUsageErrors) {
 using armstudy::app::CaseOutput;
 
 CaseOutput sweep_case(const std::string& name, double l2, double energy, const std::string& status = "solved") {
-  json r;
-  r["study"] = "placement";
-  r["case"] = {{"name", name}, {"path", name + ".yaml"}, {"sha256", std::string(64, 'a')},
-               {"sweep", {{"name", "ratio"}, {"point", {{"arm.links[2].length", std::to_string(l2)}}}}}};
-  r["status"] = status;
-  r["message"] = "";
-  r["checks"] = json::array();
-  r["key_figures"] = json::array({{{"name", "min_energy_J"}, {"value", energy}, {"unit", "J"}},
-                                  {{"name", "run_time_s"}, {"value", energy / 7}, {"unit", "s"}}});
-  r["frames"] = json::array();
-  r["provenance"] = {{"armstudy_version", "0.1.0"}, {"compiler", "gcc 12"}};
-  return {fs::path("/nonexistent") / name, r};
+  armstudy::report::ResultsRecord r;
+  r.study = "placement";
+  r.case_info.name = name;
+  r.case_info.path = name + ".yaml";
+  r.case_info.sha256 = std::string(64, 'a');
+  r.case_info.sweep = armstudy::report::CaseRecord::Sweep{"ratio", {{"arm.links[2].length", std::to_string(l2)}}};
+  r.status = status;
+  r.key_figures = {{"min_energy_J", energy, "J", "least energy"}, {"run_time_s", energy / 7, "s", "run time"}};
+  r.provenance.armstudy_version = "0.1.0";
+  r.provenance.compiler = "gcc 12";
+  return {fs::path("/nonexistent") / name, armstudy::report::write_record(r), r};
 }
 
 TEST(DiffRuns, SweepRowsAreComparedByCaseIdLargestChangeFirst) {

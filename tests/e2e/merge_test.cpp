@@ -13,17 +13,17 @@ using nlohmann::json;
 CaseOutput make_case(const std::string& name, const std::string& study, bool solved,
                      std::vector<std::pair<std::string, bool>> checks, double energy,
                      const std::string& ratio = "") {
-  json r;
-  r["study"] = study;
-  r["case"] = {{"name", name}, {"path", name + ".yaml"}, {"sha256", std::string(64, 'a')}};
-  if (!ratio.empty()) r["case"]["sweep"] = {{"name", "s"}, {"point", {{"arm.links[2].length", ratio}}}};
-  r["status"] = solved ? "solved" : "unsolvable";
-  r["message"] = solved ? "ok" : "target is 0.12 m outside the annulus";
-  r["checks"] = json::array();
-  for (const auto& [n, p] : checks)
-    r["checks"].push_back({{"name", n}, {"description", "d <x>"}, {"value", p ? 0.0 : 2.0}, {"tolerance", 1.0}, {"passed", p}});
-  r["key_figures"] = json::array({{{"name", "min_energy_J"}, {"value", energy}, {"unit", "J"}}});
-  return {name, r};
+  report::ResultsRecord r;
+  r.study = study;
+  r.case_info.name = name;
+  r.case_info.path = name + ".yaml";
+  r.case_info.sha256 = std::string(64, 'a');
+  if (!ratio.empty()) r.case_info.sweep = report::CaseRecord::Sweep{"s", {{"arm.links[2].length", ratio}}};
+  r.status = solved ? "solved" : "unsolvable";
+  r.message = solved ? "ok" : "target is 0.12 m outside the annulus";
+  for (const auto& [n, p] : checks) r.checks.push_back({n, "d <x>", p ? 0.0 : 2.0, 1.0, p});
+  r.key_figures = {{"min_energy_J", energy, "J", "least energy"}};
+  return {name, report::write_record(r), r};
 }
 
 TEST(Merge, SummaryListsFailuresFirstWithReasons) {
@@ -65,7 +65,7 @@ TEST(Merge, SweepTablesDoNotDependOnCaseOrder) {
   const std::string js = sweep_json(cases).dump();
   std::mt19937 rng(3);
   std::shuffle(cases.begin(), cases.end(), rng);
-  std::sort(cases.begin(), cases.end(), [](auto& a, auto& b) { return a.results["case"]["name"] < b.results["case"]["name"]; });
+  std::sort(cases.begin(), cases.end(), [](auto& a, auto& b) { return a.record.case_info.name < b.record.case_info.name; });
   EXPECT_EQ(sweep_csv(cases), csv);
   EXPECT_EQ(sweep_json(cases).dump(), js);
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "case,status,arm.links[2].length,min_energy_J (J)");
