@@ -230,6 +230,8 @@ void TipRateEvaluator::at_points(size_t n, TipRateArrays* a) const {
   double* __restrict oc1 = a->c1.data(); double* __restrict os1 = a->s1.data();
   double* __restrict oc2 = a->c2.data(); double* __restrict os2 = a->s2.data();
   char* __restrict ok = a->ok.data();
+  // (GCC honours __restrict only on parameters: the arrays are distinct vectors)
+#pragma GCC ivdep
   for (size_t i = 0; i < n; ++i) {
     const double dx = px[i] - bx, dy = py[i] - by;
     const double p0 = r00 * dx + r01 * dy, p1 = r10 * dx + r11 * dy;
@@ -238,9 +240,8 @@ void TipRateEvaluator::at_points(size_t n, TipRateArrays* a) const {
     const double r2 = p0 * p0 + p1 * p1;
     const double c2 = (r2 - shift) * scale;
     const double w = (1.0 - c2) * (1.0 + c2);
-    const bool good = w > 1e-16;
     const double ir2 = 1.0 / r2;
-    const double root = std::sqrt(good ? w : 1.0);
+    const double root = std::sqrt(w > 1e-16 ? w : 1.0);  // (ok[i] = 0 where w is replaced)
     const double s2 = sign * root;
     const double k1 = L1 + L2 * c2, k2 = L2 * s2;
     const double c1 = (p0 * k1 + p1 * k2) * ir2, s1 = (p1 * k1 - p0 * k2) * ir2;
@@ -260,8 +261,9 @@ void TipRateEvaluator::at_points(size_t n, TipRateArrays* a) const {
     os1[i] = sb * c1 + cb * s1;
     oc2[i] = c2;
     os2[i] = s2;
-    ok[i] = good;
   }
+  // (apart: a byte store or a bool in the loop above keeps it from vectorising)
+  for (size_t i = 0; i < n; ++i) ok[i] = (1.0 - oc2[i]) * (1.0 + oc2[i]) > 1e-16;
 }
 
 std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,

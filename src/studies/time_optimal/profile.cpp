@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
@@ -449,19 +450,27 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     double* __restrict v0 = val[0][0].data(); double* __restrict v1 = val[0][1].data();
     double* __restrict t0 = val[1][0].data(); double* __restrict t1 = val[1][1].data();
     double* __restrict a0 = val[2][0].data(); double* __restrict a1 = val[2][1].data();
-    for (size_t i = 0; i < n; ++i) {
-      const double sd = sds[i], x = xs[i], u = us[i];
-      const double vq[2] = {ra.dq0[i] * sd, ra.dq1[i] * sd};
-      const double aq[2] = {ra.dq0[i] * u + ra.ddq0[i] * x, ra.dq1[i] * u + ra.ddq1[i] * x};
-      double tq[2];
-      inverse_dynamics_cs(dyn, ra.c1[i], ra.s1[i], ra.c2[i], ra.s2[i], vq, aq, tq);
-      v0[i] = vq[0];
-      v1[i] = vq[1];
-      t0[i] = tq[0];
-      t1[i] = tq[1];
-      a0[i] = aq[0];
-      a1[i] = aq[1];
-    }
+    const auto scan = [&](auto gravity) {
+#pragma GCC ivdep
+      for (size_t i = 0; i < n; ++i) {
+        const double sd = sds[i], x = xs[i], u = us[i];
+        const double vq[2] = {ra.dq0[i] * sd, ra.dq1[i] * sd};
+        const double aq[2] = {ra.dq0[i] * u + ra.ddq0[i] * x, ra.dq1[i] * u + ra.ddq1[i] * x};
+        double tq[2];
+        inverse_dynamics_cs_fixed<decltype(gravity)::value>(dyn, ra.c1[i], ra.s1[i], ra.c2[i], ra.s2[i],
+                                                            vq, aq, tq);
+        v0[i] = vq[0];
+        v1[i] = vq[1];
+        t0[i] = tq[0];
+        t1[i] = tq[1];
+        a0[i] = aq[0];
+        a1[i] = aq[1];
+      }
+    };
+    if (dyn.gravity == 0.0)
+      scan(std::false_type{});
+    else
+      scan(std::true_type{});
   }
   for (int kind = 0; kind < kinds; ++kind)
     for (int j = 0; j < nj; ++j) {
