@@ -396,8 +396,16 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
   // path may be a spline), then the rates, torques and uses in loops without branches
   // (in blocks of intervals whose arrays stay in cache)
   constexpr int kBlock = 32;
-  thread_local TipRateArrays ra;
-  thread_local std::vector<double> xs, us, dts, sds, val[3][nj], use[3][nj];
+  thread_local TipRateArrays ra_buffer;
+  thread_local std::vector<double> buffers[4 + 6 * nj];
+  // (plain references: one thread-local address computation per call)
+  TipRateArrays& ra = ra_buffer;
+  std::vector<double>& xs = buffers[0];
+  std::vector<double>& us = buffers[1];
+  std::vector<double>& dts = buffers[2];
+  std::vector<double>& sds = buffers[3];
+  std::vector<double>* val[3] = {buffers + 4, buffers + 4 + nj, buffers + 4 + 2 * nj};
+  std::vector<double>* use[3] = {buffers + 4 + 3 * nj, buffers + 4 + 4 * nj, buffers + 4 + 5 * nj};
   double t_node = 0;
   int index = 0;
   for (int k0 = 0; k0 < K; k0 += kBlock) {
@@ -493,16 +501,20 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
         }
       }
 
+    const double* uses[3][nj];
+    for (int kind = 0; kind < kinds; ++kind)
+      for (int j = 0; j < nj; ++j) uses[kind][j] = use[kind][j].data();
+    const double* dt_at = dts.data();
     for (int k = k0; k < k1; ++k) {
       double t_end = t_node;
       for (int m = (k == 0 ? 0 : 1); m <= per_interval; ++m) {
         const size_t i = static_cast<size_t>(k) * per_interval + m - i0;
-        const double t = t_node + dts[i];
+        const double t = t_node + dt_at[i];
         t_end = t;
         double worst_here = -1;
         for (int kind = 0; kind < kinds; ++kind) {
           for (int j = 0; j < nj; ++j) {
-            const double r = use[kind][j][i];
+            const double r = uses[kind][j][i];
             worst_here = std::max(worst_here, r - 1);
             double& b = best[kind][j];
             if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
