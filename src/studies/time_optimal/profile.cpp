@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
+#include <cstddef>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -417,8 +418,12 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     {
       const PathGeometry& path = problem.path.tip();
       for (int k = k0; k < k1; ++k) {
-        for (int m = (k == 0 ? 0 : 1); m <= per_interval; ++m) {
-          const size_t i = static_cast<size_t>(k) * per_interval + m - i0;
+        const int m0 = k == 0 ? 0 : 1;
+        // point m of interval k at index base + m of the block
+        const std::ptrdiff_t base =
+            static_cast<std::ptrdiff_t>(k) * per_interval - static_cast<std::ptrdiff_t>(i0);
+        for (int m = m0; m <= per_interval; ++m) {
+          const size_t i = static_cast<size_t>(base + m);
           double s;
           const bool left = where(k, m, &s);
           const PathPoint pp = path.at(s, left);
@@ -428,11 +433,22 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
           ra.vy[i] = pp.dp.y();
           ra.ax[i] = pp.ddp.x();
           ra.ay[i] = pp.ddp.y();
-          const LocalState ls = path_acceleration_state(pr, k, static_cast<double>(m) / per_interval);
-          xs[i] = ls.x;
-          us[i] = ls.u;
-          dts[i] = ls.dt;
-          sds[i] = std::sqrt(std::max(0.0, ls.x));
+        }
+        // path_acceleration_state's operations, and s' = sqrt(max(0, x)) = sqrt(x) with
+        // x = max(0, ..), in a loop without branches
+        const double ds = pr.s[k + 1] - pr.s[k];
+        const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
+        const double u = (x1 - x0) / (2 * ds), sd0 = pr.sd[k];
+        for (int m = m0; m <= per_interval; ++m) {
+          const size_t i = static_cast<size_t>(base + m);
+          const double theta = static_cast<double>(m) / per_interval;
+          const double x = std::max(0.0, x0 + theta * (x1 - x0));
+          const double root = std::sqrt(x);
+          const double v = sd0 + root;
+          xs[i] = x;
+          us[i] = u;
+          dts[i] = v > 0 ? 2 * theta * ds / v : 0.0;
+          sds[i] = root;
         }
       }
     }
