@@ -3,7 +3,8 @@
 // for word, on tip paths (line, polyline, spline, acceleration limits, a rotated base with
 // gravity) and on a 3-link joint-space path; the joint points of a tip path equal core's
 // generic chain (forward kinematics, the Jacobian and the generic recursion) to 1e-12 relative,
-// and so do the dense re-check's joint rates without angles (TipRateEvaluator) and its
+// and so do the dense re-check's joint rates without angles (TipRateEvaluator; its loop over
+// arrays gives the point-by-point numbers bitwise) and its
 // closed-form torques; resample gives resample_reference's samples and limit uses bitwise.
 #include <gtest/gtest.h>
 
@@ -246,5 +247,58 @@ TEST(TimeOptimalFastPaths, TipPathJointPointsEqualTheGenericChainTo1e12) {
   }
 }
 
+}  // namespace
+}  // namespace armstudy::studies::time_optimal
+
+namespace armstudy::studies::time_optimal {
+namespace {
+TEST(TimeOptimalFastPaths, TipRatesInArraysAreThePointByPointOnesBitwise) {
+  // the dense re-check's loop over arrays (TipRateEvaluator::at_points) against at_point, on
+  // both elbows, with a point outside the workspace (ok = 0) and one at the straight elbow
+  for (int elbow : {1, 2}) {
+    for (const Problem& pb : problems()) {
+      if (pb.path.joint_space()) continue;
+      const TipRateEvaluator rates(pb.chain, pb.path.tip(), elbow);
+      std::vector<PathPoint> pts;
+      for (int i = 0; i <= 200; ++i) pts.push_back(pb.path.tip().at(pb.path.length() * i / 200));
+      PathPoint far = pts.front();
+      far.p = pb.chain.base + Eigen::Vector2d(5.0, 0.0);  // unreachable
+      pts.push_back(far);
+      PathPoint straight = pts.front();
+      const double reach = pb.chain.links[0].length + pb.chain.links[1].length;
+      straight.p = pb.chain.base + reach * Eigen::Vector2d(std::cos(0.3), std::sin(0.3));  // c2 = 1
+      pts.push_back(straight);
+      TipRateArrays a;
+      a.resize(pts.size());
+      for (size_t i = 0; i < pts.size(); ++i) {
+        a.px[i] = pts[i].p.x();
+        a.py[i] = pts[i].p.y();
+        a.vx[i] = pts[i].dp.x();
+        a.vy[i] = pts[i].dp.y();
+        a.ax[i] = pts[i].ddp.x();
+        a.ay[i] = pts[i].ddp.y();
+      }
+      rates.at_points(pts.size(), &a);
+      int good = 0;
+      for (size_t i = 0; i < pts.size(); ++i) {
+        TipRates r;
+        const bool ok = rates.at_point(pts[i], &r);
+        ASSERT_EQ(ok, a.ok[i] != 0) << i;
+        if (!ok) continue;
+        ++good;
+        EXPECT_EQ(r.dq[0], a.dq0[i]) << i;
+        EXPECT_EQ(r.dq[1], a.dq1[i]) << i;
+        EXPECT_EQ(r.ddq[0], a.ddq0[i]) << i;
+        EXPECT_EQ(r.ddq[1], a.ddq1[i]) << i;
+        EXPECT_EQ(r.c1, a.c1[i]) << i;
+        EXPECT_EQ(r.s1, a.s1[i]) << i;
+        EXPECT_EQ(r.c2, a.c2[i]) << i;
+        EXPECT_EQ(r.s2, a.s2[i]) << i;
+      }
+      EXPECT_EQ(a.ok[pts.size() - 2], 0);  // (the straight elbow's w rounds either way: equal above)
+      EXPECT_GT(good, 150);
+    }
+  }
+}
 }  // namespace
 }  // namespace armstudy::studies::time_optimal

@@ -210,6 +210,62 @@ TipRateEvaluator::TipRateEvaluator(const core::PlanarChain& chain, const PathGeo
   rt_ << cb_, sb_, -sb_, cb_;
 }
 
+void TipRateArrays::resize(size_t n) {
+  for (std::vector<double>* v : {&px, &py, &vx, &vy, &ax, &ay, &dq0, &dq1, &ddq0, &ddq1, &c1, &s1, &c2, &s2})
+    v->resize(n);
+  ok.resize(n);
+}
+
+void TipRateEvaluator::at_points(size_t n, TipRateArrays* a) const {
+  // at_point's operations term by term (Eigen's 2x2 products are r00 x + r01 y)
+  const double r00 = rt_(0, 0), r01 = rt_(0, 1), r10 = rt_(1, 0), r11 = rt_(1, 1);
+  const double bx = base_.x(), by = base_.y();
+  const double L1 = L1_, L2 = L2_, shift = c2_shift_, scale = c2_scale_, inv = inv_l1l2_;
+  const double cb = cb_, sb = sb_, sign = configuration_ == 1 ? 1.0 : -1.0;
+  const double* __restrict px = a->px.data(); const double* __restrict py = a->py.data();
+  const double* __restrict vx = a->vx.data(); const double* __restrict vy = a->vy.data();
+  const double* __restrict ax = a->ax.data(); const double* __restrict ay = a->ay.data();
+  double* __restrict dq0 = a->dq0.data(); double* __restrict dq1 = a->dq1.data();
+  double* __restrict ddq0 = a->ddq0.data(); double* __restrict ddq1 = a->ddq1.data();
+  double* __restrict oc1 = a->c1.data(); double* __restrict os1 = a->s1.data();
+  double* __restrict oc2 = a->c2.data(); double* __restrict os2 = a->s2.data();
+  char* __restrict ok = a->ok.data();
+  // (GCC honours __restrict only on parameters: the arrays are distinct vectors)
+#pragma GCC ivdep
+  for (size_t i = 0; i < n; ++i) {
+    const double dx = px[i] - bx, dy = py[i] - by;
+    const double p0 = r00 * dx + r01 * dy, p1 = r10 * dx + r11 * dy;
+    const double v0 = r00 * vx[i] + r01 * vy[i], v1 = r10 * vx[i] + r11 * vy[i];
+    const double a0 = r00 * ax[i] + r01 * ay[i], a1 = r10 * ax[i] + r11 * ay[i];
+    const double r2 = p0 * p0 + p1 * p1;
+    const double c2 = (r2 - shift) * scale;
+    const double w = (1.0 - c2) * (1.0 + c2);
+    const double ir2 = 1.0 / r2;
+    const double root = std::sqrt(w > 1e-16 ? w : 1.0);  // (ok[i] = 0 where w is replaced)
+    const double s2 = sign * root;
+    const double k1 = L1 + L2 * c2, k2 = L2 * s2;
+    const double c1 = (p0 * k1 + p1 * k2) * ir2, s1 = (p1 * k1 - p0 * k2) * ir2;
+    const double c12 = c1 * c2 - s1 * s2, s12 = s1 * c2 + c1 * s2;
+    const double idet = inv / s2;
+    const double j11 = -L1 * s1 - L2 * s12, j12 = -L2 * s12;
+    const double j21 = L1 * c1 + L2 * c12, j22 = L2 * c12;
+    const double qd1 = (j22 * v0 - j12 * v1) * idet, qd2 = (-j21 * v0 + j11 * v1) * idet;
+    const double w1 = qd1, w12 = qd1 + qd2;
+    const double ex = a0 + L1 * c1 * w1 * w1 + L2 * c12 * w12 * w12;
+    const double ey = a1 + L1 * s1 * w1 * w1 + L2 * s12 * w12 * w12;
+    dq0[i] = qd1;
+    dq1[i] = qd2;
+    ddq0[i] = (j22 * ex - j12 * ey) * idet;
+    ddq1[i] = (-j21 * ex + j11 * ey) * idet;
+    oc1[i] = cb * c1 - sb * s1;
+    os1[i] = sb * c1 + cb * s1;
+    oc2[i] = c2;
+    os2[i] = s2;
+  }
+  // (apart: a byte store or a bool in the loop above keeps it from vectorising)
+  for (size_t i = 0; i < n; ++i) ok[i] = (1.0 - oc2[i]) * (1.0 + oc2[i]) > 1e-16;
+}
+
 std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const PathGeometry& path,
                                       int configuration, double s, bool from_left,
                                       PathTrouble* trouble) {

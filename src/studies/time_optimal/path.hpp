@@ -112,6 +112,15 @@ struct TipRates {
   double c2, s2;         ///< cos q2, sin q2
 };
 
+/// Path points (world frame: p, p', p'') and their TipRates in structure-of-arrays form,
+/// for TipRateEvaluator::at_points; ok[i] = 0 where at_point gives false.
+struct TipRateArrays {
+  std::vector<double> px, py, vx, vy, ax, ay;
+  std::vector<double> dq0, dq1, ddq0, ddq1, c1, s1, c2, s2;
+  std::vector<char> ok;
+  void resize(size_t n);
+};
+
 class TipRateEvaluator {
  public:
   /// @throws std::invalid_argument if the chain does not have 2 links.
@@ -120,6 +129,9 @@ class TipRateEvaluator {
   bool at(double s, bool from_left, TipRates* r) const { return at_point(path_->at(s, from_left), r); }
   /// The same at a point of the path.
   bool at_point(const PathPoint& pp, TipRates* r) const;
+  /// at_point at the first n points of `a` (px..ay in; the rates and ok out): the same
+  /// operations, so the same numbers, in one loop without branches the compiler vectorises.
+  void at_points(size_t n, TipRateArrays* a) const;
 
  private:
   const PathGeometry* path_;

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
+#include <cstddef>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
@@ -390,71 +392,179 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     return r;
   };
 
+  // the scan in structure-of-arrays form: point i = k per_interval + m (m = 1..per_interval,
+  // and m = 0 in the first interval); the path points and local states point by point (the
+  // path may be a spline), then the rates, torques and uses in loops without branches
+  // (in blocks of intervals whose arrays stay in cache)
+  constexpr int kBlock = 32;
+  thread_local TipRateArrays ra_buffer;
+  thread_local std::vector<double> buffers[4 + 6 * nj];
+  // (plain references: one thread-local address computation per call)
+  TipRateArrays& ra = ra_buffer;
+  std::vector<double>& xs = buffers[0];
+  std::vector<double>& us = buffers[1];
+  std::vector<double>& dts = buffers[2];
+  std::vector<double>& sds = buffers[3];
+  std::vector<double>* val[3] = {buffers + 4, buffers + 4 + nj, buffers + 4 + 2 * nj};
+  std::vector<double>* use[3] = {buffers + 4 + 3 * nj, buffers + 4 + 4 * nj, buffers + 4 + 5 * nj};
   double t_node = 0;
   int index = 0;
-  TipRates tr;
-  for (int k = 0; k < K; ++k) {
-    const double ds = pr.s[k + 1] - pr.s[k];
-    double t_end = t_node;
-    for (int m = (k == 0 ? 0 : 1); m <= per_interval; ++m) {
-      const double theta = static_cast<double>(m) / per_interval;
-      double s;
-      const bool left = m == 0 ? false : m == per_interval;
-      s = m == 0 ? pr.s[k] : (m == per_interval ? pr.s[k + 1] : pr.s[k] + theta * ds);
-      if (!rates.at(s, left, &tr)) {
-        // on the edge of the fast path: the reference point's rates
-        JointPoint jp;
-        source.at(s, left, &jp);
-        const double t1 = problem.chain.base_angle + jp.q[0];
-        tr = TipRates{{jp.dq[0], jp.dq[1]}, {jp.ddq[0], jp.ddq[1]}, std::cos(t1), std::sin(t1),
-                      std::cos(jp.q[1]), std::sin(jp.q[1])};
-      }
-      const LocalState ls = path_acceleration_state(pr, k, theta);
-      const double sd = std::sqrt(std::max(0.0, ls.x));
-      const double vq[2] = {tr.dq[0] * sd, tr.dq[1] * sd};
-      const double aq[2] = {tr.dq[0] * ls.u + tr.ddq[0] * ls.x, tr.dq[1] * ls.u + tr.ddq[1] * ls.x};
-      double tq[2];
-      inverse_dynamics_cs(dyn, tr.c1, tr.s1, tr.c2, tr.s2, vq, aq, tq);
-      const double t = t_node + ls.dt;
-      t_end = t;
-      const double* vals[3] = {vq, tq, aq};
-      double worst_here = -1;
-      for (int kind = 0; kind < kinds; ++kind) {
-        for (int j = 0; j < nj; ++j) {
-          const double r = use_ratio(vals[kind][j], lim[kind][j]);
-          worst_here = std::max(worst_here, r - 1);
-          double& b = best[kind][j];
-          if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
-          auto& c = cand[kind][j];
-          if (r > b) {
-            const double floor = r - kRounding * std::max(1.0, r);
-            if (b < floor) {
-              c.clear();  // every earlier candidate is below the new floor
-            } else {
-              c.erase(std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
-                      c.end());
-            }
-            b = r;
-          }
-          c.push_back({k, m, r});
+  for (int k0 = 0; k0 < K; k0 += kBlock) {
+    const int k1 = std::min(K, k0 + kBlock);
+    const size_t i0 = k0 == 0 ? 0 : static_cast<size_t>(k0) * per_interval + 1;
+    const size_t n = static_cast<size_t>(k1) * per_interval + 1 - i0;
+    ra.resize(n);
+    for (std::vector<double>* v : {&xs, &us, &dts, &sds}) v->resize(n);
+    {
+      const PathGeometry& path = problem.path.tip();
+      for (int k = k0; k < k1; ++k) {
+        const int m0 = k == 0 ? 0 : 1;
+        // point m of interval k at index base + m of the block
+        const std::ptrdiff_t base =
+            static_cast<std::ptrdiff_t>(k) * per_interval - static_cast<std::ptrdiff_t>(i0);
+        for (int m = m0; m <= per_interval; ++m) {
+          const size_t i = static_cast<size_t>(base + m);
+          double s;
+          const bool left = where(k, m, &s);
+          const PathPoint pp = path.at(s, left);
+          ra.px[i] = pp.p.x();
+          ra.py[i] = pp.p.y();
+          ra.vx[i] = pp.dp.x();
+          ra.vy[i] = pp.dp.y();
+          ra.ax[i] = pp.ddp.x();
+          ra.ay[i] = pp.ddp.y();
+        }
+        // path_acceleration_state's operations, and s' = sqrt(max(0, x)) = sqrt(x) with
+        // x = max(0, ..), in a loop without branches
+        const double ds = pr.s[k + 1] - pr.s[k];
+        const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
+        const double u = (x1 - x0) / (2 * ds), sd0 = pr.sd[k];
+        for (int m = m0; m <= per_interval; ++m) {
+          const size_t i = static_cast<size_t>(base + m);
+          const double theta = static_cast<double>(m) / per_interval;
+          const double x = std::max(0.0, x0 + theta * (x1 - x0));
+          const double root = std::sqrt(x);
+          const double v = sd0 + root;
+          xs[i] = x;
+          us[i] = u;
+          dts[i] = v > 0 ? 2 * theta * ds / v : 0.0;
+          sds[i] = root;
         }
       }
-      if (interval_worst && worst_here > (*interval_worst)[k]) (*interval_worst)[k] = worst_here;
-      if (index % stride == 0 || (k == K - 1 && m == per_interval)) {
-        const Reference ref = reference(k, m);
-        out->s.push_back(ref.jp.s);
-        out->t.push_back(t);
-        out->sd.push_back(ref.sd);
-        out->sdd.push_back(ref.u);
-        q.push_back(ref.jp.q);
-        qd.push_back(ref.qd);
-        qdd.push_back(ref.qdd);
-        tau.push_back(core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd));
-      }
-      ++index;
     }
-    t_node = t_end;
-    nt[k + 1] = t_node;
+    rates.at_points(n, &ra);
+    for (size_t i = 0; i < n; ++i) {
+      if (ra.ok[i]) continue;
+      // on the edge of the fast path: the reference point's rates
+      const size_t gi = i0 + i;  // (the point's index in the whole profile)
+      const int k = gi == 0 ? 0 : static_cast<int>((gi - 1) / per_interval);
+      const int m = static_cast<int>(gi - static_cast<size_t>(k) * per_interval);
+      double s;
+      const bool left = where(k, m, &s);
+      JointPoint jp;
+      source.at(s, left, &jp);
+      const double t1 = problem.chain.base_angle + jp.q[0];
+      ra.dq0[i] = jp.dq[0];
+      ra.dq1[i] = jp.dq[1];
+      ra.ddq0[i] = jp.ddq[0];
+      ra.ddq1[i] = jp.ddq[1];
+      ra.c1[i] = std::cos(t1);
+      ra.s1[i] = std::sin(t1);
+      ra.c2[i] = std::cos(jp.q[1]);
+      ra.s2[i] = std::sin(jp.q[1]);
+    }
+    for (int kind = 0; kind < 3; ++kind)
+      for (int j = 0; j < nj; ++j) {
+        val[kind][j].resize(n);
+        use[kind][j].resize(n);
+      }
+    {
+      double* __restrict v0 = val[0][0].data(); double* __restrict v1 = val[0][1].data();
+      double* __restrict t0 = val[1][0].data(); double* __restrict t1 = val[1][1].data();
+      double* __restrict a0 = val[2][0].data(); double* __restrict a1 = val[2][1].data();
+      const auto scan = [&](auto gravity) {
+#pragma GCC ivdep
+        for (size_t i = 0; i < n; ++i) {
+          const double sd = sds[i], x = xs[i], u = us[i];
+          const double vq[2] = {ra.dq0[i] * sd, ra.dq1[i] * sd};
+          const double aq[2] = {ra.dq0[i] * u + ra.ddq0[i] * x, ra.dq1[i] * u + ra.ddq1[i] * x};
+          double tq[2];
+          inverse_dynamics_cs_fixed<decltype(gravity)::value>(dyn, ra.c1[i], ra.s1[i], ra.c2[i], ra.s2[i],
+                                                              vq, aq, tq);
+          v0[i] = vq[0];
+          v1[i] = vq[1];
+          t0[i] = tq[0];
+          t1[i] = tq[1];
+          a0[i] = aq[0];
+          a1[i] = aq[1];
+        }
+      };
+      if (dyn.gravity == 0.0)
+        scan(std::false_type{});
+      else
+        scan(std::true_type{});
+    }
+    for (int kind = 0; kind < kinds; ++kind)
+      for (int j = 0; j < nj; ++j) {
+        const double* __restrict v = val[kind][j].data();
+        double* __restrict r = use[kind][j].data();
+        const double L = lim[kind][j];
+        if (L > 0) {
+          for (size_t i = 0; i < n; ++i) r[i] = std::abs(v[i]) / L;
+        } else {
+          for (size_t i = 0; i < n; ++i)
+            r[i] = std::abs(v[i]) > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0;
+        }
+      }
+
+    const double* uses[3][nj];
+    for (int kind = 0; kind < kinds; ++kind)
+      for (int j = 0; j < nj; ++j) uses[kind][j] = use[kind][j].data();
+    const double* dt_at = dts.data();
+    for (int k = k0; k < k1; ++k) {
+      double t_end = t_node;
+      for (int m = (k == 0 ? 0 : 1); m <= per_interval; ++m) {
+        const size_t i = static_cast<size_t>(k) * per_interval + m - i0;
+        const double t = t_node + dt_at[i];
+        t_end = t;
+        double worst_here = -1;
+        for (int kind = 0; kind < kinds; ++kind) {
+          for (int j = 0; j < nj; ++j) {
+            const double r = uses[kind][j][i];
+            worst_here = std::max(worst_here, r - 1);
+            double& b = best[kind][j];
+            if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
+            auto& c = cand[kind][j];
+            if (r > b) {
+              const double floor = r - kRounding * std::max(1.0, r);
+              if (b < floor) {
+                c.clear();  // every earlier candidate is below the new floor
+              } else {
+                c.erase(std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
+                        c.end());
+              }
+              b = r;
+            }
+            c.push_back({k, m, r});
+          }
+        }
+        if (interval_worst && worst_here > (*interval_worst)[k]) (*interval_worst)[k] = worst_here;
+        if (index % stride == 0 || (k == K - 1 && m == per_interval)) {
+          const Reference ref = reference(k, m);
+          out->s.push_back(ref.jp.s);
+          out->t.push_back(t);
+          out->sd.push_back(ref.sd);
+          out->sdd.push_back(ref.u);
+          q.push_back(ref.jp.q);
+          qd.push_back(ref.qd);
+          qdd.push_back(ref.qdd);
+          tau.push_back(core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd));
+        }
+        ++index;
+      }
+      t_node = t_end;
+      nt[k + 1] = t_node;
+    }
   }
   // every candidate again as resample_reference: the first point of each limit's largest
   // use; the overall worst is the first point (then kind, then joint) of the largest use

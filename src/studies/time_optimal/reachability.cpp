@@ -264,7 +264,16 @@ ExactPointCache::ExactPointCache(const Problem& problem) : joints_(problem.limit
 
 const double* ExactPointCache::find(double s, bool from_left) const {
   if (!path_) return nullptr;
-  auto it = std::lower_bound(index_.begin(), index_.end(), s, [](const Entry& e, double v) { return e.s < v; });
+  // a solve asks in increasing s: start after the last answer's place when it lies below s
+  // (every entry up to it does), a few steps on, then the binary search
+  size_t i = hint_ < index_.size() && index_[hint_].s < s ? hint_ + 1 : 0;
+  for (int step = 0; step < 4 && i < index_.size() && index_[i].s < s; ++step) ++i;
+  if (i < index_.size() && index_[i].s < s)
+    i = static_cast<size_t>(std::lower_bound(index_.begin() + i, index_.end(), s,
+                                             [](const Entry& e, double v) { return e.s < v; }) -
+                            index_.begin());
+  hint_ = i;
+  auto it = index_.begin() + static_cast<std::ptrdiff_t>(i);
   for (; it != index_.end() && it->s == s; ++it)
     if (it->from_left == from_left || !path_->joins_pieces(s)) return coef_.data() + it->at;
   return nullptr;

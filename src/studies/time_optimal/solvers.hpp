@@ -24,7 +24,8 @@ struct SolverOutput {
 /// with more check points in some intervals, or on the grid with every interval halved,
 /// evaluates only its new points (the same numbers: a point is found only at the same s,
 /// from the same side unless no two pieces of the path join there). Tip paths only; on a
-/// joint-space path it holds nothing. One cache per Problem, which must outlive it.
+/// joint-space path it holds nothing. One cache per Problem, which must outlive it; one
+/// thread at a time (find remembers where it last looked).
 class ExactPointCache {
  public:
   explicit ExactPointCache(const Problem& problem);
@@ -47,6 +48,7 @@ class ExactPointCache {
   };
   std::vector<Entry> index_, fresh_;  // index_ sorted by s; fresh_ in increasing s
   std::vector<double> coef_;          // stride() numbers per point
+  mutable size_t hint_ = 0;           // where find last looked (one thread at a time)
 };
 
 /// Exact solver on the grid `nodes` (TOPP-RA's reachability analysis, Pham & Pham 2018):

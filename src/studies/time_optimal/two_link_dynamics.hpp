@@ -44,18 +44,29 @@ void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, cons
 
 /// inverse_dynamics from the cosines and sines of link 1's absolute angle (base_angle + q1:
 /// c1, s1) and of q2 (c2, s2) instead of q: the same model, no trigonometric functions.
-inline void inverse_dynamics_cs(const TwoLinkDynamics& d, double c1, double s1, double c2, double s2,
-                                const double qd[2], const double qdd[2], double tau[2]) {
+/// kGravity false: the chain's gravity is 0 (no branch, for loops the compiler vectorises).
+template <bool kGravity>
+inline void inverse_dynamics_cs_fixed(const TwoLinkDynamics& d, double c1, double s1, double c2,
+                                      double s2, const double qd[2], const double qdd[2], double tau[2]) {
   const double g = d.A * c2 - d.B * s2;
   const double gp = -d.A * s2 - d.B * c2;
   const double m11 = d.a11 + 2.0 * g, m12 = d.a12 + g, m22 = d.a22;
   tau[0] = m11 * qdd[0] + m12 * qdd[1] + gp * (2.0 * qd[0] * qd[1] + qd[1] * qd[1]);
   tau[1] = m12 * qdd[0] + m22 * qdd[1] - gp * qd[0] * qd[0];
-  if (d.gravity == 0.0) return;
-  const double c12 = c1 * c2 - s1 * s2, s12 = s1 * c2 + c1 * s2;
-  const double g2 = d.gravity * (c12 * d.X2 - s12 * d.Y2);
-  tau[1] += g2;
-  tau[0] += d.gravity * (c1 * (d.X1 + d.L1 * d.m2) - s1 * d.Y1) + g2;
+  if constexpr (kGravity) {
+    const double c12 = c1 * c2 - s1 * s2, s12 = s1 * c2 + c1 * s2;
+    const double g2 = d.gravity * (c12 * d.X2 - s12 * d.Y2);
+    tau[1] += g2;
+    tau[0] += d.gravity * (c1 * (d.X1 + d.L1 * d.m2) - s1 * d.Y1) + g2;
+  }
+}
+
+inline void inverse_dynamics_cs(const TwoLinkDynamics& d, double c1, double s1, double c2, double s2,
+                                const double qd[2], const double qdd[2], double tau[2]) {
+  if (d.gravity == 0.0)
+    inverse_dynamics_cs_fixed<false>(d, c1, s1, c2, s2, qd, qdd, tau);
+  else
+    inverse_dynamics_cs_fixed<true>(d, c1, s1, c2, s2, qd, qdd, tau);
 }
 
 }  // namespace armstudy::studies::time_optimal
