@@ -13,10 +13,10 @@
 // constraints' parameters and solves).
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <memory>
 #include <vector>
 
@@ -122,8 +122,9 @@ double solve_once(int intervals, double* duration, double* cpu) {
   double T = 0;
   for (int i = 0; i < intervals; ++i) {
     const double ds = d.gridpoints[i + 1] - d.gridpoints[i];
-    T += 2 * ds / (std::sqrt(std::max(0.0, d.parametrization[i])) +
-                   std::sqrt(std::max(0.0, d.parametrization[i + 1])));
+    T += 2 * ds /
+         (std::sqrt(std::max(0.0, d.parametrization[i])) +
+          std::sqrt(std::max(0.0, d.parametrization[i + 1])));
   }
   *duration = T;
   return std::chrono::duration<double, std::milli>(t1 - t0).count();
@@ -143,7 +144,9 @@ int main(int argc, char** argv) {
   }
   std::sort(ms.begin(), ms.end());
   std::sort(cpus.begin(), cpus.end());
-  std::printf("toppra intervals %d duration_s %.12f median_ms %.4f min_ms %.4f cpu_median_ms %.4f repeats %d\n",
-              intervals, T, ms[ms.size() / 2], ms.front(), cpus[cpus.size() / 2], repeats);
+  std::printf(
+      "toppra intervals %d duration_s %.12f median_ms %.4f min_ms %.4f cpu_median_ms %.4f repeats "
+      "%d\n",
+      intervals, T, ms[ms.size() / 2], ms.front(), cpus[cpus.size() / 2], repeats);
   return 0;
 }

@@ -43,9 +43,12 @@ void check_budget(cases::Map& root, const cases::RenderOptions& render) {
     demands.push_back(d);
   }
   for (const cases::Demand& d : demands) {
-    for (const cases::OverBudget& o : cases::over_budget(d, render.frames, render.frame.width, render.frame.height)) {
-      if (o.frames && root.has("render")) root.error("render", o.message);
-      else diag.error(d.mark, o.message);
+    for (const cases::OverBudget& o :
+         cases::over_budget(d, render.frames, render.frame.width, render.frame.height)) {
+      if (o.frames && root.has("render"))
+        root.error("render", o.message);
+      else
+        diag.error(d.mark, o.message);
     }
   }
 }
@@ -69,14 +72,16 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
     // the name is a folder name: keep it portable
     static const std::regex ok("[A-Za-z0-9][A-Za-z0-9._-]{0,99}");
     if (name->size() > 100 || !std::regex_match(*name, ok)) {
-      root.error("name", "'name' is '" + cases::brief(*name) +
-                             "'; expected letters, digits, '.', '_' or '-' (at most 100, no spaces)");
+      root.error("name",
+                 "'name' is '" + cases::brief(*name) +
+                     "'; expected letters, digits, '.', '_' or '-' (at most 100, no spaces)");
     } else {
       out.info.name = *name;
     }
   }
   out.info.description = root.string_or("description", "");
-  if (const auto e = root.choice("expect", {"solved", "unsolvable"})) out.info.expect_unsolvable = *e == "unsolvable";
+  if (const auto e = root.choice("expect", {"solved", "unsolvable"}))
+    out.info.expect_unsolvable = *e == "unsolvable";
   if (auto r = root.map("render")) {
     const cases::RenderOptions defaults;  // each default written once, in RenderOptions
     out.info.render.frame.width = r->integer_or("width", defaults.frame.width, 64, 4096);

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cases/pendulum_case.hpp"
-#include "app/study_entry.hpp"
-#include "report/study_sections.hpp"
-#include "report/results_fields.hpp"
 #include "app/exports_json.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
+#include "app/study_entry.hpp"
+#include "cases/pendulum_case.hpp"
 #include "report/motion_csv.hpp"
+#include "report/results_fields.hpp"
+#include "report/study_sections.hpp"
 #include "scene/model_export.hpp"
 #include "scene/pendulum_frames.hpp"
 #include "studies/pendulum/results_section.hpp"
@@ -25,8 +25,8 @@ constexpr double kDeg = core::kPi / 180.0;
 std::array<double, 2> xy(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
 std::vector<double> vec(const core::JointVector& v) { return {v.data(), v.data() + v.size()}; }
 
-class PendulumRun final
-    : public TypedStudyRun<studies::PendulumSpec, studies::PendulumResult, studies::PendulumResultsSection> {
+class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::PendulumResult,
+                                               studies::PendulumResultsSection> {
  public:
   using TypedStudyRun::TypedStudyRun;
 
@@ -45,9 +45,11 @@ class PendulumRun final
   }
 
   std::vector<KeyFigure> key_figures() const override {
-    return {{"energy_drift_relative", result_.energy_drift_rel, "", "energy drift (share of the energy exchanged)"},
-            {"energy_exchanged_J", result_.energy_scale, "J", "largest kinetic energy"},
-            {"integrator_steps", static_cast<double>(result_.steps_accepted), "", "integrator steps"}};
+    return {
+        {"energy_drift_relative", result_.energy_drift_rel, "",
+         "energy drift (share of the energy exchanged)"},
+        {"energy_exchanged_J", result_.energy_scale, "J", "largest kinetic energy"},
+        {"integrator_steps", static_cast<double>(result_.steps_accepted), "", "integrator steps"}};
   }
 
   studies::PendulumResultsSection section() const override {
@@ -69,7 +71,8 @@ class PendulumRun final
         "inverted)",
         "tray centre of mass, inertia and circle offset are not given for the test rig; "
         "the values used are in the parameters' tray entries"};
-    s.integrator = {r.integrator, r.rtol, r.atol, r.steps_accepted, r.steps_rejected, r.evaluations};
+    s.integrator = {r.integrator,     r.rtol,           r.atol,
+                    r.steps_accepted, r.steps_rejected, r.evaluations};
     auto& se = s.series;
     for (size_t k = 0; k < r.t.size(); ++k) {
       se.t_s.push_back(r.t[k]);
@@ -99,14 +102,15 @@ class PendulumRun final
     const scene::ArmScene sc = scene::pendulum_scene(spec_, result_, info.render);
     const auto keys = scene::pendulum_snapshots(result_);
     const std::string motion = "the pendulum's snapshots (pendulum_snapshots_strip.png)";
-    out.push_back(model_export_entry(scene::write_model_xml(dir, chain, sc.mjcf, keys, motion, info.path),
-                                     motion, keys));
+    out.push_back(model_export_entry(
+        scene::write_model_xml(dir, chain, sc.mjcf, keys, motion, info.path), motion, keys));
     report::MotionCsv t;
     t.file = "motion_pendulum.csv";
-    t.what = "the simulated pendulum (joints 1 and 2 locked, the tray and the ball free; the "
-             "integrator's accepted steps): time, the four joint angles and rates, kinetic, potential "
-             "and total energy, the ball's centre; no joint torques (the locked joints hold still, the "
-             "others are passive) and no motors";
+    t.what =
+        "the simulated pendulum (joints 1 and 2 locked, the tray and the ball free; the "
+        "integrator's accepted steps): time, the four joint angles and rates, kinetic, potential "
+        "and total energy, the ball's centre; no joint torques (the locked joints hold still, the "
+        "others are passive) and no motors";
     t.add("t", "s", result_.t);
     t.add_joints("q", "rad", result_.q);
     t.add_joints("qd", "rad/s", result_.qd);
@@ -140,8 +144,7 @@ std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
 
 StudyEntry pendulum_entry() {
   return study_entry<studies::PendulumResultsSection>(
-      "pendulum",
-      "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
+      "pendulum", "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
       &load, &report::pendulum_sections, &report::pendulum_answer);
 }
 

@@ -27,7 +27,7 @@ namespace armstudy::app {
 struct KeyFigure {
   std::string name;  ///< stable identifier, e.g. "min_energy_J"
   double value = 0;
-  std::string unit;  ///< e.g. "J", "s", "%", "" for none
+  std::string unit;   ///< e.g. "J", "s", "%", "" for none
   std::string label;  ///< what a reader sees, in words, e.g. "lowest energy"; empty: the name
 };
 
@@ -56,7 +56,8 @@ class StudyRun {
   /// Writes the files other tools open into `dir` (model.xml, one motion CSV per solver or
   /// optimiser) and returns results.json's "exports" entry: one object per file naming what
   /// it holds. Called when the study is solved, with or without rendering, before the report.
-  virtual nlohmann::json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) {
+  virtual nlohmann::json write_exports(const std::filesystem::path& dir,
+                                       const cases::CaseInfo& info) {
     return nlohmann::json::array();
   }
 };

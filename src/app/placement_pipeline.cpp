@@ -6,21 +6,20 @@
 #include <cstdio>
 #include <limits>
 
-#include "cases/placement_case.hpp"
-#include "app/study_entry.hpp"
-#include "app/replay_json.hpp"
-#include "report/study_sections.hpp"
-#include "report/results_fields.hpp"
 #include "app/exports_json.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "app/replay_json.hpp"
+#include "app/study_entry.hpp"
+#include "cases/placement_case.hpp"
+#include "core/motion_program.hpp"
 #include "report/motion_csv.hpp"
+#include "report/results_fields.hpp"
+#include "report/study_sections.hpp"
 #include "scene/model_export.hpp"
 #include "scene/placement_frames.hpp"
 #include "scene/replay_frames.hpp"
 #include "scene/study_replays.hpp"
-#include "core/motion_program.hpp"
 #include "studies/placement/refine.hpp"
 #include "studies/placement/results_section.hpp"
 #include "studies/placement/solve.hpp"
@@ -59,9 +58,8 @@ Section::Series series_section(const pl::TimeSeries& s) {
 }
 
 Section::SweepCounts counts_section(const pl::Counts& c) {
-  return {c.total,       c.unreachable,     c.singular,
-          c.over_limit,  c.feasible,        c.thesis_total,
-          c.thesis_rejected, c.exact_outside_thesis};
+  return {c.total,    c.unreachable,  c.singular,        c.over_limit,
+          c.feasible, c.thesis_total, c.thesis_rejected, c.exact_outside_thesis};
 }
 
 std::string prog(core::MotionProgram p) { return std::string(core::program_name(p)); }
@@ -104,7 +102,8 @@ Section::Decision decision_section(const pl::Spec& spec, const pl::Decision& d) 
   if (d.joint >= 0) o.joint = d.joint + 1;
   o.torque_slack_Nm = {d.torque_slack[0], d.torque_slack[1]};
   o.power_slack_W = {d.power_slack[0], d.power_slack[1]};
-  o.set_by_margin = d.binding == pl::Binding::kInnerClearance || d.binding == pl::Binding::kOuterClearance;
+  o.set_by_margin =
+      d.binding == pl::Binding::kInnerClearance || d.binding == pl::Binding::kOuterClearance;
   return o;
 }
 
@@ -126,9 +125,9 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
     for (const scene::PlacementReplay& r : replays_) {
       // check names are [a-z0-9_.]+ (results.schema.json)
       const std::string id = prog(r.program) + "." + std::to_string(r.configuration);
-      c.push_back(scene::replay_check(r.replay, "mujoco_dynamic_replay." + id,
-                                      "the optimum " + prog(r.program) + ", configuration " +
-                                          std::to_string(r.configuration)));
+      c.push_back(scene::replay_check(
+          r.replay, "mujoco_dynamic_replay." + id,
+          "the optimum " + prog(r.program) + ", configuration " + std::to_string(r.configuration)));
     }
     return c;
   }
@@ -148,10 +147,12 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
       k.push_back({"root_y_m" + id, pc.refined.root.y(), "m", "root y" + who});
       best = std::min(best, energy);
     }
-    if (std::isfinite(best)) k.insert(k.begin(), {"min_energy_J", best, "J", "lowest energy (the optimum)"});
+    if (std::isfinite(best))
+      k.insert(k.begin(), {"min_energy_J", best, "J", "lowest energy (the optimum)"});
     if (!result_.cases.empty()) {
       const pl::Counts& c = result_.cases.front().counts;
-      k.push_back({"candidates_clear", double(c.feasible + c.over_limit), "", "candidate lines clear"});
+      k.push_back(
+          {"candidates_clear", double(c.feasible + c.over_limit), "", "candidate lines clear"});
       k.push_back({"candidates_singular", double(c.singular), "", "candidate lines singular"});
     }
     return k;
@@ -159,36 +160,43 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
 
   // model.xml (the least-energy optimum's scene, keyframes at its strip's times) and one
   // CSV per optimum
-  nlohmann::json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
+  nlohmann::json write_exports(const std::filesystem::path& dir,
+                               const cases::CaseInfo& info) override {
     json out = json::array();
     const pl::ProgramConfig* best = nullptr;
     for (const pl::ProgramConfig& pc : result_.cases) {
       if (!pc.found || pc.series.t.size() < 2) continue;
       const bool regular = !pc.refined.convergence.singular();
       if (!best || (regular && (best->refined.convergence.singular() ||
-                                pc.refined.reported_metrics().energy < best->refined.reported_metrics().energy)))
+                                pc.refined.reported_metrics().energy <
+                                    best->refined.reported_metrics().energy)))
         best = &pc;
     }
     if (!best) return out;
     const auto name = [](const pl::ProgramConfig& pc) {
-      return "placement_" + std::string(core::program_name(pc.program)) + "_c" + std::to_string(pc.configuration);
+      return "placement_" + std::string(core::program_name(pc.program)) + "_c" +
+             std::to_string(pc.configuration);
     };
-    const std::string motion = "the " + prog(best->program) + " optimum, configuration " +
-                               std::to_string(best->configuration) + " (" + name(*best) +
-                               "_strip.png, drawn in the line's frame: the arm at its optimal root)";
+    const std::string motion =
+        "the " + prog(best->program) + " optimum, configuration " +
+        std::to_string(best->configuration) + " (" + name(*best) +
+        "_strip.png, drawn in the line's frame: the arm at its optimal root)";
     const scene::ArmScene sc = scene::placement_scene(spec_, *best, info.render);
     const auto keys = scene::strip_keyframes(scene::placement_motion(*best), info.render.frames);
-    out.push_back(model_export_entry(scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path),
-                                     motion, keys));
+    out.push_back(model_export_entry(
+        scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path), motion, keys));
     for (const pl::ProgramConfig& pc : result_.cases) {
       if (!pc.found || pc.series.t.size() < 2) continue;
       const pl::TimeSeries& ser = pc.series;
       report::MotionCsv t;
       t.file = "motion_" + name(pc) + ".csv";
-      t.what = "the refined " + prog(pc.program) + " optimum, configuration " + std::to_string(pc.configuration) +
-               " (results.json placement.optima[].series): time, tip in the arm's frame, joint angles, rates, "
-               "accelerations, torques, signed joint powers and the energy consumed so far (integral of "
-               "|P1| + |P2|); no motors";
+      t.what =
+          "the refined " + prog(pc.program) + " optimum, configuration " +
+          std::to_string(pc.configuration) +
+          " (results.json placement.optima[].series): time, tip in the arm's frame, joint angles, "
+          "rates, "
+          "accelerations, torques, signed joint powers and the energy consumed so far (integral of "
+          "|P1| + |P2|); no motors";
       t.add("t", "s", ser.t);
       t.add_joints("tip_", "m", ser.tip);
       t.columns[t.columns.size() - 2].name = "tip_x";
@@ -208,7 +216,8 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
   // frames: the optimum of every program and configuration (src/scene)
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
-    std::vector<std::string> files = scene::render_placement_frames(spec_, result_, info.render, dir);
+    std::vector<std::string> files =
+        scene::render_placement_frames(spec_, result_, info.render, dir);
     for (auto& f : scene::render_placement_replay(spec_, result_, replays_, info.render, dir))
       files.push_back(std::move(f));
     return files;
@@ -228,14 +237,20 @@ Section PlacementRun::section() const {
   j.samples = spec_.samples;
   j.singularity_margin_m = spec_.singularity_margin;
   j.annulus_m = {r.inner, r.outer};
-  if (spec_.torque_limit) j.torque_limits_Nm = Section::Pair{(*spec_.torque_limit)[0], (*spec_.torque_limit)[1]};
-  if (spec_.power_limit) j.power_limits_W = Section::Pair{(*spec_.power_limit)[0], (*spec_.power_limit)[1]};
+  if (spec_.torque_limit)
+    j.torque_limits_Nm = Section::Pair{(*spec_.torque_limit)[0], (*spec_.torque_limit)[1]};
+  if (spec_.power_limit)
+    j.power_limits_W = Section::Pair{(*spec_.power_limit)[0], (*spec_.power_limit)[1]};
   j.thesis_intervals = {r.thesis_xs_case, r.xs_init, r.xs_fin};
   if (!r.cases.empty()) {
     const pl::Counts& c = r.cases.front().counts;
-    j.geometry_counts = Section::GeometryCounts{c.total,        c.unreachable,     c.singular,
-                                                c.feasible + c.over_limit, c.thesis_total,
-                                                c.thesis_rejected, c.exact_outside_thesis};
+    j.geometry_counts = Section::GeometryCounts{c.total,
+                                                c.unreachable,
+                                                c.singular,
+                                                c.feasible + c.over_limit,
+                                                c.thesis_total,
+                                                c.thesis_rejected,
+                                                c.exact_outside_thesis};
   }
   for (const pl::ProgramConfig& pc : r.cases) {
     const Section::Id id = id_of(pc.program, pc.configuration);
@@ -371,7 +386,8 @@ Section PlacementRun::section() const {
       if (pc.found) mj.optimum_xy_m = pair(pc.refined.root);
       mj.encoding =
           "row j is y_m[j]; energy_J_rows: space-separated energies in J at 4 significant digits, "
-          "'-' where unreachable or the sampled energy is not converged to 1e-4; status_rows: '.' unreachable, 's' singular, 'x' over a limit, "
+          "'-' where unreachable or the sampled energy is not converged to 1e-4; status_rows: '.' "
+          "unreachable, 's' singular, 'x' over a limit, "
           "'o' feasible; Y < 0 is the mirror image with the configurations swapped";
       j.maps.push_back(std::move(mj));
     }

@@ -54,7 +54,8 @@ std::vector<report::FileRecord> list_files(const fs::path& dir, const std::strin
     std::ostringstream ss;
     ss << in.rdbuf();
     const std::string bytes = ss.str();
-    out.push_back({rel.generic_string(), static_cast<long long>(bytes.size()), cases::sha256_hex(bytes)});
+    out.push_back(
+        {rel.generic_string(), static_cast<long long>(bytes.size()), cases::sha256_hex(bytes)});
   }
   return out;
 }

@@ -15,6 +15,7 @@ report::ProvenanceRecord provenance();
 
 /// Every regular file under `dir` (relative path, size, sha256), sorted by path,
 /// except `skip` (relative), e.g. results.json itself.
-std::vector<report::FileRecord> list_files(const std::filesystem::path& dir, const std::string& skip);
+std::vector<report::FileRecord> list_files(const std::filesystem::path& dir,
+                                           const std::string& skip);
 
 }  // namespace armstudy::app

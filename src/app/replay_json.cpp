@@ -17,7 +17,8 @@ studies::ReplaySection replay_section(const scene::DynamicReplay& r) {
   };
   studies::ReplaySection s;
   s.series.t_s = r.t;
-  s.series.deviation_rad = rows([&](size_t k, int j) { return std::abs(r.q_sim[k][j] - r.q_plan[k][j]); });
+  s.series.deviation_rad =
+      rows([&](size_t k, int j) { return std::abs(r.q_sim[k][j] - r.q_plan[k][j]); });
   s.series.q_plan_rad = rows([&](size_t k, int j) { return r.q_plan[k][j]; });
   s.series.q_sim_rad = rows([&](size_t k, int j) { return r.q_sim[k][j]; });
   s.integrator = r.integrator;

@@ -19,10 +19,10 @@
 
 #include "app/json_numbers.hpp"
 #include "app/provenance.hpp"
-#include "scene/osmesa_context.hpp"
-#include "scene/phase_times.hpp"
 #include "report/case_report.hpp"
 #include "report/scratch_dir.hpp"
+#include "scene/osmesa_context.hpp"
+#include "scene/phase_times.hpp"
 #include "version.hpp"
 
 namespace armstudy::app {
@@ -54,7 +54,8 @@ report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Statu
   r.provenance = provenance();
   r.status = status == studies::Status::kSolved ? "solved" : "unsolvable";
   r.message = message;
-  for (const auto& c : checks) r.checks.push_back({c.name, c.description, c.value, c.tolerance, c.passed});
+  for (const auto& c : checks)
+    r.checks.push_back({c.name, c.description, c.value, c.tolerance, c.passed});
   return r;
 }
 
@@ -95,7 +96,8 @@ void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::pa
     if (::rename(target.c_str(), old_slot.c_str()) != 0) {
       e = errno;
       if (e == ENOENT) continue;
-      throw std::runtime_error(report::system_error_text("move the earlier report aside from", target, e));
+      throw std::runtime_error(
+          report::system_error_text("move the earlier report aside from", target, e));
     }
     if (::rename(fresh.c_str(), target.c_str()) != 0) {
       e = errno;
@@ -124,8 +126,8 @@ std::vector<report::AnimationRecord> collect_animations(const fs::path& dir) {
   std::vector<report::AnimationRecord> out;
   for (const fs::path& p : found) {
     std::ifstream in(p);
-    out.push_back(report::from_json<report::AnimationRecord>(nlohmann::json::parse(in),
-                                                             "/animations/" + std::to_string(out.size())));
+    out.push_back(report::from_json<report::AnimationRecord>(
+        nlohmann::json::parse(in), "/animations/" + std::to_string(out.size())));
     in.close();
     fs::remove(p);
   }
@@ -134,7 +136,8 @@ std::vector<report::AnimationRecord> collect_animations(const fs::path& dir) {
 
 }  // namespace
 
-CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress) {
+CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
+                     const studies::ProgressFn& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   CaseOutcome outcome;
   const fs::path final_dir = options.out_dir / c.info.name;
@@ -177,8 +180,8 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     // files other tools open (model.xml, motion CSVs), listed under "files" as well
     std::optional<scene::PhaseScope> exports_phase(std::in_place, "exports");
     if (status == studies::Status::kSolved)
-      r.exports = report::from_json<std::vector<report::ExportRecord>>(c.run->write_exports(tmp_dir, c.info),
-                                                                       "/exports");
+      r.exports = report::from_json<std::vector<report::ExportRecord>>(
+          c.run->write_exports(tmp_dir, c.info), "/exports");
     exports_phase.reset();
     r.animations = collect_animations(tmp_dir);
     if (!r.frames.empty()) {
@@ -186,7 +189,8 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       r.provenance.gl_renderer = gl.renderer;
       r.provenance.gl_version = gl.version;
       if (const size_t at = gl.version.find("Mesa "); at != std::string::npos)
-        r.provenance.mesa_version = gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
+        r.provenance.mesa_version =
+            gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
     }
     nlohmann::json j = report::write_record(r);
     j[c.info.study] = section;
@@ -202,9 +206,11 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
     if (options.printer) {
       // printed in the scratch folder, renamed into the case folder (a failure is printed
       // again, and reported, by finish_reports)
-      const fs::path printed = report::scratch_dir(options.out_dir) / "pdf" / (c.info.name + ".pdf");
+      const fs::path printed =
+          report::scratch_dir(options.out_dir) / "pdf" / (c.info.name + ".pdf");
       fs::create_directories(printed.parent_path());
-      options.printer->add({final_dir / "index.html", printed}, [printed, final_dir](const std::string& error) {
+      options.printer->add({final_dir / "index.html", printed}, [printed, final_dir](
+                                                                    const std::string& error) {
         std::error_code ec;
         if (!error.empty() || ::rename(printed.c_str(), (final_dir / "report.pdf").c_str()) != 0)
           fs::remove(printed, ec);
@@ -217,8 +223,9 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::Pr
       outcome.message = "could not be solved: " + c.run->message();
     } else if (c.info.expect_unsolvable) {
       outcome.exit_code = 1;
-      outcome.message = "solved, but the case expects it to be unsolvable ('expect: unsolvable'): " +
-                        c.run->message();
+      outcome.message =
+          "solved, but the case expects it to be unsolvable ('expect: unsolvable'): " +
+          c.run->message();
     } else if (!checks_ok) {
       outcome.exit_code = 1;
       outcome.message = "failed its checks: " + failed;
@@ -272,7 +279,8 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
       std::fprintf(stderr, "phase-times: pdf: %zu pages %.3f s\n", prints.size(),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count());
     for (size_t i = 0; i < todo.size(); ++i) {
-      if (failed[i].empty() && ::rename(prints[i].pdf.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
+      if (failed[i].empty() &&
+          ::rename(prints[i].pdf.c_str(), (todo[i] / "report.pdf").c_str()) != 0) {
         const int e = errno;
         std::error_code ec;
         fs::remove(prints[i].pdf, ec);

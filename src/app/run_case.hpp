@@ -36,15 +36,15 @@ struct CaseOutcome {
 
 /// Solves, renders and reports `c` into out_dir/<name>/: the output is built in this
 /// process's scratch folder in out_dir and swapped into place only when complete, so a
-/// failure or a kill leaves an earlier report untouched and writes nothing half-done. An unsolvable study
-/// still gets its results.json (status "unsolvable") so CI can read why.
+/// failure or a kill leaves an earlier report untouched and writes nothing half-done. An unsolvable
+/// study still gets its results.json (status "unsolvable") so CI can read why.
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options, const studies::ProgressFn& progress);
 
 /// The fields of results.json every study shares (version, study, case, status, checks);
 /// run_case adds the rest (key figures, frames, exports, animations, files).
 report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Status status,
-                              const std::string& message,
-                              const std::vector<studies::Check>& checks);
+                                     const std::string& message,
+                                     const std::vector<studies::Check>& checks);
 
 /// After every case of a run: with options.pdf, prints each case report in out_dir that has
 /// no report.pdf at least as new as its index.html (headless Chromium, up to `jobs` at a

@@ -33,8 +33,8 @@ StudyEntry study_entry(std::string_view study, std::string_view summary, StudyEn
   static const std::string name(study);
   return StudyEntry(
       study, summary, load, [] { return report::json_schema<Section>(); },
-      [](const nlohmann::json& results) { (void)report::read_section<Section>(results, name); }, report,
-      answer, index_figure);
+      [](const nlohmann::json& results) { (void)report::read_section<Section>(results, name); },
+      report, answer, index_figure);
 }
 
 }  // namespace armstudy::app

@@ -6,14 +6,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cases/throwing_case.hpp"
-#include "app/study_entry.hpp"
-#include "report/study_sections.hpp"
-#include "report/results_fields.hpp"
 #include "app/exports_json.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
+#include "app/study_entry.hpp"
+#include "cases/throwing_case.hpp"
 #include "report/motion_csv.hpp"
+#include "report/results_fields.hpp"
+#include "report/study_sections.hpp"
 #include "scene/model_export.hpp"
 #include "scene/throwing_frames.hpp"
 #include "studies/throwing/results_section.hpp"
@@ -52,17 +52,20 @@ Section::Worst worst_of(const std::array<double, st::kConstraintKinds>& w) {
 }
 
 // constraints within twice the back-off of their limit: the ones that bound the optimum
-std::vector<std::string> binding_of(const std::array<double, st::kConstraintKinds>& w, double backoff) {
+std::vector<std::string> binding_of(const std::array<double, st::kConstraintKinds>& w,
+                                    double backoff) {
   std::vector<std::string> b;
   for (int c = 0; c < st::kConstraintKinds; ++c)
-    if (w[c] >= -2 * backoff - 1e-9) b.push_back(st::constraint_name(static_cast<st::ConstraintKind>(c)));
+    if (w[c] >= -2 * backoff - 1e-9)
+      b.push_back(st::constraint_name(static_cast<st::ConstraintKind>(c)));
   return b;
 }
 
 // the motor rating nearest its limit, "(not binding)" when it is not within twice the back-off
 std::string binding_rating(const std::array<double, st::kConstraintKinds>& w, double backoff) {
   int best = static_cast<int>(st::ConstraintKind::kVoltage);
-  for (int c : {static_cast<int>(st::ConstraintKind::kCurrent), static_cast<int>(st::ConstraintKind::kPower)})
+  for (int c : {static_cast<int>(st::ConstraintKind::kCurrent),
+                static_cast<int>(st::ConstraintKind::kPower)})
     if (w[c] > w[best]) best = c;
   return std::string(st::constraint_name(static_cast<st::ConstraintKind>(best))) +
          (w[best] >= -2 * backoff - 1e-9 ? "" : " (nearest; not binding)");
@@ -82,7 +85,8 @@ Section::Motion motion_of(const st::ThrowingSpec& sp, const st::ThrowMotion& m) 
   j.worst_normalised = worst_of(m.worst);
   j.margins = margins_of(sp, e);
   j.release_error = {arr(m.angle_error), arr(m.rate_error)};
-  j.energy_split = {m.split.electrical, m.split.mechanical, m.split.copper, m.split.friction, m.split.rest};
+  j.energy_split = {m.split.electrical, m.split.mechanical, m.split.copper, m.split.friction,
+                    m.split.rest};
   for (int k = 0; k <= m.profile.stages(); ++k) {
     j.profile.t_s.push_back(k * m.profile.stage_length());
     j.profile.rate_rad_s.push_back(arr(Eigen::Vector2d(m.profile.v.col(k))));
@@ -102,7 +106,8 @@ Section::Motion motion_of(const st::ThrowingSpec& sp, const st::ThrowMotion& m) 
     o.normal_force_N.push_back(s.normal_force[k]);
     o.tangential_force_N.push_back(s.tangential_force[k]);
     // friction needed to roll, |F_t| / N (null where the tray does not push the ball)
-    o.friction_needed.push_back(s.normal_force[k] > 0 ? std::abs(s.tangential_force[k]) / s.normal_force[k] : NAN);
+    o.friction_needed.push_back(
+        s.normal_force[k] > 0 ? std::abs(s.tangential_force[k]) / s.normal_force[k] : NAN);
   }
   // the stage of each sample: the end sample of a stage repeats its time
   int stg = 0;
@@ -131,41 +136,66 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     // every reported optimum, re-simulated with finer steps, against every constraint
     auto verify = [&](const std::string& who, const std::string& label, const st::Verification& v) {
       const auto& e = v.evaluation;
-      c.push_back(st::make_check(who + "_contact", label + " at " + fine + ": contact margin minus the "
-                                 "smallest normal force of the tray on the ball (N)",
+      c.push_back(st::make_check(who + "_contact",
+                                 label + " at " + fine +
+                                     ": contact margin minus the "
+                                     "smallest normal force of the tray on the ball (N)",
                                  sp.contact_margin - e.min_normal_force, 0.0));
-      c.push_back(st::make_check(who + "_friction", label + " at " + fine + ": largest friction "
-                                 "needed to roll, |F_t| / N, against the friction coefficient",
+      c.push_back(st::make_check(who + "_friction",
+                                 label + " at " + fine +
+                                     ": largest friction "
+                                     "needed to roll, |F_t| / N, against the friction coefficient",
                                  e.max_friction_ratio, sp.friction_coefficient));
-      c.push_back(st::make_check(who + "_ball_in_tray", label + " at " + fine + ": largest |theta4| "
-                                 "(rad) against lambda/2", e.max_abs_theta4, sp.tray_width / 2));
-      c.push_back(st::make_check(who + "_voltage", label + " at " + fine + ": largest |motor "
-                                 "voltage| (V)", e.max_voltage, sp.voltage_max));
-      c.push_back(st::make_check(who + "_current", label + " at " + fine + ": largest |motor "
-                                 "current| (A)", e.max_current, sp.current_max));
-      c.push_back(st::make_check(who + "_power", label + " at " + fine + ": largest |motor power "
-                                 "e i| (W)", e.max_power, sp.power_max));
-      c.push_back(st::make_check(who + "_release_theta3", label + " at " + fine + ": |theta3(tf) - "
-                                 "release theta3| (rad)", v.release_error, sp.release_tolerance));
+      c.push_back(st::make_check(who + "_ball_in_tray",
+                                 label + " at " + fine +
+                                     ": largest |theta4| "
+                                     "(rad) against lambda/2",
+                                 e.max_abs_theta4, sp.tray_width / 2));
+      c.push_back(st::make_check(who + "_voltage",
+                                 label + " at " + fine +
+                                     ": largest |motor "
+                                     "voltage| (V)",
+                                 e.max_voltage, sp.voltage_max));
+      c.push_back(st::make_check(who + "_current",
+                                 label + " at " + fine +
+                                     ": largest |motor "
+                                     "current| (A)",
+                                 e.max_current, sp.current_max));
+      c.push_back(st::make_check(who + "_power",
+                                 label + " at " + fine +
+                                     ": largest |motor power "
+                                     "e i| (W)",
+                                 e.max_power, sp.power_max));
+      c.push_back(st::make_check(who + "_release_theta3",
+                                 label + " at " + fine +
+                                     ": |theta3(tf) - "
+                                     "release theta3| (rad)",
+                                 v.release_error, sp.release_tolerance));
     };
     auto converged = [&](const std::string& who, const std::string& what, bool ok) {
-      c.push_back(st::make_check(who + "_converged",
-                                 what + (sp.allow_not_converged ? " (the case allows a run that "
-                                         "is not converged: checks.allow_not_converged)" : "") +
-                                     ": 0 converged, 1 not",
-                                 ok ? 0.0 : 1.0, sp.allow_not_converged ? 1.0 : 0.0));
+      c.push_back(st::make_check(
+          who + "_converged",
+          what +
+              (sp.allow_not_converged ? " (the case allows a run that "
+                                        "is not converged: checks.allow_not_converged)"
+                                      : "") +
+              ": 0 converged, 1 not",
+          ok ? 0.0 : 1.0, sp.allow_not_converged ? 1.0 : 0.0));
     };
-    c.push_back(st::make_check("reference_feasible",
-                               "the reference the saving is measured from (" + r.reference_kind +
-                               ") meets every constraint: its total violation",
-                               r.reference.evaluation.finite ? r.reference.evaluation.violation : INFINITY, 0.0));
+    c.push_back(st::make_check(
+        "reference_feasible",
+        "the reference the saving is measured from (" + r.reference_kind +
+            ") meets every constraint: its total violation",
+        r.reference.evaluation.finite ? r.reference.evaluation.violation : INFINITY, 0.0));
     verify("idp", "IDP optimum", r.idp_check);
-    converged("idp", "every IDP seed stopped on its tolerance (relative gain of a pass < " +
-                         std::to_string(sp.idp.tolerance) + ", " + std::to_string(sp.idp.quiet_passes) +
-                         " passes in a row) before its budget", r.idp_converged);
-    c.push_back(st::make_check("idp_energy_below_reference",
-                               "IDP optimum's energy (J) below the reference's",
-                               r.idp.evaluation.energy, r.reference.evaluation.energy * (1 + 1e-12)));
+    converged("idp",
+              "every IDP seed stopped on its tolerance (relative gain of a pass < " +
+                  std::to_string(sp.idp.tolerance) + ", " + std::to_string(sp.idp.quiet_passes) +
+                  " passes in a row) before its budget",
+              r.idp_converged);
+    c.push_back(st::make_check(
+        "idp_energy_below_reference", "IDP optimum's energy (J) below the reference's",
+        r.idp.evaluation.energy, r.reference.evaluation.energy * (1 + 1e-12)));
     if (r.nlopt_ran) {
       verify("slsqp", "SLSQP optimum", r.nlopt_check);
       converged("slsqp", "SLSQP stopped on ftol_rel/xtol_rel at a feasible point before its budget",
@@ -186,7 +216,8 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     const auto& r = result_;
     std::vector<KeyFigure> k = {
         {"energy_eq8_J", r.initial.evaluation.energy, "J", "energy of the eq. 8 start"},
-        {"energy_reference_J", r.reference.evaluation.energy, "J", "energy of the feasible reference"},
+        {"energy_reference_J", r.reference.evaluation.energy, "J",
+         "energy of the feasible reference"},
         {"energy_idp_J", r.idp.evaluation.energy, "J", "energy of the IDP optimum"},
         {"saving_percent", r.saving_percent, "%", "IDP saving against the reference"},
         {"idp_run_time_s", r.idp_time, "s", "IDP run time"},
@@ -200,10 +231,14 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
       }
       k.push_back({"idp_seed_spread_J", hi - lo, "J", "spread of the IDP seeds"});
     }
-    if (r.nlopt_ran) k.push_back({"energy_slsqp_J", r.nlopt.evaluation.energy, "J", "energy of the SLSQP optimum"});
-    if (r.flight.reaches) k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x of IDP's throw"});
+    if (r.nlopt_ran)
+      k.push_back(
+          {"energy_slsqp_J", r.nlopt.evaluation.energy, "J", "energy of the SLSQP optimum"});
+    if (r.flight.reaches)
+      k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x of IDP's throw"});
     if (r.nlopt_flight.reaches)
-      k.push_back({"landing_slsqp_x_m", r.nlopt_flight.landing.x(), "m", "landing point x of SLSQP's throw"});
+      k.push_back({"landing_slsqp_x_m", r.nlopt_flight.landing.x(), "m",
+                   "landing point x of SLSQP's throw"});
     return k;
   }
 
@@ -217,10 +252,16 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     p.link2 = {a.l2, a.m2, a.r2, a.I2};
     p.tray = {a.circle_offset, a.m3, a.r3, a.r3_lateral, a.I3, spec_.tray_width / kDeg};
     p.ball = {a.m4, a.r4, a.rb, a.Ib};
-    p.motors = {spec_.motor.kt, spec_.motor.kv, spec_.motor.Ra, spec_.motor.Dm, spec_.motor.tau_f,
-                a.rotor_inertia, a.motor2 == st::Motor2Mount::kOnBase ? "on_base" : "on_link1",
+    p.motors = {spec_.motor.kt,
+                spec_.motor.kv,
+                spec_.motor.Ra,
+                spec_.motor.Dm,
+                spec_.motor.tau_f,
+                a.rotor_inertia,
+                a.motor2 == st::Motor2Mount::kOnBase ? "on_base" : "on_link1",
                 spec_.count_regeneration};
-    p.task = {{spec_.start[0] / kDeg, spec_.start[1] / kDeg, spec_.theta3_start / kDeg, spec_.theta4_start / kDeg},
+    p.task = {{spec_.start[0] / kDeg, spec_.start[1] / kDeg, spec_.theta3_start / kDeg,
+               spec_.theta4_start / kDeg},
               {spec_.release[0] / kDeg, spec_.release[1] / kDeg, spec_.theta3_release / kDeg},
               {spec_.release_rate[0], spec_.release_rate[1]},
               spec_.tf,
@@ -229,7 +270,8 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
         "model derived from first principles (docs/derivations/throwing.md): ball spin = "
         "tray rate - (r4/r_b) "
         "theta4'; eq. 3's spin term and a5 as printed are wrong",
-        "the centre of the ball's circle lies at the tray's circle offset from its hinge (Table 1's l3 "
+        "the centre of the ball's circle lies at the tray's circle offset from its hinge (Table "
+        "1's l3 "
         "by default)",
         "ball inertia 2/5 m r_b^2 unless given (equals Table 1's 4.8e-7 kg m^2)",
         "motor 2 drives theta2 (on_link1, eq. 5 as printed) unless motor2: on_base",
@@ -238,26 +280,30 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
         "energy = eq. 7 (signed e i: regeneration counted) unless the case counts only e i > 0",
         "theta3 at release is a constraint (within the release tolerance), reached through the "
         "passive dynamics"};
-    j.assumptions = {
-        {"tray's angular width lambda (eq. 9): the ball stays within +-lambda/2",
-         spec_.tray_width / kDeg, "deg", "tray.width_deg"},
-        {"friction coefficient between ball and tray (rolling needs |F_t| <= mu N)",
-         spec_.friction_coefficient, "", "constraints.friction_coefficient"},
-        {"contact margin: the tray's normal force on the ball stays above it",
-         spec_.contact_margin, "N", "constraints.contact_margin_N"},
-        {"current limit of each motor (not in Table 1)", spec_.current_max, "A", "motors.current_max_A"},
-        {"Table 1's 60 W rating read as a limit on |e i| of each motor", spec_.power_max, "W",
-         "motors.power_max_W"},
-        {"Table 1's 24 V rating read as a limit on |e|", spec_.voltage_max, "V", "motors.voltage_max_V"},
-        {"release tolerance of the passive tray angle theta3", spec_.release_tolerance / kDeg, "deg",
-         "constraints.release_tolerance_deg"},
-        {"constraint back-off of both optimisers (normalised)", spec_.backoff, "", "constraints.backoff"},
-        {"rotor inertia of each motor (not in Table 1)", a.rotor_inertia, "kg m^2",
-         "motors.rotor_inertia_kg_m2"},
-        {"centre of the ball's circle from the tray hinge", a.circle_offset, "m", "tray.circle_offset_m"}};
-    j.limits = {spec_.voltage_max, spec_.current_max, spec_.power_max,
-                {-spec_.tray_width / 2, spec_.tray_width / 2},
-                spec_.contact_margin, spec_.friction_coefficient, spec_.release_tolerance, spec_.backoff};
+    j.assumptions = {{"tray's angular width lambda (eq. 9): the ball stays within +-lambda/2",
+                      spec_.tray_width / kDeg, "deg", "tray.width_deg"},
+                     {"friction coefficient between ball and tray (rolling needs |F_t| <= mu N)",
+                      spec_.friction_coefficient, "", "constraints.friction_coefficient"},
+                     {"contact margin: the tray's normal force on the ball stays above it",
+                      spec_.contact_margin, "N", "constraints.contact_margin_N"},
+                     {"current limit of each motor (not in Table 1)", spec_.current_max, "A",
+                      "motors.current_max_A"},
+                     {"Table 1's 60 W rating read as a limit on |e i| of each motor",
+                      spec_.power_max, "W", "motors.power_max_W"},
+                     {"Table 1's 24 V rating read as a limit on |e|", spec_.voltage_max, "V",
+                      "motors.voltage_max_V"},
+                     {"release tolerance of the passive tray angle theta3",
+                      spec_.release_tolerance / kDeg, "deg", "constraints.release_tolerance_deg"},
+                     {"constraint back-off of both optimisers (normalised)", spec_.backoff, "",
+                      "constraints.backoff"},
+                     {"rotor inertia of each motor (not in Table 1)", a.rotor_inertia, "kg m^2",
+                      "motors.rotor_inertia_kg_m2"},
+                     {"centre of the ball's circle from the tray hinge", a.circle_offset, "m",
+                      "tray.circle_offset_m"}};
+    j.limits = {spec_.voltage_max,       spec_.current_max,
+                spec_.power_max,         {-spec_.tray_width / 2, spec_.tray_width / 2},
+                spec_.contact_margin,    spec_.friction_coefficient,
+                spec_.release_tolerance, spec_.backoff};
     j.energy_initial_J = r.initial.evaluation.energy;
     j.energy_reference_J = r.reference.evaluation.energy;
     j.energy_optimised_J = r.idp.evaluation.energy;
@@ -268,8 +314,9 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     {
       const Section::Margins mg = margins_of(spec_, r.initial.evaluation);
       const char* units[st::kConstraintKinds] = {"N", "", "rad", "V", "A", "W", "rad"};
-      const double margins[st::kConstraintKinds] = {mg.contact_N, mg.friction, mg.tray_rad, mg.voltage_V,
-                                                    mg.current_A, mg.power_W, mg.release_rad};
+      const double margins[st::kConstraintKinds] = {mg.contact_N,  mg.friction,  mg.tray_rad,
+                                                    mg.voltage_V,  mg.current_A, mg.power_W,
+                                                    mg.release_rad};
       for (int c = 0; c < st::kConstraintKinds; ++c)
         if (r.initial.worst[c] > 0)
           o.reference.raw_breaks.push_back({st::constraint_name(static_cast<st::ConstraintKind>(c)),
@@ -282,8 +329,12 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
             "(aimed at twice the back-off inside every limit) until it is 0 "
             "or stops on its tolerance; the reference must then meet every "
             "constraint with the back-off",
-            r.repair_run.return_code, r.repair_run.converged, r.repair_run.feasible,
-            r.repair_run.iterations, r.repair_run.simulations, r.repair_run.run_time,
+            r.repair_run.return_code,
+            r.repair_run.converged,
+            r.repair_run.feasible,
+            r.repair_run.iterations,
+            r.repair_run.simulations,
+            r.repair_run.run_time,
             r.repair_run.rate_change};
     }
     o.initial = motion_of(spec_, r.initial);
@@ -291,8 +342,8 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     o.optimum = motion_of(spec_, r.idp);
     Section::Idp& idp = o.idp;
     for (const auto& h : r.idp_run.history)
-      idp.convergence.push_back({h.iteration, h.pass, h.energy, h.violation, arr(h.region), h.evaluations,
-                                 h.improvements});
+      idp.convergence.push_back({h.iteration, h.pass, h.energy, h.violation, arr(h.region),
+                                 h.evaluations, h.improvements});
     const auto& is = spec_.idp;
     std::vector<double> es;
     long evaluations = 0;
@@ -303,7 +354,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
       evaluations += sd.evaluations;
     }
     std::sort(es.begin(), es.end());
-    const double median = es.empty() ? NAN
+    const double median = es.empty()      ? NAN
                           : es.size() % 2 ? es[es.size() / 2]
                                           : 0.5 * (es[es.size() / 2 - 1] + es[es.size() / 2]);
     idp.stages = spec_.stages;
@@ -331,7 +382,8 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     if (r.nlopt_ran) {
       Section::NloptRun& nl = o.nlopt.run.emplace();
       nl.history_J = r.nlopt_run.history;
-      nl.algorithm = "NLopt LD_SLSQP, central-difference gradients, same parameterisation and constraints";
+      nl.algorithm =
+          "NLopt LD_SLSQP, central-difference gradients, same parameterisation and constraints";
       nl.return_code = r.nlopt_run.return_code;
       nl.converged = r.nlopt_run.converged;
       nl.feasible = r.nlopt_run.feasible;
@@ -348,13 +400,21 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     // one table of the optimisers on equal terms (margins from the finer re-simulation)
     auto row = [&](const std::string& name, const st::ThrowMotion& m, const st::Verification& v,
                    bool conv, long sims, double time) {
-      return Section::Comparison{name, m.evaluation.energy, m.split.mechanical, m.split.copper,
-                                 m.split.friction, conv, sims, time, v.feasible,
-                                 margins_of(spec_, v.evaluation), binding_of(v.worst, spec_.backoff),
+      return Section::Comparison{name,
+                                 m.evaluation.energy,
+                                 m.split.mechanical,
+                                 m.split.copper,
+                                 m.split.friction,
+                                 conv,
+                                 sims,
+                                 time,
+                                 v.feasible,
+                                 margins_of(spec_, v.evaluation),
+                                 binding_of(v.worst, spec_.backoff),
                                  binding_rating(v.worst, spec_.backoff)};
     };
-    o.comparison.push_back(row("IDP (best of " + std::to_string(r.idp_seeds.size()) + " seeds)", r.idp,
-                               r.idp_check, r.idp_converged, evaluations, r.idp_time));
+    o.comparison.push_back(row("IDP (best of " + std::to_string(r.idp_seeds.size()) + " seeds)",
+                               r.idp, r.idp_check, r.idp_converged, evaluations, r.idp_time));
     if (r.nlopt_ran)
       o.comparison.push_back(row("SLSQP", r.nlopt, r.nlopt_check, r.nlopt_run.converged,
                                  r.nlopt_run.simulations, r.nlopt_run.run_time));
@@ -362,8 +422,9 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     o.verification.idp = {r.idp_check.feasible, margins_of(spec_, r.idp_check.evaluation),
                           worst_of(r.idp_check.worst)};
     if (r.nlopt_ran)
-      o.verification.nlopt = Section::Verified{r.nlopt_check.feasible, margins_of(spec_, r.nlopt_check.evaluation),
-                                               worst_of(r.nlopt_check.worst)};
+      o.verification.nlopt =
+          Section::Verified{r.nlopt_check.feasible, margins_of(spec_, r.nlopt_check.evaluation),
+                            worst_of(r.nlopt_check.worst)};
     o.release = {spec_.tf, arr(r.flight.release_position), arr(r.flight.release_velocity)};
     Section::Flight& fl = o.flight;
     for (size_t k = 0; k < r.flight.path.size(); ++k) {
@@ -381,11 +442,15 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     }
     o.replay.max_error_rad = r.replay_error;
     o.replay.tolerance_rad = spec_.replay_tolerance;
-    o.replay.integrator = "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
-                          "with 16x the RK4 steps, linear between its samples within a stage; "
-                          "error against that plan; coulomb sign smoothed by tanh(qd / 1e-4 rad/s)";
-    o.integration = {"classical RK4, fixed step, steps aligned with the stages", spec_.steps_per_stage,
-                     spec_.tf / spec_.stages / spec_.steps_per_stage, 16, r.rk4_energy_error,
+    o.replay.integrator =
+        "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
+        "with 16x the RK4 steps, linear between its samples within a stage; "
+        "error against that plan; coulomb sign smoothed by tanh(qd / 1e-4 rad/s)";
+    o.integration = {"classical RK4, fixed step, steps aligned with the stages",
+                     spec_.steps_per_stage,
+                     spec_.tf / spec_.stages / spec_.steps_per_stage,
+                     16,
+                     r.rk4_energy_error,
                      r.rk4_theta3_error};
     o.run_time_s = r.run_time;
     return j;
@@ -396,25 +461,30 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     json out = json::array();
     if (result_.status != st::Status::kSolved || result_.idp.series.t.size() < 2) return out;
     const scene::ArmScene sc = scene::throwing_scene(spec_, result_, info.render);
-    const auto keys = scene::strip_keyframes(scene::throwing_motion(result_.idp.series), info.render.frames);
+    const auto keys =
+        scene::strip_keyframes(scene::throwing_motion(result_.idp.series), info.render.frames);
     const std::string motion = "the IDP optimum (throwing_idp_strip.png)";
-    out.push_back(model_export_entry(scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path),
-                                     motion, keys));
-    const auto csv = [&](const st::ThrowMotion& tm, const std::string& name, const std::string& what) {
+    out.push_back(model_export_entry(
+        scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path), motion, keys));
+    const auto csv = [&](const st::ThrowMotion& tm, const std::string& name,
+                         const std::string& what) {
       const st::ThrowSeries& s = tm.series;
       if (s.t.size() < 2) return;
       const size_t n = s.t.size();
       report::MotionCsv t;
       t.file = "motion_" + name + ".csv";
-      t.what = what + ": time, the four joint angles, rates and accelerations, the two motors' torques, "
-                      "voltages, currents and electrical powers, the energy consumed so far, the ball's centre "
-                      "and the tray's normal and tangential force on it (a stage boundary appears twice, once "
-                      "per stage)";
+      t.what =
+          what +
+          ": time, the four joint angles, rates and accelerations, the two motors' torques, "
+          "voltages, currents and electrical powers, the energy consumed so far, the ball's centre "
+          "and the tray's normal and tangential force on it (a stage boundary appears twice, once "
+          "per stage)";
       t.add("t", "s", s.t);
       t.add_joints("q", "rad", s.q);
       t.add_joints("qd", "rad/s", s.qd);
       if (s.qdd.size() == n) t.add_joints("qdd", "rad/s^2", s.qdd);
-      const auto motors = [&](const std::vector<Eigen::Vector2d>& v, const std::string& col, const std::string& unit) {
+      const auto motors = [&](const std::vector<Eigen::Vector2d>& v, const std::string& col,
+                              const std::string& unit) {
         if (v.size() == n) t.add_joints(col, unit, v);
       };
       motors(s.tau_m, "motor_torque", "N m");
@@ -433,7 +503,8 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
       out.push_back(csv_export_entry(t, name));
     };
     csv(result_.idp, "idp", "the IDP optimum (iterative dynamic programming, the best seed)");
-    csv(result_.reference, "reference", "the feasible reference motion the saving is measured from");
+    csv(result_.reference, "reference",
+        "the feasible reference motion the saving is measured from");
     csv(result_.initial, "initial", "the initial motion (eq. 8 profile, raw)");
     if (result_.nlopt_ran) csv(result_.nlopt, "nlopt", "SLSQP's answer (its final point)");
     return out;

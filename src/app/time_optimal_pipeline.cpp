@@ -6,16 +6,15 @@
 #include <limits>
 #include <optional>
 
-#include "cases/time_optimal_case.hpp"
-#include "app/study_entry.hpp"
-#include "app/replay_json.hpp"
-#include "report/study_sections.hpp"
-#include "report/results_fields.hpp"
+#include "app/exports_json.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
-#include "app/exports_json.hpp"
 #include "app/replay_json.hpp"
+#include "app/study_entry.hpp"
+#include "cases/time_optimal_case.hpp"
 #include "report/motion_csv.hpp"
+#include "report/results_fields.hpp"
+#include "report/study_sections.hpp"
 #include "scene/model_export.hpp"
 #include "scene/mujoco_check.hpp"
 #include "scene/replay_frames.hpp"
@@ -89,7 +88,8 @@ Section::Solver solver_section(const to::SolverResult& r, int nj) {
   o.node_sd = r.node_sd;
   o.node_t_s = r.node_t;
   const to::MotionSamples& s = r.samples;
-  o.samples = Section::Samples{s.t, s.s, s.sd, s.sdd, rows(s.q), rows(s.qd), rows(s.qdd), rows(s.tau)};
+  o.samples =
+      Section::Samples{s.t, s.s, s.sd, s.sdd, rows(s.q), rows(s.qd), rows(s.qdd), rows(s.tau)};
   return o;
 }
 
@@ -119,9 +119,11 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
       qdd.emplace_back(s.qdd.col(k));
       tau.emplace_back(s.tau.col(k));
     }
-    for (auto& m : scene::mujoco_checks(scene::mujoco_agreement(spec_.chain, q, qd, qdd, tau), false))
+    for (auto& m :
+         scene::mujoco_checks(scene::mujoco_agreement(spec_.chain, q, qd, qdd, tau), false))
       c.push_back(std::move(m));
-    if (replay_) c.push_back(scene::replay_check(*replay_, "mujoco_dynamic_replay", "the exact solution"));
+    if (replay_)
+      c.push_back(scene::replay_check(*replay_, "mujoco_dynamic_replay", "the exact solution"));
     return c;
   }
 
@@ -135,26 +137,34 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
     for (const auto& r : result_.solvers) {
       if (r.name == "exact" || !r.solved) continue;
       k.push_back({"duration_s[" + r.name + "]", r.duration, "s", "duration (" + r.words() + ")"});
-      k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%", "excess over exact (" + r.words() + ")"});
+      k.push_back({"excess_percent[" + r.name + "]", 100.0 * (r.duration / exact - 1), "%",
+                   "excess over exact (" + r.words() + ")"});
     }
-    k.push_back({"run_time_s[exact]", result_.solvers.front().run_time, "s", "run time (exact solver)"});
-    if (result_.grid.computed) k.push_back({"grid_change[exact]", result_.grid.change, "", "duration change on a finer grid (relative)"});
-    if (replay_) k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad", "largest MuJoCo replay deviation"});
-    k.push_back({std::string("path_length_") + result_.s_unit(), result_.path_length, result_.s_unit(), "path length"});
+    k.push_back(
+        {"run_time_s[exact]", result_.solvers.front().run_time, "s", "run time (exact solver)"});
+    if (result_.grid.computed)
+      k.push_back({"grid_change[exact]", result_.grid.change, "",
+                   "duration change on a finer grid (relative)"});
+    if (replay_)
+      k.push_back({"mujoco_replay_deviation_rad", replay_->max_deviation, "rad",
+                   "largest MuJoCo replay deviation"});
+    k.push_back({std::string("path_length_") + result_.s_unit(), result_.path_length,
+                 result_.s_unit(), "path length"});
     return k;
   }
 
   std::vector<std::string> render(const std::filesystem::path& dir,
                                   const cases::CaseInfo& info) override {
-    std::vector<std::string> files = scene::render_time_optimal_frames(spec_, result_, info.render, dir);
+    std::vector<std::string> files =
+        scene::render_time_optimal_frames(spec_, result_, info.render, dir);
     if (replay_)
       for (auto& f : scene::render_time_optimal_replay(spec_, result_, *replay_, info.render, dir))
         files.push_back(std::move(f));
     return files;
   }
 
-  nlohmann::json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override;
-
+  nlohmann::json write_exports(const std::filesystem::path& dir,
+                               const cases::CaseInfo& info) override;
 
  private:
   std::optional<scene::DynamicReplay> replay_;
@@ -200,11 +210,21 @@ Section TimeOptimalRun::section() const {
   }
   if (r.grid.computed) {
     const to::GridConvergence& g = r.grid;
-    o.grid_convergence = Section::GridConvergence{
-        g.grid_points, g.refined_points, g.refined_solved, g.duration,
-        g.refined_solved ? g.refined_duration : NAN, g.change, g.tolerance, g.change <= g.tolerance,
-        {g.s_lo, g.s_hi}, {g.point_lo, g.point_hi}, g.share, g.max_sd,
-        joint_space ? NAN : g.min_sin_q2, joint_space ? NAN : g.path_min_sin_q2, g.text};
+    o.grid_convergence = Section::GridConvergence{g.grid_points,
+                                                  g.refined_points,
+                                                  g.refined_solved,
+                                                  g.duration,
+                                                  g.refined_solved ? g.refined_duration : NAN,
+                                                  g.change,
+                                                  g.tolerance,
+                                                  g.change <= g.tolerance,
+                                                  {g.s_lo, g.s_hi},
+                                                  {g.point_lo, g.point_hi},
+                                                  g.share,
+                                                  g.max_sd,
+                                                  joint_space ? NAN : g.min_sin_q2,
+                                                  joint_space ? NAN : g.path_min_sin_q2,
+                                                  g.text};
   }
   if (replay_) o.mujoco_replay = replay_section(*replay_);
   return o;
@@ -217,16 +237,17 @@ json TimeOptimalRun::write_exports(const std::filesystem::path& dir, const cases
   const scene::ArmScene sc = scene::time_optimal_scene(spec_, result_, info.render);
   const auto keys = scene::strip_keyframes(scene::time_optimal_motion(result_), info.render.frames);
   const std::string motion = "the exact (reachability) solution";
-  out.push_back(model_export_entry(scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path),
-                                   motion, keys));
+  out.push_back(model_export_entry(
+      scene::write_model_xml(dir, sc.chain, sc.mjcf, keys, motion, info.path), motion, keys));
   const std::string u = result_.s_unit();
   for (const to::SolverResult& r : result_.solvers) {
     if (!r.solved) continue;
     const to::MotionSamples& s = r.samples;
     report::MotionCsv t;
     t.file = "motion_" + r.name + ".csv";
-    t.what = "the " + r.name + " solution (" + r.method + "), the samples of results.json time_optimal.solvers[" +
-             r.name + "].samples: time, path position s, speed s' and acceleration s'' (s in " + u +
+    t.what = "the " + r.name + " solution (" + r.method +
+             "), the samples of results.json time_optimal.solvers[" + r.name +
+             "].samples: time, path position s, speed s' and acceleration s'' (s in " + u +
              "), joint angles, rates, accelerations and torques (inverse dynamics)";
     t.add("t", "s", s.t);
     t.add("s", u, s.s);

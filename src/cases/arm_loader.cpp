@@ -7,7 +7,8 @@ namespace armstudy::cases {
 
 core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int links_required) {
   core::PlanarChain chain = fallback;
-  chain.gravity = root.number_or("gravity", fallback.gravity, NumberRule::range(0.0, 100.0, "m/s^2"));
+  chain.gravity =
+      root.number_or("gravity", fallback.gravity, NumberRule::range(0.0, 100.0, "m/s^2"));
   if (std::isnan(chain.gravity)) chain.gravity = fallback.gravity;
   auto arm = root.map("arm");
   if (!arm) return chain;
@@ -15,7 +16,8 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
 
   auto links = arm->seq("links");
   if (!links) {
-    if (!arm->has("links")) arm->error_here("missing required key 'arm.links'; expected a list of links");
+    if (!arm->has("links"))
+      arm->error_here("missing required key 'arm.links'; expected a list of links");
     arm->number("payload", NumberRule::non_negative("kg"));
     arm->seq("point_masses");
     arm->finish();
@@ -23,9 +25,11 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
   }
   if (links->size() == 0 || links->size() > static_cast<size_t>(core::kMaxLinks) ||
       (links_required > 0 && links->size() != static_cast<size_t>(links_required))) {
-    const std::string want = links_required > 0 ? std::to_string(links_required) + " links for this study"
-                                                : "1 to " + std::to_string(core::kMaxLinks) + " links";
-    arm->error("links", "'arm.links' has " + std::to_string(links->size()) + " links; expected " + want);
+    const std::string want = links_required > 0
+                                 ? std::to_string(links_required) + " links for this study"
+                                 : "1 to " + std::to_string(core::kMaxLinks) + " links";
+    arm->error("links",
+               "'arm.links' has " + std::to_string(links->size()) + " links; expected " + want);
   }
   chain.links.clear();
   chain.point_masses.clear();
@@ -35,11 +39,15 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
     auto lm = links->map_at(i);
     link_maps.push_back(lm);
     core::Link l;
-    if (!lm) { chain.links.push_back(l); continue; }
+    if (!lm) {
+      chain.links.push_back(l);
+      continue;
+    }
     l.length = lm->required_number("length", NumberRule::positive("m"));
     // mass 0 is allowed only for a link that carries point masses (checked below)
     l.mass = lm->required_number("mass", NumberRule::non_negative("kg"));
-    l.com = lm->number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, NumberRule::any("m"));
+    l.com =
+        lm->number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, NumberRule::any("m"));
     l.com_lateral = lm->number_or("com_lateral", 0.0, NumberRule::any("m"));
     const YAML::Node in = lm->get("inertia");
     if (!in.IsDefined() || (in.IsScalar() && in.Scalar() == "rod")) {
@@ -78,8 +86,9 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
     for (const auto& p : chain.point_masses) carries |= p.link == i && p.mass > 0;
     if (!carries && link_maps[i]) {
       auto& lm = link_maps[i];
-      lm->error("mass", "'" + lm->path_of("mass") + "' is 0 kg for a massless link without a "
-                        "point mass; expected mass > 0 kg, or a point mass on this link");
+      lm->error("mass", "'" + lm->path_of("mass") +
+                            "' is 0 kg for a massless link without a "
+                            "point mass; expected mass > 0 kg, or a point mass on this link");
     }
   }
   arm->finish();

@@ -16,9 +16,12 @@ std::string sci(double v) {
 
 std::string bytes_text(double b) {
   char buf[32];
-  if (b >= 1e9) std::snprintf(buf, sizeof buf, "%.1f GB", b / 1e9);
-  else if (b >= 1e6) std::snprintf(buf, sizeof buf, "%.0f MB", b / 1e6);
-  else std::snprintf(buf, sizeof buf, "%.0f kB", b / 1e3);
+  if (b >= 1e9)
+    std::snprintf(buf, sizeof buf, "%.1f GB", b / 1e9);
+  else if (b >= 1e6)
+    std::snprintf(buf, sizeof buf, "%.0f MB", b / 1e6);
+  else
+    std::snprintf(buf, sizeof buf, "%.0f kB", b / 1e3);
   return buf;
 }
 
@@ -26,27 +29,29 @@ std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int 
   std::vector<OverBudget> out;
   const std::string raise = "; reduce them, or pass --allow-large to run it anyway";
   if (d.work > d.work_budget) {
-    out.push_back({false, d.what + " asks for about " + sci(d.work) + " " + d.unit + " (" + d.detail +
-                  "), more than the budget of " + sci(d.work_budget) + " " + d.unit +
-                  ", set by " + d.keys + raise});
+    out.push_back({false, d.what + " asks for about " + sci(d.work) + " " + d.unit + " (" +
+                              d.detail + "), more than the budget of " + sci(d.work_budget) + " " +
+                              d.unit + ", set by " + d.keys + raise});
   }
   const int strip = std::max(frames, d.strip_frames);
   const double pixels = double(strip) * width * height;
   // a strip image and its PNG rows, RGB
   const double frame_bytes = 2.0 * 3.0 * pixels;
   if (pixels > kPixelBudget) {
-    out.push_back({true, "the frames ask for a strip of " + std::to_string(strip) + " frames of " +
-                  std::to_string(width) + " x " + std::to_string(height) + " px = " + sci(pixels) +
-                  " px (about " + bytes_text(frame_bytes) + "), more than the budget of " +
-                  sci(kPixelBudget) + " px, set by render.frames, render.width, render.height" +
-                  (d.strip_frames > frames ? " and " + d.what + "'s snapshots" : std::string()) + raise});
+    out.push_back(
+        {true, "the frames ask for a strip of " + std::to_string(strip) + " frames of " +
+                   std::to_string(width) + " x " + std::to_string(height) + " px = " + sci(pixels) +
+                   " px (about " + bytes_text(frame_bytes) + "), more than the budget of " +
+                   sci(kPixelBudget) + " px, set by render.frames, render.width, render.height" +
+                   (d.strip_frames > frames ? " and " + d.what + "'s snapshots" : std::string()) +
+                   raise});
   }
   const double memory = d.memory_bytes + frame_bytes;
   if (memory > kMemoryBudgetBytes) {
     out.push_back({false, d.what + " needs about " + bytes_text(memory) + " of memory (" +
-                  bytes_text(d.memory_bytes) + " to solve: " + d.detail + "; " + bytes_text(frame_bytes) +
-                  " for frames), more than the budget of " + bytes_text(kMemoryBudgetBytes) + ", set by " +
-                  d.keys + raise});
+                              bytes_text(d.memory_bytes) + " to solve: " + d.detail + "; " +
+                              bytes_text(frame_bytes) + " for frames), more than the budget of " +
+                              bytes_text(kMemoryBudgetBytes) + ", set by " + d.keys + raise});
   }
   return out;
 }

@@ -17,8 +17,8 @@ struct FrameSize {
 
 /// Frame rendering settings of a case (`render:` in YAML).
 struct RenderOptions {
-  FrameSize frame;    ///< `width`, `height`
-  int frames = 6;     ///< frames in a strip
+  FrameSize frame;  ///< `width`, `height`
+  int frames = 6;   ///< frames in a strip
   bool shadows = false;
 };
 

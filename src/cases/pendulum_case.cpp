@@ -27,17 +27,19 @@ studies::PendulumSpec load_pendulum_spec(Map& root) {
   }
   if (const auto v = sec->number("duration_s", NumberRule::range(1e-3, 60.0, "s"))) s.duration = *v;
   if (const auto v = sec->number("sample_s", NumberRule::range(1e-4, 1.0, "s"))) s.sample_step = *v;
-  if (const auto v = sec->number("snapshot_s", NumberRule::range(1e-3, 60.0, "s"))) s.snapshot_step = *v;
+  if (const auto v = sec->number("snapshot_s", NumberRule::range(1e-3, 60.0, "s")))
+    s.snapshot_step = *v;
   if (const auto v = sec->number("rtol", NumberRule::range(1e-14, 1e-3, ""))) s.rtol = *v;
   if (const auto v = sec->number("atol", NumberRule::range(1e-16, 1e-3, ""))) s.atol = *v;
-  if (const auto v = sec->number("drift_tolerance", NumberRule::positive(""))) s.drift_tolerance = *v;
+  if (const auto v = sec->number("drift_tolerance", NumberRule::positive("")))
+    s.drift_tolerance = *v;
   // the strip and the locus draw every snapshot
   const double snapshots = std::floor(s.duration / s.snapshot_step + 1e-9) + 1;
   if (snapshots > kMaxPendulumSnapshots)
-    sec->error("snapshot_s", "'pendulum.snapshot_s' is " + format_number(s.snapshot_step) + " s: " +
-                                 format_number(snapshots) + " snapshots over duration_s = " +
-                                 format_number(s.duration) + " s; expected at most " +
-                                 std::to_string(kMaxPendulumSnapshots) +
+    sec->error("snapshot_s", "'pendulum.snapshot_s' is " + format_number(s.snapshot_step) +
+                                 " s: " + format_number(snapshots) +
+                                 " snapshots over duration_s = " + format_number(s.duration) +
+                                 " s; expected at most " + std::to_string(kMaxPendulumSnapshots) +
                                  " (the strip and the locus draw every snapshot)");
   sec->finish();
   if (sec->diag().empty()) {

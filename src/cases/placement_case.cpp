@@ -30,8 +30,9 @@ Demand placement_demand(const studies::placement::Spec& spec, const YAML::Mark& 
   const double pairs = double(spec.programs.size()) * double(spec.configurations.size());
   Demand d;
   d.what = "the placement sweep";
-  d.keys = "placement.nx_s, placement.phi_step_deg, placement.map, placement.samples, "
-           "placement.programs and placement.configurations";
+  d.keys =
+      "placement.nx_s, placement.phi_step_deg, placement.map, placement.samples, "
+      "placement.programs and placement.configurations";
   d.unit = "trajectory samples";
   d.work = candidates * pairs * spec.samples;
   d.work_budget = 1e10;
@@ -39,9 +40,11 @@ Demand placement_demand(const studies::placement::Spec& spec, const YAML::Mark& 
   // byte per pair; the program tables hold ~100 B per sample. Measured (nx_s 500,
   // phi_step_deg 0.1, samples 21): 525 MB estimated, 422 MB peak resident; the work counts
   // unreachable candidates too (4.4 times the 3.4e7 samples evaluated)
-  d.memory_bytes = candidates * (64.0 + pairs * 58.0) + double(spec.programs.size()) * spec.samples * 100.0;
+  d.memory_bytes =
+      candidates * (64.0 + pairs * 58.0) + double(spec.programs.size()) * spec.samples * 100.0;
   char detail[200];
-  std::snprintf(detail, sizeof detail, "%.3g candidates (2 x %.0f start points x %.0f directions + %d x %d map "
+  std::snprintf(detail, sizeof detail,
+                "%.3g candidates (2 x %.0f start points x %.0f directions + %d x %d map "
                 "nodes) x %.0f program/configuration pairs x %d samples",
                 candidates, starts, directions, spec.map_nx, spec.map_ny, pairs, spec.samples);
   d.detail = detail;
@@ -59,8 +62,9 @@ studies::placement::Spec load_placement(Map& root) {
   }
   for (int i = 0; i < spec.chain.num_links(); ++i) {
     if (!spec.chain.links[i].active) {
-      root.error("arm", "'arm.links[" + std::to_string(i + 1) +
-                            "]' has a passive joint; expected both joints active for a placement study");
+      root.error("arm",
+                 "'arm.links[" + std::to_string(i + 1) +
+                     "]' has a passive joint; expected both joints active for a placement study");
     }
   }
   const pl::Annulus an = pl::annulus(spec.chain.links[0].length, spec.chain.links[1].length);
@@ -68,23 +72,27 @@ studies::placement::Spec load_placement(Map& root) {
   auto p = root.map("placement");
   if (!p) {
     if (!root.has("placement"))
-      root.error_here("missing required key 'placement'; expected the placement task (length_fraction "
-                      "or length_m, ...)");
+      root.error_here(
+          "missing required key 'placement'; expected the placement task (length_fraction "
+          "or length_m, ...)");
     return spec;
   }
   // task: exactly one of length_fraction and length_m
   const bool has_fraction = p->has("length_fraction"), has_length = p->has("length_m");
   if (has_fraction && has_length) {
-    p->error("length_m", "'placement.length_m' and 'placement.length_fraction' are both given; "
-                         "expected exactly one of them");
+    p->error("length_m",
+             "'placement.length_m' and 'placement.length_fraction' are both given; "
+             "expected exactly one of them");
   } else if (!has_fraction && !has_length) {
-    p->error_here("missing required key 'placement.length_fraction' (or 'placement.length_m'); "
-                  "expected the line length");
+    p->error_here(
+        "missing required key 'placement.length_fraction' (or 'placement.length_m'); "
+        "expected the line length");
   }
   if (has_fraction) {
     if (const auto f = p->number("length_fraction", NumberRule::range(0.0, 1.0, ""))) {
       if (*f <= 0) {
-        p->error("length_fraction", "'placement.length_fraction' is " + format_number(*f) + "; expected a fraction in (0, 1] of Lmax");
+        p->error("length_fraction", "'placement.length_fraction' is " + format_number(*f) +
+                                        "; expected a fraction in (0, 1] of Lmax");
       }
       spec.length = *f * an.lmax;
     }
@@ -93,8 +101,10 @@ studies::placement::Spec load_placement(Map& root) {
     if (const auto L = p->number("length_m", NumberRule::positive("m"))) {
       spec.length = *L;
       if (*L > an.lmax * (1 + 1e-12)) {
-        p->error("length_m", "'placement.length_m' is " + format_number(*L) + " m, longer than Lmax = 4 sqrt(L1 L2) = " +
-                                 format_number(an.lmax) + " m of this arm; expected 0 < length_m <= " + format_number(an.lmax));
+        p->error("length_m",
+                 "'placement.length_m' is " + format_number(*L) +
+                     " m, longer than Lmax = 4 sqrt(L1 L2) = " + format_number(an.lmax) +
+                     " m of this arm; expected 0 < length_m <= " + format_number(an.lmax));
       }
     }
   }
@@ -110,34 +120,41 @@ studies::placement::Spec load_placement(Map& root) {
       if (!prog) {
         std::string list;
         for (const auto& s : names) list += (list.empty() ? "" : ", ") + s;
-        std::string msg = "'" + progs->path_at(i) + "' is '" + brief(name) + "'; expected one of: " + list;
+        std::string msg =
+            "'" + progs->path_at(i) + "' is '" + brief(name) + "'; expected one of: " + list;
         if (const auto c = closest(name, names)) msg += " (did you mean '" + *c + "'?)";
         progs->diag().error(n.Mark(), msg);
         continue;
       }
       spec.programs.push_back(*prog);
     }
-    if (progs->size() == 0) p->error("programs", "'placement.programs' is empty; expected at least one program");
+    if (progs->size() == 0)
+      p->error("programs", "'placement.programs' is empty; expected at least one program");
   }
   if (auto cfgs = p->numbers("configurations", NumberRule::range(1, 2, ""))) {
     spec.configurations.clear();
     for (size_t i = 0; i < cfgs->size(); ++i) {
       const double c = (*cfgs)[i];
       if (c != 1.0 && c != 2.0) {
-        p->error("configurations", "'placement.configurations[" + std::to_string(i + 1) + "]' is " + format_number(c) +
-                                       "; expected 1 or 2");
+        p->error("configurations", "'placement.configurations[" + std::to_string(i + 1) + "]' is " +
+                                       format_number(c) + "; expected 1 or 2");
         continue;
       }
       spec.configurations.push_back(int(c));
     }
   }
   spec.nx_s = p->integer_or("nx_s", spec.nx_s, 1, 10000);
-  spec.phi_step = p->number_or("phi_step_deg", spec.phi_step / kDeg, NumberRule::range(1e-3, 45.0, "deg")) * kDeg;
+  spec.phi_step =
+      p->number_or("phi_step_deg", spec.phi_step / kDeg, NumberRule::range(1e-3, 45.0, "deg")) *
+      kDeg;
   if (!(spec.phi_step > 0)) spec.phi_step = kDeg;  // an error was recorded
   spec.samples = p->integer_or("samples", spec.samples, 21, 100001);
-  spec.singularity_margin = p->number_or("singularity_margin_m", spec.singularity_margin, NumberRule::positive("m"));
-  if (std::isfinite(spec.singularity_margin) && spec.singularity_margin >= (an.outer - an.inner) / 2) {
-    p->error("singularity_margin_m", "'placement.singularity_margin_m' is " + format_number(spec.singularity_margin) +
+  spec.singularity_margin =
+      p->number_or("singularity_margin_m", spec.singularity_margin, NumberRule::positive("m"));
+  if (std::isfinite(spec.singularity_margin) &&
+      spec.singularity_margin >= (an.outer - an.inner) / 2) {
+    p->error("singularity_margin_m", "'placement.singularity_margin_m' is " +
+                                         format_number(spec.singularity_margin) +
                                          " m; expected less than half the annulus width, " +
                                          format_number((an.outer - an.inner) / 2) + " m");
   }
@@ -171,7 +188,8 @@ studies::placement::Spec load_placement(Map& root) {
         es.x_s = e->required_number("x_s_m", NumberRule::positive("m"));
         es.phi = e->required_number("phi_deg", NumberRule::range(-360.0, 360.0, "deg")) * kDeg;
       } else {
-        e->error_here("'" + ev->path_at(i) + "' gives no placement; expected x_s_m and phi_deg, or root_xy_m");
+        e->error_here("'" + ev->path_at(i) +
+                      "' gives no placement; expected x_s_m and phi_deg, or root_xy_m");
       }
       e->finish();
       spec.evaluations.push_back(es);

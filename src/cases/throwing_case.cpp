@@ -31,8 +31,8 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
     num(*m, "coulomb_Nm", s.motor.tau_f, NumberRule::non_negative("N m"));
     num(*m, "rotor_inertia_kg_m2", s.arm.rotor_inertia, NumberRule::non_negative("kg m^2"));
     if (const auto mount = m->choice("motor2", {"on_link1", "on_base"}))
-      s.arm.motor2 = *mount == "on_base" ? studies::Motor2Mount::kOnBase
-                                         : studies::Motor2Mount::kOnLink1;
+      s.arm.motor2 =
+          *mount == "on_base" ? studies::Motor2Mount::kOnBase : studies::Motor2Mount::kOnLink1;
     num(*m, "voltage_max_V", s.voltage_max, NumberRule::positive("V"));
     num(*m, "current_max_A", s.current_max, NumberRule::positive("A"));
     num(*m, "power_max_W", s.power_max, NumberRule::positive("W"));
@@ -75,7 +75,8 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
     num(*i, "shrink", s.idp.shrink, NumberRule::range(1e-3, 0.999, ""));
     if (const auto v = i->numbers("region_rad_s", NumberRule::positive("rad/s"), 2))
       s.idp.region = {(*v)[0], (*v)[1]};
-    s.idp.seed = static_cast<unsigned>(i->integer_or("seed", static_cast<int>(s.idp.seed), 0, 2147483647));
+    s.idp.seed =
+        static_cast<unsigned>(i->integer_or("seed", static_cast<int>(s.idp.seed), 0, 2147483647));
     s.idp.seeds = i->integer_or("seeds", s.idp.seeds, 1, 64);
     i->finish();
   }
@@ -106,20 +107,25 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
   // steps_per_stage RK4 steps; SLSQP: each
   // iteration a central-difference gradient over 2 (stages - 1) rates
   const double steps = double(s.stages) * s.steps_per_stage;
-  const double idp = double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * (s.stages - 1.0) * s.idp.candidates;
-  const double nlopt = s.run_nlopt ? double(s.nlopt.max_evaluations) * (4.0 * (s.stages - 1.0) + 1.0) : 0.0;
+  const double idp = double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * (s.stages - 1.0) *
+                     s.idp.candidates;
+  const double nlopt =
+      s.run_nlopt ? double(s.nlopt.max_evaluations) * (4.0 * (s.stages - 1.0) + 1.0) : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
-  d.keys = "throwing.idp.seeds, throwing.idp.max_passes, throwing.idp.iterations, throwing.idp.stages, throwing.idp.candidates, "
-           "throwing.idp.steps_per_stage and throwing.nlopt.max_evaluations";
+  d.keys =
+      "throwing.idp.seeds, throwing.idp.max_passes, throwing.idp.iterations, throwing.idp.stages, "
+      "throwing.idp.candidates, "
+      "throwing.idp.steps_per_stage and throwing.nlopt.max_evaluations";
   d.unit = "RK4 steps";
   d.work = (idp + nlopt) * steps;
   d.work_budget = 1e9;
   // the recorded iterations and the motions' series
-  d.memory_bytes = double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * 1000.0 + steps * 2000.0;
+  d.memory_bytes =
+      double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * 1000.0 + steps * 2000.0;
   char detail[200];
-  std::snprintf(detail, sizeof detail, "%.3g IDP and %.3g SLSQP simulations of %.0f RK4 steps",
-                idp, nlopt, steps);
+  std::snprintf(detail, sizeof detail, "%.3g IDP and %.3g SLSQP simulations of %.0f RK4 steps", idp,
+                nlopt, steps);
   d.detail = detail;
   d.mark = mark;
   return d;

@@ -64,9 +64,9 @@
 ///   nlopt:
 ///     enabled: true                    # SLSQP beside IDP
 ///     max_evaluations: 400             # budget: SLSQP iterations, 1..10000
-///     max_time_s: 900                  # wall-clock safety net (a run ending on it is not converged), > 0
-///     ftol_rel: 1.0e-6                 # converged: relative energy change below this
-///     xtol_rel: 1.0e-6                 # or relative rate change below this
+///     max_time_s: 900                  # wall-clock safety net (a run ending on it is not
+///     converged), > 0 ftol_rel: 1.0e-6                 # converged: relative energy change below
+///     this xtol_rel: 1.0e-6                 # or relative rate change below this
 ///     fd_step_rad_s: 1.0e-5            # central-difference step, > 0
 ///   checks:
 ///     replay_tolerance_rad: 0.002      # open-loop replay vs plan, > 0
@@ -75,12 +75,11 @@
 ///   threads: 2                         # 1..64
 /// ```
 
+#include "cases/tray_arm_case.hpp"
 #include "cases/yaml_reader.hpp"
 #include "studies/throwing/solve.hpp"
-#include "cases/tray_arm_case.hpp"
 
 namespace armstudy::cases {
-
 
 /// The work and memory `spec` asks for (cases/budget.hpp), reported at `mark`.
 Demand throwing_demand(const studies::ThrowingSpec& spec, const YAML::Mark& mark);

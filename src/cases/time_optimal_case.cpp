@@ -12,11 +12,13 @@ namespace {
 namespace to = studies::time_optimal;
 
 // a per-joint list of limits >= 0, one per joint of the arm
-std::optional<core::JointVector> joint_limits(Map& m, std::string_view key, const std::string& unit, int joints) {
+std::optional<core::JointVector> joint_limits(Map& m, std::string_view key, const std::string& unit,
+                                              int joints) {
   const YAML::Node n = m.has(key) ? m.get(key) : YAML::Node();
   if (n.IsDefined() && n.IsSequence() && n.size() != static_cast<size_t>(joints)) {
     m.diag().error(n.Mark(), "'" + m.path_of(key) + "' has " + std::to_string(n.size()) +
-                                 " entries; expected " + std::to_string(joints) + ", one per joint of the arm");
+                                 " entries; expected " + std::to_string(joints) +
+                                 ", one per joint of the arm");
     return std::nullopt;
   }
   if (const auto v = m.numbers(key, NumberRule::non_negative(unit), joints)) {
@@ -43,15 +45,18 @@ void load_joint_path(Map& path, int joints, to::Spec* spec) {
   }
   const auto kind = path.choice("kind", {"line", "polyline", "spline"});
   spec->joint_path.kind = !kind || *kind == "line" ? to::PathKind::kLine
-                          : *kind == "polyline"   ? to::PathKind::kPolyline
-                                                  : to::PathKind::kSpline;
+                          : *kind == "polyline"    ? to::PathKind::kPolyline
+                                                   : to::PathKind::kSpline;
   const std::string want = std::to_string(joints) + " angle" + (joints == 1 ? "" : "s") +
-                           " in rad, one per joint of the arm's " + std::to_string(joints) + " links";
+                           " in rad, one per joint of the arm's " + std::to_string(joints) +
+                           " links";
   auto pts = path.seq("points_rad");
   if (!pts) {
     if (!path.has("points_rad"))
-      path.error_here("missing required key 'time_optimal.joint_path.points_rad'; expected a list of "
-                      "waypoints, each " + want);
+      path.error_here(
+          "missing required key 'time_optimal.joint_path.points_rad'; expected a list of "
+          "waypoints, each " +
+          want);
     path.get("range_rad");
     path.finish();
     return;
@@ -61,24 +66,33 @@ void load_joint_path(Map& path, int joints, to::Spec* spec) {
   for (size_t i = 0; i < pts->size(); ++i) {
     const YAML::Node n = pts->at(i);
     if (!n.IsSequence() || n.size() != static_cast<size_t>(joints)) {
-      pts->diag().error(n.Mark(), "'" + pts->path_at(i) + "' " +
-                                      (n.IsSequence() ? "has " + std::to_string(n.size()) + " angle(s)"
-                                                      : std::string("is not a list of angles")) +
-                                      "; expected " + want);
+      pts->diag().error(n.Mark(),
+                        "'" + pts->path_at(i) + "' " +
+                            (n.IsSequence() ? "has " + std::to_string(n.size()) + " angle(s)"
+                                            : std::string("is not a list of angles")) +
+                            "; expected " + want);
       all_read = false;
       continue;
     }
     core::JointVector q(joints);
     bool ok = true;
     for (int j = 0; j < joints; ++j) {
-      const auto v = read_number(n[j], pts->diag(), pts->path_at(i) + "[" + std::to_string(j + 1) + "]",
-                                 NumberRule::range(-100.0, 100.0, "rad"));
-      if (v) q[j] = *v; else ok = false;
+      const auto v =
+          read_number(n[j], pts->diag(), pts->path_at(i) + "[" + std::to_string(j + 1) + "]",
+                      NumberRule::range(-100.0, 100.0, "rad"));
+      if (v)
+        q[j] = *v;
+      else
+        ok = false;
     }
-    if (!ok) { all_read = false; continue; }
+    if (!ok) {
+      all_read = false;
+      continue;
+    }
     if (!spec->joint_path.points.empty() && (q - spec->joint_path.points.back()).norm() < 1e-9) {
-      pts->diag().error(n.Mark(), "'" + pts->path_at(i) + "' repeats the waypoint before it; expected "
-                                  "distinct consecutive waypoints");
+      pts->diag().error(n.Mark(), "'" + pts->path_at(i) +
+                                      "' repeats the waypoint before it; expected "
+                                      "distinct consecutive waypoints");
       all_read = false;
       continue;
     }
@@ -88,35 +102,44 @@ void load_joint_path(Map& path, int joints, to::Spec* spec) {
   const size_t count = pts->size();
   bool count_ok = true;
   if (spec->joint_path.kind == to::PathKind::kLine && count != 2) {
-    path.error("points_rad", "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
-                                 " waypoints; expected exactly 2 for kind 'line' (polyline or spline for more)");
+    path.error("points_rad",
+               "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
+                   " waypoints; expected exactly 2 for kind 'line' (polyline or spline for more)");
     count_ok = false;
   } else if (count < 2) {
     path.error("points_rad", "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
-                                 " waypoint(s); expected at least 2 for kind '" + kind_text(spec->joint_path.kind) + "'");
+                                 " waypoint(s); expected at least 2 for kind '" +
+                                 kind_text(spec->joint_path.kind) + "'");
     count_ok = false;
   }
   // ranges: one [lo, hi] per joint
   bool range_ok = true;
   if (auto rs = path.seq("range_rad")) {
     if (rs->size() != static_cast<size_t>(joints)) {
-      path.error("range_rad", "'time_optimal.joint_path.range_rad' has " + std::to_string(rs->size()) +
-                                  " entries; expected " + std::to_string(joints) + " [lo, hi] pairs in rad, one per joint");
+      path.error("range_rad", "'time_optimal.joint_path.range_rad' has " +
+                                  std::to_string(rs->size()) + " entries; expected " +
+                                  std::to_string(joints) + " [lo, hi] pairs in rad, one per joint");
       range_ok = false;
     }
     for (size_t i = 0; i < rs->size() && range_ok; ++i) {
       const YAML::Node n = rs->at(i);
       if (!n.IsSequence() || n.size() != 2) {
-        rs->diag().error(n.Mark(), "'" + rs->path_at(i) + "' is not a range; expected [lo, hi] in rad");
+        rs->diag().error(n.Mark(),
+                         "'" + rs->path_at(i) + "' is not a range; expected [lo, hi] in rad");
         range_ok = false;
         continue;
       }
-      const auto lo = read_number(n[0], rs->diag(), rs->path_at(i) + "[1]", NumberRule::range(-100.0, 100.0, "rad"));
-      const auto hi = read_number(n[1], rs->diag(), rs->path_at(i) + "[2]", NumberRule::range(-100.0, 100.0, "rad"));
-      if (!lo || !hi) { range_ok = false; continue; }
+      const auto lo = read_number(n[0], rs->diag(), rs->path_at(i) + "[1]",
+                                  NumberRule::range(-100.0, 100.0, "rad"));
+      const auto hi = read_number(n[1], rs->diag(), rs->path_at(i) + "[2]",
+                                  NumberRule::range(-100.0, 100.0, "rad"));
+      if (!lo || !hi) {
+        range_ok = false;
+        continue;
+      }
       if (!(*lo < *hi)) {
-        rs->diag().error(n.Mark(), "'" + rs->path_at(i) + "' is [" + format_number(*lo) + ", " + format_number(*hi) +
-                                       "]; expected lo < hi");
+        rs->diag().error(n.Mark(), "'" + rs->path_at(i) + "' is [" + format_number(*lo) + ", " +
+                                       format_number(*hi) + "]; expected lo < hi");
         range_ok = false;
         continue;
       }
@@ -136,33 +159,39 @@ void load_joint_path(Map& path, int joints, to::Spec* spec) {
     for (int j = 0; j < joints; ++j)
       if (jp.points[i][j] < jp.range[j][0] || jp.points[i][j] > jp.range[j][1]) {
         pts->diag().error(nodes[i][j].Mark(),
-                          "'" + pts->path_at(i) + "[" + std::to_string(j + 1) + "]' is " + format_number(jp.points[i][j]) +
-                              " rad, outside joint " + std::to_string(j + 1) + "'s range [" + format_number(jp.range[j][0]) +
-                              ", " + format_number(jp.range[j][1]) + "] rad ('time_optimal.joint_path.range_rad[" +
-                              std::to_string(j + 1) + "]'); expected a waypoint inside every joint's range");
+                          "'" + pts->path_at(i) + "[" + std::to_string(j + 1) + "]' is " +
+                              format_number(jp.points[i][j]) + " rad, outside joint " +
+                              std::to_string(j + 1) + "'s range [" + format_number(jp.range[j][0]) +
+                              ", " + format_number(jp.range[j][1]) +
+                              "] rad ('time_optimal.joint_path.range_rad[" + std::to_string(j + 1) +
+                              "]'); expected a waypoint inside every joint's range");
         return;
       }
-  pts->diag().error(nodes[e->piece].Mark(),
-                    "'" + pts->path_at(e->piece) + "': " + e->text + ", outside it although the waypoints are inside; "
-                    "expected a path inside every joint's range (move these waypoints, add one between them, or "
-                    "use kind polyline)");
+  pts->diag().error(nodes[e->piece].Mark(), "'" + pts->path_at(e->piece) + "': " + e->text +
+                                                ", outside it although the waypoints are inside; "
+                                                "expected a path inside every joint's range (move "
+                                                "these waypoints, add one between them, or "
+                                                "use kind polyline)");
 }
 
 void load_path(Map& t, to::Spec* spec) {
   auto path = t.map("path");
   if (!path) {
     if (!t.has("path"))
-      t.error_here("missing required key 'time_optimal.path'; expected the tip path (kind and points_m)");
+      t.error_here(
+          "missing required key 'time_optimal.path'; expected the tip path (kind and points_m)");
     return;
   }
   const auto kind = path->choice("kind", {"line", "polyline", "spline"});
   spec->path.kind = !kind || *kind == "line" ? to::PathKind::kLine
-                    : *kind == "polyline"   ? to::PathKind::kPolyline
-                                            : to::PathKind::kSpline;
+                    : *kind == "polyline"    ? to::PathKind::kPolyline
+                                             : to::PathKind::kSpline;
   auto pts = path->seq("points_m");
   if (!pts) {
     if (!path->has("points_m"))
-      path->error_here("missing required key 'time_optimal.path.points_m'; expected a list of [x, y] tip points in m");
+      path->error_here(
+          "missing required key 'time_optimal.path.points_m'; expected a list of [x, y] tip points "
+          "in m");
     path->finish();
     return;
   }
@@ -177,16 +206,18 @@ void load_path(Map& t, to::Spec* spec) {
     if (!x || !y) continue;
     const Eigen::Vector2d p(*x, *y);
     if (!spec->path.points.empty() && (p - spec->path.points.back()).norm() < 1e-9) {
-      pts->diag().error(n.Mark(), "'" + pts->path_at(i) + "' repeats the point before it; expected "
-                                  "distinct consecutive points");
+      pts->diag().error(n.Mark(), "'" + pts->path_at(i) +
+                                      "' repeats the point before it; expected "
+                                      "distinct consecutive points");
       continue;
     }
     spec->path.points.push_back(p);
   }
   const size_t n = spec->path.points.size();
   if (spec->path.kind == to::PathKind::kLine && pts->size() != 2) {
-    path->error("points_m", "'time_optimal.path.points_m' has " + std::to_string(pts->size()) +
-                                " points; expected exactly 2 for kind 'line' (polyline or spline for more)");
+    path->error("points_m",
+                "'time_optimal.path.points_m' has " + std::to_string(pts->size()) +
+                    " points; expected exactly 2 for kind 'line' (polyline or spline for more)");
   } else if (pts->size() < 2) {
     path->error("points_m", "'time_optimal.path.points_m' has " + std::to_string(n) +
                                 " point(s); expected at least 2");
@@ -210,12 +241,16 @@ void load_dp(Map& t, to::DpSettings* dp) {
       } else if (name == "joint1_velocity") {
         dp->states.push_back(to::DpState::kJoint1Velocity);
       } else {
-        std::string msg = "'" + st->path_at(i) + "' is '" + brief(name) + "'; expected path_speed or joint1_velocity";
-        if (const auto c = closest(name, {"path_speed", "joint1_velocity"})) msg += " (did you mean '" + *c + "'?)";
+        std::string msg = "'" + st->path_at(i) + "' is '" + brief(name) +
+                          "'; expected path_speed or joint1_velocity";
+        if (const auto c = closest(name, {"path_speed", "joint1_velocity"}))
+          msg += " (did you mean '" + *c + "'?)";
         st->diag().error(n.Mark(), msg);
       }
     }
-    if (st->size() == 0) m->error("states", "'time_optimal.dp.states' is empty; expected path_speed and/or joint1_velocity");
+    if (st->size() == 0)
+      m->error("states",
+               "'time_optimal.dp.states' is empty; expected path_speed and/or joint1_velocity");
   }
   if (m->has("convergence_segments")) {
     const YAML::Node n = m->get("convergence_segments");
@@ -224,8 +259,9 @@ void load_dp(Map& t, to::DpSettings* dp) {
       if (const auto v = m->numbers("convergence_segments", NumberRule::range(2, 2000, ""))) {
         for (size_t i = 0; i < v->size(); ++i) {
           if ((*v)[i] != std::floor((*v)[i])) {
-            m->error("convergence_segments", "'time_optimal.dp.convergence_segments[" + std::to_string(i + 1) +
-                                                 "]' is " + format_number((*v)[i]) + "; expected a whole number of segments");
+            m->error("convergence_segments",
+                     "'time_optimal.dp.convergence_segments[" + std::to_string(i + 1) + "]' is " +
+                         format_number((*v)[i]) + "; expected a whole number of segments");
             continue;
           }
           dp->convergence_segments.push_back(static_cast<int>((*v)[i]));
@@ -248,36 +284,45 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
                           std::to_string(core::kMaxLinks) + " links for a time-optimal study");
   for (int i = 0; i < joints; ++i) {
     if (!spec.chain.links[i].active)
-      root.error("arm", "'arm.links[" + std::to_string(i + 1) +
-                            "]' has a passive joint; expected every joint active for a time-optimal study");
+      root.error(
+          "arm",
+          "'arm.links[" + std::to_string(i + 1) +
+              "]' has a passive joint; expected every joint active for a time-optimal study");
   }
   auto t = root.map("time_optimal");
   if (!t) {
     if (!root.has("time_optimal"))
-      root.error_here("missing required key 'time_optimal'; expected the path and the joint limits");
+      root.error_here(
+          "missing required key 'time_optimal'; expected the path and the joint limits");
     return spec;
   }
   if (t->has("path") && t->has("joint_path")) {
-    t->error("joint_path", "'time_optimal' has both 'path' (a tip path) and 'joint_path'; expected one of them");
+    t->error("joint_path",
+             "'time_optimal' has both 'path' (a tip path) and 'joint_path'; expected one of them");
     t->get("path");
   } else if (t->has("joint_path")) {
     if (auto jp = t->map("joint_path")) load_joint_path(*jp, arm_ok ? joints : 0, &spec);
     spec.space = to::PathSpace::kJoint;
     if (t->has("configuration"))
-      t->error("configuration", "'time_optimal.configuration' chooses the elbow of a tip path's inverse "
-                                "kinematics; expected no configuration with a joint_path (its joint angles are given)");
+      t->error(
+          "configuration",
+          "'time_optimal.configuration' chooses the elbow of a tip path's inverse "
+          "kinematics; expected no configuration with a joint_path (its joint angles are given)");
   } else {
     if (arm_ok && joints != 2 && t->has("path")) {
-      t->error("path", "'time_optimal.path' is a tip path, but the arm has " + std::to_string(joints) +
-                           " links: " + (joints > 2 ? "a redundant arm follows a tip path with many joint motions, "
-                                                      "so the path does not fix one; "
-                                                    : "") +
-                           "expected a path in joint space, 'time_optimal.joint_path' with points_rad (one "
-                           "angle per joint in every waypoint), or an arm of 2 links");
+      t->error("path",
+               "'time_optimal.path' is a tip path, but the arm has " + std::to_string(joints) +
+                   " links: " +
+                   (joints > 2 ? "a redundant arm follows a tip path with many joint motions, "
+                                 "so the path does not fix one; "
+                               : "") +
+                   "expected a path in joint space, 'time_optimal.joint_path' with points_rad (one "
+                   "angle per joint in every waypoint), or an arm of 2 links");
       t->get("path");
     } else if (!t->has("path")) {
-      t->error_here("missing required key 'time_optimal.path'; expected the tip path (kind and points_m) "
-                    "or 'time_optimal.joint_path' (kind and points_rad)");
+      t->error_here(
+          "missing required key 'time_optimal.path'; expected the tip path (kind and points_m) "
+          "or 'time_optimal.joint_path' (kind and points_rad)");
     } else {
       load_path(*t, &spec);
     }
@@ -286,32 +331,40 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
   // per-joint limits are judged against a valid arm only (a refused arm is reported once)
   if (arm_ok) {
     const int nl = std::clamp(joints, 1, core::kMaxLinks);
-    if (const auto v = joint_limits(*t, "velocity_limit_rad_s", "rad/s", nl)) spec.velocity_limit = *v;
+    if (const auto v = joint_limits(*t, "velocity_limit_rad_s", "rad/s", nl))
+      spec.velocity_limit = *v;
     if (const auto v = joint_limits(*t, "torque_limit_Nm", "N m", nl)) spec.torque_limit = *v;
-    if (const auto v = joint_limits(*t, "acceleration_limit_rad_s2", "rad/s^2", nl)) spec.acceleration_limit = *v;
+    if (const auto v = joint_limits(*t, "acceleration_limit_rad_s2", "rad/s^2", nl))
+      spec.acceleration_limit = *v;
   } else {
-    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm", "acceleration_limit_rad_s2"}) t->get(key);
+    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm", "acceleration_limit_rad_s2"})
+      t->get(key);
   }
   // the default limits are the 2-link source's: a longer chain states its own
   if (arm_ok && joints != 2) {
     for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm"})
       if (!t->has(key))
-        t->error_here(std::string("missing required key 'time_optimal.") + key + "' for an arm of " +
-                      std::to_string(joints) + " links; expected " + std::to_string(joints) +
+        t->error_here(std::string("missing required key 'time_optimal.") + key +
+                      "' for an arm of " + std::to_string(joints) + " links; expected " +
+                      std::to_string(joints) +
                       " limits, one per joint (the defaults are a 2-link arm's)");
   }
   load_dp(*t, &spec.dp);
   if (auto c = t->map("complex")) {
     spec.complex.enabled = c->boolean_or("enabled", true);
-    spec.complex.max_iterations = c->integer_or("max_iterations", spec.complex.max_iterations, 1, 10000000);
-    spec.complex.tolerance = c->number_or("tolerance", spec.complex.tolerance, NumberRule::positive(""));
+    spec.complex.max_iterations =
+        c->integer_or("max_iterations", spec.complex.max_iterations, 1, 10000000);
+    spec.complex.tolerance =
+        c->number_or("tolerance", spec.complex.tolerance, NumberRule::positive(""));
     spec.complex.seed = static_cast<unsigned>(c->integer_or("seed", 1, 0, 2147483647));
     c->finish();
   }
   if (auto e = t->map("exact")) {
     spec.exact.grid_points = e->integer_or("grid_points", spec.exact.grid_points, 3, 100000);
-    spec.exact.checks_per_interval = e->integer_or("checks_per_interval", spec.exact.checks_per_interval, 1, 100);
-    spec.exact.grid_tolerance = e->number_or("grid_tolerance", spec.exact.grid_tolerance, NumberRule::positive(""));
+    spec.exact.checks_per_interval =
+        e->integer_or("checks_per_interval", spec.exact.checks_per_interval, 1, 100);
+    spec.exact.grid_tolerance =
+        e->number_or("grid_tolerance", spec.exact.grid_tolerance, NumberRule::positive(""));
     e->finish();
   }
   spec.motion_steps = t->integer_or("motion_steps", spec.motion_steps, 1, 100000);
@@ -322,16 +375,19 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
   if (kind == to::PathKind::kPolyline && waypoints >= 2) {
     const int pieces = static_cast<int>(waypoints) - 1;
     if (spec.dp.segments < 2 * pieces)
-      root.error("time_optimal", "'time_optimal.dp.segments' is " + std::to_string(spec.dp.segments) +
-                                     "; expected at least two segments per polyline piece (" +
-                                     std::to_string(pieces) + " pieces): the arm stops at both ends of each");
+      root.error("time_optimal",
+                 "'time_optimal.dp.segments' is " + std::to_string(spec.dp.segments) +
+                     "; expected at least two segments per polyline piece (" +
+                     std::to_string(pieces) + " pieces): the arm stops at both ends of each");
     if (spec.exact.grid_points - 1 < 2 * pieces)
-      root.error("time_optimal", "'time_optimal.exact.grid_points' is " + std::to_string(spec.exact.grid_points) +
+      root.error("time_optimal", "'time_optimal.exact.grid_points' is " +
+                                     std::to_string(spec.exact.grid_points) +
                                      "; expected at least " + std::to_string(2 * pieces + 1) +
                                      " (two intervals per polyline piece)");
     for (int n : spec.dp.convergence_segments)
       if (n < 2 * pieces)
-        root.error("time_optimal", "'time_optimal.dp.convergence_segments' holds " + std::to_string(n) +
+        root.error("time_optimal", "'time_optimal.dp.convergence_segments' holds " +
+                                       std::to_string(n) +
                                        "; expected at least two segments per polyline piece (" +
                                        std::to_string(pieces) + " pieces)");
   }
@@ -347,7 +403,8 @@ Demand time_optimal_demand(const studies::time_optimal::Spec& spec, const YAML::
   // Complex: each iteration times every segment at its check points.
   const double checks = spec.dp.checks_per_segment + 1.0;
   const double nodes = spec.dp.segments + 1.0;
-  double states = double(spec.dp.states.size()) * nodes * spec.dp.levels, largest = nodes * spec.dp.levels;
+  double states = double(spec.dp.states.size()) * nodes * spec.dp.levels,
+         largest = nodes * spec.dp.levels;
   for (const int n : spec.dp.convergence_segments) {
     const double levels = std::round(spec.dp.levels * std::max(1.0, double(n) / spec.dp.segments));
     states += (n + 1.0) * levels;
@@ -357,8 +414,9 @@ Demand time_optimal_demand(const studies::time_optimal::Spec& spec, const YAML::
   const double exact = double(spec.exact.grid_points) * spec.exact.checks_per_interval;
   Demand d;
   d.what = "the time-optimal study";
-  d.keys = "time_optimal.dp.segments, time_optimal.dp.levels, time_optimal.dp.checks_per_segment, "
-           "time_optimal.dp.convergence_segments and time_optimal.complex.max_iterations";
+  d.keys =
+      "time_optimal.dp.segments, time_optimal.dp.levels, time_optimal.dp.checks_per_segment, "
+      "time_optimal.dp.convergence_segments and time_optimal.complex.max_iterations";
   d.unit = "limit checks";
   d.work = (states + complex) * checks + exact;
   d.work_budget = 1e9;
@@ -366,8 +424,10 @@ Demand time_optimal_demand(const studies::time_optimal::Spec& spec, const YAML::
   // of a segment ~100 B each
   d.memory_bytes = largest * 32.0 + nodes * checks * 100.0 + double(spec.motion_steps) * 100.0;
   char detail[240];
-  std::snprintf(detail, sizeof detail, "%.3g DP states (the largest run %.3g) and %.3g Complex segment "
-                "evaluations, x %.0f check points", states, largest, complex, checks);
+  std::snprintf(detail, sizeof detail,
+                "%.3g DP states (the largest run %.3g) and %.3g Complex segment "
+                "evaluations, x %.0f check points",
+                states, largest, complex, checks);
   d.detail = detail;
   d.mark = mark;
   return d;

@@ -5,10 +5,10 @@
 /// (`path`), 2 to core::kMaxLinks links for a path in joint space (`joint_path`, exactly one
 /// of the two); a tip path for a redundant arm is refused (it fixes no joint motion). With a
 /// joint path of other than 2 joints the velocity and torque limits must be given (the
-/// defaults are the 2-link source's). Without `arm:` it is the source's model (Ozkipcak 1994): massless links with a 1.0 kg point mass at the
-/// end of each, in a horizontal plane, with L1 = 0.5 m and L2 = 0.4 m (the source gives no
-/// lengths; studies::time_optimal::default_arm says why these). `gravity:` may be non-zero:
-/// the torque limits must then also hold the arm up.
+/// defaults are the 2-link source's). Without `arm:` it is the source's model (Ozkipcak 1994):
+/// massless links with a 1.0 kg point mass at the end of each, in a horizontal plane, with L1 = 0.5
+/// m and L2 = 0.4 m (the source gives no lengths; studies::time_optimal::default_arm says why
+/// these). `gravity:` may be non-zero: the torque limits must then also hold the arm up.
 ///
 /// ```yaml
 /// time_optimal:

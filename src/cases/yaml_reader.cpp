@@ -77,11 +77,15 @@ std::string violation(double v, const NumberRule& rule) {
   if (rule.sign == NumberRule::Sign::kPositive && !(v > 0)) return "should be > 0" + u;
   if (rule.sign == NumberRule::Sign::kNonNegative && !(v >= 0)) return "should be >= 0" + u;
   if (rule.min && v < *rule.min) {
-    if (rule.max) return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" + u;
+    if (rule.max)
+      return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" +
+             u;
     return "should be >= " + format_number(*rule.min) + u;
   }
   if (rule.max && v > *rule.max) {
-    if (rule.min) return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" + u;
+    if (rule.min)
+      return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" +
+             u;
     return "should be <= " + format_number(*rule.max) + u;
   }
   return "";
@@ -129,16 +133,20 @@ std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std
     return std::nullopt;
   }
   if (std::fpclassify(v) == FP_SUBNORMAL || (v == 0 && !out_of_range(s).empty())) {
-    diag.error(node.Mark(), name + " is " + brief(s) +
-                                (v == 0 ? ", which underflows a double to 0"
-                                        : ", a denormal number (below 2.2e-308 in magnitude, with lost precision)") +
-                                "; expected 0 or a magnitude of at least " + format_number(kMinMagnitude));
+    diag.error(
+        node.Mark(),
+        name + " is " + brief(s) +
+            (v == 0 ? ", which underflows a double to 0"
+                    : ", a denormal number (below 2.2e-308 in magnitude, with lost precision)") +
+            "; expected 0 or a magnitude of at least " + format_number(kMinMagnitude));
     return std::nullopt;
   }
   if (v != 0 && (std::abs(v) > kMaxMagnitude || std::abs(v) < kMinMagnitude)) {
-    diag.error(node.Mark(), name + " is " + format_number(v) + ", outside the magnitudes armstudy "
+    diag.error(node.Mark(), name + " is " + format_number(v) +
+                                ", outside the magnitudes armstudy "
                                 "computes with; expected 0 or a magnitude in [" +
-                                format_number(kMinMagnitude) + ", " + format_number(kMaxMagnitude) + "]");
+                                format_number(kMinMagnitude) + ", " + format_number(kMaxMagnitude) +
+                                "]");
     return std::nullopt;
   }
   const std::string bad = violation(v, rule);
@@ -163,8 +171,9 @@ Map::Map(const YAML::Node& node, Diagnostics& diag, std::string context)
   std::vector<YAML::Node> merges;
   for (const auto& kv : node) {
     if (!kv.first.IsScalar()) {
-      diag.error(kv.first.Mark(), "a key of " + (context_.empty() ? std::string("the file") : "'" + context_ + "'") +
-                                      " is not a plain word; expected a key name");
+      diag.error(kv.first.Mark(),
+                 "a key of " + (context_.empty() ? std::string("the file") : "'" + context_ + "'") +
+                     " is not a plain word; expected a key name");
       continue;
     }
     const std::string k = kv.first.Scalar();
@@ -173,7 +182,8 @@ Map::Map(const YAML::Node& node, Diagnostics& diag, std::string context)
       continue;
     }
     if (index_.count(k)) {
-      diag.error(kv.first.Mark(), "duplicate key '" + brief(path_of(k)) + "'; expected each key once");
+      diag.error(kv.first.Mark(),
+                 "duplicate key '" + brief(path_of(k)) + "'; expected each key once");
     } else {
       index_.emplace(k, entries_.size());
       entries_.push_back({k, kv.first, kv.second, false});
@@ -185,12 +195,14 @@ Map::Map(const YAML::Node& node, Diagnostics& diag, std::string context)
 void Map::merge_from(const YAML::Node& source, int depth, bool in_list) {
   const std::string where = "the merge key '" + path_of("<<") + "'";
   if (depth > kMaxDepth) {
-    diag_->error(source.Mark(), where + " nests merges too deeply; expected at most " + std::to_string(kMaxDepth));
+    diag_->error(source.Mark(),
+                 where + " nests merges too deeply; expected at most " + std::to_string(kMaxDepth));
     return;
   }
   if (source.IsSequence()) {
     if (in_list) {
-      diag_->error(source.Mark(), where + " holds a list inside a list; expected a mapping or a list of mappings");
+      diag_->error(source.Mark(),
+                   where + " holds a list inside a list; expected a mapping or a list of mappings");
       return;
     }
     for (const auto& m : source) merge_from(m, depth + 1, true);
@@ -263,11 +275,11 @@ double Map::required_number(std::string_view key, const NumberRule& rule) {
 std::optional<int> Map::integer(std::string_view key, int min, int max) {
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
-  const auto v = read_number(n, *diag_, "'" + path_of(key) + "'",
-                             NumberRule::range(min, max, ""));
+  const auto v = read_number(n, *diag_, "'" + path_of(key) + "'", NumberRule::range(min, max, ""));
   if (!v) return std::nullopt;
   if (*v != std::floor(*v)) {
-    diag_->error(n.Mark(), "'" + path_of(key) + "' is " + brief(n.Scalar()) + "; expected a whole number");
+    diag_->error(n.Mark(),
+                 "'" + path_of(key) + "' is " + brief(n.Scalar()) + "; expected a whole number");
     return std::nullopt;
   }
   return static_cast<int>(*v);
@@ -302,7 +314,8 @@ std::optional<std::string> Map::required_string(std::string_view key) {
   return string(key);
 }
 
-std::optional<std::string> Map::choice(std::string_view key, const std::vector<std::string>& allowed) {
+std::optional<std::string> Map::choice(std::string_view key,
+                                       const std::vector<std::string>& allowed) {
   const auto v = string(key);
   if (!v) return std::nullopt;
   if (std::find(allowed.begin(), allowed.end(), *v) != allowed.end()) return v;
@@ -322,7 +335,8 @@ std::optional<bool> Map::boolean(std::string_view key) {
     if (s == "true") return true;
     if (s == "false") return false;
   }
-  diag_->error(n.Mark(), "'" + path_of(key) + "' is " + describe_kind(n) + "; expected true or false");
+  diag_->error(n.Mark(),
+               "'" + path_of(key) + "' is " + describe_kind(n) + "; expected true or false");
   return std::nullopt;
 }
 
@@ -336,15 +350,20 @@ std::optional<std::vector<double>> Map::numbers(std::string_view key, const Numb
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   if (!n.IsSequence() || n.size() == 0 || (size != 0 && n.size() != size)) {
-    diag_->error(n.Mark(), "'" + path_of(key) + "' is " + describe_kind(n) + "; expected a list of " +
+    diag_->error(n.Mark(), "'" + path_of(key) + "' is " + describe_kind(n) +
+                               "; expected a list of " +
                                (size ? std::to_string(size) + " numbers" : "numbers"));
     return std::nullopt;
   }
   std::vector<double> out;
   bool ok = true;
   for (size_t i = 0; i < n.size(); ++i) {
-    const auto v = read_number(n[i], *diag_, "'" + path_of(key) + "[" + std::to_string(i + 1) + "]'", rule);
-    if (v) out.push_back(*v); else ok = false;
+    const auto v =
+        read_number(n[i], *diag_, "'" + path_of(key) + "[" + std::to_string(i + 1) + "]'", rule);
+    if (v)
+      out.push_back(*v);
+    else
+      ok = false;
   }
   if (!ok) return std::nullopt;
   return out;
@@ -354,7 +373,8 @@ std::optional<Map> Map::map(std::string_view key) {
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   if (!n.IsMap()) {
-    diag_->error(n.Mark(), "'" + path_of(key) + "' is " + describe_kind(n) + "; expected a mapping of keys");
+    diag_->error(n.Mark(),
+                 "'" + path_of(key) + "' is " + describe_kind(n) + "; expected a mapping of keys");
     return std::nullopt;
   }
   return Map(n, *diag_, path_of(key));
@@ -411,7 +431,8 @@ std::string Seq::path_at(size_t i) const { return context_ + "[" + std::to_strin
 std::optional<Map> Seq::map_at(size_t i) const {
   const YAML::Node n = node_[i];
   if (!n.IsMap()) {
-    diag_->error(n.Mark(), "'" + path_at(i) + "' is " + describe_kind(n) + "; expected a mapping of keys");
+    diag_->error(n.Mark(),
+                 "'" + path_at(i) + "' is " + describe_kind(n) + "; expected a mapping of keys");
     return std::nullopt;
   }
   return Map(n, *diag_, path_at(i));
@@ -419,7 +440,8 @@ std::optional<Map> Seq::map_at(size_t i) const {
 
 // ----------------------------------------------------------------------------- files
 
-std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text) {
+std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag,
+                                     std::string* text) {
   std::string bytes;
   if (!read_regular_file(path, diag, &bytes)) return std::nullopt;
   auto root = parse_text(bytes, diag);
@@ -437,7 +459,8 @@ std::optional<YAML::Node> parse_text(const std::string& bytes, Diagnostics& diag
     return std::nullopt;
   }
   if (root.IsNull() || !root.IsDefined()) {
-    diag.error(YAML::Mark::null_mark(), "the file is empty; expected a YAML mapping with 'study:' and 'name:'");
+    diag.error(YAML::Mark::null_mark(),
+               "the file is empty; expected a YAML mapping with 'study:' and 'name:'");
     return std::nullopt;
   }
   if (!root.IsMap()) {
@@ -448,12 +471,16 @@ std::optional<YAML::Node> parse_text(const std::string& bytes, Diagnostics& diag
   return root;
 }
 
-std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& candidates) {
+std::optional<std::string> closest(std::string_view word,
+                                   const std::vector<std::string>& candidates) {
   std::optional<std::string> best;
   size_t best_d = std::numeric_limits<size_t>::max();
   for (const auto& c : candidates) {
     const size_t d = edit_distance(word, c);
-    if (d < best_d) { best_d = d; best = c; }
+    if (d < best_d) {
+      best_d = d;
+      best = c;
+    }
   }
   if (!best) return std::nullopt;
   const size_t limit = std::max<size_t>(2, word.size() / 3);

@@ -10,10 +10,10 @@
 /// mappings in order. Files are checked before yaml-cpp reads them (yaml_source.hpp).
 
 #include <optional>
-#include <unordered_map>
-#include <unordered_set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -60,7 +60,9 @@ struct NumberRule {
   std::optional<double> max;  ///< inclusive
   std::string unit;
 
-  static NumberRule positive(std::string unit) { return {Sign::kPositive, {}, {}, std::move(unit)}; }
+  static NumberRule positive(std::string unit) {
+    return {Sign::kPositive, {}, {}, std::move(unit)};
+  }
   static NumberRule non_negative(std::string unit) {
     return {Sign::kNonNegative, {}, {}, std::move(unit)};
   }
@@ -145,9 +147,9 @@ class Map {
   YAML::Node node_;
   Diagnostics* diag_;
   std::string context_;
-  std::vector<Entry> entries_;                      ///< in file order, merged ones last
-  std::unordered_map<std::string, size_t> index_;   ///< key -> entries_ index
-  std::vector<std::string> known_;                  ///< keys asked for, in order
+  std::vector<Entry> entries_;                     ///< in file order, merged ones last
+  std::unordered_map<std::string, size_t> index_;  ///< key -> entries_ index
+  std::vector<std::string> known_;                 ///< keys asked for, in order
   std::unordered_set<std::string> known_set_;
   bool valid_ = false;
 };
@@ -179,6 +181,7 @@ std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag,
 std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag);
 
 /// The closest of `candidates` to `word` by edit distance, if close enough to suggest.
-std::optional<std::string> closest(std::string_view word, const std::vector<std::string>& candidates);
+std::optional<std::string> closest(std::string_view word,
+                                   const std::vector<std::string>& candidates);
 
 }  // namespace armstudy::cases

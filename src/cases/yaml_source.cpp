@@ -19,8 +19,10 @@ namespace {
 
 std::string size_text(double bytes) {
   char buf[32];
-  if (bytes >= 1 << 20) std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / (1 << 20));
-  else std::snprintf(buf, sizeof buf, "%.0f bytes", bytes);
+  if (bytes >= 1 << 20)
+    std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / (1 << 20));
+  else
+    std::snprintf(buf, sizeof buf, "%.0f bytes", bytes);
   return buf;
 }
 
@@ -38,13 +40,26 @@ YAML::Mark mark_at(int line, int column) {
 size_t decode_utf8(const std::string& s, size_t i, char32_t* cp) {
   const auto b = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
   const unsigned char c = b(i);
-  if (c < 0x80) { *cp = c; return 1; }
+  if (c < 0x80) {
+    *cp = c;
+    return 1;
+  }
   size_t n = 0;
   char32_t v = 0, min = 0;
-  if ((c & 0xE0) == 0xC0) { n = 2; v = c & 0x1F; min = 0x80; }
-  else if ((c & 0xF0) == 0xE0) { n = 3; v = c & 0x0F; min = 0x800; }
-  else if ((c & 0xF8) == 0xF0) { n = 4; v = c & 0x07; min = 0x10000; }
-  else return 0;
+  if ((c & 0xE0) == 0xC0) {
+    n = 2;
+    v = c & 0x1F;
+    min = 0x80;
+  } else if ((c & 0xF0) == 0xE0) {
+    n = 3;
+    v = c & 0x0F;
+    min = 0x800;
+  } else if ((c & 0xF8) == 0xF0) {
+    n = 4;
+    v = c & 0x07;
+    min = 0x10000;
+  } else
+    return 0;
   if (i + n > s.size()) return 0;
   for (size_t k = 1; k < n; ++k) {
     if ((b(i + k) & 0xC0) != 0x80) return 0;
@@ -65,12 +80,13 @@ bool check_text(const std::string& s, Diagnostics& diag) {
     if (n == 0) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(s[i]));
-      diag.error(mark_at(line, column), std::string("invalid UTF-8 (byte ") + hex +
-                                            "); expected the file in UTF-8");
+      diag.error(mark_at(line, column),
+                 std::string("invalid UTF-8 (byte ") + hex + "); expected the file in UTF-8");
       return false;
     }
     if (cp == 0) {
-      diag.error(mark_at(line, column), "a NUL byte; expected text (is this a binary or UTF-16 file?)");
+      diag.error(mark_at(line, column),
+                 "a NUL byte; expected text (is this a binary or UTF-16 file?)");
       return false;
     }
     if ((cp < 0x20 && cp != '\t' && cp != '\n' && cp != '\r') || cp == 0x7F ||
@@ -81,8 +97,11 @@ bool check_text(const std::string& s, Diagnostics& diag) {
                                             "); expected printable text, tabs and line breaks");
       return false;
     }
-    if (cp == '\n') { ++line; column = 1; }
-    else ++column;
+    if (cp == '\n') {
+      ++line;
+      column = 1;
+    } else
+      ++column;
     i += n;
   }
   return true;
@@ -98,9 +117,7 @@ class StructureCheck : public YAML::EventHandler {
  public:
   void OnDocumentStart(const YAML::Mark& mark) override { doc_mark_ = mark; }
   void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
-    leaf(mark, anchor, 1);
-  }
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, 1); }
   void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                 const std::string&) override {
     leaf(mark, anchor, 1);
@@ -108,8 +125,9 @@ class StructureCheck : public YAML::EventHandler {
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
     for (const Frame& f : stack_)
       if (f.anchor == anchor)
-        throw Refused{mark, "an alias (*) refers to a node that contains it (a recursive "
-                            "alias); expected an alias to a complete node"};
+        throw Refused{mark,
+                      "an alias (*) refers to a node that contains it (a recursive "
+                      "alias); expected an alias to a complete node"};
     const auto it = sizes_.find(anchor);
     leaf(mark, 0, it == sizes_.end() ? 1 : it->second);
   }
@@ -139,7 +157,8 @@ class StructureCheck : public YAML::EventHandler {
     if (stack_.empty()) return;
     Frame& top = stack_.back();
     if (top.map && top.children % 2 == 0 && container)
-      throw Refused{mark, "a key is a list or a mapping (a complex key); expected a plain key name"};
+      throw Refused{mark,
+                    "a key is a list or a mapping (a complex key); expected a plain key name"};
     ++top.children;
   }
   void add(const YAML::Mark& mark, size_t n) {
@@ -183,8 +202,16 @@ std::string brief(const std::string& s, size_t max_chars) {
   size_t chars = 0, i = 0;
   for (; i < s.size() && chars < max_chars; ++chars) {
     const unsigned char c = static_cast<unsigned char>(s[i]);
-    if (c == '\n') { out += "\\n"; ++i; continue; }
-    if (c == '\t') { out += "\\t"; ++i; continue; }
+    if (c == '\n') {
+      out += "\\n";
+      ++i;
+      continue;
+    }
+    if (c == '\t') {
+      out += "\\t";
+      ++i;
+      continue;
+    }
     if (c < 0x20 || c == 0x7F) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "\\x%02X", c);
@@ -212,7 +239,8 @@ bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* 
   // O_NONBLOCK: opening a FIFO without a writer must not wait for one
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) {
-    diag.error(YAML::Mark::null_mark(), std::string("cannot open the file: ") + std::strerror(errno) +
+    diag.error(YAML::Mark::null_mark(), std::string("cannot open the file: ") +
+                                            std::strerror(errno) +
                                             "; expected a readable YAML file");
     return false;
   }
@@ -222,7 +250,8 @@ bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* 
   } closer{fd};
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
-    diag.error(YAML::Mark::null_mark(), std::string("cannot read the file: ") + std::strerror(errno));
+    diag.error(YAML::Mark::null_mark(),
+               std::string("cannot read the file: ") + std::strerror(errno));
     return false;
   }
   if (S_ISDIR(st.st_mode)) {
@@ -230,14 +259,17 @@ bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* 
     return false;
   }
   if (!S_ISREG(st.st_mode)) {
-    const char* kind = S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)"
+    const char* kind = S_ISFIFO(st.st_mode)                         ? "a FIFO (named pipe)"
                        : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-                       : S_ISSOCK(st.st_mode) ? "a socket" : "not a regular file";
-    diag.error(YAML::Mark::null_mark(), std::string("is ") + kind + "; expected a regular YAML file");
+                       : S_ISSOCK(st.st_mode)                       ? "a socket"
+                                                                    : "not a regular file";
+    diag.error(YAML::Mark::null_mark(),
+               std::string("is ") + kind + "; expected a regular YAML file");
     return false;
   }
   if (static_cast<unsigned long long>(st.st_size) > kMaxFileBytes) {
-    diag.error(YAML::Mark::null_mark(), "is " + size_text(double(st.st_size)) + "; expected a YAML file of at most " +
+    diag.error(YAML::Mark::null_mark(), "is " + size_text(double(st.st_size)) +
+                                            "; expected a YAML file of at most " +
                                             size_text(double(kMaxFileBytes)));
     return false;
   }
@@ -254,15 +286,17 @@ bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* 
     const ssize_t r = ::read(fd, out.data() + got, out.size() - got);
     if (r < 0 && errno == EINTR) continue;
     if (r < 0) {
-      diag.error(YAML::Mark::null_mark(), std::string("cannot read the file: ") + std::strerror(errno));
+      diag.error(YAML::Mark::null_mark(),
+                 std::string("cannot read the file: ") + std::strerror(errno));
       return false;
     }
     if (r == 0) break;
     got += static_cast<size_t>(r);
   }
   if (got > kMaxFileBytes) {
-    diag.error(YAML::Mark::null_mark(), "grew past " + size_text(double(kMaxFileBytes)) +
-                                            " while being read; expected a YAML file of at most that size");
+    diag.error(YAML::Mark::null_mark(),
+               "grew past " + size_text(double(kMaxFileBytes)) +
+                   " while being read; expected a YAML file of at most that size");
     return false;
   }
   out.resize(got);

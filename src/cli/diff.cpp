@@ -6,9 +6,9 @@
 #include <map>
 #include <set>
 
+#include "app/run_case.hpp"
 #include "cases/case_error.hpp"
 #include "cli/diff_frames.hpp"
-#include "app/run_case.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::app {
@@ -45,10 +45,14 @@ bool beyond(const FigureDiff& f) {
 
 const std::vector<std::pair<std::string, std::string>>& provenance_labels() {
   static const std::vector<std::pair<std::string, std::string>> labels = {
-      {"armstudy_version", "armstudy version"}, {"git_commit", "git commit"},
-      {"mujoco_version", "MuJoCo"},             {"mesa_version", "Mesa"},
-      {"gl_renderer", "GL renderer"},           {"gl_version", "GL version"},
-      {"compiler", "compiler"},                 {"cpu_model", "CPU"}};
+      {"armstudy_version", "armstudy version"},
+      {"git_commit", "git commit"},
+      {"mujoco_version", "MuJoCo"},
+      {"mesa_version", "Mesa"},
+      {"gl_renderer", "GL renderer"},
+      {"gl_version", "GL version"},
+      {"compiler", "compiler"},
+      {"cpu_model", "CPU"}};
   return labels;
 }
 
@@ -87,7 +91,9 @@ std::vector<std::string> provenance_keys(const std::set<std::string>& present) {
 // a folder name safe for a case's frame copies
 std::string safe_name(const std::string& s) {
   std::string o;
-  for (char c : s) o += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c : '_';
+  for (char c : s)
+    o +=
+        (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c : '_';
   return o.empty() || o[0] == '.' ? "_" + o : o;
 }
 
@@ -97,7 +103,8 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
   const report::ResultsRecord& any = (n ? n : b)->record;
   d.name = any.case_info.name;
   d.study = any.study;
-  d.presence = b && n ? CaseDiff::Presence::kBoth : (n ? CaseDiff::Presence::kAdded : CaseDiff::Presence::kRemoved);
+  d.presence = b && n ? CaseDiff::Presence::kBoth
+                      : (n ? CaseDiff::Presence::kAdded : CaseDiff::Presence::kRemoved);
   if (b) {
     d.base_status = b->record.status;
     d.base_passed = case_passed(b->record);
@@ -114,13 +121,25 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
   if (n) nf = figures_of(n->record);
   std::vector<std::string> order;
   std::map<std::string, Figure> bm, nm;
-  for (const auto& [k, v] : bf) { if (!bm.count(k)) order.push_back(k); bm.emplace(k, v); }
-  for (const auto& [k, v] : nf) { if (!bm.count(k) && !nm.count(k)) order.push_back(k); nm.emplace(k, v); }
+  for (const auto& [k, v] : bf) {
+    if (!bm.count(k)) order.push_back(k);
+    bm.emplace(k, v);
+  }
+  for (const auto& [k, v] : nf) {
+    if (!bm.count(k) && !nm.count(k)) order.push_back(k);
+    nm.emplace(k, v);
+  }
   for (const auto& k : order) {
     FigureDiff f;
     f.name = k;
-    if (bm.count(k)) { f.base = bm[k].value; f.unit = bm[k].unit; }
-    if (nm.count(k)) { f.now = nm[k].value; if (f.unit.empty()) f.unit = nm[k].unit; }
+    if (bm.count(k)) {
+      f.base = bm[k].value;
+      f.unit = bm[k].unit;
+    }
+    if (nm.count(k)) {
+      f.now = nm[k].value;
+      if (f.unit.empty()) f.unit = nm[k].unit;
+    }
     f.tolerance = tol.lookup(d.study, k);
     f.beyond = (b && n) ? beyond(f) : false;  // an added or removed case counts once, as itself
     d.figures.push_back(std::move(f));
@@ -137,7 +156,8 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
       if (!bc.count(c.name) && !nc.count(c.name)) names.push_back(c.name);
       nc[c.name] = &c;
     }
-    auto num = [](const report::CheckRecord* c, double report::CheckRecord::*field) -> std::optional<double> {
+    auto num = [](const report::CheckRecord* c,
+                  double report::CheckRecord::*field) -> std::optional<double> {
       if (!c) return std::nullopt;
       return c->*field;
     };
@@ -165,8 +185,9 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
       const bool in_b = std::find(fb.begin(), fb.end(), f) != fb.end();
       const bool in_n = std::find(fn.begin(), fn.end(), f) != fn.end();
       if (in_b && in_n) {
-        d.frames.push_back(compare_frame(b->folder, n->folder, f, fo.channel_tolerance, fo.pixels_allowed,
-                                         fo.frames_root, "diff-frames/" + safe_name(d.name)));
+        d.frames.push_back(compare_frame(b->folder, n->folder, f, fo.channel_tolerance,
+                                         fo.pixels_allowed, fo.frames_root,
+                                         "diff-frames/" + safe_name(d.name)));
       } else {
         report::FrameDiff x;
         x.file = f;
@@ -184,7 +205,9 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
     for (const auto& [k, v] : pn) keys.insert(k);
     for (const auto& k : provenance_keys(keys)) {
       const std::string x = pb.count(k) ? pb.at(k) : "", y = pn.count(k) ? pn.at(k) : "";
-      if (x != y) d.provenance.push_back({k, label_of(k), x.empty() ? "(none)" : x, y.empty() ? "(none)" : y});
+      if (x != y)
+        d.provenance.push_back(
+            {k, label_of(k), x.empty() ? "(none)" : x, y.empty() ? "(none)" : y});
     }
   }
   return d;
@@ -218,7 +241,8 @@ void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutp
   std::map<std::string, const CaseDiff*> cases;
   for (const auto& c : out->cases) cases[c.name] = &c;
   auto units_of = [](const json& t, const std::string& f) {
-    return t.contains("units") && t["units"].contains(f) ? t["units"][f].get<std::string>() : std::string();
+    return t.contains("units") && t["units"].contains(f) ? t["units"][f].get<std::string>()
+                                                         : std::string();
   };
   for (const auto& name : names) {
     const json* x = rb.count(name) ? rb[name] : nullptr;
@@ -236,8 +260,10 @@ void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutp
       for (const auto& f : cases[name]->figures)
         if (f.tolerance.ignore) ignored.insert(f.name);
     std::set<std::string> figs;  // a row of one run only ranks as infinite, with no figure
-    if (x && y) for (const auto& [k, v] : (*x)["key_figures"].items()) figs.insert(k);
-    if (x && y) for (const auto& [k, v] : (*y)["key_figures"].items()) figs.insert(k);
+    if (x && y)
+      for (const auto& [k, v] : (*x)["key_figures"].items()) figs.insert(k);
+    if (x && y)
+      for (const auto& [k, v] : (*y)["key_figures"].items()) figs.insert(k);
     double best = -1;
     for (const auto& f : figs) {
       if (ignored.count(f)) continue;
@@ -249,7 +275,8 @@ void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutp
       if (a && b && same_number(*a, *b)) continue;
       ++row.figures_changed;
       double rel = INFINITY;
-      if (a && b && std::isfinite(*a) && std::isfinite(*b) && *a != 0) rel = std::abs(*b - *a) / std::abs(*a);
+      if (a && b && std::isfinite(*a) && std::isfinite(*b) && *a != 0)
+        rel = std::abs(*b - *a) / std::abs(*a);
       if (rel > best) {
         best = rel;
         row.figure = f;
@@ -271,8 +298,12 @@ void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutp
 }  // namespace
 
 std::vector<CaseOutput> read_run(const fs::path& dir) {
-  if (!fs::exists(dir)) throw DiffInputError(dir.string() + ": no such folder; expected an output folder of 'armstudy run' or 'merge'");
-  if (!fs::is_directory(dir)) throw DiffInputError(dir.string() + ": not a folder; expected an output folder of 'armstudy run' or 'merge'");
+  if (!fs::exists(dir))
+    throw DiffInputError(
+        dir.string() + ": no such folder; expected an output folder of 'armstudy run' or 'merge'");
+  if (!fs::is_directory(dir))
+    throw DiffInputError(dir.string() +
+                         ": not a folder; expected an output folder of 'armstudy run' or 'merge'");
   std::vector<std::string> problems;
   std::vector<CaseOutput> out = collect_outputs({dir}, &problems);
   // collect_outputs read every shared key of each file strictly (a misspelt, missing or
@@ -283,7 +314,9 @@ std::vector<CaseOutput> read_run(const fs::path& dir) {
     throw DiffInputError(msg);
   }
   if (out.empty())
-    throw DiffInputError(dir.string() + ": no case folder with a results.json; expected an output folder of 'armstudy run' or 'merge'");
+    throw DiffInputError(dir.string() +
+                         ": no case folder with a results.json; expected an output folder of "
+                         "'armstudy run' or 'merge'");
   return out;
 }
 
@@ -302,12 +335,14 @@ report::RunDiff diff_runs(const std::vector<CaseOutput>& base, const std::vector
   for (const auto& [k, v] : b) names.insert(k);
   for (const auto& [k, v] : n) names.insert(k);
   for (const auto& name : names)
-    d.cases.push_back(compare_case(b.count(name) ? b[name] : nullptr, n.count(name) ? n[name] : nullptr,
-                                   tolerances, frames));
+    d.cases.push_back(compare_case(b.count(name) ? b[name] : nullptr,
+                                   n.count(name) ? n[name] : nullptr, tolerances, frames));
   // the runs' provenance as a whole: each item's distinct values over all cases
   std::map<std::string, std::set<std::string>> pb, pn;
-  for (const auto& c : base) for (const auto& [k, v] : provenance_of(c.record)) pb[k].insert(v);
-  for (const auto& c : now) for (const auto& [k, v] : provenance_of(c.record)) pn[k].insert(v);
+  for (const auto& c : base)
+    for (const auto& [k, v] : provenance_of(c.record)) pb[k].insert(v);
+  for (const auto& c : now)
+    for (const auto& [k, v] : provenance_of(c.record)) pn[k].insert(v);
   std::set<std::string> keys;
   for (const auto& [k, v] : pb) keys.insert(k);
   for (const auto& [k, v] : pn) keys.insert(k);
@@ -361,7 +396,8 @@ int run_diff(const DiffOptions& o) {
     write_file_atomic(o.out / "diff.md", report::diff_markdown(d));
     report::write_diff_page(o.out, d);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "armstudy diff: cannot write the diff into %s: %s\n", o.out.c_str(), e.what());
+    std::fprintf(stderr, "armstudy diff: cannot write the diff into %s: %s\n", o.out.c_str(),
+                 e.what());
     return kRuntime;
   }
   const size_t moved = d.beyond_count();
@@ -370,8 +406,8 @@ int run_diff(const DiffOptions& o) {
   for (const auto& c : d.cases)
     if (c.beyond() && listed++ < 10) names += "\n  " + c.name;
   if (listed > 10) names += "\n  ... and " + std::to_string(listed - 10) + " more";
-  std::fprintf(stderr, "%zu case(s) in %s, %zu in %s: %s%s\ndiff: %s, %s\n", base.size(), o.base.c_str(),
-               now.size(), o.now.c_str(),
+  std::fprintf(stderr, "%zu case(s) in %s, %zu in %s: %s%s\ndiff: %s, %s\n", base.size(),
+               o.base.c_str(), now.size(), o.now.c_str(),
                moved ? (std::to_string(moved) + " moved beyond tolerance:").c_str()
                      : "nothing moved beyond tolerance",
                names.c_str(), (o.out / "diff.html").c_str(), (o.out / "diff.md").c_str());

@@ -30,8 +30,8 @@ class DiffInputError : public std::runtime_error {
 std::vector<CaseOutput> read_run(const std::filesystem::path& dir);
 
 struct FrameOptions {
-  int channel_tolerance = 0;      ///< a pixel is beyond when a channel differs by more (0-255)
-  std::size_t pixels_allowed = 0; ///< a frame is beyond when more pixels are
+  int channel_tolerance = 0;       ///< a pixel is beyond when a channel differs by more (0-255)
+  std::size_t pixels_allowed = 0;  ///< a frame is beyond when more pixels are
   /// Where frame copies and difference images go (FrameDiff paths are relative to it),
   /// as frames_root/diff-frames/<case>/...; empty: frames are compared by bytes only.
   std::filesystem::path frames_root;
@@ -45,8 +45,8 @@ report::RunDiff diff_runs(const std::vector<CaseOutput>& base, const std::vector
 struct DiffOptions {
   std::filesystem::path base, now;
   std::filesystem::path out = "reports/diff";
-  std::string tolerances_file;           ///< empty: built-in tolerances
-  std::optional<int> pixel_tolerance;    ///< overrides the file's frames.channel
+  std::string tolerances_file;                ///< empty: built-in tolerances
+  std::optional<int> pixel_tolerance;         ///< overrides the file's frames.channel
   std::optional<std::size_t> pixels_allowed;  ///< overrides the file's frames.pixels
 };
 

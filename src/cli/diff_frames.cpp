@@ -84,7 +84,8 @@ report::FrameDiff compare_frame(const fs::path& base, const fs::path& now, const
   fs::copy_file(b, out_dir / d.new_copy, fs::copy_options::overwrite_existing);
   if (ia.width != ib.width || ia.height != ib.height) {
     d.size_differs = true;
-    d.pixels_beyond = static_cast<std::size_t>(std::max(ia.width * ia.height, ib.width * ib.height));
+    d.pixels_beyond =
+        static_cast<std::size_t>(std::max(ia.width * ia.height, ib.width * ib.height));
     d.beyond = true;
     return d;
   }

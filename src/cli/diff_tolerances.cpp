@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <string_view>
 
-#include "cases/yaml_reader.hpp"
 #include "app/pipeline.hpp"
+#include "cases/yaml_reader.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -109,8 +109,11 @@ DiffTolerances load_diff_tolerances(const std::string& path) {
       const std::string name = kv.first.Scalar();
       if (std::find(known.begin(), known.end(), name) == known.end()) {
         const auto c = cases::closest(name, known);
-        studies->diag().error(kv.first.Mark(), "unknown study '" + name + "'" +
-                                                   (c ? "; did you mean '" + *c + "'?" : "; expected one of placement, pendulum, throwing, time_optimal"));
+        studies->diag().error(
+            kv.first.Mark(),
+            "unknown study '" + name + "'" +
+                (c ? "; did you mean '" + *c + "'?"
+                   : "; expected one of placement, pendulum, throwing, time_optimal"));
         studies->get(name);
         continue;
       }

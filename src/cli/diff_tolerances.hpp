@@ -41,8 +41,8 @@ struct DiffTolerances {
   std::string file;  ///< empty: built-in only
   std::optional<report::FigureTolerance> fallback;
   std::vector<Study> studies;
-  std::optional<int> pixel_channel;     ///< frames.channel
-  std::optional<std::size_t> pixels;    ///< frames.pixels
+  std::optional<int> pixel_channel;   ///< frames.channel
+  std::optional<std::size_t> pixels;  ///< frames.pixels
 
   /// The tolerance of key figure `figure` of study `study`.
   report::FigureTolerance lookup(const std::string& study, const std::string& figure) const;

@@ -24,7 +24,8 @@ void install_interrupt_cleanup() {
     }
     report::kill_browsers();
     report::remove_own_scratch();  // waits for a folder swap under way to finish
-    std::fprintf(stderr, "\narmstudy: stopped by %s; unfinished output removed, earlier reports kept\n",
+    std::fprintf(stderr,
+                 "\narmstudy: stopped by %s; unfinished output removed, earlier reports kept\n",
                  sigabbrev_np(sig) ? (std::string("SIG") + sigabbrev_np(sig)).c_str() : "a signal");
     std::fflush(stderr);
     ::_exit(128 + sig);

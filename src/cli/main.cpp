@@ -22,14 +22,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/pipeline.hpp"
+#include "app/run_case.hpp"
 #include "cases/case_error.hpp"
 #include "cli/diff.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/merge.hpp"
-#include "app/pipeline.hpp"
-#include "cli/sweep.hpp"
 #include "cli/progress.hpp"
-#include "app/run_case.hpp"
+#include "cli/sweep.hpp"
 #include "report/case_report.hpp"
 #include "report/sweep_report.hpp"
 #include "scene/phase_times.hpp"
@@ -62,8 +62,10 @@ bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* ou
         continue;
       }
       if (const char* clash = armstudy::app::run_level_file(c.info.name)) {
-        std::fprintf(stderr, "%s: case name '%s' is the name of %s, which armstudy writes beside the "
-                             "case folders; expected another name\n", p.c_str(), c.info.name.c_str(), clash);
+        std::fprintf(stderr,
+                     "%s: case name '%s' is the name of %s, which armstudy writes beside the "
+                     "case folders; expected another name\n",
+                     p.c_str(), c.info.name.c_str(), clash);
         ok = false;
         continue;
       }
@@ -105,7 +107,8 @@ bool parse_shard(const std::string& text, int* index, int* count) {
 // true if out_dir/<name>/results.json is what this run would write again: the same case
 // file contents, armstudy version and commit, and render option, and the case passed (a
 // failed case is always redone). A missing report.pdf is printed by finish_reports.
-bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c, const armstudy::app::RunOptions& options) {
+bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
+                  const armstudy::app::RunOptions& options) {
   const auto rj = out_dir / c.info.name / "results.json";
   if (!std::filesystem::exists(rj)) return false;
   try {
@@ -128,9 +131,10 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     return kExitBadInput;
   }
   if (options.pdf && armstudy::report::find_chromium().empty()) {
-    std::fprintf(stderr, "armstudy: --pdf needs headless Chromium, and none was found (looked for "
-                         "$ARMSTUDY_CHROMIUM, then chromium, chromium-browser, google-chrome on "
-                         "PATH); install it with 'apt-get install chromium'; nothing was written\n");
+    std::fprintf(stderr,
+                 "armstudy: --pdf needs headless Chromium, and none was found (looked for "
+                 "$ARMSTUDY_CHROMIUM, then chromium, chromium-browser, google-chrome on "
+                 "PATH); install it with 'apt-get install chromium'; nothing was written\n");
     return kExitRuntime;
   }
   // a stable subset: cases sorted by name, every N-th from I
@@ -145,14 +149,16 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::vector<LoadedCase> mine;
     for (size_t i = 0; i < cases.size(); ++i)
       if (static_cast<int>(i % count) == index) mine.push_back(std::move(cases[i]));
-    std::fprintf(stderr, "shard %d/%d: %zu of %zu case(s)\n", index, count, mine.size(), cases.size());
+    std::fprintf(stderr, "shard %d/%d: %zu of %zu case(s)\n", index, count, mine.size(),
+                 cases.size());
     cases = std::move(mine);
   }
   // what killed runs on this host left behind (hidden temporary folders and files)
   {
     const auto stale = armstudy::app::remove_stale_outputs(options.out_dir);
     for (const auto& folder : stale.restored)
-      std::fprintf(stderr, "put back %s, the earlier report a killed run had moved aside\n", folder.c_str());
+      std::fprintf(stderr, "put back %s, the earlier report a killed run had moved aside\n",
+                   folder.c_str());
     if (stale.removed)
       std::fprintf(stderr, "removed %zu temporary folder(s) or file(s) of killed runs in %s\n",
                    stale.removed, options.out_dir.c_str());
@@ -161,12 +167,16 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::vector<LoadedCase> todo;
     size_t skipped = 0;
     for (auto& c : cases) {
-      if (already_done(options.out_dir, c, options)) ++skipped;
-      else todo.push_back(std::move(c));
+      if (already_done(options.out_dir, c, options))
+        ++skipped;
+      else
+        todo.push_back(std::move(c));
     }
     if (skipped)
-      std::fprintf(stderr, "skipped %zu case(s) whose output exists and passed for the same case "
-                           "file, armstudy version and options (--force redoes them)\n", skipped);
+      std::fprintf(stderr,
+                   "skipped %zu case(s) whose output exists and passed for the same case "
+                   "file, armstudy version and options (--force redoes them)\n",
+                   skipped);
     cases = std::move(todo);
   }
   // with --pdf, one browser prints each case's page as soon as the case is in place
@@ -276,7 +286,9 @@ int cmd_list(const std::vector<std::string>& items, bool as_json) {
   if (as_json) {
     nlohmann::json j = nlohmann::json::array();
     for (const auto& c : cases)
-      j.push_back({{"id", c.info.name}, {"study", c.info.study}, {"path", c.info.path},
+      j.push_back({{"id", c.info.name},
+                   {"study", c.info.study},
+                   {"path", c.info.path},
                    {"sha256", c.info.sha256}});
     std::printf("%s\n", j.dump(2).c_str());
   } else {
@@ -317,8 +329,8 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
           name = o.record.case_info.sweep->name;
           break;
         }
-      const int plots = armstudy::report::write_sweep_report(std::filesystem::path(out) / "sweep",
-                                                             table, name);
+      const int plots =
+          armstudy::report::write_sweep_report(std::filesystem::path(out) / "sweep", table, name);
       std::fprintf(stderr, "sweep report: %s/sweep/index.html (%d plot(s))\n", out.c_str(), plots);
     }
     armstudy::report::write_index(out, armstudy::app::index_studies());
@@ -333,8 +345,9 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
 
 int main(int argc, char** argv) {
   armstudy::app::install_interrupt_cleanup();  // first: every thread inherits its signal mask
-  CLI::App app{"armstudy: energy-optimal placement, throwing and time-optimal studies of planar "
-               "robot arms, from YAML case files to MuJoCo-rendered reports"};
+  CLI::App app{
+      "armstudy: energy-optimal placement, throwing and time-optimal studies of planar "
+      "robot arms, from YAML case files to MuJoCo-rendered reports"};
   app.set_version_flag("--version", std::string("armstudy ") + armstudy::kVersion);
   app.require_subcommand(1);
   std::string studies;
@@ -356,8 +369,10 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_dir, "Output folder; each case goes to OUT/<case name>/")
       ->capture_default_str();
   run->add_flag("--no-render", no_render, "Skip MuJoCo frame rendering (everything else is made)");
-  run->add_flag("--pdf", options.pdf, "Also print each report to report.pdf with headless Chromium");
-  run->add_option("--jobs,-j", jobs, "Cases run in parallel")->check(CLI::Range(1, 64))
+  run->add_flag("--pdf", options.pdf,
+                "Also print each report to report.pdf with headless Chromium");
+  run->add_option("--jobs,-j", jobs, "Cases run in parallel")
+      ->check(CLI::Range(1, 64))
       ->capture_default_str();
   std::string shard;
   bool force = false;
@@ -374,8 +389,11 @@ int main(int argc, char** argv) {
   auto* sweep = app.add_subcommand("sweep", "Parameter sweeps over a base case");
   sweep->require_subcommand(1);
   auto* expand = sweep->add_subcommand("expand", "Write one case file per sweep point");
-  expand->add_option("sweep", sweep_file, "Sweep file (YAML)")->required()->check(CLI::ExistingFile);
-  expand->add_option("--out", sweep_out, "Folder for the generated case files")->capture_default_str();
+  expand->add_option("sweep", sweep_file, "Sweep file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  expand->add_option("--out", sweep_out, "Folder for the generated case files")
+      ->capture_default_str();
 
   std::vector<std::string> list_items;
   bool list_json = false;
@@ -385,26 +403,36 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> merge_dirs;
   std::string merge_out;
-  auto* merge = app.add_subcommand(
-      "merge", "Build index.html, summary.md, junit.xml, sweep tables and the sweep report (sweep/index.html) from the results.json of output folders");
+  auto* merge =
+      app.add_subcommand("merge",
+                         "Build index.html, summary.md, junit.xml, sweep tables and the sweep "
+                         "report (sweep/index.html) from the results.json of output folders");
   merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
   merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
   armstudy::app::DiffOptions diff_options;
   std::string diff_base, diff_new, diff_out = diff_options.out.string();
   auto* diff = app.add_subcommand(
-      "diff", "What changed between two output folders of run or merge (diff.html, diff.md); exit 0 "
-              "when nothing moved beyond its tolerance, 1 when something did, 2 on bad input");
-  diff->add_option("base", diff_base, "The base output folder (e.g. the main branch's reports)")->required();
-  diff->add_option("new", diff_new, "The new output folder (e.g. the pull request's reports)")->required();
-  diff->add_option("--out", diff_out, "Where to write diff.html and diff.md")->capture_default_str();
-  diff->add_option("--tolerances", diff_options.tolerances_file,
-                   "YAML file of tolerances per study and key figure (default: exact, run times ignored)");
-  diff->add_option("--pixel-tolerance", diff_options.pixel_tolerance,
-                   "A pixel differs when a channel differs by more than this (0-255; default 0 or the "
-                   "tolerances file's frames.channel)")->check(CLI::Range(0, 255));
-  diff->add_option("--pixels", diff_options.pixels_allowed,
-                   "Pixels beyond the pixel tolerance a frame may have and still match (default 0 or "
-                   "frames.pixels)");
+      "diff",
+      "What changed between two output folders of run or merge (diff.html, diff.md); exit 0 "
+      "when nothing moved beyond its tolerance, 1 when something did, 2 on bad input");
+  diff->add_option("base", diff_base, "The base output folder (e.g. the main branch's reports)")
+      ->required();
+  diff->add_option("new", diff_new, "The new output folder (e.g. the pull request's reports)")
+      ->required();
+  diff->add_option("--out", diff_out, "Where to write diff.html and diff.md")
+      ->capture_default_str();
+  diff->add_option(
+      "--tolerances", diff_options.tolerances_file,
+      "YAML file of tolerances per study and key figure (default: exact, run times ignored)");
+  diff->add_option(
+          "--pixel-tolerance", diff_options.pixel_tolerance,
+          "A pixel differs when a channel differs by more than this (0-255; default 0 or the "
+          "tolerances file's frames.channel)")
+      ->check(CLI::Range(0, 255));
+  diff->add_option(
+      "--pixels", diff_options.pixels_allowed,
+      "Pixels beyond the pixel tolerance a frame may have and still match (default 0 or "
+      "frames.pixels)");
   auto* validate = app.add_subcommand("validate", "Check case files without running them");
   validate->add_option("cases", validate_paths, "Case files (YAML)")->required();
   validate->add_flag("--allow-large", allow_large, allow_large_help);
@@ -413,14 +441,20 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help, version or the error
-    return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success) ? 0 : (code ? kExitBadInput : 0);
+    return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)
+               ? 0
+               : (code ? kExitBadInput : 0);
   }
   int code = kExitRuntime;
   try {
-    if (*validate) code = cmd_validate(validate_paths, allow_large);
-    else if (*expand) code = cmd_sweep_expand(sweep_file, sweep_out);
-    else if (*list) code = cmd_list(list_items, list_json);
-    else if (*merge) code = cmd_merge(merge_dirs, merge_out);
+    if (*validate)
+      code = cmd_validate(validate_paths, allow_large);
+    else if (*expand)
+      code = cmd_sweep_expand(sweep_file, sweep_out);
+    else if (*list)
+      code = cmd_list(list_items, list_json);
+    else if (*merge)
+      code = cmd_merge(merge_dirs, merge_out);
     else if (*diff) {
       diff_options.base = diff_base;
       diff_options.now = diff_new;

@@ -9,9 +9,9 @@
 #include <stdexcept>
 
 #include "app/run_case.hpp"
+#include "report/number_format.hpp"
 #include "report/results_fields.hpp"
 #include "report/results_record.hpp"
-#include "report/number_format.hpp"
 
 namespace armstudy::app {
 namespace fs = std::filesystem;
@@ -29,8 +29,10 @@ std::string xml_escape(const std::string& s) {
       case '"': o += "&quot;"; break;
       case '\'': o += "&apos;"; break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') o += ' ';
-        else o += c;
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t')
+          o += ' ';
+        else
+          o += c;
     }
   }
   return o;
@@ -39,9 +41,12 @@ std::string xml_escape(const std::string& s) {
 std::string md_cell(std::string s) {
   std::string o;
   for (char c : s) {
-    if (c == '|') o += "\\|";
-    else if (c == '\n') o += ' ';
-    else o += c;
+    if (c == '|')
+      o += "\\|";
+    else if (c == '\n')
+      o += ' ';
+    else
+      o += c;
   }
   return o;
 }
@@ -72,7 +77,8 @@ std::string csv_cell(const std::string& s) {
 }
 
 // key figure names of a study in first-seen order over the (sorted) cases
-std::vector<std::pair<std::string, std::string>> figure_columns(const std::vector<const CaseOutput*>& cases) {
+std::vector<std::pair<std::string, std::string>> figure_columns(
+    const std::vector<const CaseOutput*>& cases) {
   std::vector<std::pair<std::string, std::string>> cols;
   for (const auto* c : cases)
     for (const auto& k : c->record.key_figures)
@@ -91,7 +97,8 @@ std::optional<double> figure(const ResultsRecord& r, const std::string& name) {
 }  // namespace
 
 const char* run_level_file(const std::string& name) {
-  for (const char* f : {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"})
+  for (const char* f :
+       {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"})
     if (name == f) return f;
   return nullptr;
 }
@@ -110,7 +117,8 @@ std::string results_problem(const json& r) {
   return "";
 }
 
-std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::vector<std::string>* warnings) {
+std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
+                                        std::vector<std::string>* warnings) {
   std::map<std::string, CaseOutput> by_name;
   for (const auto& dir : dirs) {
     if (!fs::is_directory(dir)) {
@@ -145,9 +153,10 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::
         const std::string reason = rj.string() + ": " + problem;
         if (warnings) warnings->push_back(reason);
         ResultsRecord bad;
-        bad.study = c.results.is_object() && c.results.contains("study") && c.results["study"].is_string()
-                        ? c.results["study"].get<std::string>()
-                        : std::string("unreadable");
+        bad.study =
+            c.results.is_object() && c.results.contains("study") && c.results["study"].is_string()
+                ? c.results["study"].get<std::string>()
+                : std::string("unreadable");
         bad.case_info.name = f.filename().string();
         bad.status = "unreadable";
         bad.message = "results.json unreadable: " + reason;
@@ -156,7 +165,9 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs, std::
       }
       const std::string n = c.record.case_info.name;
       if (by_name.count(n)) {
-        if (warnings) warnings->push_back(rj.string() + ": case '" + n + "' already found in " + by_name[n].folder.string() + "; skipped");
+        if (warnings)
+          warnings->push_back(rj.string() + ": case '" + n + "' already found in " +
+                              by_name[n].folder.string() + "; skipped");
         continue;
       }
       by_name.emplace(n, std::move(c));
@@ -187,16 +198,20 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
   for (const auto& [study, list] : by_study) {
     const auto cols = figure_columns(list);
     md << "## " << study << " (" << list.size() << ")\n\n| case | status | checks |";
-    for (const auto& [n, u] : cols) md << " " << md_cell(n) << (u.empty() ? "" : " (" + u + ")") << " |";
+    for (const auto& [n, u] : cols)
+      md << " " << md_cell(n) << (u.empty() ? "" : " (" + u + ")") << " |";
     md << "\n|---|---|---|";
     for (size_t i = 0; i < cols.size(); ++i) md << "---:|";
     md << "\n";
     for (const auto* c : list) {
       const auto& r = c->record;
       size_t passed = 0, total = 0;
-      for (const auto& ch : r.checks) { ++total; passed += ch.passed; }
-      md << "| " << md_cell(r.case_info.name) << " | " << (case_passed(r) ? "ok" : "FAILED") << " | " << passed << "/"
-         << total << " |";
+      for (const auto& ch : r.checks) {
+        ++total;
+        passed += ch.passed;
+      }
+      md << "| " << md_cell(r.case_info.name) << " | " << (case_passed(r) ? "ok" : "FAILED")
+         << " | " << passed << "/" << total << " |";
       for (const auto& [n, u] : cols) {
         const auto v = figure(r, n);
         md << " " << (v ? report::format_sig(*v, 6) : "") << " |";
@@ -207,7 +222,8 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
   }
   std::string s = md.str();
   if (s.size() > max_bytes) {
-    const std::string note = "\n\n*Truncated: the full summary is larger than " + std::to_string(max_bytes) +
+    const std::string note = "\n\n*Truncated: the full summary is larger than " +
+                             std::to_string(max_bytes) +
                              " bytes; see junit.xml and each case's results.json.*\n";
     s.resize(max_bytes - note.size());
     s.resize(s.rfind('\n') + 1);
@@ -240,22 +256,25 @@ std::string junit_xml(const std::vector<CaseOutput>& cases) {
         tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_escape(ch.name) << "\"";
         if (!ch.passed) {
           ++sf;
-          tc << "><failure message=\"" << xml_escape("value " + report::format_sig(ch.value, 6) +
-                                                     " exceeds tolerance " + report::format_sig(ch.tolerance, 6))
+          tc << "><failure message=\""
+             << xml_escape("value " + report::format_sig(ch.value, 6) + " exceeds tolerance " +
+                           report::format_sig(ch.tolerance, 6))
              << "\">" << xml_escape(ch.description) << "</failure></testcase>\n";
         } else {
           tc << "/>\n";
         }
       }
     }
-    body << "  <testsuite name=\"" << xml_escape(study) << "\" tests=\"" << st << "\" failures=\"" << sf
-         << "\" errors=\"0\">\n" << tc.str() << "  </testsuite>\n";
+    body << "  <testsuite name=\"" << xml_escape(study) << "\" tests=\"" << st << "\" failures=\""
+         << sf << "\" errors=\"0\">\n"
+         << tc.str() << "  </testsuite>\n";
     tests += st;
     failures += sf;
   }
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"armstudy\" tests=\"" << tests
-    << "\" failures=\"" << failures << "\" errors=\"0\">\n" << body.str() << "</testsuites>\n";
+    << "\" failures=\"" << failures << "\" errors=\"0\">\n"
+    << body.str() << "</testsuites>\n";
   return x.str();
 }
 
@@ -272,7 +291,8 @@ SweepTable sweep_table(const std::vector<CaseOutput>& cases) {
     if (!c.record.case_info.sweep) continue;
     t.rows.push_back(&c);
     for (const auto& [key, value] : c.record.case_info.sweep->point)
-      if (std::find(t.params.begin(), t.params.end(), key) == t.params.end()) t.params.push_back(key);
+      if (std::find(t.params.begin(), t.params.end(), key) == t.params.end())
+        t.params.push_back(key);
   }
   std::sort(t.params.begin(), t.params.end());
   t.figures = figure_columns(t.rows);

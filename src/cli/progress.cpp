@@ -12,8 +12,10 @@ std::string clock_text(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "--:--";
   const long s = std::lround(seconds);
   char buf[32];
-  if (s >= 3600) std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
-  else std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+  if (s >= 3600)
+    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
   return buf;
 }
 
@@ -125,8 +127,8 @@ void ProgressReporter::update(int id, double f, std::string_view stage) {
     tasks_.erase(it);
     return;
   }
-  const bool due = live_ ? now - last_print_ >= std::chrono::milliseconds(100)
-                         : now - t.last_print >= period_;
+  const bool due =
+      live_ ? now - last_print_ >= std::chrono::milliseconds(100) : now - t.last_print >= period_;
   if (due) print_locked(t, now);
 }
 

@@ -28,7 +28,8 @@ class ProgressReporter {
   using Clock = std::chrono::steady_clock;
   /// `live`: redraw one line in place (a terminal); otherwise print a line every `period`.
   /// Starts the heartbeat thread.
-  ProgressReporter(std::FILE* out, bool live, std::chrono::seconds period = std::chrono::seconds(5));
+  ProgressReporter(std::FILE* out, bool live,
+                   std::chrono::seconds period = std::chrono::seconds(5));
   /// For tests: time from `clock`, no heartbeat thread (call heartbeat() instead).
   ProgressReporter(std::FILE* out, bool live, std::chrono::seconds period,
                    std::function<Clock::time_point()> clock);

@@ -5,10 +5,10 @@
 #include <regex>
 #include <sstream>
 
-#include "cases/case_info.hpp"
-#include "cases/yaml_reader.hpp"
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
+#include "cases/case_info.hpp"
+#include "cases/yaml_reader.hpp"
 
 namespace armstudy::app {
 namespace fs = std::filesystem;
@@ -26,7 +26,9 @@ struct Segment {
 // key(.key)* with an optional 1-based [index] after each key; no regex: std::regex recurses
 // per character and a long hostile path would overflow the stack
 bool parse_path(const std::string& path, std::vector<Segment>* out) {
-  const auto is_alpha = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
+  const auto is_alpha = [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
+  };
   const auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
   if (path.size() > kMaxPathChars) return false;
   size_t i = 0;
@@ -61,7 +63,8 @@ bool parse_path(const std::string& path, std::vector<Segment>* out) {
 size_t count_nodes(const YAML::Node& n) {
   size_t c = 1;
   if (n.IsSequence() || n.IsMap())
-    for (const auto& it : n) c += n.IsMap() ? count_nodes(it.first) + count_nodes(it.second) : count_nodes(it);
+    for (const auto& it : n)
+      c += n.IsMap() ? count_nodes(it.first) + count_nodes(it.second) : count_nodes(it);
   return c;
 }
 
@@ -75,7 +78,8 @@ std::string scalar_text(const YAML::Node& n) {
 
 std::string set_path(YAML::Node root, const std::string& path, const YAML::Node& value) {
   std::vector<Segment> segs;
-  if (!parse_path(path, &segs)) return "'" + cases::brief(path) + "' is not a parameter path like arm.links[2].length";
+  if (!parse_path(path, &segs))
+    return "'" + cases::brief(path) + "' is not a parameter path like arm.links[2].length";
   YAML::Node cur = root;
   for (size_t i = 0; i < segs.size(); ++i) {
     const Segment& s = segs[i];
@@ -91,8 +95,7 @@ std::string set_path(YAML::Node root, const std::string& path, const YAML::Node&
       continue;
     }
     YAML::Node list = cur[s.key];
-    if (!list || !list.IsSequence())
-      return "'" + s.key + "' is not a list in the base case";
+    if (!list || !list.IsSequence()) return "'" + s.key + "' is not a list in the base case";
     if (static_cast<size_t>(s.index) > list.size())
       return "'" + s.key + "[" + std::to_string(s.index) + "]' is past the end of a list of " +
              std::to_string(list.size());
@@ -131,7 +134,8 @@ Sweep load_sweep(const std::string& path) {
   const auto mode = root.choice("mode", {"grid", "zip"});
   sw.zip = mode && *mode == "zip";
   auto axes = root.seq("axes");
-  if (!axes && !root.has("axes")) root.error_here("missing required key 'axes'; expected a list of {path, values|range}");
+  if (!axes && !root.has("axes"))
+    root.error_here("missing required key 'axes'; expected a list of {path, values|range}");
   if (axes && axes->size() == 0) root.error("axes", "'axes' is empty; expected at least one axis");
   if (axes) {
     for (size_t i = 0; i < axes->size(); ++i) {
@@ -144,11 +148,13 @@ Sweep load_sweep(const std::string& path) {
       if (has_values == has_range) {
         a->get("values");
         a->get("range");
-        a->error_here("axis " + std::to_string(i + 1) + " needs exactly one of 'values' or 'range'");
+        a->error_here("axis " + std::to_string(i + 1) +
+                      " needs exactly one of 'values' or 'range'");
       } else if (has_values) {
         const YAML::Node v = a->get("values");
         if (!v.IsSequence() || v.size() == 0)
-          a->error("values", "'" + a->path_of("values") + "' is not a non-empty list; expected a list of values");
+          a->error("values", "'" + a->path_of("values") +
+                                 "' is not a non-empty list; expected a list of values");
         else
           for (const auto& x : v) ax.values.push_back(x);
       } else if (auto r = a->map("range")) {
@@ -177,19 +183,24 @@ Sweep load_sweep(const std::string& path) {
     sw.base_path = base.lexically_normal().string();
     cases::Diagnostics bd(sw.base_path);
     const auto b = cases::parse_file(sw.base_path, bd, nullptr);
-    if (!b) root.error("base", "'base' names '" + cases::brief(sw.base_path, 200) + "', which cannot be read as a case: " +
-                                   (bd.errors().empty() ? "" : bd.errors()[0].format()));
-    else sw.base = *b;
+    if (!b)
+      root.error("base", "'base' names '" + cases::brief(sw.base_path, 200) +
+                             "', which cannot be read as a case: " +
+                             (bd.errors().empty() ? "" : bd.errors()[0].format()));
+    else
+      sw.base = *b;
   }
   if (sw.zip && sw.axes.size() > 1) {
     for (const auto& ax : sw.axes)
       if (ax.values.size() != sw.axes[0].values.size())
-        diag.error(ax.mark, "zip axis '" + cases::brief(ax.path) + "' has " + std::to_string(ax.values.size()) +
-                                " values; expected " + std::to_string(sw.axes[0].values.size()) +
-                                " like the first axis");
+        diag.error(ax.mark, "zip axis '" + cases::brief(ax.path) + "' has " +
+                                std::to_string(ax.values.size()) + " values; expected " +
+                                std::to_string(sw.axes[0].values.size()) + " like the first axis");
   }
   for (const auto& ax : sw.axes)
-    if (ax.values.empty() && diag.empty()) diag.error(ax.mark, "axis '" + cases::brief(ax.path) + "' has no values; expected at least one");
+    if (ax.values.empty() && diag.empty())
+      diag.error(ax.mark,
+                 "axis '" + cases::brief(ax.path) + "' has no values; expected at least one");
   diag.throw_if_any();
 
   // the number of points, without overflow, and what generating them costs
@@ -202,20 +213,25 @@ Sweep load_sweep(const std::string& path) {
       sizes += (sizes.empty() ? "" : sw.zip ? ", " : " x ") + std::to_string(ax.values.size());
       approx *= double(ax.values.size());
     }
-    diag.error(sw.axes[0].mark, "the sweep has " + (count == SIZE_MAX ? "about " + cases::format_number(approx) : std::to_string(count)) +
-                                    " points (" + (sw.zip ? "zip of " : "grid of ") + sizes +
-                                    " values); expected at most " + std::to_string(kMaxSweepPoints) +
-                                    " (split it into several sweeps)");
+    diag.error(
+        sw.axes[0].mark,
+        "the sweep has " +
+            (count == SIZE_MAX ? "about " + cases::format_number(approx) : std::to_string(count)) +
+            " points (" + (sw.zip ? "zip of " : "grid of ") + sizes +
+            " values); expected at most " + std::to_string(kMaxSweepPoints) +
+            " (split it into several sweeps)");
   } else if (static_cast<double>(count) * static_cast<double>(base_nodes) > kMaxSweepNodes) {
-    diag.error(sw.axes[0].mark, "the sweep's " + std::to_string(count) + " points of a base case of " +
-                                    std::to_string(base_nodes) + " YAML nodes would generate " +
-                                    cases::format_number(double(count) * double(base_nodes)) +
-                                    " nodes; expected at most " + cases::format_number(kMaxSweepNodes));
+    diag.error(sw.axes[0].mark,
+               "the sweep's " + std::to_string(count) + " points of a base case of " +
+                   std::to_string(base_nodes) + " YAML nodes would generate " +
+                   cases::format_number(double(count) * double(base_nodes)) +
+                   " nodes; expected at most " + cases::format_number(kMaxSweepNodes));
   }
   diag.throw_if_any();
 
   // every point: a clone of the base with the axis values set
-  const std::string base_name = sw.base["name"] && sw.base["name"].IsScalar() ? sw.base["name"].Scalar() : "case";
+  const std::string base_name =
+      sw.base["name"] && sw.base["name"].IsScalar() ? sw.base["name"].Scalar() : "case";
   const std::string base_sha = cases::sha256_hex(YAML::Dump(sw.base));
   for (size_t k = 0; k < count; ++k) {
     YAML::Node doc = YAML::Clone(sw.base);
@@ -233,7 +249,8 @@ Sweep load_sweep(const std::string& path) {
       const YAML::Node& v = ax.values[idx[a]];
       const std::string bad = set_path(doc, ax.path, v);
       if (!bad.empty()) {
-        diag.error(ax.mark, "axis path '" + cases::brief(ax.path) + "' names no parameter of the base case: " + bad);
+        diag.error(ax.mark, "axis path '" + cases::brief(ax.path) +
+                                "' names no parameter of the base case: " + bad);
         ok = false;
         continue;
       }
@@ -259,7 +276,8 @@ Sweep load_sweep(const std::string& path) {
       std::string what = errs.errors().empty() ? "" : errs.errors()[0].message;
       std::string vals;
       for (size_t a = 0; a < sw.axes.size(); ++a)
-        vals += (a ? ", " : "") + cases::brief(sw.axes[a].path) + " = " + cases::brief(scalar_text(sw.axes[a].values[idx[a]]));
+        vals += (a ? ", " : "") + cases::brief(sw.axes[a].path) + " = " +
+                cases::brief(scalar_text(sw.axes[a].values[idx[a]]));
       diag.error(sw.axes.empty() ? YAML::Mark() : sw.axes[0].mark,
                  "the point (" + vals + ") gives an invalid case: " + what);
       break;

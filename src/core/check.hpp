@@ -18,16 +18,16 @@ namespace armstudy::core::internal {
 }
 }  // namespace armstudy::core::internal
 
-#define ARM_THROW_UNLESS(cond, msg)                   \
-  do {                                                \
-    if (!(cond)) {                                    \
-      std::ostringstream arm_os_;                     \
-      arm_os_ << msg;                                 \
-      throw std::invalid_argument(arm_os_.str());     \
-    }                                                 \
+#define ARM_THROW_UNLESS(cond, msg)               \
+  do {                                            \
+    if (!(cond)) {                                \
+      std::ostringstream arm_os_;                 \
+      arm_os_ << msg;                             \
+      throw std::invalid_argument(arm_os_.str()); \
+    }                                             \
   } while (0)
 
-#define ARM_DEMAND(cond)                                                      \
-  do {                                                                        \
+#define ARM_DEMAND(cond)                                                              \
+  do {                                                                                \
     if (!(cond)) ::armstudy::core::internal::throw_demand(#cond, __FILE__, __LINE__); \
   } while (0)

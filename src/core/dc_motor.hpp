@@ -13,12 +13,12 @@
 namespace armstudy::core {
 
 struct DcMotor {
-  double kt = 0.046;     ///< N m/A, torque constant
-  double kv = 0.046;     ///< V s/rad, back-emf constant
-  double Ra = 3.5;       ///< ohm, armature resistance
-  double Dm = 7.9e-5;    ///< N m s/rad, viscous damping
-  double tau_f = 0.0013; ///< N m, Coulomb friction
-  double Im = 0.0;       ///< kg m^2, rotor inertia (missing from Table 1 of 003)
+  double kt = 0.046;      ///< N m/A, torque constant
+  double kv = 0.046;      ///< V s/rad, back-emf constant
+  double Ra = 3.5;        ///< ohm, armature resistance
+  double Dm = 7.9e-5;     ///< N m s/rad, viscous damping
+  double tau_f = 0.0013;  ///< N m, Coulomb friction
+  double Im = 0.0;        ///< kg m^2, rotor inertia (missing from Table 1 of 003)
 };
 
 /// Electrical state of one motor at one instant.

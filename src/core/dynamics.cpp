@@ -37,7 +37,8 @@ JointMatrix mass_matrix(const PlanarChain& chain, const JointVector& q) {
     // angular Jacobian: ones for joints 0..link
     if (I != 0.0) M.topLeftCorner(link + 1, link + 1).array() += I;
   });
-  for (const SpinningInertia& s : chain.spinners) M.noalias() += s.inertia * s.coeffs * s.coeffs.transpose();
+  for (const SpinningInertia& s : chain.spinners)
+    M.noalias() += s.inertia * s.coeffs * s.coeffs.transpose();
   return M;
 }
 

@@ -12,9 +12,9 @@ namespace armstudy::core {
 
 /// Where a point lies with respect to the reachable annulus [|L1-L2|, L1+L2].
 struct Reach {
-  double radius = 0;   ///< m, distance of the point from the root
-  double inner = 0;    ///< m, |L1 - L2|
-  double outer = 0;    ///< m, L1 + L2
+  double radius = 0;  ///< m, distance of the point from the root
+  double inner = 0;   ///< m, |L1 - L2|
+  double outer = 0;   ///< m, L1 + L2
   /// m, signed distance to the nearer boundary: > 0 inside, < 0 outside (how far out).
   double margin = 0;
   bool reachable() const { return margin >= 0; }

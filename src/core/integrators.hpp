@@ -38,10 +38,10 @@ OdeState rk4_step(F&& f, double t, const OdeState& x, double h) {
 
 /// Settings of the adaptive Dormand-Prince integrator.
 struct Dopri5Options {
-  double rtol = 1e-10;     ///< relative tolerance per component
-  double atol = 1e-12;     ///< absolute tolerance per component (units of the state)
-  double h_initial = 1e-4; ///< s, first trial step
-  double h_min = 1e-12;    ///< s, below this the integration fails
+  double rtol = 1e-10;      ///< relative tolerance per component
+  double atol = 1e-12;      ///< absolute tolerance per component (units of the state)
+  double h_initial = 1e-4;  ///< s, first trial step
+  double h_min = 1e-12;     ///< s, below this the integration fails
   long max_steps = 10'000'000;
 };
 
@@ -60,7 +60,8 @@ struct Dopri5Stats {
 template <typename F>
 std::vector<OdeState> integrate_dopri5(F&& f, double t0, const OdeState& x0,
                                        const std::vector<double>& times,
-                                       const Dopri5Options& opt = {}, Dopri5Stats* stats = nullptr) {
+                                       const Dopri5Options& opt = {},
+                                       Dopri5Stats* stats = nullptr) {
   // Dormand-Prince 5(4) tableau
   constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
   constexpr double a21 = 1.0 / 5;
@@ -68,13 +69,13 @@ std::vector<OdeState> integrate_dopri5(F&& f, double t0, const OdeState& x0,
   constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
   constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561,
                    a54 = -212.0 / 729;
-  constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247,
-                   a64 = 49.0 / 176, a65 = -5103.0 / 18656;
+  constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
+                   a65 = -5103.0 / 18656;
   constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784,
                    b6 = 11.0 / 84;
   // error coefficients: b - b_hat
-  constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
-                   e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+  constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
+                   e6 = 22.0 / 525, e7 = -1.0 / 40;
   Dopri5Stats st;
   std::vector<OdeState> out;
   out.reserve(times.size());

@@ -56,7 +56,7 @@ PointJacobian point_jacobian_dot(const ChainPose& pose, const JointVector& qd, i
   const Eigen::Vector2d v = point_jacobian(pose, link, p_L) * qd;
   PointJacobian Jd = PointJacobian::Zero(2, n);
   Eigen::Vector2d v_j = Eigen::Vector2d::Zero();  // joint 0 is fixed
-  double omega = 0.0;                              // absolute rate of link j-1
+  double omega = 0.0;                             // absolute rate of link j-1
   for (int j = 0; j <= link; ++j) {
     if (j > 0) {
       // joint j moves with link j-1: v_j = v_{j-1} + omega_{j-1} ez x (p_j - p_{j-1})

@@ -31,8 +31,8 @@ PlanarChain make_chain(PlanarChain chain) {
   for (size_t k = 0; k < chain.point_masses.size(); ++k) {
     const PointMass& p = chain.point_masses[k];
     ARM_THROW_UNLESS(p.link >= 0 && p.link < n, "point mass " << k + 1 << " is on link "
-                                                                << p.link + 1 << "; chain has "
-                                                                << n << " links");
+                                                              << p.link + 1 << "; chain has " << n
+                                                              << " links");
     ARM_THROW_UNLESS(std::isfinite(p.mass) && p.mass >= 0,
                      "point mass " << k + 1 << " mass " << p.mass << " kg should be >= 0");
   }

@@ -53,8 +53,8 @@ struct PlanarChain {
   std::vector<Link> links;
   std::vector<PointMass> point_masses;
   std::vector<SpinningInertia> spinners;
-  double gravity = 0.0;     ///< m/s^2 along -y (0: horizontal plane)
-  double base_angle = 0.0;  ///< rad, absolute angle of the base frame
+  double gravity = 0.0;                            ///< m/s^2 along -y (0: horizontal plane)
+  double base_angle = 0.0;                         ///< rad, absolute angle of the base frame
   Eigen::Vector2d base = Eigen::Vector2d::Zero();  ///< m, position of joint 0
 
   int num_links() const { return static_cast<int>(links.size()); }

@@ -9,8 +9,7 @@ namespace armstudy::core {
 inline constexpr int kMaxLinks = 7;
 
 using JointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxLinks, 1>;
-using JointMatrix =
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLinks, kMaxLinks>;
+using JointMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLinks, kMaxLinks>;
 /// 2 x N point Jacobian (planar translation).
 using PointJacobian = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxLinks>;
 

@@ -53,12 +53,14 @@ Section animation_section(const std::vector<AnimationRecord>& animations) {
                               : std::string("played at real speed")) +
                 "; hover to pause; printed as its last frame.";
     if (a.note) m.caption += " " + *a.note + ".";
-    if (!m.title.empty()) m.title[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(m.title[0])));
+    if (!m.title.empty())
+      m.title[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(m.title[0])));
     movies.push_back(std::move(m));
   }
   if (!movies.empty()) {
-    s.paragraph("Each motion replayed in MuJoCo at equal time steps. The video files beside "
-                "this page play at the motion's real speed, for slides.");
+    s.paragraph(
+        "Each motion replayed in MuJoCo at equal time steps. The video files beside "
+        "this page play at the motion's real speed, for slides.");
     s.movies(std::move(movies));
   }
   return s;
@@ -89,7 +91,8 @@ std::string animation_css(const std::vector<AnimationRecord>& animations) {
       const int f = std::min(k, n - 1);  // 100%: the last frame, held
       const double x = cols > 1 ? 100.0 * (f % cols) / (cols - 1) : 0;
       const double y = rows > 1 ? 100.0 * (f / cols) / (rows - 1) : 0;
-      css += " " + percent(100.0 * k / n) + " { background-position: " + percent(x) + " " + percent(y) + "; }";
+      css += " " + percent(100.0 * k / n) + " { background-position: " + percent(x) + " " +
+             percent(y) + "; }";
     }
     css += " }\n";
   }

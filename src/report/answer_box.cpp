@@ -31,10 +31,13 @@ std::string check_label(const std::string& name) {
   }
   // a few proper names
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"mujoco", "MuJoCo"},
-                                 {"idp", "IDP"}, {"slsqp", "SLSQP"}, {"nlopt", "NLopt"}}) {
+                                 {"idp", "IDP"},
+                                 {"slsqp", "SLSQP"},
+                                 {"nlopt", "NLopt"}}) {
     for (size_t p = out.find(from); p != std::string::npos; p = out.find(from, p + to.size())) {
       const bool start = p == 0 || !std::isalnum(static_cast<unsigned char>(out[p - 1]));
-      const bool end = p + from.size() == out.size() || !std::isalnum(static_cast<unsigned char>(out[p + from.size()]));
+      const bool end = p + from.size() == out.size() ||
+                       !std::isalnum(static_cast<unsigned char>(out[p + from.size()]));
       if (start && end) out.replace(p, from.size(), to);
     }
   }
@@ -57,13 +60,16 @@ AnswerBox answer_box(const nlohmann::json& results, const CasePage& page, StudyA
       if (pred(f)) return f;
     return std::string();
   };
-  if (a.picture.empty()) a.picture = pick([](const std::string& f) { return f.ends_with("_locus.png"); });
-  if (a.picture.empty()) a.picture = pick([](const std::string& f) { return f.ends_with("_strip.png"); });
+  if (a.picture.empty())
+    a.picture = pick([](const std::string& f) { return f.ends_with("_locus.png"); });
+  if (a.picture.empty())
+    a.picture = pick([](const std::string& f) { return f.ends_with("_strip.png"); });
   if (!a.picture.empty()) {
-    a.picture_caption = a.picture.ends_with("_locus.png")
-                            ? "The motion that answers, replayed in MuJoCo: every pose superimposed, "
-                              "the oldest faintest."
-                            : "The motion that answers, replayed in MuJoCo: frames at equal time steps.";
+    a.picture_caption =
+        a.picture.ends_with("_locus.png")
+            ? "The motion that answers, replayed in MuJoCo: every pose superimposed, "
+              "the oldest faintest."
+            : "The motion that answers, replayed in MuJoCo: frames at equal time steps.";
   } else {
     for (const Section& s : page.sections)
       for (const Block& b : s.blocks)
@@ -86,10 +92,11 @@ AnswerBox answer_box(const nlohmann::json& results, const CasePage& page, StudyA
   if (total == 0)
     a.verdict = "The study ran no checks on this case.";
   else if (failed == 0)
-    a.verdict = total == 1 ? "The study's check passed." : "All " + std::to_string(total) + " checks passed.";
+    a.verdict = total == 1 ? "The study's check passed."
+                           : "All " + std::to_string(total) + " checks passed.";
   else
-    a.verdict = std::to_string(failed) + " of " + std::to_string(total) + " checks FAILED: " +
-                joined(failures, "; ") + ".";
+    a.verdict = std::to_string(failed) + " of " + std::to_string(total) +
+                " checks FAILED: " + joined(failures, "; ") + ".";
   return a;
 }
 

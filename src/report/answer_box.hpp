@@ -18,11 +18,11 @@ struct ResultsRecord;
 
 /// What page 1 says about a case.
 struct AnswerBox {
-  std::string sentence;   ///< the result in one sentence (the study's message)
-  std::string picture;    ///< key image, relative to the case folder; empty: none
+  std::string sentence;  ///< the result in one sentence (the study's message)
+  std::string picture;   ///< key image, relative to the case folder; empty: none
   std::string picture_caption;
   std::vector<std::pair<std::string, std::string>> figures;  ///< (label in words, value with unit)
-  std::string verdict;    ///< "all 10 checks passed" / "2 of 10 checks FAILED: ..."
+  std::string verdict;  ///< "all 10 checks passed" / "2 of 10 checks FAILED: ..."
   bool verdict_ok = true;
   std::vector<std::string> binding;      ///< what binds / decides the optimum, in words
   std::vector<std::string> assumptions;  ///< where the source is silent: value used and why
@@ -33,7 +33,8 @@ struct AnswerBox {
 /// from its typed section of `results`; it may name its key picture (one of record.frames),
 /// else the box takes the first locus, else the first strip.
 /// @throws ResultsError when results[study] is not the study's section.
-using StudyAnswer = void (*)(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box);
+using StudyAnswer = void (*)(const nlohmann::json& results, const ResultsRecord& record,
+                             AnswerBox& box);
 
 /// The answer box of a case from its results.json (read_record, report/results_record.hpp),
 /// with the lines of `study` (none when null); `page` supplies the key figures and, when no

@@ -2,8 +2,8 @@
 
 #include "report/part_name.hpp"
 
-#include <kainjow/mustache.hpp>
 #include <yaml-cpp/yaml.h>
+#include <kainjow/mustache.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -12,8 +12,8 @@
 #include <set>
 #include <sstream>
 
-#include "report/number_format.hpp"
 #include "report/animation_view.hpp"
+#include "report/number_format.hpp"
 #include "report/page.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
@@ -38,8 +38,7 @@ void write_text(const fs::path& p, const std::string& text) { write_file_atomic(
 // renders a template of template_dir(); {{x}} escapes html (& < > " '), {{{x}}} is never used
 std::string render_template(const std::string& name, const mus::data& data) {
   mus::mustache tmpl{read_text(template_dir() / name)};
-  if (!tmpl.is_valid())
-    throw std::runtime_error("template " + name + ": " + tmpl.error_message());
+  if (!tmpl.is_valid()) throw std::runtime_error("template " + name + ": " + tmpl.error_message());
   std::string html = tmpl.render(data);
   if (!tmpl.error_message().empty())
     throw std::runtime_error("template " + name + ": " + tmpl.error_message());
@@ -88,7 +87,8 @@ void lay_out_case_page(const nlohmann::json& results, StudyAnswer answer, CasePa
           if (row.empty()) continue;
           std::string words, part;
           std::stringstream in(row[0]);
-          while (std::getline(in, part, '.')) words += (words.empty() ? "" : ", ") + label_from_key(part);
+          while (std::getline(in, part, '.'))
+            words += (words.empty() ? "" : ", ") + label_from_key(part);
           row[0] = words;
         }
         params.table(std::move(t));
@@ -109,8 +109,10 @@ void lay_out_case_page(const nlohmann::json& results, StudyAnswer answer, CasePa
     // the appendix follows on the same page: a forced break left the last rows of a long
     // table alone on a page
     s.new_page = k == 0;
-    if (s.id == "case") s.heading = has_params ? "Appendix B. The case file" : "Appendix A. The case file";
-    if (s.id == "provenance") s.heading = has_params ? "Appendix C. Provenance" : "Appendix B. Provenance";
+    if (s.id == "case")
+      s.heading = has_params ? "Appendix B. The case file" : "Appendix A. The case file";
+    if (s.id == "provenance")
+      s.heading = has_params ? "Appendix C. Provenance" : "Appendix B. Provenance";
   }
 }
 
@@ -121,8 +123,8 @@ Section checks_section(const ResultsRecord& record) {
   Table t;
   t.header = {"check", "what it verifies", "value", "tolerance", "result"};
   for (const CheckRecord& c : record.checks)
-    t.rows.push_back({check_label(c.name), c.description, format_sig(c.value, 4), format_sig(c.tolerance, 3),
-                      c.passed ? "passed" : "FAILED"});
+    t.rows.push_back({check_label(c.name), c.description, format_sig(c.value, 4),
+                      format_sig(c.tolerance, 3), c.passed ? "passed" : "FAILED"});
   if (t.rows.empty())
     s.paragraph("The study reported no checks for this case.");
   else
@@ -168,9 +170,10 @@ Section frames_section(const ResultsRecord& record) {
   if (strip.files.empty()) {
     s.paragraph("No frames were rendered for this case (run without --no-render to get them).");
   } else {
-    strip.caption = "The solved motion replayed in the MuJoCo model of the arm and rendered "
-                    "off-screen (OSMesa): strips of frames in time order and stroboscopic loci "
-                    "of the whole motion.";
+    strip.caption =
+        "The solved motion replayed in the MuJoCo model of the arm and rendered "
+        "off-screen (OSMesa): strips of frames in time order and stroboscopic loci "
+        "of the whole motion.";
     s.strip(std::move(strip));
   }
   return s;
@@ -188,12 +191,13 @@ Section provenance_section(const ResultsRecord& record, const cases::CaseInfo& i
   t.rows.push_back({"git commit", commit.empty() ? "unknown" : commit});
   // the machine and libraries behind the numbers and frames
   const ProvenanceRecord& p = record.provenance;
-  for (const auto& [k, v] : {std::pair<const char*, std::optional<std::string>>{"compiler", p.compiler},
-                             {"cpu_model", p.cpu_model},
-                             {"gl_renderer", p.gl_renderer},
-                             {"gl_version", p.gl_version},
-                             {"mesa_version", p.mesa_version},
-                             {"mujoco_version", p.mujoco_version}})
+  for (const auto& [k, v] :
+       {std::pair<const char*, std::optional<std::string>>{"compiler", p.compiler},
+        {"cpu_model", p.cpu_model},
+        {"gl_renderer", p.gl_renderer},
+        {"gl_version", p.gl_version},
+        {"mesa_version", p.mesa_version},
+        {"mujoco_version", p.mujoco_version}})
     if (v) t.rows.push_back({label_from_key(k), *v});
   t.rows.push_back({"case file", info.path});
   t.rows.push_back({"case sha256", info.sha256});
@@ -219,9 +223,10 @@ mus::data table_data(const Table& t) {
       cell.set("cell", t.rows[r][c]);
       const std::string sw = (c == 0 && r < t.swatches.size()) ? t.swatches[r] : "";
       // swatch colours come from css_colour (#rrggbb) only; checked anyway
-      const bool ok = sw.size() == 7 && sw[0] == '#' &&
-                      std::all_of(sw.begin() + 1, sw.end(), [](char ch) { return std::isxdigit(
-                                                                       static_cast<unsigned char>(ch)); });
+      const bool ok =
+          sw.size() == 7 && sw[0] == '#' && std::all_of(sw.begin() + 1, sw.end(), [](char ch) {
+            return std::isxdigit(static_cast<unsigned char>(ch));
+          });
       cell.set("swatch", ok ? sw.substr(1) : "");
       cell.set("has_swatch", ok);
       cell.set("failed", t.rows[r][c] == "FAILED" || t.rows[r][c] == "BEYOND");
@@ -425,7 +430,8 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
         if (ob.kind == Block::Kind::kStrip)
           for (const std::string& f : ob.strip.files) {
             shown.insert(f);
-            if (f.ends_with(kReplay)) shown.insert(f.substr(0, f.size() - kReplay.size()) + "_strip.png");
+            if (f.ends_with(kReplay))
+              shown.insert(f.substr(0, f.size() - kReplay.size()) + "_strip.png");
           }
     for (Block& b : frames.blocks) {
       if (b.kind != Block::Kind::kStrip) continue;
@@ -438,8 +444,9 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
           kept.wide.push_back(b.strip.wide[k]);
         }
       if (kept.files.size() < b.strip.files.size())
-        kept.caption += " The strips of frames at equal time steps are in the MuJoCo dynamic "
-                        "replay above, with MuJoCo's simulated motion drawn over them.";
+        kept.caption +=
+            " The strips of frames at equal time steps are in the MuJoCo dynamic "
+            "replay above, with MuJoCo's simulated motion drawn over them.";
       b.strip = std::move(kept);
     }
     page.sections.push_back(std::move(frames));
@@ -454,7 +461,8 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   write_page(dir, page, info);
   // the animations' rules after the shared stylesheet (the page's CSP allows no inline style)
   if (const std::string css = animation_css(record.animations); !css.empty())
-    write_text(dir / "report.css", read_text(dir / "report.css") + "\n/* animations, generated */\n" + css);
+    write_text(dir / "report.css",
+               read_text(dir / "report.css") + "\n/* animations, generated */\n" + css);
 }
 
 void write_page(const fs::path& dir, const CasePage& page, const cases::CaseInfo& info,
@@ -529,7 +537,8 @@ int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies)
     // the first few key figures; the case page has them all
     constexpr size_t kIndexFigures = 4;
     mus::data kf{mus::data::type::list};
-    const auto figures = r.record ? key_figures(*r.record) : std::vector<std::pair<std::string, std::string>>{};
+    const auto figures =
+        r.record ? key_figures(*r.record) : std::vector<std::pair<std::string, std::string>>{};
     for (size_t k = 0; k < figures.size() && k < kIndexFigures; ++k) {
       mus::data x;
       x.set("label", figures[k].first);

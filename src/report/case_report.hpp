@@ -24,7 +24,8 @@ struct ResultsRecord;
 
 /// A study's own sections of its page, from the whole results.json (its registry record,
 /// app::StudyEntry::report; report/study_sections.hpp).
-using StudySections = void (*)(const nlohmann::json& results, FigureWriter& figures, CasePage& page);
+using StudySections = void (*)(const nlohmann::json& results, FigureWriter& figures,
+                               CasePage& page);
 
 /// Writes the report of one case into `dir` (the case folder, which already holds
 /// results.json and the frames listed in results["frames"]): index.html, report.css and
@@ -41,9 +42,8 @@ void write_case_report(const std::filesystem::path& dir, const cases::CaseInfo& 
 /// Writes `page` as `dir`/`file_name` (with report.css) through the case template; the
 /// header links to `data_link` (default: the case's results.json) unless page.links is set.
 /// @throws std::runtime_error when a template is missing or a file cannot be written.
-void write_page(const std::filesystem::path& dir, const CasePage& page,
-                const cases::CaseInfo& info, const std::string& data_link = "",
-                const std::string& file_name = "index.html");
+void write_page(const std::filesystem::path& dir, const CasePage& page, const cases::CaseInfo& info,
+                const std::string& data_link = "", const std::string& file_name = "index.html");
 
 /// A figure the index page draws over every case of one study (its registry record,
 /// app::StudyEntry::index_figure), e.g. the placement optima's root loci across the cases.

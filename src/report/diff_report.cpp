@@ -40,14 +40,16 @@ bool CaseDiff::beyond() const {
 bool CaseDiff::changed() const {
   if (beyond() || !checks.empty() || base_message != new_message) return true;
   for (const auto& f : figures)
-    if (!(f.base == f.now || (f.base && f.now && std::isnan(*f.base) && std::isnan(*f.now)))) return true;
+    if (!(f.base == f.now || (f.base && f.now && std::isnan(*f.base) && std::isnan(*f.now))))
+      return true;
   for (const auto& f : frames)
     if (!f.identical) return true;
   return false;
 }
 
 size_t RunDiff::beyond_count() const {
-  return static_cast<size_t>(std::count_if(cases.begin(), cases.end(), [](const CaseDiff& c) { return c.beyond(); }));
+  return static_cast<size_t>(
+      std::count_if(cases.begin(), cases.end(), [](const CaseDiff& c) { return c.beyond(); }));
 }
 
 namespace {
@@ -81,7 +83,8 @@ std::string tolerance_text(const FigureTolerance& t, const std::string& unit) {
 std::string verdict(const FigureDiff& f) {
   if (f.beyond) return "BEYOND";
   if (f.tolerance.ignore) return "ignored";
-  const bool same = f.base == f.now || (f.base && f.now && std::isnan(*f.base) && std::isnan(*f.now));
+  const bool same =
+      f.base == f.now || (f.base && f.now && std::isnan(*f.base) && std::isnan(*f.now));
   return same ? "same" : "within";
 }
 
@@ -93,7 +96,8 @@ std::string status_text(const std::string& status, bool passed) {
 std::string check_side(const std::optional<bool>& passed, const std::optional<double>& value,
                        const std::optional<double>& tol) {
   if (!passed) return "(no such check)";
-  return std::string(*passed ? "passed" : "FAILED") + " (" + num(value) + " against " + num(tol) + ")";
+  return std::string(*passed ? "passed" : "FAILED") + " (" + num(value) + " against " + num(tol) +
+         ")";
 }
 
 std::string frame_result(const FrameDiff& f, int pixel_tolerance) {
@@ -108,27 +112,32 @@ std::string frame_result(const FrameDiff& f, int pixel_tolerance) {
 
 // one line: what moved in a case (for the tables of cases)
 std::string what_moved(const CaseDiff& c, int pixel_tolerance, bool beyond_only) {
-  if (c.presence == CaseDiff::Presence::kAdded) return "added (only in the new run): " + status_text(c.new_status, c.new_passed);
-  if (c.presence == CaseDiff::Presence::kRemoved) return "removed (only in the base run): " + status_text(c.base_status, c.base_passed);
+  if (c.presence == CaseDiff::Presence::kAdded)
+    return "added (only in the new run): " + status_text(c.new_status, c.new_passed);
+  if (c.presence == CaseDiff::Presence::kRemoved)
+    return "removed (only in the base run): " + status_text(c.base_status, c.base_passed);
   std::vector<std::string> parts;
   if (c.status_changed())
-    parts.push_back("status " + status_text(c.base_status, c.base_passed) + " → " + status_text(c.new_status, c.new_passed));
+    parts.push_back("status " + status_text(c.base_status, c.base_passed) + " → " +
+                    status_text(c.new_status, c.new_passed));
   size_t figs = 0;
   for (const auto& f : c.figures) {
     const std::string v = verdict(f);
     if (v == "same" || v == "ignored" || (beyond_only && v != "BEYOND")) continue;
     if (++figs > 4) continue;
-    parts.push_back(f.name + " " + with_unit(num(f.base), f.unit) + " → " + with_unit(num(f.now), f.unit) + " (" +
-                    percent(f.rel_change()) + ")");
+    parts.push_back(f.name + " " + with_unit(num(f.base), f.unit) + " → " +
+                    with_unit(num(f.now), f.unit) + " (" + percent(f.rel_change()) + ")");
   }
   if (figs > 4) parts.push_back("and " + std::to_string(figs - 4) + " more key figure(s)");
   for (const auto& ch : c.checks)
-    parts.push_back("check " + ch.name + " " + (ch.base_passed ? (*ch.base_passed ? "passed" : "FAILED") : "(none)") +
-                    " → " + (ch.new_passed ? (*ch.new_passed ? "passed" : "FAILED") : "(none)"));
+    parts.push_back("check " + ch.name + " " +
+                    (ch.base_passed ? (*ch.base_passed ? "passed" : "FAILED") : "(none)") + " → " +
+                    (ch.new_passed ? (*ch.new_passed ? "passed" : "FAILED") : "(none)"));
   size_t frames = 0;
   for (const auto& f : c.frames)
     if (f.beyond || (!beyond_only && !f.identical)) {
-      if (++frames <= 3) parts.push_back("frame " + f.file + ": " + frame_result(f, pixel_tolerance));
+      if (++frames <= 3)
+        parts.push_back("frame " + f.file + ": " + frame_result(f, pixel_tolerance));
     }
   if (frames > 3) parts.push_back("and " + std::to_string(frames - 3) + " more frame(s)");
   if (parts.empty() && c.base_message != c.new_message) parts.push_back("message changed");
@@ -152,9 +161,12 @@ std::string renderer_note(const CaseDiff& c) {
 std::string md_cell(const std::string& s) {
   std::string o;
   for (char c : s) {
-    if (c == '|') o += "\\|";
-    else if (c == '\n') o += ' ';
-    else o += c;
+    if (c == '|')
+      o += "\\|";
+    else if (c == '\n')
+      o += ' ';
+    else
+      o += c;
   }
   return o;
 }
@@ -163,8 +175,9 @@ std::string tolerances_sentence(const RunDiff& d) {
   std::string s = d.tolerances_file.empty()
                       ? "Built-in tolerances (key figures exact, wall-clock run times ignored)"
                       : "Tolerances from " + d.tolerances_file;
-  s += "; frames: a pixel counts when a channel differs by more than " + std::to_string(d.pixel_tolerance) +
-       " (of 255), a frame moves when more than " + std::to_string(d.pixels_allowed) + " pixel(s) do";
+  s += "; frames: a pixel counts when a channel differs by more than " +
+       std::to_string(d.pixel_tolerance) + " (of 255), a frame moves when more than " +
+       std::to_string(d.pixels_allowed) + " pixel(s) do";
   return s;
 }
 
@@ -175,7 +188,8 @@ std::string headline(const RunDiff& d) {
 }
 
 size_t count_presence(const RunDiff& d, CaseDiff::Presence p) {
-  return static_cast<size_t>(std::count_if(d.cases.begin(), d.cases.end(), [&](const CaseDiff& c) { return c.presence == p; }));
+  return static_cast<size_t>(std::count_if(d.cases.begin(), d.cases.end(),
+                                           [&](const CaseDiff& c) { return c.presence == p; }));
 }
 
 // the figure table of a case: the figures that changed (all of them with `all`)
@@ -207,7 +221,8 @@ Table frame_table(const CaseDiff& c, int pixel_tolerance) {
   t.caption = "Frames";
   t.header = {"frame", "result", "verdict"};
   for (const auto& f : c.frames)
-    t.rows.push_back({f.file, frame_result(f, pixel_tolerance), f.beyond ? "BEYOND" : (f.identical ? "same" : "within")});
+    t.rows.push_back({f.file, frame_result(f, pixel_tolerance),
+                      f.beyond ? "BEYOND" : (f.identical ? "same" : "within")});
   return t;
 }
 
@@ -220,8 +235,8 @@ Table provenance_table(const std::vector<ProvenanceDiff>& p) {
 
 std::string truncate(std::string s, size_t max_bytes) {
   if (s.size() <= max_bytes) return s;
-  const std::string note = "\n\n*Truncated: the full diff is larger than " + std::to_string(max_bytes) +
-                           " bytes; see diff.html.*\n";
+  const std::string note = "\n\n*Truncated: the full diff is larger than " +
+                           std::to_string(max_bytes) + " bytes; see diff.html.*\n";
   s.resize(max_bytes - note.size());
   s.resize(s.rfind('\n') + 1);
   return s + note;
@@ -244,17 +259,20 @@ void md_table(std::ostringstream& md, const Table& t) {
 
 Table sweep_table(const RunDiff& d, size_t limit) {
   Table t;
-  t.header = {"case", "point", "status", "largest change", "base", "new", "relative", "figures changed", "verdict"};
+  t.header = {"case", "point",    "status",          "largest change", "base",
+              "new",  "relative", "figures changed", "verdict"};
   for (size_t k = 0; k < d.sweep.size() && k < limit; ++k) {
     const auto& r = d.sweep[k];
-    const std::string status = r.base_status == r.new_status ? r.new_status
-                                                             : (r.base_status.empty() ? "(absent)" : r.base_status) + " → " +
-                                                                   (r.new_status.empty() ? "(absent)" : r.new_status);
+    const std::string status = r.base_status == r.new_status
+                                   ? r.new_status
+                                   : (r.base_status.empty() ? "(absent)" : r.base_status) + " → " +
+                                         (r.new_status.empty() ? "(absent)" : r.new_status);
     FigureDiff f;
     f.base = r.base;
     f.now = r.now;
     t.rows.push_back({r.case_name, r.point, status, r.figure, with_unit(num(r.base), r.unit),
-                      with_unit(num(r.now), r.unit), r.figure.empty() ? "" : percent(f.rel_change()),
+                      with_unit(num(r.now), r.unit),
+                      r.figure.empty() ? "" : percent(f.rel_change()),
                       std::to_string(r.figures_changed), r.beyond ? "BEYOND" : "within"});
   }
   return t;
@@ -265,8 +283,11 @@ std::vector<const CaseDiff*> moved_cases(const RunDiff& d) {
   std::vector<const CaseDiff*> out;
   for (const auto& c : d.cases)
     if (c.beyond()) out.push_back(&c);
-  auto fails = [](const CaseDiff* c) { return c->presence != CaseDiff::Presence::kRemoved && !c->new_passed; };
-  std::stable_sort(out.begin(), out.end(), [&](const CaseDiff* a, const CaseDiff* b) { return fails(a) && !fails(b); });
+  auto fails = [](const CaseDiff* c) {
+    return c->presence != CaseDiff::Presence::kRemoved && !c->new_passed;
+  };
+  std::stable_sort(out.begin(), out.end(),
+                   [&](const CaseDiff* a, const CaseDiff* b) { return fails(a) && !fails(b); });
   return out;
 }
 
@@ -276,46 +297,56 @@ std::string diff_markdown(const RunDiff& d, size_t max_bytes) {
   std::ostringstream md;
   const size_t moved = d.beyond_count();
   md << "# armstudy diff: " << headline(d) << "\n\n";
-  md << "Base `" << d.base_dir.string() << "` (" << d.base_cases << " case(s)) against new `" << d.new_dir.string()
-     << "` (" << d.new_cases << " case(s)): " << count_presence(d, CaseDiff::Presence::kAdded) << " added, "
-     << count_presence(d, CaseDiff::Presence::kRemoved) << " removed. " << tolerances_sentence(d) << ".\n\n";
+  md << "Base `" << d.base_dir.string() << "` (" << d.base_cases << " case(s)) against new `"
+     << d.new_dir.string() << "` (" << d.new_cases
+     << " case(s)): " << count_presence(d, CaseDiff::Presence::kAdded) << " added, "
+     << count_presence(d, CaseDiff::Presence::kRemoved) << " removed. " << tolerances_sentence(d)
+     << ".\n\n";
   if (moved) {
     md << "## Beyond tolerance (" << moved << ")\n\n| case | study | what moved |\n|---|---|---|\n";
     for (const CaseDiff* c : moved_cases(d))
-      md << "| " << md_cell(c->name) << " | " << md_cell(c->study) << " | " << md_cell(what_moved(*c, d.pixel_tolerance, true)) << " |\n";
+      md << "| " << md_cell(c->name) << " | " << md_cell(c->study) << " | "
+         << md_cell(what_moved(*c, d.pixel_tolerance, true)) << " |\n";
     md << "\n";
     for (const CaseDiff* cp : moved_cases(d)) {
       const CaseDiff& c = *cp;
       if (c.presence != CaseDiff::Presence::kBoth) continue;
       md << "### " << md_cell(c.name) << " (" << c.study << ")\n\n";
       if (c.status_changed())
-        md << "Status " << status_text(c.base_status, c.base_passed) << " → " << status_text(c.new_status, c.new_passed)
-           << ": " << md_cell(c.new_message) << "\n\n";
+        md << "Status " << status_text(c.base_status, c.base_passed) << " → "
+           << status_text(c.new_status, c.new_passed) << ": " << md_cell(c.new_message) << "\n\n";
       md_table(md, figure_table(c, false));
       md_table(md, check_table(c));
       Table ft = frame_table(c, d.pixel_tolerance);
-      ft.rows.erase(std::remove_if(ft.rows.begin(), ft.rows.end(), [](const auto& r) { return r[2] == "same"; }), ft.rows.end());
+      ft.rows.erase(std::remove_if(ft.rows.begin(), ft.rows.end(),
+                                   [](const auto& r) { return r[2] == "same"; }),
+                    ft.rows.end());
       md_table(md, ft);
       if (const std::string note = renderer_note(c); !note.empty()) md << note << "\n\n";
     }
   }
   if (!d.sweep_name.empty()) {
     md << "## Sweep " << md_cell(d.sweep_name) << ": " << d.sweep.size() << " of "
-       << std::max(d.sweep_rows_base, d.sweep_rows_new) << " row(s) changed, largest change first\n\n";
+       << std::max(d.sweep_rows_base, d.sweep_rows_new)
+       << " row(s) changed, largest change first\n\n";
     md_table(md, sweep_table(d, 50));
     if (d.sweep.size() > 50) md << "*" << d.sweep.size() - 50 << " more row(s) in diff.html.*\n\n";
   }
   size_t within = 0;
   for (const auto& c : d.cases) within += !c.beyond() && c.changed();
   if (within) {
-    md << "## Changed within tolerance (" << within << ")\n\n| case | study | what changed |\n|---|---|---|\n";
+    md << "## Changed within tolerance (" << within
+       << ")\n\n| case | study | what changed |\n|---|---|---|\n";
     for (const auto& c : d.cases)
       if (!c.beyond() && c.changed())
-        md << "| " << md_cell(c.name) << " | " << md_cell(c.study) << " | " << md_cell(what_moved(c, d.pixel_tolerance, false)) << " |\n";
+        md << "| " << md_cell(c.name) << " | " << md_cell(c.study) << " | "
+           << md_cell(what_moved(c, d.pixel_tolerance, false)) << " |\n";
     md << "\n";
   }
-  const size_t same = static_cast<size_t>(std::count_if(d.cases.begin(), d.cases.end(), [](const CaseDiff& c) { return !c.changed(); }));
-  md << "## Unchanged\n\n" << same << " case(s) have the same status, key figures, checks and frames.\n\n";
+  const size_t same = static_cast<size_t>(std::count_if(
+      d.cases.begin(), d.cases.end(), [](const CaseDiff& c) { return !c.changed(); }));
+  md << "## Unchanged\n\n"
+     << same << " case(s) have the same status, key figures, checks and frames.\n\n";
   if (!d.provenance.empty()) {
     md << "## Provenance\n\n";
     md_table(md, provenance_table(d.provenance));
@@ -331,30 +362,41 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
   page.status = headline(d);
   page.status_ok = moved == 0;
   page.message = "Base " + d.base_dir.string() + " against new " + d.new_dir.string() + ".";
-  const size_t added = count_presence(d, CaseDiff::Presence::kAdded), removed = count_presence(d, CaseDiff::Presence::kRemoved);
+  const size_t added = count_presence(d, CaseDiff::Presence::kAdded),
+               removed = count_presence(d, CaseDiff::Presence::kRemoved);
   size_t within = 0, same = 0;
   for (const auto& c : d.cases) {
     within += !c.beyond() && c.changed();
     same += !c.changed();
   }
-  page.key_figures = {{"base cases", std::to_string(d.base_cases)}, {"new cases", std::to_string(d.new_cases)},
-                      {"beyond tolerance", std::to_string(moved)},  {"within tolerance", std::to_string(within)},
-                      {"unchanged", std::to_string(same)},          {"added / removed", std::to_string(added) + " / " + std::to_string(removed)}};
+  page.key_figures = {{"base cases", std::to_string(d.base_cases)},
+                      {"new cases", std::to_string(d.new_cases)},
+                      {"beyond tolerance", std::to_string(moved)},
+                      {"within tolerance", std::to_string(within)},
+                      {"unchanged", std::to_string(same)},
+                      {"added / removed", std::to_string(added) + " / " + std::to_string(removed)}};
   page.links = {{"diff.md (job summary)", "diff.md"}};
 
   Section about;
   about.id = "summary";
   about.heading = "What moved";
   about.new_page = false;
-  about.paragraph("Cases are matched by name. A key figure moves when |new − base| exceeds max(abs, rel · |base|) of its "
-                  "tolerance; a status change, a check whose verdict changed, an added or removed case and a frame "
-                  "beyond its pixel tolerance move too. " + tolerances_sentence(d) + ".");
+  about.paragraph(
+      "Cases are matched by name. A key figure moves when |new − base| exceeds max(abs, rel · "
+      "|base|) of its "
+      "tolerance; a status change, a check whose verdict changed, an added or removed case and a "
+      "frame "
+      "beyond its pixel tolerance move too. " +
+      tolerances_sentence(d) + ".");
   Table moved_t;
   moved_t.caption = "Cases that moved beyond tolerance";
   moved_t.header = {"case", "study", "what moved"};
-  for (const CaseDiff* c : moved_cases(d)) moved_t.rows.push_back({c->name, c->study, what_moved(*c, d.pixel_tolerance, true)});
-  if (moved_t.rows.empty()) about.paragraph("Nothing moved beyond its tolerance.");
-  else about.table(std::move(moved_t));
+  for (const CaseDiff* c : moved_cases(d))
+    moved_t.rows.push_back({c->name, c->study, what_moved(*c, d.pixel_tolerance, true)});
+  if (moved_t.rows.empty())
+    about.paragraph("Nothing moved beyond its tolerance.");
+  else
+    about.table(std::move(moved_t));
   page.sections.push_back(std::move(about));
 
   // each case that moved (present in both runs): figures, checks, frames, provenance
@@ -366,8 +408,9 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
     s.heading = c.name + " (" + c.study + ")";
     s.new_page = false;
     if (c.status_changed())
-      s.paragraph("Status " + status_text(c.base_status, c.base_passed) + " → " + status_text(c.new_status, c.new_passed) +
-                  ". Base: " + c.base_message + " New: " + c.new_message);
+      s.paragraph("Status " + status_text(c.base_status, c.base_passed) + " → " +
+                  status_text(c.new_status, c.new_passed) + ". Base: " + c.base_message +
+                  " New: " + c.new_message);
     Table ft = figure_table(c, true);
     ft.caption = "Every key figure, side by side";
     if (!ft.rows.empty()) s.table(std::move(ft));
@@ -377,9 +420,12 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
     for (const auto& f : c.frames) {
       if (f.diff_image.empty() && f.base_copy.empty()) continue;
       Strip st;
-      st.caption = f.file + ": " + frame_result(f, d.pixel_tolerance) +
-                   (f.diff_image.empty() ? "" : "; in the difference image the pixels beyond are red and boxed in magenta, "
-                                                "the rest is the base in grey");
+      st.caption =
+          f.file + ": " + frame_result(f, d.pixel_tolerance) +
+          (f.diff_image.empty()
+               ? ""
+               : "; in the difference image the pixels beyond are red and boxed in magenta, "
+                 "the rest is the base in grey");
       const bool wide = f.file.find("_strip") != std::string::npos;
       for (const auto& [file, label] : std::vector<std::pair<std::string, std::string>>{
                {f.base_copy, "base"}, {f.new_copy, "new"}, {f.diff_image, "difference"}}) {
@@ -403,8 +449,10 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
     s.id = "sweep";
     s.heading = "Sweep " + d.sweep_name + ": rows by case id";
     s.new_page = false;
-    s.paragraph(std::to_string(d.sweep.size()) + " of " + std::to_string(std::max(d.sweep_rows_base, d.sweep_rows_new)) +
-                " row(s) of the sweep table changed; those beyond tolerance first, then by the largest relative "
+    s.paragraph(std::to_string(d.sweep.size()) + " of " +
+                std::to_string(std::max(d.sweep_rows_base, d.sweep_rows_new)) +
+                " row(s) of the sweep table changed; those beyond tolerance first, then by the "
+                "largest relative "
                 "change of a key figure (added, removed and status changes count as infinite).");
     Table t = sweep_table(d, d.sweep.size());
     if (!t.rows.empty()) s.table(std::move(t));
@@ -419,7 +467,8 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
     Table t;
     t.header = {"case", "study", "what changed"};
     for (const auto& c : d.cases)
-      if (!c.beyond() && c.changed()) t.rows.push_back({c.name, c.study, what_moved(c, d.pixel_tolerance, false)});
+      if (!c.beyond() && c.changed())
+        t.rows.push_back({c.name, c.study, what_moved(c, d.pixel_tolerance, false)});
     s.table(std::move(t));
     page.sections.push_back(std::move(s));
   }
@@ -432,7 +481,9 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
   for (const auto& c : d.cases)
     if (!c.changed()) names += (names.empty() ? "" : ", ") + c.name;
   un.paragraph(same == 0 ? "Every case changed."
-                         : std::to_string(same) + " case(s) have the same status, key figures, checks and frames: " + names + ".");
+                         : std::to_string(same) +
+                               " case(s) have the same status, key figures, checks and frames: " +
+                               names + ".");
   page.sections.push_back(std::move(un));
 
   Section prov;
@@ -440,11 +491,16 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
   prov.heading = "Provenance";
   prov.new_page = false;
   if (d.provenance.empty()) {
-    prov.paragraph("Both runs have the same provenance (armstudy version and commit, MuJoCo, renderer, compiler, CPU).");
+    prov.paragraph(
+        "Both runs have the same provenance (armstudy version and commit, MuJoCo, renderer, "
+        "compiler, CPU).");
   } else {
-    prov.paragraph("Provenance items that differ between the runs (each item's distinct values over all cases). A "
-                   "different GL renderer or Mesa version explains frame differences; a different CPU can explain "
-                   "last-digit differences of the numbers.");
+    prov.paragraph(
+        "Provenance items that differ between the runs (each item's distinct values over all "
+        "cases). A "
+        "different GL renderer or Mesa version explains frame differences; a different CPU can "
+        "explain "
+        "last-digit differences of the numbers.");
     prov.table(provenance_table(d.provenance));
   }
   page.sections.push_back(std::move(prov));

@@ -16,8 +16,8 @@ namespace armstudy::report {
 struct FigureTolerance {
   double abs = 0;
   double rel = 0;
-  bool ignore = false;   ///< shown, never counted (e.g. wall-clock run times)
-  std::string source;    ///< where it came from, e.g. "tolerances.yaml:4:7" or "built-in"
+  bool ignore = false;  ///< shown, never counted (e.g. wall-clock run times)
+  std::string source;   ///< where it came from, e.g. "tolerances.yaml:4:7" or "built-in"
 };
 
 /// One key figure of a case present in both runs (or in one of them).
@@ -43,11 +43,11 @@ struct CheckDiff {
 
 /// One frame (PNG) the runs have in common, or that one of them lacks.
 struct FrameDiff {
-  std::string file;           ///< relative to the case folder
+  std::string file;  ///< relative to the case folder
   bool in_base = true, in_new = true;
-  bool identical = false;     ///< byte-identical files
-  bool size_differs = false;  ///< width or height differ (every pixel counts as beyond)
-  int width = 0, height = 0;  ///< of the new frame
+  bool identical = false;         ///< byte-identical files
+  bool size_differs = false;      ///< width or height differ (every pixel counts as beyond)
+  int width = 0, height = 0;      ///< of the new frame
   std::size_t pixels_beyond = 0;  ///< pixels with a channel differing by more than the tolerance
   int max_channel_delta = 0;      ///< largest difference of one channel, 0-255
   bool beyond = false;            ///< more pixels beyond than the run allows
@@ -68,7 +68,7 @@ struct CaseDiff {
   std::string name;
   std::string study;
   Presence presence = Presence::kBoth;
-  std::string base_status, new_status;  ///< "solved" / "unsolvable"
+  std::string base_status, new_status;         ///< "solved" / "unsolvable"
   bool base_passed = true, new_passed = true;  ///< ended as expected with every check passed
   std::string base_message, new_message;
   std::vector<FigureDiff> figures;  ///< every key figure of either side, in the study's order
@@ -87,9 +87,9 @@ struct CaseDiff {
 /// A row of the sweep table (by case id) whose values changed.
 struct SweepRowDiff {
   std::string case_name;
-  std::string point;        ///< "arm.links[2].length = 0.12, placement.length_fraction = 0.5"
+  std::string point;  ///< "arm.links[2].length = 0.12, placement.length_fraction = 0.5"
   std::string base_status, new_status;  ///< sweep table status: "ok" / "failed" / "" (absent)
-  std::string figure;       ///< the key figure with the largest relative change
+  std::string figure;                   ///< the key figure with the largest relative change
   std::string unit;
   std::optional<double> base, now;
   double score = 0;         ///< |relative change| of that figure (inf: added, removed, status)
@@ -99,15 +99,15 @@ struct SweepRowDiff {
 
 struct RunDiff {
   std::filesystem::path base_dir, new_dir;
-  std::string tolerances_file;  ///< empty: built-in tolerances
-  int pixel_tolerance = 0;      ///< per channel, 0-255
+  std::string tolerances_file;     ///< empty: built-in tolerances
+  int pixel_tolerance = 0;         ///< per channel, 0-255
   std::size_t pixels_allowed = 0;  ///< pixels beyond it a frame may have and still match
   std::size_t base_cases = 0, new_cases = 0;
-  std::vector<CaseDiff> cases;       ///< sorted by name
+  std::vector<CaseDiff> cases;             ///< sorted by name
   std::vector<ProvenanceDiff> provenance;  ///< of the runs as a whole (values over all cases)
-  std::string sweep_name;            ///< empty: no sweep in either run
+  std::string sweep_name;                  ///< empty: no sweep in either run
   std::size_t sweep_rows_base = 0, sweep_rows_new = 0;
-  std::vector<SweepRowDiff> sweep;   ///< changed rows, largest change first
+  std::vector<SweepRowDiff> sweep;  ///< changed rows, largest change first
 
   /// How many cases moved beyond tolerance.
   std::size_t beyond_count() const;

@@ -1,8 +1,8 @@
 // the parts of a page every study shares: axis labels from unit-suffixed keys and the table
 // of a typed value written as JSON (to_json)
 #include <algorithm>
-#include <sstream>
 #include <map>
+#include <sstream>
 
 #include "report/number_format.hpp"
 #include "report/study_sections.hpp"
@@ -28,12 +28,10 @@ constexpr UnitSuffix kUnits[] = {
 // what a plotted quantity is called, by its key stem
 std::string quantity_name(const std::string& stem) {
   static const std::map<std::string, std::string> names = {
-      {"q", "joint angle"},          {"qd", "joint velocity"},
-      {"qdd", "joint acceleration"}, {"tau", "joint torque"},
-      {"torque", "joint torque"},    {"power", "power"},
-      {"theta", "angle"},            {"theta_d", "angular velocity"},
-      {"voltage", "voltage"},        {"current", "current"},
-      {"sd", "path speed s'"},       {"s", "path position s"},
+      {"q", "joint angle"},    {"qd", "joint velocity"},        {"qdd", "joint acceleration"},
+      {"tau", "joint torque"}, {"torque", "joint torque"},      {"power", "power"},
+      {"theta", "angle"},      {"theta_d", "angular velocity"}, {"voltage", "voltage"},
+      {"current", "current"},  {"sd", "path speed s'"},         {"s", "path position s"},
   };
   if (auto it = names.find(stem); it != names.end()) return it->second;
   std::string out = stem;
@@ -65,8 +63,9 @@ void flatten_json(const json& j, const std::string& path, Table* t) {
     }
     t->rows.push_back({path, v + "]"});
   } else if (!j.is_null()) {
-    t->rows.push_back({path, j.is_number() ? format_sig(j.get<double>(), 6)
-                                           : j.is_string() ? j.get<std::string>() : j.dump()});
+    t->rows.push_back({path, j.is_number()   ? format_sig(j.get<double>(), 6)
+                             : j.is_string() ? j.get<std::string>()
+                                             : j.dump()});
   }
 }
 }  // namespace

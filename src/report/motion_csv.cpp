@@ -31,7 +31,8 @@ void MotionCsv::add_joints(const std::string& name, const std::string& unit,
   add_joints(name, unit, v);
 }
 
-void MotionCsv::add_rows(const std::string& name, const std::string& unit, const Eigen::MatrixXd& m) {
+void MotionCsv::add_rows(const std::string& name, const std::string& unit,
+                         const Eigen::MatrixXd& m) {
   for (int j = 0; j < m.rows(); ++j) {
     std::vector<double> col(m.cols());
     for (int k = 0; k < m.cols(); ++k) col[k] = m(j, k);
@@ -50,8 +51,9 @@ size_t MotionCsv::rows() const {
   const size_t n = columns.front().values.size();
   for (const auto& c : columns)
     if (c.values.size() != n)
-      throw std::invalid_argument(file + ": column '" + c.header() + "' has " + std::to_string(c.values.size()) +
-                                  " values; column '" + columns.front().header() + "' has " + std::to_string(n));
+      throw std::invalid_argument(file + ": column '" + c.header() + "' has " +
+                                  std::to_string(c.values.size()) + " values; column '" +
+                                  columns.front().header() + "' has " + std::to_string(n));
   return n;
 }
 

@@ -91,7 +91,7 @@ struct Section {
 struct CasePage {
   std::string title;
   std::string study;
-  std::string status;      ///< "solved" / "unsolvable"
+  std::string status;  ///< "solved" / "unsolvable"
   std::string message;
   std::string description;
   std::vector<std::pair<std::string, std::string>> key_figures;  ///< for the header and index

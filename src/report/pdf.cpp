@@ -15,12 +15,12 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
-#include <condition_variable>
-#include <functional>
 #include <chrono>
+#include <condition_variable>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -89,7 +89,8 @@ Live& live() {
 struct Profile {
   fs::path path;
   Profile() {
-    std::string tmpl = (fs::temp_directory_path() / (std::string(kProfilePrefix) + "XXXXXX")).string();
+    std::string tmpl =
+        (fs::temp_directory_path() / (std::string(kProfilePrefix) + "XXXXXX")).string();
     if (!::mkdtemp(tmpl.data()))
       throw PdfError(std::string("cannot create a temporary Chromium profile in ") +
                      fs::temp_directory_path().string() + ": " + std::strerror(errno));
@@ -233,8 +234,7 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
   }
   ::setpgid(pid, pid);
   BrowserGroup group(pid);
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   int status = 0;
   while (true) {
     const pid_t r = ::waitpid(pid, &status, WNOHANG);
@@ -400,7 +400,8 @@ class PipeBrowser {
   PipeBrowser& operator=(const PipeBrowser&) = delete;
 
   /// Sends a command (to a page's session when `session` is not empty); returns its id.
-  int send(const std::string& method, const nlohmann::json& params, const std::string& session = "") {
+  int send(const std::string& method, const nlohmann::json& params,
+           const std::string& session = "") {
     nlohmann::json m = {{"id", ++next_id_}, {"method", method}, {"params", params}};
     if (!session.empty()) m["sessionId"] = session;
     std::string text = m.dump();
@@ -408,7 +409,9 @@ class PipeBrowser {
     for (size_t at = 0; at < text.size();) {
       const ssize_t n = ::send(fd_, text.data() + at, text.size() - at, MSG_NOSIGNAL);
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) throw PdfError("lost the connection to Chromium (" + std::string(std::strerror(errno)) + ")");
+      if (n <= 0)
+        throw PdfError("lost the connection to Chromium (" + std::string(std::strerror(errno)) +
+                       ")");
       at += static_cast<size_t>(n);
     }
     return next_id_;
@@ -420,7 +423,8 @@ class PipeBrowser {
     while (true) {
       const size_t end = in_.find('\0', scanned_);
       if (end != std::string::npos) {
-        nlohmann::json m = nlohmann::json::parse(in_.begin(), in_.begin() + static_cast<long>(end), nullptr, false);
+        nlohmann::json m = nlohmann::json::parse(in_.begin(), in_.begin() + static_cast<long>(end),
+                                                 nullptr, false);
         in_.erase(0, end + 1);
         scanned_ = 0;
         if (m.is_discarded()) throw PdfError("Chromium sent a message that is not JSON");
@@ -434,7 +438,9 @@ class PipeBrowser {
       char buf[1 << 16];
       const ssize_t n = ::read(fd_, buf, sizeof buf);
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) throw PdfError("Chromium closed the DevTools pipe: " + tail_of(profile_.path / "chromium.log", 400));
+      if (n <= 0)
+        throw PdfError("Chromium closed the DevTools pipe: " +
+                       tail_of(profile_.path / "chromium.log", 400));
       in_.append(buf, static_cast<size_t>(n));
       wait_ms = 0;  // the rest of a message that has begun is read at once
     }
@@ -536,7 +542,8 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
   using clock = std::chrono::steady_clock;
   PipeBrowser browser(chromium);
   std::vector<Tab> tabs(static_cast<size_t>(std::clamp(parallel, 1, 8)));
-  const auto limit = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(timeout_s));
+  const auto limit =
+      std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(timeout_s));
   const auto job_of = [&](const Tab& t) -> PdfJob {
     std::lock_guard<std::mutex> lock(q.mu);
     return q.jobs[static_cast<size_t>(t.job)];
@@ -570,8 +577,10 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
     t.step = Tab::kPrint;
     // the options of headless Chromium's --print-to-pdf with --no-pdf-header-footer
     t.pending = browser.send("Page.printToPDF",
-                             {{"displayHeaderFooter", false}, {"printBackground", true},
-                              {"preferCSSPageSize", true}, {"transferMode", "ReturnAsBase64"}},
+                             {{"displayHeaderFooter", false},
+                              {"printBackground", true},
+                              {"preferCSSPageSize", true},
+                              {"transferMode", "ReturnAsBase64"}},
                              t.session);
   };
   auto last_message = clock::now();
@@ -593,7 +602,8 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
       // a browser that answers nothing while it has pages to print is not printing (nor
       // speaking the protocol)
       if (!busy) last_message = now;
-      if (now - last_message > limit) throw PdfError("Chromium did not answer on the DevTools pipe");
+      if (now - last_message > limit)
+        throw PdfError("Chromium did not answer on the DevTools pipe");
       continue;
     }
     last_message = now;
@@ -624,7 +634,8 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
       case Tab::kCreate:
         t.target = r.value("targetId", "");
         t.step = Tab::kAttach;
-        t.pending = browser.send("Target.attachToTarget", {{"targetId", t.target}, {"flatten", true}});
+        t.pending =
+            browser.send("Target.attachToTarget", {{"targetId", t.target}, {"flatten", true}});
         break;
       case Tab::kAttach:
         t.session = r.value("sessionId", "");
@@ -638,7 +649,8 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
       case Tab::kNavigate:
         if (r.contains("errorText") && r["errorText"].is_string() &&
             !r["errorText"].get<std::string>().empty()) {
-          fail(t, "Chromium could not open " + job.html.string() + ": " + r["errorText"].get<std::string>());
+          fail(t, "Chromium could not open " + job.html.string() + ": " +
+                      r["errorText"].get<std::string>());
           break;
         }
         t.navigated = true;
@@ -657,8 +669,7 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
         }
         break;
       }
-      default:
-        break;
+      default: break;
     }
   }
 }
@@ -697,7 +708,8 @@ void drain(const std::string& chromium, PrintQueue& q, int parallel, double time
 
 }  // namespace
 
-std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel, double timeout_s) {
+std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel,
+                                    double timeout_s) {
   if (jobs.empty()) return {};
   const std::string chromium = chromium_or_throw();
   PrintQueue q;

@@ -39,7 +39,8 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
       "swings on its hinge and the ball rolls without slipping on a circle in the tray "
       "(r_b φ' = -r4 θ4'). The equations of motion come from first principles (the ball's spin "
       "includes the tray's rotation) and are integrated from rest with " +
-      integ.name + " at rtol = " + format_sig(integ.rtol, 2) + ", atol = " + format_sig(integ.atol, 2) +
+      integ.name + " at rtol = " + format_sig(integ.rtol, 2) +
+      ", atol = " + format_sig(integ.atol, 2) +
       ". With no actuator and no friction the mechanical energy K + U must stay constant; its "
       "drift measures the model and the integrator together (the paper's Figure 3).");
   for (const std::string& c : par.choices)
@@ -63,8 +64,8 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
             {"largest drift |E(t) - E(0)|", format_sig(energy.drift_J, 3) + " J"},
             {"drift relative to the energy exchanged", format_sig(energy.drift_relative, 3)},
             {"allowed relative drift", format_sig(energy.tolerance_relative, 3)},
-            {"steps accepted / rejected", std::to_string(integ.steps_accepted) + " / " +
-                                              std::to_string(integ.steps_rejected)},
+            {"steps accepted / rejected",
+             std::to_string(integ.steps_accepted) + " / " + std::to_string(integ.steps_rejected)},
             {"right-hand-side evaluations", std::to_string(integ.evaluations)},
             {"run time", format_sig(p.run_time_s, 3) + " s"}};
   res.table(std::move(t));
@@ -75,8 +76,8 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     e.x_label = "time (s)";
     e.y_label = "energy relative to the start (J)";
     e.series.push_back({"kinetic K", ts, series.kinetic_J, colour_for("kinetic")});
-    e.series.push_back({"potential U - U(0)", ts, minus_first(series.potential_J),
-                        colour_for("potential")});
+    e.series.push_back(
+        {"potential U - U(0)", ts, minus_first(series.potential_J), colour_for("potential")});
     e.series.push_back({"mechanical K + U - E(0)", ts, minus_first(series.total_J),
                         colour_for("mechanical"), LineStyle::kDashed});
     res.figure(figures.line("energies", e,
@@ -86,12 +87,11 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     d.title = "mechanical energy drift";
     d.x_label = "time (s)";
     d.y_label = "E(t) - E(0) (J)";
-    d.series.push_back({"E(t) - E(0)", ts, minus_first(series.total_J),
-                        colour_for("mechanical")});
+    d.series.push_back({"E(t) - E(0)", ts, minus_first(series.total_J), colour_for("mechanical")});
     res.figure(figures.line("energy_drift", d,
                             "The drift of the mechanical energy at full scale: rounding and "
-                            "integrator error only (largest " + format_sig(energy.drift_J, 3) +
-                                " J)."));
+                            "integrator error only (largest " +
+                                format_sig(energy.drift_J, 3) + " J)."));
   }
   page.sections.push_back(std::move(res));
 
@@ -103,10 +103,10 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     a.title = "tray and ball angles over time";
     a.x_label = "time (s)";
     a.y_label = "angle (rad)";
-    a.series.push_back({"θ3 (tray, relative to link 2)", ts, column(series.q_rad, 2),
-                        colour_for("joint3")});
-    a.series.push_back({"θ4 (ball, relative to the tray)", ts,
-                        column(series.q_rad, 3), colour_for("joint4")});
+    a.series.push_back(
+        {"θ3 (tray, relative to link 2)", ts, column(series.q_rad, 2), colour_for("joint3")});
+    a.series.push_back(
+        {"θ4 (ball, relative to the tray)", ts, column(series.q_rad, 3), colour_for("joint4")});
     mo.figure(figures.line("angles", a,
                            "The passive coordinates over time; joints 1 and 2 stay locked at " +
                                to_json(par.locked_deg).dump() + " deg."));
@@ -125,11 +125,10 @@ void pendulum_sections(const json& results, FigureWriter& figures, CasePage& pag
     path.y_label = "height y (m)";
     path.nx = path.ny = 2;
     path.z.assign(4, NAN);
-    Series ball{"ball centre", column(series.ball_xy_m, 0),
-                column(series.ball_xy_m, 1), colour_for("joint4")};
+    Series ball{"ball centre", column(series.ball_xy_m, 0), column(series.ball_xy_m, 1),
+                colour_for("joint4")};
     Series centre{"centre of the ball's circle", column(series.circle_centre_xy_m, 0),
-                  column(series.circle_centre_xy_m, 1), colour_for("joint3"),
-                  LineStyle::kDashed};
+                  column(series.circle_centre_xy_m, 1), colour_for("joint3"), LineStyle::kDashed};
     double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
     for (const Series* s : {&ball, &centre})
       for (size_t k = 0; k < s->x.size(); ++k)

@@ -1,15 +1,15 @@
 // the placement study of Kopmaz (2016): optima, time series (figs. 9.1-9.5),
 // energy over direction angle (9.11), placement maps, root loci (9.30), pareto front
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
-#include <cmath>
 #include <sstream>
 
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
-#include "report/results_record.hpp"
 #include "report/results_fields.hpp"
+#include "report/results_record.hpp"
 #include "report/study_sections.hpp"
 #include "studies/placement/results_section.hpp"
 
@@ -46,14 +46,18 @@ std::string binding_text(const PS::Optimum& o, const PS& pl) {
   const std::string margin = format_sig(d.margin_m, 3) + " m";
   const std::string joint = d.joint ? as_text(*d.joint) : "null";
   if (b == "inner_clearance")
-    return "the " + margin + " clearance margin to the inner circle |L1 - L2| = " + format_sig(pl.annulus_m[0], 3) + " m";
+    return "the " + margin +
+           " clearance margin to the inner circle |L1 - L2| = " + format_sig(pl.annulus_m[0], 3) +
+           " m";
   if (b == "outer_clearance")
-    return "the " + margin + " clearance margin to the outer circle L1 + L2 = " + format_sig(pl.annulus_m[1], 3) + " m";
+    return "the " + margin +
+           " clearance margin to the outer circle L1 + L2 = " + format_sig(pl.annulus_m[1], 3) +
+           " m";
   if (b == "torque_limit") return "the torque limit of joint " + joint;
   if (b == "power_limit") return "the power limit of joint " + joint;
   if (b == "interior")
-    return "interior (clearances exceed the margin by " + format_sig(d.inner_slack_m, 3) + " m inner, " +
-           format_sig(d.outer_slack_m, 3) + " m outer)";
+    return "interior (clearances exceed the margin by " + format_sig(d.inner_slack_m, 3) +
+           " m inner, " + format_sig(d.outer_slack_m, 3) + " m outer)";
   return b;
 }
 // a candidate's status in words ("singular" in results.json is "inside the margin": the
@@ -91,7 +95,9 @@ LinePlot optima_plot(const std::string& title, const std::string& y_label,
       s.x = t;
       s.y = y;
       s.colour = colour_for(o.colour_key.empty() ? o.label : o.colour_key);
-      s.style = curve == 0 ? LineStyle::kSolid : curve == 1 ? LineStyle::kDashed : LineStyle::kDotted;
+      s.style = curve == 0   ? LineStyle::kSolid
+                : curve == 1 ? LineStyle::kDashed
+                             : LineStyle::kDotted;
       const std::string what = curve < labels.size() ? labels[curve] : "";
       // several owners: colour names the owner, style the column (legend entries below)
       s.label = owners.size() == 1 ? what : columns.size() == 1 ? o.label : "";
@@ -144,8 +150,8 @@ Section task_section(const PS& pl) {
   t.header = {"quantity", "value"};
   auto row = [&](const std::string& k, const std::string& v) { t.rows.push_back({k, v}); };
   row("Lmax = 4 sqrt(L1 L2)", format_sig(pl.lmax_m, 5) + " m");
-  row("line length L", format_sig(pl.length_m, 5) + " m (" +
-                           format_sig(pl.length_fraction, 4) + " Lmax)");
+  row("line length L",
+      format_sig(pl.length_m, 5) + " m (" + format_sig(pl.length_fraction, 4) + " Lmax)");
   row("duration T", format_sig(pl.duration_s, 4) + " s");
   row("samples per trajectory", as_text(pl.samples));
   row("singularity margin", format_sig(pl.singularity_margin_m, 4) + " m");
@@ -164,8 +170,9 @@ Section task_section(const PS& pl) {
   if (pl.geometry_counts) {
     const auto& c = *pl.geometry_counts;
     Table ct;
-    ct.caption = "Candidates of the geometric sweep (x_S grid × φ in [0°, 180°]) and the "
-                 "thesis's own intervals against the exact annulus check.";
+    ct.caption =
+        "Candidates of the geometric sweep (x_S grid × φ in [0°, 180°]) and the "
+        "thesis's own intervals against the exact annulus check.";
     ct.header = {"candidates", "count"};
     for (const auto& [n, label] : std::vector<std::pair<int, const char*>>{
              {c.total, "total"},
@@ -186,11 +193,12 @@ Section task_section(const PS& pl) {
 // what decides each optimum, how converged the refinement and the energy integral are
 Table decision_table(const PS& pl) {
   Table t;
-  t.caption = "What decides each optimum: the binding constraint (a clearance margin to a "
-              "workspace circle, a torque or power limit) or 'interior' when none is active; "
-              "the constrained refinement's final tolerance (the relative energy a last COBYLA "
-              "restart still gained, target 1e-7) and the optimum's own energy convergence "
-              "(samples doubled until the energy changes by less than 1e-4).";
+  t.caption =
+      "What decides each optimum: the binding constraint (a clearance margin to a "
+      "workspace circle, a torque or power limit) or 'interior' when none is active; "
+      "the constrained refinement's final tolerance (the relative energy a last COBYLA "
+      "restart still gained, target 1e-7) and the optimum's own energy convergence "
+      "(samples doubled until the energy changes by less than 1e-4).";
   t.header = {"program, configuration", "decided by", "inner / outer clearance − margin (m)",
               "refinement tolerance", "energy: samples, change on doubling"};
   for (const auto& o : pl.optima) {
@@ -208,7 +216,8 @@ Table decision_table(const PS& pl) {
       return std::abs(v) < 1e-12 ? std::string("0 (binds)") : format_sig(v, 3);
     };
     t.rows.push_back({id_label(o), binding_text(o, pl),
-                      slack(o.decided_by.inner_slack_m) + " / " + slack(o.decided_by.outer_slack_m), tol, conv});
+                      slack(o.decided_by.inner_slack_m) + " / " + slack(o.decided_by.outer_slack_m),
+                      tol, conv});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
   }
   return t;
@@ -233,15 +242,18 @@ std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
       se.y.push_back(m.optimum->energy_J);
     }
     if (se.x.size() < 2) continue;
-    range += (range.empty() ? "" : "; ") + id_label(o) + " " + format_sig(se.y.front(), 5) + " J at " +
-             format_sig(se.x.front(), 3) + " m to " + format_sig(se.y.back(), 5) + " J at " +
-             format_sig(se.x.back(), 3) + " m";
+    range += (range.empty() ? "" : "; ") + id_label(o) + " " + format_sig(se.y.front(), 5) +
+             " J at " + format_sig(se.x.front(), 3) + " m to " + format_sig(se.y.back(), 5) +
+             " J at " + format_sig(se.x.back(), 3) + " m";
     // the binding circle may change along the curve (a kink)
     std::string prev, changes;
     for (const auto& m : o.margin_sensitivity) {
       const std::string b = m.optimum ? m.optimum->binding : std::string();
       if (!prev.empty() && !b.empty() && b != prev)
-        changes += ", " + std::string(b == "outer_clearance" ? "the outer" : b == "inner_clearance" ? "the inner" : b) +
+        changes += ", " +
+                   std::string(b == "outer_clearance"   ? "the outer"
+                               : b == "inner_clearance" ? "the inner"
+                                                        : b) +
                    " circle binds from " + format_sig(m.margin_m, 3) + " m";
       if (!b.empty()) prev = b;
     }
@@ -249,12 +261,13 @@ std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
     plot.series.push_back(std::move(se));
   }
   if (plot.series.empty()) return std::nullopt;
-  return figures.line("margin_sensitivity", plot,
-                      "Margin sensitivity: each optimum set by a clearance margin, re-solved (sweep "
-                      "and constrained refinement) at margins from 0.005 m to 0.05 m. The energy "
-                      "falls as the margin shrinks: the margin, not the physics, decides these "
-                      "optima (" + range + "). The case's margin is " +
-                          format_sig(pl.singularity_margin_m, 3) + " m.");
+  return figures.line(
+      "margin_sensitivity", plot,
+      "Margin sensitivity: each optimum set by a clearance margin, re-solved (sweep "
+      "and constrained refinement) at margins from 0.005 m to 0.05 m. The energy "
+      "falls as the margin shrinks: the margin, not the physics, decides these "
+      "optima (" +
+          range + "). The case's margin is " + format_sig(pl.singularity_margin_m, 3) + " m.");
 }
 
 Section optima_section(const PS& pl, FigureWriter& figures) {
@@ -262,20 +275,27 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
   s.id = "optima";
   s.heading = "Optimal placements";
   Table t;
-  t.caption = "Refined optimum per motion program and configuration (the grid optimum's "
-              "energy beside it). Root (X, Y) in the frame fixed to the line (4.14); peaks "
-              "are [joint 1, joint 2].";
-  t.header = {"program, configuration", "energy (J)", "grid energy (J)", "x_S (m)", "φ (deg)",
-              "root (X, Y) (m)", "min |sin q2|", "peak torque (N m)", "peak power (W)",
+  t.caption =
+      "Refined optimum per motion program and configuration (the grid optimum's "
+      "energy beside it). Root (X, Y) in the frame fixed to the line (4.14); peaks "
+      "are [joint 1, joint 2].";
+  t.header = {"program, configuration",
+              "energy (J)",
+              "grid energy (J)",
+              "x_S (m)",
+              "φ (deg)",
+              "root (X, Y) (m)",
+              "min |sin q2|",
+              "peak torque (N m)",
+              "peak power (W)",
               "signed work (J)"};
   std::vector<SeriesOwner> owners;
   for (const auto& o : pl.optima) {
-    t.rows.push_back({id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6),
-                      format_sig(o.x_s_m, 6), format_sig(o.phi_deg, 6),
-                      pair_str(o.root_xy_m, 5), format_sig(o.min_abs_sin_elbow, 3),
-                      singular_motion(o) ? std::string(kSingularText) : pair_str(o.peak_torque_Nm, 4),
-                      pair_str(o.peak_power_W, 4),
-                      format_sig(o.signed_work_J, 3)});
+    t.rows.push_back(
+        {id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6), format_sig(o.x_s_m, 6),
+         format_sig(o.phi_deg, 6), pair_str(o.root_xy_m, 5), format_sig(o.min_abs_sin_elbow, 3),
+         singular_motion(o) ? std::string(kSingularText) : pair_str(o.peak_torque_Nm, 4),
+         pair_str(o.peak_power_W, 4), format_sig(o.signed_work_J, 3)});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
     owners.push_back({id_label(o), id_key(o), &o.series});
   }
@@ -287,7 +307,8 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
     // one note per binding constraint, naming the optima it decides
     std::map<std::string, std::string> by;
     for (const auto& o : pl.optima)
-      if (set_by_margin(o)) by[binding_text(o, pl)] += (by[binding_text(o, pl)].empty() ? "" : ", ") + id_label(o);
+      if (set_by_margin(o))
+        by[binding_text(o, pl)] += (by[binding_text(o, pl)].empty() ? "" : ", ") + id_label(o);
     for (const auto& [what, who] : by)
       s.note("The optimum of " + who + " is set by " + what +
              ", not by the physics: it lies on the margin and its energy keeps falling as the "
@@ -304,7 +325,8 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
   std::vector<std::string> labels;
   for (const auto& e : pl.evaluations) {
     const std::string& label = e.label;
-    if (label.rfind("thesis", 0) == 0 && std::find(labels.begin(), labels.end(), label) == labels.end())
+    if (label.rfind("thesis", 0) == 0 &&
+        std::find(labels.begin(), labels.end(), label) == labels.end())
       labels.push_back(label);
   }
   for (const std::string& label : labels) {
@@ -313,22 +335,23 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
     for (const auto& e : pl.evaluations) {
       if (e.label != label) continue;
       if (!first) first = &e;
-      energies += (energies.empty() ? "" : "; ") + id_label(e) + " " +
-                  (singular_motion(e) ? std::string(kSingularText) : format_sig(e.energy_J, 5) + " J") +
-                  (std::isfinite(e.saving_percent)
-                       ? " (the optimum saves " + format_sig(e.saving_percent, 3) + " %)"
-                       : "");
+      energies +=
+          (energies.empty() ? "" : "; ") + id_label(e) + " " +
+          (singular_motion(e) ? std::string(kSingularText) : format_sig(e.energy_J, 5) + " J") +
+          (std::isfinite(e.saving_percent)
+               ? " (the optimum saves " + format_sig(e.saving_percent, 3) + " %)"
+               : "");
     }
     const PS::Evaluation& e = *first;
     const std::string& status = e.status;
     text = "The thesis's printed placement '" + label + "' (x_S = " + format_sig(e.x_s_m, 5) +
            " m, φ = " + format_sig(e.phi_deg, 5) + "°) is " +
-           (singular_motion(e) && status != "unreachable" ? std::string("on a workspace boundary") : status_text(e.status)) +
+           (singular_motion(e) && status != "unreachable" ? std::string("on a workspace boundary")
+                                                          : status_text(e.status)) +
            " by the exact check";
     if (status == "unreachable")
       text += ": with its printed digits part of the line lies outside the annulus (by " +
-              format_sig(-e.boundary_distance_m, 3) +
-              " m), so no motion exists there.";
+              format_sig(-e.boundary_distance_m, 3) + " m), so no motion exists there.";
     else if (singular_motion(e))
       text += " (clearance " + format_sig(e.boundary_distance_m, 3) + " m), so its motion is " +
               kSingularText + "; no energy, peak torque or saving is given for it.";
@@ -337,7 +360,8 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
               " m of a workspace boundary (smallest |sin q2| " +
               format_sig(e.min_abs_sin_elbow, 3) +
               "), so it is not admissible; its energies with the samples doubled until they "
-              "converge: " + energies + ".";
+              "converge: " +
+              energies + ".";
     else
       text += "; its energies here: " + energies + ".";
     s.note(text);
@@ -353,15 +377,20 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
     const char* thesis_fig;
   };
   const Quantity quantities[] = {
-      {"joint_angles", "joint angles", &PS::Series::q1_rad, &PS::Series::q2_rad, "joint angle (rad)", "9.1"},
-      {"joint_velocities", "joint velocities", &PS::Series::qd1_rad_s, &PS::Series::qd2_rad_s, "joint velocity (rad/s)", "9.2"},
-      {"joint_accelerations", "joint accelerations", &PS::Series::qdd1_rad_s2, &PS::Series::qdd2_rad_s2, "joint acceleration (rad/s²)", "9.3"},
-      {"joint_torques", "joint torques", &PS::Series::tau1_Nm, &PS::Series::tau2_Nm, "joint torque (N m)", "9.4"},
+      {"joint_angles", "joint angles", &PS::Series::q1_rad, &PS::Series::q2_rad,
+       "joint angle (rad)", "9.1"},
+      {"joint_velocities", "joint velocities", &PS::Series::qd1_rad_s, &PS::Series::qd2_rad_s,
+       "joint velocity (rad/s)", "9.2"},
+      {"joint_accelerations", "joint accelerations", &PS::Series::qdd1_rad_s2,
+       &PS::Series::qdd2_rad_s2, "joint acceleration (rad/s²)", "9.3"},
+      {"joint_torques", "joint torques", &PS::Series::tau1_Nm, &PS::Series::tau2_Nm,
+       "joint torque (N m)", "9.4"},
       {"joint_powers", "powers", &PS::Series::power1_W, &PS::Series::power2_W, "power (W)", "9.5"},
   };
-  s.paragraph("The motion of each optimum over time, two plots to a row: colour is the "
-              "program and configuration (as in the tables), solid is joint 1 (q1, link 1 from "
-              "the base), dashed joint 2 (q2, the elbow, relative to link 1).");
+  s.paragraph(
+      "The motion of each optimum over time, two plots to a row: colour is the "
+      "program and configuration (as in the tables), solid is joint 1 (q1, link 1 from "
+      "the base), dashed joint 2 (q2, the elbow, relative to link 1).");
   for (const Quantity& q : quantities) {
     const std::string what = q.plural;
     LinePlot plot = optima_plot(what + " of the optima", q.unit_label, owners, {q.key1, q.key2},
@@ -404,8 +433,10 @@ void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
       excluded.y.push_back(st == 's' || st == 'x' ? e[k] : NAN);
       // join the dotted part to its solid neighbours
       if (k > 0 && (st == 'o') != (k - 1 < status.size() && status[k - 1] == 'o')) {
-        if (st == 'o') excluded.y[k] = e[k];
-        else excluded.y[k - 1] = e[k - 1];
+        if (st == 'o')
+          excluded.y[k] = e[k];
+        else
+          excluded.y[k - 1] = e[k - 1];
       }
     }
     plot.series.push_back(std::move(ok));
@@ -419,7 +450,8 @@ void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
       mark.markers = true;
       mark.x = {o.phi_deg};
       mark.y = {o.energy_J};
-      if (std::isfinite(mark.x[0]) && std::isfinite(mark.y[0])) plot.series.push_back(std::move(mark));
+      if (std::isfinite(mark.x[0]) && std::isfinite(mark.y[0]))
+        plot.series.push_back(std::move(mark));
     }
   }
   bool any = false;
@@ -430,7 +462,8 @@ void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
     return;
   }
   // (each curve's x_S is in its legend entry)
-  s.figure(half(figures.line("energy_vs_phi", half_size(plot),
+  s.figure(
+      half(figures.line("energy_vs_phi", half_size(plot),
                         "Energy of the motion over the direction angle φ at each optimum's own "
                         "start abscissa x_S, as the thesis's Figure 9.11; the marker is the "
                         "optimum itself (an optimum on the margin sits where its curve turns "
@@ -469,7 +502,8 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
       if (st[j * nx + i] != '.') include(i, j);
   auto nearest = [](const std::vector<double>& v, double x) {
     const auto at = std::lower_bound(v.begin(), v.end(), x);
-    return static_cast<size_t>(std::min<std::ptrdiff_t>(at - v.begin(), static_cast<std::ptrdiff_t>(v.size()) - 1));
+    return static_cast<size_t>(
+        std::min<std::ptrdiff_t>(at - v.begin(), static_cast<std::ptrdiff_t>(v.size()) - 1));
   };
   auto include_point = [&](double x, double y) {
     if (std::isfinite(x) && std::isfinite(y)) include(nearest(xs, x), nearest(ys, y));
@@ -481,7 +515,8 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   if (i0 > i1 || j0 > j1) {
     i0 = j0 = 0, i1 = nx - 1, j1 = ny - 1;  // nothing reachable: the whole grid
   } else {
-    const size_t pad_x = std::max<size_t>(2, (i1 - i0) / 12), pad_y = std::max<size_t>(2, (j1 - j0) / 12);
+    const size_t pad_x = std::max<size_t>(2, (i1 - i0) / 12),
+                 pad_y = std::max<size_t>(2, (j1 - j0) / 12);
     i0 = i0 > pad_x ? i0 - pad_x : 0, j0 = j0 > pad_y ? j0 - pad_y : 0;
     i1 = std::min(nx - 1, i1 + pad_x), j1 = std::min(ny - 1, j1 + pad_y);
     // at least a quarter of the grid along each axis: a thin reachable band stays readable
@@ -498,7 +533,8 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   }
   const size_t cx = i1 - i0 + 1, cy = j1 - j0 + 1;
   // thinned grid for drawing; a drawn cell takes the most severe status of its block
-  const size_t kx = (cx + kMaxMapCells - 1) / kMaxMapCells, ky = (cy + kMaxMapCells - 1) / kMaxMapCells;
+  const size_t kx = (cx + kMaxMapCells - 1) / kMaxMapCells,
+               ky = (cy + kMaxMapCells - 1) / kMaxMapCells;
   const size_t mx = (cx - 1) / kx + 1, my = (cy - 1) / ky + 1;
   ShadedMap map;
   map.title = "energy over root locations, " + id_label(m);
@@ -518,7 +554,8 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   if (!(span_ratio < 2.5 && span_ratio > 0.4)) map.equal_aspect = false;
   map.z.assign(mx * my, NAN);
   MapRegion unreachable{"unreachable", kUnreachable, std::vector<std::uint8_t>(mx * my, 0)};
-  MapRegion singular{"inside the margin (inadmissible)", kSingular, std::vector<std::uint8_t>(mx * my, 0)};
+  MapRegion singular{"inside the margin (inadmissible)", kSingular,
+                     std::vector<std::uint8_t>(mx * my, 0)};
   MapRegion over{"over a torque/power limit", kOverLimit, std::vector<std::uint8_t>(mx * my, 0)};
   std::vector<double> feasible;
   for (size_t j = 0; j < my; ++j)
@@ -530,9 +567,12 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
           worst = std::min(worst, c == '.' ? 0 : c == 's' ? 1 : c == 'x' ? 2 : 3);
         }
       const size_t k = j * mx + i;
-      if (worst == 0) unreachable.mask[k] = 1;
-      else if (worst == 1) singular.mask[k] = 1;
-      else if (worst == 2) over.mask[k] = 1;
+      if (worst == 0)
+        unreachable.mask[k] = 1;
+      else if (worst == 1)
+        singular.mask[k] = 1;
+      else if (worst == 2)
+        over.mask[k] = 1;
       else {
         map.z[k] = z[(j0 + j * ky) * nx + i0 + i * kx];
         if (std::isfinite(map.z[k])) feasible.push_back(map.z[k]);
@@ -547,8 +587,10 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
     if (cap < sorted.back()) {
       for (double& v : map.z)
         if (std::isfinite(v)) v = std::min(v, cap);
-      saturation = " Colours saturate at " + format_sig(cap, 4) + " J (95th percentile; the "
-                   "largest admissible energy is " + format_sig(sorted.back(), 4) + " J).";
+      saturation = " Colours saturate at " + format_sig(cap, 4) +
+                   " J (95th percentile; the "
+                   "largest admissible energy is " +
+                   format_sig(sorted.back(), 4) + " J).";
     }
   }
   map.regions = {unreachable, singular, over};
@@ -560,12 +602,14 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
   line.y = {0.0, 0.0};
   if (std::isfinite(line.x[1])) map.overlays.push_back(line);
   if (m.optimum_xy_m)
-    map.markers.push_back({(*m.optimum_xy_m)[0], (*m.optimum_xy_m)[1], "optimum",
-                           colour_for(id_key(m))});
+    map.markers.push_back(
+        {(*m.optimum_xy_m)[0], (*m.optimum_xy_m)[1], "optimum", colour_for(id_key(m))});
   for (const auto& th : pl.thesis_search)
     if (id_key(th) == id_key(m))
-      map.markers.push_back({th.root_xy_m[0], th.root_xy_m[1],
-                             "thesis-interval best (" + status_text(th.status) + ")", {0, 0, 0},
+      map.markers.push_back({th.root_xy_m[0],
+                             th.root_xy_m[1],
+                             "thesis-interval best (" + status_text(th.status) + ")",
+                             {0, 0, 0},
                              false});
   const std::string name = "map_" + m.program + "_" + as_text(m.configuration);
   const std::string drawn =
@@ -573,11 +617,11 @@ bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& 
                     format_sig(map.x_max, 3) + " m, Y " + format_sig(map.y_min, 3) + " to " +
                     format_sig(map.y_max, 3) + " m; "
               : " (";
-  Figure f = figures.map(name, map,
-                         id_label(m) + ": a " + std::to_string(nx) + " × " + std::to_string(ny) +
-                             " grid" + drawn + std::to_string(mx) + " × " +
-                             std::to_string(my) + " cells drawn" +
-                             (map.equal_aspect ? "" : "; axes not to scale") + ")." + saturation);
+  Figure f =
+      figures.map(name, map,
+                  id_label(m) + ": a " + std::to_string(nx) + " × " + std::to_string(ny) + " grid" +
+                      drawn + std::to_string(mx) + " × " + std::to_string(my) + " cells drawn" +
+                      (map.equal_aspect ? "" : "; axes not to scale") + ")." + saturation);
   f.half = true;  // the four maps print two by two
   s.figure(std::move(f));
   return true;
@@ -594,12 +638,13 @@ Section maps_section(const PS& pl, FigureWriter& figures) {
   if (n == 0)
     s.paragraph("The result holds no placement map.");
   else
-    s.paragraph("The maps above: the energy of the task over root locations (X, Y) in the "
-                "frame fixed to the line (the line runs from the origin along X), one map per "
-                "program and configuration. Only admissible placements are shaded; unreachable, "
-                "inside-the-margin and over-limit regions are flat colours; the circled cross "
-                "is the optimum, the square the best of the thesis's own intervals. Y < 0 is "
-                "the mirror image with the configurations swapped.");
+    s.paragraph(
+        "The maps above: the energy of the task over root locations (X, Y) in the "
+        "frame fixed to the line (the line runs from the origin along X), one map per "
+        "program and configuration. Only admissible placements are shaded; unreachable, "
+        "inside-the-margin and over-limit regions are flat colours; the circled cross "
+        "is the optimum, the square the best of the thesis's own intervals. Y < 0 is "
+        "the mirror image with the configurations swapped.");
   add_energy_vs_phi(pl, figures, s);
   return s;
 }
@@ -683,7 +728,8 @@ Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps) {
     loci.y_min = y0;
     loci.y_max = y1;
     loci.fit_height = true;
-    maps.figure(half(figures.map("root_loci", loci,
+    maps.figure(
+        half(figures.map("root_loci", loci,
                          "Optimal root location of each program and configuration in the line's "
                          "frame (the line starts at the origin), as the thesis's Figure 9.30, "
                          "with each optimum's workspace annulus (dotted) and the locus of the "
@@ -740,10 +786,11 @@ Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps) {
   if (s.blocks.empty())
     s.paragraph("No admissible placement, so no trade-off between peak torque and energy.");
   else
-    s.paragraph("The trade-off plots show what a stronger motor buys: the least energy over the "
-                "admissible placements only (clear of the margin, within every limit, energy "
-                "converged) whose peak torque stays below the abscissa. Grey dotted: the same over "
-                "candidates inside the margin, which are inadmissible and never part of a front.");
+    s.paragraph(
+        "The trade-off plots show what a stronger motor buys: the least energy over the "
+        "admissible placements only (clear of the margin, within every limit, energy "
+        "converged) whose peak torque stays below the abscissa. Grey dotted: the same over "
+        "candidates inside the margin, which are inadmissible and never part of a front.");
   return s;
 }
 
@@ -763,9 +810,10 @@ Section convergence_and_evaluations(const PS& pl) {
   }
   {
     Table t;
-    t.caption = "Energy convergence of each optimum on its own: samples doubled until the "
-                "energy changes by less than 1e-4 and the sampled peak torque by less than 1e-3 "
-                "relative; the first row of each optimum is its printed value.";
+    t.caption =
+        "Energy convergence of each optimum on its own: samples doubled until the "
+        "energy changes by less than 1e-4 and the sampled peak torque by less than 1e-3 "
+        "relative; the first row of each optimum is its printed value.";
     t.header = {"optimum", "samples", "energy (J)", "sampled peak torque (N m)", "verdict"};
     for (const auto& o : pl.optima) {
       if (!o.energy_convergence) continue;
@@ -783,29 +831,32 @@ Section convergence_and_evaluations(const PS& pl) {
     if (!t.rows.empty()) s.table(std::move(t));
   }
   Table th;
-  th.caption = "Least energy among the thesis's own candidates (its intervals 4.7-4.13), "
-               "whatever their status: where it lies inside the margin (or is singular), the "
-               "thesis's method would have reported it as the optimum.";
-  th.header = {"program, configuration", "energy (J)", "x_S (m)", "φ (deg)", "root (X, Y) (m)",
-               "status", "boundary distance (m)", "min |sin q2|"};
+  th.caption =
+      "Least energy among the thesis's own candidates (its intervals 4.7-4.13), "
+      "whatever their status: where it lies inside the margin (or is singular), the "
+      "thesis's method would have reported it as the optimum.";
+  th.header = {
+      "program, configuration", "energy (J)",  "x_S (m)", "φ (deg)", "root (X, Y) (m)", "status",
+      "boundary distance (m)",  "min |sin q2|"};
   for (const auto& o : pl.thesis_search) {
     th.rows.push_back({id_label(o), energy_text(o, 6), format_sig(o.x_s_m, 5),
-                       format_sig(o.phi_deg, 5), pair_str(o.root_xy_m, 4),
-                       status_text(o.status), format_sig(o.boundary_distance_m, 3),
-                       format_sig(o.min_abs_sin_elbow, 3)});
+                       format_sig(o.phi_deg, 5), pair_str(o.root_xy_m, 4), status_text(o.status),
+                       format_sig(o.boundary_distance_m, 3), format_sig(o.min_abs_sin_elbow, 3)});
     th.swatches.push_back(css_colour(colour_for(id_key(o))));
   }
   if (!th.rows.empty()) s.table(std::move(th));
   Table ev;
   ev.caption = "Placements the case asked to evaluate, and what the optimum would save.";
-  ev.header = {"placement", "program, configuration", "x_S (m)", "φ (deg)", "energy (J)",
-               "status", "saving (J)", "saving (%)"};
+  ev.header = {"placement",  "program, configuration",
+               "x_S (m)",    "φ (deg)",
+               "energy (J)", "status",
+               "saving (J)", "saving (%)"};
   for (const auto& e : pl.evaluations)
-    ev.rows.push_back({e.label, id_label(e), format_sig(e.x_s_m, 5),
-                       format_sig(e.phi_deg, 5), energy_text(e, 6),
-                       status_text(e.status),
-                       singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_J, 4),
-                       singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_percent, 3)});
+    ev.rows.push_back(
+        {e.label, id_label(e), format_sig(e.x_s_m, 5), format_sig(e.phi_deg, 5), energy_text(e, 6),
+         status_text(e.status),
+         singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_J, 4),
+         singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_percent, 3)});
   if (!ev.rows.empty()) s.table(std::move(ev));
   if (s.blocks.empty()) s.paragraph("No convergence table or evaluations in the result.");
   return s;
@@ -902,7 +953,8 @@ bool placement_loci_across_cases(const std::vector<std::pair<std::string, const 
   line.width = 2.5;
   m.overlays.push_back(line);
   for (auto& [key, pts] : loci) {
-    std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.length < b.length; });
+    std::sort(pts.begin(), pts.end(),
+              [](const Point& a, const Point& b) { return a.length < b.length; });
     Series locus{labels[key], {}, {}, colour_for(key)};
     for (const Point& p : pts) {
       locus.x.push_back(p.x);

@@ -49,9 +49,9 @@ class CLocaleGuard {
 };
 
 // okabe-ito colour-blind-safe palette, then a few darker extras
-constexpr Rgb kPalette[] = {{0, 114, 178},   {213, 94, 0},   {0, 158, 115}, {204, 121, 167},
-                            {230, 159, 0},   {86, 180, 233}, {120, 94, 60}, {90, 90, 90},
-                            {150, 40, 160},  {40, 120, 40}};
+constexpr Rgb kPalette[] = {{0, 114, 178},  {213, 94, 0},   {0, 158, 115}, {204, 121, 167},
+                            {230, 159, 0},  {86, 180, 233}, {120, 94, 60}, {90, 90, 90},
+                            {150, 40, 160}, {40, 120, 40}};
 constexpr Rgb kBlack{0, 0, 0};
 constexpr Rgb kWhite{255, 255, 255};
 constexpr Rgb kGrey{110, 110, 110};
@@ -172,7 +172,8 @@ class Page {
 };
 
 // draws x/y as polylines, split at non-finite points
-void draw_polyline(plstream& p, const std::vector<double>& x, const std::vector<double>& y, bool log_y) {
+void draw_polyline(plstream& p, const std::vector<double>& x, const std::vector<double>& y,
+                   bool log_y) {
   std::vector<PLFLT> px, py;
   auto flush = [&] {
     if (px.size() >= 2) p.line(static_cast<PLINT>(px.size()), px.data(), py.data());
@@ -191,7 +192,8 @@ void draw_polyline(plstream& p, const std::vector<double>& x, const std::vector<
   flush();
 }
 
-void draw_markers(plstream& p, const std::vector<double>& x, const std::vector<double>& y, bool log_y) {
+void draw_markers(plstream& p, const std::vector<double>& x, const std::vector<double>& y,
+                  bool log_y) {
   for (size_t k = 0; k < x.size(); ++k) {
     PLFLT px = x[k], py = log_y ? (y[k] > 0 ? std::log10(y[k]) : NAN) : y[k];
     if (std::isfinite(px) && std::isfinite(py)) p.poin(1, &px, &py, 4);
@@ -231,20 +233,20 @@ struct LegendEntries {
     const PLINT n = static_cast<PLINT>(opt.size());
     const PLINT rows = (n + columns - 1) / columns;
     PLFLT w = 0, h = 0;
-    p.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX | PL_LEGEND_ROW_MAJOR,
-             position, x, y, 0.07, kSlotBackground, kSlotInk, 1, rows, columns, n, opt.data(),
-             0.8, 0.8, 2.0, 0.0, text_colors.data(), t.data(), box_colors.data(),
-             box_patterns.data(), box_scales.data(), box_line_widths.data(), line_colors.data(),
-             line_styles.data(), line_widths.data(), symbol_colors.data(), symbol_scales.data(),
-             symbol_numbers.data(), s.data());
+    p.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX | PL_LEGEND_ROW_MAJOR, position,
+             x, y, 0.07, kSlotBackground, kSlotInk, 1, rows, columns, n, opt.data(), 0.8, 0.8, 2.0,
+             0.0, text_colors.data(), t.data(), box_colors.data(), box_patterns.data(),
+             box_scales.data(), box_line_widths.data(), line_colors.data(), line_styles.data(),
+             line_widths.data(), symbol_colors.data(), symbol_scales.data(), symbol_numbers.data(),
+             s.data());
   }
 };
 
 void check_series(const Series& s) {
   if (s.x.size() != s.y.size())
-    throw std::invalid_argument("plot series '" + s.label + "' has " +
-                                std::to_string(s.x.size()) + " x values and " +
-                                std::to_string(s.y.size()) + " y values; expected equal sizes");
+    throw std::invalid_argument("plot series '" + s.label + "' has " + std::to_string(s.x.size()) +
+                                " x values and " + std::to_string(s.y.size()) +
+                                " y values; expected equal sizes");
 }
 
 // padded [lo, hi] that is never empty
@@ -271,7 +273,8 @@ double nice_step(double range, double max_ticks) {
 }
 
 // axes with at most one labelled tick per ~50 pt of viewport width, ~30 pt of height
-void draw_box(plstream& p, int width_pt, int height_pt, double x_range, double y_range, bool log_y) {
+void draw_box(plstream& p, int width_pt, int height_pt, double x_range, double y_range,
+              bool log_y) {
   PLFLT vx0, vx1, vy0, vy1;
   p.gvpd(vx0, vx1, vy0, vy1);
   const double xt = nice_step(x_range, std::max(2.0, (vx1 - vx0) * width_pt / 50));
@@ -375,16 +378,16 @@ void set_viridis(plstream& p) {
 
 Rgb colour_for(std::string_view key) {
   static const std::map<std::string, Rgb, std::less<>> known = {
-      {"cycloidal/1", kPalette[0]}, {"cycloidal/2", kPalette[1]},
-      {"poly345/1", kPalette[2]},   {"poly345/2", kPalette[3]},
+      {"cycloidal/1", kPalette[0]},  {"cycloidal/2", kPalette[1]},
+      {"poly345/1", kPalette[2]},    {"poly345/2", kPalette[3]},
       {"reachability", kPalette[0]}, {"dp", kPalette[1]},
-      {"complex", kPalette[2]},     {"mvc", kBlack},
-      {"initial", kPalette[7]},     {"idp", kPalette[0]},
-      {"gradient", kPalette[1]},    {"joint1", kPalette[0]},
-      {"joint2", kPalette[1]},      {"joint3", kPalette[2]},
-      {"joint4", kPalette[3]},      {"limit", kGrey},
-      {"energy", kPalette[0]},      {"kinetic", kPalette[1]},
-      {"potential", kPalette[2]},   {"mechanical", kBlack},
+      {"complex", kPalette[2]},      {"mvc", kBlack},
+      {"initial", kPalette[7]},      {"idp", kPalette[0]},
+      {"gradient", kPalette[1]},     {"joint1", kPalette[0]},
+      {"joint2", kPalette[1]},       {"joint3", kPalette[2]},
+      {"joint4", kPalette[3]},       {"limit", kGrey},
+      {"energy", kPalette[0]},       {"kinetic", kPalette[1]},
+      {"potential", kPalette[2]},    {"mechanical", kBlack},
   };
   if (auto it = known.find(key); it != known.end()) return it->second;
   // fnv-1a: stable across runs and machines, unlike std::hash
@@ -471,7 +474,8 @@ void write_line_plot(const LinePlot& input, const fs::path& svg) {
   plstream& p = page.p;
   const double bottom = (44.0 + legend_pt) / height_pt, top = 1 - 26.0 / height_pt;
   // the y ticks draw_box will write (the same step: it depends on the viewport's height only)
-  const double y_step = plot.log_y ? 0 : nice_step(y_hi - y_lo, std::max(2.0, (top - bottom) * height_pt / 30));
+  const double y_step =
+      plot.log_y ? 0 : nice_step(y_hi - y_lo, std::max(2.0, (top - bottom) * height_pt / 30));
   const double y_offset = y_label_offset(widest_tick_label(y_lo, y_hi, y_step, plot.log_y));
   p.vpor(std::max(0.11, left_edge_for(p, y_offset)), 0.96, bottom, top);
   p.wind(x_lo, x_hi, y_lo, y_hi);
@@ -512,8 +516,8 @@ void write_line_plot(const LinePlot& input, const fs::path& svg) {
   p.lsty(1);
   p.width(0.8);
   // offsets are fractions of the viewport: clear the axis numbers and label (~40 pt)
-  legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0,
-              40.0 / ((top - bottom) * height_pt), columns);
+  legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0, 40.0 / ((top - bottom) * height_pt),
+              columns);
   page.finish(svg);
 }
 
@@ -569,7 +573,8 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
   // and label; a fitted drawing is as tall as the aspect needs (at least 160 pt of plot)
   int body_pt = map.height_pt - 60;
   if (map.fit_height && std::isfinite(aspect) && aspect > 0)
-    body_pt = std::clamp(static_cast<int>(std::ceil(0.70 * map.width_pt * aspect)) + 84, 160 + 84, body_pt);
+    body_pt = std::clamp(static_cast<int>(std::ceil(0.70 * map.width_pt * aspect)) + 84, 160 + 84,
+                         body_pt);
   const int height_pt = body_pt + static_cast<int>(legend_pt);
   Page page(svg, map.width_pt, height_pt,
             static_cast<int>(map.regions.size() + map.overlays.size() + map.markers.size()));
@@ -584,7 +589,8 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     y_offset = y_label_offset(widest_tick_label(wy0, wy1, step, false));
     const double need = left_edge_for(p, y_offset);
     if (need > vx0)
-      p.vpas(0.10 + (need - vx0), 0.80, (50.0 + legend_pt) / height_pt, 1 - 34.0 / height_pt, aspect);
+      p.vpas(0.10 + (need - vx0), 0.80, (50.0 + legend_pt) / height_pt, 1 - 34.0 / height_pt,
+             aspect);
   }
   p.wind(wx0, wx1, wy0, wy1);
   set_viridis(p);
@@ -593,13 +599,14 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
   // the value field, only where it is defined
   std::vector<PLFLT> levels;
   if (has_values) {
-    std::vector<PLFLT> zdata = grid([&](size_t k) { return std::isfinite(map.z[k]) ? map.z[k] : z_lo; });
+    std::vector<PLFLT> zdata =
+        grid([&](size_t k) { return std::isfinite(map.z[k]) ? map.z[k] : z_lo; });
     auto zrows = rows(zdata);
     const int nl = std::max(2, map.levels + 1);
     for (int k = 0; k < nl; ++k) levels.push_back(z_lo + (z_hi - z_lo) * k / (nl - 1));
     g_defined_map = &map;
-    p.shades(zrows.data(), map.nx, map.ny, map_defined, map.x_min, map.x_max, map.y_min,
-             map.y_max, levels.data(), nl, 1.0, 0, 0, plcallback::fill, 1, nullptr, nullptr);
+    p.shades(zrows.data(), map.nx, map.ny, map_defined, map.x_min, map.x_max, map.y_min, map.y_max,
+             levels.data(), nl, 1.0, 0, 0, plcallback::fill, 1, nullptr, nullptr);
     g_defined_map = nullptr;
   }
   // flat regions over it (a mask's edge lies half a cell out, where the contour of 0.5 is)
@@ -607,8 +614,8 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     std::vector<PLFLT> mdata = grid([&](size_t k) { return r.mask[k] ? 1.0 : 0.0; });
     auto mrows = rows(mdata);
     const PLINT c = page.slot(r.colour);
-    p.shade(mrows.data(), map.nx, map.ny, nullptr, map.x_min, map.x_max, map.y_min, map.y_max,
-            0.5, 1.5, 0, c, 1.0, 0, 0, 0, 0, plcallback::fill, 1, nullptr, nullptr);
+    p.shade(mrows.data(), map.nx, map.ny, nullptr, map.x_min, map.x_max, map.y_min, map.y_max, 0.5,
+            1.5, 0, c, 1.0, 0, 0, 0, 0, plcallback::fill, 1, nullptr, nullptr);
     legend.add(r.label, c, PL_LEGEND_COLOR_BOX, 1, 1, "");
   }
   for (const auto& s : map.overlays) {
@@ -649,14 +656,14 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     const PLFLT* values[] = {levels.data()};
     PLFLT w = 0, h = 0;
     p.colorbar(&w, &h, PL_COLORBAR_SHADE | PL_COLORBAR_SHADE_LABEL, 0, 0.015, 0.0, 0.04, 1.0,
-               kSlotBackground, kSlotInk, 1, 0.0, 0.0, 0, 0.0, 1, label_opts, labels, 1,
-               axis_opts, ticks, sub_ticks, n_values, values);
+               kSlotBackground, kSlotInk, 1, 0.0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
+               ticks, sub_ticks, n_values, values);
   }
   {
     PLFLT vx0, vx1, vy0, vy1;
     p.gvpd(vx0, vx1, vy0, vy1);
-    legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0,
-                40.0 / ((vy1 - vy0) * height_pt), 2);
+    legend.draw(p, PL_POSITION_OUTSIDE | PL_POSITION_BOTTOM, 0.0, 40.0 / ((vy1 - vy0) * height_pt),
+                2);
   }
   page.finish(svg);
 }

@@ -58,8 +58,8 @@ struct LinePlot {
   std::string x_label, y_label;
   std::vector<Series> series;
   std::vector<Reference> references;
-  bool log_y = false;    ///< logarithmic y axis (all y must be > 0)
-  int width_pt = 560;    ///< page size of the SVG (points)
+  bool log_y = false;  ///< logarithmic y axis (all y must be > 0)
+  int width_pt = 560;  ///< page size of the SVG (points)
   int height_pt = 320;
 };
 

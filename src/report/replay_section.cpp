@@ -40,18 +40,21 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<st
       "arm, starting from the plan's initial state, and the joint angles MuJoCo computes are "
       "compared with the planned ones at every step. " +
       first.simulates + "; " + first.does_not_simulate + ".");
-  s.paragraph("Each step holds the plan's mean torque over that step, so every step's impulse "
-              "is the plan's; the check's " + first.tolerance_rule +
-              ". A second replay at twice the step shows the deviation shrink with the step: "
-              "the order log2(deviation at 2h / deviation at h) is about 2 (second order; "
-              "torque jumps falling at different places within a step scatter it), where a "
-              "model mismatch or a wrong torque would not shrink at all.");
+  s.paragraph(
+      "Each step holds the plan's mean torque over that step, so every step's impulse "
+      "is the plan's; the check's " +
+      first.tolerance_rule +
+      ". A second replay at twice the step shows the deviation shrink with the step: "
+      "the order log2(deviation at 2h / deviation at h) is about 2 (second order; "
+      "torque jumps falling at different places within a step scatter it), where a "
+      "model mismatch or a wrong torque would not shrink at all.");
   Table t;
   t.caption = "Open-loop replay in MuJoCo (" + first.integrator +
               "): the largest deviation of any joint from the plan over the motion, against "
               "the tolerance h² V.";
-  t.header = {"motion", "step h (s)", "steps", "largest deviation (rad)", "at t (s)", "joint",
-              "tolerance (rad)", "at 2h (rad)", "order", "check"};
+  t.header = {"motion",   "step h (s)", "steps",           "largest deviation (rad)",
+              "at t (s)", "joint",      "tolerance (rad)", "at 2h (rad)",
+              "order",    "check"};
   for (const ReplayOf& ro : rs) {
     const studies::ReplaySection& r = *ro.replay;
     t.rows.push_back({motion_label(ro), format_sig(r.timestep_s, 3), as_text(r.steps),
@@ -79,17 +82,20 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<st
       for (size_t j = 0; j < 2; ++j) {
         const std::vector<double> d = joint_row(r.series.deviation_rad, j);
         if (d.size() == ts.size())
-          p.series.push_back({"joint " + std::to_string(j + 1), ts, d, colour_for("joint" + std::to_string(j + 1))});
+          p.series.push_back({"joint " + std::to_string(j + 1), ts, d,
+                              colour_for("joint" + std::to_string(j + 1))});
       }
     } else {
-      const std::vector<double> d1 = joint_row(r.series.deviation_rad, 0), d2 = joint_row(r.series.deviation_rad, 1);
+      const std::vector<double> d1 = joint_row(r.series.deviation_rad, 0),
+                                d2 = joint_row(r.series.deviation_rad, 1);
       if (d1.size() != ts.size() || d2.size() != ts.size()) continue;
       std::vector<double> d(ts.size());
       for (size_t k = 0; k < ts.size(); ++k) d[k] = std::max(d1[k], d2[k]);
       p.series.push_back({motion_label(ro), ts, d, colour_for(colour_key(ro))});
     }
   }
-  if (std::isfinite(tol) && tol > 0) p.references = {{tol, "tolerance " + format_sig(tol, 3) + " rad"}};
+  if (std::isfinite(tol) && tol > 0)
+    p.references = {{tol, "tolerance " + format_sig(tol, 3) + " rad"}};
   if (!p.series.empty())
     s.figure(figures.line("mujoco_replay_deviation", p,
                           "Deviation of MuJoCo's open-loop simulation from the planned joint "
@@ -107,10 +113,11 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<st
     strip.wide.push_back(true);
   }
   if (!strip.files.empty()) {
-    strip.caption = "The planned motion (the arm, posed from the plan) with the motion MuJoCo "
-                    "simulated from the plan's torques drawn over it as a magenta skeleton, at "
-                    "equal time steps; where they agree the skeleton runs along the middle of "
-                    "the arm.";
+    strip.caption =
+        "The planned motion (the arm, posed from the plan) with the motion MuJoCo "
+        "simulated from the plan's torques drawn over it as a magenta skeleton, at "
+        "equal time steps; where they agree the skeleton runs along the middle of "
+        "the arm.";
     s.strip(std::move(strip));
   }
   page.sections.push_back(std::move(s));

@@ -23,7 +23,8 @@ struct ReplayOf {
 
 /// `replays` are a study's "mujoco_replay"; `frames` is results.json "frames" (the files
 /// whose name holds "planned-and-simulated" are shown). Adds nothing when `replays` is empty.
-void mujoco_replay_section(const std::vector<ReplayOf>& replays, const std::vector<std::string>& frames,
-                           FigureWriter& figures, CasePage& page);
+void mujoco_replay_section(const std::vector<ReplayOf>& replays,
+                           const std::vector<std::string>& frames, FigureWriter& figures,
+                           CasePage& page);
 
 }  // namespace armstudy::report

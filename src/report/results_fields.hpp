@@ -94,7 +94,8 @@ struct Writer {
     (*out)[key] = write(x);
   }
   template <class T>
-  void optional(const char* key, const std::optional<T>& x, const char* = "", const nlohmann::json& = {}) {
+  void optional(const char* key, const std::optional<T>& x, const char* = "",
+                const nlohmann::json& = {}) {
     if (x) (*out)[key] = write(*x);
   }
   /// the keys of `x`, in this object, when `present` (an earlier field says so)
@@ -188,8 +189,9 @@ void reject_unknown_keys(const nlohmann::json& j, const std::string& path) {
     size_t d = 3;  // suggest only a near miss
     for (const std::string& k : keys)
       if (const size_t e = distance(it.key(), k); e < d) d = e, best = k;
-    throw ResultsError(path + "/" + it.key(), "unknown key '" + it.key() + "'" +
-                                                  (best.empty() ? "" : "; did you mean '" + best + "'?"));
+    throw ResultsError(
+        path + "/" + it.key(),
+        "unknown key '" + it.key() + "'" + (best.empty() ? "" : "; did you mean '" + best + "'?"));
   }
 }
 
@@ -205,7 +207,8 @@ struct Reader {
     read(*it, path + "/" + key, x);
   }
   template <class T>
-  void optional(const char* key, std::optional<T>& x, const char* = "", const nlohmann::json& = {}) {
+  void optional(const char* key, std::optional<T>& x, const char* = "",
+                const nlohmann::json& = {}) {
     seen.insert(key);
     const auto it = in->find(key);
     if (it == in->end()) {
@@ -228,16 +231,20 @@ struct Reader {
   }
 };
 
-[[noreturn]] inline void expected(const nlohmann::json& j, const std::string& path, const char* what) {
+[[noreturn]] inline void expected(const nlohmann::json& j, const std::string& path,
+                                  const char* what) {
   throw ResultsError(path, std::string("expected ") + what + ", found " + type_name(j));
 }
 
 template <class T>
 void read(const nlohmann::json& j, const std::string& path, T& x) {
   if constexpr (std::is_same_v<T, double>) {
-    if (j.is_null()) x = std::nan("");
-    else if (j.is_number()) x = j.get<double>();
-    else expected(j, path, "a number or null");
+    if (j.is_null())
+      x = std::nan("");
+    else if (j.is_number())
+      x = j.get<double>();
+    else
+      expected(j, path, "a number or null");
   } else if constexpr (std::is_same_v<T, bool>) {
     if (!j.is_boolean()) expected(j, path, "a boolean");
     x = j.get<bool>();
@@ -258,7 +265,8 @@ void read(const nlohmann::json& j, const std::string& path, T& x) {
   } else if constexpr (is_map<T>::value) {
     if (!j.is_object()) expected(j, path, "an object");
     x.clear();
-    for (auto it = j.begin(); it != j.end(); ++it) read(it.value(), path + "/" + it.key(), x[it.key()]);
+    for (auto it = j.begin(); it != j.end(); ++it)
+      read(it.value(), path + "/" + it.key(), x[it.key()]);
   } else if constexpr (is_vector<T>::value) {
     if (!j.is_array()) expected(j, path, "an array");
     x.clear();
@@ -266,8 +274,9 @@ void read(const nlohmann::json& j, const std::string& path, T& x) {
     for (size_t k = 0; k < j.size(); ++k) read(j[k], path + "/" + std::to_string(k), x[k]);
   } else if constexpr (is_array<T>::value) {
     if (!j.is_array() || j.size() != x.size())
-      throw ResultsError(path, "expected an array of " + std::to_string(x.size()) + ", found " +
-                                   (j.is_array() ? std::to_string(j.size()) + " items" : type_name(j)));
+      throw ResultsError(path,
+                         "expected an array of " + std::to_string(x.size()) + ", found " +
+                             (j.is_array() ? std::to_string(j.size()) + " items" : type_name(j)));
     for (size_t k = 0; k < x.size(); ++k) read(j[k], path + "/" + std::to_string(k), x[k]);
   } else if constexpr (is_optional<T>::value) {
     if (j.is_null()) {
@@ -307,7 +316,8 @@ struct SchemaWriter {
     add(key, schema<T>(), text, extra);
   }
   template <class T>
-  void optional(const char* key, std::optional<T>&, const char* text = "", const nlohmann::json& extra = {}) {
+  void optional(const char* key, std::optional<T>&, const char* text = "",
+                const nlohmann::json& extra = {}) {
     add(key, schema<T>(), text, extra);
   }
   template <class T>
@@ -348,7 +358,10 @@ nlohmann::json schema() {
     return {{"type", "array"}, {"items", schema<typename T::value_type>()}};
   } else if constexpr (is_array<T>::value) {
     const size_t n = std::tuple_size_v<T>;
-    return {{"type", "array"}, {"items", schema<typename T::value_type>()}, {"minItems", n}, {"maxItems", n}};
+    return {{"type", "array"},
+            {"items", schema<typename T::value_type>()},
+            {"minItems", n},
+            {"maxItems", n}};
   } else if constexpr (is_optional<T>::value) {
     return {{"anyOf", json::array({schema<typename T::value_type>(), {{"type", "null"}}})}};
   } else {
@@ -356,7 +369,10 @@ nlohmann::json schema() {
     SchemaWriter w{&props, &req};
     T probe{};
     fields(w, probe);
-    return {{"type", "object"}, {"required", req}, {"properties", props}, {"additionalProperties", false}};
+    return {{"type", "object"},
+            {"required", req},
+            {"properties", props},
+            {"additionalProperties", false}};
   }
 }
 

@@ -100,16 +100,19 @@ bool process_gone(pid_t pid) {
 void clean_legacy(const fs::path& dir, const fs::directory_entry& e, StaleCleanup* out) {
   const std::string f = e.path().filename().string();
   char host[256] = {0};
-  if (::gethostname(host, sizeof host - 1) != 0 || !host[0]) std::snprintf(host, sizeof host, "host");
+  if (::gethostname(host, sizeof host - 1) != 0 || !host[0])
+    std::snprintf(host, sizeof host, "host");
   std::string h;
-  for (const char* c = host; *c; ++c) h += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '.') ? *c : '_';
+  for (const char* c = host; *c; ++c)
+    h += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '.') ? *c : '_';
   h += "-";
   std::error_code ec;
   for (const char* kind : {".tmp-", ".old-"}) {
     const size_t at = f.rfind(kind);
     if (at == std::string::npos || at == 0 || f.compare(at + 5, h.size(), h) != 0) continue;
     const std::string pid_text = f.substr(at + 5 + h.size());
-    if (pid_text.empty() || pid_text.size() > 9 || pid_text.find_first_not_of("0123456789") != std::string::npos)
+    if (pid_text.empty() || pid_text.size() > 9 ||
+        pid_text.find_first_not_of("0123456789") != std::string::npos)
       continue;
     if (!process_gone(static_cast<pid_t>(std::stol(pid_text)))) continue;
     if (kind[1] == 'o') {
@@ -157,10 +160,12 @@ void clean_folder(const fs::path& dir, bool top, StaleCleanup* out) {
       if (fd >= 0) ::close(fd);
     } else if (top && f.size() > 1 && f[0] == '.') {
       clean_legacy(dir, e, out);
-    } else if (const size_t at = f.rfind(".part-"); at != std::string::npos && e.is_regular_file(ec)) {
+    } else if (const size_t at = f.rfind(".part-");
+               at != std::string::npos && e.is_regular_file(ec)) {
       // `<file>.part-<pid>-<thread>` beside the file, as earlier versions wrote them
       const std::string rest = f.substr(at + 6);
-      if (rest.find_first_not_of("0123456789-") == std::string::npos && older_than(e.path(), kLegacyAge))
+      if (rest.find_first_not_of("0123456789-") == std::string::npos &&
+          older_than(e.path(), kLegacyAge))
         out->removed += fs::remove(e.path(), ec);
     }
   }
@@ -196,13 +201,15 @@ bool inside_own_scratch(const fs::path& p) {
 }  // namespace
 
 std::string system_error_text(const std::string& what, const fs::path& path, int err) {
-  return "cannot " + what + " " + path.string() + ": " + std::error_code(err, std::generic_category()).message();
+  return "cannot " + what + " " + path.string() + ": " +
+         std::error_code(err, std::generic_category()).message();
 }
 
 const std::string& process_tag() {
   static const std::string tag = [] {
     char host[256] = {0};
-    if (::gethostname(host, sizeof host - 1) != 0 || !host[0]) std::snprintf(host, sizeof host, "host");
+    if (::gethostname(host, sizeof host - 1) != 0 || !host[0])
+      std::snprintf(host, sizeof host, "host");
     std::string h;
     for (const char* c = host; *c && h.size() < 64; ++c)
       h += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '.') ? *c : '_';
@@ -240,9 +247,11 @@ fs::path scratch_dir(const fs::path& dir) {
       if (e == ENOENT) continue;
       throw std::runtime_error(system_error_text("create the lock file", lock_path, e));
     }
-    struct stat held {}, named {};
-    if (::flock(fd, LOCK_EX) == 0 && ::fstat(fd, &held) == 0 && ::stat(lock_path.c_str(), &named) == 0 &&
-        held.st_ino == named.st_ino && held.st_dev == named.st_dev) {
+    struct stat held {
+    }, named{};
+    if (::flock(fd, LOCK_EX) == 0 && ::fstat(fd, &held) == 0 &&
+        ::stat(lock_path.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+        held.st_dev == named.st_dev) {
       r.by_dir.emplace(key, Scratch{path, fd});
       return path;
     }

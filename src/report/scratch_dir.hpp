@@ -31,8 +31,8 @@ void remove_own_scratch();
 
 /// What remove_stale_scratch() did.
 struct StaleCleanup {
-  size_t removed = 0;                  ///< scratch folders and temporary files removed
-  std::vector<std::string> restored;   ///< case folders put back from a killed run's `old/`
+  size_t removed = 0;                 ///< scratch folders and temporary files removed
+  std::vector<std::string> restored;  ///< case folders put back from a killed run's `old/`
 };
 
 /// In `dir` and each of its sub-folders: removes the scratch folders whose lock no process

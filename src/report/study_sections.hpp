@@ -30,7 +30,8 @@ void time_optimal_sections(const nlohmann::json& results, FigureWriter& figures,
 void placement_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box);
 void pendulum_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box);
 void throwing_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box);
-void time_optimal_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box);
+void time_optimal_answer(const nlohmann::json& results, const ResultsRecord& record,
+                         AnswerBox& box);
 
 /// The optimal root locations of several placement cases in one plot (the thesis's
 /// Figure 9.30): per program and configuration, the locus of its optimum as the line length

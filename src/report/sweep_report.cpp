@@ -64,9 +64,11 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
   std::vector<std::string> figure_names;
   if (table.contains("figures"))
     for (const auto& n : table["figures"])
-      if (n.is_string() && numeric.count(n.get<std::string>())) figure_names.push_back(n.get<std::string>());
+      if (n.is_string() && numeric.count(n.get<std::string>()))
+        figure_names.push_back(n.get<std::string>());
   for (const auto& n : numeric)
-    if (std::find(figure_names.begin(), figure_names.end(), n) == figure_names.end()) figure_names.push_back(n);
+    if (std::find(figure_names.begin(), figure_names.end(), n) == figure_names.end())
+      figure_names.push_back(n);
   page.status = failed == 0 ? "solved" : "failed";
   page.message = std::to_string(rows.size()) + " case(s) over " + std::to_string(params.size()) +
                  " parameter(s); " + std::to_string(failed) + " failed";
@@ -76,9 +78,10 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
   about.id = "sweep";
   about.heading = "The sweep";
   about.new_page = false;
-  about.paragraph("Each row of sweep.csv (and sweep.json) is one case: its parameter values and "
-                  "the key figures of its results.json. The plots below draw every key figure "
-                  "over the first numeric parameter, one curve per combination of the others.");
+  about.paragraph(
+      "Each row of sweep.csv (and sweep.json) is one case: its parameter values and "
+      "the key figures of its results.json. The plots below draw every key figure "
+      "over the first numeric parameter, one curve per combination of the others.");
   Table axes;
   axes.header = {"parameter", "values"};
   for (const auto& p : params) {
@@ -102,7 +105,8 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
   }
   about.table(std::move(axes));
   if (failed > 0)
-    about.note(std::to_string(failed) + " case(s) did not pass (unsolvable or a failed check): "
+    about.note(std::to_string(failed) +
+               " case(s) did not pass (unsolvable or a failed check): "
                "summary.md names them; the plots leave them out.");
   page.sections.push_back(std::move(about));
 
@@ -111,12 +115,14 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
   figs.id = "figures";
   figs.heading = x_axis < 0 ? "Key figures" : "Key figures over " + params[x_axis];
   if (x_axis < 0) {
-    figs.paragraph("No parameter of this sweep takes only numbers, so there is no axis to plot "
-                   "over; sweep.csv holds every value.");
+    figs.paragraph(
+        "No parameter of this sweep takes only numbers, so there is no axis to plot "
+        "over; sweep.csv holds every value.");
   } else {
-    figs.paragraph("Where two solutions of a case are nearly as good, the optimum can switch "
-                   "between them from one point to the next: a curve that jumps (a root position, "
-                   "say) while the energy curve stays smooth shows such a switch, not an error.");
+    figs.paragraph(
+        "Where two solutions of a case are nearly as good, the optimum can switch "
+        "between them from one point to the next: a curve that jumps (a root position, "
+        "say) while the energy curve stays smooth shows such a switch, not an error.");
     const std::string& xp = params[x_axis];
     FigureWriter writer(dir);
     for (const std::string& name : figure_names) {
@@ -127,16 +133,19 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
         std::string label;
         for (size_t a = 0; a < params.size(); ++a) {
           if (static_cast<int>(a) == x_axis || !r["parameters"].contains(params[a])) continue;
-          label += (label.empty() ? "" : ", ") + params[a] + " = " + value_text(r["parameters"][params[a]]);
+          label += (label.empty() ? "" : ", ") + params[a] + " = " +
+                   value_text(r["parameters"][params[a]]);
         }
         const json& v = r["key_figures"][name];
-        curves[label].emplace_back(as_number(r["parameters"][xp]), v.is_number() ? v.get<double>() : NAN);
+        curves[label].emplace_back(as_number(r["parameters"][xp]),
+                                   v.is_number() ? v.get<double>() : NAN);
       }
       LinePlot plot;
       plot.title = name;
       plot.x_label = xp;
       std::string unit;
-      if (table.contains("units") && table["units"].contains(name) && table["units"][name].is_string())
+      if (table.contains("units") && table["units"].contains(name) &&
+          table["units"][name].is_string())
         unit = table["units"][name].get<std::string>();
       plot.y_label = unit.empty() ? name : name + " (" + unit + ")";
       plot.height_pt = 360;
@@ -153,9 +162,10 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
         }
         plot.series.push_back(std::move(s));
       }
-      figs.figure(writer.line("sweep_" + std::to_string(plots + 1), plot,
-                              "The key figure " + name + " of every passing case over " + xp +
-                                  (curves.size() > 1 ? ", one curve per combination of the other parameters" : "")));
+      figs.figure(writer.line(
+          "sweep_" + std::to_string(plots + 1), plot,
+          "The key figure " + name + " of every passing case over " + xp +
+              (curves.size() > 1 ? ", one curve per combination of the other parameters" : "")));
       ++plots;
     }
   }

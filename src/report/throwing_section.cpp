@@ -25,7 +25,8 @@ struct Motion {
 std::vector<Motion> motions(const TS::Optimised& th) {
   std::vector<Motion> out;
   out.push_back({"eq. 8 start", "initial", &th.initial});
-  if (th.reference_motion) out.push_back({"repaired reference", "reference", &*th.reference_motion});
+  if (th.reference_motion)
+    out.push_back({"repaired reference", "reference", &*th.reference_motion});
   out.push_back({"IDP optimum", "idp", &th.optimum});
   if (th.nlopt.run) out.push_back({"SLSQP (gradient)", "gradient", &th.nlopt.run->motion});
   return out;
@@ -35,7 +36,8 @@ std::vector<Motion> motions(const TS::Optimised& th) {
 // column when col < 0, named by column_names)
 LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
                      const std::string& y_label, std::vector<double> TS::Series::*scalar,
-                     TS::Rows TS::Series::*rows, int col, const std::vector<std::string>& column_names) {
+                     TS::Rows TS::Series::*rows, int col,
+                     const std::vector<std::string>& column_names) {
   LinePlot plot;
   plot.title = title;
   plot.x_label = "time (s)";
@@ -53,7 +55,8 @@ LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
     } else if (col >= 0) {
       cols.push_back({"", column(s.*rows, static_cast<size_t>(col))});
     } else {
-      for (size_t c = 0; c < column_names.size(); ++c) cols.push_back({column_names[c], column(s.*rows, c)});
+      for (size_t c = 0; c < column_names.size(); ++c)
+        cols.push_back({column_names[c], column(s.*rows, c)});
     }
     for (size_t c = 0; c < cols.size(); ++c) {
       Series se;
@@ -67,12 +70,13 @@ LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
   }
   return plot;
 }
-LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title, const std::string& y_label,
-                     TS::Rows TS::Series::*rows, int col, const std::vector<std::string>& column_names) {
+LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
+                     const std::string& y_label, TS::Rows TS::Series::*rows, int col,
+                     const std::vector<std::string>& column_names) {
   return motion_plot(ms, title, y_label, nullptr, rows, col, column_names);
 }
-LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title, const std::string& y_label,
-                     std::vector<double> TS::Series::*scalar) {
+LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
+                     const std::string& y_label, std::vector<double> TS::Series::*scalar) {
   return motion_plot(ms, title, y_label, scalar, nullptr, -1, {});
 }
 
@@ -112,38 +116,43 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   method.id = "method";
   method.heading = "Method";
   method.new_page = false;
-  if (ran) method.paragraph(
-      "A 4-coordinate arm in a vertical plane throws a ball from a tray: links 1 and 2 are "
-      "driven by DC servomotors, the tray hangs on a passive joint and the ball rolls in it. "
-      "The joint-velocity profiles of the active joints over " + as_text(idp.stages) +
-      " time stages minimise the electrical energy E = Σ ∫ e i dt of the motors (eq. 5-7) "
-      "subject to constraints checked at every integration step: the tray's normal force on "
-      "the ball N ≥ " + format_sig(lim.contact_margin_N, 3) + " N (an open tray cannot "
-      "pull the ball), the friction rolling needs |F_t|/N ≤ μ = " +
-      format_sig(lim.friction_coefficient, 3) + ", the ball within the tray |θ4| ≤ λ/2, "
-      "the motors within " + format_sig(lim.voltage_max_V, 3) + " V, " +
-      format_sig(lim.current_max_A, 3) + " A and " + format_sig(lim.power_max_W, 3) +
-      " W, and the passive tray at its release angle within " +
-      format_sig(lim.release_tolerance_rad * 180 / 3.14159265358979, 3) +
-      "°. N and F_t come from the ball's own equation of motion, m4 a = −N n + F_t t + m4 g "
-      "(docs/throwing.md). Iterative dynamic programming (Luus) compares candidates by the "
-      "feasibility rules (feasible and lower energy, else lower violation): " +
-      as_text(idp.candidates) + " candidates per stage node, " +
-      as_text(idp.iterations) + " shrinking iterations (×" + as_text(idp.shrink) +
-      ") per pass, the region restored ×" + as_text(idp.restore) + " between passes, "
-      "until whole passes gain less than " + format_sig(idp.tolerance, 3) +
-      " of the energy, " + as_text(idp.quiet_passes) + " in a row (budget " +
-      as_text(idp.max_passes) + " passes), for " +
-      as_text(idp.seeds) + " seeds." +
-      (nl ? " The same constrained problem is solved by a gradient method (" +
-                nl->algorithm + ") to a relative energy change of " +
-                format_sig(nl->ftol_rel, 2) + " / a relative step of " +
-                format_sig(nl->xtol_rel, 2) + " (budget " +
-                as_text(nl->max_evaluations) + " iterations, " +
-                format_sig(nl->max_time_s, 3) + " s)."
-          : std::string(" The case runs IDP only.")) +
-      " Both optimisers keep every normalised constraint " + format_sig(lim.backoff, 2) +
-      " inside its limit and start from the same feasible reference.");
+  if (ran)
+    method.paragraph(
+        "A 4-coordinate arm in a vertical plane throws a ball from a tray: links 1 and 2 are "
+        "driven by DC servomotors, the tray hangs on a passive joint and the ball rolls in it. "
+        "The joint-velocity profiles of the active joints over " +
+        as_text(idp.stages) +
+        " time stages minimise the electrical energy E = Σ ∫ e i dt of the motors (eq. 5-7) "
+        "subject to constraints checked at every integration step: the tray's normal force on "
+        "the ball N ≥ " +
+        format_sig(lim.contact_margin_N, 3) +
+        " N (an open tray cannot "
+        "pull the ball), the friction rolling needs |F_t|/N ≤ μ = " +
+        format_sig(lim.friction_coefficient, 3) +
+        ", the ball within the tray |θ4| ≤ λ/2, "
+        "the motors within " +
+        format_sig(lim.voltage_max_V, 3) + " V, " + format_sig(lim.current_max_A, 3) + " A and " +
+        format_sig(lim.power_max_W, 3) + " W, and the passive tray at its release angle within " +
+        format_sig(lim.release_tolerance_rad * 180 / 3.14159265358979, 3) +
+        "°. N and F_t come from the ball's own equation of motion, m4 a = −N n + F_t t + m4 g "
+        "(docs/throwing.md). Iterative dynamic programming (Luus) compares candidates by the "
+        "feasibility rules (feasible and lower energy, else lower violation): " +
+        as_text(idp.candidates) + " candidates per stage node, " + as_text(idp.iterations) +
+        " shrinking iterations (×" + as_text(idp.shrink) + ") per pass, the region restored ×" +
+        as_text(idp.restore) +
+        " between passes, "
+        "until whole passes gain less than " +
+        format_sig(idp.tolerance, 3) + " of the energy, " + as_text(idp.quiet_passes) +
+        " in a row (budget " + as_text(idp.max_passes) + " passes), for " + as_text(idp.seeds) +
+        " seeds." +
+        (nl ? " The same constrained problem is solved by a gradient method (" + nl->algorithm +
+                  ") to a relative energy change of " + format_sig(nl->ftol_rel, 2) +
+                  " / a relative step of " + format_sig(nl->xtol_rel, 2) + " (budget " +
+                  as_text(nl->max_evaluations) + " iterations, " + format_sig(nl->max_time_s, 3) +
+                  " s)."
+            : std::string(" The case runs IDP only.")) +
+        " Both optimisers keep every normalised constraint " + format_sig(lim.backoff, 2) +
+        " inside its limit and start from the same feasible reference.");
   method.note(
       "Several printed coefficients of the equations of motion of Sato et al. are inconsistent "
       "with its "
@@ -151,11 +160,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       "of eq. 3, S234 in eq. 4); the model here is derived from first principles instead, so "
       "energies and angles differ from the paper's figures by design (docs/defects.md, "
       "docs/derivations/throwing.md).");
-  for (const std::string& c : par.choices) method.note("What Sato et al. leave open (docs/assumptions.md): " + c);
+  for (const std::string& c : par.choices)
+    method.note("What Sato et al. leave open (docs/assumptions.md): " + c);
   {
     Table at;
-    at.caption = "Assumptions: values the paper leaves open, chosen here (case keys); they are "
-                 "settings, not facts, and the optimum depends on them.";
+    at.caption =
+        "Assumptions: values the paper leaves open, chosen here (case keys); they are "
+        "settings, not facts, and the optimum depends on them.";
     at.header = {"assumption", "value", "case key"};
     for (const auto& a : section.assumptions)
       at.rows.push_back({a.name, format_sig(a.value, 4) + " " + a.unit, a.key});
@@ -172,46 +183,52 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     const TS::Repair repair = ref.repair.value_or(TS::Repair{});
     std::string text;
     if (kind == "eq8")
-      text = "The eq. 8 trajectory meets every constraint, so it is the reference the saving is "
-             "measured from.";
+      text =
+          "The eq. 8 trajectory meets every constraint, so it is the reference the saving is "
+          "measured from.";
     else if (kind == "repaired")
-      text = "The eq. 8 trajectory breaks the limits (table below), so the reference is its "
-             "repair (" + repair.method + "; " + repair.return_code + " after " +
-             as_text(repair.iterations) + " iterations; node rates changed by up to " +
-             format_sig(repair.max_rate_change_rad_s, 3) + " rad/s).";
+      text =
+          "The eq. 8 trajectory breaks the limits (table below), so the reference is its "
+          "repair (" +
+          repair.method + "; " + repair.return_code + " after " + as_text(repair.iterations) +
+          " iterations; node rates changed by up to " +
+          format_sig(repair.max_rate_change_rad_s, 3) + " rad/s).";
     else if (!kind.empty())
-      text = "The eq. 8 trajectory breaks the limits and its repair failed (" +
-             repair.return_code + "): there is NO feasible reference; "
+      text = "The eq. 8 trajectory breaks the limits and its repair failed (" + repair.return_code +
+             "): there is NO feasible reference; "
              "the saving below is against the infeasible start and is not a valid figure.";
     if (!text.empty()) {
-      text += " Reference energy " + format_sig(section.energy_reference_J, 5) + " J (raw eq. 8: " +
-              format_sig(section.energy_initial_J, 5) + " J); IDP saves " +
+      text += " Reference energy " + format_sig(section.energy_reference_J, 5) +
+              " J (raw eq. 8: " + format_sig(section.energy_initial_J, 5) + " J); IDP saves " +
               format_sig(section.saving_percent, 3) + " % of it (" +
               format_sig(section.energy_optimised_J, 5) + " J).";
       const auto& cm = th.comparison;
       const double eref = section.energy_reference_J;
       if (cm.size() >= 2 && std::isfinite(eref) && eref != 0)
         text += " " + cm[1].optimiser + " saves " +
-                format_sig(100 * (eref - cm[1].energy_J) / std::abs(eref), 3) +
-                " % (" + format_sig(cm[1].energy_J, 5) + " J).";
+                format_sig(100 * (eref - cm[1].energy_J) / std::abs(eref), 3) + " % (" +
+                format_sig(cm[1].energy_J, 5) + " J).";
       res.paragraph(text);
     }
     Table br;
-    br.caption = "How far the raw eq. 8 trajectory breaks each limit it breaks (margin < 0; "
-                 "normalised: the excess as a fraction of the limit, for the contact and "
-                 "friction of the ball's weight m4 g).";
+    br.caption =
+        "How far the raw eq. 8 trajectory breaks each limit it breaks (margin < 0; "
+        "normalised: the excess as a fraction of the limit, for the contact and "
+        "friction of the ball's weight m4 g).";
     br.header = {"constraint", "margin", "normalised excess"};
     for (const auto& b : ref.raw_breaks)
-      br.rows.push_back({b.constraint, format_sig(b.margin, 4) + " " + b.unit, format_sig(b.worst_normalised, 3)});
+      br.rows.push_back({b.constraint, format_sig(b.margin, 4) + " " + b.unit,
+                         format_sig(b.worst_normalised, 3)});
     if (!br.rows.empty()) res.table(std::move(br));
   }
   {
     Table ct;
-    ct.caption = "The optimisers on equal terms: the same constrained problem, the same start. "
-                 "Margins (> 0: met) come from re-simulating each optimum with " +
-                 (ran ? as_text(th.verification.refinement) : std::string()) +
-                 "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
-                 "Binding: constraints within twice the back-off of their limit.";
+    ct.caption =
+        "The optimisers on equal terms: the same constrained problem, the same start. "
+        "Margins (> 0: met) come from re-simulating each optimum with " +
+        (ran ? as_text(th.verification.refinement) : std::string()) +
+        "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
+        "Binding: constraints within twice the back-off of their limit.";
     // one column per optimiser (the rows are the quantities, so the table fits the page)
     const auto& cmp = th.comparison;
     ct.header = {"quantity"};
@@ -246,11 +263,11 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       add("binding motor rating", [](const TS::Comparison& row) { return row.binding_rating; });
     }
     if (!ct.rows.empty()) res.table(std::move(ct));
-    std::string conv = "IDP: " + std::string(idp.converged ? "every seed converged"
-                                                           : "NOT converged (a seed ended on its budget)") +
-                       "; best seed " + as_text(idp.best_seed) + " ran " +
-                       as_text(idp.passes) + " passes, last pass gain " +
-                       format_sig(idp.last_gain, 2) + ".";
+    std::string conv = "IDP: " +
+                       std::string(idp.converged ? "every seed converged"
+                                                 : "NOT converged (a seed ended on its budget)") +
+                       "; best seed " + as_text(idp.best_seed) + " ran " + as_text(idp.passes) +
+                       " passes, last pass gain " + format_sig(idp.last_gain, 2) + ".";
     if (nl)
       conv += " SLSQP: " + nl->return_code + " after " + as_text(nl->iterations) +
               " iterations, last change " + format_sig(nl->last_gain, 2) + ", " +
@@ -264,7 +281,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
         const bool idp_higher = ei > eg;
         res.note(std::string(idp_higher ? "IDP" : "SLSQP") + "'s answer is " +
                  format_sig(100 * (std::max(ei, eg) / std::min(ei, eg) - 1), 3) + " % above " +
-                 (idp_higher ? "SLSQP" : "IDP") + "'s for the same constrained problem. Both met "
+                 (idp_higher ? "SLSQP" : "IDP") +
+                 "'s for the same constrained problem. Both met "
                  "their stopping criteria, so the higher one is a stall of that optimiser (IDP's "
                  "random search moves slowly along the constraint boundary), not the problem's "
                  "optimum: the lower energy is the better bound on it, and neither is proven "
@@ -273,17 +291,20 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     }
   }
   Table t;
-  t.caption = "Each motion's energy and extremes (at the optimisers' own steps). Limits: " +
-              format_sig(lim.voltage_max_V, 4) + " V, " + format_sig(lim.current_max_A, 4) +
-              " A, " + format_sig(lim.power_max_W, 4) + " W, N ≥ " +
-              format_sig(lim.contact_margin_N, 3) + " N, |F_t|/N ≤ " +
-              format_sig(lim.friction_coefficient, 3) + ", |θ4| ≤ " +
-              format_sig(std::abs(lim.theta4_limit_rad.empty() ? NAN : lim.theta4_limit_rad.back()), 4) +
-              " rad.";
-  t.header = {"motion", "energy (J)", "feasible", "electrical (J)", "mechanical (J)",
-              "copper (J)", "friction (J)", "min N (N)", "max |F_t|/N", "max |θ4| (rad)",
-              "max voltage (V)", "max current (A)", "max power (W)",
-              "release angle error θ1..θ3 (rad)"};
+  t.caption =
+      "Each motion's energy and extremes (at the optimisers' own steps). Limits: " +
+      format_sig(lim.voltage_max_V, 4) + " V, " + format_sig(lim.current_max_A, 4) + " A, " +
+      format_sig(lim.power_max_W, 4) + " W, N ≥ " + format_sig(lim.contact_margin_N, 3) +
+      " N, |F_t|/N ≤ " + format_sig(lim.friction_coefficient, 3) + ", |θ4| ≤ " +
+      format_sig(std::abs(lim.theta4_limit_rad.empty() ? NAN : lim.theta4_limit_rad.back()), 4) +
+      " rad.";
+  t.header = {"motion",          "energy (J)",
+              "feasible",        "electrical (J)",
+              "mechanical (J)",  "copper (J)",
+              "friction (J)",    "min N (N)",
+              "max |F_t|/N",     "max |θ4| (rad)",
+              "max voltage (V)", "max current (A)",
+              "max power (W)",   "release angle error θ1..θ3 (rad)"};
   for (const Motion& mo : ms) {
     const TS::Motion& m = *mo.m;
     const auto& es = m.energy_split;
@@ -306,23 +327,28 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   {
     const auto& sp = idp.spread;
     if (ran)
-      seeds.paragraph("IDP ran " + as_text(idp.seeds) + " seeds from the same reference: "
-                      "energies best " + format_sig(sp.best_J, 5) + " J, median " +
-                      format_sig(sp.median_J, 5) + " J, worst " + format_sig(sp.worst_J, 5) +
+      seeds.paragraph("IDP ran " + as_text(idp.seeds) +
+                      " seeds from the same reference: "
+                      "energies best " +
+                      format_sig(sp.best_J, 5) + " J, median " + format_sig(sp.median_J, 5) +
+                      " J, worst " + format_sig(sp.worst_J, 5) +
                       " J. The spread is what a single IDP run is uncertain by; the best seed is "
                       "the reported optimum.");
     const double lo = ran ? sp.best_J : NAN, hi = ran ? sp.worst_J : NAN;
     const double tol = idp.tolerance;
-    if (std::isfinite(lo) && std::isfinite(hi) && std::isfinite(tol) && hi - lo > 10 * tol * std::abs(lo))
+    if (std::isfinite(lo) && std::isfinite(hi) && std::isfinite(tol) &&
+        hi - lo > 10 * tol * std::abs(lo))
       seeds.note("The seeds disagree by " + format_sig(100 * (hi - lo) / std::abs(lo), 3) +
                  " %, far more than the convergence tolerance: each seed's convergence is local "
                  "(its search stopped gaining), not a proof of the optimum. The spread, not the "
                  "tolerance, bounds how well IDP has solved the problem.");
     Table st;
-    st.caption = "Each IDP seed: energy, whether it converged (whole passes gained less than the "
-                 "tolerance, " + as_text(idp.quiet_passes) + " in a row) and what it cost.";
-    st.header = {"seed", "energy (J)", "feasible", "converged", "passes", "last pass gain",
-                 "simulations", "time (s)"};
+    st.caption =
+        "Each IDP seed: energy, whether it converged (whole passes gained less than the "
+        "tolerance, " +
+        as_text(idp.quiet_passes) + " in a row) and what it cost.";
+    st.header = {"seed",   "energy (J)",     "feasible",    "converged",
+                 "passes", "last pass gain", "simulations", "time (s)"};
     for (const auto& r : idp.seed_runs)
       st.rows.push_back({as_text(r.seed), format_sig(r.energy_J, 6), as_text(r.feasible),
                          yes_no(r.converged), as_text(r.passes), format_sig(r.last_gain, 2),
@@ -335,34 +361,60 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   mot.id = "motors";
   mot.heading = "Motors over time";
   const double vmax = lim.voltage_max_V, imax = lim.current_max_A, pmax = lim.power_max_W;
-  const char* joints_note = " Solid: motor 1; dashed: motor 2. Colours: grey the eq. 8 start, "
-                            "blue the IDP optimum, vermillion the gradient optimum (the repaired "
-                            "reference, if any, in its own colour).";
-  LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", &TS::Series::voltage_V, -1, {"motor 1", "motor 2"});
-  if (std::isfinite(vmax)) v.references = {{vmax, "±" + format_sig(vmax, 3) + " V limit"}, {-vmax, ""}};
-  if (!v.series.empty()) mot.figure(figures.line("voltages", v, std::string("Motor voltages e (eq. 5) with the voltage limit.") + joints_note));
-  LinePlot c = motion_plot(ms, "motor currents", "current (A)", &TS::Series::current_A, -1, {"motor 1", "motor 2"});
-  if (std::isfinite(imax)) c.references = {{imax, "±" + format_sig(imax, 3) + " A limit"}, {-imax, ""}};
-  if (!c.series.empty()) mot.figure(figures.line("currents", c, std::string("Motor currents i = (e - kv θ')/Ra (eq. 6) with the current limit.") + joints_note));
-  LinePlot tq = motion_plot(ms, "joint torques", "torque (N m)", &TS::Series::torque_Nm, -1, {"joint 1", "joint 2"});
-  if (!tq.series.empty()) mot.figure(figures.line("torques", tq, std::string("Torques the motors apply at joints 1 and 2.") + joints_note));
-  LinePlot pw = motion_plot(ms, "electrical power", "power (W)", &TS::Series::power_W, -1, {"motor 1", "motor 2"});
-  if (std::isfinite(pmax)) pw.references = {{pmax, "±" + format_sig(pmax, 3) + " W rating"}, {-pmax, ""}};
-  if (!pw.series.empty()) mot.figure(figures.line("powers", pw, std::string("Electrical power e i drawn by the motors with the power rating; its integral is the energy in the table.") + joints_note));
+  const char* joints_note =
+      " Solid: motor 1; dashed: motor 2. Colours: grey the eq. 8 start, "
+      "blue the IDP optimum, vermillion the gradient optimum (the repaired "
+      "reference, if any, in its own colour).";
+  LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", &TS::Series::voltage_V, -1,
+                           {"motor 1", "motor 2"});
+  if (std::isfinite(vmax))
+    v.references = {{vmax, "±" + format_sig(vmax, 3) + " V limit"}, {-vmax, ""}};
+  if (!v.series.empty())
+    mot.figure(figures.line(
+        "voltages", v,
+        std::string("Motor voltages e (eq. 5) with the voltage limit.") + joints_note));
+  LinePlot c = motion_plot(ms, "motor currents", "current (A)", &TS::Series::current_A, -1,
+                           {"motor 1", "motor 2"});
+  if (std::isfinite(imax))
+    c.references = {{imax, "±" + format_sig(imax, 3) + " A limit"}, {-imax, ""}};
+  if (!c.series.empty())
+    mot.figure(figures.line(
+        "currents", c,
+        std::string("Motor currents i = (e - kv θ')/Ra (eq. 6) with the current limit.") +
+            joints_note));
+  LinePlot tq = motion_plot(ms, "joint torques", "torque (N m)", &TS::Series::torque_Nm, -1,
+                            {"joint 1", "joint 2"});
+  if (!tq.series.empty())
+    mot.figure(figures.line(
+        "torques", tq, std::string("Torques the motors apply at joints 1 and 2.") + joints_note));
+  LinePlot pw = motion_plot(ms, "electrical power", "power (W)", &TS::Series::power_W, -1,
+                            {"motor 1", "motor 2"});
+  if (std::isfinite(pmax))
+    pw.references = {{pmax, "±" + format_sig(pmax, 3) + " W rating"}, {-pmax, ""}};
+  if (!pw.series.empty())
+    mot.figure(figures.line("powers", pw,
+                            std::string("Electrical power e i drawn by the motors with the power "
+                                        "rating; its integral is the energy in the table.") +
+                                joints_note));
   page.sections.push_back(std::move(mot));
 
   Section contact;
   contact.id = "contact";
   contact.heading = "Contact of the ball with the tray";
   {
-    LinePlot nf = motion_plot(ms, "normal force of the tray on the ball", "normal force N (N)", &TS::Series::normal_force_N);
+    LinePlot nf = motion_plot(ms, "normal force of the tray on the ball", "normal force N (N)",
+                              &TS::Series::normal_force_N);
     const double margin = lim.contact_margin_N;
-    if (std::isfinite(margin)) nf.references = {{margin, "margin " + format_sig(margin, 3) + " N"}, {0.0, "0 N: the ball lifts off"}};
+    if (std::isfinite(margin))
+      nf.references = {{margin, "margin " + format_sig(margin, 3) + " N"},
+                       {0.0, "0 N: the ball lifts off"}};
     if (!nf.series.empty())
-      contact.figure(figures.line("normal_force", nf,
-                                  "The tray's normal force on the ball, N = m4 (g − a)·n, at every "
-                                  "integration step; below 0 the tray would have to pull the ball."));
-    LinePlot fr = motion_plot(ms, "friction needed to roll", "friction needed |F_t|/N (ratio)", &TS::Series::friction_needed);
+      contact.figure(
+          figures.line("normal_force", nf,
+                       "The tray's normal force on the ball, N = m4 (g − a)·n, at every "
+                       "integration step; below 0 the tray would have to pull the ball."));
+    LinePlot fr = motion_plot(ms, "friction needed to roll", "friction needed |F_t|/N (ratio)",
+                              &TS::Series::friction_needed);
     const double mu = lim.friction_coefficient;
     if (std::isfinite(mu)) fr.references = {{mu, "μ = " + format_sig(mu, 3)}};
     // keep the axis readable: the raw start may need far more than μ where N is near 0
@@ -370,24 +422,27 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       for (double& y : se.y)
         if (std::isfinite(y) && y > 4 * (std::isfinite(mu) ? mu : 1.0)) y = NAN;
     if (!fr.series.empty())
-      contact.figure(figures.line("friction_needed", fr,
-                                  "The friction coefficient rolling without slip needs, |F_t|/N "
-                                  "(F_t = m4 (a − g)·t), with the assumed μ; values above 4μ and "
-                                  "where N ≤ 0 are left out of the plot (the table gives the maxima)."));
+      contact.figure(
+          figures.line("friction_needed", fr,
+                       "The friction coefficient rolling without slip needs, |F_t|/N "
+                       "(F_t = m4 (a − g)·t), with the assumed μ; values above 4μ and "
+                       "where N ≤ 0 are left out of the plot (the table gives the maxima)."));
   }
   page.sections.push_back(std::move(contact));
 
   Section ball;
   ball.id = "ball";
   ball.heading = "The ball in the tray, release and flight";
-  LinePlot t4 = motion_plot(ms, "ball angle θ4 in the tray", "ball angle in the tray θ4 (rad)", &TS::Series::q_rad, 3, {});
+  LinePlot t4 = motion_plot(ms, "ball angle θ4 in the tray", "ball angle in the tray θ4 (rad)",
+                            &TS::Series::q_rad, 3, {});
   const auto& tl = lim.theta4_limit_rad;
   if (tl.size() == 2) t4.references = {{tl[1], "tray limits ±λ/2"}, {tl[0], ""}};
   if (!t4.series.empty())
     ball.figure(figures.line("theta4", t4,
                              "The ball's angle relative to the tray with the tray's limits: "
                              "outside them the ball leaves the tray (eq. 9's penalty)."));
-  LinePlot q3 = motion_plot(ms, "tray angle θ3 (passive)", "tray angle θ3 (rad)", &TS::Series::q_rad, 2, {});
+  LinePlot q3 =
+      motion_plot(ms, "tray angle θ3 (passive)", "tray angle θ3 (rad)", &TS::Series::q_rad, 2, {});
   // the release target: θ3 at the end of the throw, within the release tolerance
   const auto& rel_deg = par.task.release_deg;
   const double rel_tol = lim.release_tolerance_rad;
@@ -401,22 +456,28 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       // a bar at the release time spanning the tolerance, with a dot on the target
       q3.series.push_back({"release target θ3 = " + format_sig(rel_deg[2], 4) + "° ± " +
                                format_sig(tol * 180 / 3.14159265358979, 2) + "° at release",
-                           {tf, tf, tf}, {target - tol, target, target + tol}, Rgb{0, 0, 0},
-                           LineStyle::kSolid, true, 4.0});
+                           {tf, tf, tf},
+                           {target - tol, target, target + tol},
+                           Rgb{0, 0, 0},
+                           LineStyle::kSolid,
+                           true,
+                           4.0});
     }
     target_text = " Black: the release target θ3 = " + format_sig(rel_deg[2], 4) +
                   "° at the release time, the bar its tolerance (the dashed grey line the same "
                   "angle over the whole throw).";
   }
   if (!q3.series.empty())
-    ball.figure(figures.line("theta3", q3, "The passive tray joint, moved only by the dynamics." + target_text));
+    ball.figure(figures.line("theta3", q3,
+                             "The passive tray joint, moved only by the dynamics." + target_text));
   const auto& rel = th.release;
   const auto& fl = th.flight;
   Table r;
   r.caption = "Release and flight of the ball (IDP optimum).";
   r.header = {"quantity", "value"};
   auto pair = [](const std::vector<double>& v) {
-    return v.size() == 2 ? "(" + format_sig(v[0], 4) + ", " + format_sig(v[1], 4) + ")" : std::string("n/a");
+    return v.size() == 2 ? "(" + format_sig(v[0], 4) + ", " + format_sig(v[1], 4) + ")"
+                         : std::string("n/a");
   };
   r.rows = {{"release time", format_sig(rel.time_s, 4) + " s"},
             {"ball at release (x, y)", pair(rel.ball_xy_m) + " m"},
@@ -451,8 +512,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       add({mo.label + ": ball in the tray", column(s.ball_xy_m, 0), column(s.ball_xy_m, 1),
            colour_for(mo.colour_key)});
     }
-    add({"flight after release", column(fl.path_xy_m, 0), column(fl.path_xy_m, 1), colour_for("idp"),
-         LineStyle::kDashed});
+    add({"flight after release", column(fl.path_xy_m, 0), column(fl.path_xy_m, 1),
+         colour_for("idp"), LineStyle::kDashed});
     const auto& land = fl.landing_xy_m;
     if (land.size() == 2) {
       locus.markers.push_back({land[0], land[1], "landing point", colour_for("idp")});
@@ -484,9 +545,11 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   cp.y_label = "energy of the best (J)";
   Series en{"energy of the best (feasible)", {}, {}, colour_for("idp"), LineStyle::kSolid, true};
   Table ct;
-  ct.caption = "IDP (best seed): the best at the end of iterations (all of them when few; "
-               "else the last of each pass). Violation 0: feasible.";
-  ct.header = {"pass", "iteration", "energy (J)", "violation", "region (rad/s)", "improvements", "simulations"};
+  ct.caption =
+      "IDP (best seed): the best at the end of iterations (all of them when few; "
+      "else the last of each pass). Violation 0: feasible.";
+  ct.header = {"pass",           "iteration",    "energy (J)", "violation",
+               "region (rad/s)", "improvements", "simulations"};
   int k = 0;
   const auto& rows = idp.convergence;
   // the start: pass 0 is the feasible reference both optimisers begin from
@@ -504,19 +567,21 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     // (many rows: each pass's last only; the plot has every iteration)
     if (rows.size() > 25 && !last_of_pass) continue;
     const auto& reg = row.region_rad_s;
-    ct.rows.push_back({as_text(row.pass), as_text(row.iteration),
-                       format_sig(row.energy_J, 6), format_sig(row.violation, 3),
-                       reg.size() == 2 ? format_sig(reg[0], 3) + ", " + format_sig(reg[1], 3) : "n/a",
-                       as_text(row.improvements), as_text(row.evaluations)});
+    ct.rows.push_back(
+        {as_text(row.pass), as_text(row.iteration), format_sig(row.energy_J, 6),
+         format_sig(row.violation, 3),
+         reg.size() == 2 ? format_sig(reg[0], 3) + ", " + format_sig(reg[1], 3) : "n/a",
+         as_text(row.improvements), as_text(row.evaluations)});
   }
   en.markers = k <= 80;
   if (k > 0) {
     cp.x_label = "iteration (all passes; 0: the reference start)";
     cp.series = {en};
-    conv.figure(figures.line("idp_convergence", cp,
-                             "Energy of the best feasible profile after each IDP iteration of the "
-                             "best seed, passes one after the other (the region is restored between "
-                             "passes)."));
+    conv.figure(
+        figures.line("idp_convergence", cp,
+                     "Energy of the best feasible profile after each IDP iteration of the "
+                     "best seed, passes one after the other (the region is restored between "
+                     "passes)."));
   }
   const auto hist = nl ? nl->history_J : std::vector<double>{};
   if (hist.size() >= 2) {
@@ -533,7 +598,9 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       hp.x_label = "iteration (0: the reference start)";
     }
     hp.series = {h};
-    conv.figure(figures.line("slsqp_history", hp, "The gradient method's energy at each of its evaluations (points may be infeasible)."));
+    conv.figure(figures.line(
+        "slsqp_history", hp,
+        "The gradient method's energy at each of its evaluations (points may be infeasible)."));
   }
   if (!ct.rows.empty()) conv.table(std::move(ct));
   const auto& rep = th.replay;
@@ -544,8 +611,10 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   acc.header = {"check", "value"};
   acc.rows = {{"integration", integ.method},
               {"step", format_sig(integ.step_s, 3) + " s"},
-              {"energy error against " + fine + " the steps", format_sig(integ.energy_error_vs_fine_steps, 3)},
-              {"θ3 error against " + fine + " the steps", format_sig(integ.theta3_error_vs_fine_steps_rad, 3) + " rad"},
+              {"energy error against " + fine + " the steps",
+               format_sig(integ.energy_error_vs_fine_steps, 3)},
+              {"θ3 error against " + fine + " the steps",
+               format_sig(integ.theta3_error_vs_fine_steps_rad, 3) + " rad"},
               {"open-loop voltage replay", rep.integrator},
               {"largest replay error", format_sig(rep.max_error_rad, 3) + " rad (tolerance " +
                                            format_sig(rep.tolerance_rad, 3) + " rad)"}};

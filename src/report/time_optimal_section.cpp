@@ -6,8 +6,8 @@
 
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
-#include "report/results_record.hpp"
 #include "report/results_fields.hpp"
+#include "report/results_record.hpp"
 #include "report/study_sections.hpp"
 #include "studies/time_optimal/result.hpp"
 #include "studies/time_optimal/results_section.hpp"
@@ -46,7 +46,8 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   method.new_page = false;
   if (joint_space)
     method.paragraph(
-        "The arm, a chain of " + std::to_string(joints) + " joints, follows a path given in joint "
+        "The arm, a chain of " + std::to_string(joints) +
+        " joints, follows a path given in joint "
         "space: q(s) through the case's waypoints, s its chord length in joint space (rad). A "
         "tip path would not fix the joint motion of a redundant arm, so the joint motion itself "
         "is the path; the solvers see only q(s), q'(s) and q''(s), exactly as for a tip path "
@@ -54,7 +55,8 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
         "is per joint. Path speed s' is then in rad/s.");
   method.paragraph(
       std::string(joint_space ? "The speed along the path "
-                              : "The tip of a 2-link arm in a horizontal plane follows a given path; the speed along it ") +
+                              : "The tip of a 2-link arm in a horizontal plane follows a given "
+                                "path; the speed along it ") +
       "is chosen to reach the end in the least time under joint velocity and torque limits, "
       "at rest at both ends. Three solvers work on the same problem: dynamic programming as "
       "in the source (Ozkipcak 1994, docs/sources.md: N segments of constant acceleration, "
@@ -76,22 +78,25 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   res.id = "solvers";
   res.heading = "Solvers side by side";
   Table t;
-  t.caption = "Duration of the motion found by each solver, its run time, and the largest use "
-              "of any limit found by resampling the solution finely (≤ 1 meets every limit).";
-  t.header = {"solver", "solved", "duration (s)", "run time (s)", "intervals", "levels",
-              "largest limit use", "where"};
+  t.caption =
+      "Duration of the motion found by each solver, its run time, and the largest use "
+      "of any limit found by resampling the solution finely (≤ 1 meets every limit).";
+  t.header = {"solver",    "solved", "duration (s)",      "run time (s)",
+              "intervals", "levels", "largest limit use", "where"};
   for (const auto& s : solvers) {
     const double worst = s.violation ? s.violation->worst : NAN;
-    t.rows.push_back({studies::time_optimal::solver_words(s.name), as_text(s.solved), format_sig(s.duration_s, 7),
-                      format_sig(s.run_time_s, 3), as_text(s.intervals), as_text(s.levels),
-                      std::isfinite(worst)  ? format_sig(1 + worst, 6)
-                      : s.violation ? to_json(s.violation->ratio).dump()
-                                    : std::string(),
+    t.rows.push_back({studies::time_optimal::solver_words(s.name), as_text(s.solved),
+                      format_sig(s.duration_s, 7), format_sig(s.run_time_s, 3),
+                      as_text(s.intervals), as_text(s.levels),
+                      std::isfinite(worst) ? format_sig(1 + worst, 6)
+                      : s.violation        ? to_json(s.violation->ratio).dump()
+                                           : std::string(),
                       s.violation ? s.violation->text : s.message});
     t.swatches.push_back(css_colour(colour_for(solver_key(s.name))));
   }
   if (!t.rows.empty()) res.table(std::move(t));
-  for (const auto& s : solvers) res.paragraph(studies::time_optimal::solver_words(s.name) + ": " + s.method);
+  for (const auto& s : solvers)
+    res.paragraph(studies::time_optimal::solver_words(s.name) + ": " + s.method);
 
   // phase plane: s' over s, the maximum velocity curve and each solver's profile
   LinePlot phase;
@@ -104,7 +109,8 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   if (mvc_s.size() == mvc_sd.size() && !mvc_s.empty())
     phase.series.push_back({"maximum velocity curve", mvc_s, mvc_sd, colour_for("mvc")});
   if (mvc_s.size() == mvc_v.size() && !mvc_s.empty())
-    phase.series.push_back({"velocity limits alone", mvc_s, mvc_v, colour_for("limit"), LineStyle::kDotted});
+    phase.series.push_back(
+        {"velocity limits alone", mvc_s, mvc_v, colour_for("limit"), LineStyle::kDotted});
   for (const auto& s : solvers) {
     auto x = s.samples ? s.samples->s : std::vector<double>{};
     auto y = s.samples ? s.samples->sd : std::vector<double>{};
@@ -137,7 +143,8 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     const auto& t = s.samples->t_s;
     const auto& x = s.samples->s;
     if (t.size() >= 2 && t.size() == x.size())
-      st.series.push_back({studies::time_optimal::solver_words(s.name), t, x, colour_for(solver_key(s.name))});
+      st.series.push_back(
+          {studies::time_optimal::solver_words(s.name), t, x, colour_for(solver_key(s.name))});
   }
   if (!st.series.empty())
     res.figure(figures.line("path_position", st,
@@ -155,9 +162,9 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     const char* what;
     const char* unit;
   };
-  const Kind kinds[] = {{"tau_Nm", &Section_::Samples::tau_Nm, &limits.torque_Nm, "torque", "N m"},
-                        {"qd_rad_s", &Section_::Samples::qd_rad_s, &limits.velocity_rad_s,
-                         "velocity", "rad/s"}};
+  const Kind kinds[] = {
+      {"tau_Nm", &Section_::Samples::tau_Nm, &limits.torque_Nm, "torque", "N m"},
+      {"qd_rad_s", &Section_::Samples::qd_rad_s, &limits.velocity_rad_s, "velocity", "rad/s"}};
   for (const Kind& k : kinds)
     for (size_t j = 0; j < joints; ++j) {
       LinePlot p;
@@ -167,11 +174,13 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       for (const auto& s : solvers) {
         if (!s.samples || s.samples->t_s.size() < 2) continue;
         const auto& ts = s.samples->t_s;
-        p.series.push_back({studies::time_optimal::solver_words(s.name), ts, row((*s.samples).*k.rows, j), colour_for(solver_key(s.name))});
+        p.series.push_back({studies::time_optimal::solver_words(s.name), ts,
+                            row((*s.samples).*k.rows, j), colour_for(solver_key(s.name))});
         if (p.series.back().y.empty()) p.series.pop_back();
       }
       const double l = at(*k.limit, j);
-      if (std::isfinite(l)) p.references = {{l, "±" + format_sig(l, 3) + " " + k.unit + " limit"}, {-l, ""}};
+      if (std::isfinite(l))
+        p.references = {{l, "±" + format_sig(l, 3) + " " + k.unit + " limit"}, {-l, ""}};
       if (!p.series.empty())
         lim.figure(figures.line(std::string(k.key) + "_joint" + std::to_string(j + 1), p,
                                 "Joint " + std::to_string(j + 1) + " " + k.what +
@@ -184,9 +193,15 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
   conv.id = "convergence";
   conv.heading = "Convergence: DP over its segments, the exact solver over its grid";
   Table ct;
-  ct.caption = "DP (path-speed state) as the number of segments N grows: its duration "
-               "approaches the exact solver's from above.";
-  ct.header = {"N", "levels", "solved", "duration (s)", "excess over exact", "run time (s)",
+  ct.caption =
+      "DP (path-speed state) as the number of segments N grows: its duration "
+      "approaches the exact solver's from above.";
+  ct.header = {"N",
+               "levels",
+               "solved",
+               "duration (s)",
+               "excess over exact",
+               "run time (s)",
                "largest limit use"};
   for (const auto& r : to.convergence) {
     const double worst = r.worst_violation;
@@ -206,12 +221,18 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     const auto& g = *to.grid_convergence;
     const bool passed = g.passed;
     Table gt;
-    gt.caption = "The exact solver's own grid convergence: the same problem with every grid "
-                 "interval halved. Its error is first order in the interval, so the change "
-                 "estimates the refined duration's error; beyond the tolerance "
-                 "(exact.grid_tolerance) the case fails its check exact_grid_converged.";
-    gt.header = {"grid points", "duration (s)", "refined grid points", "refined duration (s)",
-                 "relative change", "tolerance", "check"};
+    gt.caption =
+        "The exact solver's own grid convergence: the same problem with every grid "
+        "interval halved. Its error is first order in the interval, so the change "
+        "estimates the refined duration's error; beyond the tolerance "
+        "(exact.grid_tolerance) the case fails its check exact_grid_converged.";
+    gt.header = {"grid points",
+                 "duration (s)",
+                 "refined grid points",
+                 "refined duration (s)",
+                 "relative change",
+                 "tolerance",
+                 "check"};
     gt.rows.push_back({as_text(g.grid_points), format_sig(g.duration_s, 7),
                        as_text(g.refined_points), format_sig(g.refined_duration_s, 7),
                        format_sig(g.change, 3), format_sig(g.tolerance, 3),
@@ -220,9 +241,10 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     if (passed)
       conv.paragraph("Exact solver grid: " + g.text + ".");
     else
-      conv.note("The exact duration is NOT converged in its grid, so it is no ordinary "
-                "optimum and every comparison with it inherits the error: " +
-                g.text + ".");
+      conv.note(
+          "The exact duration is NOT converged in its grid, so it is no ordinary "
+          "optimum and every comparison with it inherits the error: " +
+          g.text + ".");
   }
   page.sections.push_back(std::move(conv));
   std::vector<ReplayOf> replays;

@@ -71,20 +71,21 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
   char rate[64];
   std::snprintf(rate, sizeof rate, "%.6f", fps);
   const fs::path tmp = out.string() + ".tmp.mp4";
-  const std::string cmd = quote(ffmpeg) + " -loglevel error -nostdin -y -f rawvideo -pix_fmt rgb24 -s " +
-                          std::to_string(frames.front().width) + "x" + std::to_string(frames.front().height) +
-                          " -framerate " + rate + " -i - -vf crop=" + std::to_string(w) + ":" +
-                          std::to_string(h) + ":0:0 -c:v libx264 -preset medium -crf 20 -pix_fmt yuv420p"
-                          " -threads 1 -map_metadata -1 -fflags +bitexact -flags:v +bitexact"
-                          " -movflags +faststart " + quote(tmp.string()) + " 2>&1";
+  const std::string cmd =
+      quote(ffmpeg) + " -loglevel error -nostdin -y -f rawvideo -pix_fmt rgb24 -s " +
+      std::to_string(frames.front().width) + "x" + std::to_string(frames.front().height) +
+      " -framerate " + rate + " -i - -vf crop=" + std::to_string(w) + ":" + std::to_string(h) +
+      ":0:0 -c:v libx264 -preset medium -crf 20 -pix_fmt yuv420p"
+      " -threads 1 -map_metadata -1 -fflags +bitexact -flags:v +bitexact"
+      " -movflags +faststart " +
+      quote(tmp.string()) + " 2>&1";
   FILE* p = ::popen(cmd.c_str(), "w");
   if (!p) {
     *why = "cannot start ffmpeg";
     return false;
   }
   bool ok = true;
-  for (const Image& f : frames)
-    ok &= std::fwrite(f.rgb.data(), 1, f.rgb.size(), p) == f.rgb.size();
+  for (const Image& f : frames) ok &= std::fwrite(f.rgb.data(), 1, f.rgb.size(), p) == f.rgb.size();
   const int rc = ::pclose(p);
   if (!ok || rc != 0) {
     std::error_code ec;
@@ -161,12 +162,19 @@ Animation write_animation(SceneRenderer& sr, const SampledMotion& m, const std::
     else
       a.note = "no video: " + why;
   }
-  nlohmann::json j = {{"name", a.name},         {"title", a.title},
-                      {"sprite", a.sprite},     {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
-                      {"still", a.still},       {"frames", a.frames},
-                      {"columns", a.columns},   {"frame_width_px", a.frame_width},
-                      {"frame_height_px", a.frame_height}, {"fps", a.fps},
-                      {"duration_s", a.duration_s}, {"video_duration_s", a.frames / a.fps}};
+  nlohmann::json j = {
+      {"name", a.name},
+      {"title", a.title},
+      {"sprite", a.sprite},
+      {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
+      {"still", a.still},
+      {"frames", a.frames},
+      {"columns", a.columns},
+      {"frame_width_px", a.frame_width},
+      {"frame_height_px", a.frame_height},
+      {"fps", a.fps},
+      {"duration_s", a.duration_s},
+      {"video_duration_s", a.frames / a.fps}};
   if (!a.note.empty()) j["note"] = a.note;
   std::ofstream out(dir / (name + ".anim.json"));
   out << j.dump(1) << "\n";

@@ -21,17 +21,17 @@ inline constexpr double kAnimationFps = 30;
 
 /// What one animation wrote.
 struct Animation {
-  std::string name;      ///< stem of its files, e.g. "throwing_idp"
-  std::string title;     ///< which motion, in words
-  std::string sprite;    ///< "<name>_anim.png": frames in a grid, left to right, top to bottom
-  std::string video;     ///< "<name>.mp4" at real speed; empty when ffmpeg is missing
-  std::string still;     ///< "<name>_still.png": the last frame (the print and no-motion view)
+  std::string name;    ///< stem of its files, e.g. "throwing_idp"
+  std::string title;   ///< which motion, in words
+  std::string sprite;  ///< "<name>_anim.png": frames in a grid, left to right, top to bottom
+  std::string video;   ///< "<name>.mp4" at real speed; empty when ffmpeg is missing
+  std::string still;   ///< "<name>_still.png": the last frame (the print and no-motion view)
   int frames = 0;
-  int columns = 0;       ///< of the sprite grid
+  int columns = 0;                        ///< of the sprite grid
   int frame_width = 0, frame_height = 0;  ///< px of one sprite frame
-  double fps = 0;        ///< frames per second of real time (frame k at t0 + k / fps)
-  double duration_s = 0; ///< of the motion
-  std::string note;      ///< why a part is missing (e.g. no video: ffmpeg not found)
+  double fps = 0;         ///< frames per second of real time (frame k at t0 + k / fps)
+  double duration_s = 0;  ///< of the motion
+  std::string note;       ///< why a part is missing (e.g. no video: ffmpeg not found)
 };
 
 /// The number of frames and frame rate of an animation of a motion lasting `duration` s:

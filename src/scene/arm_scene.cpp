@@ -97,8 +97,8 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   // picture: every dropped point within a tenth of a pixel of the line drawn
   {
     std::vector<Eigen::Vector2d> drawn;
-    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min, decor.offscreen.width,
-                                          decor.offscreen.height);
+    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min,
+                                          decor.offscreen.width, decor.offscreen.height);
     for (const size_t k : simplify_polyline(task, tol)) drawn.push_back(task[k]);
     task = std::move(drawn);
   }
@@ -107,7 +107,8 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   o.model_name = "horizontal_arm";
   o.fovy = kFovy;
   o.offscreen = decor.offscreen;
-  set_quality(&o, 2.2 * r, v.y_max - v.y_min, decor.offscreen.height);  // the pedestal is the roundest
+  set_quality(&o, 2.2 * r, v.y_max - v.y_min,
+              decor.offscreen.height);  // the pedestal is the roundest
   o.link_radius = r;
   o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.45 0.35 0.65 1"};
   o.visual_extra = kVisual;
@@ -125,16 +126,16 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   auto w = xml();
   w << shadow_light(0.5 * half);
   w << "    <geom name=\"table\" type=\"plane\" pos=\"" << cx << " " << cy << " " << -3 * r
-    << "\" size=\"" << half << " " << half << " " << plane_grid(half) << "\" material=\"table\"/>\n";
+    << "\" size=\"" << half << " " << half << " " << plane_grid(half)
+    << "\" material=\"table\"/>\n";
   // root: pedestal and a cross on the table
   w << "    <geom name=\"root\" type=\"cylinder\" pos=\"" << b.x() << " " << b.y() << " "
-    << -1.5 * r << "\" size=\"" << 2.2 * r << " " << 1.4 * r
-    << "\" rgba=\"0.20 0.20 0.22 1\"/>\n";
+    << -1.5 * r << "\" size=\"" << 2.2 * r << " " << 1.4 * r << "\" rgba=\"0.20 0.20 0.22 1\"/>\n";
   for (int k = 0; k < 2; ++k) {
     const double dx = k == 0 ? 4 * r : 0, dy = k == 0 ? 0 : 4 * r;
     w << "    <geom name=\"root_cross" << k << "\" type=\"capsule\" fromto=\"" << b.x() - dx << " "
-      << b.y() - dy << " " << -2.9 * r << " " << b.x() + dx << " " << b.y() + dy << " "
-      << -2.9 * r << "\" size=\"" << 0.25 * r << "\" rgba=\"0.20 0.20 0.22 1\"/>\n";
+      << b.y() - dy << " " << -2.9 * r << " " << b.x() + dx << " " << b.y() + dy << " " << -2.9 * r
+      << "\" size=\"" << 0.25 * r << "\" rgba=\"0.20 0.20 0.22 1\"/>\n";
   }
   for (size_t k = 1; k < task.size(); ++k) {
     if ((task[k] - task[k - 1]).norm() < 1e-9) continue;
@@ -146,8 +147,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
     const Eigen::Vector2d& S = task.front();
     const Eigen::Vector2d& F = task.back();
     w << "    <geom name=\"task_start\" type=\"cylinder\" pos=\"" << S.x() << " " << S.y() << " "
-      << -2.6 * r << "\" size=\"" << 0.9 * r << " " << 0.3 * r
-      << "\" rgba=\"0.10 0.60 0.20 1\"/>\n"
+      << -2.6 * r << "\" size=\"" << 0.9 * r << " " << 0.3 * r << "\" rgba=\"0.10 0.60 0.20 1\"/>\n"
       << "    <geom name=\"task_end\" type=\"cylinder\" pos=\"" << F.x() << " " << F.y() << " "
       << -2.6 * r << "\" size=\"" << 0.9 * r << " " << 0.3 * r
       << "\" rgba=\"0.85 0.12 0.12 1\"/>\n";
@@ -191,10 +191,10 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   o.model_name = "tray_arm";
   o.fovy = kFovy;
   o.offscreen = decor.offscreen;
-  set_quality(&o, std::max(1.35 * r, rb), v.y_max - v.y_min, decor.offscreen.height);  // discs, ball
+  set_quality(&o, std::max(1.35 * r, rb), v.y_max - v.y_min,
+              decor.offscreen.height);  // discs, ball
   o.link_radius = r;
-  o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.40 0.40 0.45 1",
-                 "0.85 0.15 0.15 0"};
+  o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.40 0.40 0.45 1", "0.85 0.15 0.15 0"};
   if (n == 2) o.link_rgba = {"0.40 0.40 0.45 1", "0.85 0.15 0.15 0"};
   o.visual_extra = kVisual;
   o.asset_extra =
@@ -216,16 +216,17 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
       "    spin1_joint, which must turn by psi = -(1 + r4/r_b) theta4, enforced by the joint\n"
       "    equality spin1_rolls. Kinematic replay sets psi exactly; mj_inverse is exact after\n"
       "    projecting onto the chain (tau_chain = J^T qfrc_inverse, q_mujoco = J q_chain);\n"
-      "    mj_step treats the stiff equality as MuJoCo's soft constraint (impedance 0.9999), which\n"
+      "    mj_step treats the stiff equality as MuJoCo's soft constraint (impedance 0.9999), "
+      "which\n"
       "    conserves energy to ~1e-7 relative (tests/scene/pendulum_mujoco_test.cpp).\n";
   auto w = xml();
   w << shadow_light(0.5 * half);
   w << "    <geom name=\"wall\" type=\"plane\" pos=\"" << cx << " " << cy << " "
-    << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half
-    << " " << plane_grid(half) << "\" material=\"wall\"/>\n";
+    << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half << " " << plane_grid(half)
+    << "\" material=\"wall\"/>\n";
   // base: a pedestal under joint 1 and a floor line
-  w << "    <geom name=\"pedestal\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 2.5 * r
-    << " " << -2 * r << "\" size=\"" << 2.2 * r << " " << 2.5 * r << " " << r
+  w << "    <geom name=\"pedestal\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 2.5 * r << " "
+    << -2 * r << "\" size=\"" << 2.2 * r << " " << 2.5 * r << " " << r
     << "\" rgba=\"0.25 0.25 0.28 1\"/>\n"
     << "    <geom name=\"floor\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 5.2 * r << " "
     << -2 * r << "\" size=\"" << 8 * r << " " << 0.3 * r << " " << r
@@ -246,16 +247,15 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
     for (int k = 0; k < segments; ++k) {
       const double a0 = -decor.cup_width / 2 + decor.cup_width * k / segments;
       const double a1 = -decor.cup_width / 2 + decor.cup_width * (k + 1) / segments;
-      c << "      <geom name=\"cup" << k << "\" type=\"capsule\" fromto=\""
-        << d + rc * std::cos(a0) << " " << rc * std::sin(a0) << " 0 " << d + rc * std::cos(a1)
-        << " " << rc * std::sin(a1) << " 0\" size=\"" << 0.35 * r
-        << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
+      c << "      <geom name=\"cup" << k << "\" type=\"capsule\" fromto=\"" << d + rc * std::cos(a0)
+        << " " << rc * std::sin(a0) << " 0 " << d + rc * std::cos(a1) << " " << rc * std::sin(a1)
+        << " 0\" size=\"" << 0.35 * r << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
     }
     // the cup hangs from the tray's hinge: two struts to its rims
     for (double a : {-decor.cup_width / 2, decor.cup_width / 2})
-      c << "      <geom name=\"cup_strut" << (a < 0 ? 0 : 1) << "\" type=\"capsule\" fromto=\"0 0 0 "
-        << d + rc * std::cos(a) << " " << rc * std::sin(a) << " 0\" size=\"" << 0.22 * r
-        << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
+      c << "      <geom name=\"cup_strut" << (a < 0 ? 0 : 1)
+        << "\" type=\"capsule\" fromto=\"0 0 0 " << d + rc * std::cos(a) << " " << rc * std::sin(a)
+        << " 0\" size=\"" << 0.22 * r << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
     o.link_extra[n - 2] += c.str();
   }
   // the ball: drawn on the spin body of the ball's spinner (the one turning with the ball
@@ -276,8 +276,8 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   }
   if (!ball_drawn) {
     auto t = xml();
-    t << "      <body name=\"ball_visual\" pos=\"" << r4 << " 0 0\">\n" << ball.str()
-      << "      </body>\n";
+    t << "      <body name=\"ball_visual\" pos=\"" << r4 << " 0 0\">\n"
+      << ball.str() << "      </body>\n";
     o.tip_extra = t.str();
   }
   s.mjcf = write_mjcf(chain, o);

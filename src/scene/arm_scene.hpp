@@ -38,10 +38,10 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
 
 /// What the tray arm's scene needs besides the chain.
 struct TrayDecor {
-  double ball_radius = 0.010;             ///< m (r_b)
-  double cup_width = 2.0;                 ///< rad, the tray's angular width (lambda of eq. 9)
-  cases::FrameSize offscreen;             ///< the model's off-screen buffer, px
-  std::optional<ViewBox> view;            ///< default: everything the arm can reach
+  double ball_radius = 0.010;   ///< m (r_b)
+  double cup_width = 2.0;       ///< rad, the tray's angular width (lambda of eq. 9)
+  cases::FrameSize offscreen;   ///< the model's off-screen buffer, px
+  std::optional<ViewBox> view;  ///< default: everything the arm can reach
 };
 
 /// The tray arm in a vertical plane (side view, gravity down the image): links 1 and 2

@@ -4,8 +4,8 @@
 /// hinge "spin<k>_joint" turns by psi = ratio * q[joint] (mjcf_writer.hpp). Because the map
 /// is linear and constant, qd_mj = J qd, qdd_mj = J qdd and tau_chain = J^T qfrc_mj exactly.
 
-#include <Eigen/Dense>
 #include <mujoco/mujoco.h>
+#include <Eigen/Dense>
 
 #include "core/planar_chain.hpp"
 #include "core/types.hpp"

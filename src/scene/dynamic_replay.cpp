@@ -74,13 +74,15 @@ Run run(MujocoModel& mm, const ChainMap& map, const core::PlanarChain& chain,
   for (int i = 0; i < n; ++i)
     if (chain.links[i].active) {
       actuator[i] = mj_name2id(m, mjOBJ_ACTUATOR, ("motor" + std::to_string(i + 1)).c_str());
-      if (actuator[i] < 0) throw SceneError("dynamic replay: the model has no actuator motor" + std::to_string(i + 1));
+      if (actuator[i] < 0)
+        throw SceneError("dynamic replay: the model has no actuator motor" + std::to_string(i + 1));
     }
   Run r;
   const int steps = static_cast<int>(means.size());
   for (int k = 0; k <= steps; ++k) {
     const core::JointVector q = map.chain_q(d);
-    const core::JointVector& qp = q_plan_at_steps[static_cast<size_t>(k) * (q_plan_at_steps.size() - 1) / steps];
+    const core::JointVector& qp =
+        q_plan_at_steps[static_cast<size_t>(k) * (q_plan_at_steps.size() - 1) / steps];
     for (int j = 0; j < n; ++j) {
       const double dev = std::abs(q[j] - qp[j]);
       if (dev > r.max_dev) {
@@ -156,11 +158,13 @@ DynamicReplay replay_torques(const core::PlanarChain& chain, double duration,
   return out;
 }
 
-studies::Check replay_check(const DynamicReplay& r, const std::string& name, const std::string& what) {
+studies::Check replay_check(const DynamicReplay& r, const std::string& name,
+                            const std::string& what) {
   std::ostringstream os;
   os.precision(3);
-  os << "the plan's joint torques of " << what << " applied open loop through mj_step (RK4, h = "
-     << r.timestep << " s, " << r.steps << " steps, each holding the plan's mean torque over it)"
+  os << "the plan's joint torques of " << what
+     << " applied open loop through mj_step (RK4, h = " << r.timestep << " s, " << r.steps
+     << " steps, each holding the plan's mean torque over it)"
      << " in the generated MJCF, from the plan's initial state: largest joint deviation from the "
         "plan (rad), at t = "
      << r.max_deviation_t << " s, joint " << r.max_deviation_joint + 1

@@ -41,8 +41,8 @@ struct PlannedState {
 using PlanFunction = std::function<PlannedState(double t)>;
 
 struct DynamicReplayOptions {
-  int steps = 2000;    ///< MuJoCo steps over the motion: h = duration / steps (even)
-  int records = 201;   ///< samples kept for plots and frames (equal time steps)
+  int steps = 2000;   ///< MuJoCo steps over the motion: h = duration / steps (even)
+  int records = 201;  ///< samples kept for plots and frames (equal time steps)
   /// times (s) where the planned torque may jump: step means are split there
   std::vector<double> breaks;
   double torque_scale = 1.0;  ///< multiplies every applied torque (1: the plan's)
@@ -50,19 +50,19 @@ struct DynamicReplayOptions {
 
 struct DynamicReplay {
   std::string integrator = "RK4";
-  double duration = 0;   ///< s
-  double timestep = 0;   ///< s, h
+  double duration = 0;  ///< s
+  double timestep = 0;  ///< s, h
   int steps = 0;
   double torque_scale = 1.0;
-  std::vector<double> t;                      ///< s, recorded times
+  std::vector<double> t;                         ///< s, recorded times
   std::vector<core::JointVector> q_plan, q_sim;  ///< rad, at t
-  double max_deviation = 0;    ///< rad, max over every step and joint of |q_sim - q_plan|
-  double max_deviation_t = 0;  ///< s
-  int max_deviation_joint = 0; ///< 0-based
-  double variation = 0;  ///< rad/s^2, V: total variation of M(q)^-1 tau over the step means
-  double tolerance = 0;  ///< rad, h^2 V
-  double excursion = 0;  ///< rad, the plan's largest joint excursion (max - min)
-  double coarse_timestep = 0;       ///< s, 2 h
+  double max_deviation = 0;     ///< rad, max over every step and joint of |q_sim - q_plan|
+  double max_deviation_t = 0;   ///< s
+  int max_deviation_joint = 0;  ///< 0-based
+  double variation = 0;         ///< rad/s^2, V: total variation of M(q)^-1 tau over the step means
+  double tolerance = 0;         ///< rad, h^2 V
+  double excursion = 0;         ///< rad, the plan's largest joint excursion (max - min)
+  double coarse_timestep = 0;   ///< s, 2 h
   double coarse_max_deviation = 0;  ///< rad, the same replay at 2 h
   double observed_order = 0;        ///< log2(coarse / fine deviation)
 };

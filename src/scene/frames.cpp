@@ -7,8 +7,8 @@
 #include <thread>
 
 #include "core/kinematics.hpp"
-#include "scene/polyline.hpp"
 #include "scene/phase_times.hpp"
+#include "scene/polyline.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
@@ -81,7 +81,8 @@ Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::strin
     return l;
   };
   // frame k on thread k % threads; thread 0 is this one, thread j > 0 draws with twin j - 1
-  const int threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(strip_threads_), n / 2));
+  const int threads =
+      static_cast<int>(std::min<size_t>(static_cast<size_t>(strip_threads_), n / 2));
   // twins are made here, on the calling thread (loading a model is not thread-safe)
   while (static_cast<int>(twins_.size()) < threads - 1)
     twins_.push_back(std::make_unique<SceneRenderer>(scene_, source_, settings_));
@@ -141,8 +142,7 @@ Image SceneRenderer::locus(std::span<const PoseSample> samples,
   // the end-effector path on top of everything the last pose draws
   set_pose(model_, map_, samples[n - 1]);
   double top = 3.0 * r;
-  for (const mjvGeom& g : renderer_.dynamic_geoms(model_.data()))
-  {
+  for (const mjvGeom& g : renderer_.dynamic_geoms(model_.data())) {
     // z extent of the geom's box (rows of mat are the world axes in the geom frame)
     double ext = std::abs(g.mat[6]) * g.size[0] + std::abs(g.mat[7]) * g.size[1] +
                  std::abs(g.mat[8]) * g.size[2];
@@ -162,14 +162,15 @@ Image SceneRenderer::locus(std::span<const PoseSample> samples,
       along.push_back(even[k]);
   }
   for (size_t k = 1; k < along.size(); ++k)
-    extra.push_back(segment_geom(Eigen::Vector3d(path[along[k - 1]].x(), path[along[k - 1]].y(), top),
-                                 Eigen::Vector3d(path[along[k]].x(), path[along[k]].y(), top),
-                                 style.path_radius * r, style.path_rgba));
+    extra.push_back(
+        segment_geom(Eigen::Vector3d(path[along[k - 1]].x(), path[along[k - 1]].y(), top),
+                     Eigen::Vector3d(path[along[k]].x(), path[along[k]].y(), top),
+                     style.path_radius * r, style.path_rgba));
   // the thrown object's flight: dots
   const double dot = std::max(0.45 * r, 3.0 * renderer_.metres_per_pixel());
   for (const size_t k : evenly_spaced(flight.size(), kMaxFlightDots))
-    extra.push_back(sphere_geom(Eigen::Vector3d(flight[k].x(), flight[k].y(), top), dot,
-                                style.flight_rgba));
+    extra.push_back(
+        sphere_geom(Eigen::Vector3d(flight[k].x(), flight[k].y(), top), dot, style.flight_rgba));
   set_pose(model_, map_, samples[n - 1]);
   return renderer_.render(model_.data(), labels, extra);
 }

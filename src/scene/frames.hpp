@@ -49,7 +49,7 @@ class SceneRenderer {
   struct LocusStyle {
     float path_rgba[4] = {0.10f, 0.10f, 0.12f, 1.0f};
     float flight_rgba[4] = {0.86f, 0.14f, 0.14f, 1.0f};
-    double faintest = 0.22;  ///< colour weight of the oldest pose (1: full colour)
+    double faintest = 0.22;    ///< colour weight of the oldest pose (1: full colour)
     double path_radius = 0.3;  ///< of the traced path, in link radii (4% of the longest link)
   };
 
@@ -99,8 +99,7 @@ std::string time_label(double t);
 /// samples; times outside [t.front(), t.back()] take the end state but keep their own time.
 /// @throws SceneError if there are no samples or q and t differ in size.
 std::vector<PoseSample> resample(std::span<const double> t, std::span<const core::JointVector> q,
-                                 std::span<const core::JointVector> qd,
-                                 std::span<const double> at);
+                                 std::span<const core::JointVector> qd, std::span<const double> at);
 
 /// n times spread evenly over [t0, t1] (both included; n >= 2, or {t0} for n == 1).
 std::vector<double> even_times(double t0, double t1, int n);

@@ -11,7 +11,9 @@ namespace armstudy::scene {
 
 Image::Image(int w, int h, Rgb fill) : width(w), height(h), rgb(static_cast<size_t>(w) * h * 3) {
   for (size_t i = 0; i < rgb.size(); i += 3) {
-    rgb[i] = fill.r; rgb[i + 1] = fill.g; rgb[i + 2] = fill.b;
+    rgb[i] = fill.r;
+    rgb[i + 1] = fill.g;
+    rgb[i + 2] = fill.b;
   }
 }
 

@@ -27,7 +27,9 @@ struct Image {
   /// Sets pixel (x, y); no bounds check.
   void set(int x, int y, Rgb c) {
     const size_t i = (static_cast<size_t>(y) * width + x) * 3;
-    rgb[i] = c.r; rgb[i + 1] = c.g; rgb[i + 2] = c.b;
+    rgb[i] = c.r;
+    rgb[i + 1] = c.g;
+    rgb[i + 2] = c.b;
   }
 };
 

@@ -28,10 +28,10 @@ namespace armstudy::scene {
 
 struct MjcfOptions {
   std::string model_name = "armstudy_chain";
-  double timestep = 1e-3;         ///< s
-  std::string integrator = "RK4"; ///< "Euler" or "RK4"
-  cases::FrameSize offscreen;     ///< px, off-screen buffer (<global offwidth offheight>)
-  double fovy = 45;               ///< deg, the free camera's vertical field of view
+  double timestep = 1e-3;          ///< s
+  std::string integrator = "RK4";  ///< "Euler" or "RK4"
+  cases::FrameSize offscreen;      ///< px, off-screen buffer (<global offwidth offheight>)
+  double fovy = 45;                ///< deg, the free camera's vertical field of view
   /// Extra XML inserted in <worldbody> before the chain (table, task line, markers).
   std::string world_extra;
   /// Extra XML inserted inside the tip body (e.g. a payload geom).
@@ -65,10 +65,10 @@ struct MjcfOptions {
 
 /// How one coupling spinner is represented in MuJoCo (see the header comment).
 struct SpinnerBody {
-  int spinner = 0;   ///< index in chain.spinners
-  int link = -1;     ///< link it hangs on (-1: the world)
-  int joint = -1;    ///< the one chain joint its hinge follows (-1: none, rigid with `link`)
-  double ratio = 0;  ///< psi = ratio * q[joint]
+  int spinner = 0;         ///< index in chain.spinners
+  int link = -1;           ///< link it hangs on (-1: the world)
+  int joint = -1;          ///< the one chain joint its hinge follows (-1: none, rigid with `link`)
+  double ratio = 0;        ///< psi = ratio * q[joint]
   std::string body_name;   ///< "spin1", ...
   std::string joint_name;  ///< "spin1_joint"
 };
@@ -79,10 +79,10 @@ std::vector<SpinnerBody> spinner_bodies(const core::PlanarChain& chain);
 
 /// Combined inertial of one link body: link plus point masses on it.
 struct LinkInertial {
-  double mass = 0;     ///< kg
-  double com_x = 0;    ///< m, link frame
+  double mass = 0;   ///< kg
+  double com_x = 0;  ///< m, link frame
   double com_y = 0;
-  double izz = 0;      ///< kg m^2 about the combined centre of mass
+  double izz = 0;  ///< kg m^2 about the combined centre of mass
 };
 
 /// The inertial MuJoCo gets for link i.

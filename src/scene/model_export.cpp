@@ -37,8 +37,9 @@ std::string mjcf_with_keyframes(const core::PlanarChain& chain, const std::strin
   for (size_t k = 0; k < keys.size(); ++k) {
     const PoseSample& p = keys[k];
     if (p.q.size() != chain.num_links() || (p.qd.size() != 0 && p.qd.size() != chain.num_links()))
-      throw std::invalid_argument("keyframe " + std::to_string(k + 1) + " has " + std::to_string(p.q.size()) +
-                                  " joint angles; the chain has " + std::to_string(chain.num_links()));
+      throw std::invalid_argument("keyframe " + std::to_string(k + 1) + " has " +
+                                  std::to_string(p.q.size()) + " joint angles; the chain has " +
+                                  std::to_string(chain.num_links()));
     const core::JointVector qd = p.qd.size() ? p.qd : core::JointVector::Zero(chain.num_links());
     map.set_state(m, mm.data(), p.q, qd);
     x << "    <key name=\"frame" << k + 1 << "\" time=\"" << p.t << "\" qpos=\"";

@@ -43,7 +43,10 @@ MujocoAgreement mujoco_agreement(const core::PlanarChain& chain,
     for (int i : act) {
       tau_scale = std::max(tau_scale, std::abs(tau[k][i]));
       const double e = std::abs(tau_mj[i] - tau[k][i]);
-      if (e > tau_err) { tau_err = e; a.worst_sample = static_cast<int>(k); }
+      if (e > tau_err) {
+        tau_err = e;
+        a.worst_sample = static_cast<int>(k);
+      }
     }
     if (!pas.empty()) {
       const int np = static_cast<int>(pas.size());
@@ -72,7 +75,8 @@ std::vector<studies::Check> mujoco_checks(const MujocoAgreement& a, bool has_pas
   out.push_back(studies::make_check(
       "mujoco_inverse_dynamics",
       "MuJoCo's mj_inverse on the generated MJCF gives the motion's joint torques: max |delta| "
-      "over the largest |tau|, " + std::to_string(a.samples) + " samples",
+      "over the largest |tau|, " +
+          std::to_string(a.samples) + " samples",
       a.torque_rel, tolerance));
   if (has_passive)
     out.push_back(studies::make_check(

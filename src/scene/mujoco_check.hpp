@@ -19,7 +19,7 @@ struct MujocoAgreement {
   double torque_rel = 0;        ///< active joints: |tau_mj - tau| / max |tau|
   double acceleration_rel = 0;  ///< passive joints: |qdd_mj - qdd| / max |qdd| (0 if none)
   int samples = 0;
-  int worst_sample = 0;         ///< index of the worst torque disagreement
+  int worst_sample = 0;  ///< index of the worst torque disagreement
 };
 
 /// Replays the samples (q, qd, qdd, tau: equal sizes, (N) each) in the chain's generated

@@ -25,8 +25,12 @@ class MujocoModel {
 
  private:
   MujocoModel() = default;
-  struct ModelDeleter { void operator()(mjModel* m) const { mj_deleteModel(m); } };
-  struct DataDeleter { void operator()(mjData* d) const { mj_deleteData(d); } };
+  struct ModelDeleter {
+    void operator()(mjModel* m) const { mj_deleteModel(m); }
+  };
+  struct DataDeleter {
+    void operator()(mjData* d) const { mj_deleteData(d); }
+  };
   std::unique_ptr<mjModel, ModelDeleter> model_;
   std::unique_ptr<mjData, DataDeleter> data_;
 };

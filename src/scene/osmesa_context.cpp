@@ -50,8 +50,8 @@ GlInfo gl_info() {
 }
 
 void OsmesaContext::make_current() {
-  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(ctx_), buffer_.data(), GL_UNSIGNED_BYTE,
-                         width_, height_))
+  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(ctx_), buffer_.data(), GL_UNSIGNED_BYTE, width_,
+                         height_))
     throw SceneError(std::string("OSMesa could not make its context current") + kNoRender);
 }
 

@@ -20,11 +20,13 @@ int line_width(const std::string& line, std::span<const int> w) {
 int overlay_text_width(const std::string& text, std::span<const int> char_width) {
   int widest = 0;
   std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) widest = std::max(widest, line_width(line, char_width));
+  for (std::string line; std::getline(in, line);)
+    widest = std::max(widest, line_width(line, char_width));
   return widest;
 }
 
-std::string wrap_overlay_text(const std::string& text, std::span<const int> char_width, int max_px) {
+std::string wrap_overlay_text(const std::string& text, std::span<const int> char_width,
+                              int max_px) {
   std::string out;
   std::istringstream in(text);
   bool first_line = true;

@@ -52,7 +52,8 @@ std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spe
                                                 const std::filesystem::path& dir) {
   if (result.snapshot_index.empty()) return {};
   const std::vector<PoseSample> snaps = pendulum_snapshots(result);
-  SceneRenderer sr(pendulum_scene(spec, result, options), "pendulum scene", render_settings(options));
+  SceneRenderer sr(pendulum_scene(spec, result, options), "pendulum scene",
+                   render_settings(options));
 
   std::vector<std::string> files;
   char title[160];

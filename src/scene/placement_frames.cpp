@@ -45,7 +45,8 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
     const Eigen::Vector2d S = pc.placement.start, F = pc.placement.end;
     const double phi = std::atan2(F.y() - S.y(), F.x() - S.x());
     const Eigen::Rotation2Dd to_P(-phi);
-    SceneRenderer sr(placement_scene(spec, pc, options), "placement scene", render_settings(options));
+    SceneRenderer sr(placement_scene(spec, pc, options), "placement scene",
+                     render_settings(options));
     const SampledMotion m = placement_motion(pc);
     std::vector<Eigen::Vector2d> path;
     for (const Eigen::Vector2d& p : pc.series.tip) path.push_back(to_P * (p - S));

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <csetjmp>
 #include <cstdint>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <thread>
 #include <vector>
@@ -40,7 +40,8 @@ void chunk(std::string* out, const char* type, const std::string& data) {
   const size_t at = out->size();
   out->append(type, 4);
   out->append(data);
-  const uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(out->data() + at), static_cast<uInt>(4 + data.size()));
+  const uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(out->data() + at),
+                          static_cast<uInt>(4 + data.size()));
   put32(out, static_cast<std::uint32_t>(crc));
 }
 
@@ -101,7 +102,8 @@ std::string encode_png_bands(const Image& image, int threads) {
     const int y0 = static_cast<int>(static_cast<long>(image.height) * b / bands);
     const int y1 = static_cast<int>(static_cast<long>(image.height) * (b + 1) / bands);
     z += parts[b];
-    adler = adler32_combine(adler, adlers[b], static_cast<z_off_t>(row_bytes * static_cast<size_t>(y1 - y0)));
+    adler = adler32_combine(adler, adlers[b],
+                            static_cast<z_off_t>(row_bytes * static_cast<size_t>(y1 - y0)));
   }
   put32(&z, static_cast<std::uint32_t>(adler));
   std::string out = "\x89PNG\r\n\x1a\n";
@@ -143,7 +145,8 @@ std::string encode_png(const Image& image, int threads) {
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (int y = 0; y < image.height; ++y)
-      png_write_row(png, const_cast<png_bytep>(&image.rgb[static_cast<size_t>(y) * image.width * 3]));
+      png_write_row(png,
+                    const_cast<png_bytep>(&image.rgb[static_cast<size_t>(y) * image.width * 3]));
     png_write_end(png, nullptr);
   }
   png_destroy_write_struct(&png, &info);

@@ -39,8 +39,9 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
     mjr_freeContext(&con_);
     mjv_freeScene(&scene_);
     mjv_freeScene(&scratch_);
-    throw SceneError("MuJoCo's off-screen buffer is not available in the OSMesa context; run "
-                     "with --no-render");
+    throw SceneError(
+        "MuJoCo's off-screen buffer is not available in the OSMesa context; run "
+        "with --no-render");
   }
   if (con_.offWidth < s.frame.width || con_.offHeight < s.frame.height) {
     const std::string msg = "MuJoCo's off-screen buffer is " + std::to_string(con_.offWidth) +

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <mujoco/mujoco.h>
+#include <Eigen/Dense>
 
 #include "cases/case_info.hpp"
 #include "scene/image.hpp"
@@ -25,8 +25,8 @@ struct ViewBox {
 
 struct RenderSettings {
   cases::FrameSize frame;  ///< px
-  bool shadows = false;  ///< shadow mapping (about 2.5x slower on llvmpipe)
-  double margin = 0.06;  ///< fraction of the view box added on every side
+  bool shadows = false;    ///< shadow mapping (about 2.5x slower on llvmpipe)
+  double margin = 0.06;    ///< fraction of the view box added on every side
 };
 
 /// Text drawn over a frame with MuJoCo's own font (mjr_overlay).
@@ -52,8 +52,7 @@ class Renderer {
   /// mj_forward or mj_kinematics first), with `extra` geoms appended to the scene and
   /// `labels` drawn over it; reads the pixels back. @throws SceneError if the scene has no
   /// room for `extra`.
-  Image render(mjData* data, const FrameLabels& labels = {},
-               std::span<const mjvGeom> extra = {});
+  Image render(mjData* data, const FrameLabels& labels = {}, std::span<const mjvGeom> extra = {});
 
   /// The geoms of the moving bodies in the state of `data` (for stroboscopic loci).
   std::vector<mjvGeom> dynamic_geoms(mjData* data);

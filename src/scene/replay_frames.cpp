@@ -38,18 +38,22 @@ std::string write_replay_strip(SceneRenderer& sr, const core::PlanarChain& chain
     const double z = 2.5 * rad;
     std::vector<mjvGeom> extra;
     for (int j = 0; j + 1 < pose.p_WJ.cols(); ++j) {
-      const Eigen::Vector3d a(pose.p_WJ(0, j), pose.p_WJ(1, j), z), b(pose.p_WJ(0, j + 1), pose.p_WJ(1, j + 1), z);
+      const Eigen::Vector3d a(pose.p_WJ(0, j), pose.p_WJ(1, j), z),
+          b(pose.p_WJ(0, j + 1), pose.p_WJ(1, j + 1), z);
       extra.push_back(segment_geom(a, b, 0.22 * rad, kSimRgba));
     }
     for (int j = 0; j < pose.p_WJ.cols(); ++j)
-      extra.push_back(sphere_geom(Eigen::Vector3d(pose.p_WJ(0, j), pose.p_WJ(1, j), z), 0.5 * rad, kSimRgba));
+      extra.push_back(
+          sphere_geom(Eigen::Vector3d(pose.p_WJ(0, j), pose.p_WJ(1, j), z), 0.5 * rad, kSimRgba));
     FrameLabels l;
-    l.top_left = time_label(at[k]) + ", |dq| = " + sci((sim[k].q - plan[k].q).cwiseAbs().maxCoeff()) + " rad";
+    l.top_left = time_label(at[k]) +
+                 ", |dq| = " + sci((sim[k].q - plan[k].q).cwiseAbs().maxCoeff()) + " rad";
     if (k == 0) l.bottom_left = title;
     tiles.push_back(sr.renderer().render(sr.model().data(), l, extra));
   }
   const std::string file = name + "_strip.png";
-  write_png(dir / file, tile(tiles, strip_columns(static_cast<int>(at.size())), 8, Rgb{255, 255, 255}));
+  write_png(dir / file,
+            tile(tiles, strip_columns(static_cast<int>(at.size())), 8, Rgb{255, 255, 255}));
   return file;
 }
 
@@ -93,14 +97,18 @@ std::vector<std::string> render_placement_replay(const studies::placement::Spec&
     decor.task_start = Eigen::Vector2d::Zero();
     decor.task_end = to_P * (F - S);
     decor.offscreen = options.frame;
-    SceneRenderer sr(horizontal_arm_scene(chain, decor), "placement replay scene", render_settings(options));
+    SceneRenderer sr(horizontal_arm_scene(chain, decor), "placement replay scene",
+                     render_settings(options));
     char title[200];
-    std::snprintf(title, sizeof title, "%s, configuration %d: planned (arm)\nMuJoCo mj_step in magenta: max |dq| %.2g rad",
-                  std::string(core::program_label(rp.program)).c_str(), rp.configuration,
-                  rp.replay.max_deviation);
+    std::snprintf(
+        title, sizeof title,
+        "%s, configuration %d: planned (arm)\nMuJoCo mj_step in magenta: max |dq| %.2g rad",
+        std::string(core::program_label(rp.program)).c_str(), rp.configuration,
+        rp.replay.max_deviation);
     files.push_back(write_replay_strip(sr, chain, rp.replay, options.frames, title, dir,
-                                       "placement_" + std::string(core::program_name(rp.program)) + "_c" +
-                                           std::to_string(rp.configuration) + "_planned-and-simulated"));
+                                       "placement_" + std::string(core::program_name(rp.program)) +
+                                           "_c" + std::to_string(rp.configuration) +
+                                           "_planned-and-simulated"));
   }
   return files;
 }

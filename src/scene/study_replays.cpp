@@ -10,8 +10,10 @@ namespace armstudy::scene {
 namespace to = studies::time_optimal;
 namespace pl = studies::placement;
 
-DynamicReplay replay_time_optimal(const to::Spec& spec, const to::Result& result, double torque_scale) {
-  if (result.status != studies::Status::kSolved || result.solvers.empty() || !result.solvers.front().solved)
+DynamicReplay replay_time_optimal(const to::Spec& spec, const to::Result& result,
+                                  double torque_scale) {
+  if (result.status != studies::Status::kSolved || result.solvers.empty() ||
+      !result.solvers.front().solved)
     throw std::invalid_argument("replay_time_optimal: the study has no exact solution");
   const to::SolverResult& exact = result.solvers.front();
   const to::Problem pb = to::make_problem(spec, result.limits);
@@ -48,10 +50,12 @@ std::vector<PlacementReplay> replay_placement(const pl::Spec& spec, const pl::Re
     const PlanFunction plan = [&](double t) {
       const core::ProgramSample ps = core::evaluate_program(pc.program, t, T, L);
       const Eigen::Vector2d p = S + ps.s * u, v = ps.sd * u, a = ps.sdd * u;
-      const pl::Arm2Sample a2 = pl::arm2_sample(arm, p.x(), p.y(), v.x(), v.y(), a.x(), a.y(), sign);
+      const pl::Arm2Sample a2 =
+          pl::arm2_sample(arm, p.x(), p.y(), v.x(), v.y(), a.x(), a.y(), sign);
       // q1 unwrapped like the study's series (nearest sample's branch)
       const double dt = ser.t[1] - ser.t[0];
-      const size_t k = std::min(ser.t.size() - 1, static_cast<size_t>(std::lround(std::clamp(t, 0.0, T) / dt)));
+      const size_t k =
+          std::min(ser.t.size() - 1, static_cast<size_t>(std::lround(std::clamp(t, 0.0, T) / dt)));
       double q1 = std::atan2(a2.s1, a2.c1);
       q1 += 2 * core::kPi * std::round((ser.q[k][0] - q1) / (2 * core::kPi));
       PlannedState s;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "scene/arm_scene.hpp"
 #include "scene/animation.hpp"
+#include "scene/arm_scene.hpp"
 #include "scene/study_frames.hpp"
 #include "studies/tray_arm.hpp"
 
@@ -43,7 +43,8 @@ TrayDecor throwing_decor(const studies::ThrowingSpec& spec, const core::PlanarCh
 ArmScene throwing_scene(const studies::ThrowingSpec& spec, const studies::ThrowingResult& result,
                         const cases::RenderOptions& options) {
   const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
-  return tray_arm_scene(chain, throwing_decor(spec, chain, throwing_motion(result.idp.series), options));
+  return tray_arm_scene(chain,
+                        throwing_decor(spec, chain, throwing_motion(result.idp.series), options));
 }
 
 std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
@@ -59,8 +60,8 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
     studies::Flight flight;
     bool strip;
   };
-  std::vector<Thrown> thrown = {{&result.idp, "IDP optimum", "throwing_idp", "throwing_flight",
-                                 result.flight, true}};
+  std::vector<Thrown> thrown = {
+      {&result.idp, "IDP optimum", "throwing_idp", "throwing_flight", result.flight, true}};
   if (result.nlopt_ran && result.nlopt.series.t.size() >= 2)
     thrown.push_back({&result.nlopt, "SLSQP optimum", "throwing_slsqp", "throwing_slsqp_flight",
                       result.nlopt_flight, false});
@@ -101,8 +102,11 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
         decor.view = {b.x() - r * aspect, b.x() + r * aspect, b.y() - r, b.y() + r};
         SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
         FrameLabels labels;
-        labels.top_left = "close-up at release, " + th.who + "\nlast tenth of the throw; ball path traced";
-        labels.bottom_left = "side view; ball radius " + std::to_string(static_cast<int>(std::lround(spec.arm.rb * 1000))) + " mm";
+        labels.top_left =
+            "close-up at release, " + th.who + "\nlast tenth of the throw; ball path traced";
+        labels.bottom_left = "side view; ball radius " +
+                             std::to_string(static_cast<int>(std::lround(spec.arm.rb * 1000))) +
+                             " mm";
         files.push_back(write_locus(sr, end, 5, s.ball, {}, labels, dir, th.stem + "_release"));
       }
     }
@@ -114,8 +118,8 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
       SceneRenderer sr(tray_arm_scene(chain, decor), "throwing scene", render_settings(options));
       FrameLabels labels;
       char t2[200];
-      std::snprintf(t2, sizeof t2, "flight %.2f s, lands at x = %.3f m",
-                    th.flight.duration, th.flight.landing.x());
+      std::snprintf(t2, sizeof t2, "flight %.2f s, lands at x = %.3f m", th.flight.duration,
+                    th.flight.landing.x());
       labels.top_left = std::string(title) + "\n" + t2;
       labels.bottom_left = "side view; red dots: the ball after release";
       std::vector<Eigen::Vector2d> dots;

@@ -20,9 +20,11 @@ ArmScene time_optimal_scene(const to::Spec& spec, const to::Result& result,
 SampledMotion time_optimal_motion(const to::Result& result) {
   SampledMotion m;
   m.t = result.motion_t;
-  for (int k = 0; k < result.motion_q.cols(); ++k) m.q.push_back(core::JointVector(result.motion_q.col(k)));
+  for (int k = 0; k < result.motion_q.cols(); ++k)
+    m.q.push_back(core::JointVector(result.motion_q.col(k)));
   if (result.motion_qd.cols() == result.motion_q.cols())
-    for (int k = 0; k < result.motion_qd.cols(); ++k) m.qd.push_back(core::JointVector(result.motion_qd.col(k)));
+    for (int k = 0; k < result.motion_qd.cols(); ++k)
+      m.qd.push_back(core::JointVector(result.motion_qd.col(k)));
   return m;
 }
 
@@ -43,8 +45,9 @@ std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const 
   files.push_back(write_strip(sr, m, options.frames, title, dir, "time_optimal"));
   FrameLabels labels;
   labels.top_left = std::string(title) + "\nequal time steps: dense where slow";
-  labels.bottom_left = spec.chain.gravity != 0.0 ? "vertical plane, gravity down the image; grid 0.1 m"
-                                                 : "top view; grid 0.1 m";
+  labels.bottom_left = spec.chain.gravity != 0.0
+                           ? "vertical plane, gravity down the image; grid 0.1 m"
+                           : "top view; grid 0.1 m";
   files.push_back(write_locus(sr, m, 15, path, {}, labels, dir, "time_optimal"));
   write_animation(sr, m, "time-optimal (exact)", dir, "time_optimal");
   return files;

@@ -28,8 +28,7 @@ struct Check {
 };
 
 /// Makes a check that passes when value <= tolerance.
-inline Check make_check(std::string name, std::string description, double value,
-                        double tolerance) {
+inline Check make_check(std::string name, std::string description, double value, double tolerance) {
   return Check{std::move(name), std::move(description), value, tolerance, value <= tolerance};
 }
 

@@ -51,7 +51,8 @@ void fields(V& v, ReplaySection& x) {
   v("max_deviation_joint", x.max_deviation_joint, "joint of the largest deviation (1-based)");
   v("tolerance_rad", x.tolerance_rad, "allowed deviation, h^2 V");
   v("tolerance_rule", x.tolerance_rule, "the tolerance as a sentence");
-  v("variation_rad_s2", x.variation_rad_s2, "V: total variation of M(q)^-1 tau over the step means");
+  v("variation_rad_s2", x.variation_rad_s2,
+    "V: total variation of M(q)^-1 tau over the step means");
   v("excursion_rad", x.excursion_rad, "the plan's largest joint excursion (max - min)");
   v("coarse_timestep_s", x.coarse_timestep_s, "2 h");
   v("coarse_max_deviation_rad", x.coarse_max_deviation_rad, "the same replay at 2 h");

@@ -8,8 +8,10 @@
 namespace armstudy::studies {
 
 core::PlanarChain make_tray_arm(const TrayArmParams& p) {
-  ARM_THROW_UNLESS(std::isfinite(p.r4) && p.r4 > 0, "ball circle radius r4 " << p.r4 << " m should be > 0");
-  ARM_THROW_UNLESS(std::isfinite(p.rb) && p.rb > 0, "ball radius r_b " << p.rb << " m should be > 0");
+  ARM_THROW_UNLESS(std::isfinite(p.r4) && p.r4 > 0,
+                   "ball circle radius r4 " << p.r4 << " m should be > 0");
+  ARM_THROW_UNLESS(std::isfinite(p.rb) && p.rb > 0,
+                   "ball radius r_b " << p.rb << " m should be > 0");
   core::PlanarChain c;
   c.links = {{p.l1, p.m1, p.r1, 0.0, p.I1, true},
              {p.l2, p.m2, p.r2, 0.0, p.I2, true},

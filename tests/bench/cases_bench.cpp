@@ -29,7 +29,12 @@ void BM_UnknownKeyChecks(benchmark::State& state) {
   }
   state.SetComplexityN(state.range(0));
 }
-BENCHMARK(BM_UnknownKeyChecks)->Arg(10000)->Arg(40000)->Arg(80000)->Complexity()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_UnknownKeyChecks)
+    ->Arg(10000)
+    ->Arg(40000)
+    ->Arg(80000)
+    ->Complexity()
+    ->Unit(benchmark::kMillisecond);
 
 // the structure check of an alias bomb stops at the node limit, whatever its expansion
 void BM_AliasBombRefused(benchmark::State& state) {

@@ -23,10 +23,13 @@ void run_inverse_dynamics(benchmark::State& state, const PlanarChain& chain) {
     benchmark::DoNotOptimize(inverse_dynamics(chain, q[k], qd[k], qdd[k]));
     k = (k + 1) & 255;
   }
-  state.counters["samples_per_s"] = benchmark::Counter(state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["samples_per_s"] =
+      benchmark::Counter(state.iterations(), benchmark::Counter::kIsRate);
 }
 
-void BM_InverseDynamics2Link(benchmark::State& s) { run_inverse_dynamics(s, testing::thesis_arm()); }
+void BM_InverseDynamics2Link(benchmark::State& s) {
+  run_inverse_dynamics(s, testing::thesis_arm());
+}
 void BM_InverseDynamics4Link(benchmark::State& s) { run_inverse_dynamics(s, testing::tray_arm()); }
 BENCHMARK(BM_InverseDynamics2Link);
 BENCHMARK(BM_InverseDynamics4Link);

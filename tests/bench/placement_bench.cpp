@@ -63,13 +63,18 @@ void BM_PlacementEvaluatorSamples(benchmark::State& state) {
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
   const double cpu = double(c1.tv_sec - c0.tv_sec) + 1e-9 * double(c1.tv_nsec - c0.tv_nsec);
   state.counters["samples_per_cpu_s"] = double(samples) / cpu;
-  state.counters["samples_per_s"] = benchmark::Counter(double(samples), benchmark::Counter::kIsRate);
+  state.counters["samples_per_s"] =
+      benchmark::Counter(double(samples), benchmark::Counter::kIsRate);
   state.counters["samples_per_s_per_thread"] =
       benchmark::Counter(double(samples) / threads, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_PlacementEvaluatorSamples)
-    ->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})
-    ->UseRealTime()->Unit(benchmark::kMillisecond);
+    ->Args({1, 0})
+    ->Args({1, 1})
+    ->Args({2, 0})
+    ->Args({2, 1})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 // the constrained refinement of one optimum (refine.hpp) from a nearby start: on the inner
 // circle's clearance margin (0.5 Lmax, arg 0) and interior (0.2 Lmax, arg 1)
@@ -79,7 +84,8 @@ void BM_PlacementConstrainedRefinement(benchmark::State& state) {
   spec.chain = testing::thesis_arm();
   spec.length = (interior ? 0.2 : 0.5) * annulus(0.4, 0.2).lmax;
   const Arm2 arm = make_arm2(spec.chain);
-  const ProgramTable table = make_program_table(core::MotionProgram::kCycloidal, 1.0, spec.length, 401);
+  const ProgramTable table =
+      make_program_table(core::MotionProgram::kCycloidal, 1.0, spec.length, 401);
   const double x0 = interior ? 0.52 : 0.216, p0 = (interior ? 168.0 : 99.0) * core::kPi / 180;
   const Candidate start = evaluate_candidate(spec, arm, table, 1, x0, p0);
   long evaluations = 0;
@@ -88,9 +94,14 @@ void BM_PlacementConstrainedRefinement(benchmark::State& state) {
     benchmark::DoNotOptimize(r.best.metrics.energy);
     evaluations += r.evaluations;
   }
-  state.counters["evaluations"] = benchmark::Counter(double(evaluations), benchmark::Counter::kAvgIterations);
+  state.counters["evaluations"] =
+      benchmark::Counter(double(evaluations), benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_PlacementConstrainedRefinement)->Arg(0)->Arg(1)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlacementConstrainedRefinement)
+    ->Arg(0)
+    ->Arg(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 // the source tree (the benchmark executable gets no ARMSTUDY_SOURCE_DIR): three levels up
 std::filesystem::path source_dir() {
@@ -101,7 +112,8 @@ void BM_PlacementFiveBundledExamples(benchmark::State& state) {
   for (auto _ : state) {
     for (int n = 1; n <= 5; ++n) {
       app::LoadedCase c = app::load_case(
-          (source_dir() / ("reports/cases/placement-example-" + std::to_string(n) + ".yaml")).string());
+          (source_dir() / ("reports/cases/placement-example-" + std::to_string(n) + ".yaml"))
+              .string());
       c.run->solve({});
       benchmark::DoNotOptimize(c.run->results().dump().size());
     }

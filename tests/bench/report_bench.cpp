@@ -58,9 +58,12 @@ ShadedMap placement_like_map() {
       const double y = m.y_min + (m.y_max - m.y_min) * j / (m.ny - 1);
       const double r = std::hypot(x - 0.1, y);
       const size_t k = static_cast<size_t>(j) * m.nx + i;
-      if (r > 0.55 || r < 0.15) out.mask[k] = 1;
-      else if (r < 0.2) sing.mask[k] = 1;
-      else m.z[k] = 2 + 10 * (0.55 - r) * (0.55 - r) + x;
+      if (r > 0.55 || r < 0.15)
+        out.mask[k] = 1;
+      else if (r < 0.2)
+        sing.mask[k] = 1;
+      else
+        m.z[k] = 2 + 10 * (0.55 - r) * (0.55 - r) + x;
     }
   m.regions = {out, sing};
   m.markers = {{0.3, 0.2, "optimum", colour_for("cycloidal/1")}};

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "scene/model_files.hpp"
-#include "scene/frames.hpp"
-#include "scene/png_writer.hpp"
 #include "core/planar_chain.hpp"
+#include "scene/frames.hpp"
+#include "scene/model_files.hpp"
+#include "scene/png_writer.hpp"
 
 namespace armstudy::scene {
 namespace {
@@ -105,7 +105,8 @@ void BM_MinimalScene640x480(benchmark::State& state) {
   SceneRenderer sr(minimal_scene(), "minimal", rs);
   PoseSample warm;
   warm.q = core::JointVector::Zero(2);
-  benchmark::DoNotOptimize(sr.frame(warm, {"warm-up", "", ""}).rgb.data());  // shaders compiled here
+  benchmark::DoNotOptimize(
+      sr.frame(warm, {"warm-up", "", ""}).rgb.data());  // shaders compiled here
   int k = 0;
   for (auto _ : state) {
     PoseSample p;
@@ -132,12 +133,22 @@ void BM_RealScene640x480(benchmark::State& state) {
   state.counters["frames_per_s"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_MinimalScene640x480)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
-BENCHMARK(BM_RealScene640x480)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_MinimalScene640x480)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(1.0);
+BENCHMARK(BM_RealScene640x480)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(1.0);
 
 // a 16-frame strip (SceneRenderer::strip, PNG of the tiled strip included, compressed in
-// bands on the second argument's threads) on 1 or 2 threads (first argument); frames_per_s counts the strip's
-// frames. llvmpipe's rasteriser threads (LP_NUM_THREADS, read once per process; one per
+// bands on the second argument's threads) on 1 or 2 threads (first argument); frames_per_s counts
+// the strip's frames. llvmpipe's rasteriser threads (LP_NUM_THREADS, read once per process; one per
 // core by default) are shared by every context of the process: LP_NUM_THREADS=0 gives one
 // core's rate (all work on the calling thread), the default both cores' from one thread
 void BM_Strip16Frames640x480(benchmark::State& state) {
@@ -149,8 +160,8 @@ void BM_Strip16Frames640x480(benchmark::State& state) {
   const int png_threads = static_cast<int>(state.range(1));
   for (auto _ : state)
     benchmark::DoNotOptimize(encode_png(sr.strip(poses, "strip", 3), png_threads).size());
-  state.counters["frames_per_s"] = benchmark::Counter(16.0 * static_cast<double>(state.iterations()),
-                                                      benchmark::Counter::kIsRate);
+  state.counters["frames_per_s"] = benchmark::Counter(
+      16.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Strip16Frames640x480)
     ->Args({1, 1})

@@ -31,11 +31,14 @@ void BM_ThrowSimulateProfile(benchmark::State& state) {
   f.setup.generic_dynamics = state.range(1) == 1;
   const long steps = static_cast<long>(f.setup.steps_per_stage) * f.profile.stages();
   for (auto _ : state) benchmark::DoNotOptimize(simulate_profile(f.setup, f.profile).energy);
-  state.counters["rk4_steps_per_s"] =
-      benchmark::Counter(static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["rk4_steps_per_s"] = benchmark::Counter(
+      static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ThrowSimulateProfile)
-    ->Args({20, 0})->Args({20, 1})->Args({80, 0})->Args({80, 1})
+    ->Args({20, 0})
+    ->Args({20, 1})
+    ->Args({80, 0})
+    ->Args({80, 1})
     ->Unit(benchmark::kMillisecond);
 
 void BM_ThrowReplayVoltages(benchmark::State& state) {
@@ -71,7 +74,13 @@ void BM_IdpIteration(benchmark::State& state) {
   state.counters["simulations_per_s"] =
       benchmark::Counter(static_cast<double>(evals), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_IdpIteration)->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_IdpIteration)
+    ->Args({1, 0})
+    ->Args({1, 1})
+    ->Args({2, 0})
+    ->Args({2, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
 // (computed once, outside the timing), one seed on one core, or all seeds on both cores

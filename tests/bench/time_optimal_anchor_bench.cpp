@@ -46,11 +46,15 @@ void BM_TimeOptimalAnchorExact(benchmark::State& state) {
   state.counters["duration_s"] = duration;
   state.counters["duration_minus_toppra_s"] = duration - 1.180762160;
 }
-BENCHMARK(BM_TimeOptimalAnchorExact)->Args({1000, 1})->Args({1000, 2})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TimeOptimalAnchorExact)
+    ->Args({1000, 1})
+    ->Args({1000, 2})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_TimeOptimalAnchorExactRecheck(benchmark::State& state) {
   const Spec spec = anchor_spec();
-  const Problem pb = make_problem(spec, Limits{spec.velocity_limit, spec.torque_limit, std::nullopt});
+  const Problem pb =
+      make_problem(spec, Limits{spec.velocity_limit, spec.torque_limit, std::nullopt});
   const std::vector<double> nodes = make_nodes(pb.path, 1000);
   double worst = 0;
   for (auto _ : state) {

@@ -39,8 +39,8 @@ void BM_TimeOptimalDp(benchmark::State& state) {
   const Problem pb = problem(spec);
   long evaluations = 0;
   for (auto _ : state) {
-    const SolverOutput o = solve_dp(pb, static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 8,
-                                    DpState::kPathSpeed);
+    const SolverOutput o = solve_dp(pb, static_cast<int>(state.range(0)),
+                                    static_cast<int>(state.range(1)), 8, DpState::kPathSpeed);
     evaluations = o.evaluations;
     benchmark::DoNotOptimize(o.duration);
   }
@@ -51,7 +51,8 @@ BENCHMARK(BM_TimeOptimalDp)->Args({10, 200})->Args({50, 1000})->Unit(benchmark::
 void BM_TimeOptimalDpJoint1(benchmark::State& state) {
   const Spec spec = source_spec();
   const Problem pb = problem(spec);
-  for (auto _ : state) benchmark::DoNotOptimize(solve_dp(pb, 10, 200, 8, DpState::kJoint1Velocity).duration);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(solve_dp(pb, 10, 200, 8, DpState::kJoint1Velocity).duration);
 }
 BENCHMARK(BM_TimeOptimalDpJoint1)->Unit(benchmark::kMillisecond);
 
@@ -78,7 +79,8 @@ void BM_TimeOptimalMujocoReplay(benchmark::State& state) {
   spec.dp.convergence_segments = {};
   spec.complex.enabled = false;
   const Result r = solve(spec);
-  for (auto _ : state) benchmark::DoNotOptimize(armstudy::scene::replay_time_optimal(spec, r).max_deviation);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(armstudy::scene::replay_time_optimal(spec, r).max_deviation);
 }
 BENCHMARK(BM_TimeOptimalMujocoReplay)->Unit(benchmark::kMillisecond);
 

@@ -32,8 +32,10 @@ Expectation read_expectation(const fs::path& file) {
   std::string line;
   while (std::getline(in, line) && line.rfind("#", 0) == 0) {
     if (line.rfind("# expect-exit:", 0) == 0) e.exit_code = std::stoi(line.substr(14));
-    if (line.rfind("# expect-position: none", 0) == 0) e.position = false;
-    else if (line.rfind("# expect-position: ", 0) == 0) e.line_col = line.substr(19);
+    if (line.rfind("# expect-position: none", 0) == 0)
+      e.position = false;
+    else if (line.rfind("# expect-position: ", 0) == 0)
+      e.line_col = line.substr(19);
     if (line.rfind("# expect:", 0) == 0) {
       std::stringstream ss(line.substr(9));
       std::string k;
@@ -70,20 +72,26 @@ TEST(BadCaseCorpus, HasAtLeastThirtyFilesEachWithExpectations) {
 }
 
 TEST(BadCaseCorpus, EveryFileFailsWithItsCodeMessageAndPositionAndWritesNothing) {
-  const fs::path out = fs::temp_directory_path() / ("armstudy_bad_corpus_" + std::to_string(getpid()));
+  const fs::path out =
+      fs::temp_directory_path() / ("armstudy_bad_corpus_" + std::to_string(getpid()));
   for (const auto& f : corpus()) {
     SCOPED_TRACE(f.filename().string());
     const Expectation e = read_expectation(f);
-    for (const std::string& cmd : {"validate " + f.string(), "run --no-render --out " + out.string() + " " + f.string()}) {
+    for (const std::string& cmd :
+         {"validate " + f.string(), "run --no-render --out " + out.string() + " " + f.string()}) {
       const CliRun r = run_cli(cmd);
       EXPECT_EQ(r.exit_code, e.exit_code) << cmd << "\n" << r.output;
-      for (const auto& k : e.keywords) EXPECT_NE(r.output.find(k), std::string::npos) << "missing '" << k << "' in:\n" << r.output;
+      for (const auto& k : e.keywords)
+        EXPECT_NE(r.output.find(k), std::string::npos) << "missing '" << k << "' in:\n" << r.output;
       if (e.position) {
-        const std::regex pos(std::regex_replace(f.string(), std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") + ":[0-9]+:[0-9]+: ");
+        const std::regex pos(
+            std::regex_replace(f.string(), std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") +
+            ":[0-9]+:[0-9]+: ");
         EXPECT_TRUE(std::regex_search(r.output, pos)) << "no file:line:col in:\n" << r.output;
         if (!e.line_col.empty()) {
           EXPECT_NE(r.output.find(f.string() + ":" + e.line_col + ": "), std::string::npos)
-              << "no error at " << e.line_col << " in:\n" << r.output;
+              << "no error at " << e.line_col << " in:\n"
+              << r.output;
         }
       }
       // errors are capped and quoted briefly: never a whole hostile file

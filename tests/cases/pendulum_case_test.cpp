@@ -37,7 +37,8 @@ TEST(PendulumCase, BundledCaseEqualsTheDocumentedDefaults) {
 
 TEST(PendulumCase, UnknownKeyAndWidthAreRejectedWithPositions) {
   Diagnostics d("p.yaml");
-  const auto root = parse_text("pendulum:\n  duration_s: 0\n  tray:\n    width_deg: 90\n  strat_deg: [1, 2]\n", d);
+  const auto root = parse_text(
+      "pendulum:\n  duration_s: 0\n  tray:\n    width_deg: 90\n  strat_deg: [1, 2]\n", d);
   ASSERT_TRUE(root.has_value());
   Map m(*root, d, "");
   load_pendulum_spec(m);

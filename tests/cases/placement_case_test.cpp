@@ -104,8 +104,10 @@ TEST(PlacementCase, UserErrorsNameTheirPositionAndWhatIsExpected) {
                         "c.yaml:2:13: 'placement.length_m' is 1.5 m, longer than Lmax"));
   EXPECT_TRUE(has_error(load("placement:\n  length_m: 0.5\n  length_fraction: 0.5\n"),
                         "expected exactly one of them"));
-  EXPECT_TRUE(has_error(load("placement:\n  duration_s: 1\n"), "missing required key 'placement.length_fraction'"));
-  EXPECT_TRUE(has_error(load("placement:\n  length_fraction: 0\n"), "expected a fraction in (0, 1]"));
+  EXPECT_TRUE(has_error(load("placement:\n  duration_s: 1\n"),
+                        "missing required key 'placement.length_fraction'"));
+  EXPECT_TRUE(
+      has_error(load("placement:\n  length_fraction: 0\n"), "expected a fraction in (0, 1]"));
   EXPECT_TRUE(has_error(load("placement:\n  length_fraction: 0.5\n  programs: [cycloid]\n"),
                         "c.yaml:3:14: 'placement.programs[1]' is 'cycloid'"));
   EXPECT_TRUE(has_error(load("placement:\n  length_fraction: 0.5\n  programs: [cycloid]\n"),
@@ -127,9 +129,10 @@ TEST(PlacementCase, UserErrorsNameTheirPositionAndWhatIsExpected) {
   EXPECT_TRUE(has_error(load("placement:\n  length_fraction: 0.5\n  evaluate:\n"
                              "    - {x_s_m: 0.5, phi_deg: 1, root_xy_m: [0, 1]}\n"),
                         "expected one placement"));
-  EXPECT_TRUE(has_error(load("arm:\n  links:\n    - {length: 0.4, mass: 4}\n"
-                             "    - {length: 0.2, mass: 2, joint: passive}\nplacement:\n  length_fraction: 0.5\n"),
-                        "expected both joints active"));
+  EXPECT_TRUE(has_error(
+      load("arm:\n  links:\n    - {length: 0.4, mass: 4}\n"
+           "    - {length: 0.2, mass: 2, joint: passive}\nplacement:\n  length_fraction: 0.5\n"),
+      "expected both joints active"));
   EXPECT_TRUE(has_error(load("name: x\n"), "missing required key 'placement'"));
 }
 
@@ -140,15 +143,16 @@ TEST(PlacementCase, ArmKeyReplacesTheThesisArmAndSetsLmax) {
   ASSERT_TRUE(l.errors.empty()) << all(l);
   EXPECT_NEAR(l.spec.length, 4 * std::sqrt(0.15), 1e-15);
   EXPECT_FALSE(load("arm:\n  links:\n    - {length: 0.5, mass: 3}\n    - {length: 0.3, mass: 1}\n"
-                    "placement:\n  length_m: 1.6\n").errors.empty());
+                    "placement:\n  length_m: 1.6\n")
+                   .errors.empty());
 }
 
 TEST(PlacementCase, BundledExamplesLoadWithTheThesisLengths) {
   const double fractions[] = {1.0, 0.8, 0.5, 0.4, 0.2};
   const double lmax = 4 * std::sqrt(0.4 * 0.2);
   for (int n = 1; n <= 5; ++n) {
-    const std::string path = std::string(ARMSTUDY_SOURCE_DIR) + "/reports/cases/placement-example-" +
-                             std::to_string(n) + ".yaml";
+    const std::string path = std::string(ARMSTUDY_SOURCE_DIR) +
+                             "/reports/cases/placement-example-" + std::to_string(n) + ".yaml";
     Diagnostics d(path);
     std::string text;
     const auto node = parse_file(path, d, &text);

@@ -74,7 +74,8 @@ TEST(ThrowingCase, BundledCaseEqualsTheDocumentedDefaults) {
 
 TEST(ThrowingCase, EmptySectionGivesDefaultsAndOnBaseMountIsRead) {
   Diagnostics d("t.yaml");
-  const auto s = load_text("throwing:\n  motors:\n    motor2: on_base\n    rotor_inertia_kg_m2: 2.0e-6\n", d);
+  const auto s =
+      load_text("throwing:\n  motors:\n    motor2: on_base\n    rotor_inertia_kg_m2: 2.0e-6\n", d);
   ASSERT_TRUE(d.empty()) << d.errors()[0].format();
   EXPECT_EQ(s.arm.motor2, studies::Motor2Mount::kOnBase);
   EXPECT_EQ(s.arm.rotor_inertia, 2.0e-6);
@@ -100,13 +101,16 @@ TEST(ThrowingCase, ErrorsNameLineColumnAndWhatWasExpected) {
   for (const auto& e : d.errors()) msgs.push_back(e.format());
   ASSERT_EQ(msgs.size(), 6u) << ::testing::PrintToString(msgs);
   EXPECT_EQ(msgs[0], "t.yaml:3:14: 'throwing.ball.mass_kg' is -0.01; should be > 0 kg");
-  EXPECT_NE(msgs[1].find("t.yaml:4:14: 'throwing.ball.inertia' (or 'solid_sphere') is 'hollow'"), std::string::npos);
+  EXPECT_NE(msgs[1].find("t.yaml:4:14: 'throwing.ball.inertia' (or 'solid_sphere') is 'hollow'"),
+            std::string::npos);
   EXPECT_NE(msgs[2].find("t.yaml:6:13:"), std::string::npos);
   EXPECT_NE(msgs[2].find("did you mean 'on_base'?"), std::string::npos);
   EXPECT_NE(msgs[3].find("t.yaml:8:18:"), std::string::npos);
   EXPECT_NE(msgs[3].find("expected a list of 3 numbers"), std::string::npos);
-  EXPECT_NE(msgs[4].find("t.yaml:10:13: 'throwing.idp.stages' is 1; should be in [2, 64]"), std::string::npos);
-  EXPECT_EQ(msgs[5], "t.yaml:11:5: unknown key 'throwing.idp.candiates'; did you mean 'candidates'?");
+  EXPECT_NE(msgs[4].find("t.yaml:10:13: 'throwing.idp.stages' is 1; should be in [2, 64]"),
+            std::string::npos);
+  EXPECT_EQ(msgs[5],
+            "t.yaml:11:5: unknown key 'throwing.idp.candiates'; did you mean 'candidates'?");
 }
 
 TEST(ThrowingCase, ConstraintAndConvergenceKeysAreRead) {
@@ -114,7 +118,8 @@ TEST(ThrowingCase, ConstraintAndConvergenceKeysAreRead) {
   const auto s = load_text(
       "throwing:\n"
       "  motors: {power_max_W: 45}\n"
-      "  constraints: {contact_margin_N: 0.05, friction_coefficient: 0.3, release_tolerance_deg: 2, backoff: 0.01}\n"
+      "  constraints: {contact_margin_N: 0.05, friction_coefficient: 0.3, release_tolerance_deg: "
+      "2, backoff: 0.01}\n"
       "  idp: {max_passes: 7, tolerance: 1.0e-4, seeds: 6}\n"
       "  nlopt: {ftol_rel: 1.0e-7, xtol_rel: 1.0e-5}\n"
       "  checks: {allow_not_converged: true, refinement: 8}\n",
@@ -138,8 +143,9 @@ TEST(ThrowingCase, NegativeFrictionCoefficientIsAnError) {
   Diagnostics d("t.yaml");
   load_text("throwing:\n  constraints:\n    friction_coefficient: -1\n", d);
   ASSERT_EQ(d.errors().size(), 1u);
-  EXPECT_NE(d.errors()[0].format().find("t.yaml:3:27: 'throwing.constraints.friction_coefficient' is -1"),
-            std::string::npos)
+  EXPECT_NE(
+      d.errors()[0].format().find("t.yaml:3:27: 'throwing.constraints.friction_coefficient' is -1"),
+      std::string::npos)
       << d.errors()[0].format();
 }
 

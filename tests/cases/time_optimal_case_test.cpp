@@ -40,7 +40,8 @@ TEST(TimeOptimalCase, DefaultsAreTheSourcesArmAndTheDocumentedSettings) {
   EXPECT_EQ(s.chain.gravity, 0.0);
   EXPECT_DOUBLE_EQ(payload_mass(s.chain), 1.0);
   // the mass matrix at q2 = 90 deg of two unit point masses: M11 = 2 L1^2 + L2^2
-  const Eigen::MatrixXd M = core::mass_matrix(s.chain, core::JointVector(Eigen::Vector2d(0.0, M_PI / 2)));
+  const Eigen::MatrixXd M =
+      core::mass_matrix(s.chain, core::JointVector(Eigen::Vector2d(0.0, M_PI / 2)));
   EXPECT_NEAR(M(0, 0), 2 * 0.25 + 0.16, 1e-12);
   EXPECT_EQ(s.path.kind, to::PathKind::kLine);
   EXPECT_EQ(s.configuration, 1);
@@ -50,7 +51,8 @@ TEST(TimeOptimalCase, DefaultsAreTheSourcesArmAndTheDocumentedSettings) {
   EXPECT_EQ(s.dp.segments, 10);
   EXPECT_EQ(s.dp.levels, 200);
   EXPECT_EQ(s.dp.states, std::vector<to::DpState>{to::DpState::kPathSpeed});
-  EXPECT_EQ(s.dp.convergence_segments, (std::vector<int>{10, 20, 50, 100, 200}));  // the issue's table
+  EXPECT_EQ(s.dp.convergence_segments,
+            (std::vector<int>{10, 20, 50, 100, 200}));  // the issue's table
   EXPECT_TRUE(s.complex.enabled);
   EXPECT_EQ(s.exact.grid_points, 1000);
   EXPECT_EQ(s.exact.grid_tolerance, 1e-3);
@@ -103,7 +105,8 @@ time_optimal:
   path: {kind: polyline, points_m: [[0.6, -0.2], [0.55, 0.25], [0.2, 0.5], [-0.2, 0.5]]}
   dp: {segments: 4}
 )");
-  EXPECT_NE(l.errors.find("expected at least two segments per polyline piece (3 pieces)"), std::string::npos)
+  EXPECT_NE(l.errors.find("expected at least two segments per polyline piece (3 pieces)"),
+            std::string::npos)
       << l.errors;
 }
 
@@ -132,17 +135,23 @@ TEST(TimeOptimalCase, ReadsAJointPathWithItsRangesAndOneLimitPerJoint) {
 }
 
 TEST(TimeOptimalCase, AJointPathRefusesATipPathBesideItAnElbowAndMissingLimits) {
-  const std::string jp = "  joint_path: {kind: line, points_rad: [[-2.3, 0.5, 0.4], [-0.8, -0.5, -0.4]]}\n";
+  const std::string jp =
+      "  joint_path: {kind: line, points_rad: [[-2.3, 0.5, 0.4], [-0.8, -0.5, -0.4]]}\n";
   const std::string limits = "  velocity_limit_rad_s: [2, 3, 4]\n  torque_limit_Nm: [30, 12, 3]\n";
-  const auto has = [](const Loaded& l, const std::string& what) { return l.errors.find(what) != std::string::npos; };
+  const auto has = [](const Loaded& l, const std::string& what) {
+    return l.errors.find(what) != std::string::npos;
+  };
   const Loaded both = load(std::string(kThreeLinks) + "time_optimal:\n" + jp + limits +
                            "  path: {points_m: [[0.3, 0.1], [0.0, 0.5]]}\n");
   EXPECT_TRUE(has(both, "has both 'path' (a tip path) and 'joint_path'")) << both.errors;
-  const Loaded elbow = load(std::string(kThreeLinks) + "time_optimal:\n" + jp + limits + "  configuration: 2\n");
+  const Loaded elbow =
+      load(std::string(kThreeLinks) + "time_optimal:\n" + jp + limits + "  configuration: 2\n");
   EXPECT_TRUE(has(elbow, "'time_optimal.configuration' chooses the elbow")) << elbow.errors;
   // a 3-link arm has no default limits (the defaults are the 2-link source's)
   const Loaded bare = load(std::string(kThreeLinks) + "time_optimal:\n" + jp);
-  EXPECT_TRUE(has(bare, "missing required key 'time_optimal.velocity_limit_rad_s' for an arm of 3 links")) << bare.errors;
+  EXPECT_TRUE(
+      has(bare, "missing required key 'time_optimal.velocity_limit_rad_s' for an arm of 3 links"))
+      << bare.errors;
   EXPECT_TRUE(has(bare, "missing required key 'time_optimal.torque_limit_Nm'")) << bare.errors;
   // a 2-link arm's joint path takes the default limits
   const Loaded two = load("time_optimal:\n  joint_path: {points_rad: [[0.1, 1.0], [0.8, 0.4]]}\n");
@@ -157,10 +166,13 @@ TEST(TimeOptimalCase, ARefusedArmIsReportedOnceNotAgainstEveryWaypointAndLimit) 
   std::string yaml = "arm:\n  links:\n";
   for (int i = 0; i < 8; ++i) yaml += "    - {length: 0.1, mass: 1.0}\n";
   const std::string eight = "[0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1]";
-  yaml += "time_optimal:\n  joint_path: {points_rad: [" + eight + ", [0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2]]}\n"
-          "  velocity_limit_rad_s: " + eight + "\n  torque_limit_Nm: " + eight + "\n";
+  yaml += "time_optimal:\n  joint_path: {points_rad: [" + eight +
+          ", [0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2]]}\n"
+          "  velocity_limit_rad_s: " +
+          eight + "\n  torque_limit_Nm: " + eight + "\n";
   const Loaded l = load(yaml);
-  EXPECT_NE(l.errors.find("'arm.links' has 8 links; expected 1 to 7 links"), std::string::npos) << l.errors;
+  EXPECT_NE(l.errors.find("'arm.links' has 8 links; expected 1 to 7 links"), std::string::npos)
+      << l.errors;
   EXPECT_EQ(std::count(l.errors.begin(), l.errors.end(), '\n'), 1) << l.errors;
 }
 

@@ -40,7 +40,8 @@ TEST(YamlReader, ClosestSuggestsOnlyNearWords) {
 TEST(ArmLoader, RodShorthandPayloadAndDefaultsBuildTheChain) {
   Diagnostics d("f.yaml");
   const YAML::Node n = YAML::Load(
-      "arm:\n  links:\n    - {length: 0.4, mass: 4}\n    - {length: 0.2, mass: 2, inertia: 0.01, joint: passive}\n"
+      "arm:\n  links:\n    - {length: 0.4, mass: 4}\n    - {length: 0.2, mass: 2, inertia: 0.01, "
+      "joint: passive}\n"
       "  payload: 1.5\ngravity: 9.81\n");
   Map root(n, d, "");
   const core::PlanarChain c = load_arm(root, core::PlanarChain{}, 2);

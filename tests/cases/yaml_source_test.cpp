@@ -56,27 +56,38 @@ TEST(YamlSource, OnlyRegularFilesOfBoundedSizeAreRead) {
   {
     Diagnostics d("missing.yaml");
     EXPECT_FALSE(read_regular_file((dir / "missing.yaml").string(), d, &bytes));
-    EXPECT_EQ(d.errors().at(0).message, "cannot open the file: No such file or directory; expected a readable YAML file");
+    EXPECT_EQ(d.errors().at(0).message,
+              "cannot open the file: No such file or directory; expected a readable YAML file");
   }
   fs::remove_all(dir);
 }
 
 TEST(YamlSource, TextIsUtf8WithoutNulOrControlCharactersAndSaysWhere) {
-  EXPECT_EQ(first_error("a: 1\nb: caf\xC3\xA9 \xFF\n"), "f.yaml:2:9: invalid UTF-8 (byte 0xFF); expected the file in UTF-8");
-  EXPECT_EQ(first_error("a: \xC0\xAF\n"), "f.yaml:1:4: invalid UTF-8 (byte 0xC0); expected the file in UTF-8");  // overlong
-  EXPECT_EQ(first_error("a: \xED\xA0\x80\n"), "f.yaml:1:4: invalid UTF-8 (byte 0xED); expected the file in UTF-8");  // surrogate
-  EXPECT_EQ(first_error(std::string("a: 1\n\nb: x\0y\n", 13)), "f.yaml:3:5: a NUL byte; expected text (is this a binary or UTF-16 file?)");
-  EXPECT_EQ(first_error("a: \x1b[31m\n"), "f.yaml:1:4: a control character (U+001B); expected printable text, tabs and line breaks");
-  EXPECT_EQ(first_error("\xEF\xBB\xBF" "a: 1\r\nb:\t2\n"), "");  // BOM, CRLF and tabs are text
+  EXPECT_EQ(first_error("a: 1\nb: caf\xC3\xA9 \xFF\n"),
+            "f.yaml:2:9: invalid UTF-8 (byte 0xFF); expected the file in UTF-8");
+  EXPECT_EQ(first_error("a: \xC0\xAF\n"),
+            "f.yaml:1:4: invalid UTF-8 (byte 0xC0); expected the file in UTF-8");  // overlong
+  EXPECT_EQ(first_error("a: \xED\xA0\x80\n"),
+            "f.yaml:1:4: invalid UTF-8 (byte 0xED); expected the file in UTF-8");  // surrogate
+  EXPECT_EQ(first_error(std::string("a: 1\n\nb: x\0y\n", 13)),
+            "f.yaml:3:5: a NUL byte; expected text (is this a binary or UTF-16 file?)");
+  EXPECT_EQ(
+      first_error("a: \x1b[31m\n"),
+      "f.yaml:1:4: a control character (U+001B); expected printable text, tabs and line breaks");
+  EXPECT_EQ(first_error("\xEF\xBB\xBF"
+                        "a: 1\r\nb:\t2\n"),
+            "");  // BOM, CRLF and tabs are text
 }
 
 TEST(YamlSource, OneDocumentOnly) {
   EXPECT_EQ(first_error("---\na: 1\n"), "");
   EXPECT_EQ(first_error("a: 1\n...\n# only a comment after the end\n"), "");
-  EXPECT_EQ(first_error("a: 1\n---\nb: 2\n"),
-            "f.yaml:2:1: a second YAML document (after '---' or '...'); expected one document per file");
-  EXPECT_EQ(first_error("a: 1\n...\nb: 2\n"),
-            "f.yaml:3:1: a second YAML document (after '---' or '...'); expected one document per file");
+  EXPECT_EQ(
+      first_error("a: 1\n---\nb: 2\n"),
+      "f.yaml:2:1: a second YAML document (after '---' or '...'); expected one document per file");
+  EXPECT_EQ(
+      first_error("a: 1\n...\nb: 2\n"),
+      "f.yaml:3:1: a second YAML document (after '---' or '...'); expected one document per file");
 }
 
 TEST(YamlSource, AliasesAreBoundedAndNeverRecursive) {
@@ -89,7 +100,8 @@ TEST(YamlSource, AliasesAreBoundedAndNeverRecursive) {
     bomb += "]\n";
     prev = l;
   }
-  EXPECT_NE(first_error(bomb).find("more than 200000 nodes, counting each alias (*) as the nodes it repeats"),
+  EXPECT_NE(first_error(bomb).find(
+                "more than 200000 nodes, counting each alias (*) as the nodes it repeats"),
             std::string::npos);
   EXPECT_EQ(first_error("a: &a [1, *a]\n"),
             "f.yaml:1:11: an alias (*) refers to a node that contains it (a recursive alias); "
@@ -102,7 +114,8 @@ TEST(YamlSource, AliasesAreBoundedAndNeverRecursive) {
 TEST(YamlSource, DeepNestingAndComplexKeysGetPlainMessages) {
   EXPECT_EQ(first_error("a: " + std::string(65, '[') + std::string(65, ']') + "\n").substr(0, 12),
             "f.yaml:1:67:");
-  EXPECT_NE(first_error("a: " + std::string(100000, '[') + std::string(100000, ']') + "\n").find("nested more than 64 levels deep"),
+  EXPECT_NE(first_error("a: " + std::string(100000, '[') + std::string(100000, ']') + "\n")
+                .find("nested more than 64 levels deep"),
             std::string::npos);
   EXPECT_EQ(first_error("a: " + std::string(63, '[') + std::string(63, ']') + "\n"), "");
   EXPECT_EQ(first_error("? [a, b]\n: 1\n"),
@@ -122,7 +135,10 @@ TEST(YamlSource, BriefQuotesAreShortAndEscaped) {
   for (int i = 0; i < 100; ++i) lines += "root:x:0:0:root:/root:/bin/bash\n";
   const std::string e = first_error(lines);
   EXPECT_LT(e.size(), 200u) << e;
-  EXPECT_NE(e.find("f.yaml:1:1: the file holds 'root:x:0:0:root:/root:/bin/bash root:x:0:0:root:/root:/bin/b... (3199 bytes)'"), std::string::npos) << e;
+  EXPECT_NE(e.find("f.yaml:1:1: the file holds 'root:x:0:0:root:/root:/bin/bash "
+                   "root:x:0:0:root:/root:/bin/b... (3199 bytes)'"),
+            std::string::npos)
+      << e;
 }
 
 TEST(YamlReader, MergeKeysFollowYaml11) {
@@ -136,10 +152,10 @@ TEST(YamlReader, MergeKeysFollowYaml11) {
   root.get("more");
   auto link = root.map("link");
   ASSERT_TRUE(link);
-  EXPECT_EQ(*link->number("mass", NumberRule::positive("kg")), 1.0);     // merged
-  EXPECT_EQ(*link->number("length", NumberRule::positive("m")), 2.0);    // first merge wins
-  EXPECT_EQ(*link->number("com", NumberRule::any("m")), 0.5);            // own key wins
-  EXPECT_EQ(*link->number("inertia", NumberRule::positive("")), 30.0);   // second merge
+  EXPECT_EQ(*link->number("mass", NumberRule::positive("kg")), 1.0);    // merged
+  EXPECT_EQ(*link->number("length", NumberRule::positive("m")), 2.0);   // first merge wins
+  EXPECT_EQ(*link->number("com", NumberRule::any("m")), 0.5);           // own key wins
+  EXPECT_EQ(*link->number("inertia", NumberRule::positive("")), 30.0);  // second merge
   link->finish();
   root.finish();
   EXPECT_TRUE(d.empty()) << d.errors()[0].format();
@@ -168,7 +184,8 @@ TEST(YamlReader, KeyChecksAreLinearAndErrorsCapped) {
     d.throw_if_any();
     FAIL();
   } catch (const CaseErrors& e) {
-    EXPECT_EQ(e.errors().back().format(), "f.yaml: ... and 89950 more error(s) (only the first 50 are shown)");
+    EXPECT_EQ(e.errors().back().format(),
+              "f.yaml: ... and 89950 more error(s) (only the first 50 are shown)");
   }
 }
 
@@ -179,14 +196,18 @@ TEST(YamlReader, OverflowUnderflowAndDenormalsAreNamedAsSuch) {
     m.number("length", NumberRule::positive("m"));
     return d.empty() ? std::string() : d.errors()[0].message;
   };
-  EXPECT_EQ(err("1e400"), "'arm.length' is 1e400, which overflows a double (its largest is 1.8e308); "
-                          "expected a magnitude in [1e-100, 1e+100] or 0");
-  EXPECT_EQ(err("1e-400"), "'arm.length' is 1e-400, which underflows a double to 0; expected 0 or a "
-                           "magnitude of at least 1e-100");
-  EXPECT_EQ(err("4.9e-320"), "'arm.length' is 4.9e-320, a denormal number (below 2.2e-308 in magnitude, "
-                             "with lost precision); expected 0 or a magnitude of at least 1e-100");
-  EXPECT_EQ(err("1e150"), "'arm.length' is 1e+150, outside the magnitudes armstudy computes with; "
-                          "expected 0 or a magnitude in [1e-100, 1e+100]");
+  EXPECT_EQ(err("1e400"),
+            "'arm.length' is 1e400, which overflows a double (its largest is 1.8e308); "
+            "expected a magnitude in [1e-100, 1e+100] or 0");
+  EXPECT_EQ(err("1e-400"),
+            "'arm.length' is 1e-400, which underflows a double to 0; expected 0 or a "
+            "magnitude of at least 1e-100");
+  EXPECT_EQ(err("4.9e-320"),
+            "'arm.length' is 4.9e-320, a denormal number (below 2.2e-308 in magnitude, "
+            "with lost precision); expected 0 or a magnitude of at least 1e-100");
+  EXPECT_EQ(err("1e150"),
+            "'arm.length' is 1e+150, outside the magnitudes armstudy computes with; "
+            "expected 0 or a magnitude in [1e-100, 1e+100]");
   EXPECT_EQ(err("abc"), "'arm.length' is 'abc'; expected a number");
   EXPECT_EQ(err("0.4"), "");
   EXPECT_EQ(err("1e-16"), "");

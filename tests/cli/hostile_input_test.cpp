@@ -26,14 +26,16 @@ TEST(HostileInput, DevicesFifosAndFoldersAreRefusedWithoutReading) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_hostile_files");
   const fs::path fifo = dir / "fifo.yaml", out = dir / "out";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  for (const std::string& cmd : std::vector<std::string>{"validate /dev/zero", "validate " + fifo.string(),
+  for (const std::string& cmd :
+       std::vector<std::string>{"validate /dev/zero", "validate " + fifo.string(),
                                 "run --no-render --out " + out.string() + " " + fifo.string(),
                                 "validate " + dir.string()}) {
     SCOPED_TRACE(cmd);
     const CliRun r = run_cli(cmd);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_TRUE(r.output.find("is a device; expected a regular YAML file") != std::string::npos ||
-                r.output.find("is a FIFO (named pipe); expected a regular YAML file") != std::string::npos ||
+                r.output.find("is a FIFO (named pipe); expected a regular YAML file") !=
+                    std::string::npos ||
                 r.output.find("is a folder; expected a YAML file") != std::string::npos)
         << r.output;
   }
@@ -44,13 +46,17 @@ TEST(HostileInput, DevicesFifosAndFoldersAreRefusedWithoutReading) {
 TEST(HostileInput, BudgetIsJudgedByValidateAndRunAndRaisedByAllowLarge) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_budget");
   const fs::path c = dir / "big.yaml";
-  write(c, "study: placement\nname: big\nplacement:\n  length_fraction: 0.5\n  nx_s: 10000\n"
-           "  phi_step_deg: 0.01\n");
+  write(c,
+        "study: placement\nname: big\nplacement:\n  length_fraction: 0.5\n  nx_s: 10000\n"
+        "  phi_step_deg: 0.01\n");
   const CliRun v = run_cli("validate " + c.string());
   EXPECT_EQ(v.exit_code, 2) << v.output;
-  EXPECT_NE(v.output.find(c.string() + ":4:3: the placement sweep asks for about 5.8e+11 trajectory samples"),
-            std::string::npos) << v.output;
-  EXPECT_NE(v.output.find("more than the budget of 1e+10 trajectory samples"), std::string::npos) << v.output;
+  EXPECT_NE(v.output.find(c.string() +
+                          ":4:3: the placement sweep asks for about 5.8e+11 trajectory samples"),
+            std::string::npos)
+      << v.output;
+  EXPECT_NE(v.output.find("more than the budget of 1e+10 trajectory samples"), std::string::npos)
+      << v.output;
   EXPECT_NE(v.output.find("memory"), std::string::npos) << v.output;
   const CliRun r = run_cli("run --no-render --out " + (dir / "out").string() + " " + c.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -67,21 +73,26 @@ TEST(HostileInput, BudgetIsJudgedByValidateAndRunAndRaisedByAllowLarge) {
 
 TEST(HostileInput, MergeKeysAreSupportedAsYamlDefinesThem) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_merge");
-  write(dir / "m.yaml", "study: placement\nname: merged\n"
-                        "arm:\n  links:\n    - &link {length: 0.4, mass: 4.0}\n"
-                        "    - {<<: *link, length: 0.2, mass: 2.0}\n"
-                        "placement: {length_fraction: 0.5}\n");
+  write(dir / "m.yaml",
+        "study: placement\nname: merged\n"
+        "arm:\n  links:\n    - &link {length: 0.4, mass: 4.0}\n"
+        "    - {<<: *link, length: 0.2, mass: 2.0}\n"
+        "placement: {length_fraction: 0.5}\n");
   const CliRun r = run_cli("validate " + (dir / "m.yaml").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   // a merged mapping's keys are judged like the mapping's own, at their place
-  write(dir / "m.yaml", "study: placement\nname: merged\n"
-                        "arm:\n  links:\n    - &link {length: 0.4, mas: 4.0}\n"
-                        "    - {<<: *link, length: 0.2}\n"
-                        "placement: {length_fraction: 0.5}\n");
+  write(dir / "m.yaml",
+        "study: placement\nname: merged\n"
+        "arm:\n  links:\n    - &link {length: 0.4, mas: 4.0}\n"
+        "    - {<<: *link, length: 0.2}\n"
+        "placement: {length_fraction: 0.5}\n");
   const CliRun bad = run_cli("validate " + (dir / "m.yaml").string());
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  EXPECT_NE(bad.output.find("m.yaml:5:27: unknown key 'arm.links[2].mas' (from the merge key '<<'); "
-                            "did you mean 'mass'?"), std::string::npos) << bad.output;
+  EXPECT_NE(
+      bad.output.find("m.yaml:5:27: unknown key 'arm.links[2].mas' (from the merge key '<<'); "
+                      "did you mean 'mass'?"),
+      std::string::npos)
+      << bad.output;
   fs::remove_all(dir);
 }
 
@@ -89,25 +100,33 @@ TEST(HostileInput, SweepPointCountNeverOverflowsAndIsCapped) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_sweep_count");
   write(dir / "base.yaml", "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n");
   const std::string range = "    range: {from: 0.1, to: 0.9, steps: 65536}\n";
-  write(dir / "huge.yaml", "sweep: huge\nbase: base.yaml\naxes:\n"
-                           "  - path: placement.length_fraction\n" + range +
-                           "  - path: placement.duration_s\n" + range +
-                           "  - path: placement.samples\n" + range +
-                           "  - path: placement.nx_s\n" + range);
-  CliRun r = run_cli("sweep expand " + (dir / "huge.yaml").string() + " --out " + (dir / "out").string());
+  write(dir / "huge.yaml",
+        "sweep: huge\nbase: base.yaml\naxes:\n"
+        "  - path: placement.length_fraction\n" +
+            range + "  - path: placement.duration_s\n" + range + "  - path: placement.samples\n" +
+            range + "  - path: placement.nx_s\n" + range);
+  CliRun r =
+      run_cli("sweep expand " + (dir / "huge.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("huge.yaml:4:5: the sweep has about 1.84467e+19 points (grid of 65536 x 65536 x 65536 x 65536 values)"), std::string::npos) << r.output;
-  write(dir / "big.yaml", "sweep: big\nbase: base.yaml\naxes:\n"
-                          "  - path: placement.length_fraction\n    range: {from: 0.1, to: 0.9, steps: 101}\n"
-                          "  - path: placement.duration_s\n    range: {from: 0.5, to: 2, steps: 100}\n");
+  EXPECT_NE(r.output.find("huge.yaml:4:5: the sweep has about 1.84467e+19 points (grid of 65536 x "
+                          "65536 x 65536 x 65536 values)"),
+            std::string::npos)
+      << r.output;
+  write(dir / "big.yaml",
+        "sweep: big\nbase: base.yaml\naxes:\n"
+        "  - path: placement.length_fraction\n    range: {from: 0.1, to: 0.9, steps: 101}\n"
+        "  - path: placement.duration_s\n    range: {from: 0.5, to: 2, steps: 100}\n");
   r = run_cli("sweep expand " + (dir / "big.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("the sweep has 10100 points (grid of 101 x 100 values); expected at most 10000"),
-            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(
+                "the sweep has 10100 points (grid of 101 x 100 values); expected at most 10000"),
+            std::string::npos)
+      << r.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
   // a small sweep says its count before it writes
-  write(dir / "small.yaml", "sweep: small\nbase: base.yaml\naxes:\n"
-                            "  - path: placement.length_fraction\n    values: [0.4, 0.6]\n");
+  write(dir / "small.yaml",
+        "sweep: small\nbase: base.yaml\naxes:\n"
+        "  - path: placement.length_fraction\n    values: [0.4, 0.6]\n");
   r = run_cli("sweep expand " + (dir / "small.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   const size_t said = r.output.find("sweep small: 2 case(s); writing them to");
@@ -121,10 +140,12 @@ TEST(HostileInput, SweepPointCountNeverOverflowsAndIsCapped) {
 TEST(HostileInput, SweepQuotesABadBaseBriefly) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_sweep_base");
   std::string passwd;
-  for (int i = 0; i < 40; ++i) passwd += "user" + std::to_string(i) + ":x:1000:1000::/home/u:/bin/sh\n";
+  for (int i = 0; i < 40; ++i)
+    passwd += "user" + std::to_string(i) + ":x:1000:1000::/home/u:/bin/sh\n";
   write(dir / "passwd", passwd);
   write(dir / "s.yaml", "sweep: s\nbase: passwd\naxes:\n  - path: a\n    values: [1]\n");
-  const CliRun r = run_cli("sweep expand " + (dir / "s.yaml").string() + " --out " + (dir / "out").string());
+  const CliRun r =
+      run_cli("sweep expand " + (dir / "s.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("cannot be read as a case:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("bytes)"), std::string::npos) << r.output;
@@ -134,7 +155,8 @@ TEST(HostileInput, SweepQuotesABadBaseBriefly) {
   write(dir / "base.yaml", "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n");
   write(dir / "p.yaml", "sweep: p\nbase: base.yaml\naxes:\n  - path: " + std::string(200000, 'a') +
                             "\n    values: [1]\n");
-  const CliRun p = run_cli("sweep expand " + (dir / "p.yaml").string() + " --out " + (dir / "out").string());
+  const CliRun p =
+      run_cli("sweep expand " + (dir / "p.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(p.exit_code, 2) << p.output.substr(0, 500);
   EXPECT_NE(p.output.find("is not a parameter path like arm.links[2].length"), std::string::npos);
   EXPECT_LT(p.output.size(), 800u);

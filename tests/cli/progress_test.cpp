@@ -13,11 +13,13 @@ using namespace std::chrono_literals;
 
 TEST(Progress, TimeLeftIsExtrapolatedFromTheTimeElapsedNow) {
   // 3 % after a second: too early to say
-  EXPECT_EQ(ProgressReporter::status_text(0.03, "sweep", 1.0, 0.0), "  3 % sweep, 0:01 elapsed, time left unknown");
+  EXPECT_EQ(ProgressReporter::status_text(0.03, "sweep", 1.0, 0.0),
+            "  3 % sweep, 0:01 elapsed, time left unknown");
   // 3 % after two minutes, the last report long ago: about an hour left, not "0:00"
   EXPECT_EQ(ProgressReporter::status_text(0.03, "sweep", 120.0, 115.0),
             "  3 % sweep, 2:00 elapsed, about 1:04:40 left (last report 1:55 ago)");
-  EXPECT_EQ(ProgressReporter::status_text(0.5, "", 10.0, 0.0), " 50 %, 0:10 elapsed, about 0:10 left");
+  EXPECT_EQ(ProgressReporter::status_text(0.5, "", 10.0, 0.0),
+            " 50 %, 0:10 elapsed, about 0:10 left");
   // 99.6 % is not "100 %"
   EXPECT_EQ(ProgressReporter::status_text(0.996, "x", 100.0, 0.0).substr(0, 6), " 99 % ");
 }
@@ -49,8 +51,10 @@ TEST(Progress, HeartbeatPrintsEveryPeriodWithoutReportsAndStopsWhenTheTaskEnds) 
     EXPECT_EQ(out.text(), "case-a:   3 % sweep, 0:00 elapsed, time left unknown\n");
     now += 118s;  // a stage silent for two minutes: the heartbeat says so
     p.heartbeat();
-    EXPECT_NE(out.text().find("case-a:   3 % sweep, 2:00 elapsed, about 1:04:40 left (last report 2:00 ago)\n"),
-              std::string::npos) << out.text();
+    EXPECT_NE(out.text().find(
+                  "case-a:   3 % sweep, 2:00 elapsed, about 1:04:40 left (last report 2:00 ago)\n"),
+              std::string::npos)
+        << out.text();
   }
   // two tasks in a log: each gets its line every period, however often the other reports
   {

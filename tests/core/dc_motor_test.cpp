@@ -20,7 +20,8 @@ TEST(DcMotor, ElectricalPowerSplitsIntoLoadFrictionRotorAndCopper) {
         EXPECT_TRUE(testing::near_rel(s.power, s.load + s.friction + rotor + s.copper, 1e-12));
         // eq. 6 in its mechanical form
         const double sign = qd > 0 ? 1 : (qd < 0 ? -1 : 0);
-        EXPECT_TRUE(testing::near_rel(s.current, (tau + m.Dm * qd + m.Im * qdd + m.tau_f * sign) / m.kt, 1e-12));
+        EXPECT_TRUE(testing::near_rel(
+            s.current, (tau + m.Dm * qd + m.Im * qdd + m.tau_f * sign) / m.kt, 1e-12));
       }
     }
   }

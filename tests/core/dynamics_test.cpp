@@ -71,13 +71,16 @@ TEST(Dynamics, BiasForcesMatchLagrangeEquationsByFiniteDifferences) {
       const double h = 1e-5;
       JointVector expected(n);
       // d/dt (M qd) at qdd = 0 is (dM/dq . qd) qd
-      const JointMatrix Mdot = (mass_matrix(arm.chain, q + h * qd) - mass_matrix(arm.chain, q - h * qd)) / (2 * h);
+      const JointMatrix Mdot =
+          (mass_matrix(arm.chain, q + h * qd) - mass_matrix(arm.chain, q - h * qd)) / (2 * h);
       for (int i = 0; i < n; ++i) {
         JointVector qp = q, qm = q;
         qp[i] += h;
         qm[i] -= h;
-        const double dK = (kinetic_energy(arm.chain, qp, qd) - kinetic_energy(arm.chain, qm, qd)) / (2 * h);
-        const double dU = (potential_energy(arm.chain, qp) - potential_energy(arm.chain, qm)) / (2 * h);
+        const double dK =
+            (kinetic_energy(arm.chain, qp, qd) - kinetic_energy(arm.chain, qm, qd)) / (2 * h);
+        const double dU =
+            (potential_energy(arm.chain, qp) - potential_energy(arm.chain, qm)) / (2 * h);
         expected[i] = (Mdot * qd)[i] - dK + dU;
       }
       EXPECT_TRUE(near_rel_vec(bias_forces(arm.chain, q, qd), expected, 1e-7)) << arm.name;
@@ -148,7 +151,8 @@ TEST(MotionProgram, EveryProgramIsRestToRestAndDerivativesAreConsistent) {
     }
     const double h = 1e-6;
     for (double t : {0.11, 0.5, 0.93}) {
-      const ProgramSample a = evaluate_program(p, t - h, T, L), b = evaluate_program(p, t + h, T, L);
+      const ProgramSample a = evaluate_program(p, t - h, T, L),
+                          b = evaluate_program(p, t + h, T, L);
       const ProgramSample m = evaluate_program(p, t, T, L);
       EXPECT_NEAR((b.s - a.s) / (2 * h), m.sd, 1e-6) << name;
       EXPECT_NEAR((b.sd - a.sd) / (2 * h), m.sdd, 1e-5) << name;

@@ -20,7 +20,10 @@ TEST(Ik2, IkThenFkReturnsThePointInBothConfigurations) {
     for (int config : {1, 2}) {
       const auto q = ik_2link(0.4, 0.2, p, config);
       ASSERT_TRUE(q.has_value());
-      if (config == 1) EXPECT_GT((*q)[1], 0.0); else EXPECT_LT((*q)[1], 0.0);
+      if (config == 1)
+        EXPECT_GT((*q)[1], 0.0);
+      else
+        EXPECT_LT((*q)[1], 0.0);
       JointVector qv(2);
       qv << (*q)[0], (*q)[1];
       EXPECT_TRUE(near_rel_vec(end_effector(chain, qv), p, 1e-12));
@@ -41,8 +44,8 @@ TEST(Ik2, VelocityAndAccelerationMatchTheJacobian) {
     const ChainPose pose = forward_kinematics(chain, q);
     const Eigen::Vector2d tip(0.2, 0.0);
     EXPECT_TRUE(near_rel_vec(point_jacobian(pose, 1, tip) * qd, v, 1e-12));
-    const Eigen::Vector2d a2 = point_jacobian(pose, 1, tip) * qdd +
-                               point_jacobian_dot(pose, qd, 1, tip) * qd;
+    const Eigen::Vector2d a2 =
+        point_jacobian(pose, 1, tip) * qdd + point_jacobian_dot(pose, qd, 1, tip) * qd;
     EXPECT_TRUE(near_rel_vec(a2, acc, 1e-12));
   }
 }

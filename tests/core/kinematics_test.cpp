@@ -26,10 +26,11 @@ TEST(Kinematics, JacobianMatchesCentralDifference) {
           JointVector qp = q, qm = q;
           qp[j] += h;
           qm[j] -= h;
-          const Eigen::Vector2d d =
-              (point_position(forward_kinematics(arm.chain, qp), link, p_L) -
-               point_position(forward_kinematics(arm.chain, qm), link, p_L)) / (2 * h);
-          EXPECT_TRUE(near_rel_vec(J.col(j), d, 1e-8)) << arm.name << " link " << link << " col " << j;
+          const Eigen::Vector2d d = (point_position(forward_kinematics(arm.chain, qp), link, p_L) -
+                                     point_position(forward_kinematics(arm.chain, qm), link, p_L)) /
+                                    (2 * h);
+          EXPECT_TRUE(near_rel_vec(J.col(j), d, 1e-8))
+              << arm.name << " link " << link << " col " << j;
         }
       }
     }
@@ -49,7 +50,8 @@ TEST(Kinematics, JacobianDotMatchesCentralDifferenceAlongVelocity) {
       const double h = 1e-6;
       const JointVector qp = q + h * qd, qm = q - h * qd;
       const PointJacobian d = (point_jacobian(forward_kinematics(arm.chain, qp), link, p_L) -
-                               point_jacobian(forward_kinematics(arm.chain, qm), link, p_L)) / (2 * h);
+                               point_jacobian(forward_kinematics(arm.chain, qm), link, p_L)) /
+                              (2 * h);
       EXPECT_TRUE(near_rel_vec(Jd.reshaped(), d.reshaped(), 1e-7)) << arm.name;
     }
   }

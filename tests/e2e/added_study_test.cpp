@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
 
 #include "app/run_case.hpp"
 #include "app/study_entry.hpp"
@@ -17,8 +17,8 @@
 #include "report/answer_box.hpp"
 #include "report/case_report.hpp"
 #include "report/page.hpp"
-#include "report/results_record.hpp"
 #include "report/results_fields.hpp"
+#include "report/results_record.hpp"
 #include "testing/files.hpp"
 
 namespace armstudy::app {
@@ -57,10 +57,13 @@ class TallyRun final : public StudyRun {
   std::string message() const override { return "counted to " + std::to_string(spec_.n); }
   std::vector<studies::Check> checks() const override {
     return {studies::make_check("tally_gauss", "sum equals n (n + 1) / 2: the difference",
-                                std::abs(double(section_.sum) - spec_.n * (spec_.n + 1) / 2.0), 0.0)};
+                                std::abs(double(section_.sum) - spec_.n * (spec_.n + 1) / 2.0),
+                                0.0)};
   }
   json results() const override { return report::to_json(section_); }
-  std::vector<KeyFigure> key_figures() const override { return {{"sum", double(section_.sum), ""}}; }
+  std::vector<KeyFigure> key_figures() const override {
+    return {{"sum", double(section_.sum), ""}};
+  }
 
  private:
   TallySpec spec_;
@@ -88,11 +91,13 @@ void tally_sections(const json& results, report::FigureWriter&, report::CasePage
 
 // src/report/<study>_answer.cpp (optional): its lines of the answer box on page 1
 void tally_answer(const json& results, const report::ResultsRecord&, report::AnswerBox& a) {
-  a.binding.push_back("nothing binds a count to " + std::to_string(report::read_section<TallySection>(results, "tally").n));
+  a.binding.push_back("nothing binds a count to " +
+                      std::to_string(report::read_section<TallySection>(results, "tally").n));
 }
 
 // src/app/study_registry.cpp: its one line (the answer lines and the index figure optional)
-const StudyEntry kTally = study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections);
+const StudyEntry kTally =
+    study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections);
 const StudyEntry kTallyAnswered =
     study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections, &tally_answer);
 
@@ -137,7 +142,8 @@ TEST(AddedStudy, RunsThroughRunCaseIntoResultsJsonAndIndexHtml) {
   EXPECT_EQ(kTally.answer, nullptr);
   EXPECT_EQ(kTally.index_figure.draw, nullptr);
   EXPECT_EQ(report::write_index(out, {{kTally.study, kTally.answer, kTally.index_figure}}), 1);
-  EXPECT_NE(armstudy::testing::slurp(out / "index.html").find("tally-case/index.html"), std::string::npos);
+  EXPECT_NE(armstudy::testing::slurp(out / "index.html").find("tally-case/index.html"),
+            std::string::npos);
   fs::remove_all(out);
 }
 
@@ -152,9 +158,11 @@ TEST(AddedStudy, ItsAnswerLinesComeFromItsRecord) {
 
 // a study cannot be registered without its report (or any other part)
 TEST(AddedStudy, ARecordWithoutReportSectionsIsRefused) {
-  EXPECT_THROW(StudyEntry("tally", "counts", &load_tally, kTally.section_schema, kTally.check_section, nullptr),
+  EXPECT_THROW(StudyEntry("tally", "counts", &load_tally, kTally.section_schema,
+                          kTally.check_section, nullptr),
                std::invalid_argument);
-  EXPECT_THROW(study_entry<TallySection>("tally", "counts", &load_tally, nullptr), std::invalid_argument);
+  EXPECT_THROW(study_entry<TallySection>("tally", "counts", &load_tally, nullptr),
+               std::invalid_argument);
 }
 
 }  // namespace

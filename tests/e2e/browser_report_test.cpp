@@ -5,18 +5,18 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
-#include <sys/file.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
-#include <map>
 #include <atomic>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -78,8 +78,7 @@ double ink_fraction_pgm(const fs::path& pgm) {
 std::string input_stamp() {
   std::ostringstream os;
   auto add = [&](const fs::path& p) {
-    os << p.filename().string() << ' '
-       << fs::last_write_time(p).time_since_epoch().count() << '\n';
+    os << p.filename().string() << ' ' << fs::last_write_time(p).time_since_epoch().count() << '\n';
   };
   add(ARMSTUDY_BINARY);
   for (const char* dir : {"reports/cases", "templates"}) {
@@ -267,9 +266,9 @@ namespace {
 // testcase per case and check, summary.md naming every case
 TEST_F(BrowserReport, BundledResultsValidateAndCiFilesCountEveryCheck) {
   const fs::path src(ARMSTUDY_SOURCE_DIR);
-  const std::string cmd = "/usr/bin/python3 " + quote((src / "scripts/validate_results.py").string()) +
-                          " " + quote((src / "results.schema.json").string()) + " " +
-                          quote(out_.string()) + " > /dev/null";
+  const std::string cmd =
+      "/usr/bin/python3 " + quote((src / "scripts/validate_results.py").string()) + " " +
+      quote((src / "results.schema.json").string()) + " " + quote(out_.string()) + " > /dev/null";
   EXPECT_EQ(run(cmd), 0) << "a bundled results.json does not validate against results.schema.json";
   size_t expected = 0, failures = 0;
   const std::string summary = slurp(out_ / "summary.md");
@@ -282,11 +281,13 @@ TEST_F(BrowserReport, BundledResultsValidateAndCiFilesCountEveryCheck) {
   }
   const std::string junit = slurp(out_ / "junit.xml");
   size_t testcases = 0;
-  for (size_t at = junit.find("<testcase "); at != std::string::npos; at = junit.find("<testcase ", at + 1))
+  for (size_t at = junit.find("<testcase "); at != std::string::npos;
+       at = junit.find("<testcase ", at + 1))
     ++testcases;
   EXPECT_EQ(testcases, expected);
   size_t failed = 0;
-  for (size_t at = junit.find("<failure"); at != std::string::npos; at = junit.find("<failure", at + 1))
+  for (size_t at = junit.find("<failure"); at != std::string::npos;
+       at = junit.find("<failure", at + 1))
     ++failed;
   EXPECT_EQ(failed, failures);
 }
@@ -329,10 +330,12 @@ std::string labels_before_appendix(std::string html) {
   static const std::regex kLabel(
       R"re(<(h[1-4]|th|dt|strong)\b[^>]*>([\s\S]*?)</\1>|<tr>\s*<td[^>]*>([\s\S]*?)</td>)re");
   std::string out;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), kLabel); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), kLabel);
+       it != std::sregex_iterator(); ++it)
     out += " " + text_of((*it)[2].str() + (*it)[3].str());
   const size_t box = html.find("<section id=\"answer\"");
-  if (box != std::string::npos) out += " " + text_of(html.substr(box, html.find("</section>", box) - box));
+  if (box != std::string::npos)
+    out += " " + text_of(html.substr(box, html.find("</section>", box) - box));
   return out;
 }
 
@@ -360,34 +363,45 @@ TEST_F(BrowserReport, PageOneHoldsTheAnswerTheKeyPictureAndTheCheckVerdict) {
     const std::string picture = m[1];
     EXPECT_TRUE(fs::exists(out_ / name / picture)) << name << ": " << picture;
     if (!j["frames"].empty())
-      EXPECT_TRUE(picture.ends_with(".png")) << name << ": a rendered motion answers with its frame";
+      EXPECT_TRUE(picture.ends_with(".png"))
+          << name << ": a rendered motion answers with its frame";
     // the verdict counts the checks
     const size_t checks = j["checks"].size();
     size_t failed = 0;
     for (const auto& c : j["checks"]) failed += !c["passed"].get<bool>();
-    const std::string verdict = checks == 0 ? "The study ran no checks"
-                                : failed == 0 ? (checks == 1 ? "check passed" : "All " + std::to_string(checks) + " checks passed")
-                                              : std::to_string(failed) + " of " + std::to_string(checks) + " checks FAILED";
-    EXPECT_NE(answer.find(verdict), std::string::npos) << name << ": verdict '" << verdict << "' missing";
+    const std::string verdict =
+        checks == 0 ? "The study ran no checks"
+        : failed == 0
+            ? (checks == 1 ? "check passed" : "All " + std::to_string(checks) + " checks passed")
+            : std::to_string(failed) + " of " + std::to_string(checks) + " checks FAILED";
+    EXPECT_NE(answer.find(verdict), std::string::npos)
+        << name << ": verdict '" << verdict << "' missing";
     // the printed page 1 says the same: the answer's first words, the verdict, the picture
     const fs::path txt = work_ / (name + "-page1.txt");
-    ASSERT_EQ(run("pdftotext -f 1 -l 1 " + quote((out_ / name / "report.pdf").string()) + " " + quote(txt.string())), 0);
+    ASSERT_EQ(run("pdftotext -f 1 -l 1 " + quote((out_ / name / "report.pdf").string()) + " " +
+                  quote(txt.string())),
+              0);
     const std::string page1 = squeezed(slurp(txt));
     EXPECT_NE(page1.find("The answer"), std::string::npos) << name;
     const std::string message = squeezed(j["message"].get<std::string>());
-    EXPECT_NE(page1.find(message.substr(0, std::min<size_t>(40, message.size()))), std::string::npos)
+    EXPECT_NE(page1.find(message.substr(0, std::min<size_t>(40, message.size()))),
+              std::string::npos)
         << name << ": page 1 does not start with the answer '" << message << "'";
     EXPECT_NE(page1.find(verdict), std::string::npos) << name << ": page 1 lacks the verdict";
     if (picture.ends_with(".png")) {
       const fs::path list = work_ / (name + "-images.txt");
-      ASSERT_EQ(run("pdfimages -list -f 1 -l 1 " + quote((out_ / name / "report.pdf").string()) + " > " + quote(list.string())), 0);
+      ASSERT_EQ(run("pdfimages -list -f 1 -l 1 " + quote((out_ / name / "report.pdf").string()) +
+                    " > " + quote(list.string())),
+                0);
       size_t lines = 0;
       std::istringstream in(slurp(list));
       for (std::string l; std::getline(in, l);) lines += !l.empty();
       EXPECT_GE(lines, 3u) << name << ": page 1 of the PDF has no image";  // 2 header lines
     }
-    ASSERT_EQ(run("pdftoppm -png -r 60 -f 1 -l 1 -singlefile " + quote((out_ / name / "report.pdf").string()) +
-                  " " + quote((shots / name).string())), 0);
+    ASSERT_EQ(
+        run("pdftoppm -png -r 60 -f 1 -l 1 -singlefile " +
+            quote((out_ / name / "report.pdf").string()) + " " + quote((shots / name).string())),
+        0);
   }
 }
 
@@ -399,7 +413,8 @@ TEST_F(BrowserReport, NoMachineKeyNamesAsLabels) {
   for (const auto& name : bundled_case_names()) {
     const std::string text = labels_before_appendix(slurp(out_ / name / "index.html"));
     std::set<std::string> found;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), kKey); it != std::sregex_iterator(); ++it)
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), kKey);
+         it != std::sregex_iterator(); ++it)
       found.insert((*it)[0]);
     std::string all;
     for (const auto& f : found) all += " " + f;
@@ -410,7 +425,8 @@ TEST_F(BrowserReport, NoMachineKeyNamesAsLabels) {
     const auto j = nlohmann::json::parse(slurp(out_ / name / "results.json"));
     for (const auto& k : j["key_figures"]) {
       ASSERT_TRUE(k.contains("label")) << name << ": " << k.dump();
-      EXPECT_FALSE(std::regex_search(k["label"].get<std::string>(), kKey)) << name << ": " << k.dump();
+      EXPECT_FALSE(std::regex_search(k["label"].get<std::string>(), kKey))
+          << name << ": " << k.dump();
     }
   }
 }
@@ -434,17 +450,21 @@ TEST_F(BrowserReport, EveryMotionHasAnAnimationAndAVideoThatDecodes) {
       EXPECT_NE(css.find(".anim." + cls + " {"), std::string::npos) << name << ": " << cls;
       EXPECT_NE(css.find("@keyframes " + cls + " {"), std::string::npos) << name << ": " << cls;
       for (const char* key : {"sprite", "still", "video"}) {
-        ASSERT_TRUE(a[key].is_string()) << name << ": " << cls << " has no " << key << " (ffmpeg missing?)";
+        ASSERT_TRUE(a[key].is_string())
+            << name << ": " << cls << " has no " << key << " (ffmpeg missing?)";
         const std::string f = a[key];
         ASSERT_TRUE(fs::exists(dir / f)) << name << ": " << f;
-        EXPECT_EQ(listed[f], sha256_of(dir / f, work_)) << name << ": " << f << " not in files with its sha256";
+        EXPECT_EQ(listed[f], sha256_of(dir / f, work_))
+            << name << ": " << f << " not in files with its sha256";
       }
-      EXPECT_NE(html.find("href=\"" + a["video"].get<std::string>() + "\""), std::string::npos) << name;
+      EXPECT_NE(html.find("href=\"" + a["video"].get<std::string>() + "\""), std::string::npos)
+          << name;
       // the video: as many frames as the animation, at the motion's real speed
       const fs::path probe = work_ / "probe.json";
       ASSERT_EQ(run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
                     "stream=nb_read_frames,duration -of json " +
-                    quote((dir / a["video"].get<std::string>()).string()) + " > " + quote(probe.string())),
+                    quote((dir / a["video"].get<std::string>()).string()) + " > " +
+                    quote(probe.string())),
                 0)
           << name << ": " << a["video"];
       const auto p = nlohmann::json::parse(slurp(probe))["streams"][0];
@@ -487,7 +507,8 @@ PageInk page_ink(const fs::path& pgm) {
 std::vector<std::string> part_headings(const std::string& html) {
   static const std::regex kPart(R"re(<section id="[^"]*" class="new-page">\s*<h2>([^<]*)</h2>)re");
   std::vector<std::string> out = {"Appendix A."};
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), kPart); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), kPart);
+       it != std::sregex_iterator(); ++it)
     out.push_back(squeezed((*it)[1].str()));
   return out;
 }
@@ -523,14 +544,17 @@ TEST_F(BrowserReport, PdfPagesAreNotMostlyBlankAndTheirCountsAreRecorded) {
       // the page after starts a part
       const fs::path txt = work_ / "next-page.txt";
       ASSERT_EQ(run("pdftotext -f " + std::to_string(k + 2) + " -l " + std::to_string(k + 2) + " " +
-                    quote(pdf.string()) + " " + quote(txt.string())), 0);
+                    quote(pdf.string()) + " " + quote(txt.string())),
+                0);
       const std::string next = squeezed(slurp(txt));
-      if (std::any_of(parts.begin(), parts.end(), [&](const std::string& h) { return next.rfind(h, 0) == 0; }))
+      if (std::any_of(parts.begin(), parts.end(),
+                      [&](const std::string& h) { return next.rfind(h, 0) == 0; }))
         continue;
       EXPECT_GE(p.reach, kMinReach) << name << ": page " << k + 1 << " of " << pgm.size()
                                     << " is mostly blank (its content ends at " << p.reach
                                     << " of the page) and no part starts on the next";
-      EXPECT_GE(p.ink, kMinInk) << name << ": page " << k + 1 << " of " << pgm.size() << " is nearly blank";
+      EXPECT_GE(p.ink, kMinInk) << name << ": page " << k + 1 << " of " << pgm.size()
+                                << " is nearly blank";
     }
     counts << "\n";
   }
@@ -541,21 +565,23 @@ TEST_F(BrowserReport, PdfPagesAreNotMostlyBlankAndTheirCountsAreRecorded) {
 // tallest words, the section headings (1.3 rem of 10.5 pt), print at their size (pdftotext's
 // word boxes are 1.164 font sizes tall: DejaVu Sans' ascent and descent)
 TEST_F(BrowserReport, PdfIsPrintedAtFullSize) {
-  static const std::regex kWord(R"re(<word xMin="[\d.]+" yMin="([\d.]+)" xMax="[\d.]+" yMax="([\d.]+)")re");
+  static const std::regex kWord(
+      R"re(<word xMin="[\d.]+" yMin="([\d.]+)" xMax="[\d.]+" yMax="([\d.]+)")re");
   constexpr double kHeading = 1.3 * 10.5 * 1.164;
   for (const auto& name : bundled_case_names()) {
     const fs::path box = work_ / (name + "-bbox.html");
-    ASSERT_EQ(run("pdftotext -f 2 -l 2 -bbox " + quote((out_ / name / "report.pdf").string()) + " " +
-                  quote(box.string())), 0);
+    ASSERT_EQ(run("pdftotext -f 2 -l 2 -bbox " + quote((out_ / name / "report.pdf").string()) +
+                  " " + quote(box.string())),
+              0);
     const std::string html = slurp(box);
     double tallest = 0;
-    for (auto it = std::sregex_iterator(html.begin(), html.end(), kWord); it != std::sregex_iterator(); ++it)
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), kWord);
+         it != std::sregex_iterator(); ++it)
       tallest = std::max(tallest, std::stod((*it)[2]) - std::stod((*it)[1]));
-    EXPECT_NEAR(tallest, kHeading, 0.5) << name << ": page 2's headings print at "
-                                        << tallest / 1.164 << " pt, not " << kHeading / 1.164
-                                        << " pt: the page was shrunk to fit something too wide";
+    EXPECT_NEAR(tallest, kHeading, 0.5)
+        << name << ": page 2's headings print at " << tallest / 1.164 << " pt, not "
+        << kHeading / 1.164 << " pt: the page was shrunk to fit something too wide";
   }
 }
-
 
 }  // namespace

@@ -7,15 +7,15 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "testing/cli.hpp"
 #include "cases/case_info.hpp"
+#include "testing/cli.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -31,7 +31,8 @@ std::string read_text(const fs::path& p) {
 }
 
 fs::path temp_dir(const std::string& tag) {
-  const fs::path d = fs::temp_directory_path() / ("armstudy_e2e_" + tag + "_" + std::to_string(getpid()));
+  const fs::path d =
+      fs::temp_directory_path() / ("armstudy_e2e_" + tag + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   return d;
 }
@@ -59,7 +60,9 @@ TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(run_cli("run --bogus x.yaml").exit_code, 2);  // unknown option
   EXPECT_EQ(run_cli("frobnicate").exit_code, 2);
   EXPECT_EQ(run_cli("run /nonexistent/case.yaml").exit_code, 2);
-  EXPECT_EQ(run_cli("run --jobs 0 " + (kSource / "reports/cases/placement-example-2.yaml").string()).exit_code, 2);
+  EXPECT_EQ(run_cli("run --jobs 0 " + (kSource / "reports/cases/placement-example-2.yaml").string())
+                .exit_code,
+            2);
 }
 
 TEST(Cli, ValidateAcceptsEveryBundledCase) {
@@ -115,7 +118,8 @@ TEST(Cli, BadCaseLeavesAnEarlierReportUntouchedAndWritesNothing) {
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find(good.string() + ":"), std::string::npos) << bad.output;
   EXPECT_EQ(read_text(results), before);
-  EXPECT_TRUE(snapshot() == files_before) << "the bad run changed or added files in the output folder";
+  EXPECT_TRUE(snapshot() == files_before)
+      << "the bad run changed or added files in the output folder";
   fs::remove_all(out);
   fs::remove_all(work);
 }
@@ -123,7 +127,8 @@ TEST(Cli, BadCaseLeavesAnEarlierReportUntouchedAndWritesNothing) {
 TEST(Cli, DuplicateCaseNamesAreRejectedBeforeAnythingRuns) {
   const fs::path out = temp_dir("dupnames");
   const fs::path c = kSource / "reports/cases/placement-example-2.yaml";
-  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string() + " " + c.string());
+  const CliRun r =
+      run_cli("run --no-render --out " + out.string() + " " + c.string() + " " + c.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("expected unique names"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
@@ -151,8 +156,10 @@ TEST(Cli, UnsolvableCaseExitsOneWithItsReasonUnlessTheCaseExpectsIt) {
   const fs::path c = kSource / "reports/cases/placement-example-1.yaml";
   const CliRun expected = run_cli("run --no-render --out " + out.string() + " " + c.string());
   EXPECT_EQ(expected.exit_code, 0) << expected.output;
-  EXPECT_NE(expected.output.find("could not be solved, as the case expects: no admissible placement"),
-            std::string::npos) << expected.output;
+  EXPECT_NE(
+      expected.output.find("could not be solved, as the case expects: no admissible placement"),
+      std::string::npos)
+      << expected.output;
   const auto j = nlohmann::json::parse(read_text(out / "placement-example-1" / "results.json"));
   EXPECT_EQ(j["status"], "unsolvable");
   EXPECT_EQ(j["case"]["expect"], "unsolvable");
@@ -164,10 +171,12 @@ TEST(Cli, UnsolvableCaseExitsOneWithItsReasonUnlessTheCaseExpectsIt) {
   std::string text = read_text(c);
   text.replace(text.find("\nexpect: unsolvable") + 1, 18, "expect: solved");
   std::ofstream(work / "case.yaml") << text;
-  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + (work / "case.yaml").string());
+  const CliRun r =
+      run_cli("run --no-render --out " + out.string() + " " + (work / "case.yaml").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("FAILED: placement-example-1"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("could not be solved: no admissible placement"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("could not be solved: no admissible placement"), std::string::npos)
+      << r.output;
   fs::remove_all(out);
   fs::remove_all(work);
 }
@@ -183,7 +192,8 @@ TEST(Cli, InfeasibleTimeOptimalCaseExitsOneNamingTheLimitAndThePlace) {
                       "  velocity_limit_rad_s: [3.0, 0.0]\n";
   const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("joint 2 velocity limit 0 rad/s at s = 0.000 m"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("joint 2 velocity limit 0 rad/s at s = 0.000 m"), std::string::npos)
+      << r.output;
   const auto j = nlohmann::json::parse(read_text(out / "frozen-elbow" / "results.json"));
   EXPECT_EQ(j["status"], "unsolvable");
   fs::remove_all(out);

@@ -3,8 +3,8 @@
 // change passes; a frame changed in a few pixels is found and drawn; bad input names the
 // file; the page loads in headless Chromium like the reports. Sweep rows and tolerance
 // lookup are checked on results data directly.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,11 +19,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "testing/cli.hpp"
 #include "cases/case_error.hpp"
 #include "cli/diff.hpp"
 #include "scene/png_writer.hpp"
 #include "testing/browser.hpp"
+#include "testing/cli.hpp"
 #include "testing/files.hpp"
 
 namespace {
@@ -82,7 +82,8 @@ class Diff : public ::testing::Test {
   static void SetUpTestSuite() {
     root_ = fs::path(ARMSTUDY_BINARY).parent_path() / "diff_e2e";
     fs::create_directories(root_);
-    const int lock = ::open((root_.parent_path() / "diff_e2e.lock").c_str(), O_CREAT | O_RDWR, 0644);
+    const int lock =
+        ::open((root_.parent_path() / "diff_e2e.lock").c_str(), O_CREAT | O_RDWR, 0644);
     ASSERT_GE(lock, 0);
     ::flock(lock, LOCK_EX);
     const std::string stamp = input_stamp();
@@ -113,7 +114,8 @@ class Diff : public ::testing::Test {
     fs::copy(root_ / "base/pendulum", root_ / "longer/pendulum", fs::copy_options::recursive);
     // "mixed": the changed case, example 5 added, the pendulum removed
     fs::create_directories(root_ / "mixed");
-    fs::copy(root_ / "longer/placement-example-3", root_ / "mixed/placement-example-3", fs::copy_options::recursive);
+    fs::copy(root_ / "longer/placement-example-3", root_ / "mixed/placement-example-3",
+             fs::copy_options::recursive);
     run_into(root_ / "mixed", q(kCases / "placement-example-5.yaml"), false);
     write_text(root_ / "stamp", input_stamp());
   }
@@ -125,36 +127,49 @@ class Diff : public ::testing::Test {
 fs::path Diff::root_;
 
 TEST_F(Diff, TwoRunsOfTheSameCasesDiffClean) {
-  const CliRun r = cli("diff " + q(root_ / "base") + " " + q(root_ / "again") + " --out " + q(out("clean")));
+  const CliRun r =
+      cli("diff " + q(root_ / "base") + " " + q(root_ / "again") + " --out " + q(out("clean")));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("nothing moved beyond tolerance"), std::string::npos) << r.output;
   const std::string md = slurp(out("clean") / "diff.md");
   EXPECT_EQ(md.rfind("# armstudy diff: nothing moved beyond tolerance", 0), 0u) << md;
-  EXPECT_NE(md.find("2 case(s) have the same status, key figures, checks and frames"), std::string::npos) << md;
+  EXPECT_NE(md.find("2 case(s) have the same status, key figures, checks and frames"),
+            std::string::npos)
+      << md;
   EXPECT_EQ(md.find("## Beyond tolerance"), std::string::npos) << md;
   EXPECT_TRUE(fs::exists(out("clean") / "diff.html"));
   EXPECT_FALSE(fs::exists(out("clean") / "diff-frames")) << "identical frames need no copies";
 }
 
 TEST_F(Diff, ChangedRemovedAndAddedCasesAreExactlyTheEntries) {
-  const CliRun r = cli("diff " + q(root_ / "base") + " " + q(root_ / "mixed") + " --out " + q(out("mixed")));
+  const CliRun r =
+      cli("diff " + q(root_ / "base") + " " + q(root_ / "mixed") + " --out " + q(out("mixed")));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const std::string md = slurp(out("mixed") / "diff.md");
   EXPECT_EQ(md.rfind("# armstudy diff: 3 case(s) moved beyond tolerance", 0), 0u) << md;
   const auto moved = table_cases(md, "## Beyond tolerance (3)");
-  EXPECT_EQ(moved, (std::vector<std::string>{"pendulum", "placement-example-3", "placement-example-5"})) << md;
-  EXPECT_NE(md.find("| pendulum | pendulum | removed (only in the base run): solved |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| placement-example-5 | placement | added (only in the new run): solved |"), std::string::npos) << md;
+  EXPECT_EQ(moved,
+            (std::vector<std::string>{"pendulum", "placement-example-3", "placement-example-5"}))
+      << md;
+  EXPECT_NE(md.find("| pendulum | pendulum | removed (only in the base run): solved |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| placement-example-5 | placement | added (only in the new run): solved |"),
+            std::string::npos)
+      << md;
   // the changed case: its energies side by side with the change; without gravity the
   // energy is kinetic, and a rest-to-rest motion slowed by 1.1 needs 1/1.1^2 of it
   const auto base = json::parse(slurp(root_ / "base/placement-example-3/results.json"));
   const auto now = json::parse(slurp(root_ / "mixed/placement-example-3/results.json"));
   double e0 = 0, e1 = 0;
-  for (const auto& k : base["key_figures"]) if (k["name"] == "min_energy_J") e0 = k["value"];
-  for (const auto& k : now["key_figures"]) if (k["name"] == "min_energy_J") e1 = k["value"];
+  for (const auto& k : base["key_figures"])
+    if (k["name"] == "min_energy_J") e0 = k["value"];
+  for (const auto& k : now["key_figures"])
+    if (k["name"] == "min_energy_J") e1 = k["value"];
   ASSERT_GT(e0, 0);
   EXPECT_NEAR(e1 / e0, 1 / (1.1 * 1.1), 1e-4);
-  const std::regex row(R"(\| min_energy_J \| ([0-9.]+) J \| ([0-9.]+) J \| (-[0-9.]+) J \| (-[0-9.]+) % \| exact \| \*\*BEYOND\*\* \|)");
+  const std::regex row(
+      R"(\| min_energy_J \| ([0-9.]+) J \| ([0-9.]+) J \| (-[0-9.]+) J \| (-[0-9.]+) % \| exact \| \*\*BEYOND\*\* \|)");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(md, m, row)) << md;
   EXPECT_NEAR(std::stod(m[1]), e0, 1e-4 * e0);
@@ -167,21 +182,28 @@ TEST_F(Diff, ChangedRemovedAndAddedCasesAreExactlyTheEntries) {
 
 TEST_F(Diff, AToleranceThatCoversTheChangePasses) {
   // without tolerances the slower motion moves; with 30 % on placement figures it does not
-  const CliRun strict = cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " + q(out("strict")));
+  const CliRun strict =
+      cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " + q(out("strict")));
   EXPECT_EQ(strict.exit_code, 1) << strict.output;
   EXPECT_EQ(table_cases(slurp(out("strict") / "diff.md"), "## Beyond tolerance"),
             std::vector<std::string>{"placement-example-3"});
   const fs::path tol = root_ / "tolerances.yaml";
   write_text(tol, "# energies scale as 1/T^3\nstudies:\n  placement:\n    default: {rel: 0.3}\n");
-  const CliRun r = cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " + q(out("tol")) +
-                       " --tolerances " + q(tol));
+  const CliRun r = cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " +
+                       q(out("tol")) + " --tolerances " + q(tol));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   const std::string md = slurp(out("tol") / "diff.md");
-  EXPECT_EQ(table_cases(md, "## Changed within tolerance"), std::vector<std::string>{"placement-example-3"}) << md;
+  EXPECT_EQ(table_cases(md, "## Changed within tolerance"),
+            std::vector<std::string>{"placement-example-3"})
+      << md;
   // a tolerance just short of the change (the energies drop by 17.4 %) does not cover it
-  write_text(tol, "studies:\n  placement:\n    default: {rel: 0.3}\n    figures:\n      \"energy_J[*]\": {rel: 0.15}\n");
-  EXPECT_EQ(cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " + q(out("tol2")) +
-                " --tolerances " + q(tol)).exit_code, 1);
+  write_text(tol,
+             "studies:\n  placement:\n    default: {rel: 0.3}\n    figures:\n      "
+             "\"energy_J[*]\": {rel: 0.15}\n");
+  EXPECT_EQ(cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " +
+                q(out("tol2")) + " --tolerances " + q(tol))
+                .exit_code,
+            1);
 }
 
 TEST_F(Diff, AFrameChangedInAFewPixelsIsFoundAndDrawn) {
@@ -191,7 +213,8 @@ TEST_F(Diff, AFrameChangedInAFewPixelsIsFoundAndDrawn) {
   const fs::path frame = pix / "pendulum/pendulum_snapshots_strip.png";
   ASSERT_TRUE(fs::exists(frame));
   armstudy::scene::Image img = armstudy::scene::read_png(frame);
-  const std::vector<std::pair<int, int>> spots = {{10, 10}, {11, 10}, {200, 40}, {img.width - 20, img.height - 20}, {300, 100}};
+  const std::vector<std::pair<int, int>> spots = {
+      {10, 10}, {11, 10}, {200, 40}, {img.width - 20, img.height - 20}, {300, 100}};
   for (const auto& [x, y] : spots) {
     auto c = img.at(x, y);
     c.g = static_cast<uint8_t>(c.g > 127 ? c.g - 40 : c.g + 40);
@@ -207,7 +230,10 @@ TEST_F(Diff, AFrameChangedInAFewPixelsIsFoundAndDrawn) {
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const std::string md = slurp(out("pix") / "diff.md");
   EXPECT_EQ(table_cases(md, "## Beyond tolerance"), std::vector<std::string>{"pendulum"}) << md;
-  EXPECT_NE(md.find("pendulum_snapshots_strip.png | 5 px beyond ±0 (largest channel difference 40)"), std::string::npos) << md;
+  EXPECT_NE(
+      md.find("pendulum_snapshots_strip.png | 5 px beyond ±0 (largest channel difference 40)"),
+      std::string::npos)
+      << md;
   EXPECT_NE(md.find("The runs rendered with different renderers"), std::string::npos) << md;
   EXPECT_NE(md.find("llvmpipe (LLVM 99.0, 512 bits)"), std::string::npos) << md;
   // the other frame is byte-identical and not drawn
@@ -230,9 +256,18 @@ TEST_F(Diff, AFrameChangedInAFewPixelsIsFoundAndDrawn) {
   const std::string html = slurp(out("pix") / "diff.html");
   EXPECT_NE(html.find("diff-frames/pendulum/diff_pendulum_snapshots_strip.png"), std::string::npos);
   // a per-channel tolerance above the change, or allowing 5 pixels, passes
-  EXPECT_EQ(cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("pix40")) + " --pixel-tolerance 40").exit_code, 0);
-  EXPECT_EQ(cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("pix5")) + " --pixels 5").exit_code, 0);
-  EXPECT_EQ(cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("pix4")) + " --pixels 4").exit_code, 1);
+  EXPECT_EQ(cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("pix40")) +
+                " --pixel-tolerance 40")
+                .exit_code,
+            0);
+  EXPECT_EQ(
+      cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("pix5")) + " --pixels 5")
+          .exit_code,
+      0);
+  EXPECT_EQ(
+      cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("pix4")) + " --pixels 4")
+          .exit_code,
+      1);
 }
 
 TEST_F(Diff, BadInputNamesTheFileAndWritesNothing) {
@@ -247,7 +282,8 @@ TEST_F(Diff, BadInputNamesTheFileAndWritesNothing) {
     fs::remove_all(o);
     const CliRun r = cli("diff " + q(a) + " " + q(b) + " --out " + q(o));
     EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(r.output.find(rj.string() + ": truncated or not JSON"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(rj.string() + ": truncated or not JSON"), std::string::npos)
+        << r.output;
     EXPECT_FALSE(fs::exists(o / "diff.md"));
   }
   // valid JSON of the wrong shape
@@ -256,29 +292,43 @@ TEST_F(Diff, BadInputNamesTheFileAndWritesNothing) {
   write_text(rj, j.dump());
   CliRun r = cli("diff " + q(root_ / "base") + " " + q(bad) + " --out " + q(out("bad")));
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find(rj.string() + ": /key_figures/0/value: expected a number"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(rj.string() + ": /key_figures/0/value: expected a number"),
+            std::string::npos)
+      << r.output;
   // a missing folder, an empty one
   r = cli("diff " + q(root_ / "base") + " " + q(root_ / "no-such") + " --out " + q(out("bad")));
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find((root_ / "no-such").string() + ": no such folder"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((root_ / "no-such").string() + ": no such folder"), std::string::npos)
+      << r.output;
   fs::create_directories(root_ / "empty");
   r = cli("diff " + q(root_ / "empty") + " " + q(root_ / "base") + " --out " + q(out("bad")));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("no case folder with a results.json"), std::string::npos) << r.output;
   // a tolerances file with errors: every one as file:line:col
   const fs::path tol = root_ / "bad-tolerances.yaml";
-  write_text(tol, "default: {rel: -1}\nstudies:\n  placemnt: {default: {abs: 1}}\n  time_optimal:\n    figurs: {}\n");
-  r = cli("diff " + q(root_ / "base") + " " + q(root_ / "again") + " --out " + q(out("bad")) + " --tolerances " + q(tol));
+  write_text(tol,
+             "default: {rel: -1}\nstudies:\n  placemnt: {default: {abs: 1}}\n  time_optimal:\n    "
+             "figurs: {}\n");
+  r = cli("diff " + q(root_ / "base") + " " + q(root_ / "again") + " --out " + q(out("bad")) +
+          " --tolerances " + q(tol));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(tol.string() + ":1:16: "), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(tol.string() + ":3:3: unknown study 'placemnt'; did you mean 'placement'?"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(tol.string() + ":5:5: unknown key 'studies.time_optimal.figurs'; did you mean 'figures'?"), std::string::npos) << r.output;
+  EXPECT_NE(
+      r.output.find(tol.string() + ":3:3: unknown study 'placemnt'; did you mean 'placement'?"),
+      std::string::npos)
+      << r.output;
+  EXPECT_NE(
+      r.output.find(tol.string() +
+                    ":5:5: unknown key 'studies.time_optimal.figurs'; did you mean 'figures'?"),
+      std::string::npos)
+      << r.output;
   EXPECT_FALSE(fs::exists(out("bad") / "diff.md"));
 }
 
 TEST_F(Diff, PageLoadsInChromiumWithoutConsoleMessagesOrMissingFiles) {
   // the pixel diff's page shows frame copies; the mixed diff's has tables only
-  const CliRun a = cli("diff " + q(root_ / "base") + " " + q(root_ / "mixed") + " --out " + q(out("page-mixed")));
+  const CliRun a = cli("diff " + q(root_ / "base") + " " + q(root_ / "mixed") + " --out " +
+                       q(out("page-mixed")));
   ASSERT_EQ(a.exit_code, 1) << a.output;
   const fs::path pix = root_ / "page-pix";
   fs::remove_all(pix);
@@ -287,26 +337,34 @@ TEST_F(Diff, PageLoadsInChromiumWithoutConsoleMessagesOrMissingFiles) {
   auto img = armstudy::scene::read_png(frame);
   for (int x = 100; x < 130; ++x) img.set(x, 100, {255, 0, 0});
   armstudy::scene::write_png(frame, img);
-  ASSERT_EQ(cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("page-pix"))).exit_code, 1);
+  ASSERT_EQ(
+      cli("diff " + q(root_ / "base") + " " + q(pix) + " --out " + q(out("page-pix"))).exit_code,
+      1);
   const fs::path work = root_ / "browser";
   fs::create_directories(work);
   int k = 0;
   for (const fs::path& page : {out("page-mixed") / "diff.html", out("page-pix") / "diff.html"}) {
     int targets = 0;
-    const auto problems = armstudy::testing::page_problems(page, work, std::to_string(k++), &targets);
+    const auto problems =
+        armstudy::testing::page_problems(page, work, std::to_string(k++), &targets);
     for (const auto& p : problems) ADD_FAILURE() << page << ": " << p;
     EXPECT_GE(targets, 2) << page;
     const fs::path shot = work / ("shot" + std::to_string(k) + ".png");
-    ASSERT_EQ(armstudy::testing::chromium("--window-size=1000,1400 --screenshot=" + q(shot) + " " +
-                                              armstudy::testing::quote(armstudy::testing::file_url(page)) + " > /dev/null 2>&1",
-                                          work, "s" + std::to_string(k)), 0);
+    ASSERT_EQ(
+        armstudy::testing::chromium(
+            "--window-size=1000,1400 --screenshot=" + q(shot) + " " +
+                armstudy::testing::quote(armstudy::testing::file_url(page)) + " > /dev/null 2>&1",
+            work, "s" + std::to_string(k)),
+        0);
     size_t colours = 0;
     EXPECT_GT(armstudy::testing::ink_fraction_png(shot, &colours), 0.02) << shot;
     EXPECT_GT(colours, 16u) << shot;
   }
   const std::string html = slurp(out("page-pix") / "diff.html");
   for (const char* f : {"base_", "new_", "diff_"})
-    EXPECT_NE(html.find(std::string("diff-frames/pendulum/") + f + "pendulum_snapshots_locus.png"), std::string::npos) << f;
+    EXPECT_NE(html.find(std::string("diff-frames/pendulum/") + f + "pendulum_snapshots_locus.png"),
+              std::string::npos)
+        << f;
 }
 
 TEST(DiffCli, HelpAndUsageErrors) {
@@ -323,15 +381,18 @@ TEST(DiffCli, HelpAndUsageErrors) {
 
 using armstudy::app::CaseOutput;
 
-CaseOutput sweep_case(const std::string& name, double l2, double energy, const std::string& status = "solved") {
+CaseOutput sweep_case(const std::string& name, double l2, double energy,
+                      const std::string& status = "solved") {
   armstudy::report::ResultsRecord r;
   r.study = "placement";
   r.case_info.name = name;
   r.case_info.path = name + ".yaml";
   r.case_info.sha256 = std::string(64, 'a');
-  r.case_info.sweep = armstudy::report::CaseRecord::Sweep{"ratio", {{"arm.links[2].length", std::to_string(l2)}}};
+  r.case_info.sweep =
+      armstudy::report::CaseRecord::Sweep{"ratio", {{"arm.links[2].length", std::to_string(l2)}}};
   r.status = status;
-  r.key_figures = {{"min_energy_J", energy, "J", "least energy"}, {"run_time_s", energy / 7, "s", "run time"}};
+  r.key_figures = {{"min_energy_J", energy, "J", "least energy"},
+                   {"run_time_s", energy / 7, "s", "run time"}};
   r.provenance.armstudy_version = "0.1.0";
   r.provenance.compiler = "gcc 12";
   return {fs::path("/nonexistent") / name, armstudy::report::write_record(r), r};
@@ -373,8 +434,12 @@ TEST(DiffRuns, SweepRowsAreComparedByCaseIdLargestChangeFirst) {
   const std::string md = armstudy::report::diff_markdown(d);
   EXPECT_LT(md.find("| p-107 |"), md.find("| p-103 |"));
   // failures first: the case that no longer solves heads the table of cases that moved
-  EXPECT_EQ(table_cases(md, "## Beyond tolerance"), (std::vector<std::string>{"p-115", "p-107", "p-111", "p-119"})) << md;
-  EXPECT_NE(md.find("## Sweep ratio: 5 of 20 row(s) changed, largest change first"), std::string::npos) << md;
+  EXPECT_EQ(table_cases(md, "## Beyond tolerance"),
+            (std::vector<std::string>{"p-115", "p-107", "p-111", "p-119"}))
+      << md;
+  EXPECT_NE(md.find("## Sweep ratio: 5 of 20 row(s) changed, largest change first"),
+            std::string::npos)
+      << md;
 }
 
 TEST(DiffRuns, MarkdownStaysUnderItsLimitWithFailuresFirst) {
@@ -395,14 +460,16 @@ TEST(DiffRuns, MarkdownStaysUnderItsLimitWithFailuresFirst) {
 
 TEST(DiffTolerances, LookupOrderPatternsAndRunTimes) {
   const fs::path f = armstudy::testing::fresh_dir("diff_tol") / "t.yaml";
-  write_text(f, "default: {rel: 1.0e-6}\nframes: {channel: 3, pixels: 10}\nstudies:\n  placement:\n"
-                "    default: {abs: 0.5}\n    figures:\n      \"root_*_m[*]\": {abs: 0.001}\n"
-                "      \"root_x_m[cycloidal,1]\": {abs: 0.002}\n  throwing:\n    figures:\n"
-                "      idp_run_time_s: {rel: 0.5}\n");
+  write_text(f,
+             "default: {rel: 1.0e-6}\nframes: {channel: 3, pixels: 10}\nstudies:\n  placement:\n"
+             "    default: {abs: 0.5}\n    figures:\n      \"root_*_m[*]\": {abs: 0.001}\n"
+             "      \"root_x_m[cycloidal,1]\": {abs: 0.002}\n  throwing:\n    figures:\n"
+             "      idp_run_time_s: {rel: 0.5}\n");
   const auto t = armstudy::app::load_diff_tolerances(f.string());
   EXPECT_EQ(t.pixel_channel, 3);
   EXPECT_EQ(t.pixels, 10u);
-  EXPECT_EQ(t.lookup("placement", "root_x_m[cycloidal,1]").abs, 0.002);  // exact name before patterns
+  EXPECT_EQ(t.lookup("placement", "root_x_m[cycloidal,1]").abs,
+            0.002);  // exact name before patterns
   EXPECT_EQ(t.lookup("placement", "root_y_m[poly345,2]").abs, 0.001);
   EXPECT_EQ(t.lookup("placement", "min_energy_J").abs, 0.5);
   EXPECT_EQ(t.lookup("placement", "min_energy_J").source, f.string() + ":5:14");

@@ -21,8 +21,8 @@
 
 namespace {
 namespace fs = std::filesystem;
-using nlohmann::json;
 using armstudy::testing::run_cli;
+using nlohmann::json;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -83,10 +83,12 @@ void expect_listed(const fs::path& dir, const json& results, const std::string& 
 
 // model.xml loads (mj_loadXML) with one keyframe at each of the listed times
 void expect_model(const fs::path& dir, const json& entry) {
-  const armstudy::scene::MujocoModel mm = armstudy::scene::MujocoModel::from_file((dir / "model.xml").string());
+  const armstudy::scene::MujocoModel mm =
+      armstudy::scene::MujocoModel::from_file((dir / "model.xml").string());
   const auto& times = entry["keyframe_times_s"];
   ASSERT_EQ(mm.model()->nkey, static_cast<int>(times.size()));
-  for (int k = 0; k < mm.model()->nkey; ++k) EXPECT_EQ(mm.model()->key_time[k], times[k].get<double>()) << k;
+  for (int k = 0; k < mm.model()->nkey; ++k)
+    EXPECT_EQ(mm.model()->key_time[k], times[k].get<double>()) << k;
 }
 
 fs::path out_dir(const std::string& name) {
@@ -100,7 +102,8 @@ TEST(Exports, ThreeLinkTimeOptimalFolderHasModelXmlAndOneCsvPerSolverMatchingRes
   fs::create_directories(out);
   std::string text = slurp(fs::path(ARMSTUDY_SOURCE_DIR) / "reports/cases/time-optimal-3link.yaml");
   for (const auto& [from, to] : std::map<std::string, std::string>{
-           {"grid_points: 1000", "grid_points: 300"}, {"convergence_segments: [10, 20, 50]", "convergence_segments: []"}}) {
+           {"grid_points: 1000", "grid_points: 300"},
+           {"convergence_segments: [10, 20, 50]", "convergence_segments: []"}}) {
     const size_t at = text.find(from);
     ASSERT_NE(at, std::string::npos) << from;
     text.replace(at, from.size(), to);
@@ -139,7 +142,8 @@ TEST(Exports, ThreeLinkTimeOptimalFolderHasModelXmlAndOneCsvPerSolverMatchingRes
     const auto same = [&](const std::string& col, const json& values) {
       const std::vector<double>& v = column(c, col);
       ASSERT_EQ(v.size(), values.size()) << col;
-      for (size_t k = 0; k < v.size(); ++k) ASSERT_EQ(v[k], values[k].get<double>()) << col << " row " << k;
+      for (size_t k = 0; k < v.size(); ++k)
+        ASSERT_EQ(v[k], values[k].get<double>()) << col << " row " << k;
     };
     same("t [s]", sm["t_s"]);
     same("s [rad]", sm["s"]);
@@ -184,7 +188,9 @@ TEST(Exports, PendulumFolderHasModelXmlAtItsSnapshotsAndItsMotionAsCsv) {
   for (size_t k = 0; k < t.size(); ++k) {
     ASSERT_EQ(t[k], series["t_s"][k].get<double>()) << k;
     for (int j = 0; j < 4; ++j)
-      ASSERT_EQ(column(c, "q" + std::to_string(j + 1) + " [rad]")[k], series["q_rad"][k][j].get<double>()) << k;
+      ASSERT_EQ(column(c, "q" + std::to_string(j + 1) + " [rad]")[k],
+                series["q_rad"][k][j].get<double>())
+          << k;
   }
   fs::remove_all(out);
 }

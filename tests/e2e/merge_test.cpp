@@ -18,7 +18,8 @@ CaseOutput make_case(const std::string& name, const std::string& study, bool sol
   r.case_info.name = name;
   r.case_info.path = name + ".yaml";
   r.case_info.sha256 = std::string(64, 'a');
-  if (!ratio.empty()) r.case_info.sweep = report::CaseRecord::Sweep{"s", {{"arm.links[2].length", ratio}}};
+  if (!ratio.empty())
+    r.case_info.sweep = report::CaseRecord::Sweep{"s", {{"arm.links[2].length", ratio}}};
   r.status = solved ? "solved" : "unsolvable";
   r.message = solved ? "ok" : "target is 0.12 m outside the annulus";
   for (const auto& [n, p] : checks) r.checks.push_back({n, "d <x>", p ? 0.0 : 2.0, 1.0, p});
@@ -36,36 +37,42 @@ TEST(Merge, SummaryListsFailuresFirstWithReasons) {
   ASSERT_NE(failures, std::string::npos);
   ASSERT_NE(placement, std::string::npos);
   EXPECT_LT(failures, placement);
-  EXPECT_NE(md.find("could not be solved: target is 0.12 m outside the annulus"), std::string::npos);
+  EXPECT_NE(md.find("could not be solved: target is 0.12 m outside the annulus"),
+            std::string::npos);
   EXPECT_NE(md.find("failed checks: limits (2 > 1)"), std::string::npos);
   EXPECT_NE(md.find("min_energy_J (J)"), std::string::npos);
 }
 
 TEST(Merge, SummaryIsTruncatedWithANoteUnderTheLimit) {
   std::vector<CaseOutput> cases;
-  for (int i = 0; i < 3000; ++i) cases.push_back(make_case("case-" + std::to_string(i), "placement", i % 2, {}, i));
+  for (int i = 0; i < 3000; ++i)
+    cases.push_back(make_case("case-" + std::to_string(i), "placement", i % 2, {}, i));
   const std::string md = summary_markdown(cases, 64 * 1024);
   EXPECT_LE(md.size(), 64u * 1024);
   EXPECT_NE(md.find("Truncated"), std::string::npos);
 }
 
 TEST(Merge, JunitCountsOneTestcasePerCaseAndCheck) {
-  std::vector<CaseOutput> cases = {make_case("a", "placement", true, {{"w", true}, {"x", false}}, 1),
-                                   make_case("b", "placement", false, {}, 0)};
+  std::vector<CaseOutput> cases = {
+      make_case("a", "placement", true, {{"w", true}, {"x", false}}, 1),
+      make_case("b", "placement", false, {}, 0)};
   const std::string x = junit_xml(cases);
-  EXPECT_NE(x.find("<testsuites name=\"armstudy\" tests=\"4\" failures=\"2\""), std::string::npos) << x;
+  EXPECT_NE(x.find("<testsuites name=\"armstudy\" tests=\"4\" failures=\"2\""), std::string::npos)
+      << x;
   EXPECT_NE(x.find("d &lt;x&gt;"), std::string::npos) << "descriptions are escaped";
 }
 
 TEST(Merge, SweepTablesDoNotDependOnCaseOrder) {
   std::vector<CaseOutput> cases;
   for (int i = 0; i < 20; ++i)
-    cases.push_back(make_case("p-" + std::to_string(100 + i), "placement", true, {}, 1.0 / (i + 1), std::to_string(0.1 + 0.01 * i)));
+    cases.push_back(make_case("p-" + std::to_string(100 + i), "placement", true, {}, 1.0 / (i + 1),
+                              std::to_string(0.1 + 0.01 * i)));
   const std::string csv = sweep_csv(cases);
   const std::string js = sweep_json(cases).dump();
   std::mt19937 rng(3);
   std::shuffle(cases.begin(), cases.end(), rng);
-  std::sort(cases.begin(), cases.end(), [](auto& a, auto& b) { return a.record.case_info.name < b.record.case_info.name; });
+  std::sort(cases.begin(), cases.end(),
+            [](auto& a, auto& b) { return a.record.case_info.name < b.record.case_info.name; });
   EXPECT_EQ(sweep_csv(cases), csv);
   EXPECT_EQ(sweep_json(cases).dump(), js);
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "case,status,arm.links[2].length,min_energy_J (J)");

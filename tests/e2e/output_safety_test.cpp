@@ -1,7 +1,7 @@
 // What armstudy writes when things go wrong: refused case names, failed writes (a
 // read-only folder, a full standard output; a full disk is in fault_injection_test.sh),
-// the skip-if-done key, and merge over broken results.json files. Each test checks the exit code, the message and that nothing
-// was lost or left half-written.
+// the skip-if-done key, and merge over broken results.json files. Each test checks the exit code,
+// the message and that nothing was lost or left half-written.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -69,24 +69,28 @@ std::string leftovers(const fs::path& dir) {
   std::string found;
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
     const std::string f = e.path().filename().string();
-    if (f.find(".part") != std::string::npos || f.rfind(".armstudy-", 0) == 0) found += e.path().string() + "\n";
+    if (f.find(".part") != std::string::npos || f.rfind(".armstudy-", 0) == 0)
+      found += e.path().string() + "\n";
   }
   return found;
 }
 
 TEST(OutputSafety, CaseNamesOfRunLevelFilesAreRefusedAtValidate) {
   const fs::path d = fresh_dir("names_reserved");
-  for (const char* name : {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"}) {
+  for (const char* name : {"index.html", "summary.md", "junit.xml", "report.css", "sweep",
+                           "sweep.csv", "sweep.json"}) {
     const fs::path c = write_case(d, name);
     const CmdRun r = armstudy("validate " + c.string());
     EXPECT_EQ(r.exit_code, 2) << name << "\n" << r.output;
-    EXPECT_NE(r.output.find(c.string() + ": case name '" + name + "' is the name of " + name), std::string::npos)
+    EXPECT_NE(r.output.find(c.string() + ": case name '" + name + "' is the name of " + name),
+              std::string::npos)
         << r.output;
     const CmdRun run = armstudy("run --no-render --out " + (d / "out").string() + " " + c.string());
     EXPECT_EQ(run.exit_code, 2) << run.output;
     EXPECT_FALSE(fs::exists(d / "out")) << "nothing is written for a refused case";
   }
-  EXPECT_EQ(armstudy("validate " + write_case(d, "sweep-1").string()).exit_code, 0) << "only the exact names";
+  EXPECT_EQ(armstudy("validate " + write_case(d, "sweep-1").string()).exit_code, 0)
+      << "only the exact names";
   fs::remove_all(d);
 }
 
@@ -96,7 +100,8 @@ TEST(OutputSafety, TwoCasesWithOneNameAreRefusedAtValidate) {
   fs::copy_file(a, d / "copy.yaml");
   const CmdRun r = armstudy("validate " + a.string() + " " + (d / "copy.yaml").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("case name 'twice' is also the name of " + a.string()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("case name 'twice' is also the name of " + a.string()), std::string::npos)
+      << r.output;
   fs::remove_all(d);
 }
 
@@ -104,10 +109,12 @@ TEST(OutputSafety, AFailedWriteToStandardOutputIsAnError) {
   const fs::path d = fresh_dir("stdout_full");
   write_case(d, "listed");
   for (const char* args : {"list --json ", "list ", "validate "}) {
-    const std::string target = std::string(args) == "validate " ? (d / "listed.yaml").string() : d.string();
+    const std::string target =
+        std::string(args) == "validate " ? (d / "listed.yaml").string() : d.string();
     const CmdRun r = shell("{ " + kBin + " " + args + target + " >/dev/full; }");
     EXPECT_EQ(r.exit_code, 3) << args << r.output;
-    EXPECT_NE(r.output.find("cannot write to standard output: No space left on device"), std::string::npos)
+    EXPECT_NE(r.output.find("cannot write to standard output: No space left on device"),
+              std::string::npos)
         << args << r.output;
   }
   EXPECT_EQ(shell(kBin + " list --json " + d.string() + " >/dev/null").exit_code, 0);
@@ -141,7 +148,8 @@ TEST(OutputSafety, SkipIfDoneRedoesACaseWhoseOutputIsStaleOrFailed) {
     std::ofstream(rj, std::ios::trunc) << j.dump(2);
     const CmdRun r = armstudy(run);
     EXPECT_EQ(r.exit_code, 0) << what << "\n" << r.output;
-    EXPECT_EQ(r.output.find("skipped"), std::string::npos) << what << ": kept a stale report\n" << r.output;
+    EXPECT_EQ(r.output.find("skipped"), std::string::npos) << what << ": kept a stale report\n"
+                                                           << r.output;
     const auto redone = nlohmann::json::parse(slurp(rj));
     EXPECT_EQ(redone["armstudy_version"], original["armstudy_version"]) << what;
     EXPECT_EQ(redone["status"], "solved") << what;
@@ -153,7 +161,9 @@ TEST(OutputSafety, SkipIfDoneRedoesACaseWhoseOutputIsStaleOrFailed) {
 TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
   const fs::path d = fresh_dir("merge_broken");
   const fs::path out = d / "out";
-  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + write_case(d, "good").string()).exit_code, 0);
+  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + write_case(d, "good").string())
+                .exit_code,
+            0);
   const std::string good = slurp(out / "good/results.json");
   auto json_with = [&](const std::function<void(nlohmann::json&)>& edit) {
     auto j = nlohmann::json::parse(good);
@@ -163,27 +173,35 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
   const std::map<std::string, std::pair<std::string, std::string>> broken = {
       {"truncated", {good.substr(0, good.size() / 2), "truncated or not JSON"}},
       {"empty", {"", "truncated or not JSON"}},
-      {"wrong-type", {json_with([](nlohmann::json& j) { j["checks"][0]["passed"] = "yes"; }),
-                      "/checks/0/passed: expected a boolean, found a string"}},
-      {"wrong-name", {json_with([](nlohmann::json& j) { j["case"]["name"] = 7; }),
-                      "/case/name: expected a string, found an integer"}},
-      {"future-schema", {json_with([](nlohmann::json& j) { j["schema_version"] = armstudy::report::kSchemaVersion + 1; }),
-                         "schema_version " + std::to_string(armstudy::report::kSchemaVersion + 1) + " is not one this armstudy reads"}},
+      {"wrong-type",
+       {json_with([](nlohmann::json& j) { j["checks"][0]["passed"] = "yes"; }),
+        "/checks/0/passed: expected a boolean, found a string"}},
+      {"wrong-name",
+       {json_with([](nlohmann::json& j) { j["case"]["name"] = 7; }),
+        "/case/name: expected a string, found an integer"}},
+      {"future-schema",
+       {json_with(
+            [](nlohmann::json& j) { j["schema_version"] = armstudy::report::kSchemaVersion + 1; }),
+        "schema_version " + std::to_string(armstudy::report::kSchemaVersion + 1) +
+            " is not one this armstudy reads"}},
       // the study's section is read into its typed result: a misspelt key is named, never "n/a"
-      {"misspelt-key", {json_with([](nlohmann::json& j) {
-                          auto& o = j["placement"]["optima"][0];
-                          o["energy_j"] = o["energy_J"];
-                          o.erase("energy_J");
-                        }),
-                        "/placement/optima/0/energy_j: unknown key 'energy_j'; did you mean 'energy_J'?"}},
-      {"section-missing", {json_with([](nlohmann::json& j) { j.erase("placement"); }), "/placement: missing"}},
+      {"misspelt-key",
+       {json_with([](nlohmann::json& j) {
+          auto& o = j["placement"]["optima"][0];
+          o["energy_j"] = o["energy_J"];
+          o.erase("energy_J");
+        }),
+        "/placement/optima/0/energy_j: unknown key 'energy_j'; did you mean 'energy_J'?"}},
+      {"section-missing",
+       {json_with([](nlohmann::json& j) { j.erase("placement"); }), "/placement: missing"}},
       // the shared record is typed as well
-      {"misspelt-shared-key", {json_with([](nlohmann::json& j) {
-                                 auto& k = j["key_figures"][0];
-                                 k["unti"] = k["unit"];
-                                 k.erase("unit");
-                               }),
-                               "/key_figures/0/unti: unknown key 'unti'; did you mean 'unit'?"}},
+      {"misspelt-shared-key",
+       {json_with([](nlohmann::json& j) {
+          auto& k = j["key_figures"][0];
+          k["unti"] = k["unit"];
+          k.erase("unit");
+        }),
+        "/key_figures/0/unti: unknown key 'unti'; did you mean 'unit'?"}},
   };
   for (const auto& [name, contents] : broken) {
     fs::create_directories(out / name);
@@ -197,10 +215,13 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
   EXPECT_EQ(md.rfind("# armstudy: 9 case(s), 8 failed", 0), 0u) << md;
   for (const auto& [name, contents] : broken) {
     const std::string file = (out / name / "results.json").string();
-    EXPECT_NE(r.output.find(file + ": " + contents.second), std::string::npos) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find(file + ": " + contents.second), std::string::npos) << name << "\n"
+                                                                               << r.output;
     EXPECT_NE(md.find("| " + name + " |"), std::string::npos) << name << "\n" << md;
     EXPECT_NE(md.find(contents.second), std::string::npos) << name;
-    EXPECT_NE(junit.find("." + name + "\" name=\"solve\"><failure"), std::string::npos) << name << "\n" << junit;
+    EXPECT_NE(junit.find("." + name + "\" name=\"solve\"><failure"), std::string::npos)
+        << name << "\n"
+        << junit;
   }
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out);
   fs::remove_all(d);
@@ -210,7 +231,8 @@ TEST(OutputSafety, MergeOfAMissingFolderIsAnErrorAndCreatesNothing) {
   const fs::path d = fresh_dir("merge_missing");
   const CmdRun r = armstudy("merge " + (d / "nope").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find((d / "nope").string() + ": no such folder"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((d / "nope").string() + ": no such folder"), std::string::npos)
+      << r.output;
   EXPECT_FALSE(fs::exists(d / "nope"));
   std::ofstream(d / "file") << "x";
   const CmdRun f = armstudy("merge " + (d / "file").string() + " --out " + (d / "out").string());
@@ -233,8 +255,10 @@ TEST(OutputSafety, AReadOnlyOutputFolderSaysPermissionDeniedAndWritesNothing) {
   fs::permissions(d, fs::perms::all);
   fs::permissions(c, fs::perms::owner_read | fs::perms::owner_write | fs::perms::others_read);
   // root may write anywhere: run as nobody then
-  const std::string as_user = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
-  const CmdRun r = shell(as_user + kBin + " run --no-render --out " + out.string() + " " + c.string());
+  const std::string as_user =
+      ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+  const CmdRun r =
+      shell(as_user + kBin + " run --no-render --out " + out.string() + " " + c.string());
   fs::permissions(out, fs::perms::owner_all, fs::perm_options::add);
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find(": Permission denied"), std::string::npos) << r.output;
@@ -265,13 +289,16 @@ TEST(OutputSafety, LeftoversAreRemovedByTheirFreeLockNotByHostAndPid) {
     std::ofstream(s / "lock");
   }
   // another process holds the live one's lock (as its run would) until the pipe closes
-  FILE* holder = popen(("flock " + (live / "lock").string() + " -c 'echo locked; read x'").c_str(), "w");
+  FILE* holder =
+      popen(("flock " + (live / "lock").string() + " -c 'echo locked; read x'").c_str(), "w");
   ASSERT_NE(holder, nullptr);
-  for (int i = 0; i < 200 && shell("flock -n " + (live / "lock").string() + " true").exit_code == 0; ++i)
+  for (int i = 0; i < 200 && shell("flock -n " + (live / "lock").string() + " true").exit_code == 0;
+       ++i)
     ::usleep(20000);
   const CmdRun r = armstudy("run --no-render --force --out " + out.string() + " " + c.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(fs::exists(live / "new/locked/results.json")) << "a live run's folder was removed\n" << r.output;
+  EXPECT_TRUE(fs::exists(live / "new/locked/results.json")) << "a live run's folder was removed\n"
+                                                            << r.output;
   EXPECT_FALSE(fs::exists(dead)) << "a dead run's folder was kept\n" << r.output;
   pclose(holder);  // the holder exits: its lock is free
   const CmdRun again = armstudy("run --no-render --force --out " + out.string() + " " + c.string());
@@ -302,7 +329,8 @@ TEST(OutputSafety, AReportAKillLeftAsideIsPutBack) {
   const fs::path other = write_case(d, "other");
   const CmdRun next = armstudy("run --no-render --out " + out.string() + " " + other.string());
   EXPECT_EQ(next.exit_code, 0) << next.output;
-  EXPECT_NE(next.output.find("put back " + (fs::weakly_canonical(out) / "aside").string()), std::string::npos)
+  EXPECT_NE(next.output.find("put back " + (fs::weakly_canonical(out) / "aside").string()),
+            std::string::npos)
       << next.output;
   EXPECT_EQ(slurp(out / "aside/results.json"), report);
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out);

@@ -12,8 +12,8 @@
 #include <fstream>
 #include <string>
 
-#include "cases/case_error.hpp"
 #include "app/pipeline.hpp"
+#include "cases/case_error.hpp"
 #include "cli/sweep.hpp"
 
 namespace {

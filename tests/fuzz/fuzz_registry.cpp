@@ -5,12 +5,12 @@
 // check of the diagnostics; keep them in step.
 #include <stdexcept>
 
+#include "app/pipeline.hpp"
+#include "app/run_case.hpp"
 #include "cases/pendulum_case.hpp"
 #include "cases/placement_case.hpp"
 #include "cases/throwing_case.hpp"
 #include "cases/time_optimal_case.hpp"
-#include "app/pipeline.hpp"
-#include "app/run_case.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -43,13 +43,23 @@ void no_report(const nlohmann::json&, report::FigureWriter&, report::CasePage&) 
 
 const std::vector<StudyEntry>& study_registry() {
   static const std::vector<StudyEntry> registry = {
-      {"placement", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_placement(root)); },
+      {"placement", "",
+       [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_placement(root)); },
        &no_schema, &no_check, &no_report},
-      {"pendulum", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_pendulum_spec(root)); },
+      {"pendulum", "",
+       [](cases::Map& root, const cases::CaseInfo&) {
+         return loaded(cases::load_pendulum_spec(root));
+       },
        &no_schema, &no_check, &no_report},
-      {"throwing", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_throwing_spec(root)); },
+      {"throwing", "",
+       [](cases::Map& root, const cases::CaseInfo&) {
+         return loaded(cases::load_throwing_spec(root));
+       },
        &no_schema, &no_check, &no_report},
-      {"time_optimal", "", [](cases::Map& root, const cases::CaseInfo&) { return loaded(cases::load_time_optimal(root)); },
+      {"time_optimal", "",
+       [](cases::Map& root, const cases::CaseInfo&) {
+         return loaded(cases::load_time_optimal(root));
+       },
        &no_schema, &no_check, &no_report},
   };
   return registry;

@@ -6,9 +6,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
-#include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -30,10 +30,14 @@ using nlohmann::json;
 using armstudy::testing::slurp;
 
 // the study's report sections and answer-box lines, from its registry record
-StudySections sections_of(const cases::CaseInfo& info) { return app::find_study(info.study)->report; }
+StudySections sections_of(const cases::CaseInfo& info) {
+  return app::find_study(info.study)->report;
+}
 StudyAnswer answer_of(const cases::CaseInfo& info) { return app::find_study(info.study)->answer; }
 
-fs::path fresh_dir(const std::string& name) { return armstudy::testing::fresh_dir("case_report_test_" + name); }
+fs::path fresh_dir(const std::string& name) {
+  return armstudy::testing::fresh_dir("case_report_test_" + name);
+}
 
 cases::CaseInfo hostile_info(const std::string& study) {
   cases::CaseInfo info;
@@ -81,7 +85,8 @@ json study_section(const std::string& study) {
       static_cast<studies::placement::ResultsSection::Id&>(o) = id;
       o.energy_J = 10.0 + conf;
       o.root_xy_m = {0.25, 0.3};
-      o.series = {1, ts, s1(conf), s1(2), s1(3), s1(4), s1(5), s1(6), s1(7), s1(8), s1(9), s1(10), s1(1)};
+      o.series = {1,     ts,    s1(conf), s1(2), s1(3),  s1(4), s1(5),
+                  s1(6), s1(7), s1(8),    s1(9), s1(10), s1(1)};
       s.optima.push_back(o);
       studies::placement::ResultsSection::Curve c;
       static_cast<studies::placement::ResultsSection::Id&>(c) = id;
@@ -186,7 +191,8 @@ json synthetic_results(const cases::CaseInfo& info) {
 std::vector<std::string> attribute_targets(const std::string& html) {
   std::vector<std::string> out;
   static const std::regex re(R"re((?:src|href)="([^"#]+)")re");
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), re); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), re); it != std::sregex_iterator();
+       ++it)
     out.push_back((*it)[1]);
   return out;
 }
@@ -198,7 +204,8 @@ TEST(CaseReport, EveryValueIsHtmlEscaped) {
   const std::string html = slurp(d / "index.html");
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("<b>bold"), std::string::npos);
-  EXPECT_NE(html.find("&lt;script&gt;alert(&apos;x&apos;)&lt;/script&gt; &amp; more"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(&apos;x&apos;)&lt;/script&gt; &amp; more"),
+            std::string::npos);
   EXPECT_NE(html.find("optimum &lt;found&gt; &amp; checked"), std::string::npos);
 }
 
@@ -273,7 +280,8 @@ TEST(Pdf, MissingChromiumIsAClearError) {
     print_pdf(d / "a.html", d / "a.pdf");
     FAIL() << "expected PdfError";
   } catch (const PdfError& e) {
-    EXPECT_NE(std::string(e.what()).find("apt-get install chromium"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("apt-get install chromium"), std::string::npos)
+        << e.what();
   }
   unsetenv("ARMSTUDY_CHROMIUM");
   EXPECT_FALSE(fs::exists(d / "a.pdf"));
@@ -283,8 +291,10 @@ TEST(CaseReport, UndrawableDataCostsTheFigureNotTheReport) {
   auto info = hostile_info("pendulum");
   json r = synthetic_results(info);
   // every kinetic energy unknown: that plot has nothing finite on one curve, the page stays
-  for (auto& v : r["pendulum"]["series"]["q_rad"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
-  for (auto& v : r["pendulum"]["series"]["qd_rad_s"]) v = json::array({nullptr, nullptr, nullptr, nullptr});
+  for (auto& v : r["pendulum"]["series"]["q_rad"])
+    v = json::array({nullptr, nullptr, nullptr, nullptr});
+  for (auto& v : r["pendulum"]["series"]["qd_rad_s"])
+    v = json::array({nullptr, nullptr, nullptr, nullptr});
   const fs::path d = fresh_dir("undrawable");
   ASSERT_NO_THROW(write_case_report(d, info, r, sections_of(info), answer_of(info)));
   const std::string html = slurp(d / "index.html");

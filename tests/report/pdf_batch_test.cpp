@@ -81,9 +81,10 @@ TEST(PdfBatch, ABrowserWithoutTheProtocolPrintsPageByPage) {
   const fs::path d = armstudy::testing::fresh_dir("pdf_batch_fallback");
   const fs::path log = d / "starts.log";
   setenv("ARMSTUDY_CHROMIUM",
-         wrapper(d, log,
-                 "out=''\nfor a in \"$@\"; do case $a in --print-to-pdf=*) out=${a#--print-to-pdf=} ;; "
-                 "esac; done\n[ -n \"$out\" ] || exit 0\nprintf '%%PDF-1.4\\n%%%%EOF\\n' > \"$out\"")
+         wrapper(
+             d, log,
+             "out=''\nfor a in \"$@\"; do case $a in --print-to-pdf=*) out=${a#--print-to-pdf=} ;; "
+             "esac; done\n[ -n \"$out\" ] || exit 0\nprintf '%%PDF-1.4\\n%%%%EOF\\n' > \"$out\"")
              .c_str(),
          1);
   const std::vector<PdfJob> jobs = pages(d, 3);

@@ -4,10 +4,10 @@
 
 #include "testing/files.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <algorithm>
 #include <regex>
 #include <sstream>
 
@@ -17,7 +17,9 @@ namespace fs = std::filesystem;
 
 using armstudy::testing::slurp;
 
-fs::path test_dir(const std::string& name) { return armstudy::testing::fresh_dir("plot_test_" + name); }
+fs::path test_dir(const std::string& name) {
+  return armstudy::testing::fresh_dir("plot_test_" + name);
+}
 
 LinePlot sine_plot() {
   LinePlot p;
@@ -104,9 +106,12 @@ ShadedMap annulus_map() {
       const double y = m.y_min + (m.y_max - m.y_min) * j / (m.ny - 1);
       const double r = std::hypot(x, y);
       const size_t k = static_cast<size_t>(j) * m.nx + i;
-      if (r > 0.9 || r < 0.2) out.mask[k] = 1;
-      else if (r < 0.3) sing.mask[k] = 1;
-      else m.z[k] = 1.0 + (x - 0.4) * (x - 0.4) + y * y;
+      if (r > 0.9 || r < 0.2)
+        out.mask[k] = 1;
+      else if (r < 0.3)
+        sing.mask[k] = 1;
+      else
+        m.z[k] = 1.0 + (x - 0.4) * (x - 0.4) + y * y;
     }
   m.regions = {out, sing};
   Series line;

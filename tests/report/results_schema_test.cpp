@@ -29,8 +29,10 @@ size_t value_end(const std::string& text, size_t at) {
   for (size_t i = at; i < text.size(); ++i) {
     const char c = text[i];
     if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
     } else if (c == '"') {
       in_string = true;
     } else if (c == '{' || c == '[') {
@@ -77,7 +79,8 @@ TEST(ResultsSchema, TheSharedRecordIsItsTypedSchema) {
   const bool write = std::getenv("ARMSTUDY_WRITE_SCHEMA") != nullptr;
   const json want = shared_schema();
   if (write) {
-    for (const auto& [key, value] : want["properties"].items()) text = with_section(text, key, value);
+    for (const auto& [key, value] : want["properties"].items())
+      text = with_section(text, key, value);
     text = with_section(text, "required", want["required"], "  ");
     text = with_section(text, "allOf", want["allOf"], "  ");
     std::ofstream(kSchema) << text;
@@ -86,7 +89,8 @@ TEST(ResultsSchema, TheSharedRecordIsItsTypedSchema) {
   const char* regenerate =
       "results.schema.json does not describe the record the code writes; regenerate it with "
       "ARMSTUDY_WRITE_SCHEMA=1 build/tests/report_tests --gtest_filter=ResultsSchema.*";
-  for (const auto& [key, value] : want["properties"].items()) EXPECT_EQ(file["properties"][key], value) << key << ": " << regenerate;
+  for (const auto& [key, value] : want["properties"].items())
+    EXPECT_EQ(file["properties"][key], value) << key << ": " << regenerate;
   EXPECT_EQ(file["required"], want["required"]) << regenerate;
   EXPECT_EQ(file["allOf"], want["allOf"]) << regenerate;
   // nothing else at the top: the record's keys and one section per study
@@ -103,14 +107,16 @@ TEST(ResultsSchema, AnotherSchemaVersionIsAClearError) {
   json j = write_record(r);
   EXPECT_EQ(j["schema_version"], kSchemaVersion);
   EXPECT_NO_THROW(read_record(j));
-  for (const json v : {json(kSchemaVersion - 1), json(kSchemaVersion + 1), json("2"), json(nullptr)}) {
+  for (const json v :
+       {json(kSchemaVersion - 1), json(kSchemaVersion + 1), json("2"), json(nullptr)}) {
     j["schema_version"] = v;
     try {
       read_record(j);
       FAIL() << v;
     } catch (const ResultsError& e) {
       EXPECT_EQ(e.path(), "/schema_version");
-      EXPECT_NE(std::string(e.what()).find("schema_version " + v.dump() + " is not one this armstudy reads (" +
+      EXPECT_NE(std::string(e.what()).find("schema_version " + v.dump() +
+                                           " is not one this armstudy reads (" +
                                            std::to_string(kSchemaVersion) + ")"),
                 std::string::npos)
           << e.what();
@@ -170,7 +176,8 @@ TEST(ResultsSchema, EveryStudySectionIsItsTypedResultsSchema) {
 TEST(ResultsSchema, StudySectionsAdmitNoOtherKeyAndNameEveryUnit) {
   for (const app::StudyEntry& e : app::study_registry()) {
     int objects = 0, units = 0;
-    std::function<void(const json&, const std::string&)> walk = [&](const json& s, const std::string& path) {
+    std::function<void(const json&, const std::string&)> walk = [&](const json& s,
+                                                                    const std::string& path) {
       if (!s.is_object()) return;
       if (s.value("type", json()) == "object") {
         ++objects;
@@ -179,7 +186,8 @@ TEST(ResultsSchema, StudySectionsAdmitNoOtherKeyAndNameEveryUnit) {
           EXPECT_TRUE(v.contains("description")) << e.study << path << "/" << k;
           if (!unit_of_key(k).empty()) {
             ++units;
-            EXPECT_NE(v.value("description", std::string()).find("unit: " + unit_of_key(k)), std::string::npos)
+            EXPECT_NE(v.value("description", std::string()).find("unit: " + unit_of_key(k)),
+                      std::string::npos)
                 << e.study << path << "/" << k;
           }
           walk(v, path + "/" + k);

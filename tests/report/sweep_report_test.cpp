@@ -18,7 +18,9 @@ using nlohmann::json;
 
 using armstudy::testing::slurp;
 
-fs::path fresh_dir(const std::string& name) { return armstudy::testing::fresh_dir("sweep_report_test_" + name); }
+fs::path fresh_dir(const std::string& name) {
+  return armstudy::testing::fresh_dir("sweep_report_test_" + name);
+}
 
 // ratio in {0.2, 0.4, 0.6} x fraction in {0.5, 0.8}; one case failed
 json table() {
@@ -54,7 +56,8 @@ TEST(SweepReport, DrawsEveryKeyFigureOverTheNumericAxisInTheStudysOrder) {
   EXPECT_LT(root, energy);
   const std::regex img("<img src=\"([^\"]+)\"");
   int images = 0;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), img); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), img); it != std::sregex_iterator();
+       ++it) {
     EXPECT_TRUE(fs::exists(dir / (*it)[1].str())) << (*it)[1].str();
     ++images;
   }
@@ -67,7 +70,8 @@ TEST(SweepReport, DrawsEveryKeyFigureOverTheNumericAxisInTheStudysOrder) {
 
 TEST(SweepReport, WithoutANumericParameterSaysSoAndDrawsNothing) {
   json t = table();
-  for (auto& r : t["rows"]) r["parameters"]["arm.ratio"] = "a" + r["parameters"]["arm.ratio"].get<std::string>();
+  for (auto& r : t["rows"])
+    r["parameters"]["arm.ratio"] = "a" + r["parameters"]["arm.ratio"].get<std::string>();
   for (auto& r : t["rows"]) r["parameters"]["task.fraction"] = json::array({1, 2});
   const fs::path dir = fresh_dir("none");
   EXPECT_EQ(write_sweep_report(dir, t, "no-axis"), 0);

@@ -19,8 +19,8 @@
 #include "scene/pendulum_frames.hpp"
 #include "scene/time_optimal_frames.hpp"
 #include "studies/pendulum/solve.hpp"
-#include "studies/tray_arm.hpp"
 #include "studies/time_optimal/solve.hpp"
+#include "studies/tray_arm.hpp"
 #include "testing/three_link.hpp"
 
 namespace armstudy::scene {
@@ -29,7 +29,8 @@ namespace fs = std::filesystem;
 namespace to = studies::time_optimal;
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("armstudy_" + name + "_" + std::to_string(getpid()));
+  const fs::path d =
+      fs::temp_directory_path() / ("armstudy_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
   return d;
@@ -41,8 +42,11 @@ void expect_case_inertials(const core::PlanarChain& chain, const mjModel* m) {
     const int b = mj_name2id(m, mjOBJ_BODY, ("link" + std::to_string(i + 1)).c_str());
     ASSERT_GE(b, 0) << "link" << i + 1;
     const LinkInertial in = combined_inertial(chain, i);
-    EXPECT_NEAR(m->body_mass[b], std::max(in.mass, kMinMjcfMass), 1e-15 * std::max(1.0, in.mass)) << i;
-    EXPECT_NEAR(m->body_inertia[3 * b + 2], std::max(in.izz, kMinMjcfInertia), 1e-15 * std::max(1.0, in.izz)) << i;
+    EXPECT_NEAR(m->body_mass[b], std::max(in.mass, kMinMjcfMass), 1e-15 * std::max(1.0, in.mass))
+        << i;
+    EXPECT_NEAR(m->body_inertia[3 * b + 2], std::max(in.izz, kMinMjcfInertia),
+                1e-15 * std::max(1.0, in.izz))
+        << i;
     EXPECT_NEAR(m->body_ipos[3 * b + 0], in.com_x, 1e-15) << i;
     EXPECT_NEAR(m->body_ipos[3 * b + 1], in.com_y, 1e-15) << i;
   }
@@ -72,7 +76,8 @@ TEST(ChainExportsMujoco, SevenLinkJointSpaceLineSolvesAndMujocoAgrees) {
   // the longest chain armstudy builds: a vertical 7-link arm with point masses, along a
   // joint-space line; its generated MJCF has 7 hinges and MuJoCo's inverse dynamics agree
   core::PlanarChain c;
-  for (int i = 0; i < core::kMaxLinks; ++i) c.links.push_back({0.15, 0.4 - 0.04 * i, 0.07, 0.01, 1e-3, true});
+  for (int i = 0; i < core::kMaxLinks; ++i)
+    c.links.push_back({0.15, 0.4 - 0.04 * i, 0.07, 0.01, 1e-3, true});
   c.point_masses = {{6, 0.15, 0.0, 0.2}};
   c.gravity = 9.81;
   to::Spec spec;
@@ -92,7 +97,8 @@ TEST(ChainExportsMujoco, SevenLinkJointSpaceLineSolvesAndMujocoAgrees) {
   spec.complex.enabled = false;
   const to::Result r = to::solve(spec);
   ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
-  for (const studies::Check& ch : to::checks(r)) EXPECT_TRUE(ch.passed) << ch.name << ": " << ch.value;
+  for (const studies::Check& ch : to::checks(r))
+    EXPECT_TRUE(ch.passed) << ch.name << ": " << ch.value;
   const to::MotionSamples& s = r.solvers.front().samples;
   ASSERT_EQ(s.q.rows(), 7);
   std::vector<core::JointVector> q, qd, qdd, tau;
@@ -118,7 +124,8 @@ TEST(ChainExportsMujoco, ModelXmlHasTheCasesInertialsAndKeyframesAtTheStripsPose
   const std::vector<PoseSample> keys = strip_keyframes(time_optimal_motion(r), options.frames);
   ASSERT_EQ(keys.size(), 6u);
   const fs::path dir = temp_dir("model_xml");
-  EXPECT_EQ(write_model_xml(dir, sc.chain, sc.mjcf, keys, "the exact solution", "test"), "model.xml");
+  EXPECT_EQ(write_model_xml(dir, sc.chain, sc.mjcf, keys, "the exact solution", "test"),
+            "model.xml");
 
   MujocoModel mm = MujocoModel::from_file((dir / "model.xml").string());  // mj_loadXML
   const mjModel* m = mm.model();
@@ -135,12 +142,14 @@ TEST(ChainExportsMujoco, ModelXmlHasTheCasesInertialsAndKeyframesAtTheStripsPose
     const size_t n = r.motion_t.size();
     size_t i = 0;
     while (i + 2 < n && r.motion_t[i + 1] < t) ++i;
-    const double w = std::clamp((t - r.motion_t[i]) / (r.motion_t[i + 1] - r.motion_t[i]), 0.0, 1.0);
+    const double w =
+        std::clamp((t - r.motion_t[i]) / (r.motion_t[i + 1] - r.motion_t[i]), 0.0, 1.0);
     const core::JointVector q = (1 - w) * r.motion_q.col(i) + w * r.motion_q.col(i + 1);
     // MuJoCo's arm at key k: the same joint angles and the same tip
     mj_resetDataKeyframe(m, mm.data(), k);
     mj_forward(m, mm.data());
-    for (int j = 0; j < 3; ++j) EXPECT_NEAR(mm.data()->qpos[j], q[j], 1e-12) << "key " << k << " joint " << j;
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(mm.data()->qpos[j], q[j], 1e-12) << "key " << k << " joint " << j;
     const Eigen::Vector2d p = core::end_effector(spec.chain, q);
     EXPECT_NEAR(mm.data()->site_xpos[3 * tip + 0], p.x(), 1e-12) << k;
     EXPECT_NEAR(mm.data()->site_xpos[3 * tip + 1], p.y(), 1e-12) << k;

@@ -55,8 +55,8 @@ void expect_faithful(const DynamicReplay& r, const std::string& what) {
   EXPECT_LE(r.max_deviation, r.tolerance) << what << " at t = " << r.max_deviation_t << " s";
   EXPECT_TRUE(replay_check(r, "mujoco_dynamic_replay", what).passed) << what;
   // the deviation is the torque hold's second-order error: about 4x at twice the step
-  EXPECT_GT(r.observed_order, 1.5) << what << ": " << r.coarse_max_deviation << " at 2h, "
-                                   << r.max_deviation << " at h";
+  EXPECT_GT(r.observed_order, 1.5)
+      << what << ": " << r.coarse_max_deviation << " at 2h, " << r.max_deviation << " at h";
   // the simulated motion covers the plan: recorded from start to end
   ASSERT_GE(r.t.size(), 100u);
   EXPECT_NEAR(r.t.back(), r.duration, 1e-9 * r.duration) << what;
@@ -65,9 +65,12 @@ void expect_faithful(const DynamicReplay& r, const std::string& what) {
   ::testing::Test::RecordProperty(what + "_max_deviation_rad", b);
 }
 
-TEST_F(DynamicReplayMujoco, EveryBundledTimeOptimalPlanReplaysWithinItsToleranceAndAWrongTorqueFails) {
-  for (const char* name : {"time-optimal-source", "time-optimal-spline", "time-optimal-nonmonotonic"}) {
-    to::Spec spec = load_bundled(name, [](cases::Map& root) { return cases::load_time_optimal(root); });
+TEST_F(DynamicReplayMujoco,
+       EveryBundledTimeOptimalPlanReplaysWithinItsToleranceAndAWrongTorqueFails) {
+  for (const char* name :
+       {"time-optimal-source", "time-optimal-spline", "time-optimal-nonmonotonic"}) {
+    to::Spec spec =
+        load_bundled(name, [](cases::Map& root) { return cases::load_time_optimal(root); });
     // only the exact solution is replayed: the other solvers are not needed here
     spec.dp.states = {};
     spec.dp.convergence_segments = {};
@@ -84,10 +87,12 @@ TEST_F(DynamicReplayMujoco, EveryBundledTimeOptimalPlanReplaysWithinItsTolerance
   }
 }
 
-TEST_F(DynamicReplayMujoco, EveryBundledPlacementOptimumReplaysWithinItsToleranceAndAWrongTorqueFails) {
+TEST_F(DynamicReplayMujoco,
+       EveryBundledPlacementOptimumReplaysWithinItsToleranceAndAWrongTorqueFails) {
   for (int n = 1; n <= 5; ++n) {
     const std::string name = "placement-example-" + std::to_string(n);
-    pl::Spec spec = load_bundled(name, [](cases::Map& root) { return cases::load_placement(root); });
+    pl::Spec spec =
+        load_bundled(name, [](cases::Map& root) { return cases::load_placement(root); });
     // the bundled arm, line, duration and programs on a coarser sweep (seconds, not minutes):
     // the optima move a little, the motions replayed are of the same kind
     spec.nx_s = 12;

@@ -46,10 +46,10 @@ TEST(Frames, TilePlacesFramesInRowsWithGaps) {
   const Image out = tile(tiles, 3, 2, {255, 255, 255});
   EXPECT_EQ(out.width, 3 * 4 + 4 * 2);
   EXPECT_EQ(out.height, 2 * 3 + 3 * 2);
-  EXPECT_EQ(out.at(2, 2).r, 255);                       // first tile
-  EXPECT_EQ(out.at(2 + 4 + 2, 2).g, 255);               // second
-  EXPECT_EQ(out.at(2, 2 + 3 + 2).r, 9);                 // fourth, second row
-  EXPECT_EQ(out.at(0, 0).g, 255);                       // background gap
+  EXPECT_EQ(out.at(2, 2).r, 255);          // first tile
+  EXPECT_EQ(out.at(2 + 4 + 2, 2).g, 255);  // second
+  EXPECT_EQ(out.at(2, 2 + 3 + 2).r, 9);    // fourth, second row
+  EXPECT_EQ(out.at(0, 0).g, 255);          // background gap
   EXPECT_THROW(tile({Image(4, 3), Image(5, 3)}, 2, 1, {}), SceneError);
 }
 

@@ -26,8 +26,7 @@ template <typename A, typename B>
   const double d = (a - b).cwiseAbs().maxCoeff();
   if (d <= tol * scale) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "[" << a.transpose() << "] vs [" << b.transpose()
-                                       << "]: max |delta| " << d << " > " << tol << " x "
-                                       << scale;
+                                       << "]: max |delta| " << d << " > " << tol << " x " << scale;
 }
 
 // fails on any MuJoCo warning (MujocoTest fixture)
@@ -67,7 +66,9 @@ struct Motion {
   core::JointVector a, w, p;
   void at(double t, core::JointVector* q, core::JointVector* qd, core::JointVector* qdd) const {
     const int n = static_cast<int>(a.size());
-    q->resize(n); qd->resize(n); qdd->resize(n);
+    q->resize(n);
+    qd->resize(n);
+    qdd->resize(n);
     for (int i = 0; i < n; ++i) {
       (*q)[i] = a[i] * std::sin(w[i] * t + p[i]);
       (*qd)[i] = a[i] * w[i] * std::cos(w[i] * t + p[i]);
@@ -79,8 +80,14 @@ struct Motion {
 Motion random_motion(std::mt19937& rng, int n) {
   std::uniform_real_distribution<double> amp(0.3, 2.0), freq(1.0, 8.0), phase(0.0, 6.28);
   Motion m;
-  m.a.resize(n); m.w.resize(n); m.p.resize(n);
-  for (int i = 0; i < n; ++i) { m.a[i] = amp(rng); m.w[i] = freq(rng); m.p[i] = phase(rng); }
+  m.a.resize(n);
+  m.w.resize(n);
+  m.p.resize(n);
+  for (int i = 0; i < n; ++i) {
+    m.a[i] = amp(rng);
+    m.w[i] = freq(rng);
+    m.p[i] = phase(rng);
+  }
   return m;
 }
 
@@ -126,10 +133,9 @@ TEST_F(MujocoTest, MassMatrixProjectsExactlyOntoTheChain) {
       mj_fullM(mm.model(), M.data(), mm.data()->qM);
       const Eigen::MatrixXd Mc = map.jacobian().transpose() * M * map.jacobian();
       const core::JointMatrix Mcore = core::mass_matrix(arm.chain, q);
-      ASSERT_TRUE(near_scaled(Eigen::Map<const Eigen::VectorXd>(Mc.data(), n * n),
-                              Eigen::Map<const Eigen::VectorXd>(Eigen::MatrixXd(Mcore).data(),
-                                                                n * n),
-                              1e-10));
+      ASSERT_TRUE(near_scaled(
+          Eigen::Map<const Eigen::VectorXd>(Mc.data(), n * n),
+          Eigen::Map<const Eigen::VectorXd>(Eigen::MatrixXd(Mcore).data(), n * n), 1e-10));
     }
   }
 }

@@ -60,7 +60,11 @@ Expected expected(const core::PlanarChain& c, int i) {
   double mx = l.mass * l.com, my = l.mass * l.com_lateral;
   e.mass = l.mass;
   for (const auto& p : c.point_masses)
-    if (p.link == i) { e.mass += p.mass; mx += p.mass * p.x; my += p.mass * p.y; }
+    if (p.link == i) {
+      e.mass += p.mass;
+      mx += p.mass * p.x;
+      my += p.mass * p.y;
+    }
   e.cx = mx / e.mass;
   e.cy = my / e.mass;
   e.izz = l.inertia + l.mass * (std::pow(l.com - e.cx, 2) + std::pow(l.com_lateral - e.cy, 2));
@@ -90,7 +94,8 @@ TEST(Models, LoadedFromDiskTheyCarryTheCasesMassesCentresAndInertias) {
       EXPECT_NEAR(mj->body_ipos[3 * b + 1], e.cy, 1e-15) << name;
       // the hinge's axis z is a principal axis; MuJoCo stores the diagonal
       EXPECT_NEAR(mj->body_inertia[3 * b + 2], std::max(e.izz, kMinMjcfInertia),
-                  1e-14 * std::max(e.izz, 1e-12)) << name;
+                  1e-14 * std::max(e.izz, 1e-12))
+          << name;
       total += e.mass;
     }
     EXPECT_NEAR(mj->body_subtreemass[0], total, 1e-12 * total);

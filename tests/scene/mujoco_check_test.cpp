@@ -55,12 +55,14 @@ TEST(MujocoCheck, WrongTorquesOrAccelerationsFailTheCheck) {
   const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
   Motion bad_tau = m;
   bad_tau.tau[40][1] *= 1.001;
-  const MujocoAgreement a = mujoco_agreement(chain, bad_tau.q, bad_tau.qd, bad_tau.qdd, bad_tau.tau);
+  const MujocoAgreement a =
+      mujoco_agreement(chain, bad_tau.q, bad_tau.qd, bad_tau.qdd, bad_tau.tau);
   EXPECT_FALSE(mujoco_checks(a, true)[0].passed);
   EXPECT_EQ(a.worst_sample, 40);
   Motion bad_qdd = m;
   bad_qdd.qdd[30][3] += 0.01 * std::abs(bad_qdd.qdd[30][3]) + 1.0;
-  const MujocoAgreement b = mujoco_agreement(chain, bad_qdd.q, bad_qdd.qd, bad_qdd.qdd, bad_qdd.tau);
+  const MujocoAgreement b =
+      mujoco_agreement(chain, bad_qdd.q, bad_qdd.qd, bad_qdd.qdd, bad_qdd.tau);
   EXPECT_FALSE(mujoco_checks(b, true)[1].passed);
 }
 

@@ -93,8 +93,8 @@ TEST(PendulumMujoco, ConservesEnergyAndFollowsCoreOverTwoSeconds) {
     const core::JointVector q = map.chain_q(mm.data()), qd = map.chain_qd(mm.data());
     max_kinetic = std::max(max_kinetic, core::kinetic_energy(chain, q, qd));
     worst_e = std::max(worst_e, std::abs(energy(chain, q, qd) - e0));
-    worst_mj_e = std::max(worst_mj_e, std::abs(mm.data()->energy[0] + mm.data()->energy[1] -
-                                                   mj_e0));
+    worst_mj_e =
+        std::max(worst_mj_e, std::abs(mm.data()->energy[0] + mm.data()->energy[1] - mj_e0));
     worst_q = std::max(worst_q, (q - s.q).cwiseAbs().maxCoeff());
     swing = std::max(swing, std::abs(q[1] - (-core::kPi / 5)));
   }
@@ -125,7 +125,10 @@ core::PlanarChain lock_first_joints(const core::PlanarChain& chain, const core::
   const int n = chain.num_links();
   for (int i = k; i < n; ++i) c.links.push_back(chain.links[i]);
   for (core::PointMass p : chain.point_masses)
-    if (p.link >= k) { p.link -= k; c.point_masses.push_back(p); }
+    if (p.link >= k) {
+      p.link -= k;
+      c.point_masses.push_back(p);
+    }
   for (const core::SpinningInertia& s : chain.spinners) {
     core::SpinningInertia t;
     t.inertia = s.inertia;

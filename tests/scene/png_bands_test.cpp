@@ -14,8 +14,9 @@ TEST(PngBands, ALargeImageOnThreeThreadsDecodesToTheSamePixels) {
   Image img(1000, 1500);  // 4.5 MB: banded
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
-      img.set(x, y, Rgb{static_cast<std::uint8_t>(x * 7 + y), static_cast<std::uint8_t>((x / 50) * 20),
-                        static_cast<std::uint8_t>(y % 3 == 0 ? 255 : x ^ y)});
+      img.set(x, y,
+              Rgb{static_cast<std::uint8_t>(x * 7 + y), static_cast<std::uint8_t>((x / 50) * 20),
+                  static_cast<std::uint8_t>(y % 3 == 0 ? 255 : x ^ y)});
   const std::string one = encode_png(img, 1), three = encode_png(img, 3);
   EXPECT_NE(one, three) << "expected the banded encoder";
   const auto dir = armstudy::testing::fresh_dir("png_bands");

@@ -75,7 +75,8 @@ TEST(Polyline, TheTableSceneDrawsASampledArcAsFewSegments) {
   size_t segments = 0;
   for (size_t at = s.mjcf.find("name=\"task"); at != std::string::npos;
        at = s.mjcf.find("name=\"task", at + 1))
-    segments += s.mjcf.compare(at, 12, "name=\"task_s") != 0 && s.mjcf.compare(at, 12, "name=\"task_e") != 0;
+    segments += s.mjcf.compare(at, 12, "name=\"task_s") != 0 &&
+                s.mjcf.compare(at, 12, "name=\"task_e") != 0;
   EXPECT_GE(segments, 4u);
   EXPECT_LE(segments, 100u);
 }

@@ -127,7 +127,8 @@ TEST(Renderer, StripOnTwoThreadsEqualsTheStripOnOne) {
     SceneRenderer two(line_scene(m), "line", RenderSettings{});
     two.set_strip_threads(2);
     for (int run = 0; run < 2; ++run)
-      EXPECT_TRUE(encode_png(two.strip(samples, "one thread", 3)) == ref) << frames << " frames, run " << run;
+      EXPECT_TRUE(encode_png(two.strip(samples, "one thread", 3)) == ref)
+          << frames << " frames, run " << run;
   }
 }
 
@@ -144,7 +145,8 @@ TEST(Renderer, LocusDrawsOlderPosesFainterAndThePath) {
   const double top = 3 * 0.04 * 0.4;
   const Eigen::Vector2d mid = path[30];
   const Eigen::Vector2d pm = sr.renderer().project(Eigen::Vector3d(mid.x(), mid.y(), top));
-  const Rgb c = img.at(static_cast<int>(std::lround(pm.x())), static_cast<int>(std::lround(pm.y())));
+  const Rgb c =
+      img.at(static_cast<int>(std::lround(pm.x())), static_cast<int>(std::lround(pm.y())));
   EXPECT_LT(c.r + c.g + c.b, 3 * 100) << int(c.r) << "," << int(c.g) << "," << int(c.b);
   // around the first payload: a faint orange (blended toward white); around the last: full
   auto count_near = [&](const Eigen::Vector2d& p, auto pred) {
@@ -153,10 +155,13 @@ TEST(Renderer, LocusDrawsOlderPosesFainterAndThePath) {
     const int rad = static_cast<int>(0.02 / sr.renderer().metres_per_pixel());
     for (int y = -rad; y <= rad; ++y)
       for (int x = -rad; x <= rad; ++x)
-        if (pred(img.at(static_cast<int>(centre.x()) + x, static_cast<int>(centre.y()) + y))) ++hits;
+        if (pred(img.at(static_cast<int>(centre.x()) + x, static_cast<int>(centre.y()) + y)))
+          ++hits;
     return hits;
   };
-  auto faint_orange = [](Rgb q) { return q.r > 235 && q.g > 175 && q.g < 235 && q.b > 110 && q.b < q.g - 20; };
+  auto faint_orange = [](Rgb q) {
+    return q.r > 235 && q.g > 175 && q.g < 235 && q.b > 110 && q.b < q.g - 20;
+  };
   auto full_orange = [](Rgb q) { return q.r > 200 && q.g > 100 && q.g < 175 && q.b < 70; };
   const Eigen::Vector2d first_tip = core::end_effector(m.chain, poses.front().q);
   const Eigen::Vector2d last_tip = core::end_effector(m.chain, poses.back().q);

@@ -66,7 +66,7 @@ TEST(StudyFrames, PendulumSnapshotsShowTheBallWhereKinematicsPutsIt) {
     const Image img = sr.frame({r.t[i], r.q[i], r.qd[i]}, {});
     const Eigen::Vector2d b = r.ball[i];
     // a point of the ball beside its white stripe
-    const Eigen::Vector2d px = sr.renderer().project(Eigen::Vector3d(b.x(), b.y() , 0));
+    const Eigen::Vector2d px = sr.renderer().project(Eigen::Vector3d(b.x(), b.y(), 0));
     int red = 0;
     for (int dy = -6; dy <= 6; ++dy)
       for (int dx = -6; dx <= 6; ++dx)

@@ -102,8 +102,9 @@ void replay_in_mujoco(st::Motor2Mount mount) {
   // stated tolerance: 5e-3 rad on every coordinate (the rolling equality is stiff but soft,
   // and the applied torque is held over each MuJoCo step)
   EXPECT_LT(worst, 5e-3) << "at t = " << worst_t << " s";
-  ::testing::Test::RecordProperty(mount == st::Motor2Mount::kOnBase ? "max_q_delta_rad_on_base" : "max_q_delta_rad",
-                 sci(worst));
+  ::testing::Test::RecordProperty(
+      mount == st::Motor2Mount::kOnBase ? "max_q_delta_rad_on_base" : "max_q_delta_rad",
+      sci(worst));
   EXPECT_EQ(take_mujoco_warnings(), "");
 }
 

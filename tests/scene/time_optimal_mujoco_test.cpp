@@ -50,7 +50,8 @@ TEST(TimeOptimalMujoco, ExactSolutionTorquesAreMujocosInverseDynamicsAndThePathP
     EXPECT_LT(projection_error, 1e-9 * scale) << "configuration " << configuration;
     const MujocoAgreement a = mujoco_agreement(spec.chain, q, qd, qdd, tau);
     EXPECT_EQ(a.samples, static_cast<int>(m.t.size()));
-    EXPECT_LT(a.torque_rel, 1e-9) << "configuration " << configuration << ", sample " << a.worst_sample;
+    EXPECT_LT(a.torque_rel, 1e-9) << "configuration " << configuration << ", sample "
+                                  << a.worst_sample;
   }
 }
 

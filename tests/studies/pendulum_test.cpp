@@ -68,7 +68,8 @@ TEST(Pendulum, SmallSwingsHaveTheLinearisedPeriods) {
     qp[2 + j] += d;
     qm[2 + j] -= d;
     const core::JointVector z = core::JointVector::Zero(4);
-    K.col(j) = (core::bias_forces(chain, qp, z) - core::bias_forces(chain, qm, z)).tail(2) / (2 * d);
+    K.col(j) =
+        (core::bias_forces(chain, qp, z) - core::bias_forces(chain, qm, z)).tail(2) / (2 * d);
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> es(K, Eigen::Matrix2d(M));
   const Eigen::Vector2d w = es.eigenvalues().cwiseSqrt();

@@ -59,7 +59,8 @@ TEST(PlacementArm2, SampleEqualsCoreIkAndInverseDynamics) {
         EXPECT_TRUE(near_rel(o.s1, std::sin(st->q[0]), 1e-12));
         EXPECT_TRUE(near_rel_vec(Eigen::Vector2d(o.qd1, o.qd2), st->qd, 1e-9));
         EXPECT_TRUE(near_rel_vec(Eigen::Vector2d(o.qdd1, o.qdd2), st->qdd, 1e-9));
-        EXPECT_TRUE(near_rel_vec(Eigen::Vector2d(o.tau1, o.tau2), Eigen::Vector2d(tau[0], tau[1]), 1e-9))
+        EXPECT_TRUE(
+            near_rel_vec(Eigen::Vector2d(o.tau1, o.tau2), Eigen::Vector2d(tau[0], tau[1]), 1e-9))
             << "config " << config << " p " << p.transpose();
       }
     }
@@ -141,7 +142,9 @@ TEST(PlacementArm2, BlockedEvaluatorEqualsTheScalarReference) {
       for (const int config : {1, 2}) {
         const LineMetrics a = evaluate_line(arm, table, line, config);
         const LineMetrics b = evaluate_line_scalar(arm, table, line, config);
-        const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+        const auto same = [](double x, double y) {
+          return x == y || (std::isnan(x) && std::isnan(y));
+        };
         ASSERT_TRUE(same(a.energy, b.energy)) << n << " " << a.energy << " " << b.energy;
         ASSERT_TRUE(same(a.signed_work, b.signed_work));
         ASSERT_TRUE(same(a.energy_coarse, b.energy_coarse));

@@ -39,7 +39,8 @@ void consider(const Spec& s, const Arm2& arm, const ProgramTable& t, int config,
               Fine& best) {
   if (!(x > 0)) return;
   const Candidate c = evaluate_candidate(s, arm, t, config, x, p);
-  if (c.status == CandidateStatus::kFeasible && c.metrics.energy < best.energy) best = {c.metrics.energy, x, p};
+  if (c.status == CandidateStatus::kFeasible && c.metrics.energy < best.energy)
+    best = {c.metrics.energy, x, p};
 }
 
 // a fine constrained search around the sweep's optimum (x0, p0), independent of the
@@ -64,11 +65,15 @@ Fine fine_constrained_search(const Spec& s, const Arm2& arm, const ProgramTable&
     if (b.energy < best.energy) best = b;
   }
   const Annulus an = annulus(arm.L1, arm.L2);
-  const double ri = an.inner + s.singularity_margin, ro = an.outer - s.singularity_margin, L = s.length;
+  const double ri = an.inner + s.singularity_margin, ro = an.outer - s.singularity_margin,
+               L = s.length;
   const std::function<double(double)> families[] = {
       [&](double p) { return ri / std::sin(p); },  // tangent to the inner circle + margin
-      [&](double p) { (void)p; return ro; },       // start on the outer circle - margin
-      [&](double p) {                              // end on the outer circle - margin
+      [&](double p) {
+        (void)p;
+        return ro;
+      },               // start on the outer circle - margin
+      [&](double p) {  // end on the outer circle - margin
         const double d = ro * ro - L * L * std::sin(p) * std::sin(p);
         return d < 0 ? -1.0 : -L * std::cos(p) + std::sqrt(d);
       }};
@@ -113,13 +118,15 @@ TEST(PlacementRefine, ConstrainedRefinementEqualsAFineConstrainedSearch) {
     const Arm2 arm = make_arm2(s.chain);
     const ProgramTable t = make_program_table(run.program, s.duration, s.length, s.samples);
     const double hx = (0.6 - annulus(0.4, 0.2).inner) / s.nx_s;
-    const Fine fine = fine_constrained_search(s, arm, t, run.configuration, pc.grid.x_s, pc.grid.phi,
-                                              3 * hx, 3 * std::max(s.phi_step, hx / pc.grid.x_s));
+    const Fine fine =
+        fine_constrained_search(s, arm, t, run.configuration, pc.grid.x_s, pc.grid.phi, 3 * hx,
+                                3 * std::max(s.phi_step, hx / pc.grid.x_s));
     const double e = pc.refined.metrics.energy;
-    std::printf("L = %.2f Lmax: refined %.12g J (%s, %d evaluations), fine search %.12g J, "
-                "relative difference %.2e\n",
-                run.fraction, e, binding_name(pc.decision.binding), pc.refine_evaluations,
-                fine.energy, (e - fine.energy) / fine.energy);
+    std::printf(
+        "L = %.2f Lmax: refined %.12g J (%s, %d evaluations), fine search %.12g J, "
+        "relative difference %.2e\n",
+        run.fraction, e, binding_name(pc.decision.binding), pc.refine_evaluations, fine.energy,
+        (e - fine.energy) / fine.energy);
     EXPECT_LE(std::abs(e - fine.energy) / fine.energy, 1e-7)
         << "L = " << run.fraction << " Lmax: refined " << e << " J at (" << pc.refined.x_s << ", "
         << pc.refined.phi / kDeg << " deg), fine search " << fine.energy << " J at (" << fine.x_s
@@ -149,7 +156,8 @@ TEST(PlacementRefine, MarginBoundOptimumSaysSoAndFallsWithTheMargin) {
       EXPECT_GE(b.optimum.boundary_distance, b.margin - 1e-12);
     }
   }
-  EXPECT_NE(r.message.find("set by the 0.0100 m clearance margin to the inner circle"), std::string::npos)
+  EXPECT_NE(r.message.find("set by the 0.0100 m clearance margin to the inner circle"),
+            std::string::npos)
       << r.message;
 }
 
@@ -209,7 +217,8 @@ TEST(PlacementRefine, SingularMotionsNeverYieldAnEnergyPeakOrSaving) {
   // the thesis's printed optimum tangent to the inner circle (root at Y = 0.2000 m), a line
   // starting on the outer circle (stretched elbow at rest), and a regular one
   const double tangent_phi = core::kPi - std::asin(0.2 / 0.36);
-  s.evaluations = {{"tangent", 0.36, tangent_phi}, {"outer-start", 0.6, 150 * kDeg},
+  s.evaluations = {{"tangent", 0.36, tangent_phi},
+                   {"outer-start", 0.6, 150 * kDeg},
                    {"regular", 0.5, 130 * kDeg}};
   const Result r = solve(s);
   ASSERT_EQ(r.evaluations.size(), 3u);
@@ -233,9 +242,9 @@ TEST(PlacementRefine, SingularMotionsNeverYieldAnEnergyPeakOrSaving) {
       const Eigen::Vector2d p = tangent.start + (s_star + (side ? eps : -eps)) * tangent.dir;
       qd2[side] = arm2_sample(arm, p.x(), p.y(), tangent.dir.x(), tangent.dir.y(), 0, 0, -1.0).qd2;
     }
-    EXPECT_LT(qd2[0] * qd2[1], 0.0) << eps;             // the elbow rate reverses
+    EXPECT_LT(qd2[0] * qd2[1], 0.0) << eps;  // the elbow rate reverses
     EXPECT_NEAR(std::abs(qd2[0]), std::abs(qd2[1]), 1e-3 * std::abs(qd2[0]));
-    EXPECT_GT(std::abs(qd2[0]), 1.0) << eps;            // by a step that does not shrink
+    EXPECT_GT(std::abs(qd2[0]), 1.0) << eps;  // by a step that does not shrink
   }
   const auto& rows = r.evaluations[1].candidate.convergence.rows;
   ASSERT_GE(rows.size(), 3u);
@@ -260,7 +269,8 @@ TEST(PlacementRefine, EveryOptimumHasItsOwnConvergenceAndCurveThroughItsOwnXs) {
     EXPECT_DOUBLE_EQ(pc.curve.x_s, pc.refined.x_s);
     bool through = false;
     for (size_t k = 0; k < pc.curve.phi.size(); ++k)
-      through |= pc.curve.phi[k] == pc.refined.phi && pc.curve.energy[k] == pc.refined.metrics.energy;
+      through |=
+          pc.curve.phi[k] == pc.refined.phi && pc.curve.energy[k] == pc.refined.metrics.energy;
     EXPECT_TRUE(through);
   }
 }

@@ -4,10 +4,10 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <cstdio>
 
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 json run_case_file(const std::string& yaml, studies::Status* status) {
-  const fs::path dir = fs::temp_directory_path() / ("armstudy_placement_json_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("armstudy_placement_json_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path file = dir / "case.yaml";
   std::ofstream(file) << yaml;
@@ -45,7 +46,8 @@ TEST(PlacementResultsJson, HoldsOptimaEvaluationsCountsAndLmaxAsSpecified) {
                         "thesis_rejected_by_exact_check", "exact_accepted_outside_thesis"})
     EXPECT_TRUE(j["geometry_counts"].contains(k)) << k;
   EXPECT_EQ(j["geometry_counts"]["total"].get<int>(),
-            j["geometry_counts"]["unreachable"].get<int>() + j["geometry_counts"]["singular"].get<int>() +
+            j["geometry_counts"]["unreachable"].get<int>() +
+                j["geometry_counts"]["singular"].get<int>() +
                 j["geometry_counts"]["clear"].get<int>());
   ASSERT_EQ(j["optima"].size(), 4u);
   for (const json& o : j["optima"]) {
@@ -119,7 +121,8 @@ struct Page {
 };
 
 Page run_and_render(const std::string& yaml, const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("armstudy_placement_page_" + name + "_" + std::to_string(::getpid()));
+  const fs::path dir = fs::temp_directory_path() /
+                       ("armstudy_placement_page_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path file = dir / "case.yaml";
@@ -143,9 +146,10 @@ TEST(PlacementResultsJson, AMarginBoundOptimumSaysSoInResultsAndOnThePage) {
   char tangent[64];
   std::snprintf(tangent, sizeof tangent, "%.12f", 180.0 - std::asin(0.2 / 0.36) * 180 / M_PI);
   const Page p = run_and_render(
-      std::string("study: placement\nname: margin-page\nplacement:\n  length_fraction: 0.5\n"
-                  "  programs: [cycloidal]\n  configurations: [1]\n  nx_s: 16\n  phi_step_deg: 3\n"
-                  "  map: {nx: 8, ny: 4}\n  evaluate:\n    - {label: tangent, x_s_m: 0.36, phi_deg: ") +
+      std::string(
+          "study: placement\nname: margin-page\nplacement:\n  length_fraction: 0.5\n"
+          "  programs: [cycloidal]\n  configurations: [1]\n  nx_s: 16\n  phi_step_deg: 3\n"
+          "  map: {nx: 8, ny: 4}\n  evaluate:\n    - {label: tangent, x_s_m: 0.36, phi_deg: ") +
           tangent + "}\n",
       "margin");
   const json& pl = p.results["placement"];
@@ -165,8 +169,10 @@ TEST(PlacementResultsJson, AMarginBoundOptimumSaysSoInResultsAndOnThePage) {
     EXPECT_GT(m["energy_J"].get<double>(), last) << m["margin_m"];  // falls as the margin shrinks
     last = m["energy_J"].get<double>();
   }
-  EXPECT_NE(p.results["message"].get<std::string>().find("set by the 0.0100 m clearance margin"), std::string::npos);
-  EXPECT_NE(p.html.find("is set by the 0.01 m clearance margin to the inner circle"), std::string::npos);
+  EXPECT_NE(p.results["message"].get<std::string>().find("set by the 0.0100 m clearance margin"),
+            std::string::npos);
+  EXPECT_NE(p.html.find("is set by the 0.01 m clearance margin to the inner circle"),
+            std::string::npos);
   EXPECT_NE(p.html.find("Margin sensitivity"), std::string::npos);
   // the tangent line: singular, and no energy, peak or saving anywhere
   ASSERT_EQ(pl["evaluations"].size(), 1u);
@@ -181,7 +187,8 @@ TEST(PlacementResultsJson, AMarginBoundOptimumSaysSoInResultsAndOnThePage) {
   const size_t row = p.html.rfind("<tr><td>tangent</td>");
   ASSERT_NE(row, std::string::npos);
   const std::string tr = p.html.substr(row, p.html.find("</tr>", row) - row);
-  EXPECT_NE(tr.find("singular: energy not converged, peak torque unbounded"), std::string::npos) << tr;
+  EXPECT_NE(tr.find("singular: energy not converged, peak torque unbounded"), std::string::npos)
+      << tr;
   EXPECT_NE(tr.find("none (singular)"), std::string::npos) << tr;
   EXPECT_EQ(tr.find(" J"), std::string::npos) << tr;
   // the Pareto fronts hold admissible placements only
@@ -199,7 +206,8 @@ TEST(PlacementResultsJson, AnInteriorOptimumSaysInterior) {
   EXPECT_EQ(o["decided_by"]["binding"], "interior");
   EXPECT_FALSE(o["decided_by"]["set_by_margin"].get<bool>());
   EXPECT_TRUE(o["margin_sensitivity"].empty());
-  EXPECT_NE(p.results["message"].get<std::string>().find("interior: no constraint binds"), std::string::npos);
+  EXPECT_NE(p.results["message"].get<std::string>().find("interior: no constraint binds"),
+            std::string::npos);
   EXPECT_NE(p.html.find("interior (clearances exceed the margin by"), std::string::npos);
   EXPECT_EQ(p.html.find("Margin sensitivity"), std::string::npos);
 }

@@ -33,12 +33,14 @@ const char* kPlacement =
     "  evaluate:\n    - {label: a-placement, x_s_m: 0.52, phi_deg: 130.89}\n";
 const char* kThrowing =
     "study: throwing\nname: rt-throwing\nthrowing:\n"
-    "  idp: {stages: 4, steps_per_stage: 5, iterations: 2, max_passes: 1, candidates: 3, seeds: 1}\n"
+    "  idp: {stages: 4, steps_per_stage: 5, iterations: 2, max_passes: 1, candidates: 3, seeds: "
+    "1}\n"
     "  nlopt: {max_evaluations: 3}\n  checks: {allow_not_converged: true}\n";
 const char* kTimeOptimal =
     "study: time_optimal\nname: rt-time-optimal\ntime_optimal:\n"
     "  path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n"
-    "  dp: {segments: 10, levels: 40, states: [path_speed, joint1_velocity], convergence_segments: []}\n"
+    "  dp: {segments: 10, levels: 40, states: [path_speed, joint1_velocity], convergence_segments: "
+    "[]}\n"
     "  complex: {max_iterations: 400}\n  exact: {grid_points: 200}\n";
 
 // runs `yaml` into a fresh folder; returns its results.json
@@ -61,9 +63,9 @@ void expect_round_trip(const std::string& yaml, const std::string& study) {
   EXPECT_EQ(results_text(report::to_json(typed)), results_text(results[study])) << study;
   // and the whole file is what results.schema.json describes
   const fs::path src(ARMSTUDY_SOURCE_DIR);
-  const std::string cmd = "/usr/bin/python3 " + (src / "scripts/validate_results.py").string() + " " +
-                          (src / "results.schema.json").string() + " " + out.string() + " > " +
-                          (out / "validate.txt").string() + " 2>&1";
+  const std::string cmd = "/usr/bin/python3 " + (src / "scripts/validate_results.py").string() +
+                          " " + (src / "results.schema.json").string() + " " + out.string() +
+                          " > " + (out / "validate.txt").string() + " 2>&1";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << armstudy::testing::slurp(out / "validate.txt");
   fs::remove_all(out);
 }
@@ -101,7 +103,8 @@ TEST(ResultsSections, AMisspeltOrMistypedKeyIsAnErrorNamingIt) {
               j["pendulum"]["energy"].erase("drift_J");
             }),
             "/pendulum/energy/drift_j: unknown key 'drift_j'; did you mean 'drift_J'?");
-  EXPECT_EQ(message([](json& j) { j["pendulum"]["energy"].erase("drift_J"); }), "/pendulum/energy/drift_J: missing");
+  EXPECT_EQ(message([](json& j) { j["pendulum"]["energy"].erase("drift_J"); }),
+            "/pendulum/energy/drift_J: missing");
   EXPECT_EQ(message([](json& j) { j["pendulum"]["integrator"]["steps_accepted"] = 1.5; }),
             "/pendulum/integrator/steps_accepted: expected an integer, found a number");
   EXPECT_EQ(message([](json& j) { j["pendulum"]["energy"]["drift_J"] = "small"; }),
@@ -110,7 +113,8 @@ TEST(ResultsSections, AMisspeltOrMistypedKeyIsAnErrorNamingIt) {
   // null is how a number that is not finite is written: it reads back as NaN
   json j = whole;
   j["pendulum"]["energy"]["drift_J"] = nullptr;
-  EXPECT_TRUE(std::isnan(report::read_section<studies::PendulumResultsSection>(j, "pendulum").energy.drift_J));
+  EXPECT_TRUE(std::isnan(
+      report::read_section<studies::PendulumResultsSection>(j, "pendulum").energy.drift_J));
 }
 
 }  // namespace

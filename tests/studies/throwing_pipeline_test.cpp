@@ -49,7 +49,8 @@ TEST(ThrowingPipeline, BudgetCutIdpFailsTheCaseUnlessTheCaseAllowsIt) {
     EXPECT_EQ(j["idp"]["converged"], false);
     EXPECT_EQ(j["idp"]["seed_runs"].size(), 2u);
     EXPECT_TRUE(j["idp"]["spread"]["best_J"].is_number());
-    EXPECT_LE(j["idp"]["spread"]["best_J"].get<double>(), j["idp"]["spread"]["worst_J"].get<double>());
+    EXPECT_LE(j["idp"]["spread"]["best_J"].get<double>(),
+              j["idp"]["spread"]["worst_J"].get<double>());
     EXPECT_EQ(j["comparison"].size(), 1u);
     EXPECT_TRUE(j["comparison"][0]["margins"].contains("contact_N"));
     const auto& series = j["optimum"]["series"];

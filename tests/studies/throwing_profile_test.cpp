@@ -13,7 +13,8 @@
 namespace armstudy::studies {
 namespace {
 
-const Eigen::Vector2d kQi(-core::kPi / 4, -core::kPi / 4), kQf(13 * core::kPi / 36, -7 * core::kPi / 36);
+const Eigen::Vector2d kQi(-core::kPi / 4, -core::kPi / 4),
+    kQf(13 * core::kPi / 36, -7 * core::kPi / 36);
 const Eigen::Vector2d kQdi(0.0, 0.0), kQdf(13.9, -1.1);
 
 TEST(Profile, Eq8MeetsEndRatesAndIntegratesToTheDisplacement) {

@@ -29,7 +29,8 @@ VelocityProfile eq8(const ThrowingSpec& s, int stages) {
   return eq8_profile(s.start, Eigen::Vector2d::Zero(), s.release, s.release_rate, s.tf, stages);
 }
 
-double mech_energy(const core::PlanarChain& c, const core::JointVector& q, const core::JointVector& qd) {
+double mech_energy(const core::PlanarChain& c, const core::JointVector& q,
+                   const core::JointVector& qd) {
   return core::kinetic_energy(c, q, qd) + core::potential_energy(c, q);
 }
 
@@ -172,8 +173,10 @@ TEST(ThrowContact, NormalForceEqualsTheRadialBalanceOfTheBall) {
     const ThrowSample &a = samples[k - 1], &b = samples[k], &c = samples[k + 1];
     if (!(a.t < b.t && b.t < c.t) || b.stage != a.stage || b.stage != c.stage) continue;
     const double h = b.t - a.t;
-    const Eigen::Vector2d acc = (ball_position(setup.chain, c.q) - 2 * ball_position(setup.chain, b.q) +
-                                 ball_position(setup.chain, a.q)) / (h * h);
+    const Eigen::Vector2d acc =
+        (ball_position(setup.chain, c.q) - 2 * ball_position(setup.chain, b.q) +
+         ball_position(setup.chain, a.q)) /
+        (h * h);
     const double phi = b.q.sum();
     const Eigen::Vector2d n(std::cos(phi), std::sin(phi));
     const double N = s.arm.m4 * (Eigen::Vector2d(0, -s.arm.gravity) - acc).dot(n);
@@ -199,7 +202,8 @@ TEST(ThrowConstraints, ValuesAreTheNormalisedStageExtremes) {
   EXPECT_FALSE(ev.feasible);
   EXPECT_GT(ev.violation, 0.0);
   const auto worst = worst_constraints(setup, ev);
-  EXPECT_NEAR(worst[static_cast<int>(ConstraintKind::kTray)], (ev.max_abs_theta4 - 0.05) / 0.05, 1e-12);
+  EXPECT_NEAR(worst[static_cast<int>(ConstraintKind::kTray)], (ev.max_abs_theta4 - 0.05) / 0.05,
+              1e-12);
   EXPECT_GT(ev.max_power, s.power_max);  // the raw eq. 8 start breaks the 60 W rating
 }
 

@@ -54,7 +54,8 @@ TEST(ThrowingStudy, OptimaMeetEveryConstraintAt4xStepsAndBeatAFeasibleReference)
   EXPECT_TRUE(simulate_profile(make_throw_setup(s), r.reference.profile).feasible);
   ASSERT_EQ(r.idp_seeds.size(), 2u);
   for (const auto& sd : r.idp_seeds)
-    EXPECT_TRUE(sd.converged) << "seed " << sd.seed << ": " << sd.passes << " passes, gain " << sd.last_gain;
+    EXPECT_TRUE(sd.converged) << "seed " << sd.seed << ": " << sd.passes << " passes, gain "
+                              << sd.last_gain;
   expect_meets_every_constraint(s, r.idp_check, "IDP");
   ASSERT_TRUE(r.nlopt_ran);
   EXPECT_TRUE(r.nlopt_run.converged) << r.nlopt_run.return_code;
@@ -104,7 +105,8 @@ TEST(ThrowingStudy, UnreachableLandingHeightIsAnUnsolvedStudyWithTheApex) {
   s.landing_height = 5.0;
   const ThrowingResult r = solve_throwing(s);
   EXPECT_EQ(r.status, Status::kUnsolvable);
-  EXPECT_NE(r.message.find("never reaches the landing height 5.000 m"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("never reaches the landing height 5.000 m"), std::string::npos)
+      << r.message;
   EXPECT_NE(r.message.find("apex"), std::string::npos);
 }
 

@@ -35,13 +35,13 @@ Energies hand_energies(const TrayArmParams& p, const core::JointVector& q,
   const Vec2 v4 = base3 + p.circle_offset * w3 * perp(e(a3)) + p.r4 * w4 * perp(e(a4));
   // rolling: the ball's absolute spin is the tray's rate minus (r4 / rb) theta4'
   const double wb = w3 - (p.r4 / p.rb) * qd[3];
-  const double K = 0.5 * (p.m1 * v1.squaredNorm() + p.I1 * w1 * w1 + p.m2 * v2.squaredNorm() +
-                          p.I2 * w2 * w2 + p.m3 * v3.squaredNorm() + p.I3 * w3 * w3 +
-                          p.m4 * v4.squaredNorm() + p.Ib * wb * wb);
+  const double K =
+      0.5 * (p.m1 * v1.squaredNorm() + p.I1 * w1 * w1 + p.m2 * v2.squaredNorm() + p.I2 * w2 * w2 +
+             p.m3 * v3.squaredNorm() + p.I3 * w3 * w3 + p.m4 * v4.squaredNorm() + p.Ib * wb * wb);
   const double y1 = p.r1 * std::sin(a1);
   const double y2 = p.l1 * std::sin(a1) + p.r2 * std::sin(a2);
-  const double y3 = p.l1 * std::sin(a1) + p.l2 * std::sin(a2) + p.r3 * std::sin(a3) +
-                    p.r3_lateral * std::cos(a3);
+  const double y3 =
+      p.l1 * std::sin(a1) + p.l2 * std::sin(a2) + p.r3 * std::sin(a3) + p.r3_lateral * std::cos(a3);
   const double y4 = p.l1 * std::sin(a1) + p.l2 * std::sin(a2) + p.circle_offset * std::sin(a3) +
                     p.r4 * std::sin(a4);
   const double U = p.gravity * (p.m1 * y1 + p.m2 * y2 + p.m3 * y3 + p.m4 * y4);
@@ -108,8 +108,8 @@ TEST(TrayArm, RotorInertiaAddsOnTheMotorRates) {
   qd << 1.0, -2.0, 0.5, 3.0;
   // rotor 1 spins at qd1, rotor 2 (on the base) at qd1 + qd2
   const double extra = 0.5 * 3e-6 * (1.0 * 1.0 + (1.0 - 2.0) * (1.0 - 2.0));
-  EXPECT_TRUE(testing::near_rel(core::kinetic_energy(with, q, qd) - core::kinetic_energy(without, q, qd),
-                                extra, 1e-12));
+  EXPECT_TRUE(testing::near_rel(
+      core::kinetic_energy(with, q, qd) - core::kinetic_energy(without, q, qd), extra, 1e-12));
 }
 
 TEST(TrayArm, RejectsNonPositiveBallRadius) {

@@ -72,7 +72,8 @@ TEST(TrayDynamics, APlannedThrowEqualsTheGenericChainsThrow) {
   for (size_t i = 0; i < ref_samples.size(); ++i) {
     ASSERT_TRUE(testing::near_rel_vec(fast_samples[i].qdd, ref_samples[i].qdd, 1e-12)) << i;
     ASSERT_TRUE(testing::near_rel_vec(fast_samples[i].tau_m, ref_samples[i].tau_m, 1e-12)) << i;
-    ASSERT_TRUE(testing::near_rel(fast_samples[i].normal_force, ref_samples[i].normal_force, 1e-12)) << i;
+    ASSERT_TRUE(testing::near_rel(fast_samples[i].normal_force, ref_samples[i].normal_force, 1e-12))
+        << i;
   }
 }
 

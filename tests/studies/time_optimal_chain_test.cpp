@@ -40,7 +40,8 @@ TEST(TimeOptimalChain, ATipPathAndTheSameMotionGivenInJointSpaceTakeTheSameTime)
   joint.space = PathSpace::kJoint;
   joint.joint_path.kind = PathKind::kSpline;
   const int n = 200;
-  for (int k = 0; k <= n; ++k) joint.joint_path.points.push_back(pb.at(rt.path_length * k / n, k == n).q);
+  for (int k = 0; k <= n; ++k)
+    joint.joint_path.points.push_back(pb.at(rt.path_length * k / n, k == n).q);
   const Result rj = solve(joint);
   ASSERT_EQ(rj.status, Status::kSolved) << rj.message;
   EXPECT_TRUE(rj.joint_space);
@@ -53,8 +54,8 @@ TEST(TimeOptimalChain, ATipPathAndTheSameMotionGivenInJointSpaceTakeTheSameTime)
   const double grid_accuracy = rt.grid.change + rj.grid.change;
   EXPECT_LT(grid_accuracy, 1e-3);
   EXPECT_NEAR(je / te - 1, 0.0, 2 * grid_accuracy)
-      << "tip path " << te << " s, joint path " << je << " s, grid changes " << rt.grid.change << ", "
-      << rj.grid.change;
+      << "tip path " << te << " s, joint path " << je << " s, grid changes " << rt.grid.change
+      << ", " << rj.grid.change;
   // and the joint-space DP sees the same problem too: within its own coarse error
   EXPECT_NEAR(solver(rj, "dp").duration / solver(rt, "dp").duration - 1, 0.0, 0.02);
 }
@@ -65,7 +66,8 @@ TEST(TimeOptimalChain, ThreeLinkExactSolutionMeetsEveryLimitDenselyAndIsNeverSlo
   ASSERT_EQ(spec.space, PathSpace::kJoint);
   const Result r = solve(spec);
   ASSERT_EQ(r.status, Status::kSolved) << r.message;
-  for (const Check& c : checks(r)) EXPECT_TRUE(c.passed) << c.name << ": " << c.value << " > " << c.tolerance;
+  for (const Check& c : checks(r))
+    EXPECT_TRUE(c.passed) << c.name << ": " << c.value << " > " << c.tolerance;
 
   const SolverResult& exact = solver(r, "exact");
   for (const char* other : {"dp", "complex"}) {
@@ -90,7 +92,9 @@ TEST(TimeOptimalChain, ThreeLinkExactSolutionMeetsEveryLimitDenselyAndIsNeverSlo
     }
   }
   for (int k = 0; k < 2; ++k)
-    for (int j = 0; j < 3; ++j) EXPECT_LE(worst[k][j], 1 + kExactTolerance) << (k ? "torque" : "velocity") << " joint " << j + 1;
+    for (int j = 0; j < 3; ++j)
+      EXPECT_LE(worst[k][j], 1 + kExactTolerance)
+          << (k ? "torque" : "velocity") << " joint " << j + 1;
   // a time-optimal motion uses some limit fully: here joint 1's velocity and joint 2's torque
   EXPECT_GT(worst[0][0], 1 - 1e-3);
   EXPECT_GT(worst[1][1], 1 - 1e-3);
@@ -104,7 +108,8 @@ TEST(TimeOptimalChain, ThreeLinkExactSolutionMeetsEveryLimitDenselyAndIsNeverSlo
 TEST(TimeOptimalChain, JointPathGeometryIsATwiceDifferentiableSplineThroughItsWaypoints) {
   JointPathSpec js;
   js.kind = PathKind::kSpline;
-  js.points = {joint_pair(0.0, 0.0), joint_pair(0.5, 0.2), joint_pair(0.7, 0.9), joint_pair(1.5, 1.0)};
+  js.points = {joint_pair(0.0, 0.0), joint_pair(0.5, 0.2), joint_pair(0.7, 0.9),
+               joint_pair(1.5, 1.0)};
   const JointPathGeometry g(js);
   for (int i = 0; i < 4; ++i) EXPECT_LT((g.at(g.knot(i)).q - js.points[i]).norm(), 1e-14);
   // q' and q'' agree with central differences of q

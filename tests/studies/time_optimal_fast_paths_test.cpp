@@ -33,7 +33,8 @@ core::PlanarChain rich_arm(double gravity) {
 }
 
 Problem tip_problem(const core::PlanarChain& chain, PathKind kind, std::vector<Eigen::Vector2d> pts,
-                    core::JointVector v, core::JointVector t, std::optional<core::JointVector> acc) {
+                    core::JointVector v, core::JointVector t,
+                    std::optional<core::JointVector> acc) {
   PathSpec ps;
   ps.kind = kind;
   ps.points = std::move(pts);
@@ -44,15 +45,17 @@ std::vector<Problem> problems() {
   std::vector<Problem> out;
   out.push_back(tip_problem(default_arm(1.0, 1.0), PathKind::kLine, {{1.6, 0.4}, {0.4, 1.6}},
                             joint_pair(2, 2), joint_pair(10, 10), std::nullopt));
-  out.push_back(tip_problem(default_arm(), PathKind::kPolyline, {{0.3, 0.1}, {0.1, 0.6}, {-0.3, 0.5}},
-                            joint_pair(3, 4), joint_pair(10, 4), joint_pair(40, 60)));
+  out.push_back(tip_problem(default_arm(), PathKind::kPolyline,
+                            {{0.3, 0.1}, {0.1, 0.6}, {-0.3, 0.5}}, joint_pair(3, 4),
+                            joint_pair(10, 4), joint_pair(40, 60)));
   out.push_back(tip_problem(default_arm(), PathKind::kSpline,
                             {{0.5, 0.2}, {0.3, 0.5}, {-0.1, 0.6}, {-0.4, 0.3}}, joint_pair(3, 4),
                             joint_pair(10, 4), std::nullopt));
   out.push_back(tip_problem(rich_arm(9.81), PathKind::kLine, {{0.55, 0.35}, {0.05, 0.8}},
                             joint_pair(3, 4), joint_pair(40, 20), std::nullopt));
   const Spec three = testing::three_link_spec();  // the bundled 3-link case's joint-space spline
-  out.push_back(make_problem(three, Limits{three.velocity_limit, three.torque_limit, three.acceleration_limit}));
+  out.push_back(make_problem(
+      three, Limits{three.velocity_limit, three.torque_limit, three.acceleration_limit}));
   return out;
 }
 
@@ -67,7 +70,8 @@ TEST(TimeOptimalFastPaths, SolveExactGivesTheReferenceNumbersBitwise) {
         ASSERT_TRUE(fast.solved) << fast.message;
         EXPECT_EQ(fast.duration, ref.duration);
         ASSERT_EQ(fast.profile.sd.size(), ref.profile.sd.size());
-        for (size_t k = 0; k < ref.profile.sd.size(); ++k) ASSERT_EQ(fast.profile.sd[k], ref.profile.sd[k]) << k;
+        for (size_t k = 0; k < ref.profile.sd.size(); ++k)
+          ASSERT_EQ(fast.profile.sd[k], ref.profile.sd[k]) << k;
       }
     }
   }
@@ -86,7 +90,8 @@ void expect_same_samples(const MotionSamples& a, const MotionSamples& b) {
 
 void expect_same_violation(const Violation& a, const Violation& b) {
   for (int kind = 0; kind < 3; ++kind)
-    for (int j = 0; j < core::kMaxLinks; ++j) EXPECT_EQ(a.ratio[kind][j], b.ratio[kind][j]) << kind << " " << j;
+    for (int j = 0; j < core::kMaxLinks; ++j)
+      EXPECT_EQ(a.ratio[kind][j], b.ratio[kind][j]) << kind << " " << j;
   EXPECT_EQ(a.worst, b.worst);
   EXPECT_EQ(a.joint, b.joint);
   EXPECT_EQ(a.kind, b.kind);
@@ -178,10 +183,12 @@ TEST(TimeOptimalFastPaths, SolveExactWithThePointsOfEarlierSolvesGivesTheSameNum
     const std::vector<double> first = solve_exact(pb, nodes, checks, &cache).profile.sd;
     EXPECT_EQ(first, solve_exact(pb, nodes, checks).profile.sd);
     for (int k = 30; k < 40; ++k) checks[k] = 4;
-    EXPECT_EQ(solve_exact(pb, nodes, checks, &cache).profile.sd, solve_exact(pb, nodes, checks).profile.sd);
+    EXPECT_EQ(solve_exact(pb, nodes, checks, &cache).profile.sd,
+              solve_exact(pb, nodes, checks).profile.sd);
     std::vector<int> fine_checks(160);
     for (int i = 0; i < 160; ++i) fine_checks[i] = checks[i / 2];
-    EXPECT_EQ(solve_exact(pb, fine, fine_checks, &cache).profile.sd, solve_exact(pb, fine, fine_checks).profile.sd);
+    EXPECT_EQ(solve_exact(pb, fine, fine_checks, &cache).profile.sd,
+              solve_exact(pb, fine, fine_checks).profile.sd);
     if (!pb.path.joint_space()) {
       // the halved grid's nodes are the grid's nodes and check points: found in the cache
       for (double s : fine) EXPECT_NE(cache.find(s, true), nullptr) << s;
@@ -192,10 +199,10 @@ TEST(TimeOptimalFastPaths, SolveExactWithThePointsOfEarlierSolvesGivesTheSameNum
 TEST(TimeOptimalFastPaths, SolveExactFailsWithTheReferenceMessage) {
   // torque too small to hold the arm against gravity, and velocity limits of zero
   std::vector<Problem> bad;
-  bad.push_back(tip_problem(rich_arm(9.81), PathKind::kLine, {{0.55, 0.35}, {0.05, 0.8}}, joint_pair(3, 4),
-                            joint_pair(0.5, 0.5), std::nullopt));
-  bad.push_back(tip_problem(default_arm(), PathKind::kLine, {{0.3, 0.1}, {-0.1, 0.8}}, joint_pair(0, 4),
-                            joint_pair(10, 4), std::nullopt));
+  bad.push_back(tip_problem(rich_arm(9.81), PathKind::kLine, {{0.55, 0.35}, {0.05, 0.8}},
+                            joint_pair(3, 4), joint_pair(0.5, 0.5), std::nullopt));
+  bad.push_back(tip_problem(default_arm(), PathKind::kLine, {{0.3, 0.1}, {-0.1, 0.8}},
+                            joint_pair(0, 4), joint_pair(10, 4), std::nullopt));
   for (const Problem& pb : bad) {
     const std::vector<double> nodes = make_nodes(pb.path, 50);
     const SolverOutput fast = solve_exact(pb, nodes, 2);
@@ -223,8 +230,10 @@ TEST(TimeOptimalFastPaths, TipPathJointPointsEqualTheGenericChainTo1e12) {
       ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(J * jp.dq), pp.dp, 1e-12)) << s;
       const core::JointVector zero = core::JointVector::Zero(2);
       const core::JointVector c_ref = core::inverse_dynamics(pb.chain, jp.q, zero, zero);
-      ASSERT_TRUE(testing::near_rel_vec(jp.a, core::mass_matrix(pb.chain, jp.q) * jp.dq, 1e-12)) << s;
-      ASSERT_TRUE(testing::near_rel_vec(jp.b, core::inverse_dynamics(pb.chain, jp.q, jp.dq, jp.ddq) - c_ref, 1e-12))
+      ASSERT_TRUE(testing::near_rel_vec(jp.a, core::mass_matrix(pb.chain, jp.q) * jp.dq, 1e-12))
+          << s;
+      ASSERT_TRUE(testing::near_rel_vec(
+          jp.b, core::inverse_dynamics(pb.chain, jp.q, jp.dq, jp.ddq) - c_ref, 1e-12))
           << s;
       ASSERT_TRUE(testing::near_rel_vec(jp.c, c_ref, 1e-12)) << s;
       // the dense re-check's scan: rates without angles, torques from their cosines and sines
@@ -234,14 +243,16 @@ TEST(TimeOptimalFastPaths, TipPathJointPointsEqualTheGenericChainTo1e12) {
       ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(r.dq[0], r.dq[1]), jp.dq, 1e-12)) << s;
       ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(r.ddq[0], r.ddq[1]), jp.ddq, 1e-12)) << s;
       const double t1 = pb.chain.base_angle + jp.q[0];
-      ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector4d(r.c1, r.s1, r.c2, r.s2),
-                                        Eigen::Vector4d(std::cos(t1), std::sin(t1), std::cos(jp.q[1]), std::sin(jp.q[1])),
-                                        1e-12)) << s;
+      ASSERT_TRUE(testing::near_rel_vec(
+          Eigen::Vector4d(r.c1, r.s1, r.c2, r.s2),
+          Eigen::Vector4d(std::cos(t1), std::sin(t1), std::cos(jp.q[1]), std::sin(jp.q[1])), 1e-12))
+          << s;
       const double qd[2] = {0.7 * r.dq[0], 0.7 * r.dq[1]};
       const double qdd[2] = {0.3 * r.dq[0] + 0.49 * r.ddq[0], 0.3 * r.dq[1] + 0.49 * r.ddq[1]};
       double tau[2];
       inverse_dynamics_cs(make_two_link_dynamics(pb.chain), r.c1, r.s1, r.c2, r.s2, qd, qdd, tau);
-      const core::JointVector tau_ref = core::inverse_dynamics(pb.chain, jp.q, jp.dq * 0.7, jp.dq * 0.3 + jp.ddq * 0.49);
+      const core::JointVector tau_ref =
+          core::inverse_dynamics(pb.chain, jp.q, jp.dq * 0.7, jp.dq * 0.3 + jp.ddq * 0.49);
       ASSERT_TRUE(testing::near_rel_vec(Eigen::Vector2d(tau[0], tau[1]), tau_ref, 1e-12)) << s;
     }
   }
@@ -295,7 +306,8 @@ TEST(TimeOptimalFastPaths, TipRatesInArraysAreThePointByPointOnesBitwise) {
         EXPECT_EQ(r.c2, a.c2[i]) << i;
         EXPECT_EQ(r.s2, a.s2[i]) << i;
       }
-      EXPECT_EQ(a.ok[pts.size() - 2], 0);  // (the straight elbow's w rounds either way: equal above)
+      EXPECT_EQ(a.ok[pts.size() - 2],
+                0);  // (the straight elbow's w rounds either way: equal above)
       EXPECT_GT(good, 150);
     }
   }

@@ -35,7 +35,9 @@ const Check* find_check(const std::vector<Check>& cs, const std::string& name) {
   return nullptr;
 }
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 TEST(TimeOptimalGrid, NearSingularPathFailsTheGridCheckAndSaysWhere) {
   // a line ending 1e-8 m inside the outer boundary (L1 + L2 = 0.9 m): the elbow is nearly
@@ -87,8 +89,10 @@ TEST(TimeOptimalGrid, DpFailureNamesTheSegmentThePlaceAndTheLimit) {
   ASSERT_EQ(res.status, Status::kSolved) << res.message;
   const PathGeometry path(spec.path);
   const std::vector<double> nodes = make_nodes(path, spec.dp.segments);
-  const std::regex named(R"(segment (\d+) of 10 \(s = ([0-9.]+) to ([0-9.]+) m, \(x, y\) = \(([-0-9.]+), ([-0-9.]+)\) to \(([-0-9.]+), ([-0-9.]+)\) m\) cannot be crossed)");
-  const std::regex limit(R"(the least breach is the joint [12] (torque|velocity) limit [0-9.]+ (N m|rad/s) at s = ([0-9.]+) m, used to ([0-9.]+) %)");
+  const std::regex named(
+      R"(segment (\d+) of 10 \(s = ([0-9.]+) to ([0-9.]+) m, \(x, y\) = \(([-0-9.]+), ([-0-9.]+)\) to \(([-0-9.]+), ([-0-9.]+)\) m\) cannot be crossed)");
+  const std::regex limit(
+      R"(the least breach is the joint [12] (torque|velocity) limit [0-9.]+ (N m|rad/s) at s = ([0-9.]+) m, used to ([0-9.]+) %)");
   for (const SolverResult& r : res.solvers) {
     if (r.name == "exact") continue;
     EXPECT_FALSE(r.solved) << r.name;
@@ -134,7 +138,8 @@ TEST(TimeOptimalGrid, WorkspaceMessageNamesTheWorstPointWithItsExcess) {
   // four points 1 mm inside the outer circle (0.9 m), 20 deg apart: the natural spline
   // through them bulges about 1.4 mm out between them
   for (double deg : {0.0, 20.0, 40.0, 60.0})
-    spec.path.points.emplace_back(0.899 * std::cos(deg * M_PI / 180), 0.899 * std::sin(deg * M_PI / 180));
+    spec.path.points.emplace_back(0.899 * std::cos(deg * M_PI / 180),
+                                  0.899 * std::sin(deg * M_PI / 180));
   const PathGeometry path(spec.path);
   // independent search of the worst point: dense sampling
   double worst = -1, worst_s = 0;

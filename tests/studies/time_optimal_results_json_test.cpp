@@ -26,14 +26,17 @@ struct CaseRun {
 };
 
 CaseRun run_case_text(const std::string& end_point) {
-  const fs::path dir = fs::temp_directory_path() / ("armstudy_to_json_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("armstudy_to_json_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path file = dir / "case.yaml";
   std::ofstream(file) << "study: time_optimal\nname: json-test\ntime_optimal:\n"
-                         "  path: {kind: line, points_m: [[0.3, 0.1], " + end_point + "]}\n"
-                         "  dp: {states: [path_speed], convergence_segments: []}\n"
-                         "  complex: {enabled: false}\n"
-                         "  exact: {grid_points: 600}\n";
+                         "  path: {kind: line, points_m: [[0.3, 0.1], " +
+                             end_point +
+                             "]}\n"
+                             "  dp: {states: [path_speed], convergence_segments: []}\n"
+                             "  complex: {enabled: false}\n"
+                             "  exact: {grid_points: 600}\n";
   LoadedCase c = load_case(file.string());
   CaseRun r;
   r.status = c.run->solve({});
@@ -51,8 +54,9 @@ const studies::Check& check(const CaseRun& r, const std::string& name) {
 }
 
 void expect_replay_recorded(const json& rep) {
-  for (const char* k : {"integrator", "timestep_s", "steps", "max_deviation_rad", "tolerance_rad",
-                        "tolerance_rule", "coarse_max_deviation_rad", "simulates", "does_not_simulate"})
+  for (const char* k :
+       {"integrator", "timestep_s", "steps", "max_deviation_rad", "tolerance_rad", "tolerance_rule",
+        "coarse_max_deviation_rad", "simulates", "does_not_simulate"})
     EXPECT_TRUE(rep.contains(k)) << k;
   EXPECT_EQ(rep["integrator"], "RK4");
   EXPECT_TRUE(rep["passed"].get<bool>());

@@ -45,7 +45,8 @@ TEST(TimeOptimal, ExactIsNeverSlowerThanDpOrComplexAndEverySolverMeetsItsLimits)
   int solved = 0;
   while (solved < 6) {
     const double r1 = radius(rng), a1 = angle(rng), r2 = radius(rng), a2 = angle(rng);
-    const Eigen::Vector2d a(r1 * std::cos(a1), r1 * std::sin(a1)), b(r2 * std::cos(a2), r2 * std::sin(a2));
+    const Eigen::Vector2d a(r1 * std::cos(a1), r1 * std::sin(a1)),
+        b(r2 * std::cos(a2), r2 * std::sin(a2));
     // lines well inside the annulus [0.1, 0.9] m
     if ((b - a).norm() < 0.2 || clearance(a, b) < 0.25) continue;
     const Result r = solve(line_spec(a, b));
@@ -58,7 +59,8 @@ TEST(TimeOptimal, ExactIsNeverSlowerThanDpOrComplexAndEverySolverMeetsItsLimits)
       EXPECT_LE(exact, s.duration * (1 + 1e-9)) << name;
       EXPECT_LE(s.violation.worst, kCoarseViolationTolerance) << name << ": " << s.violation.text;
     }
-    EXPECT_LE(solver(r, "exact").violation.worst, kExactTolerance) << solver(r, "exact").violation.text;
+    EXPECT_LE(solver(r, "exact").violation.worst, kExactTolerance)
+        << solver(r, "exact").violation.text;
     for (const Check& c : checks(r)) EXPECT_TRUE(c.passed) << c.name << " " << c.value;
   }
 }
@@ -171,8 +173,10 @@ TEST(TimeOptimal, InfeasibleProblemsNameTheLimitOrReasonAndThePlace) {
     EXPECT_EQ(r.status, Status::kUnsolvable);
     EXPECT_NE(r.message.find("joint 1 acceleration limit"), std::string::npos) << r.message;
   }
-  for (const auto& [a, b] : {std::pair<Eigen::Vector2d, Eigen::Vector2d>{{0.5, 0.0}, {1.0, 0.2}},  // beyond reach
-                             std::pair<Eigen::Vector2d, Eigen::Vector2d>{{0.3, 0.02}, {-0.3, 0.02}}}) {  // past the centre
+  for (const auto& [a, b] :
+       {std::pair<Eigen::Vector2d, Eigen::Vector2d>{{0.5, 0.0}, {1.0, 0.2}},  // beyond reach
+        std::pair<Eigen::Vector2d, Eigen::Vector2d>{{0.3, 0.02},
+                                                    {-0.3, 0.02}}}) {  // past the centre
     const Result r = solve(line_spec(a, b));
     EXPECT_EQ(r.status, Status::kUnsolvable);
     EXPECT_NE(r.message.find("leaves the workspace at s = "), std::string::npos) << r.message;

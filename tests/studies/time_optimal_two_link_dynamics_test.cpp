@@ -51,7 +51,8 @@ TEST(TwoLinkPathDynamics, EqualsTheGenericChainTo1e12) {
       // the dense re-check's inverse dynamics at joint rates qd = dq, qdd = ddq
       core::JointVector tau;
       inverse_dynamics(dyn, q, dq, ddq, &tau);
-      ASSERT_TRUE(testing::near_rel_vec(tau, core::inverse_dynamics(chain, q, dq, ddq), 1e-12)) << k;
+      ASSERT_TRUE(testing::near_rel_vec(tau, core::inverse_dynamics(chain, q, dq, ddq), 1e-12))
+          << k;
     }
   }
   EXPECT_THROW(make_two_link_dynamics(testing::tray_arm()), std::invalid_argument);

@@ -18,8 +18,8 @@ inline ::testing::AssertionResult near_rel(double a, double b, double tol) {
   const double scale = std::max({1.0, std::abs(a), std::abs(b)});
   const double d = std::abs(a - b);
   if (d <= tol * scale) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << a << " vs " << b << ": |delta| " << d << " > "
-                                       << tol << " x " << scale;
+  return ::testing::AssertionFailure()
+         << a << " vs " << b << ": |delta| " << d << " > " << tol << " x " << scale;
 }
 
 template <typename A, typename B>
@@ -29,8 +29,7 @@ template <typename A, typename B>
   const double d = (a - b).cwiseAbs().maxCoeff();
   if (d <= tol * scale) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "[" << a.transpose() << "] vs [" << b.transpose()
-                                       << "]: max |delta| " << d << " > " << tol << " x "
-                                       << scale;
+                                       << "]: max |delta| " << d << " > " << tol << " x " << scale;
 }
 
 struct NamedArm {
@@ -74,7 +73,8 @@ inline core::PlanarChain tray_arm() {
 }
 
 inline std::vector<NamedArm> arm_factory() {
-  return {{"horizontal_2link", thesis_arm()}, {"vertical_2link", vertical_arm()},
+  return {{"horizontal_2link", thesis_arm()},
+          {"vertical_2link", vertical_arm()},
           {"tray_4link", tray_arm()}};
 }
 

@@ -33,7 +33,8 @@ inline const char* kChromiumFlags =
     " --disable-extensions --hide-scrollbars";
 
 /// A chromium run with its own fresh profile under `work`; returns the exit status.
-inline int chromium(const std::string& args, const std::filesystem::path& work, const std::string& tag) {
+inline int chromium(const std::string& args, const std::filesystem::path& work,
+                    const std::string& tag) {
   const std::filesystem::path profile = work / ("profile-" + tag);
   std::filesystem::remove_all(profile);
   const std::string cmd = "chromium" + std::string(kChromiumFlags) +
@@ -92,20 +93,25 @@ inline std::vector<std::string> page_problems(const std::filesystem::path& page,
   const int status = chromium("--enable-logging=stderr --v=0 --dump-dom " + quote(file_url(page)) +
                                   " > " + quote(dom.string()) + " 2> " + quote(log.string()),
                               work, tag);
-  if (status != 0) problems.push_back("chromium exited with " + std::to_string(status) + ": " + slurp(log));
+  if (status != 0)
+    problems.push_back("chromium exited with " + std::to_string(status) + ": " + slurp(log));
   const std::string html = slurp(dom);
   if (html.find("<h1>") == std::string::npos) problems.push_back("the page has no <h1>");
-  if (html.find("Content-Security-Policy") == std::string::npos) problems.push_back("no Content-Security-Policy");
+  if (html.find("Content-Security-Policy") == std::string::npos)
+    problems.push_back("no Content-Security-Policy");
   std::istringstream lines(slurp(log));
   std::string line;
   while (std::getline(lines, line))
     if (line.find(":CONSOLE") != std::string::npos) problems.push_back("console: " + line);
   *targets = 0;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), kTarget); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), kTarget);
+       it != std::sregex_iterator(); ++it) {
     const std::string t = (*it)[1];
     if (t.empty() || t[0] == '#') continue;
-    if (t.find("://") != std::string::npos) problems.push_back("points to " + t);
-    else if (!std::filesystem::exists(page.parent_path() / t)) problems.push_back("missing " + t);
+    if (t.find("://") != std::string::npos)
+      problems.push_back("points to " + t);
+    else if (!std::filesystem::exists(page.parent_path() / t))
+      problems.push_back("missing " + t);
     ++*targets;
   }
   return problems;

@@ -16,9 +16,9 @@ ComplexResult box_complex(const std::function<double(const Eigen::VectorXd&)>& f
                           const Eigen::VectorXd& x0, const ComplexOptions& options) {
   const int n = static_cast<int>(x0.size());
   ARM_THROW_UNLESS(n >= 1, "Complex method needs >= 1 variable; got " << n);
-  ARM_THROW_UNLESS(lo.size() == n && hi.size() == n,
-                   "Complex bounds have sizes " << lo.size() << ", " << hi.size()
-                                                << "; expected " << n);
+  ARM_THROW_UNLESS(lo.size() == n && hi.size() == n, "Complex bounds have sizes "
+                                                         << lo.size() << ", " << hi.size()
+                                                         << "; expected " << n);
   ARM_THROW_UNLESS((lo.array() <= hi.array()).all(), "Complex bounds should have lo <= hi");
   ARM_THROW_UNLESS((x0.array() >= lo.array()).all() && (x0.array() <= hi.array()).all(),
                    "Complex start point should lie within the bounds");
@@ -62,8 +62,7 @@ ComplexResult box_complex(const std::function<double(const Eigen::VectorXd&)>& f
       res.converged = true;
       break;
     }
-    const int worst =
-        static_cast<int>(std::max_element(val.begin(), val.end()) - val.begin());
+    const int worst = static_cast<int>(std::max_element(val.begin(), val.end()) - val.begin());
     Eigen::VectorXd c = Eigen::VectorXd::Zero(n);
     for (int i = 0; i < k; ++i)
       if (i != worst) c += pts[i];
@@ -86,8 +85,7 @@ ComplexResult box_complex(const std::function<double(const Eigen::VectorXd&)>& f
     }
     if (tries == options.max_retractions) {
       // the complex has collapsed onto the centroid side: shrink it towards the best point
-      const int best =
-          static_cast<int>(std::min_element(val.begin(), val.end()) - val.begin());
+      const int best = static_cast<int>(std::min_element(val.begin(), val.end()) - val.begin());
       for (int i = 0; i < k; ++i) {
         if (i == best) continue;
         Eigen::VectorXd y = 0.5 * (pts[i] + pts[best]);

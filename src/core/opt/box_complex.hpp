@@ -18,21 +18,21 @@
 namespace armstudy::core::opt {
 
 struct ComplexOptions {
-  int points = 0;             ///< complex size k (0: 2 n); >= n + 1
-  double alpha = 1.3;         ///< reflection factor, > 1 (Box)
-  int max_iterations = 20000; ///< reflections
-  int max_retractions = 60;   ///< halvings towards the centroid per reflection
+  int points = 0;              ///< complex size k (0: 2 n); >= n + 1
+  double alpha = 1.3;          ///< reflection factor, > 1 (Box)
+  int max_iterations = 20000;  ///< reflections
+  int max_retractions = 60;    ///< halvings towards the centroid per reflection
   /// converged when max f - min f over the complex <= tolerance * max(1, |min f|)
   double tolerance = 1e-10;
   unsigned seed = 1;
 };
 
 struct ComplexResult {
-  Eigen::VectorXd x;      ///< best point found (n)
-  double f = 0;           ///< f(x)
-  int iterations = 0;     ///< reflections made
-  long evaluations = 0;   ///< calls of f
-  bool converged = false; ///< the spread criterion was met (else max_iterations ran out)
+  Eigen::VectorXd x;       ///< best point found (n)
+  double f = 0;            ///< f(x)
+  int iterations = 0;      ///< reflections made
+  long evaluations = 0;    ///< calls of f
+  bool converged = false;  ///< the spread criterion was met (else max_iterations ran out)
 };
 
 /// Minimises f over the feasible box points, starting from the feasible point x0 (n).

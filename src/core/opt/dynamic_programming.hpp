@@ -38,8 +38,8 @@ DpSolution solve_staged_dp(const std::vector<int>& levels, Cost&& cost, Candidat
   const int nodes = static_cast<int>(levels.size());
   ARM_THROW_UNLESS(nodes >= 2, "staged DP has " << nodes << " nodes; should have >= 2");
   for (int k = 0; k < nodes; ++k)
-    ARM_THROW_UNLESS(levels[k] >= 1, "staged DP node " << k << " has " << levels[k]
-                                                         << " states; should have >= 1");
+    ARM_THROW_UNLESS(levels[k] >= 1,
+                     "staged DP node " << k << " has " << levels[k] << " states; should have >= 1");
   constexpr double kInf = std::numeric_limits<double>::infinity();
   DpSolution sol;
   // value[k][i]: least cost from state i at node k to the end; next[k][i]: its successor

@@ -113,7 +113,8 @@ void fields(V& v, PendulumResultsSection::Energy& x) {
   v("scale_J", x.scale_J, "largest kinetic energy (the energy exchanged)");
   v("drift_J", x.drift_J, "max |E(t) - E(0)|");
   v("drift_relative", x.drift_relative, "drift_J / scale_J");
-  v("tolerance_relative", x.tolerance_relative, "allowed drift_relative (check pendulum_energy_drift)");
+  v("tolerance_relative", x.tolerance_relative,
+    "allowed drift_relative (check pendulum_energy_drift)");
 }
 template <class V>
 void fields(V& v, PendulumResultsSection& x) {

@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <locale>
 #include <sstream>
-#include <cmath>
 #include <stdexcept>
 
 #include "core/dynamics.hpp"
-#include "core/kinematics.hpp"
 #include "core/integrators.hpp"
+#include "core/kinematics.hpp"
 
 namespace armstudy::studies {
 // the integrators of core/integrators.hpp
@@ -125,7 +125,8 @@ PendulumResult solve_pendulum(const PendulumSpec& spec, const ProgressFn& progre
     r.energy_drift = std::max(r.energy_drift, std::abs(r.total[k] - r.energy_initial));
   }
   // at rest everywhere (an equilibrium start) the drift is measured against the weight
-  if (r.energy_scale <= 0) r.energy_scale = std::abs(r.energy_initial) > 0 ? std::abs(r.energy_initial) : 1.0;
+  if (r.energy_scale <= 0)
+    r.energy_scale = std::abs(r.energy_initial) > 0 ? std::abs(r.energy_initial) : 1.0;
   r.energy_drift_rel = r.energy_drift / r.energy_scale;
   r.status = Status::kSolved;
   std::ostringstream os;

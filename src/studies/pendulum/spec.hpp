@@ -13,19 +13,19 @@ namespace armstudy::studies {
 
 /// Inputs of the pendulum study, SI and radians.
 struct PendulumSpec {
-  TrayArmParams arm;              ///< see default_pendulum_spec()
-  double theta1 = 0.0;            ///< rad, locked joint 1
-  double theta2 = 0.0;            ///< rad, locked joint 2
-  double theta3 = -core::kPi / 2; ///< rad, initial tray angle
-  double theta4 = -core::kPi / 5; ///< rad, initial ball angle
-  double theta3_rate = 0.0;       ///< rad/s
-  double theta4_rate = 0.0;       ///< rad/s
-  double duration = 2.0;          ///< s
-  double sample_step = 0.005;     ///< s, time series spacing
-  double snapshot_step = 0.13;    ///< s, snapshot spacing (Fig. 2)
-  double rtol = 1e-12;            ///< DOPRI5 relative tolerance
-  double atol = 1e-12;            ///< DOPRI5 absolute tolerance (rad, rad/s)
-  double drift_tolerance = 1e-8;  ///< allowed relative energy drift (check)
+  TrayArmParams arm;               ///< see default_pendulum_spec()
+  double theta1 = 0.0;             ///< rad, locked joint 1
+  double theta2 = 0.0;             ///< rad, locked joint 2
+  double theta3 = -core::kPi / 2;  ///< rad, initial tray angle
+  double theta4 = -core::kPi / 5;  ///< rad, initial ball angle
+  double theta3_rate = 0.0;        ///< rad/s
+  double theta4_rate = 0.0;        ///< rad/s
+  double duration = 2.0;           ///< s
+  double sample_step = 0.005;      ///< s, time series spacing
+  double snapshot_step = 0.13;     ///< s, snapshot spacing (Fig. 2)
+  double rtol = 1e-12;             ///< DOPRI5 relative tolerance
+  double atol = 1e-12;             ///< DOPRI5 absolute tolerance (rad, rad/s)
+  double drift_tolerance = 1e-8;   ///< allowed relative energy drift (check)
 };
 
 /// Sec. 3's parameters: m3 = 0.109 kg, m4 = 0.122 kg, r4 = 0.075 m, r_b = 0.015 m. What

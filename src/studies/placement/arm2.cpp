@@ -13,9 +13,10 @@ Arm2 make_arm2(const core::PlanarChain& chain) {
                    "the placement evaluator needs 2 links, the arm has " << chain.num_links());
   ARM_THROW_UNLESS(chain.links[0].active && chain.links[1].active,
                    "the placement evaluator needs both joints active");
-  ARM_THROW_UNLESS(chain.gravity == 0.0, "the placement evaluator needs gravity 0 (horizontal "
-                                         "plane), the arm has "
-                                             << chain.gravity << " m/s^2");
+  ARM_THROW_UNLESS(chain.gravity == 0.0,
+                   "the placement evaluator needs gravity 0 (horizontal "
+                   "plane), the arm has "
+                       << chain.gravity << " m/s^2");
   Arm2 a;
   a.L1 = chain.links[0].length;
   a.L2 = chain.links[1].length;
@@ -140,15 +141,14 @@ LineMetrics evaluate_line(const Arm2& arm, const ProgramTable& table, const Line
   m.peak_power[0] = pp1;
   m.peak_power[1] = pp2;
   m.min_abs_sin = min_sin;
-  if (!std::isfinite(m.energy) || !std::isfinite(pt1) || !std::isfinite(pt2) ||
-      min_sin == 0.0) {
+  if (!std::isfinite(m.energy) || !std::isfinite(pt1) || !std::isfinite(pt2) || min_sin == 0.0) {
     m.energy = std::numeric_limits<double>::infinity();
   }
   return m;
 }
 
 LineMetrics evaluate_line_scalar(const Arm2& arm, const ProgramTable& table, const Line& line,
-                          int configuration) {
+                                 int configuration) {
   const double sign = configuration == 1 ? 1.0 : -1.0;
   const double sx = line.start.x(), sy = line.start.y();
   const double ux = line.dir.x(), uy = line.dir.y();
@@ -202,8 +202,7 @@ LineMetrics evaluate_line_scalar(const Arm2& arm, const ProgramTable& table, con
   m.peak_power[0] = pp1;
   m.peak_power[1] = pp2;
   m.min_abs_sin = min_sin;
-  if (!std::isfinite(m.energy) || !std::isfinite(pt1) || !std::isfinite(pt2) ||
-      min_sin == 0.0) {
+  if (!std::isfinite(m.energy) || !std::isfinite(pt1) || !std::isfinite(pt2) || min_sin == 0.0) {
     m.energy = std::numeric_limits<double>::infinity();
   }
   return m;

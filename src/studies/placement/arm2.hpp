@@ -28,9 +28,9 @@ namespace armstudy::studies::placement {
 
 /// Constant parameters of the closed-form 2-link model above (SI).
 struct Arm2 {
-  double L1 = 0, L2 = 0;          ///< m, link lengths
+  double L1 = 0, L2 = 0;             ///< m, link lengths
   double a11 = 0, a12 = 0, a22 = 0;  ///< kg m^2, constant parts of M
-  double A = 0, B = 0;            ///< kg m^2, coefficients of g(q2)
+  double A = 0, B = 0;               ///< kg m^2, coefficients of g(q2)
 };
 
 /// The closed-form parameters of `chain` (links, point masses, spinners).
@@ -41,9 +41,9 @@ Arm2 make_arm2(const core::PlanarChain& chain);
 /// A motion program sampled on the uniform time grid t_k = k T / (n - 1), k = 0..n-1.
 struct ProgramTable {
   core::MotionProgram program = core::MotionProgram::kCycloidal;
-  double duration = 1;   ///< s
-  double length = 1;     ///< m
-  double dt = 0;         ///< s, T / (n - 1)
+  double duration = 1;             ///< s
+  double length = 1;               ///< m
+  double dt = 0;                   ///< s, T / (n - 1)
   std::vector<double> s, sd, sdd;  ///< m, m/s, m/s^2 (n each)
   int size() const { return static_cast<int>(s.size()); }
 };
@@ -55,8 +55,8 @@ ProgramTable make_program_table(core::MotionProgram program, double duration, do
 
 /// Joint state and torques at one sample (rad, rad/s, rad/s^2, N m).
 struct Arm2Sample {
-  double c1 = 1, s1 = 0;    ///< cos, sin of the absolute angle of link 1
-  double c2 = 1, s2 = 0;    ///< cos, sin of the relative elbow angle q2
+  double c1 = 1, s1 = 0;  ///< cos, sin of the absolute angle of link 1
+  double c2 = 1, s2 = 0;  ///< cos, sin of the relative elbow angle q2
   double qd1 = 0, qd2 = 0;
   double qdd1 = 0, qdd2 = 0;
   double tau1 = 0, tau2 = 0;
@@ -124,13 +124,13 @@ inline Line thesis_line(double x_s, double phi) {
 
 /// Integrals and peaks of one motion along a line on the table's time grid.
 struct LineMetrics {
-  double energy = 0;       ///< J, integral of |tau1 qd1| + |tau2 qd2| dt (eq. 8.1)
+  double energy = 0;  ///< J, integral of |tau1 qd1| + |tau2 qd2| dt (eq. 8.1)
   /// J, integral of tau1 qd1 + tau2 qd2 dt (0 rest to rest), by Gregory's end-corrected
   /// trapezoidal rule (O(h^6) for this smooth integrand; plain trapezoid below 12 samples)
   double signed_work = 0;
   double peak_torque[2] = {0, 0};  ///< N m, max |tau_j| over the samples
   double peak_power[2] = {0, 0};   ///< W, max |tau_j qd_j| over the samples
-  double min_abs_sin = 1;  ///< smallest sampled |sin q2|
+  double min_abs_sin = 1;          ///< smallest sampled |sin q2|
   /// J, the same trapezoid on every other sample (0, 2, 4, ..., and the last): its
   /// difference from `energy` estimates the quadrature error at no extra cost
   double energy_coarse = 0;
@@ -159,12 +159,12 @@ LineMetrics evaluate_line_scalar(const Arm2& arm, const ProgramTable& table, con
 /// Time series of one motion (for optima and evaluated placements). Angles are relative
 /// (q1 absolute angle of link 1, unwrapped; q2 elbow), rad; power_j = tau_j qd_j, W.
 struct TimeSeries {
-  std::vector<double> t;                  ///< s
-  std::vector<Eigen::Vector2d> tip;       ///< m, tip position in the arm's frame
+  std::vector<double> t;                    ///< s
+  std::vector<Eigen::Vector2d> tip;         ///< m, tip position in the arm's frame
   std::vector<Eigen::Vector2d> q, qd, qdd;  ///< rad, rad/s, rad/s^2
-  std::vector<Eigen::Vector2d> tau;       ///< N m
-  std::vector<Eigen::Vector2d> power;     ///< W, signed
-  std::vector<double> energy;             ///< J, cumulative integral of |power_1| + |power_2|
+  std::vector<Eigen::Vector2d> tau;         ///< N m
+  std::vector<Eigen::Vector2d> power;       ///< W, signed
+  std::vector<double> energy;               ///< J, cumulative integral of |power_1| + |power_2|
 };
 
 /// The full time series of evaluate_line's motion (same samples, same integral).

@@ -54,5 +54,4 @@ void sample_block(const Arm2& arm, const double* __restrict s, const double* __r
   }
 }
 
-
 }  // namespace armstudy::studies::placement

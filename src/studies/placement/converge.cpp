@@ -6,23 +6,22 @@
 namespace armstudy::studies::placement {
 
 EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, double duration,
-                                  double length, const Line& line, int configuration,
-                                  int samples, bool touches, double tol, double peak_tol,
-                                  int max_samples) {
+                                  double length, const Line& line, int configuration, int samples,
+                                  bool touches, double tol, double peak_tol, int max_samples) {
   EnergyConvergence c;
   c.checked = true;
   c.touches_boundary = touches;
   c.tolerance = tol;
   int n = std::max(samples, 3);
-  LineMetrics prev = evaluate_line(arm, make_program_table(program, duration, length, n), line,
-                                   configuration);
+  LineMetrics prev =
+      evaluate_line(arm, make_program_table(program, duration, length, n), line, configuration);
   c.rows.push_back({n, prev.energy, std::max(prev.peak_torque[0], prev.peak_torque[1])});
   c.samples = n;
   c.metrics = prev;
   while (2 * (n - 1) + 1 <= max_samples) {
     const int m = 2 * (n - 1) + 1;
-    const LineMetrics next = evaluate_line(arm, make_program_table(program, duration, length, m),
-                                           line, configuration);
+    const LineMetrics next =
+        evaluate_line(arm, make_program_table(program, duration, length, m), line, configuration);
     c.rows.push_back({m, next.energy, std::max(next.peak_torque[0], next.peak_torque[1])});
     if (!prev.finite() || !next.finite()) {
       // a sample on the singular pose itself: nothing converges

@@ -18,23 +18,23 @@ namespace armstudy::studies::placement {
 /// One row of a convergence table: the energy with `samples` samples per trajectory.
 struct ConvergenceRow {
   int samples = 0;
-  double energy = 0;  ///< J
+  double energy = 0;       ///< J
   double peak_torque = 0;  ///< N m, max over both joints
 };
 
 /// What the doubling found for one motion.
 struct EnergyConvergence {
-  bool checked = false;           ///< converge_energy ran (false: not a printed candidate)
+  bool checked = false;  ///< converge_energy ran (false: not a printed candidate)
   bool converged = false;
   /// on one doubling the energy changed by < tol and the sampled peak torque by < peak_tol
   bool touches_boundary = false;  ///< the line is on a boundary (exact geometry, 1e-9 m)
   /// no energy, peak or saving may be printed: touching a boundary or not converged
   bool singular() const { return checked && (touches_boundary || !converged); }
-  int samples = 0;          ///< samples of `metrics`: the coarser of the converged pair
+  int samples = 0;  ///< samples of `metrics`: the coarser of the converged pair
   double rel_change = std::numeric_limits<double>::quiet_NaN();  ///< energy, at the last doubling
   double peak_rel_change = std::numeric_limits<double>::quiet_NaN();  ///< peak torque, same
-  double tolerance = 0;     ///< the relative tolerance asked for
-  LineMetrics metrics;      ///< at `samples`
+  double tolerance = 0;              ///< the relative tolerance asked for
+  LineMetrics metrics;               ///< at `samples`
   std::vector<ConvergenceRow> rows;  ///< every doubling tried, coarsest first
 };
 
@@ -43,9 +43,9 @@ struct EnergyConvergence {
 /// (relative), or `max_samples` is passed. `touches`: the exact line check puts the line
 /// on a boundary (|boundary distance| within 1e-9 m, so |sin q2| ~ 1e-4 or less on it).
 EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, double duration,
-                                  double length, const Line& line, int configuration,
-                                  int samples, bool touches, double tol = 1e-4,
-                                  double peak_tol = 1e-3, int max_samples = 409601);
+                                  double length, const Line& line, int configuration, int samples,
+                                  bool touches, double tol = 1e-4, double peak_tol = 1e-3,
+                                  int max_samples = 409601);
 
 /// The sentence printed instead of an energy, peak or saving of a singular motion.
 inline constexpr const char* kSingularNote =

@@ -17,9 +17,9 @@ namespace armstudy::studies::placement {
 /// The reachable annulus of links L1, L2 and the longest line that fits in it.
 struct Annulus {
   double L1 = 0, L2 = 0;  ///< m, link lengths
-  double inner = 0;  ///< m, |L1 - L2|
-  double outer = 0;  ///< m, L1 + L2
-  double lmax = 0;   ///< m, 4 sqrt(L1 L2) (4.6): the chord of the outer circle tangent to the inner
+  double inner = 0;       ///< m, |L1 - L2|
+  double outer = 0;       ///< m, L1 + L2
+  double lmax = 0;  ///< m, 4 sqrt(L1 L2) (4.6): the chord of the outer circle tangent to the inner
 };
 
 /// The annulus of a 2-link arm.

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 #include <nlopt.hpp>
@@ -23,8 +23,15 @@ class Problem {
  public:
   Problem(const Spec& spec, const Arm2& arm, const ProgramTable& table, int configuration,
           double x0, double p0, double hx, double hphi)
-      : spec_(spec), arm_(arm), table_(table), configuration_(configuration),
-        an_(annulus(arm.L1, arm.L2)), x0_(x0), p0_(p0), hx_(hx), hphi_(hphi) {
+      : spec_(spec),
+        arm_(arm),
+        table_(table),
+        configuration_(configuration),
+        an_(annulus(arm.L1, arm.L2)),
+        x0_(x0),
+        p0_(p0),
+        hx_(hx),
+        hphi_(hphi) {
     used_[0] = used_[1] = true;
     for (int j = 0; j < 2; ++j) {
       used_[2 + j] = spec.torque_limit.has_value();
@@ -72,8 +79,10 @@ class Problem {
     e.g[0] = (an_.inner + spec_.singularity_margin) - chk.r_min;
     e.g[1] = chk.r_max - (an_.outer - spec_.singularity_margin);
     LineMetrics m;
-    if (chk.boundary_distance >= 0) m = evaluate_line(arm_, table_, line, configuration_);
-    else m.energy = kInf;
+    if (chk.boundary_distance >= 0)
+      m = evaluate_line(arm_, table_, line, configuration_);
+    else
+      m.energy = kInf;
     for (int j = 0; j < 2; ++j) {
       e.g[2 + j] = spec_.torque_limit ? m.peak_torque[j] / (*spec_.torque_limit)[j] - 1.0 : -kInf;
       e.g[4 + j] = spec_.power_limit ? m.peak_power[j] / (*spec_.power_limit)[j] - 1.0 : -kInf;
@@ -209,8 +218,8 @@ void along_boundary(Problem& pr, int k) {
   double dep_guess = dep0;
   // energy on the boundary at free value f (admissible points only)
   const auto h = [&](double f) {
-    const auto dep = solve_on_boundary(
-        [&](double x) { return dep_is_u ? gk(x, f) : gk(f, x); }, dep_guess);
+    const auto dep =
+        solve_on_boundary([&](double x) { return dep_is_u ? gk(x, f) : gk(f, x); }, dep_guess);
     if (!dep) return kInf;
     dep_guess = *dep;
     const Problem::Eval& e = dep_is_u ? pr.at(*dep, f) : pr.at(f, *dep);

@@ -36,12 +36,12 @@ Decision decide(const Spec& spec, const Candidate& c, double active_m = 1e-9,
 
 /// What the refinement found.
 struct Refinement {
-  Candidate best;            ///< the least-energy admissible point evaluated (classified)
-  std::string method;        ///< the stages that ran
+  Candidate best;      ///< the least-energy admissible point evaluated (classified)
+  std::string method;  ///< the stages that ran
   double tolerance_rel = std::numeric_limits<double>::quiet_NaN();  ///< see above
   double target_rel = 1e-7;  ///< converged when tolerance_rel <= target_rel
   bool converged = false;
-  int evaluations = 0;       ///< energy evaluations (table.size() samples each)
+  int evaluations = 0;  ///< energy evaluations (table.size() samples each)
   int rounds = 0;
 };
 

@@ -45,19 +45,19 @@ enum class Binding : std::uint8_t {
 /// The constraints' slacks at an optimum and the one that binds.
 struct Decision {
   Binding binding = Binding::kInterior;
-  int joint = -1;  ///< 0 (root) or 1 (elbow) for a limit, else -1
+  int joint = -1;          ///< 0 (root) or 1 (elbow) for a limit, else -1
   double inner_slack = 0;  ///< m, clearance to the inner circle minus the margin
   double outer_slack = 0;  ///< m, clearance to the outer circle minus the margin
   double torque_slack[2] = {std::numeric_limits<double>::quiet_NaN(),
                             std::numeric_limits<double>::quiet_NaN()};  ///< N m (NaN: no limit)
   double power_slack[2] = {std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::quiet_NaN()};   ///< W (NaN: no limit)
+                           std::numeric_limits<double>::quiet_NaN()};  ///< W (NaN: no limit)
 };
 
 /// A candidate placement with its metrics (for one program and configuration).
 struct Candidate {
-  double x_s = 0;   ///< m
-  double phi = 0;   ///< rad
+  double x_s = 0;                                  ///< m
+  double phi = 0;                                  ///< rad
   Eigen::Vector2d root = Eigen::Vector2d::Zero();  ///< m, root (X, Y) in the line frame (4.14)
   CandidateStatus status = CandidateStatus::kUnreachable;
   double boundary_distance = 0;  ///< m, exact (< 0: unreachable)
@@ -87,14 +87,14 @@ struct MarginPoint {
 
 /// Where the arm and the line are, for a renderer: everything in the arm's frame A.
 struct Placement {
-  Eigen::Vector2d start = Eigen::Vector2d::Zero();  ///< m, line start S
-  Eigen::Vector2d end = Eigen::Vector2d::Zero();    ///< m, line end F = S + L u (8.4)
+  Eigen::Vector2d start = Eigen::Vector2d::Zero();               ///< m, line start S
+  Eigen::Vector2d end = Eigen::Vector2d::Zero();                 ///< m, line end F = S + L u (8.4)
   Eigen::Vector2d root_in_line_frame = Eigen::Vector2d::Zero();  ///< m, (X, Y)
 };
 
 /// Candidate counts of one sweep.
 struct Counts {
-  int total = 0;        ///< candidates of the full sweep (x_s grid x phi in [0, 180] deg)
+  int total = 0;  ///< candidates of the full sweep (x_s grid x phi in [0, 180] deg)
   int unreachable = 0;
   int singular = 0;
   int over_limit = 0;
@@ -109,10 +109,10 @@ struct Counts {
 /// row j is Y = y[j], column i is X = x[i]. Y >= 0 only: the half-plane Y < 0 is the mirror
 /// image with configurations 1 and 2 swapped.
 struct EnergyMap {
-  std::vector<double> x, y;  ///< m, node coordinates
-  std::vector<float> energy;               ///< J (NaN where unreachable), ny * nx
-  std::vector<CandidateStatus> status;     ///< ny * nx
-  std::vector<float> peak_torque;          ///< N m, max over both joints (NaN if unreachable)
+  std::vector<double> x, y;             ///< m, node coordinates
+  std::vector<float> energy;            ///< J (NaN where unreachable), ny * nx
+  std::vector<CandidateStatus> status;  ///< ny * nx
+  std::vector<float> peak_torque;       ///< N m, max over both joints (NaN if unreachable)
 };
 
 /// Energy versus direction angle at one start abscissa (the thesis's Fig. 9.11 etc.).
@@ -127,9 +127,9 @@ struct PhiCurve {
 /// of the front's joint is at most peak_torque[joint].
 struct ParetoPoint {
   double peak_torque[2] = {0, 0};  ///< N m, peak |tau| of joints 1 and 2 of this candidate
-  double energy = 0;       ///< J
-  double x_s = 0, phi = 0; ///< m, rad
-  bool singular = false;   ///< closer to a boundary than the margin (only in pareto_excluded)
+  double energy = 0;               ///< J
+  double x_s = 0, phi = 0;         ///< m, rad
+  bool singular = false;  ///< closer to a boundary than the margin (only in pareto_excluded)
 };
 
 /// Everything found for one motion program and configuration.
@@ -137,23 +137,23 @@ struct ProgramConfig {
   core::MotionProgram program = core::MotionProgram::kCycloidal;
   int configuration = 1;
   Counts counts;
-  bool found = false;      ///< an admissible optimum exists
-  std::string reason;      ///< why not, when !found
-  Candidate grid;          ///< best feasible candidate of the sweep
-  Candidate refined;       ///< after the local refinement (== grid when not refined)
+  bool found = false;  ///< an admissible optimum exists
+  std::string reason;  ///< why not, when !found
+  Candidate grid;      ///< best feasible candidate of the sweep
+  Candidate refined;   ///< after the local refinement (== grid when not refined)
   int refine_evaluations = 0;
-  std::string refine_method;       ///< the refinement's stages ("" when not refined)
-  double refine_tolerance_rel = 0; ///< relative energy a final restart still gained
-  bool refine_converged = false;   ///< refine_tolerance_rel <= 1e-7
-  Decision decision;               ///< what decides the refined optimum
+  std::string refine_method;        ///< the refinement's stages ("" when not refined)
+  double refine_tolerance_rel = 0;  ///< relative energy a final restart still gained
+  bool refine_converged = false;    ///< refine_tolerance_rel <= 1e-7
+  Decision decision;                ///< what decides the refined optimum
   /// the optimum re-solved at a range of margins (when a clearance binds), by margin
   std::vector<MarginPoint> margin_sensitivity;
-  Placement placement;     ///< of the refined optimum
-  TimeSeries series;       ///< of the refined optimum
+  Placement placement;  ///< of the refined optimum
+  TimeSeries series;    ///< of the refined optimum
   bool thesis_found = false;
-  Candidate thesis_best;   ///< least energy among the thesis's own candidates, any status
+  Candidate thesis_best;  ///< least energy among the thesis's own candidates, any status
   EnergyMap map;
-  PhiCurve curve;          ///< at the refined optimum's own x_s (or the thesis's first x_s)
+  PhiCurve curve;  ///< at the refined optimum's own x_s (or the thesis's first x_s)
   /// Pareto fronts of (peak torque of joint j, energy), j = 0 (root), 1 (elbow), over the
   /// admissible candidates only (feasible, energy converged) and the refined optimum; by
   /// increasing peak torque of that joint and decreasing energy
@@ -170,18 +170,18 @@ struct Evaluation {
   int configuration = 1;
   Candidate candidate;
   Placement placement;
-  TimeSeries series;     ///< empty when unreachable
-  bool has_saving = false;   ///< both energies converged and neither motion singular
-  double saving = 0;         ///< J, energy minus the refined optimum's
-  double saving_percent = 0; ///< % of this placement's energy
+  TimeSeries series;          ///< empty when unreachable
+  bool has_saving = false;    ///< both energies converged and neither motion singular
+  double saving = 0;          ///< J, energy minus the refined optimum's
+  double saving_percent = 0;  ///< % of this placement's energy
 };
 
 struct Result {
   Status status = Status::kSolved;
   std::string message;
-  double lmax = 0;       ///< m, 4 sqrt(L1 L2) (4.6)
-  double length = 0;     ///< m
-  double inner = 0, outer = 0;  ///< m, annulus radii
+  double lmax = 0;                 ///< m, 4 sqrt(L1 L2) (4.6)
+  double length = 0;               ///< m
+  double inner = 0, outer = 0;     ///< m, annulus radii
   double xs_init = 0, xs_fin = 0;  ///< m, the thesis's start-point interval
   int thesis_xs_case = 0;
   std::vector<ProgramConfig> cases;  ///< programs x configurations, in the spec's order

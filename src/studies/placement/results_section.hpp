@@ -48,8 +48,8 @@ struct ResultsSection {
   };
   /// the counts of one program and configuration's sweep (limits applied)
   struct SweepCounts {
-    int total = 0, unreachable = 0, singular = 0, over_limit = 0, feasible = 0,
-        thesis_admitted = 0, thesis_rejected_by_exact_check = 0, exact_accepted_outside_thesis = 0;
+    int total = 0, unreachable = 0, singular = 0, over_limit = 0, feasible = 0, thesis_admitted = 0,
+        thesis_rejected_by_exact_check = 0, exact_accepted_outside_thesis = 0;
   };
   /// the counts of the geometric sweep, the same for every program and configuration
   struct GeometryCounts {
@@ -197,7 +197,8 @@ void fields(V& v, ResultsSection::EnergyConvergence& x) {
   v("singular", x.singular, "touches_boundary or not converged: no energy is printed");
   v("samples", x.samples, "samples of the reported metrics");
   v("rel_change", x.rel_change, "relative energy change at the last doubling");
-  v("peak_torque_rel_change", x.peak_torque_rel_change, "relative peak torque change at the last doubling");
+  v("peak_torque_rel_change", x.peak_torque_rel_change,
+    "relative peak torque change at the last doubling");
   v("tolerance_rel", x.tolerance_rel, "the relative tolerance asked for");
   v("rows", x.rows, "every doubling tried, coarsest first");
 }
@@ -205,10 +206,12 @@ template <class V>
 void fields(V& v, ResultsSection::Metrics& x) {
   v("energy_J", x.energy_J, "energy of the motion (null: singular or unreachable)");
   v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| [j1, j2] (null: singular or unreachable)");
-  v.optional("energy_samples", x.energy_samples, "samples where the energy converged (when checked)");
+  v.optional("energy_samples", x.energy_samples,
+             "samples where the energy converged (when checked)");
   v.optional("singular_trajectory", x.singular_trajectory, "the motion is singular");
   v.optional("note", x.note, "present for a singular motion");
-  v.optional("energy_convergence", x.energy_convergence, "the doubling of the samples (when checked)");
+  v.optional("energy_convergence", x.energy_convergence,
+             "the doubling of the samples (when checked)");
 }
 template <class V>
 void fields(V& v, ResultsSection::SweepCounts& x) {
@@ -259,7 +262,8 @@ void fields(V& v, ResultsSection::Series& x) {
 }
 template <class V>
 void fields(V& v, ResultsSection::Decision& x) {
-  v("binding", x.binding, "interior, inner_clearance, outer_clearance, torque_limit or power_limit");
+  v("binding", x.binding,
+    "interior, inner_clearance, outer_clearance, torque_limit or power_limit");
   v("inner_slack_m", x.inner_slack_m, "clearance to the inner circle minus the margin");
   v("outer_slack_m", x.outer_slack_m, "clearance to the outer circle minus the margin");
   v("margin_m", x.margin_m, "the singularity margin");
@@ -271,7 +275,8 @@ void fields(V& v, ResultsSection::Decision& x) {
 template <class V>
 void fields(V& v, ResultsSection::Refinement& x) {
   v("method", x.method, "the refinement's stages (null: not refined)");
-  v("final_tolerance_rel", x.final_tolerance_rel, "relative energy a final restart still gained (null: not refined)");
+  v("final_tolerance_rel", x.final_tolerance_rel,
+    "relative energy a final restart still gained (null: not refined)");
   v("target_rel", x.target_rel, "the relative gain below which the refinement is converged");
   v("converged", x.converged, "final_tolerance_rel <= target_rel");
   v("evaluations", x.evaluations, "energy evaluations of the refinement");
@@ -284,7 +289,8 @@ void fields(V& v, ResultsSection::MarginOptimum& x) {
   v("root_xy_m", x.root_xy_m, "the optimum's root in the line frame (when found)");
   v("binding", x.binding, "what decides the optimum (when found)");
   v("refine_converged", x.refine_converged, "the refinement converged (when found)");
-  v("refine_tolerance_rel", x.refine_tolerance_rel, "relative gain of the last restart (when found)");
+  v("refine_tolerance_rel", x.refine_tolerance_rel,
+    "relative gain of the last restart (when found)");
 }
 template <class V>
 void fields(V& v, ResultsSection::MarginPoint& x) {
@@ -310,7 +316,8 @@ void fields(V& v, ResultsSection::Optimum& x) {
   v("refine_evaluations", x.refine_evaluations, "energy evaluations of the refinement");
   v("decided_by", x.decided_by, "what decides the optimum");
   v("refinement", x.refinement, "the local refinement");
-  v("margin_sensitivity", x.margin_sensitivity, "the optimum re-solved at other margins (when a clearance binds)");
+  v("margin_sensitivity", x.margin_sensitivity,
+    "the optimum re-solved at other margins (when a clearance binds)");
   v("line_start_m", x.line_start_m, "line start in the arm's frame");
   v("line_end_m", x.line_end_m, "line end in the arm's frame");
   v("counts", x.counts, "the sweep's counts of this program and configuration");
@@ -347,7 +354,8 @@ void fields(V& v, ResultsSection::Evaluation& x) {
   v("boundary_distance_m", x.boundary_distance_m, "distance of the line to the annulus's boundary");
   v("min_abs_sin_elbow", x.min_abs_sin_elbow, "smallest |sin q2| along the line");
   v("saving_J", x.saving_J, "energy minus the optimum's (null: not comparable)");
-  v("saving_percent", x.saving_percent, "saving_J as a share of this energy (null: not comparable)");
+  v("saving_percent", x.saving_percent,
+    "saving_J as a share of this energy (null: not comparable)");
   v("line_start_m", x.line_start_m, "line start in the arm's frame");
   v("line_end_m", x.line_end_m, "line end in the arm's frame");
   v.optional("series", x.series, "the motion (when reachable)");
@@ -358,7 +366,9 @@ void fields(V& v, ResultsSection::Curve& x) {
   v("x_s_m", x.x_s_m, "the start abscissa of the curve");
   v("phi_deg", x.phi_deg, "line directions");
   v("energy_J", x.energy_J, "energy per direction (null: unreachable)");
-  v("status", x.status, "one status character per direction: '.' unreachable, 's' singular, 'x' over a limit, 'o' feasible");
+  v("status", x.status,
+    "one status character per direction: '.' unreachable, 's' singular, 'x' over a limit, 'o' "
+    "feasible");
 }
 template <class V>
 void fields(V& v, ResultsSection::Excluded& x) {
@@ -384,7 +394,8 @@ void fields(V& v, ResultsSection::Map& x) {
   v("y_m", x.y_m, "node ordinates Y in the line frame");
   v("optimum_xy_m", x.optimum_xy_m, "the optimum's root (null: none)");
   v("encoding", x.encoding, "how the rows are written");
-  v("energy_J_rows", x.energy_J_rows, "row j is y_m[j]: energies at 4 significant digits, '-' where unreachable");
+  v("energy_J_rows", x.energy_J_rows,
+    "row j is y_m[j]: energies at 4 significant digits, '-' where unreachable");
   v("status_rows", x.status_rows, "row j is y_m[j]: one status character per node");
 }
 template <class V>
@@ -415,13 +426,16 @@ void fields(V& v, ResultsSection& x) {
   v("power_limits_W", x.power_limits_W, "power limits [j1, j2] (null: none)");
   v("thesis_intervals", x.thesis_intervals, "the thesis's start-point interval");
   v.optional("geometry_counts", x.geometry_counts,
-             "the geometric sweep (x_s grid x phi in [0, 180] deg), the same for every program and configuration");
+             "the geometric sweep (x_s grid x phi in [0, 180] deg), the same for every program and "
+             "configuration");
   v("optima", x.optima, "the refined optimum of each program and configuration that has one");
   v("unsolved", x.unsolved, "programs and configurations without an admissible placement");
-  v("thesis_search", x.thesis_search, "the least energy among the thesis's own candidates (4.7-4.13), whatever their status");
+  v("thesis_search", x.thesis_search,
+    "the least energy among the thesis's own candidates (4.7-4.13), whatever their status");
   v("evaluations", x.evaluations, "the fixed placements the case asked for");
   v("curves", x.curves, "energy over direction at the optimum's start abscissa");
-  v("pareto", x.pareto, "Pareto fronts of peak torque and energy (thinned to steps of >= 0.2 % in energy)");
+  v("pareto", x.pareto,
+    "Pareto fronts of peak torque and energy (thinned to steps of >= 0.2 % in energy)");
   v("maps", x.maps, "energy and status over root locations");
   v.optional("convergence", x.convergence, "the first optimum's energy as the samples double");
   v("mujoco_replay", x.mujoco_replay, "each optimum's torques applied open loop in MuJoCo");

@@ -36,7 +36,7 @@ struct GeoCandidate {
   Line line;
   LineCheck check;
   Set set = Set::kSweep;
-  int i = 0, j = 0;  // sweep: (x_s index, phi index); map: (X index, Y index)
+  int i = 0, j = 0;            // sweep: (x_s index, phi index); map: (X index, Y index)
   bool thesis_admits = false;  // sweep only: phi inside the thesis's interval
 };
 
@@ -101,8 +101,8 @@ Placement placement_of(const Line& line, double L) {
   Placement p;
   p.start = line.start;
   p.end = line.start + L * line.dir;
-  p.root_in_line_frame = Eigen::Vector2d(-line.start.dot(line.dir),
-                                         -line.start.dot(Eigen::Vector2d(-line.dir.y(), line.dir.x())));
+  p.root_in_line_frame = Eigen::Vector2d(
+      -line.start.dot(line.dir), -line.start.dot(Eigen::Vector2d(-line.dir.y(), line.dir.x())));
   return p;
 }
 
@@ -112,15 +112,17 @@ std::string decision_sentence(const Spec& spec, const Annulus& an, const Program
   std::ostringstream os;
   switch (d.binding) {
     case Binding::kInterior:
-      os << "interior: no constraint binds (clearances " << fmt(d.inner_slack + spec.singularity_margin, 4)
-         << " m to the inner and " << fmt(d.outer_slack + spec.singularity_margin, 4)
-         << " m to the outer circle)";
+      os << "interior: no constraint binds (clearances "
+         << fmt(d.inner_slack + spec.singularity_margin, 4) << " m to the inner and "
+         << fmt(d.outer_slack + spec.singularity_margin, 4) << " m to the outer circle)";
       return os.str();
     case Binding::kInnerClearance:
     case Binding::kOuterClearance: {
       const bool inner = d.binding == Binding::kInnerClearance;
-      os << "the optimum is set by the " << fmt(spec.singularity_margin, 4) << " m clearance margin to the "
-         << (inner ? "inner circle |L1 - L2| = " + fmt(an.inner, 3) : "outer circle L1 + L2 = " + fmt(an.outer, 3))
+      os << "the optimum is set by the " << fmt(spec.singularity_margin, 4)
+         << " m clearance margin to the "
+         << (inner ? "inner circle |L1 - L2| = " + fmt(an.inner, 3)
+                   : "outer circle L1 + L2 = " + fmt(an.outer, 3))
          << " m, not by the physics";
       const MarginPoint* lo = nullptr;
       const MarginPoint* hi = nullptr;
@@ -130,8 +132,9 @@ std::string decision_sentence(const Spec& spec, const Annulus& an, const Program
         if (!hi || m.margin > hi->margin) hi = &m;
       }
       if (lo && hi && lo != hi)
-        os << ": its energy is " << fmt(lo->optimum.metrics.energy) << " J at a " << fmt(lo->margin, 4)
-           << " m margin and " << fmt(hi->optimum.metrics.energy) << " J at " << fmt(hi->margin, 4) << " m";
+        os << ": its energy is " << fmt(lo->optimum.metrics.energy) << " J at a "
+           << fmt(lo->margin, 4) << " m margin and " << fmt(hi->optimum.metrics.energy) << " J at "
+           << fmt(hi->margin, 4) << " m";
       return os.str();
     }
     case Binding::kTorqueLimit:
@@ -197,7 +200,8 @@ Candidate evaluate_candidate(const Spec& spec, const Arm2& arm, const ProgramTab
 
 Result solve(const Spec& spec, const ProgressFn& progress) {
   const auto t_start = std::chrono::steady_clock::now();
-  ARM_THROW_UNLESS(spec.samples >= 3, "samples per trajectory " << spec.samples << " should be >= 3");
+  ARM_THROW_UNLESS(spec.samples >= 3,
+                   "samples per trajectory " << spec.samples << " should be >= 3");
   ARM_THROW_UNLESS(spec.nx_s >= 1, "nx_s " << spec.nx_s << " should be >= 1");
   ARM_THROW_UNLESS(spec.phi_step > 0, "phi step " << spec.phi_step << " rad should be > 0");
   ARM_THROW_UNLESS(spec.singularity_margin > 0,
@@ -213,20 +217,22 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.outer = an.outer;
   if (!(L > 0) || L > an.lmax * (1 + 1e-12)) {
     res.status = Status::kUnsolvable;
-    res.message = "line length " + fmt(L) + " m exceeds the longest line the arm can follow, Lmax = 4 sqrt(L1 L2) = " +
-                  fmt(an.lmax) + " m";
+    res.message =
+        "line length " + fmt(L) +
+        " m exceeds the longest line the arm can follow, Lmax = 4 sqrt(L1 L2) = " + fmt(an.lmax) +
+        " m";
     return res;
   }
-  const int threads = spec.threads > 0 ? spec.threads
-                                       : std::max(1u, std::thread::hardware_concurrency());
+  const int threads =
+      spec.threads > 0 ? spec.threads : std::max(1u, std::thread::hardware_concurrency());
   const XsInterval xsi = thesis_xs_interval(an, L);
   res.xs_init = xsi.init;
   res.xs_fin = xsi.fin;
   res.thesis_xs_case = xsi.thesis_case;
 
   // the thesis's start points: x_s from init down to fin in nx_s steps (step 3 of Ch. 4)
-  const std::vector<double> xs =
-      xsi.init == xsi.fin ? std::vector<double>{xsi.init} : linspace(xsi.init, xsi.fin, spec.nx_s + 1);
+  const std::vector<double> xs = xsi.init == xsi.fin ? std::vector<double>{xsi.init}
+                                                     : linspace(xsi.init, xsi.fin, spec.nx_s + 1);
   // the full sweep of direction angles: [0, pi] in steps of phi_step, pi included
   std::vector<double> phis;
   for (int k = 0; k * spec.phi_step < core::kPi - 1e-9; ++k) phis.push_back(k * spec.phi_step);
@@ -274,8 +280,12 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
 
   // program tables and the (program, configuration) pairs
   std::vector<ProgramTable> tables;
-  for (const auto p : spec.programs) tables.push_back(make_program_table(p, spec.duration, L, spec.samples));
-  struct Pc { int program; int configuration; };
+  for (const auto p : spec.programs)
+    tables.push_back(make_program_table(p, spec.duration, L, spec.samples));
+  struct Pc {
+    int program;
+    int configuration;
+  };
   std::vector<Pc> pcs;
   for (size_t p = 0; p < spec.programs.size(); ++p)
     for (const int c : spec.configurations) pcs.push_back({int(p), c});
@@ -309,20 +319,21 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     }
   }
   std::atomic<long long> redo_samples{0};
-  parallel_for(long(redo.size()), threads, progress, 0.8, 0.82, "placement sweep convergence", [&](long t) {
-    const size_t m = size_t(redo[size_t(t)]);
-    const size_t pc = m / geo.size(), k = m % geo.size();
-    const EnergyConvergence c =
-        converge_energy(arm, spec.programs[size_t(pcs[pc].program)], spec.duration, L, geo[k].line,
-                        pcs[pc].configuration, spec.samples, false, kEnergyTol);
-    long long n = 0;
-    for (const auto& row : c.rows) n += row.samples;
-    redo_samples += n;
-    if (c.converged) {
-      metrics[m] = c.metrics;
-      conv_ok[m] = 1;
-    }
-  });
+  parallel_for(
+      long(redo.size()), threads, progress, 0.8, 0.82, "placement sweep convergence", [&](long t) {
+        const size_t m = size_t(redo[size_t(t)]);
+        const size_t pc = m / geo.size(), k = m % geo.size();
+        const EnergyConvergence c =
+            converge_energy(arm, spec.programs[size_t(pcs[pc].program)], spec.duration, L,
+                            geo[k].line, pcs[pc].configuration, spec.samples, false, kEnergyTol);
+        long long n = 0;
+        for (const auto& row : c.rows) n += row.samples;
+        redo_samples += n;
+        if (c.converged) {
+          metrics[m] = c.metrics;
+          conv_ok[m] = 1;
+        }
+      });
   res.samples_evaluated += redo_samples.load();
 
   // per pair: classify, count, optimum, thesis's optimum, curve, map, Pareto front
@@ -331,7 +342,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     out.program = spec.programs[pcs[pc].program];
     out.configuration = pcs[pc].configuration;
     const ProgramTable& table = tables[pcs[pc].program];
-    const auto metric = [&](size_t k) -> const LineMetrics& { return metrics[pc * geo.size() + k]; };
+    const auto metric = [&](size_t k) -> const LineMetrics& {
+      return metrics[pc * geo.size() + k];
+    };
     const auto converged_at = [&](size_t k) { return conv_ok[pc * geo.size() + k] != 0; };
     const auto candidate = [&](size_t k) {
       Candidate c;
@@ -355,7 +368,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     Counts& n = out.counts;
     long best = -1, thesis_best = -1;
     for (size_t k = 0; k < geo.size(); ++k) {
-      const bool accepted = st[k] == CandidateStatus::kFeasible || st[k] == CandidateStatus::kOverLimit;
+      const bool accepted =
+          st[k] == CandidateStatus::kFeasible || st[k] == CandidateStatus::kOverLimit;
       if (geo[k].set == Set::kSweep) {
         ++n.total;
         switch (st[k]) {
@@ -383,7 +397,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       out.thesis_best = candidate(size_t(thesis_best));
       out.thesis_best.convergence =
           converged(spec, arm, out.program, out.thesis_best, out.configuration);
-      if (!out.thesis_best.convergence.singular()) out.thesis_best.metrics = out.thesis_best.convergence.metrics;
+      if (!out.thesis_best.convergence.singular())
+        out.thesis_best.metrics = out.thesis_best.convergence.metrics;
     }
 
     // map
@@ -416,12 +431,13 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
 
     if (best < 0) {
       out.found = false;
-      out.reason = "no candidate keeps the line " + fmt(spec.singularity_margin) +
-                   " m inside the reachable annulus [" + fmt(an.inner, 3) + ", " + fmt(an.outer, 3) +
-                   "] m" + (spec.torque_limit || spec.power_limit ? " within the actuator limits" : "") +
-                   "; of the " + std::to_string(n.total) + " sweep candidates " +
-                   std::to_string(n.unreachable) + " are unreachable, " + std::to_string(n.singular) +
-                   " inside the margin, " + std::to_string(n.over_limit) + " over a limit";
+      out.reason =
+          "no candidate keeps the line " + fmt(spec.singularity_margin) +
+          " m inside the reachable annulus [" + fmt(an.inner, 3) + ", " + fmt(an.outer, 3) + "] m" +
+          (spec.torque_limit || spec.power_limit ? " within the actuator limits" : "") +
+          "; of the " + std::to_string(n.total) + " sweep candidates " +
+          std::to_string(n.unreachable) + " are unreachable, " + std::to_string(n.singular) +
+          " inside the margin, " + std::to_string(n.over_limit) + " over a limit";
     } else {
       out.found = true;
       out.grid = candidate(size_t(best));
@@ -429,9 +445,11 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     }
 
     // constrained local refinement of (x_s, phi) around the grid optimum (refine.hpp)
-    const double hx = std::max({xs.size() > 1 ? std::abs(xs[0] - xs[1]) : 0.0,
-                                mx[1] - mx[0], my[1] - my[0], 1e-4});
-    const auto hphi_at = [&](double x_s) { return std::max(spec.phi_step, hx / std::max(x_s, 1e-3)); };
+    const double hx = std::max(
+        {xs.size() > 1 ? std::abs(xs[0] - xs[1]) : 0.0, mx[1] - mx[0], my[1] - my[0], 1e-4});
+    const auto hphi_at = [&](double x_s) {
+      return std::max(spec.phi_step, hx / std::max(x_s, 1e-3));
+    };
     if (out.found && spec.refine) {
       const Refinement rf = refine_constrained(spec, arm, table, out.configuration, out.grid, hx,
                                                hphi_at(out.grid.x_s));
@@ -439,7 +457,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       out.refine_method = rf.method;
       out.refine_tolerance_rel = rf.tolerance_rel;
       out.refine_converged = rf.converged;
-      if (rf.best.status == CandidateStatus::kFeasible && rf.best.metrics.energy <= out.grid.metrics.energy)
+      if (rf.best.status == CandidateStatus::kFeasible &&
+          rf.best.metrics.energy <= out.grid.metrics.energy)
         out.refined = rf.best;
       res.samples_evaluated += long(rf.evaluations) * spec.samples;
     }
@@ -454,7 +473,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
 
     // the optimum against the clearance margin, when a clearance decides it
     if (out.found && spec.refine &&
-        (out.decision.binding == Binding::kInnerClearance || out.decision.binding == Binding::kOuterClearance)) {
+        (out.decision.binding == Binding::kInnerClearance ||
+         out.decision.binding == Binding::kOuterClearance)) {
       std::vector<double> margins = spec.sensitivity_margins;
       margins.push_back(spec.singularity_margin);
       std::sort(margins.begin(), margins.end());
@@ -481,10 +501,10 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
         }
         Spec sm = spec;
         sm.singularity_margin = m;
-        const Candidate start = evaluate_candidate(sm, arm, table, out.configuration, geo[size_t(k0)].x_s,
-                                                   geo[size_t(k0)].phi);
-        const Refinement rf = refine_constrained(sm, arm, table, out.configuration, start, hx,
-                                                 hphi_at(start.x_s));
+        const Candidate start = evaluate_candidate(sm, arm, table, out.configuration,
+                                                   geo[size_t(k0)].x_s, geo[size_t(k0)].phi);
+        const Refinement rf =
+            refine_constrained(sm, arm, table, out.configuration, start, hx, hphi_at(start.x_s));
         res.samples_evaluated += long(rf.evaluations) * spec.samples;
         const Candidate& c = rf.best.status == CandidateStatus::kFeasible &&
                                      rf.best.metrics.energy <= start.metrics.energy
@@ -510,7 +530,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     std::vector<FrontPoint> admissible, excluded;
     for (size_t k = 0; k < geo.size(); ++k) {
       if (!converged_at(k)) continue;
-      if (st[k] == CandidateStatus::kFeasible) admissible.push_back({&metric(k), geo[k].x_s, geo[k].phi});
+      if (st[k] == CandidateStatus::kFeasible)
+        admissible.push_back({&metric(k), geo[k].x_s, geo[k].phi});
       else if (st[k] == CandidateStatus::kSingular && geo[k].check.boundary_distance >= kTouch)
         excluded.push_back({&metric(k), geo[k].x_s, geo[k].phi});
     }
@@ -551,9 +572,11 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
         // narrow admissible range of phi at its own x_s)
         cphi.push_back(out.refined.phi);
         for (int k = 1; k <= 20; ++k)
-          for (const int side : {-1, 1}) cphi.push_back(out.refined.phi + side * k * 0.05 * spec.phi_step);
+          for (const int side : {-1, 1})
+            cphi.push_back(out.refined.phi + side * k * 0.05 * spec.phi_step);
         std::sort(cphi.begin(), cphi.end());
-        cphi.erase(std::remove_if(cphi.begin(), cphi.end(), [](double p) { return p < 0 || p > core::kPi; }),
+        cphi.erase(std::remove_if(cphi.begin(), cphi.end(),
+                                  [](double p) { return p < 0 || p > core::kPi; }),
                    cphi.end());
       }
       for (const double ph : cphi) {
@@ -585,19 +608,23 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       e.label = ev.label;
       e.program = spec.programs[pcs[pc].program];
       e.configuration = pcs[pc].configuration;
-      e.candidate = evaluate_candidate(spec, arm, tables[pcs[pc].program], e.configuration, ev.x_s, ev.phi);
+      e.candidate =
+          evaluate_candidate(spec, arm, tables[pcs[pc].program], e.configuration, ev.x_s, ev.phi);
       if (e.candidate.status != CandidateStatus::kUnreachable) {
         e.candidate.convergence = converged(spec, arm, e.program, e.candidate, e.configuration);
         // the printed metrics are those at the samples where the doubling converged
-        if (!e.candidate.convergence.singular()) e.candidate.metrics = e.candidate.convergence.metrics;
+        if (!e.candidate.convergence.singular())
+          e.candidate.metrics = e.candidate.convergence.metrics;
       }
       const Line line = thesis_line(ev.x_s, ev.phi);
       e.placement = placement_of(line, L);
       if (e.candidate.status != CandidateStatus::kUnreachable) {
-        const int n = e.candidate.convergence.singular() ? spec.samples : e.candidate.convergence.samples;
-        e.series = n == spec.samples ? sample_series(arm, tables[pcs[pc].program], line, e.configuration)
-                                     : sample_series(arm, make_program_table(e.program, spec.duration, L, n),
-                                                     line, e.configuration);
+        const int n =
+            e.candidate.convergence.singular() ? spec.samples : e.candidate.convergence.samples;
+        e.series = n == spec.samples
+                       ? sample_series(arm, tables[pcs[pc].program], line, e.configuration)
+                       : sample_series(arm, make_program_table(e.program, spec.duration, L, n),
+                                       line, e.configuration);
       }
       const ProgramConfig& opt = res.cases[pc];
       // a saving only between converged, regular motions
@@ -648,7 +675,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
         max_work, 1e-6));
     double worst_margin = 0;
     for (const auto& c : res.cases)
-      if (c.found) worst_margin = std::max(worst_margin, spec.singularity_margin - c.refined.boundary_distance);
+      if (c.found)
+        worst_margin =
+            std::max(worst_margin, spec.singularity_margin - c.refined.boundary_distance);
     res.checks.push_back(make_check("optima_clear_of_singularities",
                                     "largest amount by which an optimum's line comes closer to a "
                                     "workspace boundary than the singularity margin, m (an optimum "
@@ -684,9 +713,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     double worse = 0;
     for (const auto& c : res.cases)
       if (c.found) worse = std::max(worse, c.refined.metrics.energy - c.grid.metrics.energy);
-    res.checks.push_back(make_check("refinement_not_worse",
-                                    "largest increase of an optimum's energy by the local refinement, J",
-                                    worse, 0.0));
+    res.checks.push_back(make_check(
+        "refinement_not_worse",
+        "largest increase of an optimum's energy by the local refinement, J", worse, 0.0));
     if (res.convergence.size() >= 2) {
       const double e_ref = res.convergence.back().energy;
       double e_spec = kNaN;
@@ -696,24 +725,27 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
           break;
         }
       }
-      res.checks.push_back(make_check(
-          "energy_converged",
-          "relative difference of the first optimum's energy at " + std::to_string(spec.samples) +
-              " samples from its value at " + std::to_string(res.convergence.back().samples) + " samples",
-          std::abs(e_spec - e_ref) / e_ref, 1e-4));
+      res.checks.push_back(
+          make_check("energy_converged",
+                     "relative difference of the first optimum's energy at " +
+                         std::to_string(spec.samples) + " samples from its value at " +
+                         std::to_string(res.convergence.back().samples) + " samples",
+                     std::abs(e_spec - e_ref) / e_ref, 1e-4));
     }
   }
 
   if (found == 0) {
     res.status = Status::kUnsolvable;
     std::string why = "no admissible placement: every candidate line comes closer than " +
-                      fmt(spec.singularity_margin, 3) + " m to a boundary of the reachable annulus [" +
-                      fmt(an.inner, 3) + ", " + fmt(an.outer, 3) + "] m";
+                      fmt(spec.singularity_margin, 3) +
+                      " m to a boundary of the reachable annulus [" + fmt(an.inner, 3) + ", " +
+                      fmt(an.outer, 3) + "] m";
     if (spec.torque_limit || spec.power_limit) why += " or breaks an actuator limit";
     const double longest = longest_line(an, spec.singularity_margin);
     if (L > longest)
-      why += "; with this margin the longest line that fits is " + fmt(longest) + " m (L = " + fmt(L) +
-             " m, Lmax = " + fmt(an.lmax) + " m: a line of length Lmax only fits tangent to the inner circle "
+      why += "; with this margin the longest line that fits is " + fmt(longest) +
+             " m (L = " + fmt(L) + " m, Lmax = " + fmt(an.lmax) +
+             " m: a line of length Lmax only fits tangent to the inner circle "
              "with both ends on the outer one, a singular motion)";
     res.message = why;
   } else {
@@ -721,9 +753,10 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     for (const auto& c : res.cases)
       if (c.found && (!best || c.refined.metrics.energy < best->refined.metrics.energy)) best = &c;
     std::ostringstream os;
-    os << "least energy " << fmt(best->refined.metrics.energy) << " J (" << core::program_name(best->program)
-       << ", configuration " << best->configuration << ") with the root at X = "
-       << fmt(best->refined.root.x()) << " m, Y = " << fmt(best->refined.root.y())
+    os << "least energy " << fmt(best->refined.metrics.energy) << " J ("
+       << core::program_name(best->program) << ", configuration " << best->configuration
+       << ") with the root at X = " << fmt(best->refined.root.x())
+       << " m, Y = " << fmt(best->refined.root.y())
        << " m from the line's start (x_s = " << fmt(best->refined.x_s, 5)
        << " m, phi = " << fmt(best->refined.phi / kDeg, 3) << " deg)";
     os << "; " << decision_sentence(spec, an, *best);
@@ -734,7 +767,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     if (found > 1 && by_margin > 0)
       os << " (" << by_margin << " of " << found << " optima are set by the clearance margin)";
     if (found < int(res.cases.size()))
-      os << "; " << (res.cases.size() - found) << " program/configuration pair(s) have no admissible placement";
+      os << "; " << (res.cases.size() - found)
+         << " program/configuration pair(s) have no admissible placement";
     res.message = os.str();
   }
   if (progress) progress(1.0, "placement done");

@@ -16,9 +16,9 @@ namespace armstudy::studies::placement {
 
 /// A fixed placement to evaluate: the thesis's line (x_s, phi) in the arm's frame.
 struct EvaluationSpec {
-  std::string label;   ///< a person's name for it ("" for none)
-  double x_s = 0;      ///< m, start point (x_s, 0) in the arm's frame
-  double phi = 0;      ///< rad, direction angle of the line
+  std::string label;  ///< a person's name for it ("" for none)
+  double x_s = 0;     ///< m, start point (x_s, 0) in the arm's frame
+  double phi = 0;     ///< rad, direction angle of the line
 };
 
 struct Spec {
@@ -28,9 +28,9 @@ struct Spec {
   std::vector<core::MotionProgram> programs = {core::MotionProgram::kCycloidal,
                                                core::MotionProgram::kPoly345};
   std::vector<int> configurations = {1, 2};
-  int nx_s = 50;                 ///< start-point steps: nx_s + 1 start points
+  int nx_s = 50;                                   ///< start-point steps: nx_s + 1 start points
   double phi_step = 3.14159265358979323846 / 180;  ///< rad, direction-angle step (1 deg)
-  int samples = 401;             ///< samples per trajectory (uniform in time, both ends)
+  int samples = 401;                 ///< samples per trajectory (uniform in time, both ends)
   double singularity_margin = 0.01;  ///< m, least distance of the line to either boundary
   std::optional<std::array<double, 2>> torque_limit;  ///< N m, per joint
   std::optional<std::array<double, 2>> power_limit;   ///< W, per joint
@@ -41,7 +41,7 @@ struct Spec {
   /// m, margins at which an optimum set by a clearance is re-solved (the sensitivity curve;
   /// the spec's own margin is added; margins the annulus cannot take are skipped)
   std::vector<double> sensitivity_margins = {0.005, 0.0075, 0.0125, 0.015, 0.02, 0.03, 0.04, 0.05};
-  double refine_xtol = 1e-5;                                 ///< m
+  double refine_xtol = 1e-5;                                   ///< m
   double refine_phitol = 1e-3 * 3.14159265358979323846 / 180;  ///< rad
   int threads = 0;  ///< worker threads for the sweeps (0: all hardware threads)
 };

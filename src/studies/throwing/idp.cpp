@@ -80,7 +80,8 @@ IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
         r.evaluations += static_cast<long>(evs.size());
         int best = -1;
         for (size_t j = 0; j < evs.size(); ++j)
-          if (better_profile(evs[j], best < 0 ? r.evaluation : evs[best])) best = static_cast<int>(j);
+          if (better_profile(evs[j], best < 0 ? r.evaluation : evs[best]))
+            best = static_cast<int>(j);
         if (best >= 0) {
           r.best = cands[best];
           r.evaluation = evs[best];

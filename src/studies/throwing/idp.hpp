@@ -9,8 +9,8 @@
 /// k .. P-1 all move by delta (drawn uniformly in [-r, r] per joint), the last stage brings
 /// the rate back to the prescribed release rate, and the projection of profile.hpp restores
 /// the release angles. R candidates per node are simulated and the best is kept if it is
-/// better by the feasibility rules below (frame A of Fig. 4). After the sweep the region is shrunk, r <- gamma r
-/// (frame B). Luus's multi-pass variant restarts the region after every `iterations`
+/// better by the feasibility rules below (frame A of Fig. 4). After the sweep the region is shrunk,
+/// r <- gamma r (frame B). Luus's multi-pass variant restarts the region after every `iterations`
 /// iterations at `restore` times the previous pass's start. (Moving one node alone, a
 /// hat-shaped change of the rate, was tried first: it stalled at a 10 % saving on the
 /// default case, where shifting the tail reaches about 30 %.) Candidates are drawn in one
@@ -41,29 +41,29 @@ namespace armstudy::studies {
 /// a run that reaches `max_passes` first is not converged (IdpResult::converged false,
 /// last_gain kept).
 struct IdpSettings {
-  int iterations = 6;                             ///< iterations (stage sweeps) per pass
-  int max_passes = 40;                            ///< budget: passes at most
-  double tolerance = 1e-3;                        ///< relative energy gain of a pass
-  int quiet_passes = 2;                           ///< passes in a row below the tolerance
-  double restore = 0.8;                           ///< region factor between passes
-  int candidates = 5;                             ///< R, candidates per stage node
-  double shrink = 0.7;                            ///< gamma, region factor per iteration
-  Eigen::Vector2d region = {1.0, 1.0};            ///< rad/s, initial half-width per joint
-  unsigned seed = 1;                              ///< std::mt19937 seed
-  int seeds = 4;                                  ///< runs with seeds seed, seed + 1, ...
-  double backoff = 0.02;                          ///< constraint back-off (constraint_values)
-  int threads = 2;                                ///< evaluation threads (>= 1)
+  int iterations = 6;                   ///< iterations (stage sweeps) per pass
+  int max_passes = 40;                  ///< budget: passes at most
+  double tolerance = 1e-3;              ///< relative energy gain of a pass
+  int quiet_passes = 2;                 ///< passes in a row below the tolerance
+  double restore = 0.8;                 ///< region factor between passes
+  int candidates = 5;                   ///< R, candidates per stage node
+  double shrink = 0.7;                  ///< gamma, region factor per iteration
+  Eigen::Vector2d region = {1.0, 1.0};  ///< rad/s, initial half-width per joint
+  unsigned seed = 1;                    ///< std::mt19937 seed
+  int seeds = 4;                        ///< runs with seeds seed, seed + 1, ...
+  double backoff = 0.02;                ///< constraint back-off (constraint_values)
+  int threads = 2;                      ///< evaluation threads (>= 1)
 };
 
 /// One IDP iteration's outcome.
 struct IdpIteration {
-  int iteration = 0;         ///< 1-based, counted over all passes
-  int pass = 0;              ///< 1-based
-  double energy = 0;         ///< J, eq. 7 of the best
-  double violation = 0;      ///< total constraint violation of the best (0: feasible)
-  Eigen::Vector2d region;    ///< rad/s, region used in the iteration
-  long evaluations = 0;      ///< simulations so far
-  int improvements = 0;      ///< stage nodes improved in this iteration
+  int iteration = 0;       ///< 1-based, counted over all passes
+  int pass = 0;            ///< 1-based
+  double energy = 0;       ///< J, eq. 7 of the best
+  double violation = 0;    ///< total constraint violation of the best (0: feasible)
+  Eigen::Vector2d region;  ///< rad/s, region used in the iteration
+  long evaluations = 0;    ///< simulations so far
+  int improvements = 0;    ///< stage nodes improved in this iteration
 };
 
 /// Outcome of IDP.

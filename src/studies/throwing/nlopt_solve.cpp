@@ -24,7 +24,7 @@ struct Problem {
   std::vector<double> values, grads;
   NloptOutcome* out;
   nlopt_opt opt = nullptr;
-  bool found = false;  // kViolation: a feasible point was met
+  bool found = false;    // kViolation: a feasible point was met
   VelocityProfile last;  // the last point SLSQP evaluated (not a difference neighbour)
 };
 
@@ -99,7 +99,8 @@ void inequalities(unsigned m, double* result, unsigned n, const double* x, doubl
   compute(pr, x);
   for (unsigned j = 0; j < m; ++j) {
     result[j] = pr.values[1 + j];
-    if (grad) std::copy(pr.grads.begin() + (1 + j) * n, pr.grads.begin() + (2 + j) * n, grad + j * n);
+    if (grad)
+      std::copy(pr.grads.begin() + (1 + j) * n, pr.grads.begin() + (2 + j) * n, grad + j * n);
   }
 }
 
@@ -142,7 +143,7 @@ NloptOutcome run_nlopt(const ThrowSetup& setup, const VelocityProfile& initial,
   const auto t0 = std::chrono::steady_clock::now();
   NloptOutcome out;
   Problem pr{&setup, initial, delta, settings, objective_kind, {}, 6 * initial.stages() + 1,
-             {}, {}, &out, nullptr, false, {}};
+             {},     {},      &out,  nullptr,  false,          {}};
   const bool repair = objective_kind == Objective::kViolation;
   const int n = num_vars(initial);
   std::vector<double> x(n);
@@ -173,7 +174,8 @@ NloptOutcome run_nlopt(const ThrowSetup& setup, const VelocityProfile& initial,
   out.objective = repair ? out.evaluation.violation : out.evaluation.energy;
   out.rate_change = (out.best.v - initial.v).cwiseAbs().maxCoeff();
   double worst = -INFINITY;
-  for (double g : constraint_values(setup, out.evaluation, settings.backoff)) worst = std::max(worst, g);
+  for (double g : constraint_values(setup, out.evaluation, settings.backoff))
+    worst = std::max(worst, g);
   // an SQP iterate meets its constraints only to its own tolerance: it must be at least
   // 3/4 of the back-off inside every limit (the finer check samples between its steps)
   out.feasible = out.evaluation.finite && worst <= (repair ? 0.0 : 0.25 * settings.backoff) &&
@@ -181,11 +183,12 @@ NloptOutcome run_nlopt(const ThrowSetup& setup, const VelocityProfile& initial,
   out.iterations = static_cast<int>(out.history.size());
   const size_t H = out.history.size();
   if (H >= 2)
-    out.last_gain = (out.history[H - 2] - out.history[H - 1]) /
-                    std::max(std::abs(out.history[H - 1]), 1e-12);
-  out.converged = out.feasible && (repair ? r == NLOPT_STOPVAL_REACHED
-                                          : (r == NLOPT_FTOL_REACHED || r == NLOPT_XTOL_REACHED ||
-                                             r == NLOPT_SUCCESS));
+    out.last_gain =
+        (out.history[H - 2] - out.history[H - 1]) / std::max(std::abs(out.history[H - 1]), 1e-12);
+  out.converged =
+      out.feasible &&
+      (repair ? r == NLOPT_STOPVAL_REACHED
+              : (r == NLOPT_FTOL_REACHED || r == NLOPT_XTOL_REACHED || r == NLOPT_SUCCESS));
   out.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

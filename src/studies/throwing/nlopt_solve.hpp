@@ -28,36 +28,36 @@
 namespace armstudy::studies {
 
 struct NloptSettings {
-  int max_evaluations = 400;       ///< budget: SLSQP iterations (each 1 + 2n simulations)
-  double max_time = 900.0;         ///< s, wall-clock safety net (the budget is max_evaluations:
-                                   ///< a wall-clock limit would make the answer load-dependent)
-  double ftol_rel = 1e-6;          ///< relative objective change that stops SLSQP
-  double xtol_rel = 1e-6;          ///< relative rate change that stops SLSQP
-  double fd_step = 1e-5;           ///< rad/s, central-difference step
-  double backoff = 0.02;           ///< constraint back-off (constraint_values)
+  int max_evaluations = 400;  ///< budget: SLSQP iterations (each 1 + 2n simulations)
+  double max_time = 900.0;    ///< s, wall-clock safety net (the budget is max_evaluations:
+                              ///< a wall-clock limit would make the answer load-dependent)
+  double ftol_rel = 1e-6;     ///< relative objective change that stops SLSQP
+  double xtol_rel = 1e-6;     ///< relative rate change that stops SLSQP
+  double fd_step = 1e-5;      ///< rad/s, central-difference step
+  double backoff = 0.02;      ///< constraint back-off (constraint_values)
   int threads = 2;
 };
 
 /// What SLSQP minimises.
 enum class Objective {
-  kEnergy,    ///< eq. 7
+  kEnergy,     ///< eq. 7
   kViolation,  ///< squared constraint violation (repair of an infeasible start)
 };
 
 struct NloptOutcome {
-  VelocityProfile best;              ///< SLSQP's answer (its last iterate)
+  VelocityProfile best;  ///< SLSQP's answer (its last iterate)
   ProfileEvaluation evaluation;
-  std::vector<double> history;  ///< J (or (rad/s)^2), objective at each SLSQP evaluation
+  std::vector<double> history;            ///< J (or (rad/s)^2), objective at each SLSQP evaluation
   std::vector<double> violation_history;  ///< total violation at each evaluation
-  std::string return_code;      ///< NLopt's, e.g. "FTOL_REACHED"
-  bool feasible = false;        ///< every constraint >= 3/4 backoff inside (repair: backoff)
-  bool converged = false;       ///< stopped on ftol/xtol at a feasible point
-  double last_gain = NAN;       ///< relative objective change of the last iteration
-  double objective = 0;         ///< the final objective
-  double rate_change = 0;       ///< rad/s, max |change of a node rate| from the start
-  int iterations = 0;           ///< SLSQP evaluations
+  std::string return_code;                ///< NLopt's, e.g. "FTOL_REACHED"
+  bool feasible = false;   ///< every constraint >= 3/4 backoff inside (repair: backoff)
+  bool converged = false;  ///< stopped on ftol/xtol at a feasible point
+  double last_gain = NAN;  ///< relative objective change of the last iteration
+  double objective = 0;    ///< the final objective
+  double rate_change = 0;  ///< rad/s, max |change of a node rate| from the start
+  int iterations = 0;      ///< SLSQP evaluations
   long simulations = 0;
-  double run_time = 0;          ///< s
+  double run_time = 0;  ///< s
 };
 
 /// Runs SLSQP from `initial` (usually the feasible reference). Never throws on NLopt

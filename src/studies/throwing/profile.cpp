@@ -62,7 +62,8 @@ VelocityProfile eq8_profile(const Eigen::Vector2d& q_i, const Eigen::Vector2d& q
   p.tf = tf;
   p.q0 = q_i;
   p.v.resize(2, stages + 1);
-  for (int k = 0; k <= stages; ++k) p.v.col(k) = eq8_rate(q_i, qd_i, q_f, qd_f, tf, tf * k / stages);
+  for (int k = 0; k <= stages; ++k)
+    p.v.col(k) = eq8_rate(q_i, qd_i, q_f, qd_f, tf, tf * k / stages);
   p.v.col(0) = qd_i;
   p.v.col(stages) = qd_f;
   project_displacement(p, q_f - q_i);

@@ -16,7 +16,7 @@ namespace armstudy::studies {
 
 /// Node rates of joints 1 and 2 over P stages.
 struct VelocityProfile {
-  double tf = 0.8;                            ///< s
+  double tf = 0.8;                               ///< s
   Eigen::Vector2d q0 = Eigen::Vector2d::Zero();  ///< rad, angles at t = 0
   Eigen::Matrix<double, 2, Eigen::Dynamic> v;    ///< rad/s, 2 x (P + 1) node rates
 

@@ -20,14 +20,14 @@ namespace armstudy::studies {
 /// A time series of one simulated motion, sampled at every RK4 step start and every
 /// stage end (two samples share each interior stage boundary).
 struct ThrowSeries {
-  std::vector<double> t;                       ///< s
-  std::vector<core::JointVector> q, qd, qdd;   ///< (4) rad, rad/s, rad/s^2
-  std::vector<Eigen::Vector2d> tau_m;          ///< N m, motor torques
+  std::vector<double> t;                                 ///< s
+  std::vector<core::JointVector> q, qd, qdd;             ///< (4) rad, rad/s, rad/s^2
+  std::vector<Eigen::Vector2d> tau_m;                    ///< N m, motor torques
   std::vector<Eigen::Vector2d> voltage, current, power;  ///< V, A, W per motor
-  std::vector<double> energy;                  ///< J, consumed so far
-  std::vector<Eigen::Vector2d> ball;           ///< m, ball centre
-  std::vector<double> normal_force;            ///< N, tray on ball
-  std::vector<double> tangential_force;        ///< N, tray on ball (what rolling needs)
+  std::vector<double> energy;                            ///< J, consumed so far
+  std::vector<Eigen::Vector2d> ball;                     ///< m, ball centre
+  std::vector<double> normal_force;                      ///< N, tray on ball
+  std::vector<double> tangential_force;                  ///< N, tray on ball (what rolling needs)
 };
 
 /// Electrical energy split of one motion (integrals over [0, tf], J, both motors).
@@ -61,13 +61,13 @@ struct Verification {
 
 /// Ballistic flight of the ball after release.
 struct Flight {
-  bool reaches = false;             ///< the ball reaches landing_height
+  bool reaches = false;                                ///< the ball reaches landing_height
   Eigen::Vector2d release_position, release_velocity;  ///< m, m/s
-  double duration = 0;              ///< s
+  double duration = 0;                                 ///< s
   Eigen::Vector2d landing = Eigen::Vector2d::Zero();   ///< m
-  double apex = 0;                  ///< m, highest y
-  std::vector<Eigen::Vector2d> path;  ///< m, 41 points from release to landing
-  std::vector<double> path_t;       ///< s after release
+  double apex = 0;                                     ///< m, highest y
+  std::vector<Eigen::Vector2d> path;                   ///< m, 41 points from release to landing
+  std::vector<double> path_t;                          ///< s after release
 };
 
 /// Output of the throwing study (plain data).
@@ -76,30 +76,30 @@ struct ThrowingResult {
   std::string message;
   ThrowMotion initial;  ///< eq. 8 profile (raw)
   bool initial_feasible = false;
-  std::string reference_kind;  ///< "eq8" (feasible as it is), "repaired" or "none"
-  ThrowMotion reference;       ///< the feasible reference the savings are measured from
-  NloptOutcome repair_run;     ///< SLSQP nearest-feasible repair (when eq. 8 is infeasible)
-  ThrowMotion idp;      ///< IDP optimum (best seed)
-  IdpResult idp_run;    ///< the best seed's run
+  std::string reference_kind;        ///< "eq8" (feasible as it is), "repaired" or "none"
+  ThrowMotion reference;             ///< the feasible reference the savings are measured from
+  NloptOutcome repair_run;           ///< SLSQP nearest-feasible repair (when eq. 8 is infeasible)
+  ThrowMotion idp;                   ///< IDP optimum (best seed)
+  IdpResult idp_run;                 ///< the best seed's run
   std::vector<IdpResult> idp_seeds;  ///< every seed (energies, convergence)
   int idp_best_seed = 0;             ///< index into idp_seeds
   bool idp_converged = false;        ///< every seed converged
   double idp_time = 0;               ///< s, wall clock of all seeds
   Verification idp_check;
   bool nlopt_ran = false;
-  ThrowMotion nlopt;    ///< SLSQP's answer (its final point)
+  ThrowMotion nlopt;  ///< SLSQP's answer (its final point)
   NloptOutcome nlopt_run;
   Verification nlopt_check;
-  double saving_percent = 0;  ///< 100 (E_ref - E_idp) / E_ref
+  double saving_percent = 0;   ///< 100 (E_ref - E_idp) / E_ref
   std::string answer = "idp";  ///< "slsqp" when its converged, re-checked throw costs less
-  Flight flight;         ///< after IDP's release
-  Flight nlopt_flight;   ///< after SLSQP's release (when it ran)
-  double replay_error = 0;    ///< rad, max |q_replay - q_plan (16x steps)|, 4 joints
+  Flight flight;               ///< after IDP's release
+  Flight nlopt_flight;         ///< after SLSQP's release (when it ran)
+  double replay_error = 0;     ///< rad, max |q_replay - q_plan (16x steps)|, 4 joints
   std::vector<double> replay_t;
   std::vector<core::JointVector> replay_q;
-  double rk4_energy_error = 0;   ///< relative |E(n) - E(16n)| of the optimum
-  double rk4_theta3_error = 0;   ///< rad, |theta3(tf) at n - at 16n steps|
-  double run_time = 0;           ///< s
+  double rk4_energy_error = 0;  ///< relative |E(n) - E(16n)| of the optimum
+  double rk4_theta3_error = 0;  ///< rad, |theta3(tf) at n - at 16n steps|
+  double run_time = 0;          ///< s
 };
 
 }  // namespace armstudy::studies

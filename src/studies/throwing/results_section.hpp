@@ -59,8 +59,8 @@ struct ThrowingResultsSection {
   };
   /// per constraint: margin in its unit (> 0 met)
   struct Margins {
-    double contact_N = 0, friction = 0, tray_rad = 0, release_rad = 0, voltage_V = 0,
-           current_A = 0, power_W = 0;
+    double contact_N = 0, friction = 0, tray_rad = 0, release_rad = 0, voltage_V = 0, current_A = 0,
+           power_W = 0;
   };
   struct Break {
     std::string constraint;
@@ -534,8 +534,10 @@ void fields(V& v, ThrowingResultsSection::Integration& x) {
   v("steps_per_stage", x.steps_per_stage, "RK4 steps per stage");
   v("step_s", x.step_s, "RK4 step");
   v("fine_steps_factor", x.fine_steps_factor, "the accuracy check's step factor");
-  v("energy_error_vs_fine_steps", x.energy_error_vs_fine_steps, "relative energy change with the finer steps");
-  v("theta3_error_vs_fine_steps_rad", x.theta3_error_vs_fine_steps_rad, "theta3(tf) change with the finer steps");
+  v("energy_error_vs_fine_steps", x.energy_error_vs_fine_steps,
+    "relative energy change with the finer steps");
+  v("theta3_error_vs_fine_steps_rad", x.theta3_error_vs_fine_steps_rad,
+    "theta3(tf) change with the finer steps");
 }
 template <class V>
 void fields(V& v, ThrowingResultsSection::Optimised& x) {

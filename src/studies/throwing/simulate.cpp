@@ -59,7 +59,8 @@ class Planner {
     // ball's contact forces): the one-pass fast path, or the generic chain (the reference)
     const core::MixedDynamics d =
         fast_ ? fast_->mixed(out.q, out.qd, qdd_active, s_.ball_mass, out.force)
-              : core::passive_forward_dynamics(s_.chain, out.q, out.qd, qdd_active, core::JointVector::Zero(4));
+              : core::passive_forward_dynamics(s_.chain, out.q, out.qd, qdd_active,
+                                               core::JointVector::Zero(4));
     out.qdd = d.qdd;
     out.tau = d.tau;
     out.tau_m = motor_torques(s_.mount, d.tau);
@@ -87,7 +88,8 @@ class Planner {
   std::optional<TrayDynamics> fast_;
 };
 
-void record(const PointEval& pe, int stage, double t, double energy, std::vector<ThrowSample>* out) {
+void record(const PointEval& pe, int stage, double t, double energy,
+            std::vector<ThrowSample>* out) {
   ThrowSample s;
   s.t = t;
   s.stage = stage;
@@ -156,8 +158,9 @@ std::vector<double> constraint_values(const ThrowSetup& s, const ProfileEvaluati
     g[4 * P + k] = (e.stage_current[k] - s.current_max) / s.current_max + backoff;
     g[5 * P + k] = (e.stage_power[k] - s.power_max) / s.power_max + backoff;
   }
-  g[6 * P] = (std::abs(e.theta3_final - s.theta3_release) - s.release_tolerance) /
-                 s.release_tolerance + backoff;
+  g[6 * P] =
+      (std::abs(e.theta3_final - s.theta3_release) - s.release_tolerance) / s.release_tolerance +
+      backoff;
   return g;
 }
 
@@ -207,7 +210,8 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
     }
     const double N = pe.force[0], Ft = std::abs(pe.force[1]);
     ev.stage_normal[stage] = std::min(ev.stage_normal[stage], N);
-    ev.stage_friction[stage] = std::max(ev.stage_friction[stage], Ft - setup.friction_coefficient * N);
+    ev.stage_friction[stage] =
+        std::max(ev.stage_friction[stage], Ft - setup.friction_coefficient * N);
     ev.max_friction_ratio = std::max(ev.max_friction_ratio, N > 0 ? Ft / N : INFINITY);
   };
   if (samples) samples->clear();
@@ -325,7 +329,8 @@ ReplayResult replay_voltages(const ThrowSetup& setup, const VoltageHistory& volt
     };
     std::vector<double> ts;
     const size_t first = next;
-    while (next < times.size() && (times[next] < t_end || (k + 1 == voltages.stages && times[next] <= t_end + 1e-12)))
+    while (next < times.size() &&
+           (times[next] < t_end || (k + 1 == voltages.stages && times[next] <= t_end + 1e-12)))
       ts.push_back(times[next++]);
     ts.push_back(t_end);
     Dopri5Stats st;

@@ -37,21 +37,21 @@ namespace armstudy::studies {
 
 /// Everything a simulation of one profile needs besides the profile (SI, radians).
 struct ThrowSetup {
-  core::PlanarChain chain;                  ///< make_tray_arm()
+  core::PlanarChain chain;  ///< make_tray_arm()
   Motor2Mount mount = Motor2Mount::kOnLink1;
-  core::DcMotor motor[2];                   ///< eq. 5-7 (Im = 0: rotors are in the chain)
-  double theta3_0 = 0.0, theta4_0 = 0.0;    ///< rad, passive joints at t = 0 (at rest)
-  double theta3_release = 0.0;              ///< rad, wanted tray angle at tf
-  double release_tolerance = 0.0175;        ///< rad, allowed |theta3(tf) - theta3_release|
-  double half_width = 0.0;                  ///< rad, lambda / 2: the ball stays in the tray
-  double voltage_max = 24.0;                ///< V
-  double current_max = 2.5;                 ///< A
-  double power_max = 60.0;                  ///< W, |e i| per motor
-  double contact_margin = 0.02;             ///< N, the tray's normal force on the ball >= this
-  double friction_coefficient = 0.5;        ///< mu: rolling needs |F_t| <= mu N
-  double ball_mass = 0.012;                 ///< kg, m4 (forces from the ball's equation)
-  bool count_regeneration = true;           ///< eq. 7 as printed (signed e i)
-  int steps_per_stage = 40;                 ///< RK4 steps in each stage
+  core::DcMotor motor[2];                 ///< eq. 5-7 (Im = 0: rotors are in the chain)
+  double theta3_0 = 0.0, theta4_0 = 0.0;  ///< rad, passive joints at t = 0 (at rest)
+  double theta3_release = 0.0;            ///< rad, wanted tray angle at tf
+  double release_tolerance = 0.0175;      ///< rad, allowed |theta3(tf) - theta3_release|
+  double half_width = 0.0;                ///< rad, lambda / 2: the ball stays in the tray
+  double voltage_max = 24.0;              ///< V
+  double current_max = 2.5;               ///< A
+  double power_max = 60.0;                ///< W, |e i| per motor
+  double contact_margin = 0.02;           ///< N, the tray's normal force on the ball >= this
+  double friction_coefficient = 0.5;      ///< mu: rolling needs |F_t| <= mu N
+  double ball_mass = 0.012;               ///< kg, m4 (forces from the ball's equation)
+  bool count_regeneration = true;         ///< eq. 7 as printed (signed e i)
+  int steps_per_stage = 40;               ///< RK4 steps in each stage
   /// true: the planning model's dynamics through the generic chain (core/dynamics.hpp and
   /// ball_contact_forces), the reference of the one-pass fast path (tray_dynamics.hpp) that
   /// simulations of a 4-joint chain use otherwise; both give the same results
@@ -60,23 +60,23 @@ struct ThrowSetup {
 
 /// Scalar outcome of one profile.
 struct ProfileEvaluation {
-  double energy = 0;         ///< J, eq. 7 (or its positive part without regeneration)
-  double max_abs_theta4 = 0; ///< rad
-  double max_voltage = 0;    ///< V, max |e| over both motors
-  double max_current = 0;    ///< A, max |i|
-  double max_power = 0;      ///< W, max |e i| over both motors
+  double energy = 0;               ///< J, eq. 7 (or its positive part without regeneration)
+  double max_abs_theta4 = 0;       ///< rad
+  double max_voltage = 0;          ///< V, max |e| over both motors
+  double max_current = 0;          ///< A, max |i|
+  double max_power = 0;            ///< W, max |e i| over both motors
   double min_normal_force = 0;     ///< N, smallest normal force of the tray on the ball
   double max_friction_ratio = 0;   ///< max |F_t| / N (infinite if N <= 0 somewhere)
   double max_friction_excess = 0;  ///< N, max (|F_t| - mu N)
-  double theta3_final = 0, theta4_final = 0;  ///< rad at tf
+  double theta3_final = 0, theta4_final = 0;            ///< rad at tf
   double theta3_rate_final = 0, theta4_rate_final = 0;  ///< rad/s at tf
-  bool finite = true;        ///< false if the simulation blew up (energy is then huge)
+  bool finite = true;  ///< false if the simulation blew up (energy is then huge)
   /// per stage: max |theta4| (rad), max |e| (V), max |i| (A), max |e i| (W), min N (N),
   /// max |F_t| - mu N (N): the stage-wise constraints
   std::vector<double> stage_theta4, stage_voltage, stage_current, stage_power, stage_normal,
       stage_friction;
-  double violation = 0;      ///< sum of the positive parts of constraint_values(.., backoff)
-  bool feasible = false;     ///< violation == 0
+  double violation = 0;   ///< sum of the positive parts of constraint_values(.., backoff)
+  bool feasible = false;  ///< violation == 0
 };
 
 /// Names of the constraint kinds, in the order of ConstraintKind.
@@ -103,16 +103,16 @@ void classify(const ThrowSetup& setup, ProfileEvaluation& e, double backoff);
 
 /// One recorded instant of a simulated throw.
 struct ThrowSample {
-  double t = 0;                 ///< s
-  int stage = 0;                ///< stage whose accelerations the sample uses
-  core::JointVector q, qd, qdd; ///< (4)
-  core::JointVector tau;        ///< (4) generalized joint torques, N m (3, 4 are 0)
-  Eigen::Vector2d tau_m;        ///< motor torques, N m
-  Eigen::Vector2d motor_rate;   ///< rad/s
-  core::MotorSample motor[2];   ///< eq. 5-7 per motor
-  double energy = 0;            ///< J, consumed so far (eq. 7)
-  double normal_force = 0;      ///< N, tray on ball (along -n; > 0 pushes the ball)
-  double tangential_force = 0;  ///< N, tray on ball along t (what rolling needs)
+  double t = 0;                  ///< s
+  int stage = 0;                 ///< stage whose accelerations the sample uses
+  core::JointVector q, qd, qdd;  ///< (4)
+  core::JointVector tau;         ///< (4) generalized joint torques, N m (3, 4 are 0)
+  Eigen::Vector2d tau_m;         ///< motor torques, N m
+  Eigen::Vector2d motor_rate;    ///< rad/s
+  core::MotorSample motor[2];    ///< eq. 5-7 per motor
+  double energy = 0;             ///< J, consumed so far (eq. 7)
+  double normal_force = 0;       ///< N, tray on ball (along -n; > 0 pushes the ball)
+  double tangential_force = 0;   ///< N, tray on ball along t (what rolling needs)
 };
 
 /// Simulates `profile` (planning model). If `samples` is given, it receives the start of
@@ -132,11 +132,11 @@ Eigen::Vector2d ball_contact_forces(const core::PlanarChain& chain, double ball_
 /// A voltage history: piecewise linear between samples, with possible jumps where two
 /// samples share a time (the later one holds after the jump).
 struct VoltageHistory {
-  double tf = 0;                       ///< s, end of the history
-  int stages = 1;                      ///< equal stages of [0, tf]; jumps only at their ends
-  std::vector<double> t;               ///< s, non-decreasing
-  std::vector<int> stage;              ///< stage of each sample (samples of a stage contiguous)
-  std::vector<Eigen::Vector2d> e;      ///< V per motor
+  double tf = 0;                   ///< s, end of the history
+  int stages = 1;                  ///< equal stages of [0, tf]; jumps only at their ends
+  std::vector<double> t;           ///< s, non-decreasing
+  std::vector<int> stage;          ///< stage of each sample (samples of a stage contiguous)
+  std::vector<Eigen::Vector2d> e;  ///< V per motor
   /// Voltages at time t inside `stage`, linear between that stage's samples.
   Eigen::Vector2d at(int stage, double t) const;
 };
@@ -146,7 +146,7 @@ VoltageHistory voltage_history(const std::vector<ThrowSample>& samples);
 
 /// Result of an open-loop replay.
 struct ReplayResult {
-  std::vector<double> t;               ///< s, the requested times
+  std::vector<double> t;                 ///< s, the requested times
   std::vector<core::JointVector> q, qd;  ///< (4) each
   long steps = 0;
 };

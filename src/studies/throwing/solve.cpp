@@ -253,8 +253,9 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   if (r.nlopt_ran && r.nlopt.series.t.size() >= 2) {
     const core::JointVector& qn = r.nlopt.series.q.back();
     const core::JointVector& qdn = r.nlopt.series.qd.back();
-    r.nlopt_flight = ballistic_flight(ball_position(setup.chain, qn), ball_velocity(setup.chain, qn, qdn),
-                                      spec.arm.gravity, spec.landing_height);
+    r.nlopt_flight =
+        ballistic_flight(ball_position(setup.chain, qn), ball_velocity(setup.chain, qn, qdn),
+                         spec.arm.gravity, spec.landing_height);
   }
   r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if (!r.flight.reaches) {
@@ -269,8 +270,8 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   // the sentence leads with the lowest energy of a converged answer that the independent
   // re-check found feasible; the other optimiser follows as the comparison
   const std::string idp_words = std::string("IDP") + (r.idp_converged ? "" : " (NOT converged)") +
-                                (r.idp_check.feasible ? "" : " (infeasible in the re-check)") + " " +
-                                fixed(r.idp.evaluation.energy, 3) + " J";
+                                (r.idp_check.feasible ? "" : " (infeasible in the re-check)") +
+                                " " + fixed(r.idp.evaluation.energy, 3) + " J";
   const std::string ref_words = ref + ": " + fixed(r.reference.evaluation.energy, 3) + " J";
   const bool slsqp_answer = r.nlopt_ran && r.nlopt_run.converged && r.nlopt_run.feasible &&
                             r.nlopt_check.feasible && r.nlopt_flight.reaches &&
@@ -281,11 +282,12 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
     r.answer = "slsqp";
     const double saving = 100.0 * (r.reference.evaluation.energy - r.nlopt.evaluation.energy) /
                           r.reference.evaluation.energy;
-    r.message = "lowest-energy throw found: SLSQP's, " + fixed(r.nlopt.evaluation.energy, 3) +
-                " J, converged and feasible in the re-check (" + ref_words + ", saving " +
-                fixed(saving, 1) + " %); " + idp_words + " (saving " + fixed(r.saving_percent, 1) +
-                " %), a stall above it; the ball lands at x = " + fixed(r.nlopt_flight.landing.x(), 3) +
-                " m";
+    r.message =
+        "lowest-energy throw found: SLSQP's, " + fixed(r.nlopt.evaluation.energy, 3) +
+        " J, converged and feasible in the re-check (" + ref_words + ", saving " +
+        fixed(saving, 1) + " %); " + idp_words + " (saving " + fixed(r.saving_percent, 1) +
+        " %), a stall above it; the ball lands at x = " + fixed(r.nlopt_flight.landing.x(), 3) +
+        " m";
   } else {
     r.message = idp_words + " (" + ref_words + ", saving " + fixed(r.saving_percent, 1) +
                 " %); ball lands at x = " + fixed(r.flight.landing.x(), 3) + " m";

@@ -28,21 +28,21 @@ namespace armstudy::studies {
 /// Inputs of the throwing study (SI, radians). Defaults: Table 1 and Sec. 4 of 003, and
 /// the choices of docs/assumptions.md where the paper is silent.
 struct ThrowingSpec {
-  TrayArmParams arm;                 ///< Table 1
-  core::DcMotor motor;               ///< both motors (Table 1); Im is arm.rotor_inertia
-  Eigen::Vector2d start = {-core::kPi / 4, -core::kPi / 4};             ///< rad, theta1, theta2
-  double theta3_start = 0.0;         ///< rad (at rest)
-  double theta4_start = 0.0;         ///< rad (at rest)
+  TrayArmParams arm;    ///< Table 1
+  core::DcMotor motor;  ///< both motors (Table 1); Im is arm.rotor_inertia
+  Eigen::Vector2d start = {-core::kPi / 4, -core::kPi / 4};              ///< rad, theta1, theta2
+  double theta3_start = 0.0;                                             ///< rad (at rest)
+  double theta4_start = 0.0;                                             ///< rad (at rest)
   Eigen::Vector2d release = {13 * core::kPi / 36, -7 * core::kPi / 36};  ///< rad
-  Eigen::Vector2d release_rate = {13.9, -1.1};                          ///< rad/s
+  Eigen::Vector2d release_rate = {13.9, -1.1};                           ///< rad/s
   double theta3_release = -7 * core::kPi / 24;  ///< rad, reached through the dynamics
-  double tf = 0.8;                   ///< s
-  double voltage_max = 24.0;         ///< V (Table 1: motors rated 24 V)
-  double current_max = 5.0;          ///< A (chosen; 2.5 A is 60 W at 24 V)
-  double power_max = 60.0;           ///< W, |e i| per motor (Table 1: rated 60 W)
-  double tray_width = 2 * core::kPi / 3;  ///< rad, lambda of eq. 9 (|theta4| <= lambda/2)
-  double contact_margin = 0.02;      ///< N, normal force of the tray on the ball >= this
-  double friction_coefficient = 0.5; ///< mu, rolling needs |F_t| <= mu N
+  double tf = 0.8;                              ///< s
+  double voltage_max = 24.0;                    ///< V (Table 1: motors rated 24 V)
+  double current_max = 5.0;                     ///< A (chosen; 2.5 A is 60 W at 24 V)
+  double power_max = 60.0;                      ///< W, |e i| per motor (Table 1: rated 60 W)
+  double tray_width = 2 * core::kPi / 3;        ///< rad, lambda of eq. 9 (|theta4| <= lambda/2)
+  double contact_margin = 0.02;                 ///< N, normal force of the tray on the ball >= this
+  double friction_coefficient = 0.5;            ///< mu, rolling needs |F_t| <= mu N
   double backoff = 0.02;             ///< optimisers keep constraints this far inside (normalised)
   bool allow_not_converged = false;  ///< a run ending on its budget fails the case unless true
   int check_refinement = 4;          ///< the optimum is re-checked with this many x the steps
@@ -53,9 +53,9 @@ struct ThrowingSpec {
   bool run_nlopt = true;
   NloptSettings nlopt;
   double release_tolerance = core::kPi / 180;  ///< rad, allowed |theta3(tf) - release| (check)
-  double landing_height = 0.0;       ///< m, height (y) at which the flight ends
-  double replay_tolerance = 2e-3;    ///< rad, open-loop replay vs plan (check)
-  int threads = 2;                   ///< evaluation threads
+  double landing_height = 0.0;                 ///< m, height (y) at which the flight ends
+  double replay_tolerance = 2e-3;              ///< rad, open-loop replay vs plan (check)
+  int threads = 2;                             ///< evaluation threads
 };
 
 }  // namespace armstudy::studies

@@ -20,7 +20,8 @@ TrayDynamics::TrayDynamics(const core::PlanarChain& chain) : chain_(chain) {
     const core::Link& l = chain.links[i];
     bodies_[n_bodies_++] = {i, l.com, l.com_lateral, l.mass, l.inertia};
   }
-  for (const core::PointMass& p : chain.point_masses) bodies_[n_bodies_++] = {p.link, p.x, p.y, p.mass, 0.0};
+  for (const core::PointMass& p : chain.point_masses)
+    bodies_[n_bodies_++] = {p.link, p.x, p.y, p.mass, 0.0};
 }
 
 core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::JointVector& qd,
@@ -50,8 +51,8 @@ core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::
     const int link = body.link;
     if (body.mass != 0.0) {
       // point_position, point_jacobian, point_jacobian_dot of core/kinematics.cpp
-      const Eigen::Vector2d p =
-          p_WJ[link] + Eigen::Vector2d(c[link] * body.x - s[link] * body.y, s[link] * body.x + c[link] * body.y);
+      const Eigen::Vector2d p = p_WJ[link] + Eigen::Vector2d(c[link] * body.x - s[link] * body.y,
+                                                             s[link] * body.x + c[link] * body.y);
       core::PointJacobian J = core::PointJacobian::Zero(2, kN);
       for (int j = 0; j <= link; ++j) J.col(j) = perp(p - p_WJ[j]);
       const Eigen::Vector2d v = J * qd;
@@ -69,7 +70,8 @@ core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::
     }
     if (body.inertia != 0.0) M.topLeftCorner(link + 1, link + 1).array() += body.inertia;
   }
-  for (const core::SpinningInertia& sp : chain.spinners) M.noalias() += sp.inertia * sp.coeffs * sp.coeffs.transpose();
+  for (const core::SpinningInertia& sp : chain.spinners)
+    M.noalias() += sp.inertia * sp.coeffs * sp.coeffs.transpose();
 
   // core::passive_forward_dynamics with zero passive torques
   int ia[kN], ip[kN];

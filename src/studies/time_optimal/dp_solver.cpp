@@ -10,7 +10,7 @@
 namespace armstudy::studies::time_optimal {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr int kComplexRestarts = 10;  // restarts of the Complex method from its best point
+constexpr int kComplexRestarts = 10;   // restarts of the Complex method from its best point
 constexpr double kRestartGain = 1e-6;  // relative gain a restart must make to go on
 
 // the discretisation shared by the path-speed DP and the Complex method
@@ -154,7 +154,8 @@ std::string dp_failure(const Problem& pb, const Discretisation& d, const std::ve
     os << segment_text(pb, d, k) << " cannot be crossed from any of the " << reach.size()
        << " state(s) reachable at its start";
     if (std::isfinite(least.excess))
-      os << ": every move breaks a limit, the least breach is " << use_text(least, pb.limits, pb.path.unit());
+      os << ": every move breaks a limit, the least breach is "
+         << use_text(least, pb.limits, pb.path.unit());
     else
       os << ": only staying at rest meets the limits there";
     return os.str();
@@ -199,8 +200,10 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
       const std::vector<double>& next = x[k + 1];
       // one level of slack on each side: the cost function decides exactly
       const double lo = x0 + 2 * ds * ur.lo, hi = x0 + 2 * ds * ur.hi;
-      const int first = static_cast<int>(std::lower_bound(next.begin(), next.end(), lo) - next.begin()) - 1;
-      const int last = static_cast<int>(std::upper_bound(next.begin(), next.end(), hi) - next.begin()) + 1;
+      const int first =
+          static_cast<int>(std::lower_bound(next.begin(), next.end(), lo) - next.begin()) - 1;
+      const int last =
+          static_cast<int>(std::upper_bound(next.begin(), next.end(), hi) - next.begin()) + 1;
       return std::pair<int, int>(first, last);
     };
     const core::opt::DpSolution sol = core::opt::solve_staged_dp(
@@ -211,17 +214,19 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
         band);
     out.evaluations = sol.evaluations;
     if (!sol.feasible()) {
-      out.message = "no sequence of the " + std::to_string(levels) +
-                    " velocity levels per node meets every limit on " +
-                    std::to_string(segments) + " segments: " +
-                    dp_failure(
-                        pb, d, count,
-                        [&](int k, int i, int j) {
-                          return std::isfinite(path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]));
-                        },
-                        [&](int k, int i, int j) { return path_speed_use(pb, d, k, x[k][i], x[k + 1][j]); },
-                        [&](int k, int i, int j) { return sd[k][i] + sd[k + 1][j] <= 0; }, band) +
-                    "; more levels or segments may help";
+      out.message =
+          "no sequence of the " + std::to_string(levels) +
+          " velocity levels per node meets every limit on " + std::to_string(segments) +
+          " segments: " +
+          dp_failure(
+              pb, d, count,
+              [&](int k, int i, int j) {
+                return std::isfinite(
+                    path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]));
+              },
+              [&](int k, int i, int j) { return path_speed_use(pb, d, k, x[k][i], x[k + 1][j]); },
+              [&](int k, int i, int j) { return sd[k][i] + sd[k + 1][j] <= 0; }, band) +
+          "; more levels or segments may help";
       return out;
     }
     out.profile.law = SegmentLaw::kPathAcceleration;
@@ -296,7 +301,8 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
   if (!sol.feasible()) {
     out.message =
         "no sequence of the " + std::to_string(levels) +
-        " joint-1 velocity levels meets every limit on " + std::to_string(segments) + " segments: " +
+        " joint-1 velocity levels meets every limit on " + std::to_string(segments) +
+        " segments: " +
         dp_failure(
             pb, d, count, [&](int k, int i, int j) { return std::isfinite(joint1_cost(k, i, j)); },
             joint1_use, [&](int k, int i, int j) { return v[k][i] + v[k + 1][j] == 0; },
@@ -332,7 +338,8 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
   const auto total_time = [&](const std::vector<double>& sd) {
     double t = 0;
     for (int k = 0; k + 1 < n; ++k) {
-      const double c = path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1]);
+      const double c =
+          path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1]);
       if (!std::isfinite(c)) return kInf;
       t += c;
     }
@@ -357,18 +364,22 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
     std::ostringstream os;
     os.precision(3);
     os << "the Complex method found no feasible crawl to start from: even at " << z0.maxCoeff()
-       << " " << pb.path.unit() << "/s at most (2^-" << std::min(halvings, 60) + 1 << " of the maximum velocity curve)";
+       << " " << pb.path.unit() << "/s at most (2^-" << std::min(halvings, 60) + 1
+       << " of the maximum velocity curve)";
     for (int k = 0; k + 1 < n; ++k) {
-      if (std::isfinite(path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1])))
+      if (std::isfinite(
+              path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1])))
         continue;
       if (sd[k] + sd[k + 1] <= 0) {
         // the maximum velocity curve is 0 at both ends: no speed, not even rest, is allowed
         const Use at_rest = path_speed_use(pb, d, k, 0.0, 0.0);
         os << ", " << segment_text(pb, d, k) << " allows no speed";
-        if (at_rest.excess > 0) os << ": even at rest it breaks " << use_text(at_rest, pb.limits, pb.path.unit());
+        if (at_rest.excess > 0)
+          os << ": even at rest it breaks " << use_text(at_rest, pb.limits, pb.path.unit());
       } else {
         os << ", " << segment_text(pb, d, k) << " breaks "
-           << use_text(path_speed_use(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1]), pb.limits, pb.path.unit());
+           << use_text(path_speed_use(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1]), pb.limits,
+                       pb.path.unit());
       }
       break;
     }

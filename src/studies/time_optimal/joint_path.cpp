@@ -11,17 +11,20 @@
 
 namespace armstudy::studies::time_optimal {
 
-JointPathGeometry::JointPathGeometry(const JointPathSpec& spec) : kind_(spec.kind), pts_(spec.points) {
+JointPathGeometry::JointPathGeometry(const JointPathSpec& spec)
+    : kind_(spec.kind), pts_(spec.points) {
   const int n = static_cast<int>(pts_.size());
   ARM_THROW_UNLESS(n >= 2, "joint path has " << n << " waypoints; should have >= 2");
   ARM_THROW_UNLESS(kind_ != PathKind::kLine || n == 2,
                    "a line joint path has " << n << " waypoints; should have 2");
   dof_ = static_cast<int>(pts_[0].size());
-  ARM_THROW_UNLESS(dof_ >= 1 && dof_ <= core::kMaxLinks,
-                   "joint path waypoints have " << dof_ << " angles; should have 1 to " << core::kMaxLinks);
+  ARM_THROW_UNLESS(dof_ >= 1 && dof_ <= core::kMaxLinks, "joint path waypoints have "
+                                                             << dof_ << " angles; should have 1 to "
+                                                             << core::kMaxLinks);
   for (int i = 1; i < n; ++i)
-    ARM_THROW_UNLESS(pts_[i].size() == dof_, "joint path waypoint " << i + 1 << " has " << pts_[i].size()
-                                                                    << " angles; waypoint 1 has " << dof_);
+    ARM_THROW_UNLESS(pts_[i].size() == dof_, "joint path waypoint "
+                                                 << i + 1 << " has " << pts_[i].size()
+                                                 << " angles; waypoint 1 has " << dof_);
   knot_.assign(n, 0.0);
   for (int i = 1; i < n; ++i) {
     const double h = (pts_[i] - pts_[i - 1]).norm();
@@ -29,7 +32,8 @@ JointPathGeometry::JointPathGeometry(const JointPathSpec& spec) : kind_(spec.kin
     knot_[i] = knot_[i - 1] + h;
   }
   length_ = knot_.back();
-  if (kind_ == PathKind::kSpline && n == 2) kind_ = PathKind::kPolyline;  // a 2-point spline is a line
+  if (kind_ == PathKind::kSpline && n == 2)
+    kind_ = PathKind::kPolyline;  // a 2-point spline is a line
   m_.assign(n, core::JointVector::Zero(dof_));
   if (kind_ != PathKind::kSpline) {
     for (int i = 1; i + 1 < n; ++i) {
@@ -47,9 +51,10 @@ JointPathGeometry::JointPathGeometry(const JointPathSpec& spec) : kind_(spec.kin
 JointPathPoint JointPathGeometry::at(double s, bool from_left) const {
   s = std::clamp(s, 0.0, length_);
   const int pieces = static_cast<int>(knot_.size()) - 1;
-  int i = from_left
-              ? static_cast<int>(std::lower_bound(knot_.begin(), knot_.end(), s) - knot_.begin()) - 1
-              : static_cast<int>(std::upper_bound(knot_.begin(), knot_.end(), s) - knot_.begin()) - 1;
+  int i =
+      from_left
+          ? static_cast<int>(std::lower_bound(knot_.begin(), knot_.end(), s) - knot_.begin()) - 1
+          : static_cast<int>(std::upper_bound(knot_.begin(), knot_.end(), s) - knot_.begin()) - 1;
   i = std::clamp(i, 0, pieces - 1);
   const double h = knot_[i + 1] - knot_[i];
   JointPathPoint out;
@@ -61,8 +66,10 @@ JointPathPoint JointPathGeometry::at(double s, bool from_left) const {
   }
   // cubic piece i (Numerical Recipes 3.3.3 form)
   const double A = (knot_[i + 1] - s) / h, B = (s - knot_[i]) / h;
-  out.q = A * pts_[i] + B * pts_[i + 1] + ((A * A * A - A) * m_[i] + (B * B * B - B) * m_[i + 1]) * (h * h / 6.0);
-  out.dq = (pts_[i + 1] - pts_[i]) / h - ((3 * A * A - 1) / 6.0 * h) * m_[i] + ((3 * B * B - 1) / 6.0 * h) * m_[i + 1];
+  out.q = A * pts_[i] + B * pts_[i + 1] +
+          ((A * A * A - A) * m_[i] + (B * B * B - B) * m_[i + 1]) * (h * h / 6.0);
+  out.dq = (pts_[i + 1] - pts_[i]) / h - ((3 * A * A - 1) / 6.0 * h) * m_[i] +
+           ((3 * B * B - 1) / 6.0 * h) * m_[i + 1];
   out.ddq = A * m_[i] + B * m_[i + 1];
   return out;
 }
@@ -80,8 +87,9 @@ std::string fixed(double v, int digits) {
 std::optional<RangeExcursion> range_excursion(const JointPathGeometry& path,
                                               const std::vector<Eigen::Vector2d>& range) {
   if (range.empty()) return std::nullopt;
-  ARM_THROW_UNLESS(static_cast<int>(range.size()) == path.dof(),
-                   "joint range has " << range.size() << " entries; the path has " << path.dof() << " joints");
+  ARM_THROW_UNLESS(
+      static_cast<int>(range.size()) == path.dof(),
+      "joint range has " << range.size() << " entries; the path has " << path.dof() << " joints");
   const auto outside = [&](const core::JointVector& q, int j) {
     return q[j] < range[j][0] || q[j] > range[j][1];
   };
@@ -113,7 +121,8 @@ std::optional<RangeExcursion> range_excursion(const JointPathGeometry& path,
         e.worst = q[j];
         out = e;
       } else if (out->joint == j) {
-        const double worst_excess = out->worst < out->lo ? out->worst - out->lo : out->worst - out->hi;
+        const double worst_excess =
+            out->worst < out->lo ? out->worst - out->lo : out->worst - out->hi;
         if (std::abs(excess) > std::abs(worst_excess)) out->worst = q[j];
       }
     }
@@ -124,17 +133,19 @@ std::optional<RangeExcursion> range_excursion(const JointPathGeometry& path,
   while (out->piece + 2 < path.waypoints() && path.knot(out->piece + 1) <= out->s) ++out->piece;
   std::ostringstream os;
   os << "the path leaves joint " << out->joint + 1 << "'s range [" << fixed(out->lo, 4) << ", "
-     << fixed(out->hi, 4) << "] rad at s = " << fixed(out->s, 4) << " rad of " << fixed(path.length(), 4)
-     << " (between waypoints " << out->piece + 1 << " and " << out->piece + 2
-     << "), where q" << out->joint + 1 << " reaches " << fixed(out->worst, 4) << " rad";
+     << fixed(out->hi, 4) << "] rad at s = " << fixed(out->s, 4) << " rad of "
+     << fixed(path.length(), 4) << " (between waypoints " << out->piece + 1 << " and "
+     << out->piece + 2 << "), where q" << out->joint + 1 << " reaches " << fixed(out->worst, 4)
+     << " rad";
   out->text = os.str();
   return out;
 }
 
-JointPoint joint_space_point(const core::PlanarChain& chain, const JointPathGeometry& path, double s,
-                             bool from_left) {
-  ARM_THROW_UNLESS(path.dof() == chain.num_links(),
-                   "joint path has " << path.dof() << " joints; the arm has " << chain.num_links() << " links");
+JointPoint joint_space_point(const core::PlanarChain& chain, const JointPathGeometry& path,
+                             double s, bool from_left) {
+  ARM_THROW_UNLESS(path.dof() == chain.num_links(), "joint path has "
+                                                        << path.dof() << " joints; the arm has "
+                                                        << chain.num_links() << " links");
   const JointPathPoint pp = path.at(s, from_left);
   JointPoint jp;
   jp.s = s;

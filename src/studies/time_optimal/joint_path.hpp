@@ -47,8 +47,8 @@ class JointPathGeometry {
   PathKind kind_;
   int dof_ = 0;
   std::vector<core::JointVector> pts_;
-  std::vector<double> knot_;               // chord-length knots
-  std::vector<core::JointVector> m_;       // spline second derivatives at the knots
+  std::vector<double> knot_;          // chord-length knots
+  std::vector<core::JointVector> m_;  // spline second derivatives at the knots
   std::vector<double> stops_;
   double length_ = 0;
 };
@@ -57,13 +57,13 @@ class JointPathGeometry {
 /// point of a dense sampling (at most 1e-3 of the length apart, refined by bisection to
 /// 1e-9 rad of s) outside it. `range` has one [lo, hi] per joint.
 struct RangeExcursion {
-  int joint = 0;       ///< 0-based
-  double s = 0;        ///< rad, first point found outside
-  double q = 0;        ///< rad, the joint's angle there
-  double worst = 0;    ///< rad, the joint's most extreme angle outside the range
+  int joint = 0;     ///< 0-based
+  double s = 0;      ///< rad, first point found outside
+  double q = 0;      ///< rad, the joint's angle there
+  double worst = 0;  ///< rad, the joint's most extreme angle outside the range
   double lo = 0, hi = 0;
-  int piece = 0;       ///< waypoint index at the start of the piece holding s (0-based)
-  std::string text;    ///< a sentence naming joint, s, the angle and the range
+  int piece = 0;     ///< waypoint index at the start of the piece holding s (0-based)
+  std::string text;  ///< a sentence naming joint, s, the angle and the range
 };
 std::optional<RangeExcursion> range_excursion(const JointPathGeometry& path,
                                               const std::vector<Eigen::Vector2d>& range);
@@ -72,7 +72,7 @@ std::optional<RangeExcursion> range_excursion(const JointPathGeometry& path,
 /// tau = a s'' + b s'^2 + c (as joint_point for a tip path); p is the tip (forward
 /// kinematics) and sin_q2 is 1 (a joint-space path has no inverse-kinematics singularity).
 /// @throws std::invalid_argument if the path's joints differ from the chain's links.
-JointPoint joint_space_point(const core::PlanarChain& chain, const JointPathGeometry& path, double s,
-                             bool from_left);
+JointPoint joint_space_point(const core::PlanarChain& chain, const JointPathGeometry& path,
+                             double s, bool from_left);
 
 }  // namespace armstudy::studies::time_optimal

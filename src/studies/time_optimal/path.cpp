@@ -39,7 +39,8 @@ PathGeometry::PathGeometry(const PathSpec& spec) : kind_(spec.kind), pts_(spec.p
   if (kind_ != PathKind::kSpline || n == 2) {
     if (kind_ == PathKind::kSpline) kind_ = PathKind::kPolyline;  // a 2-point spline is a line
     piece_s_.push_back(0.0);
-    for (int i = 0; i + 1 < n; ++i) piece_s_.push_back(piece_s_.back() + (pts_[i + 1] - pts_[i]).norm());
+    for (int i = 0; i + 1 < n; ++i)
+      piece_s_.push_back(piece_s_.back() + (pts_[i + 1] - pts_[i]).norm());
     length_ = piece_s_.back();
     for (int i = 0; i + 1 < n; ++i) dir_.push_back((pts_[i + 1] - pts_[i]).normalized());
     for (int i = 1; i + 1 < n; ++i) {
@@ -103,9 +104,11 @@ PathPoint PathGeometry::at(double s, bool from_left) const {
   // piece containing s: [piece_s_[i], piece_s_[i+1]) or (.., ..] from the left
   int i;
   if (from_left) {
-    i = static_cast<int>(std::lower_bound(piece_s_.begin(), piece_s_.end(), s) - piece_s_.begin()) - 1;
+    i = static_cast<int>(std::lower_bound(piece_s_.begin(), piece_s_.end(), s) - piece_s_.begin()) -
+        1;
   } else {
-    i = static_cast<int>(std::upper_bound(piece_s_.begin(), piece_s_.end(), s) - piece_s_.begin()) - 1;
+    i = static_cast<int>(std::upper_bound(piece_s_.begin(), piece_s_.end(), s) - piece_s_.begin()) -
+        1;
   }
   i = std::clamp(i, 0, pieces - 1);
   PathPoint out;
@@ -211,7 +214,8 @@ TipRateEvaluator::TipRateEvaluator(const core::PlanarChain& chain, const PathGeo
 }
 
 void TipRateArrays::resize(size_t n) {
-  for (std::vector<double>* v : {&px, &py, &vx, &vy, &ax, &ay, &dq0, &dq1, &ddq0, &ddq1, &c1, &s1, &c2, &s2})
+  for (std::vector<double>* v :
+       {&px, &py, &vx, &vy, &ax, &ay, &dq0, &dq1, &ddq0, &ddq1, &c1, &s1, &c2, &s2})
     v->resize(n);
   ok.resize(n);
 }
@@ -222,13 +226,20 @@ void TipRateEvaluator::at_points(size_t n, TipRateArrays* a) const {
   const double bx = base_.x(), by = base_.y();
   const double L1 = L1_, L2 = L2_, shift = c2_shift_, scale = c2_scale_, inv = inv_l1l2_;
   const double cb = cb_, sb = sb_, sign = configuration_ == 1 ? 1.0 : -1.0;
-  const double* __restrict px = a->px.data(); const double* __restrict py = a->py.data();
-  const double* __restrict vx = a->vx.data(); const double* __restrict vy = a->vy.data();
-  const double* __restrict ax = a->ax.data(); const double* __restrict ay = a->ay.data();
-  double* __restrict dq0 = a->dq0.data(); double* __restrict dq1 = a->dq1.data();
-  double* __restrict ddq0 = a->ddq0.data(); double* __restrict ddq1 = a->ddq1.data();
-  double* __restrict oc1 = a->c1.data(); double* __restrict os1 = a->s1.data();
-  double* __restrict oc2 = a->c2.data(); double* __restrict os2 = a->s2.data();
+  const double* __restrict px = a->px.data();
+  const double* __restrict py = a->py.data();
+  const double* __restrict vx = a->vx.data();
+  const double* __restrict vy = a->vy.data();
+  const double* __restrict ax = a->ax.data();
+  const double* __restrict ay = a->ay.data();
+  double* __restrict dq0 = a->dq0.data();
+  double* __restrict dq1 = a->dq1.data();
+  double* __restrict ddq0 = a->ddq0.data();
+  double* __restrict ddq1 = a->ddq1.data();
+  double* __restrict oc1 = a->c1.data();
+  double* __restrict os1 = a->s1.data();
+  double* __restrict oc2 = a->c2.data();
+  double* __restrict os2 = a->s2.data();
   char* __restrict ok = a->ok.data();
   // (GCC honours __restrict only on parameters: the arrays are distinct vectors)
 #pragma GCC ivdep
@@ -291,8 +302,8 @@ std::optional<JointPoint> joint_point(const core::PlanarChain& chain, const Path
   Eigen::Matrix2d Rt;
   Rt << cb, sb, -sb, cb;
   const auto st = core::ik_2link_motion(L1, L2, p, Rt * pp.dp, Rt * pp.ddp, configuration);
-  trouble->message = "the path passes through a singular pose " + where() +
-                     ": the elbow is " + (std::cos(st ? st->q[1] : 0.0) > 0 ? "straight" : "folded") +
+  trouble->message = "the path passes through a singular pose " + where() + ": the elbow is " +
+                     (std::cos(st ? st->q[1] : 0.0) > 0 ? "straight" : "folded") +
                      " (sin q2 = 0), where no finite joint speed follows the path";
   return std::nullopt;
 }

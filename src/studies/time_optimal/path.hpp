@@ -44,7 +44,7 @@ class PathGeometry {
   std::vector<Eigen::Vector2d> pts_;
   double length_ = 0;
   std::vector<double> stops_;
-  std::vector<double> piece_s_;  // arc length at the start of each piece (+ total)
+  std::vector<double> piece_s_;       // arc length at the start of each piece (+ total)
   std::vector<Eigen::Vector2d> dir_;  // line and polyline: unit direction of each piece
   // spline: knots tau (chord length), second derivatives per point, and an arc-length
   // table per piece (tau, s) for inversion
@@ -58,15 +58,15 @@ class PathGeometry {
 /// The arm's joint path at one point, with the path-projected dynamics
 /// tau = a s'' + b s'^2 + c (N m per joint).
 struct JointPoint {
-  double s = 0;          ///< m
-  Eigen::Vector2d p;     ///< m, tip
-  core::JointVector q;   ///< (2) rad, relative joint angles
-  core::JointVector dq;  ///< (2) dq/ds, rad/m
-  core::JointVector ddq; ///< (2) d2q/ds2, rad/m^2
-  core::JointVector a;   ///< (2) M q', kg m
-  core::JointVector b;   ///< (2) M q'' + C(q, q') q', kg
-  core::JointVector c;   ///< (2) gravity torque, N m
-  double sin_q2 = 0;     ///< 0 at the singular (straight or folded) elbow
+  double s = 0;           ///< m
+  Eigen::Vector2d p;      ///< m, tip
+  core::JointVector q;    ///< (2) rad, relative joint angles
+  core::JointVector dq;   ///< (2) dq/ds, rad/m
+  core::JointVector ddq;  ///< (2) d2q/ds2, rad/m^2
+  core::JointVector a;    ///< (2) M q', kg m
+  core::JointVector b;    ///< (2) M q'' + C(q, q') q', kg
+  core::JointVector c;    ///< (2) gravity torque, N m
+  double sin_q2 = 0;      ///< 0 at the singular (straight or folded) elbow
 };
 
 /// Why a path point cannot be followed: unreachable or singular. Empty if it can.
@@ -126,7 +126,9 @@ class TipRateEvaluator {
   /// @throws std::invalid_argument if the chain does not have 2 links.
   TipRateEvaluator(const core::PlanarChain& chain, const PathGeometry& path, int configuration);
   /// false where joint_point gives nullopt (unreachable or singular), or on its edge.
-  bool at(double s, bool from_left, TipRates* r) const { return at_point(path_->at(s, from_left), r); }
+  bool at(double s, bool from_left, TipRates* r) const {
+    return at_point(path_->at(s, from_left), r);
+  }
   /// The same at a point of the path.
   bool at_point(const PathPoint& pp, TipRates* r) const;
   /// at_point at the first n points of `a` (px..ay in; the rates and ok out): the same

@@ -51,8 +51,7 @@ void append_rows(const JointPoint& jp, const Limits& lim, double shift, int poin
   for (int j = 0; j < n; ++j) {
     add(jp.dq[j] * jp.dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j], j,
         LimitKind::kVelocity);
-    add(jp.b[j], jp.a[j], -lim.torque[j] - jp.c[j], lim.torque[j] - jp.c[j], j,
-        LimitKind::kTorque);
+    add(jp.b[j], jp.a[j], -lim.torque[j] - jp.c[j], lim.torque[j] - jp.c[j], j, LimitKind::kTorque);
     if (lim.acceleration)
       add(jp.ddq[j], jp.dq[j], -(*lim.acceleration)[j], (*lim.acceleration)[j], j,
           LimitKind::kAcceleration);

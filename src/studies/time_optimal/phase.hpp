@@ -62,8 +62,8 @@ struct XInterval {
   double lo = 0;
   double hi = std::numeric_limits<double>::infinity();
   bool empty() const { return lo > hi; }
-  RowTag lo_tag, hi_tag;        ///< rows that bind lo and hi (one of a pair)
-  RowTag lo_tag2, hi_tag2;      ///< the other row of the binding pair, if any
+  RowTag lo_tag, hi_tag;    ///< rows that bind lo and hi (one of a pair)
+  RowTag lo_tag2, hi_tag2;  ///< the other row of the binding pair, if any
 };
 XInterval feasible_x(const std::vector<Row>& rows);
 

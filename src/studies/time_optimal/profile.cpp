@@ -1,9 +1,9 @@
 #include "studies/time_optimal/profile.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -16,7 +16,8 @@
 namespace armstudy::studies::time_optimal {
 
 const PathGeometry& SolverPath::tip() const {
-  if (!tip_) throw std::logic_error("time-optimal path: a joint-space path has no tip path geometry");
+  if (!tip_)
+    throw std::logic_error("time-optimal path: a joint-space path has no tip path geometry");
   return *tip_;
 }
 
@@ -56,7 +57,8 @@ std::string Problem::where(double s, bool from_left) const {
 }
 
 PointSource::PointSource(const Problem& problem) : problem_(&problem) {
-  if (!problem.path.joint_space()) tip_.emplace(problem.chain, problem.path.tip(), problem.configuration);
+  if (!problem.path.joint_space())
+    tip_.emplace(problem.chain, problem.path.tip(), problem.configuration);
 }
 
 void PointSource::at(double s, bool from_left, JointPoint* jp) const {
@@ -74,8 +76,10 @@ std::vector<double> make_nodes(const SolverPath& path, int intervals) {
   for (double s : path.stops()) cuts.push_back(s);
   cuts.push_back(path.length());
   const int pieces = static_cast<int>(cuts.size()) - 1;
-  ARM_THROW_UNLESS(intervals >= pieces, "path needs >= " << pieces << " intervals (one per "
-                                        "piece between stops); got " << intervals);
+  ARM_THROW_UNLESS(intervals >= pieces, "path needs >= " << pieces
+                                                         << " intervals (one per "
+                                                            "piece between stops); got "
+                                                         << intervals);
   // intervals per piece in proportion to length, at least one each (largest remainder)
   std::vector<int> count(pieces, 1);
   int left = intervals - pieces;
@@ -91,7 +95,8 @@ std::vector<double> make_nodes(const SolverPath& path, int intervals) {
   std::vector<double> nodes{0.0};
   for (int p = 0; p < pieces; ++p) {
     for (int k = 1; k <= count[p]; ++k)
-      nodes.push_back(k == count[p] ? cuts[p + 1] : cuts[p] + (cuts[p + 1] - cuts[p]) * k / count[p]);
+      nodes.push_back(k == count[p] ? cuts[p + 1]
+                                    : cuts[p] + (cuts[p + 1] - cuts[p]) * k / count[p]);
   }
   return nodes;
 }
@@ -107,8 +112,7 @@ std::vector<bool> rest_nodes(const SolverPath& path, const std::vector<double>& 
 }
 
 std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
-                                                     const std::vector<double>& nodes,
-                                                     int checks) {
+                                                     const std::vector<double>& nodes, int checks) {
   ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
   return interval_points(problem, nodes, std::vector<int>(nodes.size() - 1, checks));
 }
@@ -116,8 +120,9 @@ std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
 std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
                                                      const std::vector<double>& nodes,
                                                      const std::vector<int>& checks_per) {
-  ARM_THROW_UNLESS(checks_per.size() + 1 == nodes.size(), "interval_points: " << checks_per.size()
-                   << " check counts for " << nodes.size() - 1 << " intervals");
+  ARM_THROW_UNLESS(checks_per.size() + 1 == nodes.size(),
+                   "interval_points: " << checks_per.size() << " check counts for "
+                                       << nodes.size() - 1 << " intervals");
   const auto& stops = problem.path.stops();
   const PointSource source(problem);
   std::vector<std::vector<JointPoint>> out(nodes.size() - 1);
@@ -180,7 +185,8 @@ TimedState state_at_time(const Problem& problem, const Profile& pr,
                    "state_at_time: profile sizes differ");
   t = std::clamp(t, node_t.front(), node_t.back());
   // interval k with node_t[k] <= t <= node_t[k + 1]
-  size_t k = static_cast<size_t>(std::upper_bound(node_t.begin(), node_t.end(), t) - node_t.begin());
+  size_t k =
+      static_cast<size_t>(std::upper_bound(node_t.begin(), node_t.end(), t) - node_t.begin());
   k = std::clamp<size_t>(k, 1, node_t.size() - 1) - 1;
   const double ds = pr.s[k + 1] - pr.s[k];
   const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
@@ -212,13 +218,13 @@ std::string violation_text(const Problem& problem, const Violation& v) {
   os.precision(4);
   const double lim = problem.limits.of(v.kind, v.joint);
   const double used = (v.worst + 1) * lim;
-  os << "largest limit use: joint " << v.joint + 1 << " " << limit_name(v.kind) << " "
-     << used << " of " << lim << " " << limit_unit(v.kind) << " at s = " << v.s
-     << " " << problem.path.unit() << ", t = " << v.t << " s (interval " << v.interval << ", from grid point "
-     << v.interval << "); ";
+  os << "largest limit use: joint " << v.joint + 1 << " " << limit_name(v.kind) << " " << used
+     << " of " << lim << " " << limit_unit(v.kind) << " at s = " << v.s << " "
+     << problem.path.unit() << ", t = " << v.t << " s (interval " << v.interval
+     << ", from grid point " << v.interval << "); ";
   if (v.worst <= 0)
-    os << "met with a margin of " << lim - used << " " << limit_unit(v.kind) << " (" << 0.0 - v.worst
-       << " relative)";
+    os << "met with a margin of " << lim - used << " " << limit_unit(v.kind) << " ("
+       << 0.0 - v.worst << " relative)";
   else
     os << "over it by " << used - lim << " " << limit_unit(v.kind) << " (" << v.worst
        << " relative, between the solver's check points)";
@@ -234,8 +240,8 @@ inline double use_ratio(double value, double lim) {
 }  // namespace
 
 void resample_reference(const Problem& problem, const Profile& pr, int per_interval, int keep,
-                      MotionSamples* out, Violation* viol, std::vector<double>* node_t,
-                      std::vector<double>* interval_worst) {
+                        MotionSamples* out, Violation* viol, std::vector<double>* node_t,
+                        std::vector<double>* interval_worst) {
   ARM_THROW_UNLESS(per_interval >= 1, "resampling points " << per_interval << " should be >= 1");
   const int K = static_cast<int>(pr.s.size()) - 1;
   const int total = K * per_interval + 1;
@@ -479,9 +485,12 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
         use[kind][j].resize(n);
       }
     {
-      double* __restrict v0 = val[0][0].data(); double* __restrict v1 = val[0][1].data();
-      double* __restrict t0 = val[1][0].data(); double* __restrict t1 = val[1][1].data();
-      double* __restrict a0 = val[2][0].data(); double* __restrict a1 = val[2][1].data();
+      double* __restrict v0 = val[0][0].data();
+      double* __restrict v1 = val[0][1].data();
+      double* __restrict t0 = val[1][0].data();
+      double* __restrict t1 = val[1][1].data();
+      double* __restrict a0 = val[2][0].data();
+      double* __restrict a1 = val[2][1].data();
       const auto scan = [&](auto gravity) {
 #pragma GCC ivdep
         for (size_t i = 0; i < n; ++i) {
@@ -489,8 +498,8 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
           const double vq[2] = {ra.dq0[i] * sd, ra.dq1[i] * sd};
           const double aq[2] = {ra.dq0[i] * u + ra.ddq0[i] * x, ra.dq1[i] * u + ra.ddq1[i] * x};
           double tq[2];
-          inverse_dynamics_cs_fixed<decltype(gravity)::value>(dyn, ra.c1[i], ra.s1[i], ra.c2[i], ra.s2[i],
-                                                              vq, aq, tq);
+          inverse_dynamics_cs_fixed<decltype(gravity)::value>(dyn, ra.c1[i], ra.s1[i], ra.c2[i],
+                                                              ra.s2[i], vq, aq, tq);
           v0[i] = vq[0];
           v1[i] = vq[1];
           t0[i] = tq[0];
@@ -540,7 +549,8 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
               if (b < floor) {
                 c.clear();  // every earlier candidate is below the new floor
               } else {
-                c.erase(std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
+                c.erase(std::remove_if(c.begin(), c.end(),
+                                       [&](const Candidate& e) { return e.r < floor; }),
                         c.end());
               }
               b = r;
@@ -578,9 +588,12 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
       for (const Candidate& c : cand[kind][j]) {
         const Reference ref = reference(c.k, c.m);
         double v;
-        if (kind == 0) v = ref.qd[j];
-        else if (kind == 2) v = ref.qdd[j];
-        else v = core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd)[j];
+        if (kind == 0)
+          v = ref.qd[j];
+        else if (kind == 2)
+          v = ref.qdd[j];
+        else
+          v = core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd)[j];
         const double r = use_ratio(v, lim[kind][j]);
         if (r > r_best) {
           r_best = r;

@@ -20,8 +20,8 @@ namespace armstudy::studies::time_optimal {
 /// (JointPathGeometry, s in rad, any number of joints). Converts implicitly from both.
 class SolverPath {
  public:
-  SolverPath(PathGeometry tip) : tip_(std::move(tip)) {}              // NOLINT: implicit
-  SolverPath(JointPathGeometry joint) : joint_(std::move(joint)) {}   // NOLINT: implicit
+  SolverPath(PathGeometry tip) : tip_(std::move(tip)) {}             // NOLINT: implicit
+  SolverPath(JointPathGeometry joint) : joint_(std::move(joint)) {}  // NOLINT: implicit
   bool joint_space() const { return joint_.has_value(); }
   double length() const { return joint_ ? joint_->length() : tip_->length(); }
   const std::vector<double>& stops() const { return joint_ ? joint_->stops() : tip_->stops(); }
@@ -82,8 +82,7 @@ std::vector<bool> rest_nodes(const SolverPath& path, const std::vector<double>& 
 /// Joint points at the check points theta = m / checks (m = 0..checks) of every interval:
 /// out[k][m]; the last point of an interval ending at a stop is taken from the left.
 std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
-                                                     const std::vector<double>& nodes,
-                                                     int checks);
+                                                     const std::vector<double>& nodes, int checks);
 /// The same with `checks[k]` check points in interval k (one entry per interval).
 std::vector<std::vector<JointPoint>> interval_points(const Problem& problem,
                                                      const std::vector<double>& nodes,

@@ -18,7 +18,8 @@ std::string place(const Problem& pb, double s, int node, int nodes) {
 }
 }  // namespace
 
-SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes, int checks) {
+SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes,
+                                   int checks) {
   ARM_THROW_UNLESS(checks >= 1, "checks per interval " << checks << " should be >= 1");
   return solve_exact_reference(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
 }
@@ -47,7 +48,8 @@ SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>&
   for (int k = N - 1; k >= 0; --k) {
     const double ds = nodes[k + 1] - nodes[k];
     // x_i + 2 ds u in K_i+1
-    rows[k].push_back({1.0, 2.0 * ds, klo[k + 1], khi[k + 1], RowTag{-1, LimitKind::kVelocity, k + 1, nodes[k + 1]}});
+    rows[k].push_back({1.0, 2.0 * ds, klo[k + 1], khi[k + 1],
+                       RowTag{-1, LimitKind::kVelocity, k + 1, nodes[k + 1]}});
     const XInterval xi = feasible_x(rows[k]);
     rows[k].pop_back();
     const double tol = 1e-12 * std::max(1.0, std::abs(xi.hi));
@@ -62,7 +64,8 @@ SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>&
       if (b.joint != a.joint || b.kind != a.kind || b.s != a.s)
         os << " conflicts with " << describe(b, pb.limits, pb.path.unit());
       if (rest[k] && xi.lo <= xi.hi + tol)
-        os << " (the arm must be at rest there, but the limits need s'^2 >= " << xi.lo << " m^2/s^2)";
+        os << " (the arm must be at rest there, but the limits need s'^2 >= " << xi.lo
+           << " m^2/s^2)";
       out.message = os.str();
       return out;
     }
@@ -83,8 +86,8 @@ SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>&
       // two consecutive rests: the limits hold the arm still; name the one that binds
       RowTag tag = ur.hi_tag;
       if (!(ur.hi <= (khi[k + 1] - x[k]) / (2 * ds))) tag = khi_tag[k + 1];
-      out.message = "the limits hold the arm at rest near " + place(pb, nodes[k], k, n) +
-                    ": " + describe(tag, pb.limits, pb.path.unit()) +
+      out.message = "the limits hold the arm at rest near " + place(pb, nodes[k], k, n) + ": " +
+                    describe(tag, pb.limits, pb.path.unit()) +
                     " allows no motion there, so the path cannot be traversed in finite time";
       return out;
     }
@@ -112,9 +115,9 @@ struct Ln {
 // The arrays of solve_exact, kept between solves of a thread so that a solve allocates
 // nothing once they have grown.
 struct ExactWorkspace {
-  std::vector<Coef> rows;       // every interval's rows
-  std::vector<size_t> start;    // interval k's rows begin at rows[start[k]]
-  std::vector<int> count;       // rows used per interval
+  std::vector<Coef> rows;     // every interval's rows
+  std::vector<size_t> start;  // interval k's rows begin at rows[start[k]]
+  std::vector<int> count;     // rows used per interval
   std::vector<double> klo, khi, x;
   std::vector<unsigned char> rest;
   std::vector<Ln> lower, upper;
@@ -169,11 +172,23 @@ XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace
   const auto take = [&](const Coef& r) {
     if (r.cu == 0.0) {
       if (r.cx > 0) {
-        if (std::isfinite(r.hi)) { const double v = r.hi / r.cx; if (v < out.hi) out.hi = v; }
-        if (std::isfinite(r.lo)) { const double v = r.lo / r.cx; if (v > out.lo) out.lo = v; }
+        if (std::isfinite(r.hi)) {
+          const double v = r.hi / r.cx;
+          if (v < out.hi) out.hi = v;
+        }
+        if (std::isfinite(r.lo)) {
+          const double v = r.lo / r.cx;
+          if (v > out.lo) out.lo = v;
+        }
       } else if (r.cx < 0) {
-        if (std::isfinite(r.hi)) { const double v = r.hi / r.cx; if (v > out.lo) out.lo = v; }
-        if (std::isfinite(r.lo)) { const double v = r.lo / r.cx; if (v < out.hi) out.hi = v; }
+        if (std::isfinite(r.hi)) {
+          const double v = r.hi / r.cx;
+          if (v > out.lo) out.lo = v;
+        }
+        if (std::isfinite(r.lo)) {
+          const double v = r.lo / r.cx;
+          if (v < out.hi) out.hi = v;
+        }
       } else if (r.lo > 1e-12 * std::max(1.0, std::abs(r.lo)) || r.hi < -1e-12) {
         return false;
       }
@@ -294,19 +309,21 @@ void ExactPointCache::merge() {
   fresh_.clear();
 }
 
-SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, const std::vector<int>& checks_per,
-                         ExactPointCache* cache) {
+SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
+                         const std::vector<int>& checks_per, ExactPointCache* cache) {
   thread_local ExactWorkspace ws;
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
-  ARM_THROW_UNLESS(static_cast<int>(checks_per.size()) == N,
-                   "solve_exact: " << checks_per.size() << " check counts for " << N << " intervals");
+  ARM_THROW_UNLESS(static_cast<int>(checks_per.size()) == N, "solve_exact: " << checks_per.size()
+                                                                             << " check counts for "
+                                                                             << N << " intervals");
   const int nj = pb.limits.joints();
   const int kinds = pb.limits.acceleration ? 3 : 2;
   ws.start.resize(N + 1);
   ws.start[0] = 0;
   for (int k = 0; k < N; ++k) {
-    ARM_THROW_UNLESS(checks_per[k] >= 1, "checks per interval " << checks_per[k] << " should be >= 1");
+    ARM_THROW_UNLESS(checks_per[k] >= 1,
+                     "checks per interval " << checks_per[k] << " should be >= 1");
     ws.start[k + 1] = ws.start[k] + static_cast<size_t>(checks_per[k] + 1) * nj * kinds;
   }
   ws.rows.resize(ws.start[N]);
@@ -324,9 +341,9 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, co
   // rows of every interval in (x_i, u), limits at theta = m / checks (interval_points'
   // points: the first point of an interval is the last of the one before, except at a stop)
   const PointSource source(pb);
-  const JointPoint* prev = nullptr;  // the last point of the interval before, or its
+  const JointPoint* prev = nullptr;    // the last point of the interval before, or its
   const double* prev_known = nullptr;  // numbers from the cache
-  int next = 0;                       // the buffer of the next new point
+  int next = 0;                        // the buffer of the next new point
   for (int k = 0; k < N; ++k) {
     const int checks = checks_per[k];
     const double ds = nodes[k + 1] - nodes[k];
@@ -334,7 +351,8 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, co
     int c = 0;
     for (int m = 0; m <= checks; ++m) {
       if (m == 0 && k > 0 && std::find(stops.begin(), stops.end(), nodes[k]) == stops.end()) {
-        c += prev ? add_rows(*prev, pb.limits, 0.0, rows + c) : add_rows(prev_known, nj, pb.limits, 0.0, rows + c);
+        c += prev ? add_rows(*prev, pb.limits, 0.0, rows + c)
+                  : add_rows(prev_known, nj, pb.limits, 0.0, rows + c);
         continue;
       }
       const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
@@ -367,7 +385,8 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes, co
     const Coef reach{1.0, 2.0 * ds, ws.klo[k + 1], ws.khi[k + 1]};
     const XRange xi = feasible_x_fast(ws.rows.data() + ws.start[k], ws.count[k], reach, ws);
     const double tol = 1e-12 * std::max(1.0, std::abs(xi.hi));
-    if (xi.lo > xi.hi + tol || (ws.rest[k] && xi.lo > tol)) return solve_exact_reference(pb, nodes, checks_per);
+    if (xi.lo > xi.hi + tol || (ws.rest[k] && xi.lo > tol))
+      return solve_exact_reference(pb, nodes, checks_per);
     ws.klo[k] = ws.rest[k] ? 0.0 : std::max(0.0, xi.lo);
     ws.khi[k] = ws.rest[k] ? 0.0 : std::max(ws.klo[k], xi.hi);
   }

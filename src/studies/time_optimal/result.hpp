@@ -28,7 +28,8 @@ struct MotionSamples {
   std::vector<double> t;    ///< s
   std::vector<double> sd;   ///< m/s
   std::vector<double> sdd;  ///< m/s^2
-  Eigen::MatrixXd q, qd, qdd, tau;  ///< (joints x samples) rad, rad/s, rad/s^2, N m (inverse dynamics)
+  Eigen::MatrixXd q, qd, qdd,
+      tau;  ///< (joints x samples) rad, rad/s, rad/s^2, N m (inverse dynamics)
 };
 
 /// The largest use of each limit over the densely resampled motion.
@@ -36,13 +37,13 @@ struct Violation {
   /// ratio[kind][joint] = max |value| / limit (> 1: violated); kind as LimitKind (entries
   /// beyond the arm's joints stay 0)
   double ratio[3][core::kMaxLinks] = {};
-  double worst = 0;      ///< max over kinds and joints of ratio - 1 (<= 0: every limit met)
-  int joint = 0;         ///< where the worst ratio occurs: joint (0-based)
+  double worst = 0;  ///< max over kinds and joints of ratio - 1 (<= 0: every limit met)
+  int joint = 0;     ///< where the worst ratio occurs: joint (0-based)
   LimitKind kind = LimitKind::kVelocity;
-  double s = 0;          ///< m
-  double t = 0;          ///< s
-  int interval = 0;      ///< solver interval (grid point at its start)
-  std::string text;      ///< names the grid point, binding limit and margin
+  double s = 0;      ///< m
+  double t = 0;      ///< s
+  int interval = 0;  ///< solver interval (grid point at its start)
+  std::string text;  ///< names the grid point, binding limit and margin
 };
 
 /// A solver's name ("exact", "dp", "dp_joint1", "complex") in words, for sentences and labels.
@@ -54,20 +55,20 @@ inline std::string solver_words(const std::string& name) {
 }
 
 struct SolverResult {
-  std::string name;         ///< "exact", "dp", "dp_joint1", "complex"
-  std::string method;       ///< a sentence
+  std::string name;    ///< "exact", "dp", "dp_joint1", "complex"
+  std::string method;  ///< a sentence
   bool solved = false;
-  std::string message;      ///< why not, when not solved
-  double duration = 0;      ///< s
-  double run_time = 0;      ///< s, wall clock of the solver
-  int intervals = 0;        ///< N
-  int levels = 0;           ///< DP velocity levels (0 otherwise)
+  std::string message;  ///< why not, when not solved
+  double duration = 0;  ///< s
+  double run_time = 0;  ///< s, wall clock of the solver
+  int intervals = 0;    ///< N
+  int levels = 0;       ///< DP velocity levels (0 otherwise)
   SegmentLaw law = SegmentLaw::kPathAcceleration;
   std::vector<double> node_s, node_sd, node_t;  ///< the profile at the solver's nodes
-  MotionSamples samples;    ///< decimated dense samples for plots (<= ~600)
-  Violation violation;      ///< over the full dense resampling
-  long evaluations = 0;     ///< DP transitions / Complex objective calls
-  int iterations = 0;       ///< Complex reflections
+  MotionSamples samples;                        ///< decimated dense samples for plots (<= ~600)
+  Violation violation;                          ///< over the full dense resampling
+  long evaluations = 0;                         ///< DP transitions / Complex objective calls
+  int iterations = 0;                           ///< Complex reflections
 
   /// The solver in words, for sentences and labels ("dp_joint1" is a results.json key).
   std::string words() const { return solver_words(name); }
@@ -88,8 +89,8 @@ struct ConvergenceRow {
 /// interval halved (2 N - 1 points), and where the duration changed.
 struct GridConvergence {
   bool computed = false;
-  int grid_points = 0;       ///< the case's grid
-  int refined_points = 0;    ///< 2 grid_points - 1
+  int grid_points = 0;     ///< the case's grid
+  int refined_points = 0;  ///< 2 grid_points - 1
   bool refined_solved = false;
   double duration = 0;          ///< s, on the case's grid
   double refined_duration = 0;  ///< s, on the refined grid
@@ -98,7 +99,7 @@ struct GridConvergence {
   /// the shortest stretch of the path holding 90 % of the change (summed |change| of the
   /// case grid's intervals), its share, the largest s' there (m/s) and the smallest |sin q2|
   /// there and along the whole path
-  double s_lo = 0, s_hi = 0;  ///< m
+  double s_lo = 0, s_hi = 0;       ///< m
   int point_lo = 0, point_hi = 0;  ///< grid points
   double share = 0;
   double max_sd = 0;
@@ -109,7 +110,7 @@ struct GridConvergence {
 struct Result {
   Status status = Status::kUnsolvable;
   std::string message;
-  double path_length = 0;   ///< m (rad for a joint-space path)
+  double path_length = 0;             ///< m (rad for a joint-space path)
   std::vector<SolverResult> solvers;  ///< exact first, then DP run(s), then Complex
   /// maximum velocity curve on the exact grid: the largest s' at which some s'' meets
   /// every limit at that point (m/s); and the speed allowed by velocity limits alone

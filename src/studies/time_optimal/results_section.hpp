@@ -93,16 +93,20 @@ template <class V>
 void fields(V& v, ResultsSection::Path& x) {
   v("space", x.space, "tip (a tip path of a 2-link arm) or joint (a path in joint space)");
   v("kind", x.kind, "line, polyline or spline");
-  v("s_unit", x.s_unit, "unit of the path parameter s: m (tip arc length) or rad (joint-space chord length)");
+  v("s_unit", x.s_unit,
+    "unit of the path parameter s: m (tip arc length) or rad (joint-space chord length)");
   v("points_m", x.points_m, "the tip path's points [x, y] in m (null for a joint-space path)");
-  v("points_rad", x.points_rad, "the joint-space path's waypoints [q1, ..., qn] in rad (null for a tip path)");
-  v("range_rad", x.range_rad, "joint ranges [lo, hi] in rad the path must stay in (null: none given)");
+  v("points_rad", x.points_rad,
+    "the joint-space path's waypoints [q1, ..., qn] in rad (null for a tip path)");
+  v("range_rad", x.range_rad,
+    "joint ranges [lo, hi] in rad the path must stay in (null: none given)");
 }
 template <class V>
 void fields(V& v, ResultsSection::Limits& x) {
   v("velocity_rad_s", x.velocity_rad_s, "joint velocity limits, per joint");
   v("torque_Nm", x.torque_Nm, "joint torque limits, per joint");
-  v("acceleration_rad_s2", x.acceleration_rad_s2, "joint acceleration limits, per joint (null: none)");
+  v("acceleration_rad_s2", x.acceleration_rad_s2,
+    "joint acceleration limits, per joint (null: none)");
 }
 template <class V>
 void fields(V& v, ResultsSection::Ratio& x) {
@@ -146,7 +150,8 @@ void fields(V& v, ResultsSection::Solver& x) {
   v("iterations", x.iterations, "Complex reflections");
   v.optional("violation", x.violation, "limit use over the dense resampling (when solved)");
   v.optional("node_s", x.node_s, "path position at the solver's nodes, path.s_unit (when solved)");
-  v.optional("node_sd", x.node_sd, "path speed at the solver's nodes, path.s_unit per s (when solved)");
+  v.optional("node_sd", x.node_sd,
+             "path speed at the solver's nodes, path.s_unit per s (when solved)");
   v.optional("node_t_s", x.node_t_s, "time at the solver's nodes (when solved)");
   v.optional("samples", x.samples, "dense samples for plots (when solved)");
 }
@@ -154,7 +159,8 @@ template <class V>
 void fields(V& v, ResultsSection::Mvc& x) {
   v("s", x.s, "path position on the exact grid (path.s_unit)");
   v("sd", x.sd, "maximum velocity curve, every limit (path.s_unit per s)");
-  v("velocity_sd", x.velocity_sd, "maximum velocity curve of the velocity limits alone (path.s_unit per s)");
+  v("velocity_sd", x.velocity_sd,
+    "maximum velocity curve of the velocity limits alone (path.s_unit per s)");
 }
 template <class V>
 void fields(V& v, ResultsSection::ConvergenceRow& x) {
@@ -180,7 +186,8 @@ void fields(V& v, ResultsSection::GridConvergence& x) {
   v("refined_points", x.refined_points, "2 grid_points - 1");
   v("refined_solved", x.refined_solved, "whether the refined grid solved");
   v("duration_s", x.duration_s, "duration on the case's grid");
-  v("refined_duration_s", x.refined_duration_s, "duration on the refined grid (null when not solved)");
+  v("refined_duration_s", x.refined_duration_s,
+    "duration on the refined grid (null when not solved)");
   v("change", x.change, "|duration / refined duration - 1| (null: the refined solve failed)");
   v("tolerance", x.tolerance, "allowed change (check exact_grid_converged)");
   v("passed", x.passed, "change <= tolerance");
@@ -189,7 +196,8 @@ void fields(V& v, ResultsSection::GridConvergence& x) {
   v("share", x.share, "share of the change from that range");
   v("max_sd", x.max_sd, "largest path speed there (path.s_unit per s)");
   v("min_abs_sin_q2", x.min_abs_sin_q2, "smallest |sin q2| there (null for a joint-space path)");
-  v("path_min_abs_sin_q2", x.path_min_abs_sin_q2, "smallest |sin q2| along the path (null for a joint-space path)");
+  v("path_min_abs_sin_q2", x.path_min_abs_sin_q2,
+    "smallest |sin q2| along the path (null for a joint-space path)");
   v("text", x.text, "the sentence for the check and the page");
 }
 template <class V>
@@ -197,7 +205,8 @@ void fields(V& v, ResultsSection& x) {
   v("path", x.path, "the path: a tip path (2 links) or a path in joint space");
   v("path_length", x.path_length, "length of the path (path.s_unit)");
   v("joints", x.joints, "number of joints of the chain");
-  v("configuration", x.configuration, "elbow configuration of a tip path, 1 or 2 (null for a joint-space path)");
+  v("configuration", x.configuration,
+    "elbow configuration of a tip path, 1 or 2 (null for a joint-space path)");
   v("limits", x.limits, "the joint limits");
   v("solvers", x.solvers, "every solver, exact first");
   v("mvc", x.mvc, "the maximum velocity curve on the exact grid");
@@ -205,8 +214,9 @@ void fields(V& v, ResultsSection& x) {
   v("motion", x.motion, "the exact motion at equal time steps (what the frames show)");
   v.optional("grid_convergence", x.grid_convergence,
              "the exact solver again with every grid interval halved (check exact_grid_converged)");
-  v.optional("mujoco_replay", x.mujoco_replay,
-             "the exact solution's torques applied open loop in MuJoCo (check mujoco_dynamic_replay)");
+  v.optional(
+      "mujoco_replay", x.mujoco_replay,
+      "the exact solution's torques applied open loop in MuJoCo (check mujoco_dynamic_replay)");
 }
 
 }  // namespace armstudy::studies::time_optimal

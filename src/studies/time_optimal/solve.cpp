@@ -15,9 +15,9 @@
 
 namespace armstudy::studies::time_optimal {
 namespace {
-constexpr int kKeepSamples = 600;    // samples per solver kept for plots
-constexpr int kDenseTotal = 4000;    // least dense re-check points of a coarse solution
-constexpr int kMaxRefinements = 3;   // doublings of the solvers' check points
+constexpr int kKeepSamples = 600;   // samples per solver kept for plots
+constexpr int kDenseTotal = 4000;   // least dense re-check points of a coarse solution
+constexpr int kMaxRefinements = 3;  // doublings of the solvers' check points
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -43,7 +43,8 @@ void finish(const Problem& pb, const SolverOutput& o, int per_interval, SolverRe
   r->law = o.profile.law;
   r->node_s = o.profile.s;
   r->node_sd = o.profile.sd;
-  resample(pb, o.profile, per_interval, kKeepSamples, &r->samples, &r->violation, &r->node_t, interval_worst);
+  resample(pb, o.profile, per_interval, kKeepSamples, &r->samples, &r->violation, &r->node_t,
+           interval_worst);
 }
 
 int dense_points(int intervals, int at_least) {
@@ -51,7 +52,8 @@ int dense_points(int intervals, int at_least) {
 }
 // The path's worst point outside the workspace (largest excess, located to 1e-12 m of s
 // between the probes by golden-section search), or the first singular probe; "" if none.
-std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen::Vector2d>& joint_range) {
+std::string path_trouble(const Problem& pb, int probes,
+                         const std::vector<Eigen::Vector2d>& joint_range) {
   if (pb.path.joint_space()) {
     // a joint-space path has no workspace or singularity to leave, only the joints' ranges
     const auto e = range_excursion(pb.path.joint(), joint_range);
@@ -78,9 +80,17 @@ std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen:
     double fc = margin(c), fd = margin(d);
     while (b - a > 1e-12) {
       if (fc < fd) {
-        b = d; d = c; fd = fc; c = b - g * (b - a); fc = margin(c);
+        b = d;
+        d = c;
+        fd = fc;
+        c = b - g * (b - a);
+        fc = margin(c);
       } else {
-        a = c; c = d; fc = fd; d = a + g * (b - a); fd = margin(d);
+        a = c;
+        c = d;
+        fc = fd;
+        d = a + g * (b - a);
+        fd = margin(d);
       }
     }
     const double s = 0.5 * (a + b);
@@ -100,8 +110,8 @@ std::string path_trouble(const Problem& pb, int probes, const std::vector<Eigen:
        << " outside the reachable annulus [" << fixed(reach.inner, 2) << ", "
        << fixed(reach.outer, 2) << "] m";
     if (first_out < probe.size() && last_out > first_out)
-      os << " (points outside between s = " << probe[first_out] << " and " << probe[last_out] << " m of "
-         << pb.path.length() << " m)";
+      os << " (points outside between s = " << probe[first_out] << " and " << probe[last_out]
+         << " m of " << pb.path.length() << " m)";
     return os.str();
   }
   // singular poses: a probe whose elbow is clearly bent (|sin q2| > 1e-6 without angles)
@@ -222,17 +232,17 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
   for (int k = best_lo; k <= best_hi + 1; ++k) g.max_sd = std::max(g.max_sd, exact.node_sd[k]);
   g.min_sin_q2 = std::min(g.min_sin_q2, min_sin_q2(2 * best_lo, 2 * best_hi + 2));
   os.precision(7);
-  os << "duration " << exact.duration << " s on " << n << " grid points, " << o.duration
-     << " s on " << g.refined_points << " (every interval halved): relative change ";
+  os << "duration " << exact.duration << " s on " << n << " grid points, " << o.duration << " s on "
+     << g.refined_points << " (every interval halved): relative change ";
   os.precision(3);
   os << g.change;
   if (g.change > tolerance) {
     const std::string u = pb.path.unit();
     os << ", over the tolerance " << tolerance << ": the grid is too coarse, not converged. "
-       << fixed(100 * g.share, 0) << " % of the change lies in s = " << fixed(g.s_lo, 4)
-       << " to " << fixed(g.s_hi, 4) << " " << u << " (grid points " << g.point_lo << " to " << g.point_hi
-       << " of " << n << "; path length " << fixed(pb.path.length(), 4) << " " << u << "), where s' <= "
-       << g.max_sd << " " << u << "/s";
+       << fixed(100 * g.share, 0) << " % of the change lies in s = " << fixed(g.s_lo, 4) << " to "
+       << fixed(g.s_hi, 4) << " " << u << " (grid points " << g.point_lo << " to " << g.point_hi
+       << " of " << n << "; path length " << fixed(pb.path.length(), 4) << " " << u
+       << "), where s' <= " << g.max_sd << " " << u << "/s";
     if (!pb.path.joint_space()) os << " and |sin q2| falls to " << g.min_sin_q2;
     if (!pb.path.joint_space() && g.min_sin_q2 < 0.05)
       os << " (near a singular pose: the joint rates per metre of path grow without bound there)";
@@ -260,19 +270,26 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   };
   const int nj = spec.chain.num_links();
   if (spec.space == PathSpace::kTip) {
-    ARM_THROW_UNLESS(nj == 2, "time-optimal arm has " << nj << " links; a tip path needs 2 (give "
-                                                          "a redundant arm its path in joint space)");
+    ARM_THROW_UNLESS(nj == 2, "time-optimal arm has "
+                                  << nj
+                                  << " links; a tip path needs 2 (give "
+                                     "a redundant arm its path in joint space)");
   } else {
-    ARM_THROW_UNLESS(nj >= 2, "time-optimal arm has " << nj << " links; should have 2 to " << core::kMaxLinks);
+    ARM_THROW_UNLESS(
+        nj >= 2, "time-optimal arm has " << nj << " links; should have 2 to " << core::kMaxLinks);
     for (size_t i = 0; i < spec.joint_path.points.size(); ++i)
       ARM_THROW_UNLESS(spec.joint_path.points[i].size() == nj,
-                       "joint path waypoint " << i + 1 << " has " << spec.joint_path.points[i].size()
+                       "joint path waypoint " << i + 1 << " has "
+                                              << spec.joint_path.points[i].size()
                                               << " angles; the arm has " << nj << " joints");
-    ARM_THROW_UNLESS(spec.joint_path.range.empty() || static_cast<int>(spec.joint_path.range.size()) == nj,
-                     "joint range has " << spec.joint_path.range.size() << " entries; the arm has " << nj << " joints");
+    ARM_THROW_UNLESS(
+        spec.joint_path.range.empty() || static_cast<int>(spec.joint_path.range.size()) == nj,
+        "joint range has " << spec.joint_path.range.size() << " entries; the arm has " << nj
+                           << " joints");
   }
   for (int j = 0; j < nj; ++j)
-    ARM_THROW_UNLESS(spec.chain.links[j].active, "time-optimal joint " << j + 1 << " is passive; every joint must be active");
+    ARM_THROW_UNLESS(spec.chain.links[j].active,
+                     "time-optimal joint " << j + 1 << " is passive; every joint must be active");
   ARM_THROW_UNLESS(spec.velocity_limit.size() == nj && spec.torque_limit.size() == nj &&
                        (!spec.acceleration_limit || spec.acceleration_limit->size() == nj),
                    "time-optimal limits should have one entry per joint (" << nj << ")");
@@ -341,7 +358,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
           exact_checks[i] *= 2;
           refined = true;
         }
-      if (!refined) exact_checks[r.violation.interval] *= 2;  // (its excess by the closed form rounds below)
+      if (!refined)
+        exact_checks[r.violation.interval] *= 2;  // (its excess by the closed form rounds below)
       o = solve_exact(pb, grid, exact_checks, &points);
       finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     }
@@ -368,11 +386,13 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   // (no reference into res.solvers: it grows below)
   const double exact_duration = res.solvers.front().duration;
   report(0.1, "exact solver on the refined grid");
-  res.grid = grid_convergence(pb, res.solvers.front(), exact_checks, spec.exact.grid_tolerance, &points);
+  res.grid =
+      grid_convergence(pb, res.solvers.front(), exact_checks, spec.exact.grid_tolerance, &points);
   max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
   res.mvc_s = grid;
   res.path_p.resize(2, grid.size());
-  for (size_t k = 0; k < grid.size(); ++k) res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());
+  for (size_t k = 0; k < grid.size(); ++k)
+    res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());
 
   // DP and Complex enforce the limits at checks_per_segment + 1 points of each of their
   // long segments; between them a limit can be overshot. Like the exact solver, each is
@@ -383,7 +403,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     int checks = spec.dp.checks_per_segment;
     SolverOutput o = run(checks);
     finish(pb, o, dense_points(spec.dp.segments, spec.resample_per_interval), r);
-    for (int k = 0; k < kMaxRefinements && o.solved && r->violation.worst > kCoarseViolationTolerance; ++k) {
+    for (int k = 0;
+         k < kMaxRefinements && o.solved && r->violation.worst > kCoarseViolationTolerance; ++k) {
       checks *= 2;
       o = run(checks);
       finish(pb, o, dense_points(spec.dp.segments, spec.resample_per_interval), r);
@@ -401,12 +422,14 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     SolverResult r;
     r.name = state == DpState::kPathSpeed ? "dp" : "dp_joint1";
     r.method = std::string("dynamic programming, ") + std::to_string(spec.dp.segments) +
-               " segments of constant " + (state == DpState::kPathSpeed ? "s''" : "q1''") +
-               ", " + std::to_string(spec.dp.levels) + " levels of " +
+               " segments of constant " + (state == DpState::kPathSpeed ? "s''" : "q1''") + ", " +
+               std::to_string(spec.dp.levels) + " levels of " +
                (state == DpState::kPathSpeed ? "path speed s'" : "joint-1 velocity q1'");
     r.intervals = spec.dp.segments;
     r.levels = spec.dp.levels;
-    run_coarse(&r, [&](int checks) { return solve_dp(pb, spec.dp.segments, spec.dp.levels, checks, state); });
+    run_coarse(&r, [&](int checks) {
+      return solve_dp(pb, spec.dp.segments, spec.dp.levels, checks, state);
+    });
     res.solvers.push_back(r);
     done += 0.15;
   }
@@ -500,10 +523,11 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.status = Status::kSolved;
   std::ostringstream os;
   os << "fastest traversal of the " << fixed(res.path_length, 3) << " " << pb.path.unit()
-     << (res.joint_space ? " joint-space path: " : " path: ")
-     << fixed(exact.duration, 4) << " s (exact)";
+     << (res.joint_space ? " joint-space path: " : " path: ") << fixed(exact.duration, 4)
+     << " s (exact)";
   for (const SolverResult& r : res.solvers)
-    if (r.name != "exact" && r.solved) os << ", " << fixed(r.duration, 4) << " s (" << r.words() << ")";
+    if (r.name != "exact" && r.solved)
+      os << ", " << fixed(r.duration, 4) << " s (" << r.words() << ")";
   for (const SolverResult& r : res.solvers)
     if (r.name != "exact" && !r.solved) os << "; " << r.words() << " failed: " << r.message;
   if (res.grid.computed && !(res.grid.change <= res.grid.tolerance))
@@ -521,20 +545,22 @@ std::vector<Check> checks(const Result& res) {
     if (!r.solved) continue;
     if (r.name != "exact") {
       out.push_back(make_check("exact_not_slower_than_" + r.name,
-                               "exact duration / " + r.name + " duration - 1 (the reachability "
-                               "solution is never slower)",
+                               "exact duration / " + r.name +
+                                   " duration - 1 (the reachability "
+                                   "solution is never slower)",
                                exact.duration / r.duration - 1, 1e-9));
     }
-    out.push_back(make_check(
-        r.name + "_meets_limits",
-        "largest relative limit overshoot of the " + r.name + " solution, densely resampled: " +
-            r.violation.text,
-        r.violation.worst, r.name == "exact" ? kExactTolerance : kCoarseViolationTolerance));
+    out.push_back(make_check(r.name + "_meets_limits",
+                             "largest relative limit overshoot of the " + r.name +
+                                 " solution, densely resampled: " + r.violation.text,
+                             r.violation.worst,
+                             r.name == "exact" ? kExactTolerance : kCoarseViolationTolerance));
   }
   if (res.grid.computed)
     out.push_back(make_check("exact_grid_converged",
                              "relative change of the exact duration when every grid interval is "
-                             "halved (fails beyond exact.grid_tolerance): " + res.grid.text,
+                             "halved (fails beyond exact.grid_tolerance): " +
+                                 res.grid.text,
                              res.grid.change, res.grid.tolerance));
   double worst = -1;
   bool any = false;

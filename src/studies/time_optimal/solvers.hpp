@@ -12,7 +12,7 @@ namespace armstudy::studies::time_optimal {
 
 struct SolverOutput {
   bool solved = false;
-  std::string message;   ///< why not (names the limit and the place on the path)
+  std::string message;  ///< why not (names the limit and the place on the path)
   Profile profile;
   double duration = 0;   ///< s
   long evaluations = 0;  ///< DP transitions, Complex objective calls
@@ -66,7 +66,8 @@ SolverOutput solve_exact(const Problem& problem, const std::vector<double>& node
 /// allocated per solve. solve_exact gives the same numbers (the tests compare the two
 /// bitwise) without allocating once its per-thread arrays have grown, and words its
 /// failures through this one.
-SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes, int checks);
+SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes,
+                                   int checks);
 SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes,
                                    const std::vector<int>& checks);
 
@@ -83,8 +84,7 @@ void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes
 /// segment. State kPathSpeed: s' levels in [0, MVC(s_k)], constant s''. State
 /// kJoint1Velocity (the source's): q1' levels in [0, qd_max_1] towards the motion, constant
 /// q1'', segment time 2 dq1 / (q1'(k) + q1'(k+1)); fails when q1 is not monotonic.
-SolverOutput solve_dp(const Problem& problem, int segments, int levels, int checks,
-                      DpState state);
+SolverOutput solve_dp(const Problem& problem, int segments, int levels, int checks, DpState state);
 
 /// Box's Complex method on the same discretisation as the path-speed DP: the s' of every
 /// interior node are the variables (bounds [0, MVC]), a profile is feasible when every

@@ -47,9 +47,9 @@ enum class DpState {
 };
 
 struct DpSettings {
-  int segments = 10;          ///< N, the source's default
-  int levels = 200;           ///< velocity levels per interior node
-  int checks_per_segment = 8; ///< points per segment where limits are checked (>= 1)
+  int segments = 10;           ///< N, the source's default
+  int levels = 200;            ///< velocity levels per interior node
+  int checks_per_segment = 8;  ///< points per segment where limits are checked (>= 1)
   std::vector<DpState> states{DpState::kPathSpeed};  ///< one DP run per entry
   /// N of the convergence table (path-speed state, levels x N / segments levels, at least
   /// `levels`); empty: no table
@@ -64,7 +64,7 @@ struct ComplexSettings {
 };
 
 struct ExactSettings {
-  int grid_points = 1000;     ///< nodes of the fine grid (>= 2)
+  int grid_points = 1000;       ///< nodes of the fine grid (>= 2)
   int checks_per_interval = 2;  ///< sub-intervals per grid interval where limits hold
   /// Grid convergence: the exact solver runs again on the grid with every interval halved;
   /// the relative change of the duration must stay within this (check
@@ -83,16 +83,16 @@ inline core::JointVector joint_pair(double a, double b) {
 struct Spec {
   core::PlanarChain chain;  ///< 2 links (tip path) or 2 to kMaxLinks (joint path), all active
   PathSpace space = PathSpace::kTip;
-  PathSpec path;            ///< space kTip
-  JointPathSpec joint_path; ///< space kJoint: one angle per link in every waypoint
-  int configuration = 1;    ///< tip path: 1: q2 in (0, pi), 2: q2 in (-pi, 0) (core::ik_2link)
+  PathSpec path;             ///< space kTip
+  JointPathSpec joint_path;  ///< space kJoint: one angle per link in every waypoint
+  int configuration = 1;     ///< tip path: 1: q2 in (0, pi), 2: q2 in (-pi, 0) (core::ik_2link)
   core::JointVector velocity_limit = joint_pair(3.0, 4.0);  ///< rad/s per joint, >= 0
   core::JointVector torque_limit = joint_pair(10.0, 4.0);   ///< N m per joint, >= 0
-  std::optional<core::JointVector> acceleration_limit;       ///< rad/s^2 per joint, >= 0
+  std::optional<core::JointVector> acceleration_limit;      ///< rad/s^2 per joint, >= 0
   DpSettings dp;
   ComplexSettings complex;
   ExactSettings exact;
-  int motion_steps = 200;       ///< equal time steps of the sampled motion (for the renderer)
+  int motion_steps = 200;          ///< equal time steps of the sampled motion (for the renderer)
   int resample_per_interval = 16;  ///< dense re-check points per solver interval
 };
 

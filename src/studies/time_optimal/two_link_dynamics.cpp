@@ -44,9 +44,9 @@ TwoLinkDynamics make_two_link_dynamics(const core::PlanarChain& chain) {
   return d;
 }
 
-void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const core::JointVector& dq,
-                   const core::JointVector& ddq, core::JointVector* a, core::JointVector* b,
-                   core::JointVector* c) {
+void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
+                   const core::JointVector& dq, const core::JointVector& ddq, core::JointVector* a,
+                   core::JointVector* b, core::JointVector* c) {
   const double c2 = std::cos(q[1]), s2 = std::sin(q[1]);
   const double g = d.A * c2 - d.B * s2;
   const double gp = -d.A * s2 - d.B * c2;
@@ -69,8 +69,9 @@ void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const c
   (*c)[0] = d.gravity * (ct1 * (d.X1 + d.L1 * d.m2) - st1 * d.Y1) + (*c)[1];
 }
 
-void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const core::JointVector& qd,
-                      const core::JointVector& qdd, core::JointVector* tau) {
+void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
+                      const core::JointVector& qd, const core::JointVector& qdd,
+                      core::JointVector* tau) {
   const double c2 = std::cos(q[1]), s2 = std::sin(q[1]);
   const double g = d.A * c2 - d.B * s2;
   const double gp = -d.A * s2 - d.B * c2;

@@ -33,21 +33,23 @@ struct TwoLinkDynamics {
 TwoLinkDynamics make_two_link_dynamics(const core::PlanarChain& chain);
 
 /// a = M(q) dq, b = M(q) ddq + C(q, dq) dq, c = g(q) (2 entries each; N m per unit s'', s'^2).
-void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const core::JointVector& dq,
-                   const core::JointVector& ddq, core::JointVector* a, core::JointVector* b,
-                   core::JointVector* c);
+void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
+                   const core::JointVector& dq, const core::JointVector& ddq, core::JointVector* a,
+                   core::JointVector* b, core::JointVector* c);
 
 /// tau = M(q) qdd + C(q, qd) qd + g(q) of the model above (2 entries, N m): the inverse
 /// dynamics of the dense re-check, equal to core::inverse_dynamics to 1e-12 relative.
-void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q, const core::JointVector& qd,
-                      const core::JointVector& qdd, core::JointVector* tau);
+void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
+                      const core::JointVector& qd, const core::JointVector& qdd,
+                      core::JointVector* tau);
 
 /// inverse_dynamics from the cosines and sines of link 1's absolute angle (base_angle + q1:
 /// c1, s1) and of q2 (c2, s2) instead of q: the same model, no trigonometric functions.
 /// kGravity false: the chain's gravity is 0 (no branch, for loops the compiler vectorises).
 template <bool kGravity>
 inline void inverse_dynamics_cs_fixed(const TwoLinkDynamics& d, double c1, double s1, double c2,
-                                      double s2, const double qd[2], const double qdd[2], double tau[2]) {
+                                      double s2, const double qd[2], const double qdd[2],
+                                      double tau[2]) {
   const double g = d.A * c2 - d.B * s2;
   const double gp = -d.A * s2 - d.B * c2;
   const double m11 = d.a11 + 2.0 * g, m12 = d.a12 + g, m22 = d.a22;
@@ -61,8 +63,8 @@ inline void inverse_dynamics_cs_fixed(const TwoLinkDynamics& d, double c1, doubl
   }
 }
 
-inline void inverse_dynamics_cs(const TwoLinkDynamics& d, double c1, double s1, double c2, double s2,
-                                const double qd[2], const double qdd[2], double tau[2]) {
+inline void inverse_dynamics_cs(const TwoLinkDynamics& d, double c1, double s1, double c2,
+                                double s2, const double qd[2], const double qdd[2], double tau[2]) {
   if (d.gravity == 0.0)
     inverse_dynamics_cs_fixed<false>(d, c1, s1, c2, s2, qd, qdd, tau);
   else
