@@ -112,6 +112,7 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
   if (study) root.finish();  // with no known study, its keys cannot be judged
   if (diag.empty() && !options.allow_large) check_budget(root, out.info.render);
   diag.throw_if_any();
+  out.demands = diag.demands();
   return out;
 }
 

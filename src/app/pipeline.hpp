@@ -115,6 +115,8 @@ struct LoadedCase {
   cases::CaseInfo info;
   std::unique_ptr<StudyRun> run;
   const StudyEntry* entry = nullptr;  ///< the study's registry record
+  /// The work and memory the study's loader estimated from its keys (cases/budget.hpp).
+  std::vector<cases::Demand> demands;
 };
 
 /// How a case is judged when it is loaded.

@@ -32,6 +32,9 @@ struct Demand {
   double work = 0;     ///< in `unit`
   std::string unit;    ///< e.g. "trajectory samples"
   double work_budget = 0;
+  /// About how much of `work` one core does per second (measured on the bundled cases);
+  /// a run starts its longest cases first by it. 0 when unknown.
+  double work_per_second = 0;
   double memory_bytes = 0;  ///< of the solve (frames are added from `render:`)
   int strip_frames = 0;     ///< frames of the study's largest strip, beyond `render.frames`
   YAML::Mark mark;          ///< where to report it (the study's section)

@@ -24,6 +24,7 @@
 
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
+#include "app/run_order.hpp"
 #include "cases/case_error.hpp"
 #include "cli/diff.hpp"
 #include "cli/interrupt.hpp"
@@ -187,12 +188,14 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     case_options.printer = printer.get();
   }
   armstudy::app::ProgressReporter progress(stderr, armstudy::app::stderr_is_terminal());
+  // the longest cases first, so that each core ends on a short one
+  const std::vector<size_t> order = armstudy::app::longest_first(cases);
   std::atomic<size_t> next{0};
   std::mutex mu;
   int worst = kExitDone;
   auto worker = [&] {
     for (size_t i = next++; i < cases.size(); i = next++) {
-      LoadedCase& c = cases[i];
+      LoadedCase& c = cases[order[i]];
       int code = kExitDone;
       std::string line;
       try {

@@ -1,0 +1,78 @@
+// The order a run works through its cases: the longest estimated solve first, each case
+// exactly once, equal estimates in the order given.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/run_order.hpp"
+
+namespace {
+
+using armstudy::app::LoadedCase;
+
+std::vector<LoadedCase> bundled_cases() {
+  std::vector<std::string> paths;
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(ARMSTUDY_SOURCE_DIR) + "/reports/cases"))
+    if (e.path().extension() == ".yaml") paths.push_back(e.path().string());
+  std::sort(paths.begin(), paths.end());
+  std::vector<LoadedCase> cases;
+  for (const auto& p : paths) cases.push_back(armstudy::app::load_case(p));
+  return cases;
+}
+
+std::vector<std::string> names_in_order(const std::vector<LoadedCase>& cases) {
+  std::vector<std::string> names;
+  for (const size_t i : armstudy::app::longest_first(cases)) names.push_back(cases[i].info.name);
+  return names;
+}
+
+TEST(RunOrder, EveryCaseRunsOnceLongestEstimateFirst) {
+  const auto cases = bundled_cases();
+  ASSERT_GE(cases.size(), 10u);
+  const auto order = armstudy::app::longest_first(cases);
+  std::vector<size_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (size_t i = 0; i < sorted.size(); ++i) EXPECT_EQ(sorted[i], i);
+  for (size_t k = 1; k < order.size(); ++k)
+    EXPECT_GE(armstudy::app::estimated_solve_seconds(cases[order[k - 1]]),
+              armstudy::app::estimated_solve_seconds(cases[order[k]]))
+        << cases[order[k - 1]].info.name << " before " << cases[order[k]].info.name;
+  for (const auto& c : cases)
+    EXPECT_GT(armstudy::app::estimated_solve_seconds(c), 0) << c.info.name;
+}
+
+TEST(RunOrder, TheThrowingOptimisationStartsBeforeThePendulumAndEqualCasesKeepTheirOrder) {
+  const auto names = names_in_order(bundled_cases());
+  const auto at = [&](const std::string& n) {
+    return std::find(names.begin(), names.end(), n) - names.begin();
+  };
+  // the IDP and SLSQP throw is the longest solve of the bundled set; the pendulum's the shortest
+  EXPECT_EQ(names.front(), "throwing");
+  EXPECT_EQ(names.back(), "pendulum");
+  // the placement examples ask for the same sweep: they keep their name order
+  EXPECT_LT(at("placement-example-2"), at("placement-example-3"));
+  EXPECT_LT(at("placement-example-3"), at("placement-example-4"));
+  EXPECT_LT(at("placement-example-4"), at("placement-example-5"));
+}
+
+TEST(RunOrder, MoreIdpIterationsEstimateALongerSolve) {
+  const std::string path = std::string(ARMSTUDY_SOURCE_DIR) + "/reports/cases/throwing.yaml";
+  const LoadedCase base = armstudy::app::load_case(path);
+  std::string text = base.info.yaml;
+  const std::string key = "iterations:";
+  const auto p = text.find(key);
+  ASSERT_NE(p, std::string::npos);
+  const auto end = text.find('\n', p);
+  const int iterations = std::stoi(text.substr(p + key.size(), end - p - key.size()));
+  text.replace(p, end - p, key + " " + std::to_string(2 * iterations));
+  const LoadedCase more = armstudy::app::load_case_text(text, path);
+  EXPECT_GT(armstudy::app::estimated_solve_seconds(more),
+            1.5 * armstudy::app::estimated_solve_seconds(base));
+}
+
+}  // namespace
