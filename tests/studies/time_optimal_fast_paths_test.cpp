@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include "core/dynamics.hpp"
 #include "core/kinematics.hpp"
@@ -211,6 +212,47 @@ TEST(TimeOptimalFastPaths, SolveExactFailsWithTheReferenceMessage) {
     EXPECT_FALSE(fast.solved);
     EXPECT_FALSE(ref.message.empty());
     EXPECT_EQ(fast.message, ref.message);
+  }
+}
+
+TEST(TimeOptimalFastPaths, PathSpeedDpGivesTheFullRecursionsAnswerBitwise) {
+  // the pruned recursion against core's staged DP with every transition of the bands
+  // evaluated: the same duration, node speeds and transition count, on every problem
+  // (acceleration limits, gravity, a polyline's stop, a joint-space path) and on grids with
+  // few and many levels per node
+  for (const Problem& pb : problems()) {
+    for (const auto& [segments, levels, checks] :
+         std::vector<std::tuple<int, int, int>>{{10, 200, 8}, {20, 400, 4}, {37, 150, 1}}) {
+      const SolverOutput fast = solve_dp(pb, segments, levels, checks, DpState::kPathSpeed);
+      const SolverOutput ref =
+          solve_dp_reference(pb, segments, levels, checks, DpState::kPathSpeed);
+      ASSERT_TRUE(ref.solved) << ref.message;
+      ASSERT_TRUE(fast.solved) << fast.message;
+      EXPECT_EQ(fast.duration, ref.duration);
+      EXPECT_EQ(fast.profile.sd, ref.profile.sd);
+      EXPECT_EQ(fast.evaluations, ref.evaluations);
+      EXPECT_GT(ref.evaluations, 0);
+    }
+  }
+}
+
+TEST(TimeOptimalFastPaths, PathSpeedDpFailsWithTheFullRecursionsMessage) {
+  // too few levels to cross a short segment, and a joint that may not move
+  std::vector<std::pair<Problem, int>> bad;
+  bad.emplace_back(tip_problem(rich_arm(9.81), PathKind::kLine, {{0.55, 0.35}, {0.05, 0.8}},
+                               joint_pair(3, 4), joint_pair(0.5, 0.5), std::nullopt),
+                   40);
+  bad.emplace_back(tip_problem(default_arm(), PathKind::kLine, {{0.3, 0.1}, {-0.1, 0.8}},
+                               joint_pair(0, 4), joint_pair(10, 4), std::nullopt),
+                   40);
+  for (const auto& [pb, levels] : bad) {
+    const SolverOutput fast = solve_dp(pb, 10, levels, 4, DpState::kPathSpeed);
+    const SolverOutput ref = solve_dp_reference(pb, 10, levels, 4, DpState::kPathSpeed);
+    EXPECT_FALSE(ref.solved);
+    EXPECT_FALSE(fast.solved);
+    EXPECT_FALSE(ref.message.empty());
+    EXPECT_EQ(fast.message, ref.message);
+    EXPECT_EQ(fast.evaluations, ref.evaluations);
   }
 }
 

@@ -164,9 +164,131 @@ std::string dp_failure(const Problem& pb, const Discretisation& d, const std::ve
 }
 
 std::string where(const Problem& pb, double s) { return pb.where(s); }
+
+// The limits at the check points of one segment in flat arrays (within_limits' numbers:
+// q'^2, a, b, c, q'' and q' per joint and point), for the path-speed recursion's hot test.
+struct SegmentLimits {
+  int checks = 1, nj = 0;
+  bool acceleration = false;
+  std::vector<double> v;  // per point m, per joint: dq^2, a, b, c, ddq, dq
+  double ds = 0;
+};
+
+// within_limits at every check point of the move x0 -> x1 (path_speed_cost's test, the same
+// operations in the same order)
+bool segment_within_limits(const SegmentLimits& seg, const Limits& lim, const double* vlim2,
+                           double x0, double x1) {
+  const double u = (x1 - x0) / (2 * seg.ds);
+  const double* p = seg.v.data();
+  for (int m = 0; m <= seg.checks; ++m) {
+    const double x = x0 + (x1 - x0) * m / seg.checks;
+    for (int j = 0; j < seg.nj; ++j, p += 6) {
+      if (p[0] * x > vlim2[j]) return false;
+      const double tau = p[1] * u + p[2] * x + p[3];
+      if (tau > lim.torque[j] || tau < -lim.torque[j]) return false;
+      if (seg.acceleration) {
+        const double qdd = p[5] * u + p[4] * x;
+        if (qdd > (*lim.acceleration)[j] || qdd < -(*lim.acceleration)[j]) return false;
+      }
+    }
+  }
+  return true;
+}
+
+// The path-speed DP's Bellman recursion: core::opt::solve_staged_dp's answer with
+// path_speed_cost (the same cost, states and transition count, bitwise) without evaluating
+// most transitions. From state i at node k the successors j of the band are taken from the
+// fastest down: the cost 2 ds / (s'_i + s'_j) does not grow with j (the levels grow with j;
+// rounding is monotonic), so c(i, j) + min(J(k+1, 0..j)) bounds from below every move to a
+// level <= j, and once the bound exceeds the best move found no lower level can beat or
+// tie it. Ties go to the lowest level, as in the ascending scan. `evaluations` counts the
+// band's transitions into states that reach the end, as solve_staged_dp does.
+template <typename Band>
+core::opt::DpSolution path_speed_recursion(const Problem& pb, const Discretisation& d,
+                                           const std::vector<int>& levels,
+                                           const std::vector<std::vector<double>>& sd,
+                                           const std::vector<std::vector<double>>& x, Band&& band) {
+  const int nodes = static_cast<int>(levels.size());
+  const int nj = pb.limits.joints();
+  double vlim2[core::kMaxLinks];
+  for (int j = 0; j < nj; ++j) vlim2[j] = pb.limits.velocity[j] * pb.limits.velocity[j];
+  std::vector<SegmentLimits> seg(nodes - 1);
+  for (int k = 0; k + 1 < nodes; ++k) {
+    SegmentLimits& g = seg[k];
+    g.checks = d.checks;
+    g.nj = nj;
+    g.acceleration = pb.limits.acceleration.has_value();
+    g.ds = d.nodes[k + 1] - d.nodes[k];
+    for (int m = 0; m <= d.checks; ++m) {
+      const JointPoint& jp = d.pts[k][m];
+      for (int j = 0; j < nj; ++j)
+        g.v.insert(g.v.end(),
+                   {jp.dq[j] * jp.dq[j], jp.a[j], jp.b[j], jp.c[j], jp.ddq[j], jp.dq[j]});
+    }
+  }
+  core::opt::DpSolution sol;
+  std::vector<std::vector<double>> value(nodes);
+  std::vector<std::vector<int>> next(nodes);
+  value[nodes - 1].assign(levels[nodes - 1], 0.0);
+  next[nodes - 1].assign(levels[nodes - 1], -1);
+  std::vector<double> floor;   // floor[j] = min J(k+1, 0..j)
+  std::vector<long> reaching;  // reaching[j] = how many of J(k+1, 0..j-1) are finite
+  for (int k = nodes - 2; k >= 0; --k) {
+    value[k].assign(levels[k], kInf);
+    next[k].assign(levels[k], -1);
+    const std::vector<double>& later = value[k + 1];
+    const std::vector<double>& sd1 = sd[k + 1];
+    const std::vector<double>& x1 = x[k + 1];
+    const int n1 = levels[k + 1];
+    floor.resize(n1);
+    reaching.resize(n1 + 1);
+    reaching[0] = 0;
+    for (int j = 0; j < n1; ++j) {
+      floor[j] = j == 0 ? later[0] : std::min(floor[j - 1], later[j]);
+      reaching[j + 1] = reaching[j] + (std::isfinite(later[j]) ? 1 : 0);
+    }
+    const SegmentLimits& g = seg[k];
+    const double two_ds = 2 * g.ds;
+    for (int i = 0; i < levels[k]; ++i) {
+      const std::pair<int, int> range = band(k, i);
+      const int first = range.first < 0 ? 0 : range.first;
+      const int last = range.second > n1 ? n1 : range.second;
+      if (first >= last) continue;
+      sol.evaluations += reaching[last] - reaching[first];
+      const double sd0 = sd[k][i], x0 = x[k][i];
+      double best = kInf;
+      int arg = -1;
+      for (int j = last - 1; j >= first; --j) {
+        if (!std::isfinite(floor[j])) break;  // no state at or below j reaches the end
+        if (!std::isfinite(later[j])) continue;
+        const double v = sd0 + sd1[j];
+        const double c = v <= 0 ? kInf : two_ds / v;
+        if (c + floor[j] > best) break;
+        if (!std::isfinite(c) || !segment_within_limits(g, pb.limits, vlim2, x0, x1[j])) continue;
+        if (c + later[j] <= best) {
+          best = c + later[j];
+          arg = j;
+        }
+      }
+      value[k][i] = best;
+      next[k][i] = arg;
+    }
+  }
+  int s0 = -1;
+  for (int i = 0; i < levels[0]; ++i)
+    if (std::isfinite(value[0][i]) && (s0 < 0 || value[0][i] < value[0][s0])) s0 = i;
+  if (s0 < 0) return sol;
+  sol.cost = value[0][s0];
+  sol.states.resize(nodes);
+  sol.states[0] = s0;
+  for (int k = 0; k + 1 < nodes; ++k) sol.states[k + 1] = next[k][sol.states[k]];
+  return sol;
+}
 }  // namespace
 
-SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, DpState state) {
+namespace {
+SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState state,
+                bool reference) {
   SolverOutput out;
   const Discretisation d = discretise(pb, segments, checks);
   const int n = static_cast<int>(d.nodes.size());
@@ -206,12 +328,15 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
           static_cast<int>(std::upper_bound(next.begin(), next.end(), hi) - next.begin()) + 1;
       return std::pair<int, int>(first, last);
     };
-    const core::opt::DpSolution sol = core::opt::solve_staged_dp(
-        count,
-        [&](int k, int i, int j) {
-          return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
-        },
-        band);
+    const core::opt::DpSolution sol =
+        reference
+            ? core::opt::solve_staged_dp(
+                  count,
+                  [&](int k, int i, int j) {
+                    return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
+                  },
+                  band)
+            : path_speed_recursion(pb, d, count, sd, x, band);
     out.evaluations = sol.evaluations;
     if (!sol.feasible()) {
       out.message =
@@ -319,6 +444,17 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
   out.duration = sol.cost;
   out.solved = true;
   return out;
+}
+
+}  // namespace
+
+SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, DpState state) {
+  return dp(pb, segments, levels, checks, state, false);
+}
+
+SolverOutput solve_dp_reference(const Problem& pb, int segments, int levels, int checks,
+                                DpState state) {
+  return dp(pb, segments, levels, checks, state, true);
 }
 
 SolverOutput solve_complex(const Problem& pb, int segments, int checks,
