@@ -13,10 +13,12 @@
 #include <tuple>
 
 #include "core/dynamics.hpp"
+#include "core/ik2.hpp"
 #include "core/kinematics.hpp"
 #include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solve.hpp"
 #include "studies/time_optimal/solvers.hpp"
+#include "studies/time_optimal/two_link_dynamics.hpp"
 #include "testing/arms.hpp"
 #include "testing/three_link.hpp"
 
@@ -213,6 +215,48 @@ TEST(TimeOptimalFastPaths, SolveExactFailsWithTheReferenceMessage) {
     EXPECT_FALSE(ref.message.empty());
     EXPECT_EQ(fast.message, ref.message);
   }
+}
+
+TEST(TimeOptimalFastPaths, TipPointsAreCoresInverseKinematicsAndThePathDynamicsBitwise) {
+  // TipPointEvaluator takes sin q2 once; core::ik_2link_motion and path_dynamics, which take
+  // it again each, give the same numbers, on both elbows and a rotated base with gravity
+  int points = 0;
+  for (const Problem& pb : problems()) {
+    if (pb.path.joint_space()) continue;
+    for (int configuration : {1, 2}) {
+      const PathGeometry& path = pb.path.tip();
+      const TipPointEvaluator eval(pb.chain, path, configuration);
+      const TwoLinkDynamics dyn = make_two_link_dynamics(pb.chain);
+      const double cb = std::cos(pb.chain.base_angle), sb = std::sin(pb.chain.base_angle);
+      Eigen::Matrix2d rt;
+      rt << cb, sb, -sb, cb;
+      for (int i = 0; i <= 400; ++i) {
+        const double s = path.length() * i / 400;
+        JointPoint jp;
+        const bool ok = eval.at(s, i == 400, &jp);
+        const PathPoint pp = path.at(s, i == 400);
+        const Eigen::Vector2d p = rt * (pp.p - pb.chain.base);
+        const auto st = core::ik_2link_motion(pb.chain.links[0].length, pb.chain.links[1].length, p,
+                                              rt * pp.dp, rt * pp.ddp, configuration);
+        ASSERT_EQ(ok, st.has_value() && std::abs(st->sin_q2) >= 1e-9) << s;
+        if (!ok) continue;
+        ++points;
+        EXPECT_EQ(jp.q[0], st->q[0]);
+        EXPECT_EQ(jp.q[1], st->q[1]);
+        EXPECT_EQ(jp.sin_q2, st->sin_q2);
+        for (int j = 0; j < 2; ++j) {
+          EXPECT_EQ(jp.dq[j], st->qd[j]);
+          EXPECT_EQ(jp.ddq[j], st->qdd[j]);
+        }
+        core::JointVector a, b, c;
+        path_dynamics(dyn, jp.q, jp.dq, jp.ddq, &a, &b, &c);
+        EXPECT_EQ(jp.a, a);
+        EXPECT_EQ(jp.b, b);
+        EXPECT_EQ(jp.c, c);
+      }
+    }
+  }
+  EXPECT_GT(points, 2000);
 }
 
 TEST(TimeOptimalFastPaths, PathSpeedDpGivesTheFullRecursionsAnswerBitwise) {
