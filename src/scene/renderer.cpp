@@ -5,6 +5,8 @@
 #include <cstring>
 #include <optional>
 
+#include <GL/gl.h>
+
 #include "scene/overlay_wrap.hpp"
 #include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
@@ -25,7 +27,9 @@ int font_scale(int height) {
 Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox& view)
     : model_(model), settings_(s) {
   install_mujoco_handlers();
-  context_ = std::make_unique<OsmesaContext>(s.frame.width, s.frame.height);
+  std::optional<PhaseScope> part(std::in_place, "context");
+  context_ = take_context(s.frame.width, s.frame.height);
+  part.emplace("mjr_context");
   mjv_defaultScene(&scene_);
   mjv_defaultScene(&scratch_);
   mjr_defaultContext(&con_);
@@ -35,6 +39,7 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
   mjv_makeScene(model, &scratch_, kMaxGeom);
   mjr_makeContext(model, &con_, font_scale(s.frame.height));
   mjr_setBuffer(mjFB_OFFSCREEN, &con_);
+  part.reset();
   if (con_.currentBuffer != mjFB_OFFSCREEN) {
     mjr_freeContext(&con_);
     mjv_freeScene(&scene_);
@@ -75,9 +80,16 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
 }
 
 Renderer::~Renderer() {
-  mjr_freeContext(&con_);
+  // MuJoCo frees its GL objects in the current context: this renderer's
+  try {
+    context_->make_current();
+  } catch (const SceneError&) {
+    context_.reset();  // not current: nothing of it can be freed or reused
+  }
+  if (context_) mjr_freeContext(&con_);
   mjv_freeScene(&scene_);
   mjv_freeScene(&scratch_);
+  if (context_) give_back_context(std::move(context_));
 }
 
 Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const mjvGeom> extra) {
@@ -112,6 +124,9 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
     mjr_overlay(mjFONT_NORMAL, mjGRID_TOPRIGHT, viewport, top_right.c_str(), nullptr, &con_);
   if (!bottom_left.empty())
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, bottom_left.c_str(), nullptr, &con_);
+  // llvmpipe rasterises when the frame is finished: "finish" is the drawing, "readback" the copy
+  part.emplace("finish");
+  glFinish();
   part.emplace("readback");
   mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
   // OpenGL rows run bottom-up
