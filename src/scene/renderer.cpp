@@ -5,7 +5,9 @@
 #include <cstring>
 #include <optional>
 
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
+#include <GL/glext.h>
 
 #include "scene/overlay_wrap.hpp"
 #include "scene/phase_times.hpp"
@@ -76,7 +78,7 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
   cam_.azimuth = 90;
   cam_.elevation = -90;
   cam_.distance = half_h / std::tan(fovy / 2);
-  pixels_.resize(static_cast<size_t>(s.frame.width) * s.frame.height * 3);
+  pixels_.resize(static_cast<size_t>(s.frame.width) * s.frame.height * 4);
 }
 
 Renderer::~Renderer() {
@@ -128,12 +130,29 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
   part.emplace("finish");
   glFinish();
   part.emplace("readback");
-  mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
-  // OpenGL rows run bottom-up
-  Image img(settings_.frame.width, settings_.frame.height);
-  const size_t row = static_cast<size_t>(settings_.frame.width) * 3;
-  for (int y = 0; y < settings_.frame.height; ++y)
-    std::memcpy(&img.rgb[y * row], &pixels_[(settings_.frame.height - 1 - y) * row], row);
+  const int w = settings_.frame.width, h = settings_.frame.height;
+  Image img(w, h);
+  if (con_.offSamples == 0) {
+    // the colour buffer as it is stored (RGBA: a copy, where RGB converts pixel by pixel),
+    // alpha dropped and rows flipped here (OpenGL rows run bottom-up): mjr_readPixels' bytes
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, con_.offFBO);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels_.data());
+    for (int y = 0; y < h; ++y) {
+      const unsigned char* in = &pixels_[static_cast<size_t>(h - 1 - y) * w * 4];
+      std::uint8_t* out = &img.rgb[static_cast<size_t>(y) * w * 3];
+      for (int x = 0; x < w; ++x, in += 4, out += 3) {
+        out[0] = in[0];
+        out[1] = in[1];
+        out[2] = in[2];
+      }
+    }
+  } else {
+    mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
+    const size_t row = static_cast<size_t>(w) * 3;
+    for (int y = 0; y < h; ++y) std::memcpy(&img.rgb[y * row], &pixels_[(h - 1 - y) * row], row);
+  }
   return img;
 }
 
