@@ -1,6 +1,8 @@
 // Off-screen rendering throughput at 640x480 (frames per second): MuJoCo render + pixel
 // read-back through one reused OSMesa context, with and without PNG encoding (zlib level 1,
-// no filters), with shadows, and the locus (a frame with every earlier pose as extra geoms).
+// no filters), with shadows, and the locus (a frame with every earlier pose as extra geoms);
+// a scene's load in a fresh and in a reused context; the real scene against a minimal one; a
+// 16-frame strip on one core and on two.
 #include <benchmark/benchmark.h>
 
 #include <sched.h>
@@ -12,6 +14,7 @@
 #include "core/planar_chain.hpp"
 #include "scene/frames.hpp"
 #include "scene/model_files.hpp"
+#include "scene/osmesa_context.hpp"
 #include "scene/png_writer.hpp"
 
 namespace armstudy::scene {
@@ -213,6 +216,39 @@ BENCHMARK(BM_Strip16Frames640x480)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);
+
+// Loading a scene and drawing its first frame (SceneRenderer construction + frame), in a
+// fresh OSMesa context (argument 0: every kept context held aside, so take_context makes a new
+// one and llvmpipe compiles MuJoCo's shaders for it) or in one an earlier renderer gave back
+// (argument 1: what every renderer of a run but the first gets)
+void BM_SceneLoadAndFirstFrame640x480(benchmark::State& state) {
+  const bool reuse = state.range(0) == 1;
+  const ArmScene scene = default_tray_scene();
+  const RenderSettings rs;
+  for (auto _ : state) {
+    std::vector<std::unique_ptr<OsmesaContext>> held;
+    if (!reuse) {
+      state.PauseTiming();
+      for (int k = 0; k < 8; ++k) held.push_back(take_context(rs.frame.width, rs.frame.height));
+      OsmesaContext::release_current();
+      state.ResumeTiming();
+    }
+    {
+      SceneRenderer sr(scene, "bench", rs);
+      benchmark::DoNotOptimize(sr.frame(pose(0.1), {"t = 0.100 s", "", ""}).rgb.data());
+    }
+    if (!reuse) {
+      state.PauseTiming();
+      for (auto& c : held) give_back_context(std::move(c));
+      state.ResumeTiming();
+    }
+  }
+}
+BENCHMARK(BM_SceneLoadAndFirstFrame640x480)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK(BM_RenderReadback640x480)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_RenderReadbackPng640x480)->Unit(benchmark::kMillisecond)->UseRealTime();
