@@ -23,39 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// the image at w x h px, each pixel the mean of the block of source pixels it covers
-// (a box filter; block bounds x * in.width / w .. (x + 1) * in.width / w, at least one
-// pixel), the mean rounded down
-Image downscale(const Image& in, int w, int h) {
-  Image out(w, h);
-  std::vector<int> xs0(static_cast<size_t>(w)), xs1(static_cast<size_t>(w));
-  for (int x = 0; x < w; ++x) {
-    xs0[x] = x * in.width / w;
-    xs1[x] = std::max(xs0[x] + 1, (x + 1) * in.width / w);
-  }
-  const size_t stride = static_cast<size_t>(in.width) * 3;
-  for (int y = 0; y < h; ++y) {
-    const int y0 = y * in.height / h, y1 = std::max(y0 + 1, (y + 1) * in.height / h);
-    std::uint8_t* o = &out.rgb[static_cast<size_t>(y) * w * 3];
-    for (int x = 0; x < w; ++x, o += 3) {
-      unsigned r = 0, g = 0, b = 0;
-      for (int yy = y0; yy < y1; ++yy) {
-        const std::uint8_t* p = &in.rgb[yy * stride + static_cast<size_t>(xs0[x]) * 3];
-        for (int xx = xs0[x]; xx < xs1[x]; ++xx, p += 3) {
-          r += p[0];
-          g += p[1];
-          b += p[2];
-        }
-      }
-      const unsigned n = static_cast<unsigned>((y1 - y0) * (xs1[x] - xs0[x]));
-      o[0] = static_cast<std::uint8_t>(r / n);
-      o[1] = static_cast<std::uint8_t>(g / n);
-      o[2] = static_cast<std::uint8_t>(b / n);
-    }
-  }
-  return out;
-}
-
 std::string quote(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -79,7 +46,9 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
       " -threads 1 -map_metadata -1 -fflags +bitexact -flags:v +bitexact"
       " -movflags +faststart " +
       quote(tmp.string()) + " 2>&1";
-  FILE* p = ::popen(cmd.c_str(), "w");
+  // close-on-exec ("e"): a process another thread starts meanwhile (Chromium, another case's
+  // ffmpeg) must not inherit this pipe's end, or ffmpeg waits for that process to end
+  FILE* p = ::popen(cmd.c_str(), "we");
   if (!p) {
     *why = "cannot start ffmpeg";
     return false;

@@ -40,8 +40,11 @@ class SceneRenderer {
   /// on ONE set of LP_NUM_THREADS threads (the screen's, one per core by default; the
   /// scenes of all contexts queue for it), so one thread's strip already rasterises on every
   /// core, and twins only add their model and context: 2 threads measured no faster
-  /// (slower with LP_NUM_THREADS=1, where the whole process has one rasteriser thread);
-  /// tests/bench/scene_bench.cpp BM_Strip16Frames640x480 measures 1 against 2.
+  /// (slower with LP_NUM_THREADS=1, where the whole process has one rasteriser thread).
+  /// What stays on the drawing thread (scene update, vertex work, labels, read-back, tiling,
+  /// PNG) is ~40% of a one-core strip, which bounds both cores' gain: measured 1.27x one
+  /// core's frames per second (tests/bench/scene_bench.cpp BM_Strip16Frames640x480, the
+  /// process pinned to 1 and to 2 cores in one run).
   int strip_threads() const { return strip_threads_; }
   void set_strip_threads(int threads);
 

@@ -40,6 +40,11 @@ void blit(const Image& src, Image* dst, int x, int y);
 /// outer margin of `gap` px, on `background`. @throws SceneError if sizes differ.
 Image tile(const std::vector<Image>& tiles, int columns, int gap, Rgb background);
 
+/// `image` at w x h px (not larger than it), each pixel the mean of the block of source pixels
+/// it covers, rounded down (a box filter; block columns x * image.width / w to
+/// (x + 1) * image.width / w, at least one pixel, rows likewise).
+Image downscale(const Image& image, int w, int h);
+
 /// Pixel statistics of an image: mean and standard deviation of the luminance (0-255)
 /// and the fraction of pixels that differ from the most common colour.
 struct PixelStats {

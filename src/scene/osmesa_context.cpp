@@ -49,6 +49,45 @@ GlInfo gl_info() {
   return g_info;
 }
 
+void OsmesaContext::release_current() {
+  OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+}
+
+namespace {
+// contexts given back, kept for the process's life (never destroyed at exit, when Mesa may
+// already be gone)
+constexpr size_t kKeptContexts = 4;
+std::mutex g_pool_mutex;
+std::vector<std::unique_ptr<OsmesaContext>>& pool() {
+  static auto* p = new std::vector<std::unique_ptr<OsmesaContext>>();
+  return *p;
+}
+}  // namespace
+
+std::unique_ptr<OsmesaContext> take_context(int width, int height) {
+  std::unique_ptr<OsmesaContext> c;
+  {
+    std::lock_guard<std::mutex> lock(g_pool_mutex);
+    auto& p = pool();
+    for (auto it = p.begin(); it != p.end(); ++it)
+      if ((*it)->width() == width && (*it)->height() == height) {
+        c = std::move(*it);
+        p.erase(it);
+        break;
+      }
+  }
+  if (!c) return std::make_unique<OsmesaContext>(width, height);
+  c->make_current();
+  return c;
+}
+
+void give_back_context(std::unique_ptr<OsmesaContext> context) {
+  if (!context) return;
+  OsmesaContext::release_current();
+  std::lock_guard<std::mutex> lock(g_pool_mutex);
+  if (pool().size() < kKeptContexts) pool().push_back(std::move(context));
+}
+
 void OsmesaContext::make_current() {
   if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(ctx_), buffer_.data(), GL_UNSIGNED_BYTE, width_,
                          height_))

@@ -2,6 +2,7 @@
 /// A headless OpenGL context from OSMesa (llvmpipe), made current on the calling thread.
 /// MuJoCo renders into its own off-screen framebuffer inside this context.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ class OsmesaContext {
 
   /// Makes this context current on the calling thread again. @throws SceneError.
   void make_current();
+  /// Makes no context current on the calling thread (so that another thread may take it).
+  static void release_current();
+  int width() const { return width_; }
+  int height() const { return height_; }
   /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   const std::string& renderer() const { return renderer_; }
   /// GL_VERSION, with the Mesa version, e.g. "4.5 (Compatibility Profile) Mesa 22.3.6".
@@ -34,6 +39,18 @@ class OsmesaContext {
   std::string renderer_;
   std::string version_;
 };
+
+/// A context of width x height px, current on the calling thread: one a renderer gave back
+/// (give_back_context) if there is one of that size, else a new one. A context keeps what
+/// llvmpipe compiled for it (MuJoCo's fixed-function shaders, ~70 ms per new context on
+/// mjr_makeContext), so a reused one makes the next renderer's MuJoCo context in ~1 ms.
+/// The caller must leave no MuJoCo object in it when giving it back (mjr_freeContext).
+/// Thread-safe. @throws SceneError as OsmesaContext.
+std::unique_ptr<OsmesaContext> take_context(int width, int height);
+
+/// Gives `context` back for take_context (it stops being current on this thread); at most a
+/// few are kept, the others destroyed. Thread-safe.
+void give_back_context(std::unique_ptr<OsmesaContext> context);
 
 /// GL_RENDERER and GL_VERSION of the contexts this process created (for provenance).
 struct GlInfo {

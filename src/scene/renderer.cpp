@@ -5,6 +5,10 @@
 #include <cstring>
 #include <optional>
 
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
 #include "scene/overlay_wrap.hpp"
 #include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
@@ -25,7 +29,9 @@ int font_scale(int height) {
 Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox& view)
     : model_(model), settings_(s) {
   install_mujoco_handlers();
-  context_ = std::make_unique<OsmesaContext>(s.frame.width, s.frame.height);
+  std::optional<PhaseScope> part(std::in_place, "context");
+  context_ = take_context(s.frame.width, s.frame.height);
+  part.emplace("mjr_context");
   mjv_defaultScene(&scene_);
   mjv_defaultScene(&scratch_);
   mjr_defaultContext(&con_);
@@ -35,6 +41,7 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
   mjv_makeScene(model, &scratch_, kMaxGeom);
   mjr_makeContext(model, &con_, font_scale(s.frame.height));
   mjr_setBuffer(mjFB_OFFSCREEN, &con_);
+  part.reset();
   if (con_.currentBuffer != mjFB_OFFSCREEN) {
     mjr_freeContext(&con_);
     mjv_freeScene(&scene_);
@@ -71,13 +78,20 @@ Renderer::Renderer(const mjModel* model, const RenderSettings& s, const ViewBox&
   cam_.azimuth = 90;
   cam_.elevation = -90;
   cam_.distance = half_h / std::tan(fovy / 2);
-  pixels_.resize(static_cast<size_t>(s.frame.width) * s.frame.height * 3);
+  pixels_.resize(static_cast<size_t>(s.frame.width) * s.frame.height * 4);
 }
 
 Renderer::~Renderer() {
-  mjr_freeContext(&con_);
+  // MuJoCo frees its GL objects in the current context: this renderer's
+  try {
+    context_->make_current();
+  } catch (const SceneError&) {
+    context_.reset();  // not current: nothing of it can be freed or reused
+  }
+  if (context_) mjr_freeContext(&con_);
   mjv_freeScene(&scene_);
   mjv_freeScene(&scratch_);
+  if (context_) give_back_context(std::move(context_));
 }
 
 Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const mjvGeom> extra) {
@@ -112,13 +126,33 @@ Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const 
     mjr_overlay(mjFONT_NORMAL, mjGRID_TOPRIGHT, viewport, top_right.c_str(), nullptr, &con_);
   if (!bottom_left.empty())
     mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, bottom_left.c_str(), nullptr, &con_);
+  // llvmpipe rasterises when the frame is finished: "finish" is the drawing, "readback" the copy
+  part.emplace("finish");
+  glFinish();
   part.emplace("readback");
-  mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
-  // OpenGL rows run bottom-up
-  Image img(settings_.frame.width, settings_.frame.height);
-  const size_t row = static_cast<size_t>(settings_.frame.width) * 3;
-  for (int y = 0; y < settings_.frame.height; ++y)
-    std::memcpy(&img.rgb[y * row], &pixels_[(settings_.frame.height - 1 - y) * row], row);
+  const int w = settings_.frame.width, h = settings_.frame.height;
+  Image img(w, h);
+  if (con_.offSamples == 0) {
+    // the colour buffer as it is stored (RGBA: a copy, where RGB converts pixel by pixel),
+    // alpha dropped and rows flipped here (OpenGL rows run bottom-up): mjr_readPixels' bytes
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, con_.offFBO);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels_.data());
+    for (int y = 0; y < h; ++y) {
+      const unsigned char* in = &pixels_[static_cast<size_t>(h - 1 - y) * w * 4];
+      std::uint8_t* out = &img.rgb[static_cast<size_t>(y) * w * 3];
+      for (int x = 0; x < w; ++x, in += 4, out += 3) {
+        out[0] = in[0];
+        out[1] = in[1];
+        out[2] = in[2];
+      }
+    }
+  } else {
+    mjr_readPixels(pixels_.data(), nullptr, viewport, &con_);
+    const size_t row = static_cast<size_t>(w) * 3;
+    for (int y = 0; y < h; ++y) std::memcpy(&img.rgb[y * row], &pixels_[(h - 1 - y) * row], row);
+  }
   return img;
 }
 

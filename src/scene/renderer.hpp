@@ -1,6 +1,7 @@
 #pragma once
-/// Off-screen rendering of a MuJoCo model: one OSMesa context, one mjvScene and one
-/// mjrContext, reused for every frame of a run (pitfalls found here: the off-screen size
+/// Off-screen rendering of a MuJoCo model: one OSMesa context (taken from those earlier
+/// renderers gave back, osmesa_context.hpp), one mjvScene and one mjrContext, reused for
+/// every frame of a run (pitfalls found here: the off-screen size
 /// comes from the model's <global offwidth offheight>, checked after mjr_setBuffer; no
 /// shadows, reflections or skybox unless asked; offsamples set explicitly in the MJCF).
 

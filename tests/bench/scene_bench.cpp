@@ -1,13 +1,20 @@
 // Off-screen rendering throughput at 640x480 (frames per second): MuJoCo render + pixel
 // read-back through one reused OSMesa context, with and without PNG encoding (zlib level 1,
-// no filters), with shadows, and the locus (a frame with every earlier pose as extra geoms).
+// no filters), with shadows, and the locus (a frame with every earlier pose as extra geoms);
+// a scene's load in a fresh and in a reused context; the real scene against a minimal one; a
+// 16-frame strip on one core and on two.
 #include <benchmark/benchmark.h>
 
+#include <sched.h>
+
 #include <cmath>
+#include <filesystem>
+#include <string>
 
 #include "core/planar_chain.hpp"
 #include "scene/frames.hpp"
 #include "scene/model_files.hpp"
+#include "scene/osmesa_context.hpp"
 #include "scene/png_writer.hpp"
 
 namespace armstudy::scene {
@@ -146,16 +153,54 @@ BENCHMARK(BM_RealScene640x480)
     ->UseRealTime()
     ->MinTime(1.0);
 
+// Every thread of this process (llvmpipe's rasteriser threads included) on the first
+// `cores` CPUs it may use, for the scope's life; then back on all of them.
+class PinnedToCores {
+ public:
+  explicit PinnedToCores(int cores) {
+    sched_getaffinity(0, sizeof all_, &all_);
+    cpu_set_t some;
+    CPU_ZERO(&some);
+    for (int c = 0, n = 0; c < CPU_SETSIZE && n < cores; ++c)
+      if (CPU_ISSET(c, &all_)) {
+        CPU_SET(c, &some);
+        ++n;
+      }
+    set(some);
+  }
+  ~PinnedToCores() { set(all_); }
+  static int available() {
+    cpu_set_t s;
+    sched_getaffinity(0, sizeof s, &s);
+    return CPU_COUNT(&s);
+  }
+
+ private:
+  static void set(const cpu_set_t& mask) {
+    for (const auto& e : std::filesystem::directory_iterator("/proc/self/task"))
+      sched_setaffinity(std::stoi(e.path().filename().string()), sizeof mask, &mask);
+  }
+  cpu_set_t all_;
+};
+
 // a 16-frame strip (SceneRenderer::strip, PNG of the tiled strip included, compressed in
-// bands on the second argument's threads) on 1 or 2 threads (first argument); frames_per_s counts
-// the strip's frames. llvmpipe's rasteriser threads (LP_NUM_THREADS, read once per process; one per
-// core by default) are shared by every context of the process: LP_NUM_THREADS=0 gives one
-// core's rate (all work on the calling thread), the default both cores' from one thread
+// bands on the second argument's threads) on 1 or 2 drawing threads (first argument), the whole
+// process pinned to the third argument's cores (1: one core's rate; 2: both); frames_per_s
+// counts the strip's frames. llvmpipe rasterises every context of a process on one set of
+// LP_NUM_THREADS threads (read once per process; one per core by default), so one drawing
+// thread's strip already rasterises on both cores: {1, 2, 2} against {1, 1, 1} is the strip's
+// two-core speed-up, in one run
 void BM_Strip16Frames640x480(benchmark::State& state) {
+  const int cores = static_cast<int>(state.range(2));
+  if (PinnedToCores::available() < cores) {
+    state.SkipWithError("fewer cores than asked");
+    return;
+  }
   SceneRenderer sr(default_tray_scene(), "bench", RenderSettings{});
   sr.set_strip_threads(static_cast<int>(state.range(0)));
   std::vector<PoseSample> poses;
   for (int k = 0; k < 16; ++k) poses.push_back(pose(0.05 * k));
+  PinnedToCores pin(cores);
   benchmark::DoNotOptimize(sr.strip(poses, "warm-up", 3).rgb.data());  // twins made here
   const int png_threads = static_cast<int>(state.range(1));
   for (auto _ : state)
@@ -164,12 +209,46 @@ void BM_Strip16Frames640x480(benchmark::State& state) {
       16.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Strip16Frames640x480)
-    ->Args({1, 1})
-    ->Args({1, 2})
-    ->Args({2, 2})
+    ->Args({1, 1, 1})
+    ->Args({1, 1, 2})
+    ->Args({1, 2, 2})
+    ->Args({2, 2, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);
+
+// Loading a scene and drawing its first frame (SceneRenderer construction + frame), in a
+// fresh OSMesa context (argument 0: every kept context held aside, so take_context makes a new
+// one and llvmpipe compiles MuJoCo's shaders for it) or in one an earlier renderer gave back
+// (argument 1: what every renderer of a run but the first gets)
+void BM_SceneLoadAndFirstFrame640x480(benchmark::State& state) {
+  const bool reuse = state.range(0) == 1;
+  const ArmScene scene = default_tray_scene();
+  const RenderSettings rs;
+  for (auto _ : state) {
+    std::vector<std::unique_ptr<OsmesaContext>> held;
+    if (!reuse) {
+      state.PauseTiming();
+      for (int k = 0; k < 8; ++k) held.push_back(take_context(rs.frame.width, rs.frame.height));
+      OsmesaContext::release_current();
+      state.ResumeTiming();
+    }
+    {
+      SceneRenderer sr(scene, "bench", rs);
+      benchmark::DoNotOptimize(sr.frame(pose(0.1), {"t = 0.100 s", "", ""}).rgb.data());
+    }
+    if (!reuse) {
+      state.PauseTiming();
+      for (auto& c : held) give_back_context(std::move(c));
+      state.ResumeTiming();
+    }
+  }
+}
+BENCHMARK(BM_SceneLoadAndFirstFrame640x480)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK(BM_RenderReadback640x480)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_RenderReadbackPng640x480)->Unit(benchmark::kMillisecond)->UseRealTime();

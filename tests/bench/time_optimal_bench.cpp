@@ -1,8 +1,13 @@
 // Speed of the time-optimal solvers on the bundled source case (time-optimal-source.yaml:
 // the default arm on a 0.81 m line): the exact reachability solver on 1000 grid points
-// (target < 5 ms), DP with N = 10 and 200 velocity levels (target < 50 ms), Box's Complex
-// method on the same 10 segments, and the whole study with its dense re-checks.
+// (target < 5 ms), DP with N = 10 and 200 velocity levels (target < 50 ms), the rows of the
+// DP convergence table (N = 50, 100, 200 with 20 N levels) by solve_dp and by the plain
+// recursion it replaces (solve_dp_reference, the same answers), the whole table as the study
+// runs it (two threads: wall time), Box's Complex method on the same 10 segments, and the
+// whole study with its dense re-checks.
 #include <benchmark/benchmark.h>
+
+#include <algorithm>
 
 #include "scene/study_replays.hpp"
 #include "studies/time_optimal/profile.hpp"
@@ -47,6 +52,52 @@ void BM_TimeOptimalDp(benchmark::State& state) {
   state.counters["transitions"] = static_cast<double>(evaluations);
 }
 BENCHMARK(BM_TimeOptimalDp)->Args({10, 200})->Args({50, 1000})->Unit(benchmark::kMillisecond);
+
+// one row of the study's DP convergence table on the source case, as solve() runs it:
+// N segments, levels growing as 20 N (200 x N / 10), max(2, 80 / N) checks per segment
+void BM_TimeOptimalDpTableRow(benchmark::State& state) {
+  const Spec spec = source_spec();
+  const Problem pb = problem(spec);
+  const int segments = static_cast<int>(state.range(0));
+  const int levels = 20 * segments, checks = std::max(2, 80 / segments);
+  long evaluations = 0;
+  for (auto _ : state) {
+    const SolverOutput o = solve_dp(pb, segments, levels, checks, DpState::kPathSpeed);
+    evaluations = o.evaluations;
+    benchmark::DoNotOptimize(o.duration);
+  }
+  state.counters["transitions"] = static_cast<double>(evaluations);
+}
+BENCHMARK(BM_TimeOptimalDpTableRow)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMillisecond);
+
+// the same rows by the plain recursion (solve_dp_reference: core's staged DP, the cost of
+// every transition in the bands evaluated), the same answers: the pruning's gain in one run
+void BM_TimeOptimalDpTableRowReference(benchmark::State& state) {
+  const Spec spec = source_spec();
+  const Problem pb = problem(spec);
+  const int segments = static_cast<int>(state.range(0));
+  const int levels = 20 * segments, checks = std::max(2, 80 / segments);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        solve_dp_reference(pb, segments, levels, checks, DpState::kPathSpeed).duration);
+}
+BENCHMARK(BM_TimeOptimalDpTableRowReference)
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(200)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+// the study with its DP convergence table (N = 10, 20, 50, 100, 200; rows on two threads)
+// and nothing else but the exact solve it compares with: DP states and Complex off
+void BM_TimeOptimalDpTable(benchmark::State& state) {
+  Spec spec = source_spec();
+  spec.dp.states = {};
+  spec.complex.enabled = false;
+  spec.dp.convergence_segments = {10, 20, 50, 100, 200};
+  for (auto _ : state) benchmark::DoNotOptimize(solve(spec).status);
+}
+BENCHMARK(BM_TimeOptimalDpTable)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_TimeOptimalDpJoint1(benchmark::State& state) {
   const Spec spec = source_spec();

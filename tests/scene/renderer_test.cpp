@@ -14,6 +14,8 @@
 #include "core/motion_program.hpp"
 #include "scene/arm_scene.hpp"
 #include "scene/frames.hpp"
+#include "scene/model_files.hpp"
+#include "scene/osmesa_context.hpp"
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
 #include "testing/arms.hpp"
@@ -111,6 +113,38 @@ TEST(Renderer, SameCaseRendersToByteIdenticalPngs) {
     } else {
       EXPECT_TRUE(png == first) << "the second rendering differs";
     }
+  }
+}
+
+// a renderer in a context another scene drew in before (take_context reuses it, with what
+// llvmpipe compiled for it) draws the pixels of a renderer in a fresh context, byte for byte,
+// shadows on and off; in turn that scene again in the reused context
+TEST(Renderer, ReusedContextDrawsTheFramesOfAFreshOne) {
+  const LineMotion m;
+  const PoseSample pose = m.at(0.4);
+  for (const bool shadows : {false, true}) {
+    RenderSettings rs;
+    rs.shadows = shadows;
+    // hold every kept context so that the first renderer gets a fresh one
+    std::vector<std::unique_ptr<OsmesaContext>> held;
+    for (int k = 0; k < 8; ++k) held.push_back(take_context(rs.frame.width, rs.frame.height));
+    OsmesaContext::release_current();
+    Image fresh;
+    {
+      SceneRenderer sr(line_scene(m), "line", rs);
+      fresh = sr.frame(pose, {"t = 0.400 s", "right", "bottom"});
+    }
+    for (auto& c : held) give_back_context(std::move(c));
+    // another scene (the tray arm, other textures and lights) in the kept contexts
+    for (int k = 0; k < 3; ++k) {
+      SceneRenderer other(default_tray_scene(), "tray", rs);
+      PoseSample p;
+      p.q = core::JointVector::Constant(other.map().num_chain(), 0.3);
+      EXPECT_GT(pixel_stats(other.frame(p, {"tray", "", ""})).stddev, 5.0);
+    }
+    SceneRenderer again(line_scene(m), "line", rs);
+    const Image reused = again.frame(pose, {"t = 0.400 s", "right", "bottom"});
+    EXPECT_TRUE(reused.rgb == fresh.rgb) << "shadows " << shadows;
   }
 }
 

@@ -10,12 +10,15 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include "core/dynamics.hpp"
+#include "core/ik2.hpp"
 #include "core/kinematics.hpp"
 #include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solve.hpp"
 #include "studies/time_optimal/solvers.hpp"
+#include "studies/time_optimal/two_link_dynamics.hpp"
 #include "testing/arms.hpp"
 #include "testing/three_link.hpp"
 
@@ -211,6 +214,89 @@ TEST(TimeOptimalFastPaths, SolveExactFailsWithTheReferenceMessage) {
     EXPECT_FALSE(fast.solved);
     EXPECT_FALSE(ref.message.empty());
     EXPECT_EQ(fast.message, ref.message);
+  }
+}
+
+TEST(TimeOptimalFastPaths, TipPointsAreCoresInverseKinematicsAndThePathDynamicsBitwise) {
+  // TipPointEvaluator takes sin q2 once; core::ik_2link_motion and path_dynamics, which take
+  // it again each, give the same numbers, on both elbows and a rotated base with gravity
+  int points = 0;
+  for (const Problem& pb : problems()) {
+    if (pb.path.joint_space()) continue;
+    for (int configuration : {1, 2}) {
+      const PathGeometry& path = pb.path.tip();
+      const TipPointEvaluator eval(pb.chain, path, configuration);
+      const TwoLinkDynamics dyn = make_two_link_dynamics(pb.chain);
+      const double cb = std::cos(pb.chain.base_angle), sb = std::sin(pb.chain.base_angle);
+      Eigen::Matrix2d rt;
+      rt << cb, sb, -sb, cb;
+      for (int i = 0; i <= 400; ++i) {
+        const double s = path.length() * i / 400;
+        JointPoint jp;
+        const bool ok = eval.at(s, i == 400, &jp);
+        const PathPoint pp = path.at(s, i == 400);
+        const Eigen::Vector2d p = rt * (pp.p - pb.chain.base);
+        const auto st = core::ik_2link_motion(pb.chain.links[0].length, pb.chain.links[1].length, p,
+                                              rt * pp.dp, rt * pp.ddp, configuration);
+        ASSERT_EQ(ok, st.has_value() && std::abs(st->sin_q2) >= 1e-9) << s;
+        if (!ok) continue;
+        ++points;
+        EXPECT_EQ(jp.q[0], st->q[0]);
+        EXPECT_EQ(jp.q[1], st->q[1]);
+        EXPECT_EQ(jp.sin_q2, st->sin_q2);
+        for (int j = 0; j < 2; ++j) {
+          EXPECT_EQ(jp.dq[j], st->qd[j]);
+          EXPECT_EQ(jp.ddq[j], st->qdd[j]);
+        }
+        core::JointVector a, b, c;
+        path_dynamics(dyn, jp.q, jp.dq, jp.ddq, &a, &b, &c);
+        EXPECT_EQ(jp.a, a);
+        EXPECT_EQ(jp.b, b);
+        EXPECT_EQ(jp.c, c);
+      }
+    }
+  }
+  EXPECT_GT(points, 2000);
+}
+
+TEST(TimeOptimalFastPaths, PathSpeedDpGivesTheFullRecursionsAnswerBitwise) {
+  // the pruned recursion against core's staged DP with every transition of the bands
+  // evaluated: the same duration, node speeds and transition count, on every problem
+  // (acceleration limits, gravity, a polyline's stop, a joint-space path) and on grids with
+  // few and many levels per node
+  for (const Problem& pb : problems()) {
+    for (const auto& [segments, levels, checks] :
+         std::vector<std::tuple<int, int, int>>{{10, 200, 8}, {20, 400, 4}, {37, 150, 1}}) {
+      const SolverOutput fast = solve_dp(pb, segments, levels, checks, DpState::kPathSpeed);
+      const SolverOutput ref =
+          solve_dp_reference(pb, segments, levels, checks, DpState::kPathSpeed);
+      ASSERT_TRUE(ref.solved) << ref.message;
+      ASSERT_TRUE(fast.solved) << fast.message;
+      EXPECT_EQ(fast.duration, ref.duration);
+      EXPECT_EQ(fast.profile.sd, ref.profile.sd);
+      EXPECT_EQ(fast.evaluations, ref.evaluations);
+      EXPECT_GT(ref.evaluations, 0);
+    }
+  }
+}
+
+TEST(TimeOptimalFastPaths, PathSpeedDpFailsWithTheFullRecursionsMessage) {
+  // too few levels to cross a short segment, and a joint that may not move
+  std::vector<std::pair<Problem, int>> bad;
+  bad.emplace_back(tip_problem(rich_arm(9.81), PathKind::kLine, {{0.55, 0.35}, {0.05, 0.8}},
+                               joint_pair(3, 4), joint_pair(0.5, 0.5), std::nullopt),
+                   40);
+  bad.emplace_back(tip_problem(default_arm(), PathKind::kLine, {{0.3, 0.1}, {-0.1, 0.8}},
+                               joint_pair(0, 4), joint_pair(10, 4), std::nullopt),
+                   40);
+  for (const auto& [pb, levels] : bad) {
+    const SolverOutput fast = solve_dp(pb, 10, levels, 4, DpState::kPathSpeed);
+    const SolverOutput ref = solve_dp_reference(pb, 10, levels, 4, DpState::kPathSpeed);
+    EXPECT_FALSE(ref.solved);
+    EXPECT_FALSE(fast.solved);
+    EXPECT_FALSE(ref.message.empty());
+    EXPECT_EQ(fast.message, ref.message);
+    EXPECT_EQ(fast.evaluations, ref.evaluations);
   }
 }
 

@@ -17,19 +17,21 @@ bool better_profile(const ProfileEvaluation& a, const ProfileEvaluation& b) {
 
 std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
                                                  const std::vector<VelocityProfile>& profiles,
-                                                 int threads, double backoff) {
+                                                 int threads, double backoff,
+                                                 bool stop_when_infeasible) {
   std::vector<ProfileEvaluation> out(profiles.size());
   const int n = static_cast<int>(profiles.size());
   const int nt = std::clamp(threads, 1, std::max(1, n));
   if (nt == 1) {
-    for (int i = 0; i < n; ++i) out[i] = simulate_profile(setup, profiles[i], nullptr, backoff);
+    for (int i = 0; i < n; ++i)
+      out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
     return out;
   }
   // work stealing over an atomic index; each slot written by exactly one thread
   std::atomic<int> next{0};
   auto worker = [&] {
     for (int i = next++; i < n; i = next++)
-      out[i] = simulate_profile(setup, profiles[i], nullptr, backoff);
+      out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < nt; ++t) pool.emplace_back(worker);
@@ -76,7 +78,10 @@ IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
           }
           project_displacement(c, delta);
         }
-        const auto evs = evaluate_profiles(setup, cands, r.threads, s.backoff);
+        // a feasible best is replaced by a feasible candidate only (better_profile), so an
+        // infeasible candidate's simulation may stop at its first certain violation
+        const auto evs = evaluate_profiles(setup, cands, r.threads, s.backoff,
+                                           s.stop_infeasible_candidates && r.evaluation.feasible);
         r.evaluations += static_cast<long>(evs.size());
         int best = -1;
         for (size_t j = 0; j < evs.size(); ++j)

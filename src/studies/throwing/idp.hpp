@@ -15,7 +15,10 @@
 /// hat-shaped change of the rate, was tried first: it stalled at a 10 % saving on the
 /// default case, where shifting the tail reaches about 30 %.) Candidates are drawn in one
 /// fixed-seed sequence and evaluated on
-/// `threads` threads, so the answer does not depend on the thread count.
+/// `threads` threads, so the answer does not depend on the thread count. While the best is
+/// feasible, only a feasible candidate can replace it, so a candidate's simulation stops at
+/// its first certain violation (simulate_profile's stop_when_infeasible): the same choices as
+/// full simulations, in less time; such a candidate still counts as an evaluation.
 
 #include <cmath>
 #include <vector>
@@ -53,6 +56,9 @@ struct IdpSettings {
   int seeds = 4;                        ///< runs with seeds seed, seed + 1, ...
   double backoff = 0.02;                ///< constraint back-off (constraint_values)
   int threads = 2;                      ///< evaluation threads (>= 1)
+  /// false: every candidate is simulated to the end (the reference of the early stop, which
+  /// makes the same choices; see run_idp)
+  bool stop_infeasible_candidates = true;
 };
 
 /// One IDP iteration's outcome.
@@ -86,10 +92,11 @@ struct IdpResult {
 bool better_profile(const ProfileEvaluation& a, const ProfileEvaluation& b);
 
 /// Evaluates `profiles` on `threads` threads (results in input order), classified with
-/// `backoff`.
+/// `backoff`; stop_when_infeasible as in simulate_profile.
 std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
                                                  const std::vector<VelocityProfile>& profiles,
-                                                 int threads, double backoff = 0.0);
+                                                 int threads, double backoff = 0.0,
+                                                 bool stop_when_infeasible = false);
 
 /// Runs IDP from `initial` (which must already meet the displacement `delta`, rad) with
 /// settings.seed. `progress` receives the fraction of the pass budget done.

@@ -144,19 +144,31 @@ const char* constraint_name(ConstraintKind k) {
   return "?";
 }
 
+namespace {
+
+// the 6 constraint values of stage k, in the order of ConstraintKind (constraint_values)
+void stage_constraint_values(const ThrowSetup& s, const ProfileEvaluation& e, int k, double backoff,
+                             double g[6]) {
+  const double weight = s.ball_mass * s.chain.gravity;
+  g[0] = (s.contact_margin - e.stage_normal[k]) / weight + backoff;
+  g[1] = e.stage_friction[k] / weight + backoff;
+  g[2] = (e.stage_theta4[k] - s.half_width) / s.half_width + backoff;
+  g[3] = (e.stage_voltage[k] - s.voltage_max) / s.voltage_max + backoff;
+  g[4] = (e.stage_current[k] - s.current_max) / s.current_max + backoff;
+  g[5] = (e.stage_power[k] - s.power_max) / s.power_max + backoff;
+}
+
+}  // namespace
+
 std::vector<double> constraint_values(const ThrowSetup& s, const ProfileEvaluation& e,
                                       double backoff) {
   const int P = static_cast<int>(e.stage_theta4.size());
   std::vector<double> g(6 * P + 1, 1e3);
   if (!e.finite) return g;
-  const double weight = s.ball_mass * s.chain.gravity;
   for (int k = 0; k < P; ++k) {
-    g[k] = (s.contact_margin - e.stage_normal[k]) / weight + backoff;
-    g[P + k] = e.stage_friction[k] / weight + backoff;
-    g[2 * P + k] = (e.stage_theta4[k] - s.half_width) / s.half_width + backoff;
-    g[3 * P + k] = (e.stage_voltage[k] - s.voltage_max) / s.voltage_max + backoff;
-    g[4 * P + k] = (e.stage_current[k] - s.current_max) / s.current_max + backoff;
-    g[5 * P + k] = (e.stage_power[k] - s.power_max) / s.power_max + backoff;
+    double gk[6];
+    stage_constraint_values(s, e, k, backoff, gk);
+    for (int c = 0; c < 6; ++c) g[c * P + k] = gk[c];
   }
   g[6 * P] =
       (std::abs(e.theta3_final - s.theta3_release) - s.release_tolerance) / s.release_tolerance +
@@ -183,7 +195,8 @@ void classify(const ThrowSetup& s, ProfileEvaluation& e, double backoff) {
 }
 
 ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
-                                   std::vector<ThrowSample>* samples, double backoff) {
+                                   std::vector<ThrowSample>* samples, double backoff,
+                                   bool stop_when_infeasible) {
   const Planner planner(setup, profile);
   const int P = profile.stages();
   const double h = profile.stage_length();
@@ -214,8 +227,16 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
         std::max(ev.stage_friction[stage], Ft - setup.friction_coefficient * N);
     ev.max_friction_ratio = std::max(ev.max_friction_ratio, N > 0 ? Ft / N : INFINITY);
   };
+  // is a constraint of the current stage already certainly violated?
+  auto violated = [&] {
+    double g[6];
+    stage_constraint_values(setup, ev, stage, backoff, g);
+    for (double v : g)
+      if (v > 0) return true;
+    return false;
+  };
   if (samples) samples->clear();
-  for (int k = 0; k < P && ev.finite; ++k) {
+  for (int k = 0; k < P && ev.finite && !ev.stopped; ++k) {
     stage = k;
     for (int j = 0; j < n; ++j) {
       const double t = k * h + j * dt;
@@ -223,6 +244,10 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
       planner.eval(k, t, x, k1);
       track(k1);
       if (samples) record(k1, k, t, x[4], samples);
+      if (stop_when_infeasible && violated()) {
+        ev.stopped = true;
+        break;
+      }
       planner.eval(k, t + 0.5 * dt, OdeState(x + 0.5 * dt * k1.dx), k2);
       planner.eval(k, t + 0.5 * dt, OdeState(x + 0.5 * dt * k2.dx), k3);
       planner.eval(k, t + dt, OdeState(x + dt * k3.dx), k4);
@@ -232,11 +257,21 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
         break;
       }
     }
-    if (!ev.finite) break;
+    if (!ev.finite || ev.stopped) break;
     // the end of the stage with this stage's accelerations (left limit at the node)
     planner.eval(k, (k + 1) * h, x, k1);
     track(k1);
     if (samples) record(k1, k, (k + 1) * h, x[4], samples);
+    if (stop_when_infeasible && violated()) {
+      ev.stopped = true;
+      break;
+    }
+  }
+  if (ev.stopped) {
+    ev.energy = std::numeric_limits<double>::max() / 4;
+    ev.violation = INFINITY;
+    ev.feasible = false;
+    return ev;
   }
   if (!ev.finite) {
     ev.energy = std::numeric_limits<double>::max() / 4;

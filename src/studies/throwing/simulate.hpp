@@ -77,6 +77,10 @@ struct ProfileEvaluation {
       stage_friction;
   double violation = 0;   ///< sum of the positive parts of constraint_values(.., backoff)
   bool feasible = false;  ///< violation == 0
+  /// simulate_profile(.., stop_when_infeasible = true) stopped at the first stage constraint
+  /// that is certainly violated: the profile is infeasible (feasible false, violation
+  /// +infinity, energy huge); the later stages are not simulated
+  bool stopped = false;
 };
 
 /// Names of the constraint kinds, in the order of ConstraintKind.
@@ -119,9 +123,16 @@ struct ThrowSample {
 /// every RK4 step and the end of every stage (the end sample of a stage and the start
 /// sample of the next share a time but differ in accelerations). The evaluation is
 /// classified with `backoff` (see constraint_values).
+///
+/// stop_when_infeasible: stop as soon as a stage constraint value (with `backoff`) is > 0.
+/// The stage-wise maxima only grow (the minimum normal force only falls) as a stage is
+/// simulated, so that value is > 0 at the end too and the full simulation would be
+/// infeasible; the evaluation is then marked `stopped` (see ProfileEvaluation). For a caller
+/// that only needs to know whether a profile beats a feasible one (IDP's candidates), this
+/// decides exactly as the full simulation does.
 ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
                                    std::vector<ThrowSample>* samples = nullptr,
-                                   double backoff = 0.0);
+                                   double backoff = 0.0, bool stop_when_infeasible = false);
 
 /// Contact forces of the tray on the ball (N) at state (q, qd, qdd) of the chain
 /// (docs/throwing.md): {normal N, tangential F_t}.

@@ -13,6 +13,53 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kComplexRestarts = 10;   // restarts of the Complex method from its best point
 constexpr double kRestartGain = 1e-6;  // relative gain a restart must make to go on
 
+// The limits at the check points of one segment in flat arrays (within_limits' numbers:
+// q'^2, a, b, c, q'' and q' per joint and point), for the path-speed recursion's hot test.
+struct SegmentLimits {
+  int checks = 1, nj = 0;
+  bool acceleration = false;
+  std::vector<double> v;  // per point m, per joint: dq^2, a, b, c, ddq, dq
+  double ds = 0;
+  double vlim2[core::kMaxLinks] = {};  // velocity limits squared
+};
+
+SegmentLimits segment_limits(const Problem& pb, const std::vector<double>& nodes,
+                             const std::vector<JointPoint>& pts, int k, int checks) {
+  SegmentLimits g;
+  g.checks = checks;
+  g.nj = pb.limits.joints();
+  g.acceleration = pb.limits.acceleration.has_value();
+  g.ds = nodes[k + 1] - nodes[k];
+  for (int j = 0; j < g.nj; ++j) g.vlim2[j] = pb.limits.velocity[j] * pb.limits.velocity[j];
+  for (int m = 0; m <= checks; ++m) {
+    const JointPoint& jp = pts[m];
+    for (int j = 0; j < g.nj; ++j)
+      g.v.insert(g.v.end(), {jp.dq[j] * jp.dq[j], jp.a[j], jp.b[j], jp.c[j], jp.ddq[j], jp.dq[j]});
+  }
+  return g;
+}
+
+// within_limits at every check point of the move x0 -> x1 (path_speed_cost's test, the same
+// operations in the same order)
+bool segment_within_limits(const SegmentLimits& seg, const Limits& lim, double x0, double x1) {
+  const double* vlim2 = seg.vlim2;
+  const double u = (x1 - x0) / (2 * seg.ds);
+  const double* p = seg.v.data();
+  for (int m = 0; m <= seg.checks; ++m) {
+    const double x = x0 + (x1 - x0) * m / seg.checks;
+    for (int j = 0; j < seg.nj; ++j, p += 6) {
+      if (p[0] * x > vlim2[j]) return false;
+      const double tau = p[1] * u + p[2] * x + p[3];
+      if (tau > lim.torque[j] || tau < -lim.torque[j]) return false;
+      if (seg.acceleration) {
+        const double qdd = p[5] * u + p[4] * x;
+        if (qdd > (*lim.acceleration)[j] || qdd < -(*lim.acceleration)[j]) return false;
+      }
+    }
+  }
+  return true;
+}
+
 // the discretisation shared by the path-speed DP and the Complex method
 struct Discretisation {
   std::vector<double> nodes;
@@ -20,6 +67,7 @@ struct Discretisation {
   std::vector<std::vector<JointPoint>> pts;  // [interval][check point]
   std::vector<double> mvc;                   // m/s per node
   int checks = 1;
+  std::vector<SegmentLimits> seg;  // the limits at pts[k] in flat arrays
 };
 
 Discretisation discretise(const Problem& pb, int segments, int checks) {
@@ -28,6 +76,8 @@ Discretisation discretise(const Problem& pb, int segments, int checks) {
   d.rest = rest_nodes(pb.path, d.nodes);
   d.pts = interval_points(pb, d.nodes, checks);
   d.checks = checks;
+  for (size_t k = 0; k + 1 < d.nodes.size(); ++k)
+    d.seg.push_back(segment_limits(pb, d.nodes, d.pts[k], static_cast<int>(k), checks));
   std::vector<double> vel;
   max_velocity_curve(pb, d.nodes, &d.mvc, &vel);
   return d;
@@ -45,6 +95,15 @@ double path_speed_cost(const Problem& pb, const Discretisation& d, int k, double
     const double x = x0 + (x1 - x0) * m / d.checks;
     if (!within_limits(pts[m], pb.limits, x, u)) return kInf;
   }
+  return 2 * ds / (sd0 + sd1);
+}
+
+// path_speed_cost from the segment's flat arrays (the same numbers)
+double path_speed_cost_flat(const Problem& pb, const Discretisation& d, int k, double x0, double x1,
+                            double sd0, double sd1) {
+  if (sd0 + sd1 <= 0) return kInf;
+  if (!segment_within_limits(d.seg[k], pb.limits, x0, x1)) return kInf;
+  const double ds = d.nodes[k + 1] - d.nodes[k];
   return 2 * ds / (sd0 + sd1);
 }
 
@@ -164,9 +223,84 @@ std::string dp_failure(const Problem& pb, const Discretisation& d, const std::ve
 }
 
 std::string where(const Problem& pb, double s) { return pb.where(s); }
+
+// The path-speed DP's Bellman recursion: core::opt::solve_staged_dp's answer with
+// path_speed_cost (the same cost, states and transition count, bitwise) without evaluating
+// most transitions. From state i at node k the successors j of the band are taken from the
+// fastest down: the cost 2 ds / (s'_i + s'_j) does not grow with j (the levels grow with j;
+// rounding is monotonic), so c(i, j) + min(J(k+1, 0..j)) bounds from below every move to a
+// level <= j, and once the bound exceeds the best move found no lower level can beat or
+// tie it. Ties go to the lowest level, as in the ascending scan. `evaluations` counts the
+// band's transitions into states that reach the end, as solve_staged_dp does.
+template <typename Band>
+core::opt::DpSolution path_speed_recursion(const Problem& pb, const Discretisation& d,
+                                           const std::vector<int>& levels,
+                                           const std::vector<std::vector<double>>& sd,
+                                           const std::vector<std::vector<double>>& x, Band&& band) {
+  const int nodes = static_cast<int>(levels.size());
+  core::opt::DpSolution sol;
+  std::vector<std::vector<double>> value(nodes);
+  std::vector<std::vector<int>> next(nodes);
+  value[nodes - 1].assign(levels[nodes - 1], 0.0);
+  next[nodes - 1].assign(levels[nodes - 1], -1);
+  std::vector<double> floor;   // floor[j] = min J(k+1, 0..j)
+  std::vector<long> reaching;  // reaching[j] = how many of J(k+1, 0..j-1) are finite
+  for (int k = nodes - 2; k >= 0; --k) {
+    value[k].assign(levels[k], kInf);
+    next[k].assign(levels[k], -1);
+    const std::vector<double>& later = value[k + 1];
+    const std::vector<double>& sd1 = sd[k + 1];
+    const std::vector<double>& x1 = x[k + 1];
+    const int n1 = levels[k + 1];
+    floor.resize(n1);
+    reaching.resize(n1 + 1);
+    reaching[0] = 0;
+    for (int j = 0; j < n1; ++j) {
+      floor[j] = j == 0 ? later[0] : std::min(floor[j - 1], later[j]);
+      reaching[j + 1] = reaching[j] + (std::isfinite(later[j]) ? 1 : 0);
+    }
+    const SegmentLimits& g = d.seg[k];
+    const double two_ds = 2 * g.ds;
+    for (int i = 0; i < levels[k]; ++i) {
+      const std::pair<int, int> range = band(k, i);
+      const int first = range.first < 0 ? 0 : range.first;
+      const int last = range.second > n1 ? n1 : range.second;
+      if (first >= last) continue;
+      sol.evaluations += reaching[last] - reaching[first];
+      const double sd0 = sd[k][i], x0 = x[k][i];
+      double best = kInf;
+      int arg = -1;
+      for (int j = last - 1; j >= first; --j) {
+        if (!std::isfinite(floor[j])) break;  // no state at or below j reaches the end
+        if (!std::isfinite(later[j])) continue;
+        const double v = sd0 + sd1[j];
+        const double c = v <= 0 ? kInf : two_ds / v;
+        if (c + floor[j] > best) break;
+        if (!std::isfinite(c) || !segment_within_limits(g, pb.limits, x0, x1[j])) continue;
+        if (c + later[j] <= best) {
+          best = c + later[j];
+          arg = j;
+        }
+      }
+      value[k][i] = best;
+      next[k][i] = arg;
+    }
+  }
+  int s0 = -1;
+  for (int i = 0; i < levels[0]; ++i)
+    if (std::isfinite(value[0][i]) && (s0 < 0 || value[0][i] < value[0][s0])) s0 = i;
+  if (s0 < 0) return sol;
+  sol.cost = value[0][s0];
+  sol.states.resize(nodes);
+  sol.states[0] = s0;
+  for (int k = 0; k + 1 < nodes; ++k) sol.states[k + 1] = next[k][sol.states[k]];
+  return sol;
+}
 }  // namespace
 
-SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, DpState state) {
+namespace {
+SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState state,
+                bool reference) {
   SolverOutput out;
   const Discretisation d = discretise(pb, segments, checks);
   const int n = static_cast<int>(d.nodes.size());
@@ -206,12 +340,15 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
           static_cast<int>(std::upper_bound(next.begin(), next.end(), hi) - next.begin()) + 1;
       return std::pair<int, int>(first, last);
     };
-    const core::opt::DpSolution sol = core::opt::solve_staged_dp(
-        count,
-        [&](int k, int i, int j) {
-          return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
-        },
-        band);
+    const core::opt::DpSolution sol =
+        reference
+            ? core::opt::solve_staged_dp(
+                  count,
+                  [&](int k, int i, int j) {
+                    return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
+                  },
+                  band)
+            : path_speed_recursion(pb, d, count, sd, x, band);
     out.evaluations = sol.evaluations;
     if (!sol.feasible()) {
       out.message =
@@ -321,6 +458,17 @@ SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, D
   return out;
 }
 
+}  // namespace
+
+SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, DpState state) {
+  return dp(pb, segments, levels, checks, state, false);
+}
+
+SolverOutput solve_dp_reference(const Problem& pb, int segments, int levels, int checks,
+                                DpState state) {
+  return dp(pb, segments, levels, checks, state, true);
+}
+
 SolverOutput solve_complex(const Problem& pb, int segments, int checks,
                            const ComplexSettings& settings) {
   SolverOutput out;
@@ -339,7 +487,7 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
     double t = 0;
     for (int k = 0; k + 1 < n; ++k) {
       const double c =
-          path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1]);
+          path_speed_cost_flat(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1]);
       if (!std::isfinite(c)) return kInf;
       t += c;
     }
@@ -395,10 +543,20 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
   core::opt::ComplexResult r;
   for (int restart = 0; restart <= kComplexRestarts; ++restart) {
     opt.seed = settings.seed + restart;
+    // (box_complex asks whether a point is feasible and then its time: the time of the last
+    // point asked is kept, the same number)
+    Eigen::VectorXd last_z;
+    double last_t = kInf;
+    const auto timed = [&](const Eigen::VectorXd& z) {
+      if (last_z.size() != z.size() || last_z != z) {
+        last_t = total_time(speeds(z));
+        last_z = z;
+      }
+      return last_t;
+    };
     const core::opt::ComplexResult next = core::opt::box_complex(
-        [&](const Eigen::VectorXd& z) { return total_time(speeds(z)); },
-        [&](const Eigen::VectorXd& z) { return std::isfinite(total_time(speeds(z))); }, lo, hi, z0,
-        opt);
+        [&](const Eigen::VectorXd& z) { return timed(z); },
+        [&](const Eigen::VectorXd& z) { return std::isfinite(timed(z)); }, lo, hi, z0, opt);
     out.evaluations += next.evaluations;
     out.iterations += next.iterations;
     const bool gained = restart == 0 || next.f < r.f * (1 - kRestartGain);

@@ -170,6 +170,8 @@ TipPointEvaluator::TipPointEvaluator(const core::PlanarChain& chain, const PathG
     : path_(&path), base_(chain.base), configuration_(configuration) {
   ARM_THROW_UNLESS(chain.num_links() == 2,
                    "time-optimal arm has " << chain.num_links() << " links; should have 2");
+  ARM_THROW_UNLESS(configuration == 1 || configuration == 2,
+                   "configuration " << configuration << " should be 1 or 2");
   L1_ = chain.links[0].length;
   L2_ = chain.links[1].length;
   const double cb = std::cos(chain.base_angle), sb = std::sin(chain.base_angle);
@@ -182,17 +184,40 @@ bool TipPointEvaluator::at(double s, bool from_left, JointPoint* jp) const {
   // path in the base frame: rotate by -base_angle about the base
   const Eigen::Vector2d p = rt_ * (pp.p - base_);
   if (!core::reach_2link(L1_, L2_, p).reachable()) return false;
-  const auto st = core::ik_2link_motion(L1_, L2_, p, rt_ * pp.dp, rt_ * pp.ddp, configuration_);
-  if (!st || std::abs(st->sin_q2) < 1e-9) return false;
+  // core::ik_2link_motion's operations in its order (and ik_2link's), with sin q2 taken
+  // once: ik_2link, ik_2link_motion and path_dynamics each take std::sin of the same q2
+  const double L1 = L1_, L2 = L2_;
+  double c2 = (p.squaredNorm() - L1 * L1 - L2 * L2) / (2.0 * L1 * L2);
+  if (c2 > 1.0 + 1e-12 || c2 < -1.0 - 1e-12) return false;
+  c2 = std::clamp(c2, -1.0, 1.0);
+  double q2 = std::acos(c2);
+  if (configuration_ == 2) q2 = -q2;
+  const double sin_q2 = std::sin(q2), cos_q2 = std::cos(q2);
+  const double q1 = std::atan2(p.y(), p.x()) - std::atan2(L2 * sin_q2, L1 + L2 * c2);
+  if (std::abs(sin_q2) < 1e-9) return false;
+  const double t1 = q1, t12 = q1 + q2;
+  const double s1 = std::sin(t1), c1 = std::cos(t1), s12 = std::sin(t12), c12 = std::cos(t12);
+  const double det = L1 * L2 * sin_q2;
+  const double j11 = -L1 * s1 - L2 * s12, j12 = -L2 * s12;
+  const double j21 = L1 * c1 + L2 * c12, j22 = L2 * c12;
+  const auto solve = [&](const Eigen::Vector2d& b) {
+    return Eigen::Vector2d((j22 * b.x() - j12 * b.y()) / det, (-j21 * b.x() + j11 * b.y()) / det);
+  };
+  const Eigen::Vector2d qd = solve(rt_ * pp.dp);
+  const double w1 = qd[0], w12 = qd[0] + qd[1];
+  const Eigen::Vector2d jd_qd(-L1 * c1 * w1 * w1 - L2 * c12 * w12 * w12,
+                              -L1 * s1 * w1 * w1 - L2 * s12 * w12 * w12);
+  const Eigen::Vector2d acc = rt_ * pp.ddp;
+  const Eigen::Vector2d qdd = solve(acc - jd_qd);
   jp->s = s;
   jp->p = pp.p;
-  jp->q = st->q;
-  jp->dq = st->qd;
-  jp->ddq = st->qdd;
-  jp->sin_q2 = st->sin_q2;
+  jp->q = Eigen::Vector2d(q1, q2);
+  jp->dq = qd;
+  jp->ddq = qdd;
+  jp->sin_q2 = sin_q2;
   // tau = M (q' s'' + q'' s'^2) + C(q, q' s') q' s' + g = a s'' + b s'^2 + c, in closed form
   // (two_link_dynamics.hpp; equal to core's generic chain to 1e-12, the tests' oracle)
-  path_dynamics(dyn_, jp->q, jp->dq, jp->ddq, &jp->a, &jp->b, &jp->c);
+  path_dynamics_cs(dyn_, cos_q2, sin_q2, jp->q, jp->dq, jp->ddq, &jp->a, &jp->b, &jp->c);
   return true;
 }
 

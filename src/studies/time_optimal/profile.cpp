@@ -414,7 +414,7 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
   std::vector<double>* val[3] = {buffers + 4, buffers + 4 + nj, buffers + 4 + 2 * nj};
   std::vector<double>* use[3] = {buffers + 4 + 3 * nj, buffers + 4 + 4 * nj, buffers + 4 + 5 * nj};
   double t_node = 0;
-  int index = 0;
+  int to_keep = 0;  // points to the next kept one (the kept ones: index % stride == 0)
   for (int k0 = 0; k0 < K; k0 += kBlock) {
     const int k1 = std::min(K, k0 + kBlock);
     const size_t i0 = k0 == 0 ? 0 : static_cast<size_t>(k0) * per_interval + 1;
@@ -559,7 +559,7 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
           }
         }
         if (interval_worst && worst_here > (*interval_worst)[k]) (*interval_worst)[k] = worst_here;
-        if (index % stride == 0 || (k == K - 1 && m == per_interval)) {
+        if (to_keep == 0 || (k == K - 1 && m == per_interval)) {
           const Reference ref = reference(k, m);
           out->s.push_back(ref.jp.s);
           out->t.push_back(t);
@@ -570,7 +570,7 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
           qdd.push_back(ref.qdd);
           tau.push_back(core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd));
         }
-        ++index;
+        to_keep = to_keep == 0 ? stride - 1 : to_keep - 1;
       }
       t_node = t_end;
       nt[k + 1] = t_node;

@@ -502,6 +502,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.motion_q.resize(nj, steps + 1);
   res.motion_qd.resize(nj, steps + 1);
   size_t k = 0;
+  const PointSource source(pb);  // (Problem::at's numbers)
+  JointPoint jp;
   for (int i = 0; i <= steps; ++i) {
     const double t = exact.duration * i / steps;
     while (k + 2 < exact.node_t.size() && exact.node_t[k + 1] < t) ++k;
@@ -512,7 +514,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     const double tau = std::clamp(t - exact.node_t[k], 0.0, exact.node_t[k + 1] - exact.node_t[k]);
     const double s = std::clamp(exact.node_s[k] + exact.node_sd[k] * tau + 0.5 * u * tau * tau,
                                 exact.node_s[k], exact.node_s[k + 1]);
-    const JointPoint jp = pb.at(s, i == steps);
+    source.at(s, i == steps, &jp);
     res.motion_t[i] = t;
     res.motion_s[i] = s;
     res.motion_p.col(i) = jp.p;

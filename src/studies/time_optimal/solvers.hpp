@@ -85,6 +85,12 @@ void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes
 /// kJoint1Velocity (the source's): q1' levels in [0, qd_max_1] towards the motion, constant
 /// q1'', segment time 2 dq1 / (q1'(k) + q1'(k+1)); fails when q1 is not monotonic.
 SolverOutput solve_dp(const Problem& problem, int segments, int levels, int checks, DpState state);
+/// solve_dp's plain recursion (core::opt::solve_staged_dp, the cost of every transition in
+/// the candidate bands evaluated). solve_dp gives its numbers, states and transition count
+/// (the tests compare the two bitwise) and evaluates only the transitions a lower bound on
+/// the remaining time cannot rule out.
+SolverOutput solve_dp_reference(const Problem& problem, int segments, int levels, int checks,
+                                DpState state);
 
 /// Box's Complex method on the same discretisation as the path-speed DP: the s' of every
 /// interior node are the variables (bounds [0, MVC]), a profile is feasible when every

@@ -47,7 +47,12 @@ TwoLinkDynamics make_two_link_dynamics(const core::PlanarChain& chain) {
 void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
                    const core::JointVector& dq, const core::JointVector& ddq, core::JointVector* a,
                    core::JointVector* b, core::JointVector* c) {
-  const double c2 = std::cos(q[1]), s2 = std::sin(q[1]);
+  path_dynamics_cs(d, std::cos(q[1]), std::sin(q[1]), q, dq, ddq, a, b, c);
+}
+
+void path_dynamics_cs(const TwoLinkDynamics& d, double c2, double s2, const core::JointVector& q,
+                      const core::JointVector& dq, const core::JointVector& ddq,
+                      core::JointVector* a, core::JointVector* b, core::JointVector* c) {
   const double g = d.A * c2 - d.B * s2;
   const double gp = -d.A * s2 - d.B * c2;
   const double m11 = d.a11 + 2.0 * g, m12 = d.a12 + g, m22 = d.a22;

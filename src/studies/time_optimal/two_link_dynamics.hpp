@@ -37,6 +37,12 @@ void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
                    const core::JointVector& dq, const core::JointVector& ddq, core::JointVector* a,
                    core::JointVector* b, core::JointVector* c);
 
+/// path_dynamics with cos q2 and sin q2 given (c2, s2: std::cos and std::sin of q[1], which
+/// the caller has computed already): the same numbers.
+void path_dynamics_cs(const TwoLinkDynamics& d, double c2, double s2, const core::JointVector& q,
+                      const core::JointVector& dq, const core::JointVector& ddq,
+                      core::JointVector* a, core::JointVector* b, core::JointVector* c);
+
 /// tau = M(q) qdd + C(q, qd) qd + g(q) of the model above (2 entries, N m): the inverse
 /// dynamics of the dense re-check, equal to core::inverse_dynamics to 1e-12 relative.
 void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
