@@ -280,6 +280,32 @@ TEST(TimeOptimalFastPaths, PathSpeedDpGivesTheFullRecursionsAnswerBitwise) {
   }
 }
 
+TEST(TimeOptimalFastPaths, JointOneDpGivesTheFullRecursionsAnswerBitwise) {
+  // the source's joint-1 velocity state: the source's line (joint 1 turns one way) and the
+  // problems above (where it turns back both fail with the same message)
+  std::vector<Problem> all = problems();
+  all.push_back(tip_problem(default_arm(), PathKind::kLine, {{0.3, 0.1}, {-0.1, 0.8}},
+                            joint_pair(3, 4), joint_pair(10, 4), std::nullopt));
+  int solved = 0;
+  for (const Problem& pb : all) {
+    for (const auto& [segments, levels, checks] :
+         std::vector<std::tuple<int, int, int>>{{10, 200, 8}, {23, 90, 2}}) {
+      const SolverOutput fast = solve_dp(pb, segments, levels, checks, DpState::kJoint1Velocity);
+      const SolverOutput ref =
+          solve_dp_reference(pb, segments, levels, checks, DpState::kJoint1Velocity);
+      ASSERT_EQ(fast.solved, ref.solved) << ref.message;
+      EXPECT_EQ(fast.message, ref.message);
+      EXPECT_EQ(fast.evaluations, ref.evaluations);
+      if (!ref.solved) continue;
+      ++solved;
+      EXPECT_EQ(fast.duration, ref.duration);
+      EXPECT_EQ(fast.profile.sd, ref.profile.sd);
+      EXPECT_EQ(fast.profile.qd1, ref.profile.qd1);
+    }
+  }
+  EXPECT_GE(solved, 2);
+}
+
 TEST(TimeOptimalFastPaths, PathSpeedDpFailsWithTheFullRecursionsMessage) {
   // too few levels to cross a short segment, and a joint that may not move
   std::vector<std::pair<Problem, int>> bad;

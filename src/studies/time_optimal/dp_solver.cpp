@@ -224,19 +224,18 @@ std::string dp_failure(const Problem& pb, const Discretisation& d, const std::ve
 
 std::string where(const Problem& pb, double s) { return pb.where(s); }
 
-// The path-speed DP's Bellman recursion: core::opt::solve_staged_dp's answer with
-// path_speed_cost (the same cost, states and transition count, bitwise) without evaluating
-// most transitions. From state i at node k the successors j of the band are taken from the
-// fastest down: the cost 2 ds / (s'_i + s'_j) does not grow with j (the levels grow with j;
-// rounding is monotonic), so c(i, j) + min(J(k+1, 0..j)) bounds from below every move to a
-// level <= j, and once the bound exceeds the best move found no lower level can beat or
-// tie it. Ties go to the lowest level, as in the ascending scan. `evaluations` counts the
-// band's transitions into states that reach the end, as solve_staged_dp does.
-template <typename Band>
-core::opt::DpSolution path_speed_recursion(const Problem& pb, const Discretisation& d,
-                                           const std::vector<int>& levels,
-                                           const std::vector<std::vector<double>>& sd,
-                                           const std::vector<std::vector<double>>& x, Band&& band) {
+// The DP's Bellman recursion: core::opt::solve_staged_dp's answer with the cost
+// time(k, i, j) where feasible(k, i, j), else +inf (the same cost, states and transition
+// count, bitwise) without evaluating most transitions. From state i at node k the successors
+// j of the band are taken from the fastest down: where monotone(k), the segment time does
+// not grow with j (path speed: 2 ds / (s'_i + s'_j) with levels growing with j; rounding is
+// monotonic), so time(k, i, j) + min(J(k+1, 0..j)) bounds from below every move to a level
+// <= j, and once the bound exceeds the best move found no lower level can beat or tie it.
+// Ties go to the lowest level, as in the ascending scan. `evaluations` counts the band's
+// transitions into states that reach the end, as solve_staged_dp does.
+template <typename Time, typename Feasible, typename Band, typename Monotone>
+core::opt::DpSolution pruned_recursion(const std::vector<int>& levels, Time&& time,
+                                       Feasible&& feasible, Band&& band, Monotone&& monotone) {
   const int nodes = static_cast<int>(levels.size());
   core::opt::DpSolution sol;
   std::vector<std::vector<double>> value(nodes);
@@ -249,8 +248,6 @@ core::opt::DpSolution path_speed_recursion(const Problem& pb, const Discretisati
     value[k].assign(levels[k], kInf);
     next[k].assign(levels[k], -1);
     const std::vector<double>& later = value[k + 1];
-    const std::vector<double>& sd1 = sd[k + 1];
-    const std::vector<double>& x1 = x[k + 1];
     const int n1 = levels[k + 1];
     floor.resize(n1);
     reaching.resize(n1 + 1);
@@ -259,24 +256,22 @@ core::opt::DpSolution path_speed_recursion(const Problem& pb, const Discretisati
       floor[j] = j == 0 ? later[0] : std::min(floor[j - 1], later[j]);
       reaching[j + 1] = reaching[j] + (std::isfinite(later[j]) ? 1 : 0);
     }
-    const SegmentLimits& g = d.seg[k];
-    const double two_ds = 2 * g.ds;
+    // (a segment whose time is not known to fall with j is scanned whole, in the same order)
+    const bool prune = monotone(k);
     for (int i = 0; i < levels[k]; ++i) {
       const std::pair<int, int> range = band(k, i);
       const int first = range.first < 0 ? 0 : range.first;
       const int last = range.second > n1 ? n1 : range.second;
       if (first >= last) continue;
       sol.evaluations += reaching[last] - reaching[first];
-      const double sd0 = sd[k][i], x0 = x[k][i];
       double best = kInf;
       int arg = -1;
       for (int j = last - 1; j >= first; --j) {
         if (!std::isfinite(floor[j])) break;  // no state at or below j reaches the end
         if (!std::isfinite(later[j])) continue;
-        const double v = sd0 + sd1[j];
-        const double c = v <= 0 ? kInf : two_ds / v;
-        if (c + floor[j] > best) break;
-        if (!std::isfinite(c) || !segment_within_limits(g, pb.limits, x0, x1[j])) continue;
+        const double c = time(k, i, j);
+        if (prune && c + floor[j] > best) break;
+        if (!std::isfinite(c) || !feasible(k, i, j)) continue;
         if (c + later[j] <= best) {
           best = c + later[j];
           arg = j;
@@ -348,7 +343,16 @@ SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState
                     return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
                   },
                   band)
-            : path_speed_recursion(pb, d, count, sd, x, band);
+            : pruned_recursion(
+                  count,
+                  [&](int k, int i, int j) {
+                    const double v = sd[k][i] + sd[k + 1][j];
+                    return v <= 0 ? kInf : 2 * (d.nodes[k + 1] - d.nodes[k]) / v;
+                  },
+                  [&](int k, int i, int j) {
+                    return segment_within_limits(d.seg[k], pb.limits, x[k][i], x[k + 1][j]);
+                  },
+                  band, [](int) { return true; });
     out.evaluations = sol.evaluations;
     if (!sol.feasible()) {
       out.message =
@@ -433,7 +437,20 @@ SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState
     }
     return 2 * dq / (v0 + v1);
   };
-  const core::opt::DpSolution sol = core::opt::solve_staged_dp(count, joint1_cost);
+  const auto every = [&](int k, int) { return std::pair<int, int>(0, count[k + 1]); };
+  const core::opt::DpSolution sol =
+      reference
+          ? core::opt::solve_staged_dp(count, joint1_cost)
+          : pruned_recursion(
+                count,
+                [&](int k, int i, int j) {
+                  const double v0 = v[k][i], v1 = v[k + 1][j];
+                  return v0 + v1 == 0 ? kInf : 2 * (q1[k + 1] - q1[k]) / (v0 + v1);
+                },
+                [&](int k, int i, int j) { return std::isfinite(joint1_cost(k, i, j)); }, every,
+                // the levels run towards the motion: the time falls with j when joint 1
+                // moves that way over the segment
+                [&](int k) { return sign * (q1[k + 1] - q1[k]) > 0; });
   out.evaluations = sol.evaluations;
   if (!sol.feasible()) {
     out.message =

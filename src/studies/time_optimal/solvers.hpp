@@ -86,8 +86,8 @@ void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes
 /// q1'', segment time 2 dq1 / (q1'(k) + q1'(k+1)); fails when q1 is not monotonic.
 SolverOutput solve_dp(const Problem& problem, int segments, int levels, int checks, DpState state);
 /// solve_dp's plain recursion (core::opt::solve_staged_dp, the cost of every transition in
-/// the candidate bands evaluated). solve_dp gives its numbers, states and transition count
-/// (the tests compare the two bitwise) and evaluates only the transitions a lower bound on
+/// the candidate bands evaluated; both states). solve_dp gives its numbers, states and transition
+/// count (the tests compare the two bitwise) and evaluates only the transitions a lower bound on
 /// the remaining time cannot rule out.
 SolverOutput solve_dp_reference(const Problem& problem, int segments, int levels, int checks,
                                 DpState state);
