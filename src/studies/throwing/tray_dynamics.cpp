@@ -13,6 +13,27 @@ constexpr int kN = 4;
 // the column-major forward and the row-major backward substitution of
 // triangular_solve_vector, which skip a division where the right-hand side is exactly 0
 void solve_spd(double A[kN][kN], int n, double b[kN]) {
+  if (n == 2 && A[0][0] > 0.0) {
+    // the same operations for the tray arm's two passive joints, in straight code
+    const double l00 = std::sqrt(A[0][0]);
+    const double l10 = A[1][0] / l00;
+    const double x = A[1][1] - l10 * l10;
+    if (x > 0.0) {
+      const double l11 = std::sqrt(x);
+      double b0 = b[0], b1 = b[1];
+      if (b0 != 0.0) {
+        b0 /= l00;
+        b1 -= b0 * l10;
+      }
+      if (b1 != 0.0) b1 /= l11;  // forward: y1
+      if (b1 != 0.0) b1 /= l11;  // backward: x1
+      b0 -= l10 * b1;
+      if (b0 != 0.0) b0 /= l00;
+      b[0] = b0;
+      b[1] = b1;
+      return;
+    }
+  }
   for (int k = 0; k < n; ++k) {
     double x = A[k][k];
     if (k > 0) {
@@ -46,6 +67,63 @@ void solve_spd(double A[kN][kN], int n, double b[kN]) {
     if (b[i] != 0.0) b[i] /= A[i][i];
   }
 }
+// the link frames and joint rates of one state (mixed's forward kinematics)
+struct Kinematics {
+  double c[kN], s[kN], px[kN + 1], py[kN + 1];  // cos, sin of each link; joint positions
+  double sx[kN], sy[kN];                        // perp(p_j - p_j-1), j >= 1
+  double w[kN];                                 // joint rates
+  double gravity;
+};
+
+// one body's m J^T J and I into M, m J^T (Jdot qd + g ey) into h (core/dynamics.cpp and
+// core/kinematics.cpp's point_position, point_jacobian, point_jacobian_dot)
+template <int Link, typename Body>
+void add_body(const Body& body, const Kinematics& k, double M[kN][kN], double h[kN]) {
+  if (body.mass != 0.0) {
+    const double bx = k.px[Link] + (k.c[Link] * body.x - k.s[Link] * body.y);
+    const double by = k.py[Link] + (k.s[Link] * body.x + k.c[Link] * body.y);
+    double J0[Link + 1], J1[Link + 1], D0[Link + 1], D1[Link + 1];
+    for (int j = 0; j <= Link; ++j) {
+      J0[j] = -(by - k.py[j]);
+      J1[j] = bx - k.px[j];
+    }
+    double vx = J0[0] * k.w[0], vy = J1[0] * k.w[0];
+    for (int j = 1; j <= Link; ++j) {
+      vx += J0[j] * k.w[j];
+      vy += J1[j] * k.w[j];
+    }
+    double vjx = 0.0, vjy = 0.0, omega = 0.0;
+    for (int j = 0; j <= Link; ++j) {
+      if (j > 0) {
+        vjx += omega * k.sx[j];
+        vjy += omega * k.sy[j];
+      }
+      omega += k.w[j];
+      D0[j] = -(vy - vjy);
+      D1[j] = vx - vjx;
+    }
+    const double m = body.mass;
+    double mJ0[Link + 1], mJ1[Link + 1];
+    for (int i = 0; i <= Link; ++i) {
+      mJ0[i] = m * J0[i];
+      mJ1[i] = m * J1[i];
+    }
+    for (int i = 0; i <= Link; ++i)
+      for (int j = 0; j <= Link; ++j) M[i][j] += mJ0[i] * J0[j] + mJ1[i] * J1[j];
+    double ax = D0[0] * k.w[0], ay = D1[0] * k.w[0];
+    for (int j = 1; j <= Link; ++j) {
+      ax += D0[j] * k.w[j];
+      ay += D1[j] * k.w[j];
+    }
+    ax = ax + 0.0;
+    ay = ay + k.gravity;
+    for (int i = 0; i <= Link; ++i) h[i] += mJ0[i] * ax + mJ1[i] * ay;
+  }
+  if (body.inertia != 0.0)
+    for (int i = 0; i <= Link; ++i)
+      for (int j = 0; j <= Link; ++j) M[i][j] += body.inertia;
+}
+
 }  // namespace
 
 TrayDynamics::TrayDynamics(const core::PlanarChain& chain) : chain_(chain) {
@@ -75,7 +153,11 @@ core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::
   // left out; 2-vectors work lane by lane.
   const core::PlanarChain& chain = chain_;
   // forward kinematics once: each link's cosine and sine (the generic chain's angles)
-  double c[kN], s[kN], px[kN + 1], py[kN + 1];
+  Kinematics k;
+  double* c = k.c;
+  double* s = k.s;
+  double* px = k.px;
+  double* py = k.py;
   px[0] = chain.base.x();
   py[0] = chain.base.y();
   double a = chain.base_angle;
@@ -88,61 +170,30 @@ core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::
     py[i + 1] = py[i] + L * s[i];
   }
   // link vectors of point_jacobian_dot's joint velocities, perp(p_j - p_j-1)
-  double sx[kN] = {}, sy[kN] = {};
+  k.sx[0] = k.sy[0] = 0.0;
   for (int j = 1; j < kN; ++j) {
-    sx[j] = -(py[j] - py[j - 1]);
-    sy[j] = px[j] - px[j - 1];
+    k.sx[j] = -(py[j] - py[j - 1]);
+    k.sy[j] = px[j] - px[j - 1];
   }
-  const double w_[kN] = {qd[0], qd[1], qd[2], qd[3]};
+  for (int i = 0; i < kN; ++i) k.w[i] = qd[i];
+  k.gravity = chain.gravity;
+  const double* w_ = k.w;
 
   double M[kN][kN] = {}, h[kN] = {};
-  for (int b = 0; b < n_bodies_; ++b) {
+  // the links' bodies come first, in order; the link as a compile-time bound unrolls the
+  // loops into straight code
+  add_body<0>(bodies_[0], k, M, h);
+  add_body<1>(bodies_[1], k, M, h);
+  add_body<2>(bodies_[2], k, M, h);
+  add_body<3>(bodies_[3], k, M, h);
+  for (int b = kN; b < n_bodies_; ++b) {
     const Body& body = bodies_[b];
-    const int link = body.link;
-    if (body.mass != 0.0) {
-      // point_position, point_jacobian, point_jacobian_dot of core/kinematics.cpp
-      const double bx = px[link] + (c[link] * body.x - s[link] * body.y);
-      const double by = py[link] + (s[link] * body.x + c[link] * body.y);
-      double J0[kN], J1[kN], D0[kN], D1[kN];
-      for (int j = 0; j <= link; ++j) {
-        J0[j] = -(by - py[j]);
-        J1[j] = bx - px[j];
-      }
-      double vx = J0[0] * w_[0], vy = J1[0] * w_[0];
-      for (int j = 1; j <= link; ++j) {
-        vx += J0[j] * w_[j];
-        vy += J1[j] * w_[j];
-      }
-      double vjx = 0.0, vjy = 0.0, omega = 0.0;
-      for (int j = 0; j <= link; ++j) {
-        if (j > 0) {
-          vjx += omega * sx[j];
-          vjy += omega * sy[j];
-        }
-        omega += w_[j];
-        D0[j] = -(vy - vjy);
-        D1[j] = vx - vjx;
-      }
-      const double m = body.mass;
-      double mJ0[kN], mJ1[kN];
-      for (int i = 0; i <= link; ++i) {
-        mJ0[i] = m * J0[i];
-        mJ1[i] = m * J1[i];
-      }
-      for (int i = 0; i <= link; ++i)
-        for (int j = 0; j <= link; ++j) M[i][j] += mJ0[i] * J0[j] + mJ1[i] * J1[j];
-      double ax = D0[0] * w_[0], ay = D1[0] * w_[0];
-      for (int j = 1; j <= link; ++j) {
-        ax += D0[j] * w_[j];
-        ay += D1[j] * w_[j];
-      }
-      ax = ax + 0.0;
-      ay = ay + chain.gravity;
-      for (int i = 0; i <= link; ++i) h[i] += mJ0[i] * ax + mJ1[i] * ay;
+    switch (body.link) {
+      case 0: add_body<0>(body, k, M, h); break;
+      case 1: add_body<1>(body, k, M, h); break;
+      case 2: add_body<2>(body, k, M, h); break;
+      default: add_body<3>(body, k, M, h); break;
     }
-    if (body.inertia != 0.0)
-      for (int i = 0; i <= link; ++i)
-        for (int j = 0; j <= link; ++j) M[i][j] += body.inertia;
   }
   for (const core::SpinningInertia& sp : chain.spinners) {
     double L[kN], C[kN];
