@@ -1,7 +1,10 @@
 // Speed of the tray-arm simulations: RK4 steps per second of the planning model (one
 // evaluation of an IDP candidate), the open-loop DOPRI5 replay, one IDP iteration on both
 // cores, the time to a converged IDP (one seed from the bundled case's feasible reference,
-// and the 4 seeds on both cores), and the pendulum study.
+// and the 4 seeds on both cores; one seed also without the early stop of infeasible
+// candidates, the reference it must equal), one SLSQP central-difference gradient (the
+// point and its 60 neighbours, each simulated from t = 0 or resumed from the point's stage
+// checkpoints), and the pendulum study.
 #include <benchmark/benchmark.h>
 
 #include "studies/pendulum/solve.hpp"
@@ -83,7 +86,8 @@ BENCHMARK(BM_IdpIteration)
     ->UseRealTime();
 
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
-// (computed once, outside the timing), one seed on one core, or all seeds on both cores
+// (computed once, outside the timing), one seed on one core, or all seeds on both cores;
+// second argument 0: every candidate simulated to the end (no early stop)
 void BM_IdpConverged(benchmark::State& state) {
   Fixture f;
   const Eigen::Vector2d delta = f.spec.release - f.spec.start;
@@ -93,6 +97,7 @@ void BM_IdpConverged(benchmark::State& state) {
   IdpSettings s = f.spec.idp;
   s.backoff = f.spec.backoff;
   s.threads = static_cast<int>(state.range(0));
+  s.stop_infeasible_candidates = state.range(1) == 1;
   if (s.threads == 1) s.seeds = 1;
   long evals = 0;
   int converged = 0, runs = 0;
@@ -108,7 +113,42 @@ void BM_IdpConverged(benchmark::State& state) {
   state.counters["seeds"] = s.seeds;
   state.counters["converged_fraction"] = runs ? static_cast<double>(converged) / runs : 0.0;
 }
-BENCHMARK(BM_IdpConverged)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_IdpConverged)
+    ->Args({1, 0})
+    ->Args({1, 1})
+    ->Args({2, 1})
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+// one central-difference gradient of SLSQP on one core (nlopt_solve.cpp's compute): the
+// default case's eq. 8 profile and its 2 x 30 neighbours (fd step 1e-5 rad/s); argument 0:
+// every neighbour simulated from t = 0 (evaluate_profiles), 1: resumed from the point's
+// stage checkpoints (evaluate_neighbours), the same evaluations bit for bit
+void BM_SlsqpGradient(benchmark::State& state) {
+  Fixture f;
+  std::vector<VelocityProfile> ps{f.profile};
+  std::vector<int> first{0};
+  for (int k = 1; k < f.profile.stages(); ++k)
+    for (int j = 0; j < 2; ++j)
+      for (double step : {1e-5, -1e-5}) {
+        VelocityProfile p = f.profile;
+        p.v(j, k) += step;
+        ps.push_back(p);
+        first.push_back(k - 1);
+      }
+  const bool resume = state.range(0) == 1;
+  long sims = 0;
+  for (auto _ : state) {
+    const auto evs = resume ? evaluate_neighbours(f.setup, ps, first, 1, 0.02)
+                            : evaluate_profiles(f.setup, ps, 1, 0.02);
+    benchmark::DoNotOptimize(evs.back().energy);
+    sims += static_cast<long>(evs.size());
+  }
+  state.counters["simulations_per_s"] =
+      benchmark::Counter(static_cast<double>(sims), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SlsqpGradient)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_PendulumTwoSeconds(benchmark::State& state) {
   const PendulumSpec spec = default_pendulum_spec();

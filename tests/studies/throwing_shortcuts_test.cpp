@@ -2,7 +2,8 @@
 // a simulation stopped at its first certain violation (simulate_profile's
 // stop_when_infeasible) belongs to an infeasible profile, one that is not stopped equals the
 // full simulation bit for bit, and IDP with the stop makes exactly the choices of IDP
-// without it.
+// without it; a central-difference neighbour resumed from its point's checkpoints
+// (simulate_profile_from, evaluate_neighbours) equals its full simulation bit for bit.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -126,6 +127,41 @@ TEST(ThrowShortcuts, IdpWithTheEarlyStopMakesTheChoicesOfFullSimulations) {
     EXPECT_EQ(a.history[i].improvements, b.history[i].improvements);
   }
   EXPECT_LT(a.evaluation.energy, a.initial_evaluation.energy);  // it did move
+}
+
+TEST(ThrowShortcuts, ANeighbourResumedFromCheckpointsEqualsItsFullSimulation) {
+  for (Motor2Mount mount : {Motor2Mount::kOnLink1, Motor2Mount::kOnBase}) {
+    Case c;
+    c.spec.arm.motor2 = mount;
+    c.spec.arm.rotor_inertia = 2e-6;
+    c.setup = make_throw_setup(c.spec);
+    SimulationCheckpoints base;
+    const ProfileEvaluation e0 = simulate_profile(c.setup, c.eq8, base, 0.02);
+    expect_same(e0, simulate_profile(c.setup, c.eq8, nullptr, 0.02), -1);
+    ASSERT_EQ(static_cast<int>(base.x.size()), c.eq8.stages());
+    std::vector<VelocityProfile> ps{c.eq8};
+    std::vector<int> first{0};
+    for (int k = 1; k < c.eq8.stages(); ++k)
+      for (int j = 0; j < 2; ++j)
+        for (double step : {1e-5, -0.5}) {
+          VelocityProfile p = c.eq8;
+          p.v(j, k) += step;
+          const ProfileEvaluation full = simulate_profile(c.setup, p, nullptr, 0.02);
+          expect_same(simulate_profile_from(c.setup, p, base, k - 1, 0.02), full, k);
+          // resuming earlier is the same computation too
+          expect_same(simulate_profile_from(c.setup, p, base, (k - 1) / 2, 0.02), full, k);
+          ps.push_back(p);
+          first.push_back(k - 1);
+        }
+    const auto serial = evaluate_profiles(c.setup, ps, 1, 0.02);
+    const auto resumed = evaluate_neighbours(c.setup, ps, first, 2, 0.02);
+    ASSERT_EQ(serial.size(), resumed.size());
+    for (size_t i = 0; i < ps.size(); ++i) expect_same(resumed[i], serial[i], static_cast<int>(i));
+    // a profile that differs before the resume point is refused
+    VelocityProfile early = c.eq8;
+    early.v(0, 2) += 1e-5;
+    EXPECT_THROW(simulate_profile_from(c.setup, early, base, 3, 0.02), std::invalid_argument);
+  }
 }
 
 }  // namespace

@@ -15,28 +15,51 @@ bool better_profile(const ProfileEvaluation& a, const ProfileEvaluation& b) {
   return a.violation < b.violation;
 }
 
-std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
-                                                 const std::vector<VelocityProfile>& profiles,
-                                                 int threads, double backoff,
-                                                 bool stop_when_infeasible) {
-  std::vector<ProfileEvaluation> out(profiles.size());
-  const int n = static_cast<int>(profiles.size());
-  const int nt = std::clamp(threads, 1, std::max(1, n));
+namespace {
+
+// fn(i) for i in [begin, end) on `threads` threads: work stealing over an atomic index
+template <typename F>
+void parallel_for(int begin, int end, int threads, F&& fn) {
+  const int nt = std::clamp(threads, 1, std::max(1, end - begin));
   if (nt == 1) {
-    for (int i = 0; i < n; ++i)
-      out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
-    return out;
+    for (int i = begin; i < end; ++i) fn(i);
+    return;
   }
-  // work stealing over an atomic index; each slot written by exactly one thread
-  std::atomic<int> next{0};
+  std::atomic<int> next{begin};
   auto worker = [&] {
-    for (int i = next++; i < n; i = next++)
-      out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
+    for (int i = next++; i < end; i = next++) fn(i);
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < nt; ++t) pool.emplace_back(worker);
   worker();
   for (auto& th : pool) th.join();
+}
+
+}  // namespace
+
+std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
+                                                 const std::vector<VelocityProfile>& profiles,
+                                                 int threads, double backoff,
+                                                 bool stop_when_infeasible) {
+  std::vector<ProfileEvaluation> out(profiles.size());
+  // each slot written by exactly one thread
+  parallel_for(0, static_cast<int>(profiles.size()), threads, [&](int i) {
+    out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
+  });
+  return out;
+}
+
+std::vector<ProfileEvaluation> evaluate_neighbours(const ThrowSetup& setup,
+                                                   const std::vector<VelocityProfile>& profiles,
+                                                   const std::vector<int>& first_stage, int threads,
+                                                   double backoff) {
+  std::vector<ProfileEvaluation> out(profiles.size());
+  if (profiles.empty()) return out;
+  SimulationCheckpoints base;
+  out[0] = simulate_profile(setup, profiles[0], base, backoff);
+  parallel_for(1, static_cast<int>(profiles.size()), threads, [&](int i) {
+    out[i] = simulate_profile_from(setup, profiles[i], base, first_stage[i], backoff);
+  });
   return out;
 }
 

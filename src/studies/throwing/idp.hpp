@@ -98,6 +98,15 @@ std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
                                                  int threads, double backoff = 0.0,
                                                  bool stop_when_infeasible = false);
 
+/// evaluate_profiles(setup, profiles, threads, backoff) for profiles[0] and neighbours of it:
+/// profiles[i] has profiles[0]'s nodes 0 .. first_stage[i] (first_stage[0] = 0). profiles[0]
+/// is simulated first with checkpoints, then every neighbour resumes from it at stage
+/// first_stage[i] (simulate_profile_from): the same evaluations, bit for bit, in less time.
+std::vector<ProfileEvaluation> evaluate_neighbours(const ThrowSetup& setup,
+                                                   const std::vector<VelocityProfile>& profiles,
+                                                   const std::vector<int>& first_stage, int threads,
+                                                   double backoff = 0.0);
+
 /// Runs IDP from `initial` (which must already meet the displacement `delta`, rad) with
 /// settings.seed. `progress` receives the fraction of the pass budget done.
 IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,

@@ -56,20 +56,24 @@ void compute(Problem& pr, const double* x) {
   const int n = num_vars(pr.base);
   if (!pr.cached_x.empty() && std::equal(pr.cached_x.begin(), pr.cached_x.end(), x)) return;
   pr.cached_x.assign(x, x + n);
-  // the point and the 2n central-difference neighbours, simulated in parallel
+  // the point and the 2n central-difference neighbours, simulated in parallel; x[i] is a rate
+  // of node i / 2 + 1, so its neighbours resume from the point's simulation at stage i / 2
   std::vector<VelocityProfile> ps;
   ps.reserve(2 * n + 1);
   ps.push_back(to_profile(pr, x));
   std::vector<double> xx(x, x + n);
   const double h = pr.settings.fd_step;
+  std::vector<int> first_stage(2 * n + 1, 0);
   for (int i = 0; i < n; ++i) {
     xx[i] = x[i] + h;
     ps.push_back(to_profile(pr, xx.data()));
     xx[i] = x[i] - h;
     ps.push_back(to_profile(pr, xx.data()));
     xx[i] = x[i];
+    first_stage[1 + 2 * i] = first_stage[2 + 2 * i] = i / 2;
   }
-  const auto evs = evaluate_profiles(*pr.setup, ps, pr.settings.threads, pr.settings.backoff);
+  const auto evs =
+      evaluate_neighbours(*pr.setup, ps, first_stage, pr.settings.threads, pr.settings.backoff);
   pr.out->simulations += static_cast<long>(evs.size());
   const int m = 1 + pr.ineq;
   pr.values.assign(m, 0.0);

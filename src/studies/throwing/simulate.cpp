@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/check.hpp"
 #include "core/dynamics.hpp"
 #include "core/integrators.hpp"
 #include "studies/throwing/tray_dynamics.hpp"
@@ -194,9 +195,14 @@ void classify(const ThrowSetup& s, ProfileEvaluation& e, double backoff) {
   e.feasible = e.finite && e.violation == 0.0;
 }
 
-ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
-                                   std::vector<ThrowSample>* samples, double backoff,
-                                   bool stop_when_infeasible) {
+namespace {
+
+// simulate_profile; with `from`, resumes at stage `first` from its state (the stages before
+// copied from its evaluation); with `save`, stores the state at every stage start
+ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profile,
+                           std::vector<ThrowSample>* samples, double backoff,
+                           bool stop_when_infeasible, const SimulationCheckpoints* from, int first,
+                           SimulationCheckpoints* save) {
   const Planner planner(setup, profile);
   const int P = profile.stages();
   const double h = profile.stage_length();
@@ -213,6 +219,26 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
   ev.stage_normal.assign(P, INFINITY);
   ev.stage_friction.assign(P, -INFINITY);
   ev.max_friction_ratio = 0.0;
+  int k0 = 0;
+  if (from) {
+    k0 = first;
+    x = from->x[k0];
+    ev.max_friction_ratio = from->friction_ratio[k0];
+    const ProfileEvaluation& b = from->evaluation;
+    for (int k = 0; k < k0; ++k) {
+      ev.stage_theta4[k] = b.stage_theta4[k];
+      ev.stage_voltage[k] = b.stage_voltage[k];
+      ev.stage_current[k] = b.stage_current[k];
+      ev.stage_power[k] = b.stage_power[k];
+      ev.stage_normal[k] = b.stage_normal[k];
+      ev.stage_friction[k] = b.stage_friction[k];
+    }
+  }
+  if (save) {
+    save->profile = profile;
+    save->x.clear();
+    save->friction_ratio.clear();
+  }
   int stage = 0;
   auto track = [&](const PointEval& pe) {
     ev.stage_theta4[stage] = std::max(ev.stage_theta4[stage], std::abs(pe.q[3]));
@@ -236,8 +262,12 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
     return false;
   };
   if (samples) samples->clear();
-  for (int k = 0; k < P && ev.finite && !ev.stopped; ++k) {
+  for (int k = k0; k < P && ev.finite && !ev.stopped; ++k) {
     stage = k;
+    if (save) {
+      save->x.push_back(x);
+      save->friction_ratio.push_back(ev.max_friction_ratio);
+    }
     for (int j = 0; j < n; ++j) {
       const double t = k * h + j * dt;
       // classical rk4 inside stage k (the accelerations are constant there)
@@ -292,6 +322,34 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
   ev.theta4_rate_final = x[3];
   classify(setup, ev, backoff);
   return ev;
+}
+
+}  // namespace
+
+ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                                   std::vector<ThrowSample>* samples, double backoff,
+                                   bool stop_when_infeasible) {
+  return simulate(setup, profile, samples, backoff, stop_when_infeasible, nullptr, 0, nullptr);
+}
+
+ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                                   SimulationCheckpoints& save, double backoff) {
+  save.evaluation = simulate(setup, profile, nullptr, backoff, false, nullptr, 0, &save);
+  return save.evaluation;
+}
+
+ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityProfile& profile,
+                                        const SimulationCheckpoints& base, int first_stage,
+                                        double backoff) {
+  const VelocityProfile& b = base.profile;
+  ARM_THROW_UNLESS(first_stage >= 0 && first_stage < profile.stages() &&
+                       profile.stages() == b.stages() && profile.tf == b.tf && profile.q0 == b.q0 &&
+                       profile.v.leftCols(first_stage + 1) == b.v.leftCols(first_stage + 1),
+                   "a simulation resumes at stage " << first_stage
+                                                    << " only if the nodes up to it are the same");
+  if (first_stage == 0 || first_stage >= static_cast<int>(base.x.size()))
+    return simulate(setup, profile, nullptr, backoff, false, nullptr, 0, nullptr);
+  return simulate(setup, profile, nullptr, backoff, false, &base, first_stage, nullptr);
 }
 
 Eigen::Vector2d VoltageHistory::at(int st, double time) const {

@@ -28,6 +28,7 @@
 #include <Eigen/Dense>
 
 #include "core/dc_motor.hpp"
+#include "core/integrators.hpp"
 #include "core/planar_chain.hpp"
 #include "core/types.hpp"
 #include "studies/throwing/profile.hpp"
@@ -133,6 +134,30 @@ struct ThrowSample {
 ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
                                    std::vector<ThrowSample>* samples = nullptr,
                                    double backoff = 0.0, bool stop_when_infeasible = false);
+
+/// A simulation's state at the start of every stage (simulate_profile's `save`): a profile
+/// that differs from it only in later nodes resumes there (simulate_profile_from).
+struct SimulationCheckpoints {
+  VelocityProfile profile;             ///< the profile simulated
+  std::vector<core::OdeState> x;       ///< (5) passive angles, rates and energy at stage k's start
+  std::vector<double> friction_ratio;  ///< max |F_t| / N over the stages before k
+  ProfileEvaluation evaluation;        ///< the full simulation's (its stage-wise maxima)
+};
+
+/// simulate_profile(setup, profile, nullptr, backoff) that also stores, in `save`, the
+/// state at the start of every stage it reaches.
+ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfile& profile,
+                                   SimulationCheckpoints& save, double backoff = 0.0);
+
+/// simulate_profile(setup, profile, nullptr, backoff) for a profile whose nodes 0 ..
+/// first_stage are those of base.profile: stages 0 .. first_stage - 1 are then the same
+/// computation, so the simulation resumes at stage first_stage from base's state and gives
+/// the full simulation's evaluation bit for bit (a central-difference neighbour of node k
+/// resumes at stage k - 1). Simulates from t = 0 if base did not reach that stage.
+/// @throws std::invalid_argument if those nodes (or tf, q0) differ from base.profile's.
+ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityProfile& profile,
+                                        const SimulationCheckpoints& base, int first_stage,
+                                        double backoff = 0.0);
 
 /// Contact forces of the tray on the ball (N) at state (q, qd, qdd) of the chain
 /// (docs/throwing.md): {normal N, tangential F_t}.
