@@ -10,12 +10,16 @@
 
 namespace armstudy::app {
 
-/// The case's solve time on one core estimated from its loader's demands (work divided by
-/// the work a core does per second); 0 when no demand says.
-double estimated_solve_seconds(const LoadedCase& c);
+/// Frames a core renders per second, about (the bundled cases, 640 x 480 px, no shadows).
+inline constexpr double kFramesPerSecond = 40.0;
 
-/// Indices into `cases`, the longest estimated solve first; cases of equal estimate keep
-/// their order.
-std::vector<size_t> longest_first(const std::vector<LoadedCase>& cases);
+/// The case's time on one core estimated from its loader's demands: the work divided by
+/// the work a core does per second, plus, when `render`, the frames it renders at
+/// kFramesPerSecond. 0 when no demand says.
+double estimated_seconds(const LoadedCase& c, bool render);
+
+/// Indices into `cases`, the longest estimate first; cases of equal estimate keep their
+/// order.
+std::vector<size_t> longest_first(const std::vector<LoadedCase>& cases, bool render);
 
 }  // namespace armstudy::app

@@ -35,6 +35,9 @@ struct Demand {
   /// About how much of `work` one core does per second (measured on the bundled cases);
   /// a run starts its longest cases first by it. 0 when unknown.
   double work_per_second = 0;
+  /// About how many frames the study renders (its motions' animations and strips, a
+  /// locus pose counted as a frame); with work_per_second, it orders a run's cases.
+  double frames_rendered = 0;
   double memory_bytes = 0;  ///< of the solve (frames are added from `render:`)
   int strip_frames = 0;     ///< frames of the study's largest strip, beyond `render.frames`
   YAML::Mark mark;          ///< where to report it (the study's section)

@@ -49,7 +49,9 @@ studies::PendulumSpec load_pendulum_spec(Map& root) {
     d.unit = "output samples";
     d.work = s.duration / s.sample_step + snapshots;
     d.work_budget = 1e7;
-    d.work_per_second = 3e4;          // the bundled case: 416 samples in 0.012 s
+    d.work_per_second = 3e4;  // the bundled case: 416 samples in 0.012 s
+    // the animation, and every snapshot in the strip and the locus (fainter poses too)
+    d.frames_rendered = 40.0 + 3.0 * snapshots;
     d.memory_bytes = d.work * 300.0;  // time, states, energies and the ball's path per sample
     d.detail = format_number(d.work) + " samples of ~300 B";
     d.strip_frames = static_cast<int>(snapshots);

@@ -36,7 +36,8 @@ Demand placement_demand(const studies::placement::Spec& spec, const YAML::Mark& 
   d.unit = "trajectory samples";
   d.work = candidates * pairs * spec.samples;
   d.work_budget = 1e10;
-  d.work_per_second = 9e7;  // the bundled cases: 6.2e7 estimated samples in 0.7 s
+  d.work_per_second = 9e7;           // the bundled cases: 6.2e7 estimated samples in 0.7 s
+  d.frames_rendered = pairs * 45.0;  // each optimum's animation (31 frames) and two strips
   // per candidate: its line and checks (~64 B) and one metrics record (56 B) and a status
   // byte per pair; the program tables hold ~100 B per sample. Measured (nx_s 500,
   // phi_step_deg 0.1, samples 21): 525 MB estimated, 422 MB peak resident; the work counts

@@ -189,7 +189,7 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   }
   armstudy::app::ProgressReporter progress(stderr, armstudy::app::stderr_is_terminal());
   // the longest cases first, so that each core ends on a short one
-  const std::vector<size_t> order = armstudy::app::longest_first(cases);
+  const std::vector<size_t> order = armstudy::app::longest_first(cases, options.render);
   std::atomic<size_t> next{0};
   std::mutex mu;
   int worst = kExitDone;

@@ -25,39 +25,49 @@ std::vector<LoadedCase> bundled_cases() {
   return cases;
 }
 
-std::vector<std::string> names_in_order(const std::vector<LoadedCase>& cases) {
+std::vector<std::string> names_in_order(const std::vector<LoadedCase>& cases, bool render) {
   std::vector<std::string> names;
-  for (const size_t i : armstudy::app::longest_first(cases)) names.push_back(cases[i].info.name);
+  for (const size_t i : armstudy::app::longest_first(cases, render))
+    names.push_back(cases[i].info.name);
   return names;
 }
 
 TEST(RunOrder, EveryCaseRunsOnceLongestEstimateFirst) {
   const auto cases = bundled_cases();
   ASSERT_GE(cases.size(), 10u);
-  const auto order = armstudy::app::longest_first(cases);
+  const auto order = armstudy::app::longest_first(cases, true);
   std::vector<size_t> sorted = order;
   std::sort(sorted.begin(), sorted.end());
   for (size_t i = 0; i < sorted.size(); ++i) EXPECT_EQ(sorted[i], i);
   for (size_t k = 1; k < order.size(); ++k)
-    EXPECT_GE(armstudy::app::estimated_solve_seconds(cases[order[k - 1]]),
-              armstudy::app::estimated_solve_seconds(cases[order[k]]))
+    EXPECT_GE(armstudy::app::estimated_seconds(cases[order[k - 1]], true),
+              armstudy::app::estimated_seconds(cases[order[k]], true))
         << cases[order[k - 1]].info.name << " before " << cases[order[k]].info.name;
   for (const auto& c : cases)
-    EXPECT_GT(armstudy::app::estimated_solve_seconds(c), 0) << c.info.name;
+    EXPECT_GT(armstudy::app::estimated_seconds(c, true), 0) << c.info.name;
 }
 
-TEST(RunOrder, TheThrowingOptimisationStartsBeforeThePendulumAndEqualCasesKeepTheirOrder) {
-  const auto names = names_in_order(bundled_cases());
-  const auto at = [&](const std::string& n) {
-    return std::find(names.begin(), names.end(), n) - names.begin();
-  };
-  // the IDP and SLSQP throw is the longest solve of the bundled set; the pendulum's the shortest
-  EXPECT_EQ(names.front(), "throwing");
-  EXPECT_EQ(names.back(), "pendulum");
-  // the placement examples ask for the same sweep: they keep their name order
-  EXPECT_LT(at("placement-example-2"), at("placement-example-3"));
-  EXPECT_LT(at("placement-example-3"), at("placement-example-4"));
-  EXPECT_LT(at("placement-example-4"), at("placement-example-5"));
+TEST(RunOrder, TheThrowingOptimisationStartsFirstAndEqualCasesKeepTheirOrder) {
+  const auto cases = bundled_cases();
+  for (const bool render : {false, true}) {
+    const auto names = names_in_order(cases, render);
+    const auto at = [&](const std::string& n) {
+      return std::find(names.begin(), names.end(), n) - names.begin();
+    };
+    // the IDP and SLSQP throw is the longest case of the bundled set
+    EXPECT_EQ(names.front(), "throwing");
+    // the placement examples ask for the same sweep and frames: they keep their name order
+    EXPECT_LT(at("placement-example-2"), at("placement-example-3"));
+    EXPECT_LT(at("placement-example-3"), at("placement-example-4"));
+    EXPECT_LT(at("placement-example-4"), at("placement-example-5"));
+    if (render) {
+      // four optima's animations and strips: before the one-motion time-optimal cases
+      EXPECT_LT(at("placement-example-5"), at("time-optimal-source"));
+    } else {
+      // the pendulum's solve is the shortest
+      EXPECT_EQ(names.back(), "pendulum");
+    }
+  }
 }
 
 TEST(RunOrder, MoreIdpIterationsEstimateALongerSolve) {
@@ -71,8 +81,8 @@ TEST(RunOrder, MoreIdpIterationsEstimateALongerSolve) {
   const int iterations = std::stoi(text.substr(p + key.size(), end - p - key.size()));
   text.replace(p, end - p, key + " " + std::to_string(2 * iterations));
   const LoadedCase more = armstudy::app::load_case_text(text, path);
-  EXPECT_GT(armstudy::app::estimated_solve_seconds(more),
-            1.5 * armstudy::app::estimated_solve_seconds(base));
+  EXPECT_GT(armstudy::app::estimated_seconds(more, false),
+            1.5 * armstudy::app::estimated_seconds(base, false));
 }
 
 }  // namespace
