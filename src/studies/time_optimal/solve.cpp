@@ -60,7 +60,18 @@ std::string path_trouble(const Problem& pb, int probes,
     return e ? e->text : "";
   }
   const std::vector<double> probe = make_nodes(pb.path, probes);
-  const auto margin = [&](double s) { return workspace_margin(pb.chain, pb.path.tip(), s); };
+  // workspace_margin's operations with the base's rotation taken once (it takes std::cos and
+  // std::sin of the base angle at every call): the same numbers
+  ARM_THROW_UNLESS(pb.chain.num_links() == 2,
+                   "time-optimal arm has " << pb.chain.num_links() << " links; should have 2");
+  const double cb = std::cos(pb.chain.base_angle), sb = std::sin(pb.chain.base_angle);
+  Eigen::Matrix2d rt;
+  rt << cb, sb, -sb, cb;
+  const double l1 = pb.chain.links[0].length, l2 = pb.chain.links[1].length;
+  const auto margin = [&](double s) {
+    const Eigen::Vector2d p = rt * (pb.path.tip().at(s).p - pb.chain.base);
+    return core::reach_2link(l1, l2, p).margin;
+  };
   size_t worst = 0, first_out = probe.size(), last_out = 0;
   std::vector<double> m(probe.size());
   for (size_t k = 0; k < probe.size(); ++k) {
