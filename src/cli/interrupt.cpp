@@ -22,6 +22,7 @@ void install_interrupt_cleanup() {
     int sig = 0;
     while (::sigwait(&set, &sig) != 0) {
     }
+    report::stop_scratch();  // before the browsers die and let the threads that wait on them go
     report::kill_browsers();
     report::remove_own_scratch();  // waits for a folder swap under way to finish
     std::fprintf(stderr,

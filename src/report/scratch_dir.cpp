@@ -40,6 +40,7 @@ struct Scratch {
 struct Registry {
   std::mutex mu;
   std::map<fs::path, Scratch> by_dir;  // canonical dir -> its scratch folder
+  bool stopping = false;               // stop_scratch(): no new scratch folder
 };
 Registry& registry() {
   static Registry* r = new Registry;
@@ -229,7 +230,13 @@ std::mutex& swap_mutex() {
 fs::path scratch_dir(const fs::path& dir) {
   const fs::path key = canonical_dir(dir);
   Registry& r = registry();
-  std::lock_guard<std::mutex> lock(r.mu);
+  std::unique_lock<std::mutex> lock(r.mu);
+  if (r.stopping) {
+    // the process is stopping on a signal, whose clean-up ends it: a folder made now would
+    // outlive it, so wait for the end
+    lock.unlock();
+    for (;;) ::pause();
+  }
   if (auto it = r.by_dir.find(key); it != r.by_dir.end()) return it->second.path;
   static std::once_flag once;
   std::call_once(once, [] { std::atexit(remove_at_exit); });
@@ -259,6 +266,12 @@ fs::path scratch_dir(const fs::path& dir) {
   }
   throw std::runtime_error("cannot set up the temporary folder " + path.string() +
                            ": other runs kept removing it");
+}
+
+void stop_scratch() {
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mu);
+  r.stopping = true;
 }
 
 void remove_own_scratch() {

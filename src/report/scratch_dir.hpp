@@ -24,6 +24,12 @@ const std::string& process_tag();
 /// @throws std::runtime_error naming the folder and the system's reason.
 std::filesystem::path scratch_dir(const std::filesystem::path& dir);
 
+/// From now on no scratch folder is made: a thread that asks for one waits until the process
+/// ends. A signal's clean-up calls it first, so that another thread (one that the stopped
+/// browser let go on, say) cannot make a folder after remove_own_scratch() and before the
+/// exit.
+void stop_scratch();
+
 /// Empties and removes every scratch folder of this process, first moving each earlier
 /// report waiting in `old/` back into place when no report of that name is there. Takes
 /// swap_mutex(), so a folder swap is never cut in two.
