@@ -26,6 +26,23 @@ struct DpSolution {
   bool feasible() const { return std::isfinite(cost); }
 };
 
+/// The forward read-out of a finished backward recursion into `sol`: from the first
+/// node's best state (the lowest of equal costs) along each state's successor; value[k][i]
+/// is the least cost from state i at node k to the end (+inf: none), next[k][i] its
+/// successor. Leaves `sol` without a path when no first state reaches the end.
+inline void read_out_staged_dp(const std::vector<std::vector<double>>& value,
+                               const std::vector<std::vector<int>>& next, DpSolution& sol) {
+  const int nodes = static_cast<int>(value.size());
+  int s0 = -1;
+  for (int i = 0; i < static_cast<int>(value[0].size()); ++i)
+    if (std::isfinite(value[0][i]) && (s0 < 0 || value[0][i] < value[0][s0])) s0 = i;
+  if (s0 < 0) return;
+  sol.cost = value[0][s0];
+  sol.states.resize(nodes);
+  sol.states[0] = s0;
+  for (int k = 0; k + 1 < nodes; ++k) sol.states[k + 1] = next[k][sol.states[k]];
+}
+
 /// Minimises sum_k cost(k, s_k, s_{k+1}) over state paths s_0..s_K with 0 <= s_k < levels[k],
 /// trying from state i at node k only the successors j in candidates(k, i) = [first, last)
 /// (clamped to the node's states): a caller that knows every other transition is forbidden
@@ -71,15 +88,7 @@ DpSolution solve_staged_dp(const std::vector<int>& levels, Cost&& cost, Candidat
       next[k][i] = arg;
     }
   }
-  // forward read-out from the best first state
-  int s0 = -1;
-  for (int i = 0; i < levels[0]; ++i)
-    if (std::isfinite(value[0][i]) && (s0 < 0 || value[0][i] < value[0][s0])) s0 = i;
-  if (s0 < 0) return sol;
-  sol.cost = value[0][s0];
-  sol.states.resize(nodes);
-  sol.states[0] = s0;
-  for (int k = 0; k + 1 < nodes; ++k) sol.states[k + 1] = next[k][sol.states[k]];
+  read_out_staged_dp(value, next, sol);
   return sol;
 }
 

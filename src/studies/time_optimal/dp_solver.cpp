@@ -281,14 +281,7 @@ core::opt::DpSolution pruned_recursion(const std::vector<int>& levels, Time&& ti
       next[k][i] = arg;
     }
   }
-  int s0 = -1;
-  for (int i = 0; i < levels[0]; ++i)
-    if (std::isfinite(value[0][i]) && (s0 < 0 || value[0][i] < value[0][s0])) s0 = i;
-  if (s0 < 0) return sol;
-  sol.cost = value[0][s0];
-  sol.states.resize(nodes);
-  sol.states[0] = s0;
-  for (int k = 0; k + 1 < nodes; ++k) sol.states[k + 1] = next[k][sol.states[k]];
+  core::opt::read_out_staged_dp(value, next, sol);
   return sol;
 }
 }  // namespace
