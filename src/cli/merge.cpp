@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "app/run_case.hpp"
+#include "report/markdown.hpp"
 #include "report/number_format.hpp"
 #include "report/results_fields.hpp"
 #include "report/results_record.hpp"
@@ -38,19 +39,7 @@ std::string xml_escape(const std::string& s) {
   return o;
 }
 
-std::string md_cell(std::string s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '|')
-      o += "\\|";
-    else if (c == '\n')
-      o += ' ';
-    else
-      o += c;
-  }
-  return o;
-}
-
+using report::md_cell;
 using report::ResultsRecord;
 
 // the case ended as it expects

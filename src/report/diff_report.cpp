@@ -6,6 +6,7 @@
 
 #include "cases/case_info.hpp"
 #include "report/case_report.hpp"
+#include "report/markdown.hpp"
 #include "report/number_format.hpp"
 #include "report/page.hpp"
 
@@ -156,19 +157,6 @@ std::string renderer_note(const CaseDiff& c) {
   if (base.empty()) return "";
   return "The runs rendered with different renderers (base: " + base + "; new: " + now +
          "): frames may differ because of the machine, not the change.";
-}
-
-std::string md_cell(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '|')
-      o += "\\|";
-    else if (c == '\n')
-      o += ' ';
-    else
-      o += c;
-  }
-  return o;
 }
 
 std::string tolerances_sentence(const RunDiff& d) {
