@@ -12,7 +12,7 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
   if (std::isnan(chain.gravity)) chain.gravity = fallback.gravity;
   auto arm = root.map("arm");
   if (!arm) return chain;
-  const size_t errors_before = arm->diag().errors().size();
+  const size_t errors_before = arm->diag().count();
 
   auto links = arm->seq("links");
   if (!links) {
@@ -92,7 +92,7 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
     }
   }
   arm->finish();
-  if (arm->diag().errors().size() != errors_before) return fallback;
+  if (arm->diag().count() != errors_before) return fallback;
   try {
     return core::make_chain(chain);
   } catch (const std::invalid_argument& e) {

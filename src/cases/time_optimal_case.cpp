@@ -275,9 +275,9 @@ void load_dp(Map& t, to::DpSettings* dp) {
 
 studies::time_optimal::Spec load_time_optimal(Map& root) {
   to::Spec spec;
-  const size_t errors_before = root.diag().errors().size();
+  const size_t errors_before = root.diag().count();
   spec.chain = load_arm(root, to::default_arm(), 0);
-  const bool arm_ok = root.diag().errors().size() == errors_before;
+  const bool arm_ok = root.diag().count() == errors_before;
   const int joints = spec.chain.num_links();
   if (arm_ok && joints < 2)
     root.error("arm", "'arm.links' has " + std::to_string(joints) + " link; expected 2 to " +

@@ -43,6 +43,19 @@ std::string all(const Loaded& l) {
   return s;
 }
 
+// a file with more errors than are shown before its arm: a bad arm is still noticed (the
+// error count, not the shown errors, says so) and the study gets the default two-link arm
+TEST(PlacementCase, ABadArmAfterTheShownErrorsFallsBackToTheTwoLinkArm) {
+  Diagnostics d("c.yaml");
+  for (size_t i = 0; i < kMaxErrors; ++i) d.error(YAML::Mark::null_mark(), "earlier error");
+  const YAML::Node n =
+      YAML::Load("arm:\n  links:\n    - not a link\nplacement:\n  length_fraction: 0.5\n");
+  Map root(n, d, "");
+  const studies::placement::Spec spec = load_placement(root);
+  EXPECT_EQ(spec.chain.num_links(), 2);
+  EXPECT_GT(d.count(), kMaxErrors);
+}
+
 TEST(PlacementCase, MinimalCaseGetsTheThesisArmAndDocumentedDefaults) {
   const Loaded l = load("placement:\n  length_fraction: 0.5\n");
   ASSERT_TRUE(l.errors.empty()) << all(l);
