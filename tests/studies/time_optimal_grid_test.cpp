@@ -167,5 +167,40 @@ TEST(TimeOptimalGrid, WorkspaceMessageNamesTheWorstPointWithItsExcess) {
   EXPECT_TRUE(has(res.message, "its worst point")) << res.message;
 }
 
+// A coarse grid overshoots a limit between its check points: the dense re-check doubles
+// them there and solves again. The halved grid of the convergence check is then solved with
+// the doubled check points (the study solves it on a second thread beside the re-check with
+// the first ones, and must not keep that answer).
+TEST(TimeOptimalGrid, TheHalvedGridIsSolvedWithTheCheckPointsTheReCheckDoubled) {
+  Spec spec = exact_only({1.6, 0.4}, {0.4, 1.6}, 21);
+  spec.chain = default_arm(1.0, 1.0);  // (the anchor problem's arm)
+  spec.exact.checks_per_interval = 1;
+  spec.velocity_limit = Eigen::Vector2d(2.0, 2.0);
+  spec.torque_limit = Eigen::Vector2d(10.0, 10.0);
+  const Result res = solve(spec);
+  ASSERT_EQ(res.status, Status::kSolved) << res.message;
+  const SolverResult& exact = res.solvers.front();
+  const std::vector<int>& checks = exact.checks_per_interval;
+  ASSERT_EQ(checks.size(), 20u);
+  int doubled = 0;
+  for (int c : checks) doubled += c > 1;
+  ASSERT_GT(doubled, 0) << "the re-check should have doubled some check points";
+  EXPECT_TRUE(has(exact.method, "where the dense re-check found")) << exact.method;
+  // the halved grid, independently: every interval split, both halves with its checks
+  const Problem pb = make_problem(spec, res.limits);
+  std::vector<double> fine;
+  for (size_t k = 0; k < exact.node_s.size(); ++k) {
+    if (k > 0) fine.push_back(0.5 * (exact.node_s[k - 1] + exact.node_s[k]));
+    fine.push_back(exact.node_s[k]);
+  }
+  std::vector<int> fine_checks, first_checks(fine.size() - 1, 1);
+  for (size_t i = 0; i + 1 < fine.size(); ++i) fine_checks.push_back(checks[i / 2]);
+  const SolverOutput refined = solve_exact_reference(pb, fine, fine_checks);
+  const SolverOutput stale = solve_exact_reference(pb, fine, first_checks);
+  ASSERT_TRUE(refined.solved && stale.solved);
+  ASSERT_NE(refined.duration, stale.duration) << "the test needs the two to differ";
+  EXPECT_EQ(res.grid.refined_duration, refined.duration);
+}
+
 }  // namespace
 }  // namespace armstudy::studies::time_optimal

@@ -69,6 +69,9 @@ struct SolverResult {
   Violation violation;                          ///< over the full dense resampling
   long evaluations = 0;                         ///< DP transitions / Complex objective calls
   int iterations = 0;                           ///< Complex reflections
+  /// exact only: check points per grid interval the answer was solved with (the case's
+  /// checks_per_interval, doubled where the dense re-check found a limit overshot)
+  std::vector<int> checks_per_interval;
 
   /// The solver in words, for sentences and labels ("dp_joint1" is a results.json key).
   std::string words() const { return solver_words(name); }

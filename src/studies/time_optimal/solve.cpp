@@ -5,11 +5,13 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "core/check.hpp"
 #include "core/ik2.hpp"
+#include "studies/side_thread.hpp"
 #include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solvers.hpp"
 
@@ -145,40 +147,44 @@ std::string path_trouble(const Problem& pb, int probes,
 // the candidates within 1e-12 of the smallest, Problem::at gives their values.
 class MinSinQ2 {
  public:
-  MinSinQ2(const Problem& pb, const std::vector<double>& s) : pb_(pb), s_(s), fast_(s.size(), 1.0) {
+  MinSinQ2(const Problem& pb, std::vector<double> s)
+      : pb_(&pb), s_(std::move(s)), fast_(s_.size(), 1.0) {
     if (pb.path.joint_space()) return;
     const TipRateEvaluator rates(pb.chain, pb.path.tip(), pb.configuration);
-    for (size_t k = 0; k < s.size(); ++k) {
+    for (size_t k = 0; k < s_.size(); ++k) {
       TipRates r;
-      fast_[k] = rates.at(s[k], k + 1 == s.size(), &r) ? std::abs(r.s2) : 0.0;
+      fast_[k] = rates.at(s_[k], k + 1 == s_.size(), &r) ? std::abs(r.s2) : 0.0;
     }
   }
   double operator()(size_t lo, size_t hi) const {
-    if (pb_.path.joint_space()) return 1.0;
+    if (pb_->path.joint_space()) return 1.0;
     double least = std::numeric_limits<double>::infinity();
     for (size_t k = lo; k <= hi; ++k) least = std::min(least, fast_[k]);
     double out = std::numeric_limits<double>::infinity();
     for (size_t k = lo; k <= hi; ++k)
       if (fast_[k] <= least + 1e-12 * std::max(1.0, least))
-        out = std::min(out, std::abs(pb_.at(s_[k], k + 1 == s_.size()).sin_q2));
+        out = std::min(out, std::abs(pb_->at(s_[k], k + 1 == s_.size()).sin_q2));
     return out;
   }
 
  private:
-  const Problem& pb_;
-  const std::vector<double>& s_;
+  const Problem* pb_;
+  std::vector<double> s_;
   std::vector<double> fast_;
 };
 
-// The exact solution on the case's grid against the same problem on the grid with every
-// interval halved: the relative change and where it lies.
-GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
-                                 const std::vector<int>& checks, double tolerance,
-                                 ExactPointCache* points) {
-  GridConvergence g;
-  g.computed = true;
-  g.tolerance = tolerance;
-  const std::vector<double>& grid = exact.node_s;
+// The exact solver on the case's grid with every interval halved, both halves of interval
+// k with its check points, and |sin q2| at the refined grid's points: what grid_convergence
+// compares the case's solution with. It does not depend on that solution, so the study
+// solves it on a second thread while the solution is re-checked.
+struct RefinedGrid {
+  std::vector<int> checks;  // the case grid's check points per interval it was solved with
+  std::vector<double> fine;
+  SolverOutput solution;
+  MinSinQ2 min_sin_q2;
+};
+RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& grid,
+                               const std::vector<int>& checks, ExactPointCache* points) {
   const int n = static_cast<int>(grid.size());
   std::vector<double> fine;
   fine.reserve(2 * n - 1);
@@ -186,15 +192,30 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
     if (k > 0) fine.push_back(0.5 * (grid[k - 1] + grid[k]));
     fine.push_back(grid[k]);
   }
+  std::vector<int> fine_checks(fine.size() - 1);
+  for (size_t i = 0; i < fine_checks.size(); ++i) fine_checks[i] = checks[i / 2];
+  SolverOutput o = solve_exact(pb, fine, fine_checks, points);
+  MinSinQ2 min_sin_q2(pb, fine);
+  return RefinedGrid{checks, std::move(fine), std::move(o), std::move(min_sin_q2)};
+}
+
+// The exact solution on the case's grid against the same problem on the grid with every
+// interval halved (`refined`, solved with the solution's check points): the relative change
+// and where it lies.
+GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
+                                 const RefinedGrid& refined, double tolerance) {
+  GridConvergence g;
+  g.computed = true;
+  g.tolerance = tolerance;
+  const std::vector<double>& grid = exact.node_s;
+  const int n = static_cast<int>(grid.size());
+  const std::vector<double>& fine = refined.fine;
   g.grid_points = n;
   g.refined_points = static_cast<int>(fine.size());
   g.duration = exact.duration;
-  // both halves of interval k keep its check points per interval
-  std::vector<int> fine_checks(fine.size() - 1);
-  for (size_t i = 0; i < fine_checks.size(); ++i) fine_checks[i] = checks[i / 2];
-  const SolverOutput o = solve_exact(pb, fine, fine_checks, points);
+  const SolverOutput& o = refined.solution;
   // |sin q2| along the path (at the refined grid's points); the smallest over a range of them
-  const MinSinQ2 min_sin_q2(pb, fine);
+  const MinSinQ2& min_sin_q2 = refined.min_sin_q2;
   g.path_min_sin_q2 = std::min(g.path_min_sin_q2, min_sin_q2(0, fine.size() - 1));
   std::ostringstream os;
   os.precision(4);
@@ -339,7 +360,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   report(0.05, "exact solver (reachability)");
   const std::vector<double> grid = make_nodes(pb.path, spec.exact.grid_points - 1);
   std::vector<int> exact_checks(grid.size() - 1, spec.exact.checks_per_interval);
-  ExactPointCache points(pb);  // the re-solves and the halved grid evaluate only new points
+  ExactPointCache points(pb);         // the re-solves and the halved grid evaluate only new points
+  SideTask<RefinedGrid> speculative;  // (waited for by its destructor on every way out)
   {
     // limits hold at the check points of each interval; between them a limit may be
     // overshot by O(h^2). While the dense resampling of the whole answer finds a limit
@@ -353,8 +375,15 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<double> interval_worst;
     SolverOutput o = solve_exact(pb, grid, exact_checks, &points);
+    // the halved grid on a second thread meanwhile, with these check points (solved again
+    // below if the re-check doubles any); it owns the point cache until it is waited for
+    if (o.solved)
+      speculative = SideTask<RefinedGrid>([&pb, &grid, &points, checks = exact_checks] {
+        return solve_refined_grid(pb, grid, checks, &points);
+      });
     finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance; ++k) {
+      if (speculative.valid()) speculative.wait();  // (the cache is this thread's again)
       bool refined = false;
       // (a re-solve can move the overshoot next door: hence the wider second round)
       const double over = k == 0 ? kExactTolerance : 0.0;
@@ -375,6 +404,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     }
     r.run_time = seconds_since(t0);
+    r.checks_per_interval = exact_checks;
     const int base = spec.exact.checks_per_interval;
     int more = 0, most = base;
     for (int c : exact_checks) {
@@ -397,8 +427,15 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   // (no reference into res.solvers: it grows below)
   const double exact_duration = res.solvers.front().duration;
   report(0.1, "exact solver on the refined grid");
-  res.grid =
-      grid_convergence(pb, res.solvers.front(), exact_checks, spec.exact.grid_tolerance, &points);
+  {
+    std::optional<RefinedGrid> refined;
+    if (speculative.valid()) {
+      RefinedGrid r = speculative.get();
+      if (r.checks == exact_checks) refined.emplace(std::move(r));
+    }
+    if (!refined) refined.emplace(solve_refined_grid(pb, grid, exact_checks, &points));
+    res.grid = grid_convergence(pb, res.solvers.front(), *refined, spec.exact.grid_tolerance);
+  }
   max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
   res.mvc_s = grid;
   res.path_p.resize(2, grid.size());
@@ -495,12 +532,14 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     row.excess = o.duration / exact_duration - 1;
     row.worst_violation = v.worst;
   };
-  {
+  if (res.convergence.size() > 1) {
     std::thread helper([&] {
       for (size_t i = 1; i < res.convergence.size(); i += 2) run_row(i);
     });
     for (size_t i = 0; i < res.convergence.size(); i += 2) run_row(i);
     helper.join();
+  } else if (!res.convergence.empty()) {
+    run_row(0);
   }
 
   // the exact motion at equal time steps: inside interval k, s = s_k + s'_k tau + u tau^2 / 2

@@ -1,0 +1,42 @@
+// The study's side thread: a task runs on another thread, the same one for every task of a
+// caller (its thread_local buffers stay warm), its exception reaches get(), and a task is
+// finished before its SideTask goes out of scope.
+#include "studies/side_thread.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+namespace armstudy::studies {
+namespace {
+
+TEST(SideThread, TasksOfOneCallerRunOnOneOtherThread) {
+  SideTask<std::thread::id> a([] { return std::this_thread::get_id(); });
+  SideTask<std::thread::id> b([] { return std::this_thread::get_id(); });
+  const std::thread::id ia = a.get(), ib = b.get();
+  EXPECT_NE(ia, std::this_thread::get_id());
+  EXPECT_EQ(ia, ib);
+}
+
+TEST(SideThread, TheTasksExceptionReachesGet) {
+  SideTask<int> t([]() -> int { throw std::runtime_error("side failure"); });
+  EXPECT_THROW(t.get(), std::runtime_error);
+}
+
+TEST(SideThread, ATaskIsDoneBeforeItsSideTaskGoesOutOfScope) {
+  std::atomic<bool> done{false};
+  {
+    SideTask<int> t([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      done = true;
+      return 1;
+    });
+  }
+  EXPECT_TRUE(done.load());
+}
+
+}  // namespace
+}  // namespace armstudy::studies
