@@ -5,6 +5,8 @@
 // 16-frame strip on one core and on two.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+
 #include <sched.h>
 
 #include <cmath>
@@ -152,6 +154,53 @@ BENCHMARK(BM_RealScene640x480)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(1.0);
+
+// The real scene against the minimal one in one loop: blocks of 8 frames of each in turn,
+// each block timed, so that the machine's drift (other jobs, clock changes) falls on both
+// alike; real_over_minimal is the real scene's frame rate over the minimal scene's
+// (argument: shadows).
+void BM_RealAgainstMinimalScene640x480(benchmark::State& state) {
+  RenderSettings rs;
+  rs.shadows = state.range(0) == 1;
+  SceneRenderer minimal(minimal_scene(), "minimal", rs);
+  SceneRenderer real(default_tray_scene(), "bench", rs);
+  PoseSample warm;
+  warm.q = core::JointVector::Zero(2);
+  benchmark::DoNotOptimize(minimal.frame(warm, {"warm-up", "", ""}).rgb.data());
+  benchmark::DoNotOptimize(real.frame(pose(0.0), {"warm-up", "", ""}).rgb.data());
+  constexpr int kBlock = 8;
+  double t_minimal = 0, t_real = 0;
+  int k = 0;
+  using clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    const int k0 = k;
+    const auto t0 = clock::now();
+    for (int i = 0; i < kBlock; ++i) {
+      PoseSample p;
+      p.t = 0.01 * (k++ % 80);
+      p.q = core::JointVector(2);
+      p.q << -0.8 + 1.5 * p.t, 0.3 * std::sin(6 * p.t);
+      benchmark::DoNotOptimize(minimal.frame(p, {"t = 0.000 s", "", ""}).rgb.data());
+    }
+    const auto t1 = clock::now();
+    for (int i = 0; i < kBlock; ++i)
+      benchmark::DoNotOptimize(
+          real.frame(pose(0.01 * ((k0 + i) % 80)), {"t = 0.000 s", "", ""}).rgb.data());
+    const auto t2 = clock::now();
+    t_minimal += std::chrono::duration<double>(t1 - t0).count();
+    t_real += std::chrono::duration<double>(t2 - t1).count();
+  }
+  const double frames = static_cast<double>(state.iterations()) * kBlock;
+  state.counters["minimal_fps"] = frames / t_minimal;
+  state.counters["real_fps"] = frames / t_real;
+  state.counters["real_over_minimal"] = t_minimal / t_real;
+}
+BENCHMARK(BM_RealAgainstMinimalScene640x480)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3.0);
 
 // Every thread of this process (llvmpipe's rasteriser threads included) on the first
 // `cores` CPUs it may use, for the scope's life; then back on all of them.
