@@ -345,22 +345,38 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.path_length = pb.path.length();
 
   // the path must stay in the workspace and off singular poses: check it finely
+  // (on the side thread while the exact solver starts: the solver's answer, or its failure,
+  // counts only once the path has passed)
   report(0.02, "checking the path");
-  {
-    const std::string trouble =
-        path_trouble(pb, std::max(4 * spec.exact.grid_points, 4000), spec.joint_path.range);
-    if (!trouble.empty()) {
-      res.status = Status::kUnsolvable;
-      res.message = trouble;
-      return res;
-    }
-  }
+  SideTask<std::string> path_check(
+      [&pb, probes = std::max(4 * spec.exact.grid_points, 4000), &range = spec.joint_path.range] {
+        return path_trouble(pb, probes, range);
+      });
+  const auto path_passed = [&] {
+    if (!path_check.valid()) return true;
+    const std::string trouble = path_check.get();
+    if (trouble.empty()) return true;
+    res.status = Status::kUnsolvable;
+    res.message = trouble;
+    return false;
+  };
 
   // exact solver
   report(0.05, "exact solver (reachability)");
-  const std::vector<double> grid = make_nodes(pb.path, spec.exact.grid_points - 1);
-  std::vector<int> exact_checks(grid.size() - 1, spec.exact.checks_per_interval);
-  ExactPointCache points(pb);         // the re-solves and the halved grid evaluate only new points
+  ExactPointCache points(pb);  // the re-solves and the halved grid evaluate only new points
+  const auto t_exact = std::chrono::steady_clock::now();
+  std::vector<double> grid;
+  std::vector<int> exact_checks;
+  SolverOutput first;
+  try {
+    grid = make_nodes(pb.path, spec.exact.grid_points - 1);
+    exact_checks.assign(grid.size() - 1, spec.exact.checks_per_interval);
+    first = solve_exact(pb, grid, exact_checks, &points);
+  } catch (...) {
+    if (!path_passed()) return res;  // (the solver met the path's trouble first)
+    throw;
+  }
+  if (!path_passed()) return res;
   SideTask<RefinedGrid> speculative;  // (waited for by its destructor on every way out)
   {
     // limits hold at the check points of each interval; between them a limit may be
@@ -372,9 +388,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     SolverResult r;
     r.name = "exact";
     r.intervals = static_cast<int>(grid.size()) - 1;
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = t_exact;
     std::vector<double> interval_worst;
-    SolverOutput o = solve_exact(pb, grid, exact_checks, &points);
+    SolverOutput o = std::move(first);
     // the halved grid on a second thread meanwhile, with these check points (solved again
     // below if the re-check doubles any); it owns the point cache until it is waited for
     if (o.solved)
