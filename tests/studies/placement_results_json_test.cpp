@@ -95,8 +95,12 @@ TEST(PlacementResultsJson, MapsAreRowsOfEnergiesAndStatusesOnTheNodeGrid) {
         ASSERT_LT(i, nx);
         // '-' where the line leaves the annulus, and inside the margin where the sampled
         // energy has not converged; an energy at every admissible node
-        if (st[i] == '.') EXPECT_EQ(tok, "-") << "row " << r << " col " << i;
-        if (st[i] == 'o' || st[i] == 'x') EXPECT_NE(tok, "-") << "row " << r << " col " << i;
+        if (st[i] == '.') {
+          EXPECT_EQ(tok, "-") << "row " << r << " col " << i;
+        }
+        if (st[i] == 'o' || st[i] == 'x') {
+          EXPECT_NE(tok, "-") << "row " << r << " col " << i;
+        }
         if (st[i] == 'o') {
           ++feasible;
           EXPECT_GE(std::stod(tok), 0.0);
