@@ -22,23 +22,37 @@ void check_sizes(const PlanarChain& chain, const JointVector& a, const char* nam
                                                        << chain.num_links() << " joints");
 }
 
+// M(q) and, with qd, h(q, qd) from one pose: each body's Jacobian taken once for both
+// (mass_matrix's and bias_forces' operations, in their order for each)
+void mass_and_bias(const PlanarChain& chain, const JointVector& q, const JointVector* qd,
+                   JointMatrix* M, JointVector* h) {
+  const int n = chain.num_links();
+  const ChainPose pose = forward_kinematics(chain, q);
+  *M = JointMatrix::Zero(n, n);
+  if (qd) *h = JointVector::Zero(n);
+  for_each_body(chain, [&](int link, const Eigen::Vector2d& p_L, double m, double I) {
+    if (m != 0.0) {
+      const PointJacobian J = point_jacobian(pose, link, p_L);
+      M->noalias() += m * J.transpose() * J;
+      if (qd) {
+        const PointJacobian Jd = point_jacobian_dot(pose, J, *qd, link);
+        const Eigen::Vector2d a = Jd * *qd + Eigen::Vector2d(0.0, chain.gravity);
+        h->noalias() += m * J.transpose() * a;
+      }
+    }
+    // angular Jacobian: ones for joints 0..link
+    if (I != 0.0) M->topLeftCorner(link + 1, link + 1).array() += I;
+  });
+  for (const SpinningInertia& s : chain.spinners)
+    M->noalias() += s.inertia * s.coeffs * s.coeffs.transpose();
+}
+
 }  // namespace
 
 JointMatrix mass_matrix(const PlanarChain& chain, const JointVector& q) {
   check_sizes(chain, q, "q");
-  const int n = chain.num_links();
-  const ChainPose pose = forward_kinematics(chain, q);
-  JointMatrix M = JointMatrix::Zero(n, n);
-  for_each_body(chain, [&](int link, const Eigen::Vector2d& p_L, double m, double I) {
-    if (m != 0.0) {
-      const PointJacobian J = point_jacobian(pose, link, p_L);
-      M.noalias() += m * J.transpose() * J;
-    }
-    // angular Jacobian: ones for joints 0..link
-    if (I != 0.0) M.topLeftCorner(link + 1, link + 1).array() += I;
-  });
-  for (const SpinningInertia& s : chain.spinners)
-    M.noalias() += s.inertia * s.coeffs * s.coeffs.transpose();
+  JointMatrix M;
+  mass_and_bias(chain, q, nullptr, &M, nullptr);
   return M;
 }
 
@@ -51,7 +65,7 @@ JointVector bias_forces(const PlanarChain& chain, const JointVector& q, const Jo
   for_each_body(chain, [&](int link, const Eigen::Vector2d& p_L, double m, double) {
     if (m == 0.0) return;
     const PointJacobian J = point_jacobian(pose, link, p_L);
-    const PointJacobian Jd = point_jacobian_dot(pose, qd, link, p_L);
+    const PointJacobian Jd = point_jacobian_dot(pose, J, qd, link);
     const Eigen::Vector2d a = Jd * qd + Eigen::Vector2d(0.0, chain.gravity);
     h.noalias() += m * J.transpose() * a;
   });
@@ -60,15 +74,24 @@ JointVector bias_forces(const PlanarChain& chain, const JointVector& q, const Jo
 
 JointVector inverse_dynamics(const PlanarChain& chain, const JointVector& q, const JointVector& qd,
                              const JointVector& qdd) {
+  check_sizes(chain, q, "q");
+  check_sizes(chain, qd, "qd");
   check_sizes(chain, qdd, "qdd");
-  return mass_matrix(chain, q) * qdd + bias_forces(chain, q, qd);
+  JointMatrix M;
+  JointVector h;
+  mass_and_bias(chain, q, &qd, &M, &h);
+  return M * qdd + h;
 }
 
 JointVector forward_dynamics(const PlanarChain& chain, const JointVector& q, const JointVector& qd,
                              const JointVector& tau) {
+  check_sizes(chain, q, "q");
+  check_sizes(chain, qd, "qd");
   check_sizes(chain, tau, "tau");
-  const JointMatrix M = mass_matrix(chain, q);
-  const JointVector rhs = tau - bias_forces(chain, q, qd);
+  JointMatrix M;
+  JointVector h;
+  mass_and_bias(chain, q, &qd, &M, &h);
+  const JointVector rhs = tau - h;
   return M.llt().solve(rhs);
 }
 
@@ -77,9 +100,12 @@ MixedDynamics passive_forward_dynamics(const PlanarChain& chain, const JointVect
                                        const JointVector& tau_passive) {
   check_sizes(chain, qdd_active, "qdd_active");
   check_sizes(chain, tau_passive, "tau_passive");
+  check_sizes(chain, q, "q");
+  check_sizes(chain, qd, "qd");
   const int n = chain.num_links();
-  const JointMatrix M = mass_matrix(chain, q);
-  const JointVector h = bias_forces(chain, q, qd);
+  JointMatrix M;
+  JointVector h;
+  mass_and_bias(chain, q, &qd, &M, &h);
   // index sets of active (A) and passive (P) joints
   int ia[kMaxLinks], ip[kMaxLinks];
   int na = 0, np = 0;

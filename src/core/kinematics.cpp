@@ -51,9 +51,14 @@ PointJacobian point_jacobian(const ChainPose& pose, int link, const Eigen::Vecto
 
 PointJacobian point_jacobian_dot(const ChainPose& pose, const JointVector& qd, int link,
                                  const Eigen::Vector2d& p_L) {
+  return point_jacobian_dot(pose, point_jacobian(pose, link, p_L), qd, link);
+}
+
+PointJacobian point_jacobian_dot(const ChainPose& pose, const PointJacobian& J,
+                                 const JointVector& qd, int link) {
   const int n = static_cast<int>(pose.angle.size());
   // velocity of the point and of each joint origin
-  const Eigen::Vector2d v = point_jacobian(pose, link, p_L) * qd;
+  const Eigen::Vector2d v = J * qd;
   PointJacobian Jd = PointJacobian::Zero(2, n);
   Eigen::Vector2d v_j = Eigen::Vector2d::Zero();  // joint 0 is fixed
   double omega = 0.0;                             // absolute rate of link j-1

@@ -30,6 +30,10 @@ PointJacobian point_jacobian(const ChainPose& pose, int link, const Eigen::Vecto
 /// Time derivative of point_jacobian (2 x N) along qd, m/(rad s).
 PointJacobian point_jacobian_dot(const ChainPose& pose, const JointVector& qd, int link,
                                  const Eigen::Vector2d& p_L);
+/// The same with the point's Jacobian J = point_jacobian(pose, link, p_L) given (the same
+/// numbers without computing it again).
+PointJacobian point_jacobian_dot(const ChainPose& pose, const PointJacobian& J,
+                                 const JointVector& qd, int link);
 
 /// End-effector Jacobian (2 x N).
 PointJacobian end_effector_jacobian(const PlanarChain& chain, const JointVector& q);

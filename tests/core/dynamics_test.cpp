@@ -42,6 +42,34 @@ TEST(Dynamics, InverseAndForwardDynamicsAreInverses) {
   }
 }
 
+// inverse and forward dynamics take each body's Jacobian once for M and h: the numbers of
+// mass_matrix and bias_forces (which computes h on its own) bit for bit, on every arm,
+// with its base turned too
+TEST(Dynamics, OnePassDynamicsGiveMassMatrixAndBiasForcesBitForBit) {
+  std::mt19937 rng(11);
+  for (auto arm : arm_factory()) {
+    const int n = arm.chain.num_links();
+    for (double base_angle : {0.0, 0.7}) {
+      arm.chain.base_angle = base_angle;
+      for (int trial = 0; trial < 20; ++trial) {
+        const JointVector q = random_joints(rng, n, 3.0);
+        const JointVector qd = random_joints(rng, n, 4.0);
+        const JointVector qdd = random_joints(rng, n, 10.0);
+        const JointMatrix M = mass_matrix(arm.chain, q);
+        const JointVector h = bias_forces(arm.chain, q, qd);
+        const JointVector tau = inverse_dynamics(arm.chain, q, qd, qdd);
+        const JointVector tau_two_pass = M * qdd + h;
+        const JointVector qdd_two_pass = M.llt().solve(JointVector(tau - h));
+        const JointVector qdd_one_pass = forward_dynamics(arm.chain, q, qd, tau);
+        for (int j = 0; j < n; ++j) {
+          EXPECT_EQ(tau[j], tau_two_pass[j]) << arm.name << " joint " << j;
+          EXPECT_EQ(qdd_one_pass[j], qdd_two_pass[j]) << arm.name << " joint " << j;
+        }
+      }
+    }
+  }
+}
+
 TEST(Dynamics, PassiveForwardDynamicsGivesZeroPassiveTorque) {
   std::mt19937 rng(9);
   const auto chain = testing::tray_arm();

@@ -74,7 +74,9 @@ TEST(Renderer, FramesAreNotBlankAndConsecutiveFramesDiffer) {
     EXPECT_GT(st.stddev, 10.0) << "something drawn on it";
     EXPECT_GT(st.non_background, 0.03);
     EXPECT_LT(st.non_background, 0.9);
-    if (k > 0) EXPECT_NE(img.rgb, previous.rgb) << "frame " << k;
+    if (k > 0) {
+      EXPECT_NE(img.rgb, previous.rgb) << "frame " << k;
+    }
     previous = img;
   }
 }
