@@ -84,7 +84,7 @@ void BM_TimeOptimalAnchorStudy(benchmark::State& state) {
   spec.exact.grid_points = 1001;  // 1000 intervals, as TOPP-RA's
   double duration = 0;
   // the study solves the halved grid and checks the path on a second thread: Google
-  // Benchmark's CPU time is this thread's alone, process_cpu_ms both threads' per solve
+  // Benchmark's CPU time is this thread's alone, the label both threads' per solve
   timespec c0{}, c1{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
   for (auto _ : state) {
@@ -94,9 +94,12 @@ void BM_TimeOptimalAnchorStudy(benchmark::State& state) {
   }
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
   state.counters["duration_s"] = duration;
-  state.counters["process_cpu_ms"] = 1e3 *
-                                     ((c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)) /
-                                     static_cast<double>(std::max<int64_t>(1, state.iterations()));
+  // (a label, not a counter: see BM_TimeOptimalAnchorExactRecheck)
+  char label[64];
+  std::snprintf(label, sizeof label, "process CPU %.3f ms per solve",
+                1e3 * ((c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)) /
+                    static_cast<double>(std::max<int64_t>(1, state.iterations())));
+  state.SetLabel(label);
 }
 BENCHMARK(BM_TimeOptimalAnchorStudy)->Unit(benchmark::kMillisecond);
 
