@@ -10,6 +10,7 @@
 #include "studies/pendulum/solve.hpp"
 #include "studies/throwing/idp.hpp"
 #include "studies/throwing/nlopt_solve.hpp"
+#include "studies/throwing/simulate_kernel.hpp"
 #include "studies/throwing/solve.hpp"
 
 namespace {
@@ -27,22 +28,52 @@ struct Fixture {
 };
 
 // one candidate of the default case: 16 stages x 20 (80) RK4 steps; second argument 1: the
-// same simulation through the generic chain (the reference of the one-pass tray dynamics)
+// same simulation through the generic chain (the reference of the one-pass tray dynamics);
+// third argument ThrowSetup::kernel_lanes: 0 the Planner one evaluation at a time (the
+// reference of the kernel), 1 the kernel (simulate_kernel.hpp)
 void BM_ThrowSimulateProfile(benchmark::State& state) {
   Fixture f;
   f.setup.steps_per_stage = static_cast<int>(state.range(0));
   f.setup.generic_dynamics = state.range(1) == 1;
+  f.setup.kernel_lanes = static_cast<int>(state.range(2));
   const long steps = static_cast<long>(f.setup.steps_per_stage) * f.profile.stages();
   for (auto _ : state) benchmark::DoNotOptimize(simulate_profile(f.setup, f.profile).energy);
   state.counters["rk4_steps_per_s"] = benchmark::Counter(
       static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ThrowSimulateProfile)
-    ->Args({20, 0})
-    ->Args({20, 1})
-    ->Args({80, 0})
-    ->Args({80, 1})
+    ->Args({20, 0, 0})
+    ->Args({20, 0, 1})
+    ->Args({20, 1, 0})
+    ->Args({80, 0, 0})
+    ->Args({80, 0, 1})
+    ->Args({80, 1, 0})
     ->Unit(benchmark::kMillisecond);
+
+// two candidates of the default case (eq. 8 and a neighbour), one after the other by the
+// Planner (argument 0) or the kernel (1), or both at once in the kernel's two lanes (2)
+void BM_ThrowSimulateTwo(benchmark::State& state) {
+  Fixture f;
+  VelocityProfile other = f.profile;
+  other.v(0, 5) += 0.1;
+  project_displacement(other, f.spec.release - f.spec.start);
+  const int lanes = static_cast<int>(state.range(0));
+  f.setup.kernel_lanes = lanes;
+  const long steps = 2L * f.setup.steps_per_stage * f.profile.stages();
+  for (auto _ : state) {
+    if (lanes == 2) {
+      ProfileEvaluation two[2];
+      simulate_kernel_pair(f.setup, f.profile, other, 0.0, false, two);
+      benchmark::DoNotOptimize(two[1].energy);
+    } else {
+      benchmark::DoNotOptimize(simulate_profile(f.setup, f.profile).energy);
+      benchmark::DoNotOptimize(simulate_profile(f.setup, other).energy);
+    }
+  }
+  state.counters["rk4_steps_per_s"] = benchmark::Counter(
+      static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ThrowSimulateTwo)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 void BM_ThrowReplayVoltages(benchmark::State& state) {
   Fixture f;
@@ -62,11 +93,13 @@ void BM_ThrowReplayVoltages(benchmark::State& state) {
 }
 BENCHMARK(BM_ThrowReplayVoltages)->Unit(benchmark::kMillisecond);
 
-// one IDP iteration (15 stage nodes x 8 candidates) on 1 and 2 threads; second argument 1:
-// through the generic chain
+// one IDP iteration (15 stage nodes x 5 candidates) on 1 and 2 threads; second argument 1:
+// through the generic chain; third argument ThrowSetup::kernel_lanes (0: the Planner, 1: the
+// kernel one candidate at a time, 2: two at once)
 void BM_IdpIteration(benchmark::State& state) {
   Fixture f;
   f.setup.generic_dynamics = state.range(1) == 1;
+  f.setup.kernel_lanes = static_cast<int>(state.range(2));
   IdpSettings s;
   s.iterations = 1;
   s.max_passes = 1;
@@ -78,18 +111,23 @@ void BM_IdpIteration(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(evals), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_IdpIteration)
-    ->Args({1, 0})
-    ->Args({1, 1})
-    ->Args({2, 0})
-    ->Args({2, 1})
+    ->Args({1, 0, 0})
+    ->Args({1, 0, 1})
+    ->Args({1, 0, 2})
+    ->Args({1, 1, 0})
+    ->Args({2, 0, 0})
+    ->Args({2, 0, 2})
+    ->Args({2, 1, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
 // (computed once, outside the timing), one seed on one core, or all seeds on both cores;
-// second argument 0: every candidate simulated to the end (no early stop)
+// second argument 0: every candidate simulated to the end (no early stop); third argument
+// ThrowSetup::kernel_lanes (0: the Planner, 2: the kernel, two candidates at once)
 void BM_IdpConverged(benchmark::State& state) {
   Fixture f;
+  f.setup.kernel_lanes = static_cast<int>(state.range(2));
   const Eigen::Vector2d delta = f.spec.release - f.spec.start;
   NloptSettings ns = f.spec.nlopt;
   ns.backoff = f.spec.backoff;
@@ -114,9 +152,11 @@ void BM_IdpConverged(benchmark::State& state) {
   state.counters["converged_fraction"] = runs ? static_cast<double>(converged) / runs : 0.0;
 }
 BENCHMARK(BM_IdpConverged)
-    ->Args({1, 0})
-    ->Args({1, 1})
-    ->Args({2, 1})
+    ->Args({1, 0, 0})
+    ->Args({1, 1, 0})
+    ->Args({1, 1, 2})
+    ->Args({2, 1, 0})
+    ->Args({2, 1, 2})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);
@@ -124,9 +164,11 @@ BENCHMARK(BM_IdpConverged)
 // one central-difference gradient of SLSQP on one core (nlopt_solve.cpp's compute): the
 // default case's eq. 8 profile and its 2 x 30 neighbours (fd step 1e-5 rad/s); argument 0:
 // every neighbour simulated from t = 0 (evaluate_profiles), 1: resumed from the point's
-// stage checkpoints (evaluate_neighbours), the same evaluations bit for bit
+// stage checkpoints (evaluate_neighbours), the same evaluations bit for bit; second argument
+// ThrowSetup::kernel_lanes (0: the Planner, 2: the kernel, two neighbours at once)
 void BM_SlsqpGradient(benchmark::State& state) {
   Fixture f;
+  f.setup.kernel_lanes = static_cast<int>(state.range(1));
   std::vector<VelocityProfile> ps{f.profile};
   std::vector<int> first{0};
   for (int k = 1; k < f.profile.stages(); ++k)
@@ -148,7 +190,11 @@ void BM_SlsqpGradient(benchmark::State& state) {
   state.counters["simulations_per_s"] =
       benchmark::Counter(static_cast<double>(sims), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_SlsqpGradient)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SlsqpGradient)
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({1, 2})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_PendulumTwoSeconds(benchmark::State& state) {
   const PendulumSpec spec = default_pendulum_spec();

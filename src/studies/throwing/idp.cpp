@@ -6,6 +6,8 @@
 #include <random>
 #include <thread>
 
+#include "studies/throwing/simulate_kernel.hpp"
+
 namespace armstudy::studies {
 
 bool better_profile(const ProfileEvaluation& a, const ProfileEvaluation& b) {
@@ -42,8 +44,24 @@ std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
                                                  int threads, double backoff,
                                                  bool stop_when_infeasible) {
   std::vector<ProfileEvaluation> out(profiles.size());
+  const int n = static_cast<int>(profiles.size());
+  if (setup.kernel_lanes >= 2 && kernel_applies(setup)) {
+    // two profiles at once (the same evaluations); each pair of slots written by one thread
+    parallel_for(0, (n + 1) / 2, threads, [&](int q) {
+      const int i = 2 * q;
+      if (i + 1 == n) {
+        out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
+        return;
+      }
+      ProfileEvaluation two[2];
+      simulate_kernel_pair(setup, profiles[i], profiles[i + 1], backoff, stop_when_infeasible, two);
+      out[i] = std::move(two[0]);
+      out[i + 1] = std::move(two[1]);
+    });
+    return out;
+  }
   // each slot written by exactly one thread
-  parallel_for(0, static_cast<int>(profiles.size()), threads, [&](int i) {
+  parallel_for(0, n, threads, [&](int i) {
     out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
   });
   return out;
@@ -57,8 +75,23 @@ std::vector<ProfileEvaluation> evaluate_neighbours(const ThrowSetup& setup,
   if (profiles.empty()) return out;
   SimulationCheckpoints base;
   out[0] = simulate_profile(setup, profiles[0], base, backoff);
-  parallel_for(1, static_cast<int>(profiles.size()), threads, [&](int i) {
-    out[i] = simulate_profile_from(setup, profiles[i], base, first_stage[i], backoff);
+  // neighbours side by side in pairs of the same first stage (the +h and -h of one rate)
+  std::vector<int> pair_start;
+  const int n = static_cast<int>(profiles.size());
+  for (int i = 1; i < n;) {
+    pair_start.push_back(i);
+    i += (i + 1 < n && first_stage[i + 1] == first_stage[i]) ? 2 : 1;
+  }
+  parallel_for(0, static_cast<int>(pair_start.size()), threads, [&](int q) {
+    const int i = pair_start[q];
+    if (i + 1 < n && first_stage[i + 1] == first_stage[i]) {
+      ProfileEvaluation two[2];
+      simulate_pair_from(setup, profiles[i], profiles[i + 1], base, first_stage[i], backoff, two);
+      out[i] = std::move(two[0]);
+      out[i + 1] = std::move(two[1]);
+    } else {
+      out[i] = simulate_profile_from(setup, profiles[i], base, first_stage[i], backoff);
+    }
   });
   return out;
 }

@@ -57,6 +57,12 @@ struct ThrowSetup {
   /// ball_contact_forces), the reference of the one-pass fast path (tray_dynamics.hpp) that
   /// simulations of a 4-joint chain use otherwise; both give the same results
   bool generic_dynamics = false;
+  /// how simulations without recorded samples run, all with the same results bit for bit:
+  /// 2: simulate_kernel.hpp, and evaluate_profiles and evaluate_neighbours (idp.hpp) two
+  /// profiles at once; 1: the kernel one profile at a time; 0: the Planner of simulate.cpp
+  /// one evaluation at a time (the kernel's reference). Only for the tray arm's joints
+  /// (kernel_applies); other chains and generic_dynamics use the Planner.
+  int kernel_lanes = 2;
 };
 
 /// Scalar outcome of one profile.
@@ -158,6 +164,13 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
 ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityProfile& profile,
                                         const SimulationCheckpoints& base, int first_stage,
                                         double backoff = 0.0);
+
+/// simulate_profile_from for two profiles with the same first_stage (out[0] of a, out[1] of
+/// b), two at once in the kernel when setup.kernel_lanes is 2.
+/// @throws std::invalid_argument as simulate_profile_from.
+void simulate_pair_from(const ThrowSetup& setup, const VelocityProfile& a, const VelocityProfile& b,
+                        const SimulationCheckpoints& base, int first_stage, double backoff,
+                        ProfileEvaluation out[2]);
 
 /// Contact forces of the tray on the ball (N) at state (q, qd, qdd) of the chain
 /// (docs/throwing.md): {normal N, tangential F_t}.

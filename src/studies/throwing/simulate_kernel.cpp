@@ -1,0 +1,740 @@
+#include "studies/throwing/simulate_kernel.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "core/check.hpp"
+#include "studies/throwing/lanes.hpp"
+
+namespace armstudy::studies {
+namespace {
+
+constexpr int kN = 4;
+
+inline bool lane_or(bool a, bool b) { return a || b; }
+inline M2 lane_or(M2 a, M2 b) { return a | b; }
+inline bool lane_not(bool a) { return !a; }
+inline M2 lane_not(M2 a) { return !a; }
+
+struct Body {
+  int link = 0;
+  double x = 0, y = 0, mass = 0, inertia = 0;
+};
+
+// the setup's constants as the Planner, TrayDynamics and core::motor_sample read them
+struct Model {
+  double base_x = 0, base_y = 0, base_angle = 0, gravity = 0;
+  double L[kN] = {};
+  Body bodies[core::kMaxLinks * 2];
+  int n_bodies = 0;
+  // a spinner's constant C_j (I C_i) added to M[i][j] (both coefficients nonzero), in order
+  struct SpinTerm {
+    int i = 0, j = 0;
+    double value = 0;
+  };
+  std::vector<SpinTerm> spin;
+  double ball_mass = 0;
+  double B[2][kN] = {};  // motor_matrix
+  double b_mount = 0;    // motor_torques' B(1, 0)
+  // eq. 5-6 per motor: e = c_qd qd + c_qdd qdd + b3 tau + c_f sign(qd), i = (e - kv qd) / Ra
+  double c_qd[2] = {}, c_qdd[2] = {}, b3[2] = {}, c_f[2] = {}, kv[2] = {}, Ra[2] = {};
+  bool regeneration = true;
+  double mu = 0;
+  // stage_constraint_values
+  double margin = 0, weight = 0, half_width = 0, vmax = 0, imax = 0, pmax = 0;
+
+  explicit Model(const ThrowSetup& s) {
+    const core::PlanarChain& chain = s.chain;
+    base_x = chain.base.x();
+    base_y = chain.base.y();
+    base_angle = chain.base_angle;
+    gravity = chain.gravity;
+    for (int i = 0; i < kN; ++i) {
+      const core::Link& l = chain.links[i];
+      L[i] = l.length;
+      bodies[n_bodies++] = {i, l.com, l.com_lateral, l.mass, l.inertia};
+    }
+    for (const core::PointMass& p : chain.point_masses)
+      bodies[n_bodies++] = {p.link, p.x, p.y, p.mass, 0.0};
+    for (const core::SpinningInertia& sp : chain.spinners) {
+      double Li[kN], C[kN];
+      for (int i = 0; i < kN; ++i) {
+        C[i] = sp.coeffs[i];
+        Li[i] = sp.inertia * C[i];
+      }
+      for (int i = 0; i < kN; ++i)
+        for (int j = 0; j < kN; ++j)
+          if (C[i] != 0.0 && C[j] != 0.0) spin.push_back({i, j, C[j] * Li[i]});
+    }
+    ball_mass = s.ball_mass;
+    const Eigen::Matrix<double, 2, 4> Bm = motor_matrix(s.mount);
+    for (int m = 0; m < 2; ++m)
+      for (int j = 0; j < kN; ++j) B[m][j] = Bm(m, j);
+    b_mount = s.mount == Motor2Mount::kOnBase ? 1.0 : 0.0;
+    for (int m = 0; m < 2; ++m) {
+      const core::DcMotor& mo = s.motor[m];
+      const double b = mo.Ra / mo.kt;
+      c_qd[m] = mo.kv + b * mo.Dm;
+      c_qdd[m] = b * mo.Im;
+      b3[m] = b;
+      c_f[m] = b * mo.tau_f;
+      kv[m] = mo.kv;
+      Ra[m] = mo.Ra;
+    }
+    regeneration = s.count_regeneration;
+    mu = s.friction_coefficient;
+    margin = s.contact_margin;
+    weight = s.ball_mass * s.chain.gravity;
+    half_width = s.half_width;
+    vmax = s.voltage_max;
+    imax = s.current_max;
+    pmax = s.power_max;
+  }
+};
+
+// a profile's node rates and stage-start angles (the Planner's q_start_), per lane
+template <typename T>
+struct LaneProfile {
+  std::vector<T> v0, v1;  // joints 1, 2 at nodes 0 .. P
+  std::vector<T> q0, q1;  // at stage starts 0 .. P
+};
+
+void profile_nodes(const VelocityProfile& p, std::vector<double> v[2], std::vector<double> q[2]) {
+  const int P = p.stages();
+  const double h = p.stage_length();
+  std::vector<Eigen::Vector2d> qs(P + 1);
+  qs[0] = p.q0;
+  for (int k = 0; k < P; ++k) qs[k + 1] = qs[k] + 0.5 * h * (p.v.col(k) + p.v.col(k + 1));
+  for (int i = 0; i < 2; ++i) {
+    v[i].resize(P + 1);
+    q[i].resize(P + 1);
+    for (int k = 0; k <= P; ++k) {
+      v[i][k] = p.v(i, k);
+      q[i][k] = qs[k][i];
+    }
+  }
+}
+
+LaneProfile<double> lanes_of(const VelocityProfile& p) {
+  std::vector<double> v[2], q[2];
+  profile_nodes(p, v, q);
+  return {v[0], v[1], q[0], q[1]};
+}
+
+LaneProfile<D2> lanes_of(const VelocityProfile& a, const VelocityProfile& b) {
+  std::vector<double> va[2], qa[2], vb[2], qb[2];
+  profile_nodes(a, va, qa);
+  profile_nodes(b, vb, qb);
+  LaneProfile<D2> out;
+  const size_t n = va[0].size();
+  for (size_t k = 0; k < n; ++k) {
+    out.v0.push_back(D2::of(va[0][k], vb[0][k]));
+    out.v1.push_back(D2::of(va[1][k], vb[1][k]));
+    out.q0.push_back(D2::of(qa[0][k], qb[0][k]));
+    out.q1.push_back(D2::of(qa[1][k], qb[1][k]));
+  }
+  return out;
+}
+
+// one body's m J^T J and I into M, m J^T (Jdot qd + g ey) into h: tray_dynamics.cpp's
+// add_body, the same operations on T
+template <int Link, typename T>
+void add_body(const Body& body, const T* px, const T* py, const T* c, const T* s, const T* sx,
+              const T* sy, const T* w, double gravity, T M[kN][kN], T h[kN]) {
+  if (body.mass != 0.0) {
+    const T bx = px[Link] + (c[Link] * body.x - s[Link] * body.y);
+    const T by = py[Link] + (s[Link] * body.x + c[Link] * body.y);
+    T J0[Link + 1], J1[Link + 1], D0[Link + 1], D1[Link + 1];
+    for (int j = 0; j <= Link; ++j) {
+      J0[j] = -(by - py[j]);
+      J1[j] = bx - px[j];
+    }
+    T vx = J0[0] * w[0], vy = J1[0] * w[0];
+    for (int j = 1; j <= Link; ++j) {
+      vx += J0[j] * w[j];
+      vy += J1[j] * w[j];
+    }
+    T vjx = 0.0, vjy = 0.0, omega = 0.0;
+    for (int j = 0; j <= Link; ++j) {
+      if (j > 0) {
+        vjx += omega * sx[j];
+        vjy += omega * sy[j];
+      }
+      omega += w[j];
+      D0[j] = -(vy - vjy);
+      D1[j] = vx - vjx;
+    }
+    const double m = body.mass;
+    T mJ0[Link + 1], mJ1[Link + 1];
+    for (int i = 0; i <= Link; ++i) {
+      mJ0[i] = m * J0[i];
+      mJ1[i] = m * J1[i];
+    }
+    for (int i = 0; i <= Link; ++i)
+      for (int j = 0; j <= Link; ++j) M[i][j] += mJ0[i] * J0[j] + mJ1[i] * J1[j];
+    T ax = D0[0] * w[0], ay = D1[0] * w[0];
+    for (int j = 1; j <= Link; ++j) {
+      ax += D0[j] * w[j];
+      ay += D1[j] * w[j];
+    }
+    ax = ax + 0.0;
+    ay = ay + gravity;
+    for (int i = 0; i <= Link; ++i) h[i] += mJ0[i] * ax + mJ1[i] * ay;
+  }
+  if (body.inertia != 0.0)
+    for (int i = 0; i <= Link; ++i)
+      for (int j = 0; j <= Link; ++j) M[i][j] += body.inertia;
+}
+
+// tray_dynamics.cpp's solve_spd for the two passive joints (A lower triangle, b in place)
+void solve2(double A00, double A10, double A11, double& b0, double& b1) {
+  if (A00 > 0.0) {
+    const double l00 = std::sqrt(A00);
+    const double l10 = A10 / l00;
+    const double x = A11 - l10 * l10;
+    if (x > 0.0) {
+      const double l11 = std::sqrt(x);
+      if (b0 != 0.0) {
+        b0 /= l00;
+        b1 -= b0 * l10;
+      }
+      if (b1 != 0.0) b1 /= l11;
+      if (b1 != 0.0) b1 /= l11;
+      b0 -= l10 * b1;
+      if (b0 != 0.0) b0 /= l00;
+      return;
+    }
+  }
+  // the general loop (a pivot <= 0 stops the factorisation there)
+  double A[2][2] = {{A00, 0.0}, {A10, A11}};
+  for (int k = 0; k < 2; ++k) {
+    double x = A[k][k];
+    if (k > 0) {
+      const double sq = A[k][0] * A[k][0];
+      x -= sq;
+    }
+    if (x <= 0.0) break;
+    A[k][k] = x = std::sqrt(x);
+    for (int i = k + 1; i < 2; ++i) A[i][k] /= x;
+  }
+  if (b0 != 0.0) {
+    b0 /= A[0][0];
+    b1 -= b0 * A[1][0];
+  }
+  if (b1 != 0.0) b1 /= A[1][1];
+  if (b1 != 0.0) b1 /= A[1][1];
+  const double dot = A[1][0] * b1;
+  b0 -= dot;
+  if (b0 != 0.0) b0 /= A[0][0];
+}
+
+void solve2(D2 A00, D2 A10, D2 A11, D2& b0, D2& b1) {
+  if (lanes_set(A00 > 0.0) == 3) {
+    const D2 l00 = lane_sqrt(A00);
+    const D2 l10 = A10 / l00;
+    const D2 x = A11 - l10 * l10;
+    if (lanes_set(x > 0.0) == 3) {
+      const D2 l11 = lane_sqrt(x);
+      M2 nz = b0 != 0.0;
+      const D2 y0 = b0 / l00;
+      b1 = select(nz, b1 - y0 * l10, b1);
+      b0 = select(nz, y0, b0);
+      b1 = select(b1 != 0.0, b1 / l11, b1);
+      b1 = select(b1 != 0.0, b1 / l11, b1);
+      b0 = b0 - l10 * b1;
+      b0 = select(b0 != 0.0, b0 / l00, b0);
+      return;
+    }
+  }
+  // a lane that leaves the straight code: both lanes one at a time
+  double r0[2], r1[2];
+  for (int i = 0; i < 2; ++i) {
+    r0[i] = b0.lane(i);
+    r1[i] = b1.lane(i);
+    solve2(A00.lane(i), A10.lane(i), A11.lane(i), r0[i], r1[i]);
+  }
+  b0 = D2::of(r0[0], r0[1]);
+  b1 = D2::of(r1[0], r1[1]);
+}
+
+// the active joints' part of an evaluation: a function of (stage, tau) only
+template <typename T>
+struct Frames {
+  T qa[2], qda[2], acc[2];
+  T a1;                        // base angle + q1 + q2
+  T c[2], s[2], px[3], py[3];  // links 1, 2; joint positions 0 .. 2
+  T sx[3], sy[3];              // perp(p_j - p_j-1), j = 1, 2
+  T M[2][2], h[2];             // after the bodies of links 1 and 2
+  T w, al, ax, ay;             // the ball's acceleration sums over links 1 and 2
+};
+
+// one point's outputs: the state derivative and what the constraints track
+template <typename T>
+struct Point {
+  T dx[5];
+  T voltage[2], current[2], power[2];
+  T normal, tangential;
+};
+
+template <typename T>
+class Kernel {
+ public:
+  Kernel(const Model& m, const LaneProfile<T>& p, double h) : m_(m), p_(p), h_(h) {}
+
+  // the Planner's eval(stage, t, x) for what the simulation uses
+  void eval(int stage, double t, const T x[5], Point<T>& out) {
+    const double tau = t - stage * h_;
+    const uint64_t bits = std::bit_cast<uint64_t>(tau);
+    if (!cached_ || stage != stage_ || bits != tau_bits_) {
+      frames(stage, tau);
+      cached_ = true;
+      stage_ = stage;
+      tau_bits_ = bits;
+    }
+    const Frames<T>& f = f_;
+    const Model& m = m_;
+    // the passive links' frames
+    T c[kN], s[kN], px[kN + 1], py[kN + 1], sx[kN], sy[kN], w[kN];
+    for (int i = 0; i < 2; ++i) {
+      c[i] = f.c[i];
+      s[i] = f.s[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+      px[i] = f.px[i];
+      py[i] = f.py[i];
+      sx[i] = f.sx[i];
+      sy[i] = f.sy[i];
+    }
+    const T a2 = f.a1 + x[0];
+    lane_cos_sin(a2, c[2], s[2]);
+    px[3] = px[2] + m.L[2] * c[2];
+    py[3] = py[2] + m.L[2] * s[2];
+    const T a3 = a2 + x[1];
+    lane_cos_sin(a3, c[3], s[3]);
+    px[4] = px[3] + m.L[3] * c[3];
+    py[4] = py[3] + m.L[3] * s[3];
+    sx[3] = -(py[3] - py[2]);
+    sy[3] = px[3] - px[2];
+    w[0] = f.qda[0];
+    w[1] = f.qda[1];
+    w[2] = x[2];
+    w[3] = x[3];
+    T M[kN][kN], h[kN];
+    for (int i = 0; i < kN; ++i) {
+      h[i] = 0.0;
+      for (int j = 0; j < kN; ++j) M[i][j] = 0.0;
+    }
+    for (int i = 0; i < 2; ++i) {
+      h[i] = f.h[i];
+      for (int j = 0; j < 2; ++j) M[i][j] = f.M[i][j];
+    }
+    add_body<2>(m.bodies[2], px, py, c, s, sx, sy, w, m.gravity, M, h);
+    add_body<3>(m.bodies[3], px, py, c, s, sx, sy, w, m.gravity, M, h);
+    for (int b = kN; b < m.n_bodies; ++b) {
+      const Body& body = m.bodies[b];
+      switch (body.link) {
+        case 0: add_body<0>(body, px, py, c, s, sx, sy, w, m.gravity, M, h); break;
+        case 1: add_body<1>(body, px, py, c, s, sx, sy, w, m.gravity, M, h); break;
+        case 2: add_body<2>(body, px, py, c, s, sx, sy, w, m.gravity, M, h); break;
+        default: add_body<3>(body, px, py, c, s, sx, sy, w, m.gravity, M, h); break;
+      }
+    }
+    for (const Model::SpinTerm& st : m.spin) M[st.i][st.j] += st.value;
+    // passive accelerations (zero passive torques), then the active torques
+    T b0 = 0.0 - h[2], b1 = 0.0 - h[3];
+    b0 -= M[2][0] * f.acc[0];
+    b0 -= M[2][1] * f.acc[1];
+    b1 -= M[3][0] * f.acc[0];
+    b1 -= M[3][1] * f.acc[1];
+    solve2(M[2][2], M[3][2], M[3][3], b0, b1);
+    const T qdd[kN] = {f.acc[0], f.acc[1], b0, b1};
+    T Q[2];
+    for (int i = 0; i < 2; ++i) {
+      T sum = M[i][0] * qdd[0];
+      for (int j = 1; j < kN; ++j) sum += M[i][j] * qdd[j];
+      Q[i] = sum + h[i];
+    }
+    // ball_contact_forces, the active links' terms from the frames
+    T wsum = f.w, al = f.al, ax = f.ax, ay = f.ay;
+    for (int i = 2; i < kN; ++i) {
+      wsum += w[i];
+      al += qdd[i];
+      const T ww = wsum * wsum;
+      ax += m.L[i] * (al * -s[i] - ww * c[i]);
+      ay += m.L[i] * (al * c[i] - ww * s[i]);
+    }
+    const T nx = c[kN - 1], ny = s[kN - 1], tx = -s[kN - 1], ty = c[kN - 1];
+    const double gx = 0.0, gy = -m.gravity;
+    out.normal = m.ball_mass * ((gx - ax) * nx + (gy - ay) * ny);
+    out.tangential = m.ball_mass * ((ax - gx) * tx + (ay - gy) * ty);
+    // motor torques, rates and accelerations (motor_torques, B qd, B qdd), eq. 5-6
+    const T tau_m[2] = {Q[0] - m.b_mount * Q[1], Q[1]};
+    T power = 0.0;
+    for (int k = 0; k < 2; ++k) {
+      T rate = m.B[k][0] * w[0];
+      T acc_m = m.B[k][0] * qdd[0];
+      for (int j = 1; j < kN; ++j) {
+        rate += m.B[k][j] * w[j];
+        acc_m += m.B[k][j] * qdd[j];
+      }
+      const T sg = select(rate > 0.0, T(1.0), select(rate < 0.0, T(-1.0), T(0.0)));
+      const T e = m.c_qd[k] * rate + m.c_qdd[k] * acc_m + m.b3[k] * tau_m[k] + m.c_f[k] * sg;
+      const T i = (e - m.kv[k] * rate) / m.Ra[k];
+      const T p = e * i;
+      out.voltage[k] = e;
+      out.current[k] = i;
+      out.power[k] = p;
+      power += m.regeneration ? p : lane_max(T(0.0), p);
+    }
+    out.dx[0] = x[2];
+    out.dx[1] = x[3];
+    out.dx[2] = qdd[2];
+    out.dx[3] = qdd[3];
+    out.dx[4] = power;
+  }
+
+ private:
+  void frames(int stage, double tau) {
+    Frames<T>& f = f_;
+    const Model& m = m_;
+    const T v0[2] = {p_.v0[stage], p_.v1[stage]};
+    const T v1[2] = {p_.v0[stage + 1], p_.v1[stage + 1]};
+    const T q0[2] = {p_.q0[stage], p_.q1[stage]};
+    for (int i = 0; i < 2; ++i) {
+      f.acc[i] = (v1[i] - v0[i]) / h_;
+      f.qa[i] = q0[i] + v0[i] * tau + 0.5 * f.acc[i] * tau * tau;
+      f.qda[i] = v0[i] + f.acc[i] * tau;
+    }
+    f.px[0] = m.base_x;
+    f.py[0] = m.base_y;
+    T a = m.base_angle;
+    for (int i = 0; i < 2; ++i) {
+      a += f.qa[i];
+      lane_cos_sin(a, f.c[i], f.s[i]);
+      f.px[i + 1] = f.px[i] + m.L[i] * f.c[i];
+      f.py[i + 1] = f.py[i] + m.L[i] * f.s[i];
+    }
+    f.a1 = a;
+    f.sx[0] = f.sy[0] = 0.0;
+    for (int j = 1; j < 3; ++j) {
+      f.sx[j] = -(f.py[j] - f.py[j - 1]);
+      f.sy[j] = f.px[j] - f.px[j - 1];
+    }
+    T M[kN][kN], h[kN];
+    for (int i = 0; i < kN; ++i) {
+      h[i] = 0.0;
+      for (int j = 0; j < kN; ++j) M[i][j] = 0.0;
+    }
+    add_body<0>(m.bodies[0], f.px, f.py, f.c, f.s, f.sx, f.sy, f.qda, m.gravity, M, h);
+    add_body<1>(m.bodies[1], f.px, f.py, f.c, f.s, f.sx, f.sy, f.qda, m.gravity, M, h);
+    for (int i = 0; i < 2; ++i) {
+      f.h[i] = h[i];
+      for (int j = 0; j < 2; ++j) f.M[i][j] = M[i][j];
+    }
+    T w = 0.0, al = 0.0, ax = 0.0, ay = 0.0;
+    for (int i = 0; i < 2; ++i) {
+      w += f.qda[i];
+      al += f.acc[i];
+      const T ww = w * w;
+      ax += m.L[i] * (al * -f.s[i] - ww * f.c[i]);
+      ay += m.L[i] * (al * f.c[i] - ww * f.s[i]);
+    }
+    f.w = w;
+    f.al = al;
+    f.ax = ax;
+    f.ay = ay;
+  }
+
+  const Model& m_;
+  const LaneProfile<T>& p_;
+  double h_;
+  Frames<T> f_;
+  bool cached_ = false;
+  int stage_ = 0;
+  uint64_t tau_bits_ = 0;
+};
+
+// the stage-wise maxima of the simulation (ProfileEvaluation's stage_* and
+// max_friction_ratio), per lane
+template <typename T>
+struct Track {
+  std::vector<T> theta4, voltage, current, power, normal, friction;
+  T ratio;
+};
+
+template <typename T>
+void track(const Model& m, const T x[5], const Point<T>& p, int k, Track<T>& tr) {
+  tr.theta4[k] = lane_max(tr.theta4[k], lane_abs(x[1]));
+  for (int i = 0; i < 2; ++i) {
+    tr.voltage[k] = lane_max(tr.voltage[k], lane_abs(p.voltage[i]));
+    tr.current[k] = lane_max(tr.current[k], lane_abs(p.current[i]));
+    tr.power[k] = lane_max(tr.power[k], lane_abs(p.power[i]));
+  }
+  const T N = p.normal, Ft = lane_abs(p.tangential);
+  tr.normal[k] = lane_min(tr.normal[k], N);
+  tr.friction[k] = lane_max(tr.friction[k], Ft - m.mu * N);
+  tr.ratio = lane_max(tr.ratio, select(N > 0.0, Ft / N, T(INFINITY)));
+}
+
+// simulate.cpp's stage_constraint_values(.., k, backoff) > 0 for some constraint
+template <typename T>
+auto violated(const Model& m, const Track<T>& tr, int k, double backoff) {
+  const T g0 = (m.margin - tr.normal[k]) / m.weight + backoff;
+  const T g1 = tr.friction[k] / m.weight + backoff;
+  const T g2 = (tr.theta4[k] - m.half_width) / m.half_width + backoff;
+  const T g3 = (tr.voltage[k] - m.vmax) / m.vmax + backoff;
+  const T g4 = (tr.current[k] - m.imax) / m.imax + backoff;
+  const T g5 = (tr.power[k] - m.pmax) / m.pmax + backoff;
+  return lane_or(lane_or(lane_or(g0 > 0.0, g1 > 0.0), lane_or(g2 > 0.0, g3 > 0.0)),
+                 lane_or(g4 > 0.0, g5 > 0.0));
+}
+
+enum class End { kNone, kStopped, kNotFinite };
+
+struct Run {
+  int P = 0, n = 1;
+  double h = 0, dt = 0, backoff = 0;
+  bool stop = false;
+  SimulationCheckpoints* save = nullptr;  // one lane only
+};
+
+// the simulation loop of simulate.cpp from stage k, step j (j == n: the stage's end point)
+// until every stage is done or a lane ends; returns the lanes that ended (bit i: lane i) and
+// why, with (k, j) where the other lanes go on
+template <typename T>
+int run(const Run& r, Kernel<T>& K, const Model& m, T x[5], Track<T>& tr, int& k, int& j,
+        End& why) {
+  Point<T> k1, k2, k3, k4;
+  T xs[5];
+  const double dt = r.dt;
+  for (; k < r.P; ++k, j = 0) {
+    if (j == 0 && r.save) {
+      core::OdeState s(5);
+      for (int i = 0; i < 5; ++i) s[i] = lane_of(x[i], 0);
+      r.save->x.push_back(s);
+      r.save->friction_ratio.push_back(lane_of(tr.ratio, 0));
+    }
+    for (; j < r.n; ++j) {
+      const double t = k * r.h + j * dt;
+      K.eval(k, t, x, k1);
+      track(m, x, k1, k, tr);
+      if (r.stop) {
+        const int v = lanes_set(violated(m, tr, k, r.backoff));
+        if (v) {
+          why = End::kStopped;
+          return v;
+        }
+      }
+      for (int i = 0; i < 5; ++i) xs[i] = x[i] + 0.5 * dt * k1.dx[i];
+      K.eval(k, t + 0.5 * dt, xs, k2);
+      for (int i = 0; i < 5; ++i) xs[i] = x[i] + 0.5 * dt * k2.dx[i];
+      K.eval(k, t + 0.5 * dt, xs, k3);
+      for (int i = 0; i < 5; ++i) xs[i] = x[i] + dt * k3.dx[i];
+      K.eval(k, t + dt, xs, k4);
+      for (int i = 0; i < 5; ++i)
+        x[i] += (dt / 6.0) * (k1.dx[i] + 2.0 * k2.dx[i] + 2.0 * k3.dx[i] + k4.dx[i]);
+      auto bad = lane_not(lane_finite(x[0]));
+      for (int i = 1; i < 5; ++i) bad = lane_or(bad, lane_not(lane_finite(x[i])));
+      bad = lane_or(bad, lane_or(lane_abs(x[2]) > 1e4, lane_abs(x[3]) > 1e4));
+      if (const int v = lanes_set(bad)) {
+        why = End::kNotFinite;
+        ++j;
+        return v;
+      }
+    }
+    // the end of the stage with this stage's accelerations
+    K.eval(k, (k + 1) * r.h, x, k1);
+    track(m, x, k1, k, tr);
+    if (r.stop) {
+      const int v = lanes_set(violated(m, tr, k, r.backoff));
+      if (v) {
+        why = End::kStopped;
+        return v;
+      }
+    }
+  }
+  why = End::kNone;
+  return 0;
+}
+
+template <typename T>
+Track<T> start_track(int P, const SimulationCheckpoints* from, int first) {
+  Track<T> tr;
+  tr.theta4.assign(P, T(0.0));
+  tr.voltage.assign(P, T(0.0));
+  tr.current.assign(P, T(0.0));
+  tr.power.assign(P, T(0.0));
+  tr.normal.assign(P, T(INFINITY));
+  tr.friction.assign(P, T(-INFINITY));
+  tr.ratio = 0.0;
+  if (from) {
+    tr.ratio = from->friction_ratio[first];
+    const ProfileEvaluation& b = from->evaluation;
+    for (int k = 0; k < first; ++k) {
+      tr.theta4[k] = b.stage_theta4[k];
+      tr.voltage[k] = b.stage_voltage[k];
+      tr.current[k] = b.stage_current[k];
+      tr.power[k] = b.stage_power[k];
+      tr.normal[k] = b.stage_normal[k];
+      tr.friction[k] = b.stage_friction[k];
+    }
+  }
+  return tr;
+}
+
+template <typename T>
+void start_state(const ThrowSetup& setup, const SimulationCheckpoints* from, int first, T x[5]) {
+  if (from) {
+    for (int i = 0; i < 5; ++i) x[i] = from->x[first][i];
+  } else {
+    x[0] = setup.theta3_0;
+    x[1] = setup.theta4_0;
+    x[2] = x[3] = x[4] = 0.0;
+  }
+}
+
+// lane i of a two-lane state
+void lane_state(const D2 x[5], const Track<D2>& tr, int i, double xs[5], Track<double>& ts) {
+  for (int c = 0; c < 5; ++c) xs[c] = x[c].lane(i);
+  auto take = [i](const std::vector<D2>& a, std::vector<double>& b) {
+    b.resize(a.size());
+    for (size_t k = 0; k < a.size(); ++k) b[k] = a[k].lane(i);
+  };
+  take(tr.theta4, ts.theta4);
+  take(tr.voltage, ts.voltage);
+  take(tr.current, ts.current);
+  take(tr.power, ts.power);
+  take(tr.normal, ts.normal);
+  take(tr.friction, ts.friction);
+  ts.ratio = tr.ratio.lane(i);
+}
+
+// simulate.cpp's end of a simulation
+ProfileEvaluation finish(const ThrowSetup& setup, const double x[5], Track<double>& tr, End why,
+                         double backoff) {
+  ProfileEvaluation ev;
+  ev.stage_theta4 = std::move(tr.theta4);
+  ev.stage_voltage = std::move(tr.voltage);
+  ev.stage_current = std::move(tr.current);
+  ev.stage_power = std::move(tr.power);
+  ev.stage_normal = std::move(tr.normal);
+  ev.stage_friction = std::move(tr.friction);
+  ev.max_friction_ratio = tr.ratio;
+  if (why == End::kStopped) {
+    ev.stopped = true;
+    ev.energy = std::numeric_limits<double>::max() / 4;
+    ev.violation = INFINITY;
+    ev.feasible = false;
+    return ev;
+  }
+  if (why == End::kNotFinite) {
+    ev.finite = false;
+    ev.energy = std::numeric_limits<double>::max() / 4;
+    ev.max_friction_ratio = INFINITY;
+    classify(setup, ev, backoff);
+    return ev;
+  }
+  ev.max_abs_theta4 = *std::max_element(ev.stage_theta4.begin(), ev.stage_theta4.end());
+  ev.max_voltage = *std::max_element(ev.stage_voltage.begin(), ev.stage_voltage.end());
+  ev.max_current = *std::max_element(ev.stage_current.begin(), ev.stage_current.end());
+  ev.max_power = *std::max_element(ev.stage_power.begin(), ev.stage_power.end());
+  ev.min_normal_force = *std::min_element(ev.stage_normal.begin(), ev.stage_normal.end());
+  ev.max_friction_excess = *std::max_element(ev.stage_friction.begin(), ev.stage_friction.end());
+  ev.energy = x[4];
+  ev.theta3_final = x[0];
+  ev.theta4_final = x[1];
+  ev.theta3_rate_final = x[2];
+  ev.theta4_rate_final = x[3];
+  classify(setup, ev, backoff);
+  return ev;
+}
+
+Run run_settings(const ThrowSetup& setup, const VelocityProfile& p, double backoff, bool stop) {
+  Run r;
+  r.P = p.stages();
+  r.h = p.stage_length();
+  r.n = std::max(1, setup.steps_per_stage);
+  r.dt = r.h / r.n;
+  r.backoff = backoff;
+  r.stop = stop;
+  return r;
+}
+
+// one lane from (k, j) to its end
+ProfileEvaluation simulate_from(const ThrowSetup& setup, const Model& m,
+                                const VelocityProfile& profile, const Run& r, double x[5],
+                                Track<double>& tr, int k, int j) {
+  const LaneProfile<double> lp = lanes_of(profile);
+  Kernel<double> K(m, lp, r.h);
+  End why = End::kNone;
+  run(r, K, m, x, tr, k, j, why);
+  return finish(setup, x, tr, why, r.backoff);
+}
+
+}  // namespace
+
+bool kernel_applies(const ThrowSetup& s) {
+  const core::PlanarChain& c = s.chain;
+  return !s.generic_dynamics && c.num_links() == kN && c.links[0].active && c.links[1].active &&
+         !c.links[2].active && !c.links[3].active &&
+         c.num_links() + static_cast<int>(c.point_masses.size()) <= core::kMaxLinks * 2;
+}
+
+ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile& profile,
+                                  double backoff, bool stop_when_infeasible,
+                                  const SimulationCheckpoints* from, int first,
+                                  SimulationCheckpoints* save) {
+  ARM_THROW_UNLESS(kernel_applies(setup), "the simulation kernel needs the tray arm's joints");
+  const Model m(setup);
+  Run r = run_settings(setup, profile, backoff, stop_when_infeasible);
+  if (save) {
+    save->profile = profile;
+    save->x.clear();
+    save->friction_ratio.clear();
+    r.save = save;
+  }
+  const int k0 = from ? first : 0;
+  double x[5];
+  start_state(setup, from, k0, x);
+  Track<double> tr = start_track<double>(r.P, from, k0);
+  return simulate_from(setup, m, profile, r, x, tr, k0, 0);
+}
+
+void simulate_kernel_pair(const ThrowSetup& setup, const VelocityProfile& a,
+                          const VelocityProfile& b, double backoff, bool stop_when_infeasible,
+                          ProfileEvaluation out[2], const SimulationCheckpoints* from, int first) {
+  ARM_THROW_UNLESS(kernel_applies(setup), "the simulation kernel needs the tray arm's joints");
+  if (a.stages() != b.stages() || a.tf != b.tf) {
+    out[0] = simulate_kernel(setup, a, backoff, stop_when_infeasible, from, first);
+    out[1] = simulate_kernel(setup, b, backoff, stop_when_infeasible, from, first);
+    return;
+  }
+  const Model m(setup);
+  const Run r = run_settings(setup, a, backoff, stop_when_infeasible);
+  const int k0 = from ? first : 0;
+  const LaneProfile<D2> lp = lanes_of(a, b);
+  Kernel<D2> K(m, lp, r.h);
+  D2 x[5];
+  start_state(setup, from, k0, x);
+  Track<D2> tr = start_track<D2>(r.P, from, k0);
+  int k = k0, j = 0;
+  End why = End::kNone;
+  const int ended = run(r, K, m, x, tr, k, j, why);
+  for (int i = 0; i < 2; ++i) {
+    double xs[5];
+    Track<double> ts;
+    lane_state(x, tr, i, xs, ts);
+    if (ended == 0)
+      out[i] = finish(setup, xs, ts, End::kNone, backoff);
+    else if (ended & (1 << i))
+      out[i] = finish(setup, xs, ts, why, backoff);
+    else
+      out[i] = simulate_from(setup, m, i == 0 ? a : b, r, xs, ts, k, j);
+  }
+}
+
+}  // namespace armstudy::studies

@@ -1,0 +1,44 @@
+#pragma once
+/// The planning model's RK4 simulation without recorded samples (IDP's candidates, SLSQP's
+/// points and neighbours), one profile at a time or two at once in the lanes of lanes.hpp.
+///
+/// It computes what simulate_profile's one-evaluation-at-a-time path computes (the Planner
+/// of simulate.cpp with TrayDynamics::mixed and core::motor_sample): each value the same
+/// scalar expression in the same order, so each profile's ProfileEvaluation is that path's
+/// bit for bit (tests/studies/throwing_kernel_test.cpp). What it saves:
+/// - the active joints' part of an evaluation (their angles, rates, link frames, the cosine
+///   and sine of links 1 and 2, their bodies' sums in the mass matrix and bias forces, and
+///   their terms of the ball's acceleration) depends only on the stage and the time: RK4's
+///   second and third evaluations share it, and so do a step's last and the next step's
+///   first when their times are the same double; it is computed once and reused;
+/// - no Eigen temporaries of run-time size and only eq. 5-6's voltage, current and power;
+/// - two profiles of the same stages and final time run side by side, the same operations on
+///   two lanes. A lane ends when its profile does (stopped at a certain violation or not
+///   finite, as simulate_profile); the other lane then goes on alone from the last point both
+///   passed (re-evaluating a point only repeats its maxima, which leaves them unchanged).
+
+#include "studies/throwing/simulate.hpp"
+
+namespace armstudy::studies {
+
+/// Can `setup`'s simulations run in the kernel: not generic_dynamics, a 4-joint chain whose
+/// joints 1, 2 are active and 3, 4 passive (the tray arm)?
+bool kernel_applies(const ThrowSetup& setup);
+
+/// simulate_profile(setup, profile, nullptr, backoff, stop_when_infeasible) (from == nullptr),
+/// its checkpointed form (save) or simulate_profile_from's resumed simulation (from, first).
+/// Requires kernel_applies(setup).
+ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile& profile,
+                                  double backoff, bool stop_when_infeasible,
+                                  const SimulationCheckpoints* from = nullptr, int first = 0,
+                                  SimulationCheckpoints* save = nullptr);
+
+/// simulate_kernel for two profiles at once (out[0] of a, out[1] of b); both resume at stage
+/// `first` of `from` if it is given. Profiles of different stage counts or final times run
+/// one after the other.
+void simulate_kernel_pair(const ThrowSetup& setup, const VelocityProfile& a,
+                          const VelocityProfile& b, double backoff, bool stop_when_infeasible,
+                          ProfileEvaluation out[2], const SimulationCheckpoints* from = nullptr,
+                          int first = 0);
+
+}  // namespace armstudy::studies
