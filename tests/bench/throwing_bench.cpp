@@ -50,30 +50,34 @@ BENCHMARK(BM_ThrowSimulateProfile)
     ->Args({80, 1, 0})
     ->Unit(benchmark::kMillisecond);
 
-// two candidates of the default case (eq. 8 and a neighbour), one after the other by the
-// Planner (argument 0) or the kernel (1), or both at once in the kernel's two lanes (2)
-void BM_ThrowSimulateTwo(benchmark::State& state) {
+// four candidates of the default case (eq. 8 and three moves of it), one after the other by
+// the Planner (argument 0) or the kernel (1), two at once (2) or all four at once (4) in the
+// kernel's lanes
+void BM_ThrowSimulateFour(benchmark::State& state) {
   Fixture f;
-  VelocityProfile other = f.profile;
-  other.v(0, 5) += 0.1;
-  project_displacement(other, f.spec.release - f.spec.start);
+  std::vector<VelocityProfile> ps(4, f.profile);
+  for (int i = 1; i < 4; ++i) {
+    ps[i].v(0, 3 + i) += 0.1 * i;
+    project_displacement(ps[i], f.spec.release - f.spec.start);
+  }
   const int lanes = static_cast<int>(state.range(0));
   f.setup.kernel_lanes = lanes;
-  const long steps = 2L * f.setup.steps_per_stage * f.profile.stages();
+  const std::vector<const VelocityProfile*> group{&ps[0], &ps[1], &ps[2], &ps[3]};
+  const long steps = 4L * f.setup.steps_per_stage * f.profile.stages();
   for (auto _ : state) {
-    if (lanes == 2) {
-      ProfileEvaluation two[2];
-      simulate_kernel_pair(f.setup, f.profile, other, 0.0, false, two);
-      benchmark::DoNotOptimize(two[1].energy);
+    if (lanes >= 2) {
+      ProfileEvaluation evs[4];
+      simulate_kernel_lanes(f.setup, group, lanes, 0.0, false, evs);
+      benchmark::DoNotOptimize(evs[3].energy);
     } else {
-      benchmark::DoNotOptimize(simulate_profile(f.setup, f.profile).energy);
-      benchmark::DoNotOptimize(simulate_profile(f.setup, other).energy);
+      for (const VelocityProfile& p : ps)
+        benchmark::DoNotOptimize(simulate_profile(f.setup, p).energy);
     }
   }
   state.counters["rk4_steps_per_s"] = benchmark::Counter(
       static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_ThrowSimulateTwo)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ThrowSimulateFour)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
 
 void BM_ThrowReplayVoltages(benchmark::State& state) {
   Fixture f;
@@ -95,7 +99,7 @@ BENCHMARK(BM_ThrowReplayVoltages)->Unit(benchmark::kMillisecond);
 
 // one IDP iteration (15 stage nodes x 5 candidates) on 1 and 2 threads; second argument 1:
 // through the generic chain; third argument ThrowSetup::kernel_lanes (0: the Planner, 1: the
-// kernel one candidate at a time, 2: two at once)
+// kernel one candidate at a time, 2 or 4: that many at once)
 void BM_IdpIteration(benchmark::State& state) {
   Fixture f;
   f.setup.generic_dynamics = state.range(1) == 1;
@@ -114,9 +118,11 @@ BENCHMARK(BM_IdpIteration)
     ->Args({1, 0, 0})
     ->Args({1, 0, 1})
     ->Args({1, 0, 2})
+    ->Args({1, 0, 4})
     ->Args({1, 1, 0})
     ->Args({2, 0, 0})
     ->Args({2, 0, 2})
+    ->Args({2, 0, 4})
     ->Args({2, 1, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
@@ -124,7 +130,7 @@ BENCHMARK(BM_IdpIteration)
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
 // (computed once, outside the timing), one seed on one core, or all seeds on both cores;
 // second argument 0: every candidate simulated to the end (no early stop); third argument
-// ThrowSetup::kernel_lanes (0: the Planner, 2: the kernel, two candidates at once)
+// ThrowSetup::kernel_lanes (0: the Planner, 2 or 4: the kernel, that many candidates at once)
 void BM_IdpConverged(benchmark::State& state) {
   Fixture f;
   f.setup.kernel_lanes = static_cast<int>(state.range(2));
@@ -155,8 +161,10 @@ BENCHMARK(BM_IdpConverged)
     ->Args({1, 0, 0})
     ->Args({1, 1, 0})
     ->Args({1, 1, 2})
+    ->Args({1, 1, 4})
     ->Args({2, 1, 0})
     ->Args({2, 1, 2})
+    ->Args({2, 1, 4})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);
@@ -165,7 +173,7 @@ BENCHMARK(BM_IdpConverged)
 // default case's eq. 8 profile and its 2 x 30 neighbours (fd step 1e-5 rad/s); argument 0:
 // every neighbour simulated from t = 0 (evaluate_profiles), 1: resumed from the point's
 // stage checkpoints (evaluate_neighbours), the same evaluations bit for bit; second argument
-// ThrowSetup::kernel_lanes (0: the Planner, 2: the kernel, two neighbours at once)
+// ThrowSetup::kernel_lanes (0: the Planner, 2 or 4: the kernel, that many neighbours at once)
 void BM_SlsqpGradient(benchmark::State& state) {
   Fixture f;
   f.setup.kernel_lanes = static_cast<int>(state.range(1));
@@ -194,6 +202,7 @@ BENCHMARK(BM_SlsqpGradient)
     ->Args({0, 0})
     ->Args({1, 0})
     ->Args({1, 2})
+    ->Args({1, 4})
     ->Unit(benchmark::kMillisecond);
 
 void BM_PendulumTwoSeconds(benchmark::State& state) {

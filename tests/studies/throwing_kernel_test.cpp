@@ -1,4 +1,4 @@
-// The simulation kernel (simulate_kernel.hpp), one profile at a time and two at once, gives
+// The simulation kernel (simulate_kernel.hpp), one profile at a time and two or four at once, gives
 // the Planner's evaluations (ThrowSetup::kernel_lanes 0, one evaluation at a time) bit for
 // bit: feasible, infeasible, early-stopped and diverging profiles, in pairs whose lanes end
 // at different points, resumed from checkpoints, and through IDP and the SLSQP gradient's
@@ -121,18 +121,26 @@ TEST(ThrowKernel, OneAndTwoAtOnceEqualThePlannerBitForBit) {
           feasible += ref[i].feasible;
           diverged += !ref[i].finite;
         }
-        // every pair (i, j), so that lanes end at different points, in both orders
+        // pairs and quadruples of many combinations, so that lanes end at different points
         for (size_t i = 0; i < ps.size(); i += 3)
           for (size_t j = 0; j < ps.size(); j += 2) {
             ProfileEvaluation two[2];
-            simulate_kernel_pair(one, ps[i], ps[j], 0.02, stop, two);
+            simulate_kernel_lanes(one, {&ps[i], &ps[j]}, 2, 0.02, stop, two);
             const std::string at = "pair " + std::to_string(i) + ", " + std::to_string(j);
             expect_bitwise(two[0], ref[i], at);
             expect_bitwise(two[1], ref[j], at);
+            const size_t k = (i + 7 * j + 1) % ps.size(), l = (3 * i + j + 5) % ps.size();
+            ProfileEvaluation four[4];
+            simulate_kernel_lanes(one, {&ps[i], &ps[j], &ps[k], &ps[l]}, 4, 0.02, stop, four);
+            const size_t idx[4] = {i, j, k, l};
+            for (int q = 0; q < 4; ++q)
+              expect_bitwise(four[q], ref[idx[q]], "four, lane " + std::to_string(q) + " " + at);
           }
-        const auto evs = evaluate_profiles(c.setup, ps, 2, 0.02, stop);
-        for (size_t i = 0; i < ps.size(); ++i)
-          expect_bitwise(evs[i], ref[i], "evaluate_profiles " + std::to_string(i));
+        for (int lanes : {2, 4}) {
+          const auto evs = evaluate_profiles(c.with_lanes(lanes), ps, 2, 0.02, stop);
+          for (size_t i = 0; i < ps.size(); ++i)
+            expect_bitwise(evs[i], ref[i], "evaluate_profiles " + std::to_string(i));
+        }
       }
     }
   // the cases the lanes must keep apart occurred
@@ -158,10 +166,13 @@ TEST(ThrowKernel, NeighboursResumedInPairsEqualThePlanner) {
           first.push_back(k - 1);
         }
     const auto ref = evaluate_neighbours(c.with_lanes(0), ps, first, 1, 0.02);
-    const auto pairs = evaluate_neighbours(c.setup, ps, first, 2, 0.02);
-    ASSERT_EQ(ref.size(), pairs.size());
-    for (size_t i = 0; i < ps.size(); ++i)
-      expect_bitwise(pairs[i], ref[i], "neighbour " + std::to_string(i));
+    for (int lanes : {1, 2, 4}) {
+      const auto evs = evaluate_neighbours(c.with_lanes(lanes), ps, first, 2, 0.02);
+      ASSERT_EQ(ref.size(), evs.size());
+      for (size_t i = 0; i < ps.size(); ++i)
+        expect_bitwise(evs[i], ref[i],
+                       std::to_string(lanes) + " lanes, neighbour " + std::to_string(i));
+    }
     // checkpoints of the kernel equal the Planner's
     SimulationCheckpoints a, b;
     expect_bitwise(simulate_profile(c.with_lanes(0), x, a, 0.02),
@@ -185,17 +196,19 @@ TEST(ThrowKernel, IdpInPairsMakesThePlannersChoices) {
   s.max_passes = 3;
   s.threads = 2;
   s.backoff = 0.02;
-  const IdpResult a = run_idp(c.setup, c.eq8, c.delta, s);
   const IdpResult b = run_idp(c.with_lanes(0), c.eq8, c.delta, s);
-  EXPECT_EQ(a.best.v, b.best.v);
-  expect_bitwise(a.evaluation, b.evaluation, "best");
-  EXPECT_EQ(a.evaluations, b.evaluations);
-  ASSERT_EQ(a.history.size(), b.history.size());
-  for (size_t i = 0; i < a.history.size(); ++i) {
-    EXPECT_EQ(bits(a.history[i].energy), bits(b.history[i].energy));
-    EXPECT_EQ(a.history[i].improvements, b.history[i].improvements);
+  for (int lanes : {2, 4}) {
+    const IdpResult a = run_idp(c.with_lanes(lanes), c.eq8, c.delta, s);
+    EXPECT_EQ(a.best.v, b.best.v);
+    expect_bitwise(a.evaluation, b.evaluation, "best");
+    EXPECT_EQ(a.evaluations, b.evaluations);
+    ASSERT_EQ(a.history.size(), b.history.size());
+    for (size_t i = 0; i < a.history.size(); ++i) {
+      EXPECT_EQ(bits(a.history[i].energy), bits(b.history[i].energy));
+      EXPECT_EQ(a.history[i].improvements, b.history[i].improvements);
+    }
   }
-  EXPECT_LT(a.evaluation.energy, a.initial_evaluation.energy);  // it did move
+  EXPECT_LT(b.evaluation.energy, b.initial_evaluation.energy);  // it did move
 }
 
 }  // namespace

@@ -46,17 +46,13 @@ std::vector<ProfileEvaluation> evaluate_profiles(const ThrowSetup& setup,
   std::vector<ProfileEvaluation> out(profiles.size());
   const int n = static_cast<int>(profiles.size());
   if (setup.kernel_lanes >= 2 && kernel_applies(setup)) {
-    // two profiles at once (the same evaluations); each pair of slots written by one thread
-    parallel_for(0, (n + 1) / 2, threads, [&](int q) {
-      const int i = 2 * q;
-      if (i + 1 == n) {
-        out[i] = simulate_profile(setup, profiles[i], nullptr, backoff, stop_when_infeasible);
-        return;
-      }
-      ProfileEvaluation two[2];
-      simulate_kernel_pair(setup, profiles[i], profiles[i + 1], backoff, stop_when_infeasible, two);
-      out[i] = std::move(two[0]);
-      out[i + 1] = std::move(two[1]);
+    // kernel_lanes profiles at once (the same evaluations); each group of slots written by
+    // one thread
+    const int w = setup.kernel_lanes;
+    parallel_for(0, (n + w - 1) / w, threads, [&](int q) {
+      std::vector<const VelocityProfile*> group;
+      for (int i = q * w; i < std::min(n, (q + 1) * w); ++i) group.push_back(&profiles[i]);
+      simulate_kernel_lanes(setup, group, w, backoff, stop_when_infeasible, &out[q * w]);
     });
     return out;
   }
@@ -75,23 +71,22 @@ std::vector<ProfileEvaluation> evaluate_neighbours(const ThrowSetup& setup,
   if (profiles.empty()) return out;
   SimulationCheckpoints base;
   out[0] = simulate_profile(setup, profiles[0], base, backoff);
-  // neighbours side by side in pairs of the same first stage (the +h and -h of one rate)
-  std::vector<int> pair_start;
+  // neighbours side by side in groups of the same first stage (the +h and -h of a node's
+  // two rates)
   const int n = static_cast<int>(profiles.size());
+  const int w = std::max(1, setup.kernel_lanes);
+  std::vector<std::pair<int, int>> groups;  // [begin, end)
   for (int i = 1; i < n;) {
-    pair_start.push_back(i);
-    i += (i + 1 < n && first_stage[i + 1] == first_stage[i]) ? 2 : 1;
+    int e = i + 1;
+    while (e < n && e - i < w && first_stage[e] == first_stage[i]) ++e;
+    groups.emplace_back(i, e);
+    i = e;
   }
-  parallel_for(0, static_cast<int>(pair_start.size()), threads, [&](int q) {
-    const int i = pair_start[q];
-    if (i + 1 < n && first_stage[i + 1] == first_stage[i]) {
-      ProfileEvaluation two[2];
-      simulate_pair_from(setup, profiles[i], profiles[i + 1], base, first_stage[i], backoff, two);
-      out[i] = std::move(two[0]);
-      out[i + 1] = std::move(two[1]);
-    } else {
-      out[i] = simulate_profile_from(setup, profiles[i], base, first_stage[i], backoff);
-    }
+  parallel_for(0, static_cast<int>(groups.size()), threads, [&](int q) {
+    const auto [b, e] = groups[q];
+    std::vector<const VelocityProfile*> group;
+    for (int i = b; i < e; ++i) group.push_back(&profiles[i]);
+    simulate_group_from(setup, group, base, first_stage[b], backoff, &out[b]);
   });
   return out;
 }

@@ -95,4 +95,61 @@ inline void lane_cos_sin(double a, double& c, double& s) {
 inline double lane_of(D2 a, int i) { return a.lane(i); }
 inline double lane_of(double a, int) { return a; }
 
+/// Four lanes as two D2 (two independent chains of the same operations, which the processor
+/// overlaps); lanes 0, 1 in a, 2, 3 in b.
+struct M4 {
+  M2 a, b;
+};
+struct D4 {
+  D2 a, b;
+  D4() = default;
+  D4(double x) : a(x), b(x) {}  // NOLINT: implicit, a constant in every lane
+  D4(D2 lo, D2 hi) : a(lo), b(hi) {}
+  static D4 of(double l0, double l1, double l2, double l3) {
+    return {D2::of(l0, l1), D2::of(l2, l3)};
+  }
+  double lane(int i) const { return i < 2 ? a.lane(i) : b.lane(i - 2); }
+};
+
+inline D4 operator+(const D4& x, const D4& y) { return {x.a + y.a, x.b + y.b}; }
+inline D4 operator-(const D4& x, const D4& y) { return {x.a - y.a, x.b - y.b}; }
+inline D4 operator*(const D4& x, const D4& y) { return {x.a * y.a, x.b * y.b}; }
+inline D4 operator/(const D4& x, const D4& y) { return {x.a / y.a, x.b / y.b}; }
+inline D4 operator-(const D4& x) { return {-x.a, -x.b}; }
+inline D4& operator+=(D4& x, const D4& y) { return x = x + y; }
+inline D4& operator-=(D4& x, const D4& y) { return x = x - y; }
+inline D4& operator/=(D4& x, const D4& y) { return x = x / y; }
+
+inline M4 operator<(const D4& x, const D4& y) { return {x.a < y.a, x.b < y.b}; }
+inline M4 operator>(const D4& x, const D4& y) { return {x.a > y.a, x.b > y.b}; }
+inline M4 operator<=(const D4& x, const D4& y) { return {x.a <= y.a, x.b <= y.b}; }
+inline M4 operator==(const D4& x, const D4& y) { return {x.a == y.a, x.b == y.b}; }
+inline M4 operator!=(const D4& x, const D4& y) { return {x.a != y.a, x.b != y.b}; }
+inline M4 operator|(const M4& x, const M4& y) { return {x.a | y.a, x.b | y.b}; }
+inline M4 operator&(const M4& x, const M4& y) { return {x.a & y.a, x.b & y.b}; }
+inline M4 operator!(const M4& x) { return {!x.a, !x.b}; }
+
+inline int lanes_set(const M4& x) { return lanes_set(x.a) | (lanes_set(x.b) << 2); }
+inline D4 select(const M4& m, const D4& x, const D4& y) {
+  return {select(m.a, x.a, y.a), select(m.b, x.b, y.b)};
+}
+inline D4 lane_abs(const D4& x) { return {lane_abs(x.a), lane_abs(x.b)}; }
+inline D4 lane_sqrt(const D4& x) { return {lane_sqrt(x.a), lane_sqrt(x.b)}; }
+inline D4 lane_max(const D4& x, const D4& y) { return {lane_max(x.a, y.a), lane_max(x.b, y.b)}; }
+inline D4 lane_min(const D4& x, const D4& y) { return {lane_min(x.a, y.a), lane_min(x.b, y.b)}; }
+inline M4 lane_finite(const D4& x) { return {lane_finite(x.a), lane_finite(x.b)}; }
+inline void lane_cos_sin(const D4& x, D4& c, D4& s) {
+  lane_cos_sin(x.a, c.a, s.a);
+  lane_cos_sin(x.b, c.b, s.b);
+}
+inline double lane_of(const D4& x, int i) { return x.lane(i); }
+
+/// Mask or, not (|| and ! of bools).
+inline bool lane_or(bool a, bool b) { return a || b; }
+inline M2 lane_or(M2 a, M2 b) { return a | b; }
+inline M4 lane_or(const M4& a, const M4& b) { return a | b; }
+inline bool lane_not(bool a) { return !a; }
+inline M2 lane_not(M2 a) { return !a; }
+inline M4 lane_not(const M4& a) { return !a; }
+
 }  // namespace armstudy::studies

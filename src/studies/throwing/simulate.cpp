@@ -365,19 +365,19 @@ ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityP
   return simulate(setup, profile, nullptr, backoff, false, &base, first_stage, nullptr);
 }
 
-void simulate_pair_from(const ThrowSetup& setup, const VelocityProfile& a, const VelocityProfile& b,
-                        const SimulationCheckpoints& base, int first_stage, double backoff,
-                        ProfileEvaluation out[2]) {
-  check_resume(a, base, first_stage);
-  check_resume(b, base, first_stage);
+void simulate_group_from(const ThrowSetup& setup,
+                         const std::vector<const VelocityProfile*>& profiles,
+                         const SimulationCheckpoints& base, int first_stage, double backoff,
+                         ProfileEvaluation* out) {
+  for (const VelocityProfile* p : profiles) check_resume(*p, base, first_stage);
   if (setup.kernel_lanes < 2 || !kernel_applies(setup)) {
-    out[0] = simulate_profile_from(setup, a, base, first_stage, backoff);
-    out[1] = simulate_profile_from(setup, b, base, first_stage, backoff);
+    for (size_t i = 0; i < profiles.size(); ++i)
+      out[i] = simulate_profile_from(setup, *profiles[i], base, first_stage, backoff);
     return;
   }
   const bool resume = first_stage > 0 && first_stage < static_cast<int>(base.x.size());
-  simulate_kernel_pair(setup, a, b, backoff, false, out, resume ? &base : nullptr,
-                       resume ? first_stage : 0);
+  simulate_kernel_lanes(setup, profiles, setup.kernel_lanes, backoff, false, out,
+                        resume ? &base : nullptr, resume ? first_stage : 0);
 }
 
 Eigen::Vector2d VoltageHistory::at(int st, double time) const {

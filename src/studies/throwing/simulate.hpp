@@ -58,11 +58,11 @@ struct ThrowSetup {
   /// simulations of a 4-joint chain use otherwise; both give the same results
   bool generic_dynamics = false;
   /// how simulations without recorded samples run, all with the same results bit for bit:
-  /// 2: simulate_kernel.hpp, and evaluate_profiles and evaluate_neighbours (idp.hpp) two
-  /// profiles at once; 1: the kernel one profile at a time; 0: the Planner of simulate.cpp
-  /// one evaluation at a time (the kernel's reference). Only for the tray arm's joints
+  /// 4 or 2: simulate_kernel.hpp, and evaluate_profiles and evaluate_neighbours (idp.hpp) that
+  /// many profiles at once; 1: the kernel one profile at a time; 0: the Planner of
+  /// simulate.cpp one evaluation at a time (the kernel's reference). Only for the tray arm's joints
   /// (kernel_applies); other chains and generic_dynamics use the Planner.
-  int kernel_lanes = 2;
+  int kernel_lanes = 4;
 };
 
 /// Scalar outcome of one profile.
@@ -165,12 +165,13 @@ ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityP
                                         const SimulationCheckpoints& base, int first_stage,
                                         double backoff = 0.0);
 
-/// simulate_profile_from for two profiles with the same first_stage (out[0] of a, out[1] of
-/// b), two at once in the kernel when setup.kernel_lanes is 2.
+/// simulate_profile_from for profiles with the same first_stage (out[i] of profiles[i]),
+/// setup.kernel_lanes of them at once in the kernel when that is 2 or 4.
 /// @throws std::invalid_argument as simulate_profile_from.
-void simulate_pair_from(const ThrowSetup& setup, const VelocityProfile& a, const VelocityProfile& b,
-                        const SimulationCheckpoints& base, int first_stage, double backoff,
-                        ProfileEvaluation out[2]);
+void simulate_group_from(const ThrowSetup& setup,
+                         const std::vector<const VelocityProfile*>& profiles,
+                         const SimulationCheckpoints& base, int first_stage, double backoff,
+                         ProfileEvaluation* out);
 
 /// Contact forces of the tray on the ball (N) at state (q, qd, qdd) of the chain
 /// (docs/throwing.md): {normal N, tangential F_t}.

@@ -15,11 +15,6 @@ namespace {
 
 constexpr int kN = 4;
 
-inline bool lane_or(bool a, bool b) { return a || b; }
-inline M2 lane_or(M2 a, M2 b) { return a | b; }
-inline bool lane_not(bool a) { return !a; }
-inline M2 lane_not(M2 a) { return !a; }
-
 struct Body {
   int link = 0;
   double x = 0, y = 0, mass = 0, inertia = 0;
@@ -31,12 +26,12 @@ struct Model {
   double L[kN] = {};
   Body bodies[core::kMaxLinks * 2];
   int n_bodies = 0;
-  // a spinner's constant C_j (I C_i) added to M[i][j] (both coefficients nonzero), in order
-  struct SpinTerm {
-    int i = 0, j = 0;
-    double value = 0;
-  };
-  std::vector<SpinTerm> spin;
+  // the spinners' constants C_j (I C_i) added to M[i][j] where both coefficients are
+  // nonzero, in the spinners' order: n_spin[i][j] of them, spin[i][j][0 ..] (kernel_applies:
+  // at most kMaxSpin spinners)
+  static constexpr int kMaxSpin = 4;
+  int n_spin[kN][kN] = {};
+  double spin[kN][kN][kMaxSpin] = {};
   double ball_mass = 0;
   double B[2][kN] = {};  // motor_matrix
   double b_mount = 0;    // motor_torques' B(1, 0)
@@ -68,7 +63,7 @@ struct Model {
       }
       for (int i = 0; i < kN; ++i)
         for (int j = 0; j < kN; ++j)
-          if (C[i] != 0.0 && C[j] != 0.0) spin.push_back({i, j, C[j] * Li[i]});
+          if (C[i] != 0.0 && C[j] != 0.0) spin[i][j][n_spin[i][j]++] = C[j] * Li[i];
     }
     ball_mass = s.ball_mass;
     const Eigen::Matrix<double, 2, 4> Bm = motor_matrix(s.mount);
@@ -123,21 +118,6 @@ LaneProfile<double> lanes_of(const VelocityProfile& p) {
   std::vector<double> v[2], q[2];
   profile_nodes(p, v, q);
   return {v[0], v[1], q[0], q[1]};
-}
-
-LaneProfile<D2> lanes_of(const VelocityProfile& a, const VelocityProfile& b) {
-  std::vector<double> va[2], qa[2], vb[2], qb[2];
-  profile_nodes(a, va, qa);
-  profile_nodes(b, vb, qb);
-  LaneProfile<D2> out;
-  const size_t n = va[0].size();
-  for (size_t k = 0; k < n; ++k) {
-    out.v0.push_back(D2::of(va[0][k], vb[0][k]));
-    out.v1.push_back(D2::of(va[1][k], vb[1][k]));
-    out.q0.push_back(D2::of(qa[0][k], qb[0][k]));
-    out.q1.push_back(D2::of(qa[1][k], qb[1][k]));
-  }
-  return out;
 }
 
 // one body's m J^T J and I into M, m J^T (Jdot qd + g ey) into h: tray_dynamics.cpp's
@@ -261,6 +241,11 @@ void solve2(D2 A00, D2 A10, D2 A11, D2& b0, D2& b1) {
   b1 = D2::of(r1[0], r1[1]);
 }
 
+void solve2(const D4& A00, const D4& A10, const D4& A11, D4& b0, D4& b1) {
+  solve2(A00.a, A10.a, A11.a, b0.a, b1.a);
+  solve2(A00.b, A10.b, A11.b, b0.b, b1.b);
+}
+
 // the active joints' part of an evaluation: a function of (stage, tau) only
 template <typename T>
 struct Frames {
@@ -343,7 +328,9 @@ class Kernel {
         default: add_body<3>(body, px, py, c, s, sx, sy, w, m.gravity, M, h); break;
       }
     }
-    for (const Model::SpinTerm& st : m.spin) M[st.i][st.j] += st.value;
+    for (int i = 0; i < kN; ++i)
+      for (int j = 0; j < kN; ++j)
+        for (int q = 0; q < m.n_spin[i][j]; ++q) M[i][j] += m.spin[i][j][q];
     // passive accelerations (zero passive torques), then the active torques
     T b0 = 0.0 - h[2], b1 = 0.0 - h[3];
     b0 -= M[2][0] * f.acc[0];
@@ -597,22 +584,6 @@ void start_state(const ThrowSetup& setup, const SimulationCheckpoints* from, int
   }
 }
 
-// lane i of a two-lane state
-void lane_state(const D2 x[5], const Track<D2>& tr, int i, double xs[5], Track<double>& ts) {
-  for (int c = 0; c < 5; ++c) xs[c] = x[c].lane(i);
-  auto take = [i](const std::vector<D2>& a, std::vector<double>& b) {
-    b.resize(a.size());
-    for (size_t k = 0; k < a.size(); ++k) b[k] = a[k].lane(i);
-  };
-  take(tr.theta4, ts.theta4);
-  take(tr.voltage, ts.voltage);
-  take(tr.current, ts.current);
-  take(tr.power, ts.power);
-  take(tr.normal, ts.normal);
-  take(tr.friction, ts.friction);
-  ts.ratio = tr.ratio.lane(i);
-}
-
 // simulate.cpp's end of a simulation
 ProfileEvaluation finish(const ThrowSetup& setup, const double x[5], Track<double>& tr, End why,
                          double backoff) {
@@ -664,15 +635,111 @@ Run run_settings(const ThrowSetup& setup, const VelocityProfile& p, double backo
   return r;
 }
 
-// one lane from (k, j) to its end
-ProfileEvaluation simulate_from(const ThrowSetup& setup, const Model& m,
-                                const VelocityProfile& profile, const Run& r, double x[5],
-                                Track<double>& tr, int k, int j) {
-  const LaneProfile<double> lp = lanes_of(profile);
-  Kernel<double> K(m, lp, r.h);
-  End why = End::kNone;
-  run(r, K, m, x, tr, k, j, why);
-  return finish(setup, x, tr, why, r.backoff);
+// one profile's simulation, between the runs of its lanes
+struct Job {
+  LaneProfile<double> nodes;
+  double x[5];
+  Track<double> tr;
+  ProfileEvaluation* out;
+};
+
+template <typename T>
+constexpr int kWidth = 1;
+template <>
+constexpr int kWidth<D2> = 2;
+template <>
+constexpr int kWidth<D4> = 4;
+
+template <typename T>
+T pack(const double* v);
+template <>
+double pack<double>(const double* v) {
+  return v[0];
+}
+template <>
+D2 pack<D2>(const double* v) {
+  return D2::of(v[0], v[1]);
+}
+template <>
+D4 pack<D4>(const double* v) {
+  return D4::of(v[0], v[1], v[2], v[3]);
+}
+
+// the jobs (the first kWidth<T>; fewer are padded with a copy of the first, whose lanes are
+// ignored) from (k, j) in T's lanes until one ends; their states written back, returns the
+// jobs that ended
+template <typename T>
+int run_lanes(const Model& m, const Run& r, Job* const* jobs, int n, int& k, int& j, End& why) {
+  constexpr int W = kWidth<T>;
+  Job* lane[W];
+  for (int i = 0; i < W; ++i) lane[i] = jobs[i < n ? i : 0];
+  double v[W];
+  auto packed = [&](auto&& value) {
+    for (int i = 0; i < W; ++i) v[i] = value(*lane[i]);
+    return pack<T>(v);
+  };
+  const int P = r.P;
+  LaneProfile<T> lp;
+  for (int q = 0; q <= P; ++q) {
+    lp.v0.push_back(packed([q](const Job& b) { return b.nodes.v0[q]; }));
+    lp.v1.push_back(packed([q](const Job& b) { return b.nodes.v1[q]; }));
+    lp.q0.push_back(packed([q](const Job& b) { return b.nodes.q0[q]; }));
+    lp.q1.push_back(packed([q](const Job& b) { return b.nodes.q1[q]; }));
+  }
+  T x[5];
+  for (int c = 0; c < 5; ++c) x[c] = packed([c](const Job& b) { return b.x[c]; });
+  Track<T> tr;
+  auto track_of = [&](std::vector<double> Track<double>::*f) {
+    std::vector<T> out(P);
+    for (int q = 0; q < P; ++q) out[q] = packed([&](const Job& b) { return (b.tr.*f)[q]; });
+    return out;
+  };
+  tr.theta4 = track_of(&Track<double>::theta4);
+  tr.voltage = track_of(&Track<double>::voltage);
+  tr.current = track_of(&Track<double>::current);
+  tr.power = track_of(&Track<double>::power);
+  tr.normal = track_of(&Track<double>::normal);
+  tr.friction = track_of(&Track<double>::friction);
+  tr.ratio = packed([](const Job& b) { return b.tr.ratio; });
+  Kernel<T> K(m, lp, r.h);
+  const int ended = run(r, K, m, x, tr, k, j, why);
+  for (int i = 0; i < n && i < W; ++i) {
+    Job& b = *lane[i];
+    for (int c = 0; c < 5; ++c) b.x[c] = lane_of(x[c], i);
+    for (int q = 0; q < P; ++q) {
+      b.tr.theta4[q] = lane_of(tr.theta4[q], i);
+      b.tr.voltage[q] = lane_of(tr.voltage[q], i);
+      b.tr.current[q] = lane_of(tr.current[q], i);
+      b.tr.power[q] = lane_of(tr.power[q], i);
+      b.tr.normal[q] = lane_of(tr.normal[q], i);
+      b.tr.friction[q] = lane_of(tr.friction[q], i);
+    }
+    b.tr.ratio = lane_of(tr.ratio, i);
+  }
+  return ended & ((1 << std::min(n, W)) - 1);
+}
+
+// the jobs (1 to 4, all at stage k, step j) to their ends: their lanes run until one ends,
+// which is finished; the others go on from where it ended, in the narrowest lanes that hold
+// them (3 in 4 lanes, one a copy)
+void drive(const ThrowSetup& setup, const Model& m, const Run& r, std::vector<Job*> live, int k,
+           int j) {
+  while (!live.empty()) {
+    const int n = static_cast<int>(live.size());
+    End why = End::kNone;
+    const int ended = n >= 3   ? run_lanes<D4>(m, r, live.data(), n, k, j, why)
+                      : n == 2 ? run_lanes<D2>(m, r, live.data(), n, k, j, why)
+                               : run_lanes<double>(m, r, live.data(), n, k, j, why);
+    std::vector<Job*> next;
+    for (int i = 0; i < n; ++i) {
+      Job& b = *live[i];
+      if (ended == 0 || (ended >> i & 1))
+        *b.out = finish(setup, b.x, b.tr, ended == 0 ? End::kNone : why, r.backoff);
+      else
+        next.push_back(&b);
+    }
+    live = std::move(next);
+  }
 }
 
 }  // namespace
@@ -681,8 +748,34 @@ bool kernel_applies(const ThrowSetup& s) {
   const core::PlanarChain& c = s.chain;
   return !s.generic_dynamics && c.num_links() == kN && c.links[0].active && c.links[1].active &&
          !c.links[2].active && !c.links[3].active &&
-         c.num_links() + static_cast<int>(c.point_masses.size()) <= core::kMaxLinks * 2;
+         c.num_links() + static_cast<int>(c.point_masses.size()) <= core::kMaxLinks * 2 &&
+         static_cast<int>(c.spinners.size()) <= Model::kMaxSpin;
 }
+
+namespace {
+
+// profiles[0 .. n) (n <= 4, the same stages and final time) from t = 0 or from `from`'s stage
+// `first`, at once
+void simulate_group(const ThrowSetup& setup, const Model& m, const VelocityProfile* const* profiles,
+                    int n, double backoff, bool stop, ProfileEvaluation* out,
+                    const SimulationCheckpoints* from, int first, SimulationCheckpoints* save) {
+  Run r = run_settings(setup, *profiles[0], backoff, stop);
+  r.save = save;
+  const int k0 = from ? first : 0;
+  std::vector<Job> jobs(n);
+  std::vector<Job*> live;
+  for (int i = 0; i < n; ++i) {
+    Job& b = jobs[i];
+    b.nodes = lanes_of(*profiles[i]);
+    start_state(setup, from, k0, b.x);
+    b.tr = start_track<double>(r.P, from, k0);
+    b.out = &out[i];
+    live.push_back(&b);
+  }
+  drive(setup, m, r, std::move(live), k0, 0);
+}
+
+}  // namespace
 
 ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile& profile,
                                   double backoff, bool stop_when_infeasible,
@@ -690,50 +783,34 @@ ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile
                                   SimulationCheckpoints* save) {
   ARM_THROW_UNLESS(kernel_applies(setup), "the simulation kernel needs the tray arm's joints");
   const Model m(setup);
-  Run r = run_settings(setup, profile, backoff, stop_when_infeasible);
   if (save) {
     save->profile = profile;
     save->x.clear();
     save->friction_ratio.clear();
-    r.save = save;
   }
-  const int k0 = from ? first : 0;
-  double x[5];
-  start_state(setup, from, k0, x);
-  Track<double> tr = start_track<double>(r.P, from, k0);
-  return simulate_from(setup, m, profile, r, x, tr, k0, 0);
+  const VelocityProfile* p = &profile;
+  ProfileEvaluation out;
+  simulate_group(setup, m, &p, 1, backoff, stop_when_infeasible, &out, from, first, save);
+  return out;
 }
 
-void simulate_kernel_pair(const ThrowSetup& setup, const VelocityProfile& a,
-                          const VelocityProfile& b, double backoff, bool stop_when_infeasible,
-                          ProfileEvaluation out[2], const SimulationCheckpoints* from, int first) {
+void simulate_kernel_lanes(const ThrowSetup& setup,
+                           const std::vector<const VelocityProfile*>& profiles, int width,
+                           double backoff, bool stop_when_infeasible, ProfileEvaluation* out,
+                           const SimulationCheckpoints* from, int first) {
   ARM_THROW_UNLESS(kernel_applies(setup), "the simulation kernel needs the tray arm's joints");
-  if (a.stages() != b.stages() || a.tf != b.tf) {
-    out[0] = simulate_kernel(setup, a, backoff, stop_when_infeasible, from, first);
-    out[1] = simulate_kernel(setup, b, backoff, stop_when_infeasible, from, first);
-    return;
-  }
+  ARM_THROW_UNLESS(width == 1 || width == 2 || width == 4,
+                   "the simulation kernel runs 1, 2 or 4 lanes, not " << width);
   const Model m(setup);
-  const Run r = run_settings(setup, a, backoff, stop_when_infeasible);
-  const int k0 = from ? first : 0;
-  const LaneProfile<D2> lp = lanes_of(a, b);
-  Kernel<D2> K(m, lp, r.h);
-  D2 x[5];
-  start_state(setup, from, k0, x);
-  Track<D2> tr = start_track<D2>(r.P, from, k0);
-  int k = k0, j = 0;
-  End why = End::kNone;
-  const int ended = run(r, K, m, x, tr, k, j, why);
-  for (int i = 0; i < 2; ++i) {
-    double xs[5];
-    Track<double> ts;
-    lane_state(x, tr, i, xs, ts);
-    if (ended == 0)
-      out[i] = finish(setup, xs, ts, End::kNone, backoff);
-    else if (ended & (1 << i))
-      out[i] = finish(setup, xs, ts, why, backoff);
-    else
-      out[i] = simulate_from(setup, m, i == 0 ? a : b, r, xs, ts, k, j);
+  const int n = static_cast<int>(profiles.size());
+  for (int i = 0; i < n;) {
+    int g = 1;
+    while (g < width && i + g < n && profiles[i + g]->stages() == profiles[i]->stages() &&
+           profiles[i + g]->tf == profiles[i]->tf)
+      ++g;
+    simulate_group(setup, m, &profiles[i], g, backoff, stop_when_infeasible, &out[i], from, first,
+                   nullptr);
+    i += g;
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// The planning model's RK4 simulation without recorded samples (IDP's candidates, SLSQP's
-/// points and neighbours), one profile at a time or two at once in the lanes of lanes.hpp.
+/// points and neighbours), one profile at a time or two or four at once in the lanes of
+/// lanes.hpp.
 ///
 /// It computes what simulate_profile's one-evaluation-at-a-time path computes (the Planner
 /// of simulate.cpp with TrayDynamics::mixed and core::motor_sample): each value the same
@@ -12,10 +13,14 @@
 ///   second and third evaluations share it, and so do a step's last and the next step's
 ///   first when their times are the same double; it is computed once and reused;
 /// - no Eigen temporaries of run-time size and only eq. 5-6's voltage, current and power;
-/// - two profiles of the same stages and final time run side by side, the same operations on
-///   two lanes. A lane ends when its profile does (stopped at a certain violation or not
-///   finite, as simulate_profile); the other lane then goes on alone from the last point both
-///   passed (re-evaluating a point only repeats its maxima, which leaves them unchanged).
+/// - two or four profiles of the same stages and final time run side by side, the same
+///   operations on two or four lanes (lanes.hpp; four lanes are two independent chains of
+///   two, which the processor overlaps). A lane ends when its profile does (stopped at a
+///   certain violation or not finite, as simulate_profile); the others then go on from the
+///   last point all passed, in narrower lanes (three in four, one a copy); re-evaluating a
+///   point only repeats its maxima, which leaves them unchanged.
+
+#include <vector>
 
 #include "studies/throwing/simulate.hpp"
 
@@ -33,12 +38,13 @@ ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile
                                   const SimulationCheckpoints* from = nullptr, int first = 0,
                                   SimulationCheckpoints* save = nullptr);
 
-/// simulate_kernel for two profiles at once (out[0] of a, out[1] of b); both resume at stage
-/// `first` of `from` if it is given. Profiles of different stage counts or final times run
-/// one after the other.
-void simulate_kernel_pair(const ThrowSetup& setup, const VelocityProfile& a,
-                          const VelocityProfile& b, double backoff, bool stop_when_infeasible,
-                          ProfileEvaluation out[2], const SimulationCheckpoints* from = nullptr,
-                          int first = 0);
+/// simulate_kernel for each of `profiles` (out[i] of profiles[i]), `width` (1, 2 or 4) of
+/// them at once (consecutive profiles of the same stages and final time); all resume at stage
+/// `first` of `from` if it is given.
+/// @throws std::invalid_argument for another width.
+void simulate_kernel_lanes(const ThrowSetup& setup,
+                           const std::vector<const VelocityProfile*>& profiles, int width,
+                           double backoff, bool stop_when_infeasible, ProfileEvaluation* out,
+                           const SimulationCheckpoints* from = nullptr, int first = 0);
 
 }  // namespace armstudy::studies
