@@ -99,7 +99,7 @@ BENCHMARK(BM_ThrowReplayVoltages)->Unit(benchmark::kMillisecond);
 
 // one IDP iteration (15 stage nodes x 5 candidates) on 1 and 2 threads; second argument 1:
 // through the generic chain; third argument ThrowSetup::kernel_lanes (0: the Planner, 1: the
-// kernel one candidate at a time, 2 or 4: that many at once)
+// kernel one candidate at a time, 2 to 5: that many at once)
 void BM_IdpIteration(benchmark::State& state) {
   Fixture f;
   f.setup.generic_dynamics = state.range(1) == 1;
@@ -119,10 +119,12 @@ BENCHMARK(BM_IdpIteration)
     ->Args({1, 0, 1})
     ->Args({1, 0, 2})
     ->Args({1, 0, 4})
+    ->Args({1, 0, 5})
     ->Args({1, 1, 0})
     ->Args({2, 0, 0})
     ->Args({2, 0, 2})
     ->Args({2, 0, 4})
+    ->Args({2, 0, 5})
     ->Args({2, 1, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
@@ -130,7 +132,7 @@ BENCHMARK(BM_IdpIteration)
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
 // (computed once, outside the timing), one seed on one core, or all seeds on both cores;
 // second argument 0: every candidate simulated to the end (no early stop); third argument
-// ThrowSetup::kernel_lanes (0: the Planner, 2 or 4: the kernel, that many candidates at once)
+// ThrowSetup::kernel_lanes (0: the Planner, 2 to 5: the kernel, that many candidates at once)
 void BM_IdpConverged(benchmark::State& state) {
   Fixture f;
   f.setup.kernel_lanes = static_cast<int>(state.range(2));
@@ -162,9 +164,10 @@ BENCHMARK(BM_IdpConverged)
     ->Args({1, 1, 0})
     ->Args({1, 1, 2})
     ->Args({1, 1, 4})
+    ->Args({1, 1, 5})
     ->Args({2, 1, 0})
-    ->Args({2, 1, 2})
     ->Args({2, 1, 4})
+    ->Args({2, 1, 5})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);

@@ -1,4 +1,4 @@
-// The simulation kernel (simulate_kernel.hpp), one profile at a time and two or four at once, gives
+// The simulation kernel (simulate_kernel.hpp), one profile at a time and two to five at once, gives
 // the Planner's evaluations (ThrowSetup::kernel_lanes 0, one evaluation at a time) bit for
 // bit: feasible, infeasible, early-stopped and diverging profiles, in pairs whose lanes end
 // at different points, resumed from checkpoints, and through IDP and the SLSQP gradient's
@@ -129,14 +129,19 @@ TEST(ThrowKernel, OneAndTwoAtOnceEqualThePlannerBitForBit) {
             const std::string at = "pair " + std::to_string(i) + ", " + std::to_string(j);
             expect_bitwise(two[0], ref[i], at);
             expect_bitwise(two[1], ref[j], at);
-            const size_t k = (i + 7 * j + 1) % ps.size(), l = (3 * i + j + 5) % ps.size();
-            ProfileEvaluation four[4];
-            simulate_kernel_lanes(one, {&ps[i], &ps[j], &ps[k], &ps[l]}, 4, 0.02, stop, four);
-            const size_t idx[4] = {i, j, k, l};
-            for (int q = 0; q < 4; ++q)
-              expect_bitwise(four[q], ref[idx[q]], "four, lane " + std::to_string(q) + " " + at);
+            const size_t idx[5] = {i, j, (i + 7 * j + 1) % ps.size(), (3 * i + j + 5) % ps.size(),
+                                   (5 * i + 3 * j + 2) % ps.size()};
+            for (int w : {3, 4, 5}) {
+              std::vector<const VelocityProfile*> group;
+              for (int q = 0; q < w; ++q) group.push_back(&ps[idx[q]]);
+              ProfileEvaluation evs[5];
+              simulate_kernel_lanes(one, group, w, 0.02, stop, evs);
+              for (int q = 0; q < w; ++q)
+                expect_bitwise(evs[q], ref[idx[q]],
+                               std::to_string(w) + " lanes, lane " + std::to_string(q) + " " + at);
+            }
           }
-        for (int lanes : {2, 4}) {
+        for (int lanes : {2, 3, 4, 5}) {
           const auto evs = evaluate_profiles(c.with_lanes(lanes), ps, 2, 0.02, stop);
           for (size_t i = 0; i < ps.size(); ++i)
             expect_bitwise(evs[i], ref[i], "evaluate_profiles " + std::to_string(i));
@@ -166,7 +171,7 @@ TEST(ThrowKernel, NeighboursResumedInPairsEqualThePlanner) {
           first.push_back(k - 1);
         }
     const auto ref = evaluate_neighbours(c.with_lanes(0), ps, first, 1, 0.02);
-    for (int lanes : {1, 2, 4}) {
+    for (int lanes : {1, 2, 3, 4, 5}) {
       const auto evs = evaluate_neighbours(c.with_lanes(lanes), ps, first, 2, 0.02);
       ASSERT_EQ(ref.size(), evs.size());
       for (size_t i = 0; i < ps.size(); ++i)
@@ -197,7 +202,7 @@ TEST(ThrowKernel, IdpInPairsMakesThePlannersChoices) {
   s.threads = 2;
   s.backoff = 0.02;
   const IdpResult b = run_idp(c.with_lanes(0), c.eq8, c.delta, s);
-  for (int lanes : {2, 4}) {
+  for (int lanes : {2, 4, 5}) {
     const IdpResult a = run_idp(c.with_lanes(lanes), c.eq8, c.delta, s);
     EXPECT_EQ(a.best.v, b.best.v);
     expect_bitwise(a.evaluation, b.evaluation, "best");

@@ -95,61 +95,130 @@ inline void lane_cos_sin(double a, double& c, double& s) {
 inline double lane_of(D2 a, int i) { return a.lane(i); }
 inline double lane_of(double a, int) { return a; }
 
-/// Four lanes as two D2 (two independent chains of the same operations, which the processor
-/// overlaps); lanes 0, 1 in a, 2, 3 in b.
-struct M4 {
-  M2 a, b;
-};
-struct D4 {
-  D2 a, b;
-  D4() = default;
-  D4(double x) : a(x), b(x) {}  // NOLINT: implicit, a constant in every lane
-  D4(D2 lo, D2 hi) : a(lo), b(hi) {}
-  static D4 of(double l0, double l1, double l2, double l3) {
-    return {D2::of(l0, l1), D2::of(l2, l3)};
+/// Mask or and not (|| and ! of bools).
+inline bool lane_or(bool a, bool b) { return a || b; }
+inline M2 lane_or(M2 a, M2 b) { return a | b; }
+inline bool lane_not(bool a) { return !a; }
+inline M2 lane_not(M2 a) { return !a; }
+
+/// Lanes side by side: A's, then B's (D2, double or another LanePair). Their operations are
+/// independent chains, which the processor overlaps: four lanes as two D2 run faster than
+/// two D2 one after the other. The operators are hidden friends, so that a double converts to
+/// a constant in every lane as it does for D2.
+template <typename A, typename B>
+struct LanePair;
+
+/// Lanes of a value type: 1 (double), 2 (D2), the sum for a LanePair.
+template <typename T>
+inline constexpr int lane_count = 1;
+template <>
+inline constexpr int lane_count<D2> = 2;
+template <typename A, typename B>
+inline constexpr int lane_count<LanePair<A, B>> = lane_count<A> + lane_count<B>;
+
+/// The mask of a LanePair's comparisons.
+template <typename MA, typename MB, int WA>
+struct MaskPair {
+  MA a;
+  MB b;
+  friend MaskPair operator|(const MaskPair& x, const MaskPair& y) {
+    return {lane_or(x.a, y.a), lane_or(x.b, y.b)};
   }
-  double lane(int i) const { return i < 2 ? a.lane(i) : b.lane(i - 2); }
+  friend MaskPair operator!(const MaskPair& x) { return {lane_not(x.a), lane_not(x.b)}; }
 };
 
-inline D4 operator+(const D4& x, const D4& y) { return {x.a + y.a, x.b + y.b}; }
-inline D4 operator-(const D4& x, const D4& y) { return {x.a - y.a, x.b - y.b}; }
-inline D4 operator*(const D4& x, const D4& y) { return {x.a * y.a, x.b * y.b}; }
-inline D4 operator/(const D4& x, const D4& y) { return {x.a / y.a, x.b / y.b}; }
-inline D4 operator-(const D4& x) { return {-x.a, -x.b}; }
-inline D4& operator+=(D4& x, const D4& y) { return x = x + y; }
-inline D4& operator-=(D4& x, const D4& y) { return x = x - y; }
-inline D4& operator/=(D4& x, const D4& y) { return x = x / y; }
+template <typename MA, typename MB, int WA>
+MaskPair<MA, MB, WA> lane_or(const MaskPair<MA, MB, WA>& a, const MaskPair<MA, MB, WA>& b) {
+  return a | b;
+}
+template <typename MA, typename MB, int WA>
+MaskPair<MA, MB, WA> lane_not(const MaskPair<MA, MB, WA>& a) {
+  return !a;
+}
+template <typename MA, typename MB, int WA>
+int lanes_set(const MaskPair<MA, MB, WA>& x) {
+  return lanes_set(x.a) | (lanes_set(x.b) << WA);
+}
 
-inline M4 operator<(const D4& x, const D4& y) { return {x.a < y.a, x.b < y.b}; }
-inline M4 operator>(const D4& x, const D4& y) { return {x.a > y.a, x.b > y.b}; }
-inline M4 operator<=(const D4& x, const D4& y) { return {x.a <= y.a, x.b <= y.b}; }
-inline M4 operator==(const D4& x, const D4& y) { return {x.a == y.a, x.b == y.b}; }
-inline M4 operator!=(const D4& x, const D4& y) { return {x.a != y.a, x.b != y.b}; }
-inline M4 operator|(const M4& x, const M4& y) { return {x.a | y.a, x.b | y.b}; }
-inline M4 operator&(const M4& x, const M4& y) { return {x.a & y.a, x.b & y.b}; }
-inline M4 operator!(const M4& x) { return {!x.a, !x.b}; }
+template <typename A, typename B>
+struct LanePair {
+  using Mask = MaskPair<decltype(A() < A()), decltype(B() < B()), lane_count<A>>;
+  A a;
+  B b;
+  LanePair() = default;
+  LanePair(double x) : a(x), b(x) {}  // NOLINT: implicit, a constant in every lane
+  LanePair(const A& lo, const B& hi) : a(lo), b(hi) {}
 
-inline int lanes_set(const M4& x) { return lanes_set(x.a) | (lanes_set(x.b) << 2); }
-inline D4 select(const M4& m, const D4& x, const D4& y) {
+  friend LanePair operator+(const LanePair& x, const LanePair& y) { return {x.a + y.a, x.b + y.b}; }
+  friend LanePair operator-(const LanePair& x, const LanePair& y) { return {x.a - y.a, x.b - y.b}; }
+  friend LanePair operator*(const LanePair& x, const LanePair& y) { return {x.a * y.a, x.b * y.b}; }
+  friend LanePair operator/(const LanePair& x, const LanePair& y) { return {x.a / y.a, x.b / y.b}; }
+  friend LanePair operator-(const LanePair& x) { return {-x.a, -x.b}; }
+  friend LanePair& operator+=(LanePair& x, const LanePair& y) { return x = x + y; }
+  friend LanePair& operator-=(LanePair& x, const LanePair& y) { return x = x - y; }
+  friend LanePair& operator/=(LanePair& x, const LanePair& y) { return x = x / y; }
+  friend Mask operator<(const LanePair& x, const LanePair& y) { return {x.a < y.a, x.b < y.b}; }
+  friend Mask operator>(const LanePair& x, const LanePair& y) { return {x.a > y.a, x.b > y.b}; }
+  friend Mask operator<=(const LanePair& x, const LanePair& y) { return {x.a <= y.a, x.b <= y.b}; }
+  friend Mask operator==(const LanePair& x, const LanePair& y) { return {x.a == y.a, x.b == y.b}; }
+  friend Mask operator!=(const LanePair& x, const LanePair& y) { return {x.a != y.a, x.b != y.b}; }
+};
+
+template <typename A, typename B>
+LanePair<A, B> select(const typename LanePair<A, B>::Mask& m, const LanePair<A, B>& x,
+                      const LanePair<A, B>& y) {
   return {select(m.a, x.a, y.a), select(m.b, x.b, y.b)};
 }
-inline D4 lane_abs(const D4& x) { return {lane_abs(x.a), lane_abs(x.b)}; }
-inline D4 lane_sqrt(const D4& x) { return {lane_sqrt(x.a), lane_sqrt(x.b)}; }
-inline D4 lane_max(const D4& x, const D4& y) { return {lane_max(x.a, y.a), lane_max(x.b, y.b)}; }
-inline D4 lane_min(const D4& x, const D4& y) { return {lane_min(x.a, y.a), lane_min(x.b, y.b)}; }
-inline M4 lane_finite(const D4& x) { return {lane_finite(x.a), lane_finite(x.b)}; }
-inline void lane_cos_sin(const D4& x, D4& c, D4& s) {
+template <typename A, typename B>
+LanePair<A, B> lane_abs(const LanePair<A, B>& x) {
+  return {lane_abs(x.a), lane_abs(x.b)};
+}
+template <typename A, typename B>
+LanePair<A, B> lane_sqrt(const LanePair<A, B>& x) {
+  return {lane_sqrt(x.a), lane_sqrt(x.b)};
+}
+template <typename A, typename B>
+LanePair<A, B> lane_max(const LanePair<A, B>& x, const LanePair<A, B>& y) {
+  return {lane_max(x.a, y.a), lane_max(x.b, y.b)};
+}
+template <typename A, typename B>
+LanePair<A, B> lane_min(const LanePair<A, B>& x, const LanePair<A, B>& y) {
+  return {lane_min(x.a, y.a), lane_min(x.b, y.b)};
+}
+template <typename A, typename B>
+typename LanePair<A, B>::Mask lane_finite(const LanePair<A, B>& x) {
+  return {lane_finite(x.a), lane_finite(x.b)};
+}
+template <typename A, typename B>
+void lane_cos_sin(const LanePair<A, B>& x, LanePair<A, B>& c, LanePair<A, B>& s) {
   lane_cos_sin(x.a, c.a, s.a);
   lane_cos_sin(x.b, c.b, s.b);
 }
-inline double lane_of(const D4& x, int i) { return x.lane(i); }
+template <typename A, typename B>
+double lane_of(const LanePair<A, B>& x, int i) {
+  return i < lane_count<A> ? lane_of(x.a, i) : lane_of(x.b, i - lane_count<A>);
+}
 
-/// Mask or, not (|| and ! of bools).
-inline bool lane_or(bool a, bool b) { return a || b; }
-inline M2 lane_or(M2 a, M2 b) { return a | b; }
-inline M4 lane_or(const M4& a, const M4& b) { return a | b; }
-inline bool lane_not(bool a) { return !a; }
-inline M2 lane_not(M2 a) { return !a; }
-inline M4 lane_not(const M4& a) { return !a; }
+/// A value of lanes v[0 .. lane_count<T>).
+template <typename T>
+T pack_lanes(const double* v);
+template <>
+inline double pack_lanes<double>(const double* v) {
+  return v[0];
+}
+template <>
+inline D2 pack_lanes<D2>(const double* v) {
+  return D2::of(v[0], v[1]);
+}
+template <typename T>
+requires(lane_count<T> > 2) T pack_lanes(const double* v) {
+  using A = decltype(T::a);
+  using B = decltype(T::b);
+  return {pack_lanes<A>(v), pack_lanes<B>(v + lane_count<A>)};
+}
+
+using D3 = LanePair<D2, double>;  ///< three lanes
+using D4 = LanePair<D2, D2>;      ///< four lanes
+using D5 = LanePair<D4, double>;  ///< five lanes
 
 }  // namespace armstudy::studies

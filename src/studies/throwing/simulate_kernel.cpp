@@ -212,15 +212,19 @@ void solve2(double A00, double A10, double A11, double& b0, double& b1) {
   if (b0 != 0.0) b0 /= A[0][0];
 }
 
-void solve2(D2 A00, D2 A10, D2 A11, D2& b0, D2& b1) {
-  if (lanes_set(A00 > 0.0) == 3) {
-    const D2 l00 = lane_sqrt(A00);
-    const D2 l10 = A10 / l00;
-    const D2 x = A11 - l10 * l10;
-    if (lanes_set(x > 0.0) == 3) {
-      const D2 l11 = lane_sqrt(x);
-      M2 nz = b0 != 0.0;
-      const D2 y0 = b0 / l00;
+// the same for 2 or 4 lanes: the straight code with the branches on b taken lane by lane
+// where every lane's pivots are > 0, else each lane by the scalar code
+template <typename T>
+void solve2(const T& A00, const T& A10, const T& A11, T& b0, T& b1) {
+  constexpr int all = (1 << lane_count<T>)-1;
+  if (lanes_set(A00 > 0.0) == all) {
+    const T l00 = lane_sqrt(A00);
+    const T l10 = A10 / l00;
+    const T x = A11 - l10 * l10;
+    if (lanes_set(x > 0.0) == all) {
+      const T l11 = lane_sqrt(x);
+      const auto nz = b0 != 0.0;
+      const T y0 = b0 / l00;
       b1 = select(nz, b1 - y0 * l10, b1);
       b0 = select(nz, y0, b0);
       b1 = select(b1 != 0.0, b1 / l11, b1);
@@ -230,20 +234,17 @@ void solve2(D2 A00, D2 A10, D2 A11, D2& b0, D2& b1) {
       return;
     }
   }
-  // a lane that leaves the straight code: both lanes one at a time
-  double r0[2], r1[2];
-  for (int i = 0; i < 2; ++i) {
-    r0[i] = b0.lane(i);
-    r1[i] = b1.lane(i);
-    solve2(A00.lane(i), A10.lane(i), A11.lane(i), r0[i], r1[i]);
+  constexpr int n = lane_count<T>;
+  double r0[n], r1[n], v[n];
+  for (int i = 0; i < n; ++i) {
+    r0[i] = lane_of(b0, i);
+    r1[i] = lane_of(b1, i);
+    solve2(lane_of(A00, i), lane_of(A10, i), lane_of(A11, i), r0[i], r1[i]);
   }
-  b0 = D2::of(r0[0], r0[1]);
-  b1 = D2::of(r1[0], r1[1]);
-}
-
-void solve2(const D4& A00, const D4& A10, const D4& A11, D4& b0, D4& b1) {
-  solve2(A00.a, A10.a, A11.a, b0.a, b1.a);
-  solve2(A00.b, A10.b, A11.b, b0.b, b1.b);
+  for (int i = 0; i < n; ++i) v[i] = r0[i];
+  b0 = pack_lanes<T>(v);
+  for (int i = 0; i < n; ++i) v[i] = r1[i];
+  b1 = pack_lanes<T>(v);
 }
 
 // the active joints' part of an evaluation: a function of (stage, tau) only
@@ -643,40 +644,18 @@ struct Job {
   ProfileEvaluation* out;
 };
 
-template <typename T>
-constexpr int kWidth = 1;
-template <>
-constexpr int kWidth<D2> = 2;
-template <>
-constexpr int kWidth<D4> = 4;
-
-template <typename T>
-T pack(const double* v);
-template <>
-double pack<double>(const double* v) {
-  return v[0];
-}
-template <>
-D2 pack<D2>(const double* v) {
-  return D2::of(v[0], v[1]);
-}
-template <>
-D4 pack<D4>(const double* v) {
-  return D4::of(v[0], v[1], v[2], v[3]);
-}
-
-// the jobs (the first kWidth<T>; fewer are padded with a copy of the first, whose lanes are
+// the jobs (the first lane_count<T>; fewer are padded with a copy of the first, whose lanes are
 // ignored) from (k, j) in T's lanes until one ends; their states written back, returns the
 // jobs that ended
 template <typename T>
 int run_lanes(const Model& m, const Run& r, Job* const* jobs, int n, int& k, int& j, End& why) {
-  constexpr int W = kWidth<T>;
+  constexpr int W = lane_count<T>;
   Job* lane[W];
   for (int i = 0; i < W; ++i) lane[i] = jobs[i < n ? i : 0];
   double v[W];
   auto packed = [&](auto&& value) {
     for (int i = 0; i < W; ++i) v[i] = value(*lane[i]);
-    return pack<T>(v);
+    return pack_lanes<T>(v);
   };
   const int P = r.P;
   LaneProfile<T> lp;
@@ -719,17 +698,21 @@ int run_lanes(const Model& m, const Run& r, Job* const* jobs, int n, int& k, int
   return ended & ((1 << std::min(n, W)) - 1);
 }
 
-// the jobs (1 to 4, all at stage k, step j) to their ends: their lanes run until one ends,
-// which is finished; the others go on from where it ended, in the narrowest lanes that hold
-// them (3 in 4 lanes, one a copy)
+// the jobs (1 to 5, all at stage k, step j) to their ends: their lanes run until one ends,
+// which is finished; the others go on from where it ended, in as many lanes
 void drive(const ThrowSetup& setup, const Model& m, const Run& r, std::vector<Job*> live, int k,
            int j) {
   while (!live.empty()) {
     const int n = static_cast<int>(live.size());
     End why = End::kNone;
-    const int ended = n >= 3   ? run_lanes<D4>(m, r, live.data(), n, k, j, why)
-                      : n == 2 ? run_lanes<D2>(m, r, live.data(), n, k, j, why)
-                               : run_lanes<double>(m, r, live.data(), n, k, j, why);
+    int ended = 0;
+    switch (n) {
+      case 1: ended = run_lanes<double>(m, r, live.data(), n, k, j, why); break;
+      case 2: ended = run_lanes<D2>(m, r, live.data(), n, k, j, why); break;
+      case 3: ended = run_lanes<D3>(m, r, live.data(), n, k, j, why); break;
+      case 4: ended = run_lanes<D4>(m, r, live.data(), n, k, j, why); break;
+      default: ended = run_lanes<D5>(m, r, live.data(), n, k, j, why); break;
+    }
     std::vector<Job*> next;
     for (int i = 0; i < n; ++i) {
       Job& b = *live[i];
@@ -799,8 +782,8 @@ void simulate_kernel_lanes(const ThrowSetup& setup,
                            double backoff, bool stop_when_infeasible, ProfileEvaluation* out,
                            const SimulationCheckpoints* from, int first) {
   ARM_THROW_UNLESS(kernel_applies(setup), "the simulation kernel needs the tray arm's joints");
-  ARM_THROW_UNLESS(width == 1 || width == 2 || width == 4,
-                   "the simulation kernel runs 1, 2 or 4 lanes, not " << width);
+  ARM_THROW_UNLESS(width >= 1 && width <= 5,
+                   "the simulation kernel runs 1 to 5 lanes, not " << width);
   const Model m(setup);
   const int n = static_cast<int>(profiles.size());
   for (int i = 0; i < n;) {
