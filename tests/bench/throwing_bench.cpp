@@ -50,34 +50,28 @@ BENCHMARK(BM_ThrowSimulateProfile)
     ->Args({80, 1, 0})
     ->Unit(benchmark::kMillisecond);
 
-// four candidates of the default case (eq. 8 and three moves of it), one after the other by
-// the Planner (argument 0) or the kernel (1), two at once (2) or all four at once (4) in the
-// kernel's lanes
-void BM_ThrowSimulateFour(benchmark::State& state) {
+// w candidates of the default case (eq. 8 and moves of it) at once in the kernel's lanes
+// (argument w = 1 .. 5; 1: one candidate); the rate counts every candidate's steps
+void BM_ThrowSimulateLanes(benchmark::State& state) {
   Fixture f;
-  std::vector<VelocityProfile> ps(4, f.profile);
-  for (int i = 1; i < 4; ++i) {
+  const int w = static_cast<int>(state.range(0));
+  std::vector<VelocityProfile> ps(w, f.profile);
+  for (int i = 1; i < w; ++i) {
     ps[i].v(0, 3 + i) += 0.1 * i;
     project_displacement(ps[i], f.spec.release - f.spec.start);
   }
-  const int lanes = static_cast<int>(state.range(0));
-  f.setup.kernel_lanes = lanes;
-  const std::vector<const VelocityProfile*> group{&ps[0], &ps[1], &ps[2], &ps[3]};
-  const long steps = 4L * f.setup.steps_per_stage * f.profile.stages();
+  std::vector<const VelocityProfile*> group;
+  for (const VelocityProfile& p : ps) group.push_back(&p);
+  std::vector<ProfileEvaluation> evs(w);
+  const long steps = static_cast<long>(w) * f.setup.steps_per_stage * f.profile.stages();
   for (auto _ : state) {
-    if (lanes >= 2) {
-      ProfileEvaluation evs[4];
-      simulate_kernel_lanes(f.setup, group, lanes, 0.0, false, evs);
-      benchmark::DoNotOptimize(evs[3].energy);
-    } else {
-      for (const VelocityProfile& p : ps)
-        benchmark::DoNotOptimize(simulate_profile(f.setup, p).energy);
-    }
+    simulate_kernel_lanes(f.setup, group, w, 0.0, false, evs.data());
+    benchmark::DoNotOptimize(evs.back().energy);
   }
   state.counters["rk4_steps_per_s"] = benchmark::Counter(
       static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_ThrowSimulateFour)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ThrowSimulateLanes)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
 
 void BM_ThrowReplayVoltages(benchmark::State& state) {
   Fixture f;
