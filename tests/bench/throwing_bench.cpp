@@ -124,9 +124,10 @@ BENCHMARK(BM_IdpIteration)
     ->UseRealTime();
 
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
-// (computed once, outside the timing), one seed on one core, or all seeds on both cores;
-// second argument 0: every candidate simulated to the end (no early stop); third argument
-// ThrowSetup::kernel_lanes (0: the Planner, 2 to 5: the kernel, that many candidates at once)
+// (computed once, outside the timing), one seed on one core, or all seeds on one or both
+// cores; arguments: threads, 1 (0: every candidate simulated to the end, no early stop),
+// ThrowSetup::kernel_lanes (0: the Planner, 2 to 5: the kernel, that many candidates at once),
+// seeds (1 or the case's 4), 1 (0: a thread's seeds one after the other, not side by side)
 void BM_IdpConverged(benchmark::State& state) {
   Fixture f;
   f.setup.kernel_lanes = static_cast<int>(state.range(2));
@@ -138,7 +139,8 @@ void BM_IdpConverged(benchmark::State& state) {
   s.backoff = f.spec.backoff;
   s.threads = static_cast<int>(state.range(0));
   s.stop_infeasible_candidates = state.range(1) == 1;
-  if (s.threads == 1) s.seeds = 1;
+  s.seeds = static_cast<int>(state.range(3));
+  s.seeds_side_by_side = state.range(4) == 1;
   long evals = 0;
   int converged = 0, runs = 0;
   for (auto _ : state) {
@@ -154,14 +156,16 @@ void BM_IdpConverged(benchmark::State& state) {
   state.counters["converged_fraction"] = runs ? static_cast<double>(converged) / runs : 0.0;
 }
 BENCHMARK(BM_IdpConverged)
-    ->Args({1, 0, 0})
-    ->Args({1, 1, 0})
-    ->Args({1, 1, 2})
-    ->Args({1, 1, 4})
-    ->Args({1, 1, 5})
-    ->Args({2, 1, 0})
-    ->Args({2, 1, 4})
-    ->Args({2, 1, 5})
+    ->Args({1, 0, 0, 1, 1})
+    ->Args({1, 1, 0, 1, 1})
+    ->Args({1, 1, 4, 1, 1})
+    ->Args({1, 1, 5, 1, 1})
+    ->Args({1, 1, 0, 4, 1})
+    ->Args({1, 1, 4, 4, 0})
+    ->Args({1, 1, 4, 4, 1})
+    ->Args({2, 1, 0, 4, 1})
+    ->Args({2, 1, 4, 4, 0})
+    ->Args({2, 1, 4, 4, 1})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cstdint>
 #include <random>
+#include <set>
 
 #include "studies/throwing/idp.hpp"
 #include "studies/throwing/simulate.hpp"
@@ -214,6 +215,60 @@ TEST(ThrowKernel, IdpInPairsMakesThePlannersChoices) {
     }
   }
   EXPECT_LT(b.evaluation.energy, b.initial_evaluation.energy);  // it did move
+}
+
+TEST(ThrowKernel, SeedsSideBySideRunEachSeedsOwnIdp) {
+  // eq. 8 a fifth over the power limit: the seeds become feasible at different nodes, so their
+  // candidates in one group of lanes stop early or not each by its own seed's best
+  Case c(Motor2Mount::kOnLink1, 0.0, 8, 8);
+  c.spec.current_max = 10;
+  c.spec.release_tolerance = 0.6;
+  c.setup = make_throw_setup(c.spec);
+  c.spec.power_max = simulate_profile(c.setup, c.eq8).max_power / 1.2;
+  c.setup = make_throw_setup(c.spec);
+  ASSERT_FALSE(simulate_profile(c.setup, c.eq8, nullptr, 0.02).feasible);
+  IdpSettings s;
+  s.iterations = 2;
+  s.max_passes = 4;
+  s.seeds = 3;
+  s.backoff = 0.02;
+  std::vector<IdpResult> alone;
+  for (int i = 0; i < s.seeds; ++i) {
+    IdpSettings one = s;
+    one.seed = s.seed + static_cast<unsigned>(i);
+    one.threads = 1;
+    alone.push_back(run_idp(c.with_lanes(0), c.eq8, c.delta, one));
+  }
+  // the iteration in which each seed's best first is feasible: not the same for all
+  std::set<size_t> first_feasible;
+  for (const IdpResult& r : alone) {
+    size_t k = 0;
+    while (k < r.history.size() && r.history[k].violation > 0) ++k;
+    first_feasible.insert(k);
+  }
+  EXPECT_GT(first_feasible.size(), 1u);
+  EXPECT_LT(*first_feasible.begin(), alone[0].history.size());
+  for (int threads : {1, 2})
+    for (bool side : {false, true}) {
+      s.threads = threads;
+      s.seeds_side_by_side = side;
+      const auto runs = run_idp_seeds(c.setup, c.eq8, c.delta, s);
+      ASSERT_EQ(runs.size(), alone.size());
+      for (size_t i = 0; i < runs.size(); ++i) {
+        const std::string at = std::to_string(threads) + " threads, side by side " +
+                               std::to_string(side) + ", seed " + std::to_string(i);
+        EXPECT_EQ(runs[i].best.v, alone[i].best.v) << at;
+        expect_bitwise(runs[i].evaluation, alone[i].evaluation, at);
+        EXPECT_EQ(runs[i].evaluations, alone[i].evaluations) << at;
+        EXPECT_EQ(runs[i].passes, alone[i].passes) << at;
+        EXPECT_EQ(runs[i].converged, alone[i].converged) << at;
+        ASSERT_EQ(runs[i].history.size(), alone[i].history.size()) << at;
+        for (size_t k = 0; k < runs[i].history.size(); ++k) {
+          EXPECT_EQ(bits(runs[i].history[k].energy), bits(alone[i].history[k].energy)) << at;
+          EXPECT_EQ(runs[i].history[k].improvements, alone[i].history[k].improvements) << at;
+        }
+      }
+    }
 }
 
 }  // namespace

@@ -486,15 +486,15 @@ enum class End { kNone, kStopped, kNotFinite };
 struct Run {
   int P = 0, n = 1;
   double h = 0, dt = 0, backoff = 0;
-  bool stop = false;
   SimulationCheckpoints* save = nullptr;  // one lane only
 };
 
 // the simulation loop of simulate.cpp from stage k, step j (j == n: the stage's end point)
 // until every stage is done or a lane ends; returns the lanes that ended (bit i: lane i) and
-// why, with (k, j) where the other lanes go on
+// why, with (k, j) where the other lanes go on; the lanes of `stop` (bit i: lane i) stop at
+// a certain violation
 template <typename T>
-int run(const Run& r, Kernel<T>& K, const Model& m, T x[5], Track<T>& tr, int& k, int& j,
+int run(const Run& r, Kernel<T>& K, const Model& m, T x[5], Track<T>& tr, int& k, int& j, int stop,
         End& why) {
   Point<T> k1, k2, k3, k4;
   T xs[5];
@@ -510,8 +510,8 @@ int run(const Run& r, Kernel<T>& K, const Model& m, T x[5], Track<T>& tr, int& k
       const double t = k * r.h + j * dt;
       K.eval(k, t, x, k1);
       track(m, x, k1, k, tr);
-      if (r.stop) {
-        const int v = lanes_set(violated(m, tr, k, r.backoff));
+      if (stop) {
+        const int v = lanes_set(violated(m, tr, k, r.backoff)) & stop;
         if (v) {
           why = End::kStopped;
           return v;
@@ -537,8 +537,8 @@ int run(const Run& r, Kernel<T>& K, const Model& m, T x[5], Track<T>& tr, int& k
     // the end of the stage with this stage's accelerations
     K.eval(k, (k + 1) * r.h, x, k1);
     track(m, x, k1, k, tr);
-    if (r.stop) {
-      const int v = lanes_set(violated(m, tr, k, r.backoff));
+    if (stop) {
+      const int v = lanes_set(violated(m, tr, k, r.backoff)) & stop;
       if (v) {
         why = End::kStopped;
         return v;
@@ -625,14 +625,13 @@ ProfileEvaluation finish(const ThrowSetup& setup, const double x[5], Track<doubl
   return ev;
 }
 
-Run run_settings(const ThrowSetup& setup, const VelocityProfile& p, double backoff, bool stop) {
+Run run_settings(const ThrowSetup& setup, const VelocityProfile& p, double backoff) {
   Run r;
   r.P = p.stages();
   r.h = p.stage_length();
   r.n = std::max(1, setup.steps_per_stage);
   r.dt = r.h / r.n;
   r.backoff = backoff;
-  r.stop = stop;
   return r;
 }
 
@@ -641,6 +640,7 @@ struct Job {
   LaneProfile<double> nodes;
   double x[5];
   Track<double> tr;
+  bool stop = false;  // stop at a certain violation
   ProfileEvaluation* out;
 };
 
@@ -680,8 +680,10 @@ int run_lanes(const Model& m, const Run& r, Job* const* jobs, int n, int& k, int
   tr.normal = track_of(&Track<double>::normal);
   tr.friction = track_of(&Track<double>::friction);
   tr.ratio = packed([](const Job& b) { return b.tr.ratio; });
+  int stop = 0;
+  for (int i = 0; i < W; ++i) stop |= lane[i]->stop ? 1 << i : 0;
   Kernel<T> K(m, lp, r.h);
-  const int ended = run(r, K, m, x, tr, k, j, why);
+  const int ended = run(r, K, m, x, tr, k, j, stop, why);
   for (int i = 0; i < n && i < W; ++i) {
     Job& b = *lane[i];
     for (int c = 0; c < 5; ++c) b.x[c] = lane_of(x[c], i);
@@ -737,12 +739,12 @@ bool kernel_applies(const ThrowSetup& s) {
 
 namespace {
 
-// profiles[0 .. n) (n <= 4, the same stages and final time) from t = 0 or from `from`'s stage
-// `first`, at once
+// profiles[0 .. n) (n <= 5, the same stages and final time) from t = 0 or from `from`'s stage
+// `first`, at once; stop[i]: profile i stops at a certain violation
 void simulate_group(const ThrowSetup& setup, const Model& m, const VelocityProfile* const* profiles,
-                    int n, double backoff, bool stop, ProfileEvaluation* out,
+                    int n, double backoff, const bool* stop, ProfileEvaluation* out,
                     const SimulationCheckpoints* from, int first, SimulationCheckpoints* save) {
-  Run r = run_settings(setup, *profiles[0], backoff, stop);
+  Run r = run_settings(setup, *profiles[0], backoff);
   r.save = save;
   const int k0 = from ? first : 0;
   std::vector<Job> jobs(n);
@@ -752,6 +754,7 @@ void simulate_group(const ThrowSetup& setup, const Model& m, const VelocityProfi
     b.nodes = lanes_of(*profiles[i]);
     start_state(setup, from, k0, b.x);
     b.tr = start_track<double>(r.P, from, k0);
+    b.stop = stop[i];
     b.out = &out[i];
     live.push_back(&b);
   }
@@ -773,26 +776,29 @@ ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile
   }
   const VelocityProfile* p = &profile;
   ProfileEvaluation out;
-  simulate_group(setup, m, &p, 1, backoff, stop_when_infeasible, &out, from, first, save);
+  simulate_group(setup, m, &p, 1, backoff, &stop_when_infeasible, &out, from, first, save);
   return out;
 }
 
 void simulate_kernel_lanes(const ThrowSetup& setup,
                            const std::vector<const VelocityProfile*>& profiles, int width,
                            double backoff, bool stop_when_infeasible, ProfileEvaluation* out,
-                           const SimulationCheckpoints* from, int first) {
+                           const SimulationCheckpoints* from, int first, const bool* stop_each) {
   ARM_THROW_UNLESS(kernel_applies(setup), "the simulation kernel needs the tray arm's joints");
   ARM_THROW_UNLESS(width >= 1 && width <= 5,
                    "the simulation kernel runs 1 to 5 lanes, not " << width);
   const Model m(setup);
   const int n = static_cast<int>(profiles.size());
+  std::vector<char> stops(n);  // std::vector<bool> has no data()
+  for (int i = 0; i < n; ++i) stops[i] = stop_each ? stop_each[i] : stop_when_infeasible;
   for (int i = 0; i < n;) {
     int g = 1;
     while (g < width && i + g < n && profiles[i + g]->stages() == profiles[i]->stages() &&
            profiles[i + g]->tf == profiles[i]->tf)
       ++g;
-    simulate_group(setup, m, &profiles[i], g, backoff, stop_when_infeasible, &out[i], from, first,
-                   nullptr);
+    bool st[5];
+    for (int q = 0; q < g; ++q) st[q] = stops[i + q];
+    simulate_group(setup, m, &profiles[i], g, backoff, st, &out[i], from, first, nullptr);
     i += g;
   }
 }

@@ -38,13 +38,14 @@ ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile
                                   const SimulationCheckpoints* from = nullptr, int first = 0,
                                   SimulationCheckpoints* save = nullptr);
 
-/// simulate_kernel for each of `profiles` (out[i] of profiles[i]), `width` (1, 2 or 4) of
-/// them at once (consecutive profiles of the same stages and final time); all resume at stage
-/// `first` of `from` if it is given.
+/// simulate_kernel for each of `profiles` (out[i] of profiles[i]), `width` (1 to 5) of them
+/// at once (consecutive profiles of the same stages and final time); all resume at stage
+/// `first` of `from` if it is given. stop_each (if given): profile i's stop_when_infeasible.
 /// @throws std::invalid_argument for another width.
 void simulate_kernel_lanes(const ThrowSetup& setup,
                            const std::vector<const VelocityProfile*>& profiles, int width,
                            double backoff, bool stop_when_infeasible, ProfileEvaluation* out,
-                           const SimulationCheckpoints* from = nullptr, int first = 0);
+                           const SimulationCheckpoints* from = nullptr, int first = 0,
+                           const bool* stop_each = nullptr);
 
 }  // namespace armstudy::studies
