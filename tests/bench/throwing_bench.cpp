@@ -1,10 +1,12 @@
 // Speed of the tray-arm simulations: RK4 steps per second of the planning model (one
-// evaluation of an IDP candidate), the open-loop DOPRI5 replay, one IDP iteration on both
-// cores, the time to a converged IDP (one seed from the bundled case's feasible reference,
-// and the 4 seeds on both cores; one seed also without the early stop of infeasible
-// candidates, the reference it must equal), one SLSQP central-difference gradient (the
-// point and its 60 neighbours, each simulated from t = 0 or resumed from the point's stage
-// checkpoints), and the pendulum study.
+// evaluation of an IDP candidate; the Planner one evaluation at a time, the reference, beside
+// the simulation kernel, one profile or several at once in its lanes), the open-loop DOPRI5
+// replay, one IDP iteration on both cores, the time to a converged IDP (one seed from the
+// bundled case's feasible reference, and the 4 seeds on one or both cores, one after the
+// other or side by side; also without the early stop of infeasible candidates, the
+// reference it must equal), one SLSQP central-difference gradient (the point and its 60
+// neighbours, each simulated from t = 0 or resumed from the point's stage checkpoints), and
+// the pendulum study.
 #include <benchmark/benchmark.h>
 
 #include "studies/pendulum/solve.hpp"
