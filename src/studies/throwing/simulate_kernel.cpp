@@ -785,8 +785,7 @@ void simulate_kernel_lanes(const ThrowSetup& setup,
                            double backoff, bool stop_when_infeasible, ProfileEvaluation* out,
                            const SimulationCheckpoints* from, int first, const bool* stop_each) {
   ARM_THROW_UNLESS(kernel_applies(setup), "the simulation kernel needs the tray arm's joints");
-  ARM_THROW_UNLESS(width >= 1 && width <= 5,
-                   "the simulation kernel runs 1 to 5 lanes, not " << width);
+  width = std::clamp(width, 1, 5);
   const Model m(setup);
   const int n = static_cast<int>(profiles.size());
   std::vector<char> stops(n);  // std::vector<bool> has no data()

@@ -1,6 +1,6 @@
 #pragma once
 /// The planning model's RK4 simulation without recorded samples (IDP's candidates, SLSQP's
-/// points and neighbours), one profile at a time or two or four at once in the lanes of
+/// points and neighbours), one profile at a time or up to five at once in the lanes of
 /// lanes.hpp.
 ///
 /// It computes what simulate_profile's one-evaluation-at-a-time path computes (the Planner
@@ -13,12 +13,12 @@
 ///   second and third evaluations share it, and so do a step's last and the next step's
 ///   first when their times are the same double; it is computed once and reused;
 /// - no Eigen temporaries of run-time size and only eq. 5-6's voltage, current and power;
-/// - two or four profiles of the same stages and final time run side by side, the same
-///   operations on two or four lanes (lanes.hpp; four lanes are two independent chains of
-///   two, which the processor overlaps). A lane ends when its profile does (stopped at a
-///   certain violation or not finite, as simulate_profile); the others then go on from the
-///   last point all passed, in narrower lanes (three in four, one a copy); re-evaluating a
-///   point only repeats its maxima, which leaves them unchanged.
+/// - profiles of the same stages and final time run side by side, the same operations on
+///   the lanes of SSE2 registers (lanes.hpp: two in a D2 for about the time of one alone;
+///   four as two D2). A lane ends when its profile does (stopped at a certain violation or
+///   not finite, as simulate_profile); the others then go on from the last point all
+///   passed, in as many lanes as are left; re-evaluating that point only repeats its
+///   maxima, which leaves them unchanged.
 
 #include <vector>
 
@@ -38,10 +38,10 @@ ProfileEvaluation simulate_kernel(const ThrowSetup& setup, const VelocityProfile
                                   const SimulationCheckpoints* from = nullptr, int first = 0,
                                   SimulationCheckpoints* save = nullptr);
 
-/// simulate_kernel for each of `profiles` (out[i] of profiles[i]), `width` (1 to 5) of them
-/// at once (consecutive profiles of the same stages and final time); all resume at stage
-/// `first` of `from` if it is given. stop_each (if given): profile i's stop_when_infeasible.
-/// @throws std::invalid_argument for another width.
+/// simulate_kernel for each of `profiles` (out[i] of profiles[i]), `width` (1 to 5; others
+/// are clamped) of them at once (consecutive profiles of the same stages and final time);
+/// all resume at stage `first` of `from` if it is given. stop_each (if given): profile i's
+/// stop_when_infeasible.
 void simulate_kernel_lanes(const ThrowSetup& setup,
                            const std::vector<const VelocityProfile*>& profiles, int width,
                            double backoff, bool stop_when_infeasible, ProfileEvaluation* out,
