@@ -92,7 +92,7 @@ TEST(ThrowKernel, AppliesToTheTrayArmOnly) {
   EXPECT_THROW(simulate_kernel(g, c.eq8, 0.02, false), std::invalid_argument);
 }
 
-TEST(ThrowKernel, OneAndTwoAtOnceEqualThePlannerBitForBit) {
+TEST(ThrowKernel, OneToFiveAtOnceEqualThePlannerBitForBit) {
   // the bundled case's limits (most random profiles break some limit, many early) and wide
   // ones (eq. 8 and the small moves feasible); the large moves make some diverge
   int stopped = 0, feasible = 0, diverged = 0, total = 0;
@@ -156,7 +156,31 @@ TEST(ThrowKernel, OneAndTwoAtOnceEqualThePlannerBitForBit) {
   EXPECT_GT(total - stopped - diverged, 20);
 }
 
-TEST(ThrowKernel, NeighboursResumedInPairsEqualThePlanner) {
+TEST(ThrowKernel, ProfilesOfOtherStagesOrFinalTimesRunApart) {
+  // a group of lanes holds profiles of the same stages and final time only; the others run
+  // in groups of their own (and a width above five runs as five)
+  Case c(Motor2Mount::kOnLink1, 0.0);
+  Case eight(Motor2Mount::kOnLink1, 0.0, 8);
+  VelocityProfile later = c.eq8;
+  later.tf = 0.85;
+  project_displacement(later, c.delta);
+  std::mt19937 rng(2);
+  const std::vector<VelocityProfile> ps{
+      c.random(rng, 0.3), eight.eq8,         c.random(rng, 0.3), later, c.eq8,
+      c.random(rng, 1.0), c.random(rng, 0.3)};
+  std::vector<const VelocityProfile*> group;
+  for (const VelocityProfile& p : ps) group.push_back(&p);
+  for (int width : {2, 4, 7}) {
+    std::vector<ProfileEvaluation> evs(ps.size());
+    simulate_kernel_lanes(c.setup, group, width, 0.02, false, evs.data());
+    for (size_t i = 0; i < ps.size(); ++i)
+      expect_bitwise(evs[i], simulate_profile(c.with_lanes(0), ps[i], nullptr, 0.02),
+                     "width " + std::to_string(width) + ", profile " + std::to_string(i));
+  }
+  EXPECT_EQ(simulate_profile(c.setup, eight.eq8).stage_power.size(), 8u);
+}
+
+TEST(ThrowKernel, NeighboursResumedInLanesEqualThePlanner) {
   for (Motor2Mount mount : {Motor2Mount::kOnLink1, Motor2Mount::kOnBase}) {
     Case c(mount, 2e-6);
     std::mt19937 rng(5);
@@ -191,7 +215,7 @@ TEST(ThrowKernel, NeighboursResumedInPairsEqualThePlanner) {
   }
 }
 
-TEST(ThrowKernel, IdpInPairsMakesThePlannersChoices) {
+TEST(ThrowKernel, IdpInLanesMakesThePlannersChoices) {
   Case c(Motor2Mount::kOnLink1, 0.0, 8, 8);
   c.spec.power_max = 200;
   c.spec.current_max = 10;

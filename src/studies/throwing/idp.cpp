@@ -290,7 +290,23 @@ std::vector<IdpResult> run_idp_seeds(const ThrowSetup& setup, const VelocityProf
         runs.emplace_back(i, std::make_unique<IdpStepper>(setup, initial, delta, one));
       }
     };
+    // the runs that are done (a run without free nodes is done when it starts) give their
+    // results; new seeds take their places
+    auto retire = [&] {
+      for (size_t q = 0; q < runs.size();) {
+        if (runs[q].second->done()) {
+          out[runs[q].first] = runs[q].second->finish();
+          runs.erase(runs.begin() + static_cast<long>(q));
+          ++done;
+          if (report && progress) progress(static_cast<double>(done) / n, "IDP seeds");
+          fill();
+        } else {
+          ++q;
+        }
+      }
+    };
     fill();
+    retire();
     std::vector<const VelocityProfile*> profiles;
     std::vector<char> stop;
     while (!runs.empty()) {
@@ -310,17 +326,7 @@ std::vector<IdpResult> run_idp_seeds(const ThrowSetup& setup, const VelocityProf
         run->take(evs.data() + at);
         at += count;
       }
-      for (size_t q = 0; q < runs.size();) {
-        if (runs[q].second->done()) {
-          out[runs[q].first] = runs[q].second->finish();
-          runs.erase(runs.begin() + static_cast<long>(q));
-          ++done;
-          if (report && progress) progress(static_cast<double>(done) / n, "IDP seeds");
-        } else {
-          ++q;
-        }
-      }
-      fill();
+      retire();
     }
   };
   std::vector<std::thread> pool;
