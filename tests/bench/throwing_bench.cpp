@@ -1,15 +1,18 @@
 // Speed of the tray-arm simulations: RK4 steps per second of the planning model (one
-// evaluation of an IDP candidate), the open-loop DOPRI5 replay, one IDP iteration on both
-// cores, the time to a converged IDP (one seed from the bundled case's feasible reference,
-// and the 4 seeds on both cores; one seed also without the early stop of infeasible
-// candidates, the reference it must equal), one SLSQP central-difference gradient (the
-// point and its 60 neighbours, each simulated from t = 0 or resumed from the point's stage
-// checkpoints), and the pendulum study.
+// evaluation of an IDP candidate; the Planner one evaluation at a time, the reference, beside
+// the simulation kernel, one profile or several at once in its lanes), the open-loop DOPRI5
+// replay, one IDP iteration on both cores, the time to a converged IDP (one seed from the
+// bundled case's feasible reference, and the 4 seeds on one or both cores, one after the
+// other or side by side; also without the early stop of infeasible candidates, the
+// reference it must equal), one SLSQP central-difference gradient (the point and its 60
+// neighbours, each simulated from t = 0 or resumed from the point's stage checkpoints), and
+// the pendulum study.
 #include <benchmark/benchmark.h>
 
 #include "studies/pendulum/solve.hpp"
 #include "studies/throwing/idp.hpp"
 #include "studies/throwing/nlopt_solve.hpp"
+#include "studies/throwing/simulate_kernel.hpp"
 #include "studies/throwing/solve.hpp"
 
 namespace {
@@ -27,22 +30,50 @@ struct Fixture {
 };
 
 // one candidate of the default case: 16 stages x 20 (80) RK4 steps; second argument 1: the
-// same simulation through the generic chain (the reference of the one-pass tray dynamics)
+// same simulation through the generic chain (the reference of the one-pass tray dynamics);
+// third argument ThrowSetup::kernel_lanes: 0 the Planner one evaluation at a time (the
+// reference of the kernel), 1 the kernel (simulate_kernel.hpp)
 void BM_ThrowSimulateProfile(benchmark::State& state) {
   Fixture f;
   f.setup.steps_per_stage = static_cast<int>(state.range(0));
   f.setup.generic_dynamics = state.range(1) == 1;
+  f.setup.kernel_lanes = static_cast<int>(state.range(2));
   const long steps = static_cast<long>(f.setup.steps_per_stage) * f.profile.stages();
   for (auto _ : state) benchmark::DoNotOptimize(simulate_profile(f.setup, f.profile).energy);
   state.counters["rk4_steps_per_s"] = benchmark::Counter(
       static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ThrowSimulateProfile)
-    ->Args({20, 0})
-    ->Args({20, 1})
-    ->Args({80, 0})
-    ->Args({80, 1})
+    ->Args({20, 0, 0})
+    ->Args({20, 0, 1})
+    ->Args({20, 1, 0})
+    ->Args({80, 0, 0})
+    ->Args({80, 0, 1})
+    ->Args({80, 1, 0})
     ->Unit(benchmark::kMillisecond);
+
+// w candidates of the default case (eq. 8 and moves of it) at once in the kernel's lanes
+// (argument w = 1 .. 5; 1: one candidate); the rate counts every candidate's steps
+void BM_ThrowSimulateLanes(benchmark::State& state) {
+  Fixture f;
+  const int w = static_cast<int>(state.range(0));
+  std::vector<VelocityProfile> ps(w, f.profile);
+  for (int i = 1; i < w; ++i) {
+    ps[i].v(0, 3 + i) += 0.1 * i;
+    project_displacement(ps[i], f.spec.release - f.spec.start);
+  }
+  std::vector<const VelocityProfile*> group;
+  for (const VelocityProfile& p : ps) group.push_back(&p);
+  std::vector<ProfileEvaluation> evs(w);
+  const long steps = static_cast<long>(w) * f.setup.steps_per_stage * f.profile.stages();
+  for (auto _ : state) {
+    simulate_kernel_lanes(f.setup, group, w, 0.0, false, evs.data());
+    benchmark::DoNotOptimize(evs.back().energy);
+  }
+  state.counters["rk4_steps_per_s"] = benchmark::Counter(
+      static_cast<double>(steps) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ThrowSimulateLanes)->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
 
 void BM_ThrowReplayVoltages(benchmark::State& state) {
   Fixture f;
@@ -62,11 +93,13 @@ void BM_ThrowReplayVoltages(benchmark::State& state) {
 }
 BENCHMARK(BM_ThrowReplayVoltages)->Unit(benchmark::kMillisecond);
 
-// one IDP iteration (15 stage nodes x 8 candidates) on 1 and 2 threads; second argument 1:
-// through the generic chain
+// one IDP iteration (15 stage nodes x 5 candidates) on 1 and 2 threads; second argument 1:
+// through the generic chain; third argument ThrowSetup::kernel_lanes (0: the Planner, 1: the
+// kernel one candidate at a time, 2 to 5: that many at once)
 void BM_IdpIteration(benchmark::State& state) {
   Fixture f;
   f.setup.generic_dynamics = state.range(1) == 1;
+  f.setup.kernel_lanes = static_cast<int>(state.range(2));
   IdpSettings s;
   s.iterations = 1;
   s.max_passes = 1;
@@ -78,18 +111,28 @@ void BM_IdpIteration(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(evals), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_IdpIteration)
-    ->Args({1, 0})
-    ->Args({1, 1})
-    ->Args({2, 0})
-    ->Args({2, 1})
+    ->Args({1, 0, 0})
+    ->Args({1, 0, 1})
+    ->Args({1, 0, 2})
+    ->Args({1, 0, 4})
+    ->Args({1, 0, 5})
+    ->Args({1, 1, 0})
+    ->Args({2, 0, 0})
+    ->Args({2, 0, 2})
+    ->Args({2, 0, 4})
+    ->Args({2, 0, 5})
+    ->Args({2, 1, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 // time to a converged IDP on the bundled case (default spec): from its repaired reference
-// (computed once, outside the timing), one seed on one core, or all seeds on both cores;
-// second argument 0: every candidate simulated to the end (no early stop)
+// (computed once, outside the timing), one seed on one core, or all seeds on one or both
+// cores; arguments: threads, 1 (0: every candidate simulated to the end, no early stop),
+// ThrowSetup::kernel_lanes (0: the Planner, 2 to 5: the kernel, that many candidates at once),
+// seeds (1 or the case's 4), 1 (0: a thread's seeds one after the other, not side by side)
 void BM_IdpConverged(benchmark::State& state) {
   Fixture f;
+  f.setup.kernel_lanes = static_cast<int>(state.range(2));
   const Eigen::Vector2d delta = f.spec.release - f.spec.start;
   NloptSettings ns = f.spec.nlopt;
   ns.backoff = f.spec.backoff;
@@ -98,7 +141,8 @@ void BM_IdpConverged(benchmark::State& state) {
   s.backoff = f.spec.backoff;
   s.threads = static_cast<int>(state.range(0));
   s.stop_infeasible_candidates = state.range(1) == 1;
-  if (s.threads == 1) s.seeds = 1;
+  s.seeds = static_cast<int>(state.range(3));
+  s.seeds_side_by_side = state.range(4) == 1;
   long evals = 0;
   int converged = 0, runs = 0;
   for (auto _ : state) {
@@ -114,9 +158,16 @@ void BM_IdpConverged(benchmark::State& state) {
   state.counters["converged_fraction"] = runs ? static_cast<double>(converged) / runs : 0.0;
 }
 BENCHMARK(BM_IdpConverged)
-    ->Args({1, 0})
-    ->Args({1, 1})
-    ->Args({2, 1})
+    ->Args({1, 0, 0, 1, 1})
+    ->Args({1, 1, 0, 1, 1})
+    ->Args({1, 1, 4, 1, 1})
+    ->Args({1, 1, 5, 1, 1})
+    ->Args({1, 1, 0, 4, 1})
+    ->Args({1, 1, 4, 4, 0})
+    ->Args({1, 1, 4, 4, 1})
+    ->Args({2, 1, 0, 4, 1})
+    ->Args({2, 1, 4, 4, 0})
+    ->Args({2, 1, 4, 4, 1})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);
@@ -124,9 +175,11 @@ BENCHMARK(BM_IdpConverged)
 // one central-difference gradient of SLSQP on one core (nlopt_solve.cpp's compute): the
 // default case's eq. 8 profile and its 2 x 30 neighbours (fd step 1e-5 rad/s); argument 0:
 // every neighbour simulated from t = 0 (evaluate_profiles), 1: resumed from the point's
-// stage checkpoints (evaluate_neighbours), the same evaluations bit for bit
+// stage checkpoints (evaluate_neighbours), the same evaluations bit for bit; second argument
+// ThrowSetup::kernel_lanes (0: the Planner, 2 or 4: the kernel, that many neighbours at once)
 void BM_SlsqpGradient(benchmark::State& state) {
   Fixture f;
+  f.setup.kernel_lanes = static_cast<int>(state.range(1));
   std::vector<VelocityProfile> ps{f.profile};
   std::vector<int> first{0};
   for (int k = 1; k < f.profile.stages(); ++k)
@@ -148,7 +201,12 @@ void BM_SlsqpGradient(benchmark::State& state) {
   state.counters["simulations_per_s"] =
       benchmark::Counter(static_cast<double>(sims), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_SlsqpGradient)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SlsqpGradient)
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({1, 2})
+    ->Args({1, 4})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_PendulumTwoSeconds(benchmark::State& state) {
   const PendulumSpec spec = default_pendulum_spec();

@@ -59,6 +59,10 @@ struct IdpSettings {
   /// false: every candidate is simulated to the end (the reference of the early stop, which
   /// makes the same choices; see run_idp)
   bool stop_infeasible_candidates = true;
+  /// true: the seeds of a thread (run_idp_seeds) advance one stage node at a time together,
+  /// their candidates sharing the simulation kernel's lanes; false: one seed after the other
+  /// (the reference; the same results)
+  bool seeds_side_by_side = true;
 };
 
 /// One IDP iteration's outcome.
@@ -114,8 +118,8 @@ IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
                   const ProgressFn& progress = {});
 
 /// Runs IDP for settings.seeds seeds (seed, seed + 1, ...), the seeds side by side on
-/// settings.threads threads (each seed serial): results in seed order, independent of the
-/// thread count.
+/// settings.threads threads (each seed serial; a thread's seeds one node at a time together,
+/// see seeds_side_by_side): results in seed order, independent of the thread count.
 std::vector<IdpResult> run_idp_seeds(const ThrowSetup& setup, const VelocityProfile& initial,
                                      const Eigen::Vector2d& delta, const IdpSettings& settings,
                                      const ProgressFn& progress = {});

@@ -9,6 +9,7 @@
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
 #include "core/integrators.hpp"
+#include "studies/throwing/simulate_kernel.hpp"
 #include "studies/throwing/tray_dynamics.hpp"
 
 namespace armstudy::studies {
@@ -203,6 +204,8 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
                            std::vector<ThrowSample>* samples, double backoff,
                            bool stop_when_infeasible, const SimulationCheckpoints* from, int first,
                            SimulationCheckpoints* save) {
+  if (!samples && setup.kernel_lanes > 0 && kernel_applies(setup))
+    return simulate_kernel(setup, profile, backoff, stop_when_infeasible, from, first, save);
   const Planner planner(setup, profile);
   const int P = profile.stages();
   const double h = profile.stage_length();
@@ -338,18 +341,43 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
   return save.evaluation;
 }
 
-ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityProfile& profile,
-                                        const SimulationCheckpoints& base, int first_stage,
-                                        double backoff) {
+namespace {
+
+// simulate_profile_from's condition on the profile and the point it resumes at
+void check_resume(const VelocityProfile& profile, const SimulationCheckpoints& base,
+                  int first_stage) {
   const VelocityProfile& b = base.profile;
   ARM_THROW_UNLESS(first_stage >= 0 && first_stage < profile.stages() &&
                        profile.stages() == b.stages() && profile.tf == b.tf && profile.q0 == b.q0 &&
                        profile.v.leftCols(first_stage + 1) == b.v.leftCols(first_stage + 1),
                    "a simulation resumes at stage " << first_stage
                                                     << " only if the nodes up to it are the same");
+}
+
+}  // namespace
+
+ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityProfile& profile,
+                                        const SimulationCheckpoints& base, int first_stage,
+                                        double backoff) {
+  check_resume(profile, base, first_stage);
   if (first_stage == 0 || first_stage >= static_cast<int>(base.x.size()))
     return simulate(setup, profile, nullptr, backoff, false, nullptr, 0, nullptr);
   return simulate(setup, profile, nullptr, backoff, false, &base, first_stage, nullptr);
+}
+
+void simulate_group_from(const ThrowSetup& setup,
+                         const std::vector<const VelocityProfile*>& profiles,
+                         const SimulationCheckpoints& base, int first_stage, double backoff,
+                         ProfileEvaluation* out) {
+  for (const VelocityProfile* p : profiles) check_resume(*p, base, first_stage);
+  if (setup.kernel_lanes < 2 || !kernel_applies(setup)) {
+    for (size_t i = 0; i < profiles.size(); ++i)
+      out[i] = simulate_profile_from(setup, *profiles[i], base, first_stage, backoff);
+    return;
+  }
+  const bool resume = first_stage > 0 && first_stage < static_cast<int>(base.x.size());
+  simulate_kernel_lanes(setup, profiles, setup.kernel_lanes, backoff, false, out,
+                        resume ? &base : nullptr, resume ? first_stage : 0);
 }
 
 Eigen::Vector2d VoltageHistory::at(int st, double time) const {

@@ -57,6 +57,13 @@ struct ThrowSetup {
   /// ball_contact_forces), the reference of the one-pass fast path (tray_dynamics.hpp) that
   /// simulations of a 4-joint chain use otherwise; both give the same results
   bool generic_dynamics = false;
+  /// how simulations without recorded samples run, all with the same results bit for bit:
+  /// 2 to 5: simulate_kernel.hpp, and evaluate_profiles, evaluate_neighbours and
+  /// run_idp_seeds (idp.hpp) that many profiles at once (4 the fastest on the bundled
+  /// cases); 1: the kernel one profile at a time; 0: the Planner of simulate.cpp one
+  /// evaluation at a time (the kernel's reference). Only for the tray arm's joints
+  /// (kernel_applies); other chains and generic_dynamics use the Planner.
+  int kernel_lanes = 4;
 };
 
 /// Scalar outcome of one profile.
@@ -158,6 +165,14 @@ ProfileEvaluation simulate_profile(const ThrowSetup& setup, const VelocityProfil
 ProfileEvaluation simulate_profile_from(const ThrowSetup& setup, const VelocityProfile& profile,
                                         const SimulationCheckpoints& base, int first_stage,
                                         double backoff = 0.0);
+
+/// simulate_profile_from for profiles with the same first_stage (out[i] of profiles[i]),
+/// setup.kernel_lanes of them at once in the kernel when that is 2 or more.
+/// @throws std::invalid_argument as simulate_profile_from.
+void simulate_group_from(const ThrowSetup& setup,
+                         const std::vector<const VelocityProfile*>& profiles,
+                         const SimulationCheckpoints& base, int first_stage, double backoff,
+                         ProfileEvaluation* out);
 
 /// Contact forces of the tray on the ball (N) at state (q, qd, qdd) of the chain
 /// (docs/throwing.md): {normal N, tangential F_t}.
