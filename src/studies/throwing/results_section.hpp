@@ -411,7 +411,8 @@ void fields(V& v, ThrowingResultsSection::SeedRun& x) {
   v("passes", x.passes, "passes run");
   v("last_gain", x.last_gain, "relative gain of the last pass");
   v("evaluations", x.evaluations, "simulations");
-  v("run_time_s", x.run_time_s, "wall time");
+  v("run_time_s", x.run_time_s,
+    "wall time from its start to its end (the seeds of one thread run side by side)");
 }
 template <class V>
 void fields(V& v, ThrowingResultsSection::Spread& x) {
