@@ -196,6 +196,22 @@ void classify(const ThrowSetup& s, ProfileEvaluation& e, double backoff) {
   e.feasible = e.finite && e.violation == 0.0;
 }
 
+void finish_finite(const ThrowSetup& setup, const double* x, double backoff,
+                   ProfileEvaluation& ev) {
+  ev.max_abs_theta4 = *std::max_element(ev.stage_theta4.begin(), ev.stage_theta4.end());
+  ev.max_voltage = *std::max_element(ev.stage_voltage.begin(), ev.stage_voltage.end());
+  ev.max_current = *std::max_element(ev.stage_current.begin(), ev.stage_current.end());
+  ev.max_power = *std::max_element(ev.stage_power.begin(), ev.stage_power.end());
+  ev.min_normal_force = *std::min_element(ev.stage_normal.begin(), ev.stage_normal.end());
+  ev.max_friction_excess = *std::max_element(ev.stage_friction.begin(), ev.stage_friction.end());
+  ev.energy = x[4];
+  ev.theta3_final = x[0];
+  ev.theta4_final = x[1];
+  ev.theta3_rate_final = x[2];
+  ev.theta4_rate_final = x[3];
+  classify(setup, ev, backoff);
+}
+
 namespace {
 
 // simulate_profile; with `from`, resumes at stage `first` from its state (the stages before
@@ -312,18 +328,7 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
     classify(setup, ev, backoff);
     return ev;
   }
-  ev.max_abs_theta4 = *std::max_element(ev.stage_theta4.begin(), ev.stage_theta4.end());
-  ev.max_voltage = *std::max_element(ev.stage_voltage.begin(), ev.stage_voltage.end());
-  ev.max_current = *std::max_element(ev.stage_current.begin(), ev.stage_current.end());
-  ev.max_power = *std::max_element(ev.stage_power.begin(), ev.stage_power.end());
-  ev.min_normal_force = *std::min_element(ev.stage_normal.begin(), ev.stage_normal.end());
-  ev.max_friction_excess = *std::max_element(ev.stage_friction.begin(), ev.stage_friction.end());
-  ev.energy = x[4];
-  ev.theta3_final = x[0];
-  ev.theta4_final = x[1];
-  ev.theta3_rate_final = x[2];
-  ev.theta4_rate_final = x[3];
-  classify(setup, ev, backoff);
+  finish_finite(setup, &x[0], backoff, ev);
   return ev;
 }
 

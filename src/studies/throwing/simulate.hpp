@@ -113,6 +113,10 @@ std::array<double, kConstraintKinds> worst_constraints(const ThrowSetup& setup,
 /// Sets e.violation and e.feasible for the given backoff.
 void classify(const ThrowSetup& setup, ProfileEvaluation& e, double backoff);
 
+/// The end of a simulation that stayed finite: the largest (smallest normal force) of the
+/// stage values, the final state x = (theta3, theta4, theta3', theta4', energy) and classify.
+void finish_finite(const ThrowSetup& setup, const double* x, double backoff, ProfileEvaluation& e);
+
 /// One recorded instant of a simulated throw.
 struct ThrowSample {
   double t = 0;                  ///< s
