@@ -62,6 +62,34 @@ void set_quality(MjcfOptions* o, double radius, double span_y, int height) {
   o->numstacks = std::max(8, static_cast<int>(std::ceil(n * 16.0 / 28.0)) + 1) & ~1;
 }
 
+// The background grid's texture and material: square cells of `cell_m` m (MuJoCo maps a
+// plane's texture over 2 / texrepeat m with texuniform), each cell drawn in fewer texels than it
+// covers on screen (one per ~1.5 px, 16 to 200), so that llvmpipe magnifies it (one bilinear lookup
+// a pixel) instead of filtering between two mipmap levels of a minified texture, which cost ~20 %
+// of a frame with 200 texels a cell (tests/bench/scene_bench.cpp). The one-texel lines then cover
+// ~1.5 px instead of under one, so `mark` is taken a third of the way from the background `rgb`
+// (that is about as dark as the minified lines looked). `view` and `height` px as the renderer
+// frames them at its default margin.
+std::string grid_asset(const char* material, double cell_m, const ViewBox& v, int width, int height,
+                       const double rgb[3], const double mark[3]) {
+  const double margin = 1 + 2 * 0.06;  // RenderSettings::margin's default
+  const double aspect = static_cast<double>(width) / std::max(1, height);
+  const double span = std::max(v.y_max - v.y_min, (v.x_max - v.x_min) / aspect) * margin;
+  const double cell_px = cell_m * height / std::max(span, 1e-9);
+  const int texels = std::clamp(static_cast<int>(cell_px / 1.5), 16, 200);
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os.precision(3);
+  os << std::fixed;
+  os << "    <texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\"" << rgb[0] << " "
+     << rgb[1] << " " << rgb[2] << "\" rgb2=\"" << rgb[0] << " " << rgb[1] << " " << rgb[2]
+     << "\" width=\"" << texels << "\" height=\"" << texels << "\" mark=\"edge\" markrgb=\"";
+  for (int c = 0; c < 3; ++c) os << (c ? " " : "") << rgb[c] + (mark[c] - rgb[c]) / 3;
+  os << "\"/>\n    <material name=\"" << material << "\" texture=\"grid\" texrepeat=\""
+     << 2 / cell_m << " " << 2 / cell_m << "\" texuniform=\"true\"/>\n";
+  return os.str();
+}
+
 // a narrow field of view: nearly orthographic, little parallax between drawing heights
 constexpr double kFovy = 20;
 
@@ -112,15 +140,15 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   o.link_radius = r;
   o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.45 0.35 0.65 1"};
   o.visual_extra = kVisual;
-  o.asset_extra =
-      "    <texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\"0.96 0.96 0.94\" "
-      "rgb2=\"0.96 0.96 0.94\" width=\"200\" height=\"200\" mark=\"edge\" "
-      "markrgb=\"0.80 0.80 0.78\"/>\n"
-      "    <material name=\"table\" texture=\"grid\" texrepeat=\"10 10\" texuniform=\"true\"/>\n";
+  {
+    const double rgb[3] = {0.96, 0.96, 0.94}, mark[3] = {0.80, 0.80, 0.78};
+    o.asset_extra =
+        grid_asset("table", 0.2, v, decor.offscreen.width, decor.offscreen.height, rgb, mark);
+  }
   o.comment =
       "    The 2-link arm of Kopmaz (2016) in a horizontal plane (gravity 0): the\n"
       "    table is the x-y plane seen from above (camera looking down -z), the root is the\n"
-      "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.1 m grid.\n"
+      "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.2 m grid.\n"
       "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
       "    centres of mass and inertias are the case's; geoms are visual only.\n";
   auto w = xml();
@@ -197,14 +225,14 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.40 0.40 0.45 1", "0.85 0.15 0.15 0"};
   if (n == 2) o.link_rgba = {"0.40 0.40 0.45 1", "0.85 0.15 0.15 0"};
   o.visual_extra = kVisual;
-  o.asset_extra =
-      "    <texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\"0.97 0.97 0.98\" "
-      "rgb2=\"0.97 0.97 0.98\" width=\"200\" height=\"200\" mark=\"edge\" "
-      "markrgb=\"0.86 0.86 0.90\"/>\n"
-      "    <material name=\"wall\" texture=\"grid\" texrepeat=\"20 20\" texuniform=\"true\"/>\n";
+  {
+    const double rgb[3] = {0.97, 0.97, 0.98}, mark[3] = {0.86, 0.86, 0.90};
+    o.asset_extra =
+        grid_asset("wall", 0.1, v, decor.offscreen.width, decor.offscreen.height, rgb, mark);
+  }
   o.comment =
       "    The arm with a passive tray of Sato et al. in a vertical plane: the\n"
-      "    x-y plane seen from +z (x right, y up), gravity along -y; a 0.05 m grid.\n"
+      "    x-y plane seen from +z (x right, y up), gravity along -y; a 0.1 m grid.\n"
       "    Joints 1 and 2 are driven (motor actuators, gear 1), the tray's hinge is passive, and\n"
       "    link N is a massless radius r4 about the cup's centre C carrying the ball's mass at\n"
       "    its tip: the ball's centre moves on the circle of radius r4 about C.\n"

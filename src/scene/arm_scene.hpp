@@ -33,7 +33,7 @@ struct TableDecor {
 
 /// The horizontal arm on a table (top view): links in blue and teal, the payload as an
 /// orange sphere at the tip, the task line in red with its start and end, the root as a
-/// dark pedestal with a cross; a 0.1 m grid on the table.
+/// dark pedestal with a cross; a 0.2 m grid on the table.
 ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor);
 
 /// What the tray arm's scene needs besides the chain.
