@@ -101,6 +101,13 @@ const char* kVisual =
 
 }  // namespace
 
+std::string grid_caption(double spacing_m) {
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os << "grid " << spacing_m << " m";
+  return os.str();
+}
+
 ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor) {
   ArmScene s;
   s.chain = chain;
@@ -142,8 +149,8 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   o.visual_extra = kVisual;
   {
     const double rgb[3] = {0.96, 0.96, 0.94}, mark[3] = {0.80, 0.80, 0.78};
-    o.asset_extra =
-        grid_asset("table", 0.2, v, decor.offscreen.width, decor.offscreen.height, rgb, mark);
+    o.asset_extra = grid_asset("table", kTableGridM, v, decor.offscreen.width,
+                               decor.offscreen.height, rgb, mark);
   }
   o.comment =
       "    The 2-link arm of Kopmaz (2016) in a horizontal plane (gravity 0): the\n"
@@ -228,7 +235,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   {
     const double rgb[3] = {0.97, 0.97, 0.98}, mark[3] = {0.86, 0.86, 0.90};
     o.asset_extra =
-        grid_asset("wall", 0.1, v, decor.offscreen.width, decor.offscreen.height, rgb, mark);
+        grid_asset("wall", kWallGridM, v, decor.offscreen.width, decor.offscreen.height, rgb, mark);
   }
   o.comment =
       "    The arm with a passive tray of Sato et al. in a vertical plane: the\n"

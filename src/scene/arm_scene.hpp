@@ -22,6 +22,13 @@ struct ArmScene {
   ViewBox view;
 };
 
+/// The spacing of the grid drawn on the horizontal arm's table and behind the tray arm, m
+/// (the frames' captions say it from here).
+inline constexpr double kTableGridM = 0.2;
+inline constexpr double kWallGridM = 0.1;
+/// "grid 0.2 m"
+std::string grid_caption(double spacing_m);
+
 /// What the horizontal arm's table shows besides the arm (world frame, m).
 struct TableDecor {
   std::optional<Eigen::Vector2d> task_start;  ///< the straight-line task S -> F
@@ -33,7 +40,7 @@ struct TableDecor {
 
 /// The horizontal arm on a table (top view): links in blue and teal, the payload as an
 /// orange sphere at the tip, the task line in red with its start and end, the root as a
-/// dark pedestal with a cross; a 0.2 m grid on the table.
+/// dark pedestal with a cross; a kTableGridM grid on the table.
 ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor);
 
 /// What the tray arm's scene needs besides the chain.

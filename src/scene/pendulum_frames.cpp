@@ -65,7 +65,7 @@ std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spe
   files.push_back("pendulum_snapshots_strip.png");
   FrameLabels labels;
   labels.top_left = std::string(title) + "\nball path traced; older snapshots fainter";
-  labels.bottom_left = "side view, gravity down; grid 0.05 m";
+  labels.bottom_left = "side view, gravity down; " + grid_caption(kWallGridM);
   write_png(dir / "pendulum_snapshots_locus.png", sr.locus(snaps, result.ball, {}, labels));
   files.push_back("pendulum_snapshots_locus.png");
   {

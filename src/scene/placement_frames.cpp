@@ -70,7 +70,7 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
                   pc.refined.root.y(), energy);
     labels.top_left = std::string(core::program_label(pc.program)) + ", configuration " +
                       std::to_string(pc.configuration) + "\n" + line2;
-    labels.bottom_left = "top view; line fixed, root chosen; grid 0.1 m";
+    labels.bottom_left = "top view; line fixed, root chosen; " + grid_caption(kTableGridM);
     // the path is the task line: trace it thin so that the red line shows around it
     SceneRenderer::LocusStyle style;
     style.path_radius = 0.12;

@@ -80,7 +80,7 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
       if (th.strip) files.push_back(write_strip(sr, m, options.frames, title, dir, th.stem));
       FrameLabels labels;
       labels.top_left = std::string(title) + "\nlocus of the throw (Fig. 7); ball path traced";
-      labels.bottom_left = "side view, gravity down; grid 0.05 m";
+      labels.bottom_left = "side view, gravity down; " + grid_caption(kWallGridM);
       files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, th.stem));
       write_animation(sr, m, "throwing, " + th.who, dir, th.stem);
     }

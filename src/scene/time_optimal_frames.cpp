@@ -45,9 +45,9 @@ std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const 
   files.push_back(write_strip(sr, m, options.frames, title, dir, "time_optimal"));
   FrameLabels labels;
   labels.top_left = std::string(title) + "\nequal time steps: dense where slow";
-  labels.bottom_left = spec.chain.gravity != 0.0
-                           ? "vertical plane, gravity down the image; grid 0.1 m"
-                           : "top view; grid 0.1 m";
+  labels.bottom_left =
+      (spec.chain.gravity != 0.0 ? "vertical plane, gravity down the image; " : "top view; ") +
+      grid_caption(kTableGridM);
   files.push_back(write_locus(sr, m, 15, path, {}, labels, dir, "time_optimal"));
   write_animation(sr, m, "time-optimal (exact)", dir, "time_optimal");
   return files;

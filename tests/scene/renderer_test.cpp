@@ -1,10 +1,12 @@
 // Off-screen rendering: frames are not blank, the arm is where the kinematics says,
-// rendering is deterministic, and the OSMesa failure path suggests --no-render.
+// rendering is deterministic, the grid is as wide as the captions say, and the OSMesa
+// failure path suggests --no-render.
 
 #include <gtest/gtest.h>
 
 #include <GL/osmesa.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -99,6 +101,68 @@ TEST(Renderer, PayloadAppearsWhereKinematicsPutsTheEndEffector) {
     const Rgb rc = img.at(static_cast<int>(root.x()), static_cast<int>(root.y()));
     EXPECT_LT(rc.r + rc.g + rc.b, 3 * 90) << "root pixel " << int(rc.r);
   }
+}
+
+// The grid the captions name ("grid 0.2 m" on the table, "grid 0.1 m" behind the tray):
+// the lines' spacing measured in a frame, along a row of background near the bottom, against
+// the frame's scale (the renderer's projection of 1 m), within 10 % (the plane lies a little
+// below the arm, farther from the camera)
+// the spacing of the vertical grid lines along row y, px (0 if fewer than four lines)
+double line_spacing_px(const Image& img, int y) {
+  std::vector<int> level(img.width);
+  for (int x = 0; x < img.width; ++x) {
+    const Rgb c = img.at(x, y);
+    const bool grey = std::abs(c.r - c.g) < 12 && std::abs(c.g - c.b) < 16;
+    level[x] = grey ? c.g : -1;
+  }
+  std::vector<int> sorted;
+  for (int v : level)
+    if (v >= 0) sorted.push_back(v);
+  if (sorted.empty()) return 0;
+  std::sort(sorted.begin(), sorted.end());
+  const int background = sorted[sorted.size() * 3 / 4];
+  std::vector<double> centres;
+  for (int x = 0; x < img.width;) {
+    if (level[x] < 0 || level[x] > background - 3) {
+      ++x;
+      continue;
+    }
+    int x1 = x;
+    while (x1 + 1 < img.width && level[x1 + 1] >= 0 && level[x1 + 1] <= background - 3) ++x1;
+    centres.push_back(0.5 * (x + x1));
+    x = x1 + 1;
+  }
+  std::vector<double> gaps;
+  for (size_t i = 1; i < centres.size(); ++i) gaps.push_back(centres[i] - centres[i - 1]);
+  if (gaps.size() < 3) return 0;
+  std::sort(gaps.begin(), gaps.end());
+  return gaps[gaps.size() / 2];
+}
+
+// the grid's spacing in a frame, m: along the lowest row of background that crosses the
+// vertical lines (a row on a horizontal line is dark all along), against the frame's scale
+double grid_spacing_m(SceneRenderer& sr, const Image& img) {
+  double px = 0;
+  for (int y = img.height - 12; y > img.height / 2 && px == 0; --y) px = line_spacing_px(img, y);
+  const double px_per_m = (sr.renderer().project(Eigen::Vector3d(1, 0, 0)) -
+                           sr.renderer().project(Eigen::Vector3d(0, 0, 0)))
+                              .norm();
+  return px / px_per_m;
+}
+
+TEST(Renderer, TheGridIsAsWideAsTheCaptionsSay) {
+  const LineMotion m;
+  SceneRenderer table(line_scene(m), "line", RenderSettings{});
+  const double on_table = grid_spacing_m(table, table.frame(m.at(0.0), {}));
+  EXPECT_NEAR(on_table, kTableGridM, 0.1 * kTableGridM) << grid_caption(kTableGridM);
+  const ArmScene tray = default_tray_scene();
+  SceneRenderer wall(tray, "tray", RenderSettings{});
+  PoseSample up;
+  up.q = core::JointVector::Zero(tray.chain.num_links());
+  up.q[0] = M_PI / 2;  // the arm up, the bottom rows background
+  const double behind_tray = grid_spacing_m(wall, wall.frame(up, {}));
+  EXPECT_NEAR(behind_tray, kWallGridM, 0.1 * kWallGridM) << grid_caption(kWallGridM);
+  EXPECT_EQ(grid_caption(kTableGridM), "grid 0.2 m");
 }
 
 TEST(Renderer, SameCaseRendersToByteIdenticalPngs) {
