@@ -166,6 +166,8 @@ class MinSinQ2 {
         out = std::min(out, std::abs(pb_->at(s_[k], k + 1 == s_.size()).sin_q2));
     return out;
   }
+  /// The points it was made on.
+  const std::vector<double>& points() const { return s_; }
 
  private:
   const Problem* pb_;
@@ -179,9 +181,8 @@ class MinSinQ2 {
 // solves it on a second thread while the solution is re-checked.
 struct RefinedGrid {
   std::vector<int> checks;  // the case grid's check points per interval it was solved with
-  std::vector<double> fine;
   SolverOutput solution;
-  MinSinQ2 min_sin_q2;
+  MinSinQ2 min_sin_q2;  // (on the refined grid's points: points() is that grid)
 };
 RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& grid,
                                const std::vector<int>& checks, ExactPointCache* points) {
@@ -195,8 +196,7 @@ RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& gri
   std::vector<int> fine_checks(fine.size() - 1);
   for (size_t i = 0; i < fine_checks.size(); ++i) fine_checks[i] = checks[i / 2];
   SolverOutput o = solve_exact(pb, fine, fine_checks, points);
-  MinSinQ2 min_sin_q2(pb, fine);
-  return RefinedGrid{checks, std::move(fine), std::move(o), std::move(min_sin_q2)};
+  return RefinedGrid{checks, std::move(o), MinSinQ2(pb, std::move(fine))};
 }
 
 // The exact solution on the case's grid against the same problem on the grid with every
@@ -209,7 +209,7 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
   g.tolerance = tolerance;
   const std::vector<double>& grid = exact.node_s;
   const int n = static_cast<int>(grid.size());
-  const std::vector<double>& fine = refined.fine;
+  const std::vector<double>& fine = refined.min_sin_q2.points();
   g.grid_points = n;
   g.refined_points = static_cast<int>(fine.size());
   g.duration = exact.duration;
