@@ -22,18 +22,18 @@ void check_sizes(const PlanarChain& chain, const JointVector& a, const char* nam
                                                        << chain.num_links() << " joints");
 }
 
-// M(q) and, with qd, h(q, qd) from one pose: each body's Jacobian taken once for both
-// (mass_matrix's and bias_forces' operations, in their order for each)
+// M(q) (when M is given) and h(q, qd) (when qd and h are) from one pose, each body's
+// Jacobian taken once for both
 void mass_and_bias(const PlanarChain& chain, const JointVector& q, const JointVector* qd,
                    JointMatrix* M, JointVector* h) {
   const int n = chain.num_links();
   const ChainPose pose = forward_kinematics(chain, q);
-  *M = JointMatrix::Zero(n, n);
+  if (M) *M = JointMatrix::Zero(n, n);
   if (qd) *h = JointVector::Zero(n);
   for_each_body(chain, [&](int link, const Eigen::Vector2d& p_L, double m, double I) {
     if (m != 0.0) {
       const PointJacobian J = point_jacobian(pose, link, p_L);
-      M->noalias() += m * J.transpose() * J;
+      if (M) M->noalias() += m * J.transpose() * J;
       if (qd) {
         const PointJacobian Jd = point_jacobian_dot(pose, J, *qd, link);
         const Eigen::Vector2d a = Jd * *qd + Eigen::Vector2d(0.0, chain.gravity);
@@ -41,8 +41,9 @@ void mass_and_bias(const PlanarChain& chain, const JointVector& q, const JointVe
       }
     }
     // angular Jacobian: ones for joints 0..link
-    if (I != 0.0) M->topLeftCorner(link + 1, link + 1).array() += I;
+    if (M && I != 0.0) M->topLeftCorner(link + 1, link + 1).array() += I;
   });
+  if (!M) return;
   for (const SpinningInertia& s : chain.spinners)
     M->noalias() += s.inertia * s.coeffs * s.coeffs.transpose();
 }
@@ -59,16 +60,8 @@ JointMatrix mass_matrix(const PlanarChain& chain, const JointVector& q) {
 JointVector bias_forces(const PlanarChain& chain, const JointVector& q, const JointVector& qd) {
   check_sizes(chain, q, "q");
   check_sizes(chain, qd, "qd");
-  const int n = chain.num_links();
-  const ChainPose pose = forward_kinematics(chain, q);
-  JointVector h = JointVector::Zero(n);
-  for_each_body(chain, [&](int link, const Eigen::Vector2d& p_L, double m, double) {
-    if (m == 0.0) return;
-    const PointJacobian J = point_jacobian(pose, link, p_L);
-    const PointJacobian Jd = point_jacobian_dot(pose, J, qd, link);
-    const Eigen::Vector2d a = Jd * qd + Eigen::Vector2d(0.0, chain.gravity);
-    h.noalias() += m * J.transpose() * a;
-  });
+  JointVector h;
+  mass_and_bias(chain, q, &qd, nullptr, &h);
   return h;
 }
 

@@ -43,8 +43,8 @@ TEST(Dynamics, InverseAndForwardDynamicsAreInverses) {
 }
 
 // inverse and forward dynamics take each body's Jacobian once for M and h: the numbers of
-// mass_matrix and bias_forces (which computes h on its own) bit for bit, on every arm,
-// with its base turned too
+// mass_matrix and bias_forces, each asked alone, bit for bit, on every arm, with its base
+// turned too
 TEST(Dynamics, OnePassDynamicsGiveMassMatrixAndBiasForcesBitForBit) {
   std::mt19937 rng(11);
   for (auto arm : arm_factory()) {
