@@ -108,6 +108,15 @@ ArmScene minimal_scene() {
   return s;
 }
 
+// the minimal scene's 2-link arm at time t of its sweep
+PoseSample minimal_pose(double t) {
+  PoseSample p;
+  p.t = t;
+  p.q = core::JointVector(2);
+  p.q << -0.8 + 1.5 * t, 0.3 * std::sin(6 * t);
+  return p;
+}
+
 void BM_MinimalScene640x480(benchmark::State& state) {
   RenderSettings rs;
   rs.shadows = state.range(0) == 1;
@@ -118,11 +127,7 @@ void BM_MinimalScene640x480(benchmark::State& state) {
       sr.frame(warm, {"warm-up", "", ""}).rgb.data());  // shaders compiled here
   int k = 0;
   for (auto _ : state) {
-    PoseSample p;
-    p.t = 0.01 * (k++ % 80);
-    p.q = core::JointVector(2);
-    p.q << -0.8 + 1.5 * p.t, 0.3 * std::sin(6 * p.t);
-    const Image img = sr.frame(p, {"t = 0.000 s", "", ""});
+    const Image img = sr.frame(minimal_pose(0.01 * (k++ % 80)), {"t = 0.000 s", "", ""});
     benchmark::DoNotOptimize(img.rgb.data());
   }
   state.counters["frames_per_s"] =
@@ -175,13 +180,9 @@ void BM_RealAgainstMinimalScene640x480(benchmark::State& state) {
   for (auto _ : state) {
     const int k0 = k;
     const auto t0 = clock::now();
-    for (int i = 0; i < kBlock; ++i) {
-      PoseSample p;
-      p.t = 0.01 * (k++ % 80);
-      p.q = core::JointVector(2);
-      p.q << -0.8 + 1.5 * p.t, 0.3 * std::sin(6 * p.t);
-      benchmark::DoNotOptimize(minimal.frame(p, {"t = 0.000 s", "", ""}).rgb.data());
-    }
+    for (int i = 0; i < kBlock; ++i)
+      benchmark::DoNotOptimize(
+          minimal.frame(minimal_pose(0.01 * (k++ % 80)), {"t = 0.000 s", "", ""}).rgb.data());
     const auto t1 = clock::now();
     for (int i = 0; i < kBlock; ++i)
       benchmark::DoNotOptimize(
