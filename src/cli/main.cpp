@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -29,10 +31,12 @@
 #include "cli/diff.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/merge.hpp"
+#include "cli/process_memory.hpp"
 #include "cli/progress.hpp"
 #include "cli/sweep.hpp"
 #include "report/case_report.hpp"
 #include "report/sweep_report.hpp"
+#include "scene/frames.hpp"
 #include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 #include "version.hpp"
@@ -122,6 +126,14 @@ bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
   } catch (const std::exception&) {
     return false;
   }
+}
+
+// the CPUs this process may run on
+int available_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return 1;
+  return std::max(1, CPU_COUNT(&set));
 }
 
 int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
@@ -218,6 +230,8 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     }
   };
   const int n = std::clamp(jobs, 1, static_cast<int>(std::max<size_t>(1, cases.size())));
+  // the cores a case has draw its frames, each core a process (scene/frame_worker.hpp)
+  armstudy::scene::set_default_frame_processes(std::max(1, available_cores() / n));
   std::vector<std::thread> pool;
   for (int k = 1; k < n; ++k) pool.emplace_back(worker);
   worker();
@@ -347,6 +361,7 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  armstudy::cli::keep_freed_memory();          // before any thread: see process_memory.hpp
   armstudy::app::install_interrupt_cleanup();  // first: every thread inherits its signal mask
   CLI::App app{
       "armstudy: energy-optimal placement, throwing and time-optimal studies of planar "

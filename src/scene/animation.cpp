@@ -99,13 +99,10 @@ Animation write_animation(SceneRenderer& sr, const SampledMotion& m, const std::
   a.fps = a.duration_s > 0 ? (a.frames - 1) / a.duration_s : 1;
   const std::vector<double> at = even_times(m.t.front(), m.t.back(), a.frames);
   const std::vector<PoseSample> samples = resample(m.t, m.q, m.qd, at);
-  begin_replay(sr.model());
-  std::vector<Image> frames;
-  for (const PoseSample& s : samples) {
-    FrameLabels l;
-    l.top_left = title + "\n" + time_label(s.t);
-    frames.push_back(sr.frame(s, l));
-  }
+  std::vector<FrameLabels> labels(samples.size());
+  for (size_t k = 0; k < samples.size(); ++k)
+    labels[k].top_left = title + "\n" + time_label(samples[k].t);
+  const std::vector<Image> frames = sr.frames(samples, labels);
   // the sprite: frames at 3/4 size, 8 to a row
   a.columns = std::min(a.frames, 8);
   a.frame_width = frames.front().width * 3 / 4;

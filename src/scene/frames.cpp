@@ -1,6 +1,7 @@
 #include "scene/frames.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -12,6 +13,13 @@
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
+
+namespace {
+std::atomic<int> g_frame_processes{1};
+}  // namespace
+
+void set_default_frame_processes(int processes) { g_frame_processes = std::clamp(processes, 1, 8); }
+int default_frame_processes() { return g_frame_processes; }
 
 std::string time_label(double t) {
   char b[48];
@@ -59,8 +67,12 @@ SceneRenderer::SceneRenderer(const ArmScene& scene, const std::string& source,
       scene_(scene),
       source_(source),
       settings_(settings),
-      strip_threads_(1) {
+      strip_threads_(default_frame_processes()) {
   load_phase_.reset();
+}
+
+SceneRenderer::~SceneRenderer() {
+  for (auto& w : workers_) FrameWorker::release(std::move(w));
 }
 
 void SceneRenderer::set_strip_threads(int threads) { strip_threads_ = std::clamp(threads, 1, 8); }
@@ -70,40 +82,80 @@ Image SceneRenderer::frame(const PoseSample& s, const FrameLabels& labels) {
   return renderer_.render(model_.data(), labels);
 }
 
+std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
+                                         std::span<const FrameLabels> labels) {
+  if (labels.size() != samples.size())
+    throw SceneError("frames: " + std::to_string(labels.size()) + " labels for " +
+                     std::to_string(samples.size()) + " poses");
+  const size_t n = samples.size();
+  // helpers are taken here, once per renderer (a new one takes a fraction of a second to
+  // start; one this thread gave back keeps its warm OSMesa contexts), and kept
+  const size_t want = std::min<size_t>(static_cast<size_t>(strip_threads_) - 1, n / 2);
+  while (!workers_failed_ && workers_.size() < want) {
+    auto w = FrameWorker::acquire(scene_, source_, settings_);
+    if (!w) {
+      workers_failed_ = true;
+      break;
+    }
+    workers_.push_back(std::move(w));
+  }
+  const size_t helpers = std::min(want, workers_.size());
+  const size_t procs = helpers + 1;
+  // frame k on process owner[k]: 0 is this one, j > 0 helper j - 1, dealt in turn
+  std::vector<size_t> owner(n);
+  for (size_t k = 0; k < n; ++k) owner[k] = k % procs;
+  std::vector<Image> out(n);
+  std::vector<std::exception_ptr> errors(helpers);
+  std::vector<std::thread> pool;
+  for (size_t j = 1; j <= helpers; ++j) {
+    std::vector<WorkerPose> poses;
+    for (size_t k = 0; k < n; ++k) {
+      if (owner[k] != j) continue;
+      const PoseSample& s = samples[k];
+      const core::JointVector qd =
+          s.qd.size() == s.q.size() ? s.qd : core::JointVector::Zero(s.q.size());
+      poses.push_back({s.t, map_.jacobian() * s.q, map_.jacobian() * qd, labels[k]});
+    }
+    pool.emplace_back([&, j, poses = std::move(poses)] {
+      try {
+        std::vector<Image> got = workers_[j - 1]->draw(poses);
+        for (size_t k = 0, i = 0; k < n; ++k)
+          if (owner[k] == j) out[k] = std::move(got[i++]);
+      } catch (...) {
+        errors[j - 1] = std::current_exception();
+      }
+    });
+  }
+  std::exception_ptr here;
+  try {
+    begin_replay(model_);
+    for (size_t k = 0; k < n; ++k)
+      if (owner[k] == 0) out[k] = frame(samples[k], labels[k]);
+  } catch (...) {
+    here = std::current_exception();
+  }
+  for (auto& t : pool) t.join();
+  if (here) std::rethrow_exception(here);
+  // a helper that failed (died, or its scene raised an error): its frames are drawn here
+  // (where an error of the scene itself is raised again) and no helper is asked again
+  for (size_t j = 1; j <= helpers; ++j) {
+    if (!errors[j - 1]) continue;
+    workers_failed_ = true;
+    for (size_t k = 0; k < n; ++k)
+      if (owner[k] == j) out[k] = frame(samples[k], labels[k]);
+  }
+  if (workers_failed_) workers_.clear();
+  return out;
+}
+
 Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::string& title,
                            int columns) {
-  const size_t n = samples.size();
-  std::vector<Image> tiles(n);
-  const auto label = [&](size_t k) {
-    FrameLabels l;
-    l.top_left = time_label(samples[k].t);
-    if (k == 0 && !title.empty()) l.bottom_left = title;
-    return l;
-  };
-  // frame k on thread k % threads; thread 0 is this one, thread j > 0 draws with twin j - 1
-  const int threads =
-      static_cast<int>(std::min<size_t>(static_cast<size_t>(strip_threads_), n / 2));
-  // twins are made here, on the calling thread (loading a model is not thread-safe)
-  while (static_cast<int>(twins_.size()) < threads - 1)
-    twins_.push_back(std::make_unique<SceneRenderer>(scene_, source_, settings_));
-  std::vector<std::exception_ptr> errors(static_cast<size_t>(std::max(threads, 1)));
-  const auto draw = [&](int j) {
-    try {
-      SceneRenderer& r = j == 0 ? *this : *twins_[static_cast<size_t>(j - 1)];
-      begin_replay(r.model_);
-      for (size_t k = static_cast<size_t>(j); k < n; k += static_cast<size_t>(std::max(threads, 1)))
-        tiles[k] = r.frame(samples[k], label(k));
-    } catch (...) {
-      errors[static_cast<size_t>(j)] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int j = 1; j < threads; ++j) pool.emplace_back(draw, j);
-  draw(0);
-  for (auto& t : pool) t.join();
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
-  return tile(tiles, columns, 8, Rgb{255, 255, 255});
+  std::vector<FrameLabels> labels(samples.size());
+  for (size_t k = 0; k < samples.size(); ++k) {
+    labels[k].top_left = time_label(samples[k].t);
+    if (k == 0 && !title.empty()) labels[k].bottom_left = title;
+  }
+  return tile(frames(samples, labels), columns, 8, Rgb{255, 255, 255});
 }
 
 std::vector<size_t> evenly_spaced(size_t n, size_t at_most) {

@@ -12,6 +12,7 @@
 
 #include "scene/arm_scene.hpp"
 #include "scene/chain_map.hpp"
+#include "scene/frame_worker.hpp"
 #include "scene/image.hpp"
 #include "scene/mujoco_model.hpp"
 #include "scene/phase_times.hpp"
@@ -26,25 +27,28 @@ class SceneRenderer {
   /// Loads `scene` (source names it in errors) and opens a renderer of width x height px.
   /// @throws SceneError (MuJoCo's message, OSMesa failures suggesting --no-render).
   SceneRenderer(const ArmScene& scene, const std::string& source, const RenderSettings& settings);
+  /// Gives its frame helpers back to this thread's pool (FrameWorker::release).
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
 
   /// One frame of pose `s` (kinematic replay) with labels.
   Image frame(const PoseSample& s, const FrameLabels& labels);
 
-  /// A strip: one frame per sample, labelled "t = 0.130 s" (plus `title` on the first),
-  /// tiled `columns` per row. Begins a replay (mj_resetData) first. The frames render on
-  /// strip_threads() threads: the others draw through twins of this renderer (their own
-  /// model, OSMesa context and MuJoCo scene, made once and kept), each frame a function of
-  /// its pose alone, so the strip is the same image on any number of threads.
+  /// Frames of `samples` labelled `labels` (one each), in order, after a replay begins
+  /// (mj_resetData). They render on strip_threads() processes: this one and helpers
+  /// (frame_worker.hpp) started at the first call and kept, each with its own model, OSMesa
+  /// context and llvmpipe; a frame is a function of its pose alone, so the frames are the
+  /// same on any number of processes. Where no helper starts, all render here.
+  std::vector<Image> frames(std::span<const PoseSample> samples,
+                            std::span<const FrameLabels> labels);
+  /// A strip: one frame per sample (frames()), labelled "t = 0.130 s" (plus `title` on the
+  /// first), tiled `columns` per row.
   Image strip(std::span<const PoseSample> samples, const std::string& title, int columns);
-  /// Threads a strip renders on (default 1). llvmpipe rasterises every context of a process
-  /// on ONE set of LP_NUM_THREADS threads (the screen's, one per core by default; the
-  /// scenes of all contexts queue for it), so one thread's strip already rasterises on every
-  /// core, and twins only add their model and context: 2 threads measured no faster
-  /// (slower with LP_NUM_THREADS=1, where the whole process has one rasteriser thread).
-  /// What stays on the drawing thread (scene update, vertex work, labels, read-back, tiling,
-  /// PNG) is ~40% of a one-core strip, which bounds both cores' gain: measured 1.27x one
-  /// core's frames per second (tests/bench/scene_bench.cpp BM_Strip16Frames640x480, the
-  /// process pinned to 1 and to 2 cores in one run).
+  /// Processes frames() and strip() render on (default 1; at most 8). llvmpipe rasterises
+  /// every context of a process through one queue (the screen's LP_NUM_THREADS threads),
+  /// so a second drawing thread in this process measured only ~1.1x; a helper process has
+  /// a rasteriser of its own (tests/bench/scene_bench.cpp BM_Strip16Frames640x480).
   int strip_threads() const { return strip_threads_; }
   void set_strip_threads(int threads);
 
@@ -78,12 +82,19 @@ class SceneRenderer {
   MujocoModel model_;
   ChainMap map_;
   Renderer renderer_;
-  ArmScene scene_;  // what the twins load
+  ArmScene scene_;  // what the helpers load
   std::string source_;
   RenderSettings settings_;
   int strip_threads_ = 1;
-  std::vector<std::unique_ptr<SceneRenderer>> twins_;
+  std::vector<std::unique_ptr<FrameWorker>> workers_;
+  bool workers_failed_ = false;  // a helper did not start: draw here from then on
 };
+
+/// The processes a SceneRenderer made from now on draws its frames on (its initial
+/// strip_threads()): 1 until set. armstudy run sets it to the cores each of its parallel
+/// cases has (2 for one case on two cores, 1 with --jobs 2 there).
+void set_default_frame_processes(int processes);
+int default_frame_processes();
 
 /// Segments of a traced path and dots of a flight a locus draws at most (longer ones are
 /// drawn through evenly spaced points of them): the scene holds a few thousand geoms.

@@ -234,12 +234,13 @@ class PinnedToCores {
 };
 
 // a 16-frame strip (SceneRenderer::strip, PNG of the tiled strip included, compressed in
-// bands on the second argument's threads) on 1 or 2 drawing threads (first argument), the whole
-// process pinned to the third argument's cores (1: one core's rate; 2: both); frames_per_s
-// counts the strip's frames. llvmpipe rasterises every context of a process on one set of
-// LP_NUM_THREADS threads (read once per process; one per core by default), so one drawing
-// thread's strip already rasterises on both cores: {1, 2, 2} against {1, 1, 1} is the strip's
-// two-core speed-up, in one run
+// bands on the second argument's threads) on 1 or 2 drawing processes (first argument: this
+// one and a frame helper), this process pinned to the third argument's cores (1: one core's
+// rate; 2: both); frames_per_s counts the strip's frames. llvmpipe rasterises every context of
+// a process on one set of LP_NUM_THREADS threads (one per core by default), so one process's
+// strip already rasterises on both cores: {1, 2, 2} against {1, 1, 1} is what a second
+// rasteriser thread gives, {2, 2, 2} what a second process gives
+// (BM_StripTwoCoresAgainstOne640x480 measures the latter's ratio interleaved)
 void BM_Strip16Frames640x480(benchmark::State& state) {
   const int cores = static_cast<int>(state.range(2));
   if (PinnedToCores::available() < cores) {
@@ -251,7 +252,7 @@ void BM_Strip16Frames640x480(benchmark::State& state) {
   std::vector<PoseSample> poses;
   for (int k = 0; k < 16; ++k) poses.push_back(pose(0.05 * k));
   PinnedToCores pin(cores);
-  benchmark::DoNotOptimize(sr.strip(poses, "warm-up", 3).rgb.data());  // twins made here
+  benchmark::DoNotOptimize(sr.strip(poses, "warm-up", 3).rgb.data());  // helpers started here
   const int png_threads = static_cast<int>(state.range(1));
   for (auto _ : state)
     benchmark::DoNotOptimize(encode_png(sr.strip(poses, "strip", 3), png_threads).size());
@@ -266,6 +267,50 @@ BENCHMARK(BM_Strip16Frames640x480)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);
+
+// The 16-frame strip (PNG included) on both cores against one core, in one loop: strips in
+// turn, one as armstudy draws a strip with one core (this process pinned to one core, one
+// drawing process, one PNG band) and one with two (all cores: a frame helper process beside
+// this one, two PNG bands), each timed, so that the machine's drift falls on both;
+// two_over_one_core is the two-core strips' frame rate over the one-core strips'.
+void BM_StripTwoCoresAgainstOne640x480(benchmark::State& state) {
+  if (PinnedToCores::available() < 2) {
+    state.SkipWithError("fewer than 2 cores");
+    return;
+  }
+  SceneRenderer one(default_tray_scene(), "bench", RenderSettings{});
+  SceneRenderer two(default_tray_scene(), "bench", RenderSettings{});
+  two.set_strip_threads(2);
+  std::vector<PoseSample> poses;
+  for (int k = 0; k < 16; ++k) poses.push_back(pose(0.05 * k));
+  benchmark::DoNotOptimize(two.strip(poses, "warm-up", 3).rgb.data());  // the helper starts
+  {
+    PinnedToCores pin(1);
+    benchmark::DoNotOptimize(one.strip(poses, "warm-up", 3).rgb.data());
+  }
+  using clock = std::chrono::steady_clock;
+  double t_one = 0, t_two = 0;
+  for (auto _ : state) {
+    const auto t0 = clock::now();
+    {
+      PinnedToCores pin(1);
+      benchmark::DoNotOptimize(encode_png(one.strip(poses, "strip", 3), 1).size());
+    }
+    const auto t1 = clock::now();
+    benchmark::DoNotOptimize(encode_png(two.strip(poses, "strip", 3), 2).size());
+    const auto t2 = clock::now();
+    t_one += std::chrono::duration<double>(t1 - t0).count();
+    t_two += std::chrono::duration<double>(t2 - t1).count();
+  }
+  const double frames = 16.0 * static_cast<double>(state.iterations());
+  state.counters["one_core_fps"] = frames / t_one;
+  state.counters["two_core_fps"] = frames / t_two;
+  state.counters["two_over_one_core"] = t_one / t_two;
+}
+BENCHMARK(BM_StripTwoCoresAgainstOne640x480)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(4.0);
 
 // Loading a scene and drawing its first frame (SceneRenderer construction + frame), in a
 // fresh OSMesa context (argument 0: every kept context held aside, so take_context makes a new

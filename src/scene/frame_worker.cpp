@@ -1,0 +1,370 @@
+#include "scene/frame_worker.hpp"
+
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <optional>
+#include <thread>
+
+#include "scene/mujoco_model.hpp"
+#include "scene/scene_error.hpp"
+
+extern char** environ;
+
+namespace armstudy::scene {
+namespace fs = std::filesystem;
+
+namespace {
+
+// the protocol: a message is a type byte and its fields; numbers in this machine's byte
+// order (both ends are one machine), a string as its length (u64) and bytes
+enum : char {
+  kScene = 'S',  // parent: mjcf, source, width, height, shadows, margin, view box
+  kReset = 'R',  // parent: mj_resetData (no answer)
+  kFrame = 'F',  // parent: time, nq, qpos, nv, qvel, three labels
+  kReady = 'K',  // helper: the scene is loaded
+  kImage = 'I',  // helper: width, height, RGB rows
+  kError = 'E',  // helper: a message
+};
+
+// how long the parent waits for the helper's next bytes before it gives up on it
+constexpr int kAnswerTimeoutMs = 120000;
+
+struct Out {
+  std::string bytes;
+  template <typename T>
+  void put(const T& v) {
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  void put_string(const std::string& s) {
+    put<std::uint64_t>(s.size());
+    bytes += s;
+  }
+  void put_vector(const Eigen::VectorXd& v) {
+    put<std::int32_t>(static_cast<std::int32_t>(v.size()));
+    bytes.append(reinterpret_cast<const char*>(v.data()), sizeof(double) * v.size());
+  }
+};
+
+// writes everything; false if the other end is gone
+bool send_all(int fd, const char* p, size_t n) {
+  while (n > 0) {
+    const ssize_t w = ::send(fd, p, n, MSG_NOSIGNAL);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    p += w;
+    n -= static_cast<size_t>(w);
+  }
+  return true;
+}
+
+// reads exactly n bytes, waiting at most timeout_ms for each part (-1: no limit); false at
+// the end of the connection, on an error or when the time ran out (`timed_out` set)
+bool read_all(int fd, char* p, size_t n, int timeout_ms, bool* timed_out = nullptr) {
+  while (n > 0) {
+    if (timeout_ms >= 0) {
+      pollfd pf{fd, POLLIN, 0};
+      const int r = ::poll(&pf, 1, timeout_ms);
+      if (r < 0 && errno == EINTR) continue;
+      if (r == 0 && timed_out) *timed_out = true;
+      if (r <= 0) return false;
+    }
+    const ssize_t got = ::read(fd, p, n);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) return false;
+    p += got;
+    n -= static_cast<size_t>(got);
+  }
+  return true;
+}
+
+struct In {
+  int fd;
+  int timeout_ms;
+  bool timed_out = false;
+  bool ok = true;
+  template <typename T>
+  T get() {
+    T v{};
+    ok = ok && read_all(fd, reinterpret_cast<char*>(&v), sizeof v, timeout_ms, &timed_out);
+    return v;
+  }
+  std::string get_string(size_t at_most) {
+    const auto n = get<std::uint64_t>();
+    if (!ok || n > at_most) return ok = false, std::string();
+    std::string s(n, '\0');
+    ok = ok && read_all(fd, s.data(), n, timeout_ms, &timed_out);
+    return s;
+  }
+  Eigen::VectorXd get_vector() {
+    const auto n = get<std::int32_t>();
+    if (!ok || n < 0 || n > 4096) return ok = false, Eigen::VectorXd();
+    Eigen::VectorXd v(n);
+    ok = ok && read_all(fd, reinterpret_cast<char*>(v.data()), sizeof(double) * n, timeout_ms,
+                        &timed_out);
+    return v;
+  }
+};
+
+bool is_executable(const fs::path& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(p.c_str(), X_OK) == 0;
+}
+
+}  // namespace
+
+std::string frame_worker_program() {
+  if (const char* env = std::getenv("ARMSTUDY_FRAME_WORKER")) {
+    const std::string p = env;
+    return p.empty() || p == "none" || !is_executable(p) ? "" : p;
+  }
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && is_executable(self.parent_path() / "armstudy-frames"))
+    return (self.parent_path() / "armstudy-frames").string();
+#ifdef ARMSTUDY_FRAME_WORKER_BUILT
+  if (is_executable(ARMSTUDY_FRAME_WORKER_BUILT)) return ARMSTUDY_FRAME_WORKER_BUILT;
+#endif
+  return "";
+}
+
+std::unique_ptr<FrameWorker> FrameWorker::spawn(std::string* why) {
+  const auto fail = [&](const std::string& text) -> std::unique_ptr<FrameWorker> {
+    if (why) *why = text;
+    return nullptr;
+  };
+  const std::string program = frame_worker_program();
+  if (program.empty()) return fail("no frame helper program (armstudy-frames)");
+  int sv[2];
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
+    return fail(std::string("socketpair: ") + std::strerror(errno));
+  // the helper's end as its standard input and output (dup2 clears close-on-exec); its
+  // signals as new (armstudy blocks the termination signals in every thread); one
+  // rasteriser thread unless the environment says otherwise (it draws beside this process)
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, sv[1], 0);
+  posix_spawn_file_actions_adddup2(&fa, sv[1], 1);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  for (int s : {SIGPIPE, SIGINT, SIGTERM, SIGHUP}) sigaddset(&defaults, s);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  std::vector<std::string> env_text;
+  bool lp_set = false;
+  for (char** e = environ; *e; ++e) {
+    env_text.emplace_back(*e);
+    lp_set |= std::strncmp(*e, "LP_NUM_THREADS=", 15) == 0;
+  }
+  if (!lp_set) env_text.emplace_back("LP_NUM_THREADS=1");
+  std::vector<char*> envp;
+  for (auto& e : env_text) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  std::string arg0 = program, parent = std::to_string(::getpid());
+  char* argv[] = {arg0.data(), parent.data(), nullptr};
+  pid_t pid = -1;
+  const int rc = ::posix_spawn(&pid, program.c_str(), &fa, &attr, argv, envp.data());
+  posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
+  ::close(sv[1]);
+  if (rc != 0) {
+    ::close(sv[0]);
+    return fail("cannot start " + program + ": " + std::strerror(rc));
+  }
+  return std::unique_ptr<FrameWorker>(new FrameWorker(sv[0], pid));
+}
+
+bool FrameWorker::load(const ArmScene& scene, const std::string& source,
+                       const RenderSettings& settings, std::string* why) {
+  const auto fail = [&](const std::string& text) {
+    if (why) *why = "the frame helper (armstudy-frames) " + text;
+    return false;
+  };
+  Out o;
+  o.put(kScene);
+  o.put_string(scene.mjcf);
+  o.put_string(source);
+  o.put<std::int32_t>(settings.frame.width);
+  o.put<std::int32_t>(settings.frame.height);
+  o.put<std::uint8_t>(settings.shadows ? 1 : 0);
+  o.put(settings.margin);
+  o.put(scene.view.x_min);
+  o.put(scene.view.x_max);
+  o.put(scene.view.y_min);
+  o.put(scene.view.y_max);
+  if (!send_all(fd_, o.bytes.data(), o.bytes.size())) return fail("closed the connection");
+  In in{fd_, kAnswerTimeoutMs};
+  const char type = in.get<char>();
+  if (!in.ok) return fail(in.timed_out ? "did not answer" : "ended");
+  if (type == kError) return fail("could not load the scene: " + in.get_string(1 << 16));
+  return type == kReady || fail("answered something else");
+}
+
+namespace {
+// this thread's idle helpers (closed when the thread ends)
+std::vector<std::unique_ptr<FrameWorker>>& idle_workers() {
+  thread_local std::vector<std::unique_ptr<FrameWorker>> idle;
+  return idle;
+}
+}  // namespace
+
+std::unique_ptr<FrameWorker> FrameWorker::acquire(const ArmScene& scene, const std::string& source,
+                                                  const RenderSettings& settings,
+                                                  std::string* why) {
+  auto& idle = idle_workers();
+  std::unique_ptr<FrameWorker> w;
+  if (!idle.empty()) {
+    w = std::move(idle.back());
+    idle.pop_back();
+  } else {
+    w = spawn(why);
+  }
+  if (!w || !w->load(scene, source, settings, why)) return nullptr;
+  return w;
+}
+
+void FrameWorker::release(std::unique_ptr<FrameWorker> worker) {
+  if (worker) idle_workers().push_back(std::move(worker));
+}
+
+FrameWorker::~FrameWorker() {
+  if (fd_ >= 0) ::close(fd_);  // the helper reads the end of its input and exits
+  if (pid_ <= 0) return;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+  int status = 0;
+  while (::waitpid(pid_, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > until) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+std::vector<Image> FrameWorker::draw(const std::vector<WorkerPose>& poses) {
+  Out o;
+  o.put(kReset);
+  for (const WorkerPose& p : poses) {
+    o.put(kFrame);
+    o.put(p.t);
+    o.put_vector(p.qpos);
+    o.put_vector(p.qvel);
+    o.put_string(p.labels.top_left);
+    o.put_string(p.labels.top_right);
+    o.put_string(p.labels.bottom_left);
+  }
+  if (!send_all(fd_, o.bytes.data(), o.bytes.size()))
+    throw SceneError("the frame helper (armstudy-frames) closed the connection");
+  std::vector<Image> out;
+  out.reserve(poses.size());
+  In in{fd_, kAnswerTimeoutMs};
+  for (size_t k = 0; k < poses.size(); ++k) {
+    const char type = in.get<char>();
+    if (in.ok && type == kError) throw SceneError(in.get_string(1 << 16));
+    const auto w = in.get<std::int32_t>(), h = in.get<std::int32_t>();
+    if (!in.ok || type != kImage || w <= 0 || h <= 0 || w > 1 << 14 || h > 1 << 14)
+      throw SceneError(in.timed_out ? "the frame helper (armstudy-frames) stopped answering"
+                                    : "the frame helper (armstudy-frames) ended unexpectedly");
+    Image img(w, h);
+    if (!read_all(fd_, reinterpret_cast<char*>(img.rgb.data()), img.rgb.size(), kAnswerTimeoutMs))
+      throw SceneError("the frame helper (armstudy-frames) ended unexpectedly");
+    out.push_back(std::move(img));
+  }
+  return out;
+}
+
+int run_frame_worker(int in_fd, int out_fd) {
+  install_mujoco_handlers();
+  std::optional<MujocoModel> model;
+  std::optional<Renderer> renderer;
+  In in{in_fd, -1};
+  const auto answer_error = [&](const std::string& text) {
+    Out o;
+    o.put(kError);
+    o.put_string(text);
+    return send_all(out_fd, o.bytes.data(), o.bytes.size());
+  };
+  while (true) {
+    const char type = in.get<char>();
+    if (!in.ok) return 0;  // the parent closed the connection
+    if (type == kScene) {
+      const std::string mjcf = in.get_string(size_t{1} << 30);
+      const std::string source = in.get_string(1 << 16);
+      RenderSettings s;
+      s.frame.width = in.get<std::int32_t>();
+      s.frame.height = in.get<std::int32_t>();
+      s.shadows = in.get<std::uint8_t>() != 0;
+      s.margin = in.get<double>();
+      ViewBox v;
+      v.x_min = in.get<double>();
+      v.x_max = in.get<double>();
+      v.y_min = in.get<double>();
+      v.y_max = in.get<double>();
+      if (!in.ok) return 1;
+      try {
+        renderer.reset();
+        model.reset();
+        model.emplace(mjcf, source);
+        renderer.emplace(model->model(), s, v);
+        const char ready = kReady;
+        if (!send_all(out_fd, &ready, 1)) return 1;
+      } catch (const std::exception& e) {
+        if (!answer_error(e.what())) return 1;
+      }
+    } else if (type == kReset) {
+      if (model) mj_resetData(model->model(), model->data());
+    } else if (type == kFrame) {
+      const auto t = in.get<double>();
+      const Eigen::VectorXd qpos = in.get_vector(), qvel = in.get_vector();
+      FrameLabels labels;
+      labels.top_left = in.get_string(1 << 20);
+      labels.top_right = in.get_string(1 << 20);
+      labels.bottom_left = in.get_string(1 << 20);
+      if (!in.ok) return 1;
+      try {
+        if (!model || !renderer) throw SceneError("frame helper: a frame before the scene");
+        mjModel* m = model->model();
+        mjData* d = model->data();
+        if (qpos.size() != m->nq || qvel.size() != m->nv)
+          throw SceneError("frame helper: a pose of " + std::to_string(qpos.size()) +
+                           " coordinates for a model of " + std::to_string(m->nq));
+        // set_pose's steps (replay.cpp): qpos, qvel, time, then mj_forward
+        for (int k = 0; k < m->nq; ++k) d->qpos[k] = qpos[k];
+        for (int k = 0; k < m->nv; ++k) d->qvel[k] = qvel[k];
+        d->time = t;
+        mj_forward(m, d);
+        const Image img = renderer->render(d, labels);
+        Out o;
+        o.put(kImage);
+        o.put<std::int32_t>(img.width);
+        o.put<std::int32_t>(img.height);
+        if (!send_all(out_fd, o.bytes.data(), o.bytes.size()) ||
+            !send_all(out_fd, reinterpret_cast<const char*>(img.rgb.data()), img.rgb.size()))
+          return 1;
+      } catch (const std::exception& e) {
+        if (!answer_error(e.what())) return 1;
+      }
+    } else {
+      answer_error(std::string("frame helper: unknown request '") + type + "'");
+      return 1;
+    }
+  }
+}
+
+}  // namespace armstudy::scene

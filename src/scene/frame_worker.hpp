@@ -1,0 +1,73 @@
+#pragma once
+/// A helper process that draws frames of a scene: its own MuJoCo model, OSMesa context and
+/// llvmpipe. llvmpipe rasterises every context of one process through one queue, so a
+/// second drawing thread gains little (scene_bench.cpp BM_Strip16Frames640x480); a second
+/// process has a rasteriser of its own. The helper is the program armstudy-frames
+/// (src/cli/frame_worker_main.cpp), spoken to over a socket: the scene once, then poses
+/// (MuJoCo's qpos and qvel, already mapped from the chain) and their labels; it answers
+/// each with the frame's pixels. A frame is a function of its pose alone, so the helper's
+/// frames are the parent's byte for byte on one machine (tests/scene/frame_worker_test.cpp).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "scene/arm_scene.hpp"
+#include "scene/image.hpp"
+#include "scene/renderer.hpp"
+
+namespace armstudy::scene {
+
+/// One frame asked of a worker: the model's state and the labels.
+struct WorkerPose {
+  double t = 0;          ///< s (mjData::time)
+  Eigen::VectorXd qpos;  ///< (nq) rad
+  Eigen::VectorXd qvel;  ///< (nv) rad/s
+  FrameLabels labels;
+};
+
+class FrameWorker {
+ public:
+  /// A helper with `scene` loaded: one this thread gave back earlier (release), or a new
+  /// one started from frame_worker_program(). nullptr when there is no helper program, or
+  /// it could not start or load the scene (the caller draws in this process instead;
+  /// `why`, when given, says why). A helper is kept per thread: it dies with the thread
+  /// that started it (PR_SET_PDEATHSIG), and its OSMesa contexts stay warm between scenes.
+  static std::unique_ptr<FrameWorker> acquire(const ArmScene& scene, const std::string& source,
+                                              const RenderSettings& settings,
+                                              std::string* why = nullptr);
+  /// Gives a helper back to this thread's pool, for the next acquire on this thread.
+  static void release(std::unique_ptr<FrameWorker> worker);
+  /// Closes the connection; the helper exits (and is killed if it has not within 2 s).
+  ~FrameWorker();
+  FrameWorker(const FrameWorker&) = delete;
+  FrameWorker& operator=(const FrameWorker&) = delete;
+
+  /// Begins a replay (mj_resetData) in the helper and draws `poses` there, in order.
+  /// @throws SceneError with the helper's own message, or if it died or stopped answering.
+  std::vector<Image> draw(const std::vector<WorkerPose>& poses);
+  /// The helper's process id (for tests and diagnostics).
+  int pid() const { return pid_; }
+
+ private:
+  FrameWorker(int fd, int pid) : fd_(fd), pid_(pid) {}
+  static std::unique_ptr<FrameWorker> spawn(std::string* why);
+  bool load(const ArmScene& scene, const std::string& source, const RenderSettings& settings,
+            std::string* why);
+  int fd_ = -1;
+  int pid_ = -1;
+};
+
+/// The helper program: $ARMSTUDY_FRAME_WORKER when set (empty or "none": no helper), else
+/// armstudy-frames beside the running program, else the one in the build tree this was
+/// built in; "" when none of them is an executable file.
+std::string frame_worker_program();
+
+/// The helper's side: reads requests from `in_fd` and answers on `out_fd` until the
+/// connection closes (returns 0) or breaks (returns 1). Errors of a request (a model MuJoCo
+/// rejects, a failing context) are answered with their message, not thrown.
+int run_frame_worker(int in_fd, int out_fd);
+
+}  // namespace armstudy::scene
