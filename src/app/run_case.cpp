@@ -21,6 +21,7 @@
 #include "app/provenance.hpp"
 #include "report/case_report.hpp"
 #include "report/scratch_dir.hpp"
+#include "scene/animation.hpp"
 #include "scene/osmesa_context.hpp"
 #include "scene/phase_times.hpp"
 #include "version.hpp"
@@ -171,6 +172,16 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
         failed += (failed.empty() ? "" : ", ") + ch.name;
       }
     }
+    // every video of this case encoded (or failed) before its folder is used or removed,
+    // on every path out of here (scene/animation.hpp)
+    struct WaitForVideos {
+      ~WaitForVideos() {
+        try {
+          scene::finish_animations();
+        } catch (...) {  // (the error path: the case fails for its own reason)
+        }
+      }
+    } wait_for_videos;
     // render and report only what was solved
     if (status == studies::Status::kSolved && options.render) {
       if (progress) progress(0.99, "rendering");
@@ -183,6 +194,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
       r.exports = report::from_json<std::vector<report::ExportRecord>>(
           c.run->write_exports(tmp_dir, c.info), "/exports");
     exports_phase.reset();
+    scene::finish_animations();  // the videos encoded while the case went on
     r.animations = collect_animations(tmp_dir);
     if (!r.frames.empty()) {
       const scene::GlInfo gl = scene::gl_info();

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <fstream>
+#include <future>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -66,6 +68,34 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
   return true;
 }
 
+// the manifest beside the animation's files
+void write_manifest(const Animation& a, const fs::path& dir) {
+  nlohmann::json j = {
+      {"name", a.name},
+      {"title", a.title},
+      {"sprite", a.sprite},
+      {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
+      {"still", a.still},
+      {"frames", a.frames},
+      {"columns", a.columns},
+      {"frame_width_px", a.frame_width},
+      {"frame_height_px", a.frame_height},
+      {"fps", a.fps},
+      {"duration_s", a.duration_s},
+      {"video_duration_s", a.frames / a.fps}};
+  if (!a.note.empty()) j["note"] = a.note;
+  std::ofstream out(dir / (a.name + ".anim.json"));
+  out << j.dump(1) << "\n";
+  if (!out) throw std::runtime_error("cannot write " + (dir / (a.name + ".anim.json")).string());
+}
+
+// this thread's videos still being encoded (each future waits for its task when destroyed:
+// none outlives the thread)
+std::vector<std::future<void>>& pending_animations() {
+  thread_local std::vector<std::future<void>> pending;
+  return pending;
+}
+
 }  // namespace
 
 std::string find_ffmpeg() {
@@ -87,8 +117,8 @@ int animation_frames(double duration) {
   return std::clamp(n, kAnimationMinFrames, kAnimationMaxFrames);
 }
 
-Animation write_animation(SceneRenderer& sr, const SampledMotion& m, const std::string& title,
-                          const fs::path& dir, const std::string& name) {
+void write_animation(SceneRenderer& sr, const SampledMotion& m, const std::string& title,
+                     const fs::path& dir, const std::string& name) {
   Animation a;
   a.name = name;
   a.title = title;
@@ -102,7 +132,7 @@ Animation write_animation(SceneRenderer& sr, const SampledMotion& m, const std::
   std::vector<FrameLabels> labels(samples.size());
   for (size_t k = 0; k < samples.size(); ++k)
     labels[k].top_left = title + "\n" + time_label(samples[k].t);
-  const std::vector<Image> frames = sr.frames(samples, labels);
+  std::vector<Image> frames = sr.frames(samples, labels);
   // the sprite: frames at 3/4 size, 8 to a row
   a.columns = std::min(a.frames, 8);
   a.frame_width = frames.front().width * 3 / 4;
@@ -115,37 +145,40 @@ Animation write_animation(SceneRenderer& sr, const SampledMotion& m, const std::
          (k % a.columns) * a.frame_width, (k / a.columns) * a.frame_height);
   sprite_phase.reset();
   a.sprite = name + "_anim.png";
-  write_png(dir / a.sprite, sheet);
+  write_png(dir / a.sprite, sheet, sr.strip_threads());
   a.still = name + "_still.png";
   write_png(dir / a.still, frames.back());
-  const std::string ffmpeg = find_ffmpeg();
-  if (ffmpeg.empty()) {
-    a.note = "no video: ffmpeg was not found (apt-get install ffmpeg)";
-  } else {
-    std::string why;
-    if (write_video(ffmpeg, frames, a.fps, dir / (name + ".mp4"), &why))
-      a.video = name + ".mp4";
-    else
-      a.note = "no video: " + why;
+  // the video and the manifest on a thread of their own: ffmpeg encodes while this thread
+  // draws on (finish_animations waits for them)
+  pending_animations().push_back(
+      std::async(std::launch::async, [a, dir, frames = std::move(frames)]() mutable {
+        const std::string ffmpeg = find_ffmpeg();
+        if (ffmpeg.empty()) {
+          a.note = "no video: ffmpeg was not found (apt-get install ffmpeg)";
+        } else {
+          std::string why;
+          if (write_video(ffmpeg, frames, a.fps, dir / (a.name + ".mp4"), &why))
+            a.video = a.name + ".mp4";
+          else
+            a.note = "no video: " + why;
+        }
+        write_manifest(a, dir);
+      }));
+}
+
+void finish_animations() {
+  PhaseScope phase("video_wait");
+  auto& pending = pending_animations();
+  std::exception_ptr first;
+  for (auto& f : pending) {
+    try {
+      f.get();
+    } catch (...) {
+      if (!first) first = std::current_exception();
+    }
   }
-  nlohmann::json j = {
-      {"name", a.name},
-      {"title", a.title},
-      {"sprite", a.sprite},
-      {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
-      {"still", a.still},
-      {"frames", a.frames},
-      {"columns", a.columns},
-      {"frame_width_px", a.frame_width},
-      {"frame_height_px", a.frame_height},
-      {"fps", a.fps},
-      {"duration_s", a.duration_s},
-      {"video_duration_s", a.frames / a.fps}};
-  if (!a.note.empty()) j["note"] = a.note;
-  std::ofstream out(dir / (name + ".anim.json"));
-  out << j.dump(1) << "\n";
-  if (!out) throw std::runtime_error("cannot write " + (dir / (name + ".anim.json")).string());
-  return a;
+  pending.clear();
+  if (first) std::rethrow_exception(first);
 }
 
 }  // namespace armstudy::scene

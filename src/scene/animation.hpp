@@ -38,11 +38,18 @@ struct Animation {
 /// about kAnimationFps, within [kAnimationMinFrames, kAnimationMaxFrames] frames.
 int animation_frames(double duration);
 
-/// Renders the animation of `motion` with `sr` into `dir` (sprite, still, video and the
-/// manifest) and returns what it wrote. Each frame is labelled with its time and `title`.
+/// Renders the animation of `motion` with `sr` into `dir`: the sprite and the still at once;
+/// the video (ffmpeg, on a thread of its own while this one goes on) and the manifest by
+/// the time finish_animations() returns. Each frame is labelled with its time and `title`.
 /// @throws SceneError when rendering fails; std::runtime_error when a file cannot be written.
-Animation write_animation(SceneRenderer& sr, const SampledMotion& motion, const std::string& title,
-                          const std::filesystem::path& dir, const std::string& name);
+void write_animation(SceneRenderer& sr, const SampledMotion& motion, const std::string& title,
+                     const std::filesystem::path& dir, const std::string& name);
+
+/// Waits for the videos and manifests this thread's write_animation calls left (a video
+/// ffmpeg could not make is a note in its manifest, not an error). Call it before the
+/// manifests are read and before their folder goes. @throws std::runtime_error when a
+/// manifest could not be written (the first such error; every video is waited for).
+void finish_animations();
 
 /// The ffmpeg executable: $ARMSTUDY_FFMPEG if set, else "ffmpeg" when it is on PATH; empty
 /// when none is found.

@@ -61,7 +61,8 @@ std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spe
                 "pendulum (Sato et al. Sec. 3), joints 1, 2 locked; every %.2f s",
                 spec.snapshot_step);
   const int columns = snaps.size() > 9 ? 4 : strip_columns(static_cast<int>(snaps.size()));
-  write_png(dir / "pendulum_snapshots_strip.png", sr.strip(snaps, title, columns));
+  write_png(dir / "pendulum_snapshots_strip.png", sr.strip(snaps, title, columns),
+            sr.strip_threads());
   files.push_back("pendulum_snapshots_strip.png");
   FrameLabels labels;
   labels.top_left = std::string(title) + "\nball path traced; older snapshots fainter";

@@ -74,23 +74,27 @@ std::string deflate_band(const Image& image, int y0, int y1, bool last, uLong* a
   return out;
 }
 
-// the PNG of `image` with its rows compressed in `threads` bands at once
-std::string encode_png_bands(const Image& image, int threads) {
-  const int bands = std::clamp(threads, 1, std::max(1, image.height));
+// the PNG of `image` with its rows compressed in `bands` bands, on up to `threads` threads
+// at once (thread j takes bands j, j + threads, ...): the bytes depend on the bands alone
+std::string encode_png_bands(const Image& image, int bands_wanted, int threads) {
+  const int bands = std::clamp(bands_wanted, 1, std::max(1, image.height));
+  const int workers = std::clamp(threads, 1, bands);
   std::vector<std::string> parts(static_cast<size_t>(bands));
   std::vector<uLong> adlers(static_cast<size_t>(bands));
   std::vector<std::exception_ptr> errors(static_cast<size_t>(bands));
-  const auto run = [&](int b) {
-    try {
-      const int y0 = static_cast<int>(static_cast<long>(image.height) * b / bands);
-      const int y1 = static_cast<int>(static_cast<long>(image.height) * (b + 1) / bands);
-      parts[b] = deflate_band(image, y0, y1, b == bands - 1, &adlers[b]);
-    } catch (...) {
-      errors[b] = std::current_exception();
+  const auto run = [&](int first) {
+    for (int b = first; b < bands; b += workers) {
+      try {
+        const int y0 = static_cast<int>(static_cast<long>(image.height) * b / bands);
+        const int y1 = static_cast<int>(static_cast<long>(image.height) * (b + 1) / bands);
+        parts[b] = deflate_band(image, y0, y1, b == bands - 1, &adlers[b]);
+      } catch (...) {
+        errors[b] = std::current_exception();
+      }
     }
   };
   std::vector<std::thread> pool;
-  for (int b = 1; b < bands; ++b) pool.emplace_back(run, b);
+  for (int j = 1; j < workers; ++j) pool.emplace_back(run, j);
   run(0);
   for (auto& t : pool) t.join();
   for (const auto& e : errors)
@@ -117,16 +121,18 @@ std::string encode_png_bands(const Image& image, int threads) {
   return out;
 }
 
-// an image this large is worth compressing on several threads (the tiled strips and the
-// animation sprites; a single frame is not)
+// an image this large is compressed in kBands bands, whatever the thread count, so that
+// its bytes are the same on any number of threads (the tiled strips and the animation
+// sprites; a single frame is not)
 constexpr size_t kBandedBytes = 4u << 20;
+constexpr int kBands = 4;
 
 }  // namespace
 
 std::string encode_png(const Image& image, int threads) {
   PhaseScope phase("png");
-  if (threads > 1 && image.rgb.size() >= kBandedBytes && image.width > 0)
-    return encode_png_bands(image, threads);
+  if (image.rgb.size() >= kBandedBytes && image.width > 0)
+    return encode_png_bands(image, kBands, threads);
   std::string out;
   png_structp png =
       png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, &on_png_warning);

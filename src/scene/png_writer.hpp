@@ -9,10 +9,11 @@
 
 namespace armstudy::scene {
 
-/// The PNG bytes of `image`. @throws SceneError if libpng fails. With threads > 1, an image
-/// of more than a few frames is compressed in `threads` bands of rows at once (each band
-/// its own deflate run, ended by a sync flush, the bands' streams one zlib stream, as
-/// pigz does): the same pixels, other bytes (a fresh dictionary per band).
+/// The PNG bytes of `image`. @throws SceneError if libpng fails. An image of more than a
+/// few frames (4 MiB of pixels) is compressed in 4 bands of rows, each its own deflate run
+/// ended by a sync flush, the bands' streams one zlib stream (as pigz does), on up to
+/// `threads` threads at once: the same bytes on any number of threads. A smaller image is
+/// one libpng stream.
 std::string encode_png(const Image& image, int threads = 1);
 
 /// Writes `image` to `path` as PNG (encode_png). @throws SceneError naming the file if it

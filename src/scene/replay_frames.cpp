@@ -53,7 +53,8 @@ std::string write_replay_strip(SceneRenderer& sr, const core::PlanarChain& chain
   }
   const std::string file = name + "_strip.png";
   write_png(dir / file,
-            tile(tiles, strip_columns(static_cast<int>(at.size())), 8, Rgb{255, 255, 255}));
+            tile(tiles, strip_columns(static_cast<int>(at.size())), 8, Rgb{255, 255, 255}),
+            sr.strip_threads());
   return file;
 }
 
