@@ -189,12 +189,15 @@ std::unique_ptr<FrameWorker> FrameWorker::spawn(std::string* why) {
   return std::unique_ptr<FrameWorker>(new FrameWorker(sv[0], pid));
 }
 
-bool FrameWorker::load(const ArmScene& scene, const std::string& source,
-                       const RenderSettings& settings, std::string* why) {
-  const auto fail = [&](const std::string& text) {
-    if (why) *why = "the frame helper (armstudy-frames) " + text;
-    return false;
-  };
+void FrameWorker::send_bytes(const std::string& bytes) {
+  if (!send_all(fd_, bytes.data(), bytes.size())) {
+    failed_ = true;
+    throw SceneError("the frame helper (armstudy-frames) closed the connection");
+  }
+}
+
+void FrameWorker::load(const ArmScene& scene, const std::string& source,
+                       const RenderSettings& settings) {
   Out o;
   o.put(kScene);
   o.put_string(scene.mjcf);
@@ -207,12 +210,8 @@ bool FrameWorker::load(const ArmScene& scene, const std::string& source,
   o.put(scene.view.x_max);
   o.put(scene.view.y_min);
   o.put(scene.view.y_max);
-  if (!send_all(fd_, o.bytes.data(), o.bytes.size())) return fail("closed the connection");
-  In in{fd_, kAnswerTimeoutMs};
-  const char type = in.get<char>();
-  if (!in.ok) return fail(in.timed_out ? "did not answer" : "ended");
-  if (type == kError) return fail("could not load the scene: " + in.get_string(1 << 16));
-  return type == kReady || fail("answered something else");
+  send_bytes(o.bytes);
+  load_pending_ = true;
 }
 
 namespace {
@@ -234,12 +233,26 @@ std::unique_ptr<FrameWorker> FrameWorker::acquire(const ArmScene& scene, const s
   } else {
     w = spawn(why);
   }
-  if (!w || !w->load(scene, source, settings, why)) return nullptr;
+  if (!w) return nullptr;
+  try {
+    w->load(scene, source, settings);
+  } catch (const SceneError& e) {
+    if (why) *why = e.what();
+    return nullptr;
+  }
   return w;
 }
 
 void FrameWorker::release(std::unique_ptr<FrameWorker> worker) {
-  if (worker) idle_workers().push_back(std::move(worker));
+  if (!worker || worker->failed_ || worker->frames_pending_ != 0) return;
+  if (worker->load_pending_) {
+    // asked to load a scene it never drew (this process drew every frame first): its
+    // answer read now, so that the next acquire starts clean
+    In in{worker->fd_, kAnswerTimeoutMs};
+    if (in.get<char>() != kReady || !in.ok) return;
+    worker->load_pending_ = false;
+  }
+  idle_workers().push_back(std::move(worker));
 }
 
 FrameWorker::~FrameWorker() {
@@ -257,35 +270,61 @@ FrameWorker::~FrameWorker() {
   }
 }
 
-std::vector<Image> FrameWorker::draw(const std::vector<WorkerPose>& poses) {
+void FrameWorker::reset() {
   Out o;
   o.put(kReset);
-  for (const WorkerPose& p : poses) {
-    o.put(kFrame);
-    o.put(p.t);
-    o.put_vector(p.qpos);
-    o.put_vector(p.qvel);
-    o.put_string(p.labels.top_left);
-    o.put_string(p.labels.top_right);
-    o.put_string(p.labels.bottom_left);
+  send_bytes(o.bytes);
+}
+
+void FrameWorker::send(const WorkerPose& p) {
+  Out o;
+  o.put(kFrame);
+  o.put(p.t);
+  o.put_vector(p.qpos);
+  o.put_vector(p.qvel);
+  o.put_string(p.labels.top_left);
+  o.put_string(p.labels.top_right);
+  o.put_string(p.labels.bottom_left);
+  send_bytes(o.bytes);
+  ++frames_pending_;
+}
+
+Image FrameWorker::receive() {
+  // any error below leaves the connection in an unknown state: this helper is not reused
+  failed_ = true;
+  In in{fd_, kAnswerTimeoutMs};
+  const auto gone = [&] {
+    return SceneError(in.timed_out ? "the frame helper (armstudy-frames) stopped answering"
+                                   : "the frame helper (armstudy-frames) ended unexpectedly");
+  };
+  if (load_pending_) {
+    const char type = in.get<char>();
+    if (!in.ok) throw gone();
+    if (type == kError)
+      throw SceneError("the frame helper (armstudy-frames) could not load the scene: " +
+                       in.get_string(1 << 16));
+    if (type != kReady) throw gone();
+    load_pending_ = false;
   }
-  if (!send_all(fd_, o.bytes.data(), o.bytes.size()))
-    throw SceneError("the frame helper (armstudy-frames) closed the connection");
+  if (frames_pending_ <= 0) throw SceneError("frame helper: no frame was asked for");
+  const char type = in.get<char>();
+  if (in.ok && type == kError) throw SceneError(in.get_string(1 << 16));
+  const auto w = in.get<std::int32_t>(), h = in.get<std::int32_t>();
+  if (!in.ok || type != kImage || w <= 0 || h <= 0 || w > 1 << 14 || h > 1 << 14) throw gone();
+  Image img(w, h);
+  if (!read_all(fd_, reinterpret_cast<char*>(img.rgb.data()), img.rgb.size(), kAnswerTimeoutMs))
+    throw gone();
+  --frames_pending_;
+  failed_ = false;
+  return img;
+}
+
+std::vector<Image> FrameWorker::draw(const std::vector<WorkerPose>& poses) {
+  reset();
+  for (const WorkerPose& p : poses) send(p);
   std::vector<Image> out;
   out.reserve(poses.size());
-  In in{fd_, kAnswerTimeoutMs};
-  for (size_t k = 0; k < poses.size(); ++k) {
-    const char type = in.get<char>();
-    if (in.ok && type == kError) throw SceneError(in.get_string(1 << 16));
-    const auto w = in.get<std::int32_t>(), h = in.get<std::int32_t>();
-    if (!in.ok || type != kImage || w <= 0 || h <= 0 || w > 1 << 14 || h > 1 << 14)
-      throw SceneError(in.timed_out ? "the frame helper (armstudy-frames) stopped answering"
-                                    : "the frame helper (armstudy-frames) ended unexpectedly");
-    Image img(w, h);
-    if (!read_all(fd_, reinterpret_cast<char*>(img.rgb.data()), img.rgb.size(), kAnswerTimeoutMs))
-      throw SceneError("the frame helper (armstudy-frames) ended unexpectedly");
-    out.push_back(std::move(img));
-  }
+  for (size_t k = 0; k < poses.size(); ++k) out.push_back(receive());
   return out;
 }
 

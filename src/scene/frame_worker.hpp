@@ -30,23 +30,32 @@ struct WorkerPose {
 
 class FrameWorker {
  public:
-  /// A helper with `scene` loaded: one this thread gave back earlier (release), or a new
-  /// one started from frame_worker_program(). nullptr when there is no helper program, or
-  /// it could not start or load the scene (the caller draws in this process instead;
-  /// `why`, when given, says why). A helper is kept per thread: it dies with the thread
-  /// that started it (PR_SET_PDEATHSIG), and its OSMesa contexts stay warm between scenes.
+  /// A helper asked to load `scene`: one this thread gave back earlier (release), or a new
+  /// one started from frame_worker_program(). It loads while the caller goes on; a scene it
+  /// cannot load is an error of the first receive(). nullptr when there is no helper
+  /// program or it could not start (`why`, when given, says why). A helper is kept per
+  /// thread: it dies with the thread that started it (PR_SET_PDEATHSIG), and its OSMesa
+  /// contexts stay warm between scenes.
   static std::unique_ptr<FrameWorker> acquire(const ArmScene& scene, const std::string& source,
                                               const RenderSettings& settings,
                                               std::string* why = nullptr);
-  /// Gives a helper back to this thread's pool, for the next acquire on this thread.
+  /// Gives a helper back to this thread's pool, for the next acquire on this thread. A
+  /// helper with answers not received, or that failed, is closed instead.
   static void release(std::unique_ptr<FrameWorker> worker);
   /// Closes the connection; the helper exits (and is killed if it has not within 2 s).
   ~FrameWorker();
   FrameWorker(const FrameWorker&) = delete;
   FrameWorker& operator=(const FrameWorker&) = delete;
 
-  /// Begins a replay (mj_resetData) in the helper and draws `poses` there, in order.
-  /// @throws SceneError with the helper's own message, or if it died or stopped answering.
+  /// Asks the helper to begin a replay (mj_resetData). @throws SceneError if it is gone.
+  void reset();
+  /// Asks the helper to draw `pose` (answered in order by receive()). @throws SceneError if
+  /// it is gone.
+  void send(const WorkerPose& pose);
+  /// The next frame asked for. @throws SceneError with the helper's own message (a scene
+  /// it could not load, a failing frame), or if it died or stopped answering.
+  Image receive();
+  /// reset(), then every pose of `poses` sent and received, in order.
   std::vector<Image> draw(const std::vector<WorkerPose>& poses);
   /// The helper's process id (for tests and diagnostics).
   int pid() const { return pid_; }
@@ -54,10 +63,13 @@ class FrameWorker {
  private:
   FrameWorker(int fd, int pid) : fd_(fd), pid_(pid) {}
   static std::unique_ptr<FrameWorker> spawn(std::string* why);
-  bool load(const ArmScene& scene, const std::string& source, const RenderSettings& settings,
-            std::string* why);
+  void load(const ArmScene& scene, const std::string& source, const RenderSettings& settings);
+  void send_bytes(const std::string& bytes);
   int fd_ = -1;
   int pid_ = -1;
+  bool load_pending_ = false;  // the answer to load() not read yet
+  int frames_pending_ = 0;     // frames sent and not received
+  bool failed_ = false;        // an error was raised: not reused
 };
 
 /// The helper program: $ARMSTUDY_FRAME_WORKER when set (empty or "none": no helper), else

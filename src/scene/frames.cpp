@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <exception>
 #include <thread>
 
@@ -100,51 +101,57 @@ std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
     workers_.push_back(std::move(w));
   }
   const size_t helpers = std::min(want, workers_.size());
-  const size_t procs = helpers + 1;
-  // frame k on process owner[k]: 0 is this one, j > 0 helper j - 1, dealt in turn
-  std::vector<size_t> owner(n);
-  for (size_t k = 0; k < n; ++k) owner[k] = k % procs;
+  // the frames are taken in order, each by whichever process is free: this one draws them
+  // itself, a helper's thread keeps two asked of its helper (one drawn while the other
+  // travels); a helper still starting takes fewer (the model's state of each pose is
+  // mapped here, as set_pose maps it)
   std::vector<Image> out(n);
-  std::vector<std::exception_ptr> errors(helpers);
+  std::atomic<size_t> next{0};
+  std::vector<char> failed(helpers, 0);
   std::vector<std::thread> pool;
-  for (size_t j = 1; j <= helpers; ++j) {
-    std::vector<WorkerPose> poses;
-    for (size_t k = 0; k < n; ++k) {
-      if (owner[k] != j) continue;
-      const PoseSample& s = samples[k];
-      const core::JointVector qd =
-          s.qd.size() == s.q.size() ? s.qd : core::JointVector::Zero(s.q.size());
-      poses.push_back({s.t, map_.jacobian() * s.q, map_.jacobian() * qd, labels[k]});
-    }
-    pool.emplace_back([&, j, poses = std::move(poses)] {
+  for (size_t j = 0; j < helpers; ++j) {
+    pool.emplace_back([&, j] {
+      FrameWorker& w = *workers_[j];
+      std::deque<size_t> asked;
       try {
-        std::vector<Image> got = workers_[j - 1]->draw(poses);
-        for (size_t k = 0, i = 0; k < n; ++k)
-          if (owner[k] == j) out[k] = std::move(got[i++]);
+        w.reset();
+        while (true) {
+          while (asked.size() < 2) {
+            const size_t k = next++;
+            if (k >= n) break;
+            const PoseSample& s = samples[k];
+            const core::JointVector qd =
+                s.qd.size() == s.q.size() ? s.qd : core::JointVector::Zero(s.q.size());
+            w.send({s.t, map_.jacobian() * s.q, map_.jacobian() * qd, labels[k]});
+            asked.push_back(k);
+          }
+          if (asked.empty()) break;
+          out[asked.front()] = w.receive();
+          asked.pop_front();
+        }
       } catch (...) {
-        errors[j - 1] = std::current_exception();
+        failed[j] = 1;  // its frames not drawn are drawn here (below)
       }
     });
   }
   std::exception_ptr here;
   try {
     begin_replay(model_);
-    for (size_t k = 0; k < n; ++k)
-      if (owner[k] == 0) out[k] = frame(samples[k], labels[k]);
+    for (size_t k = next++; k < n; k = next++) out[k] = frame(samples[k], labels[k]);
   } catch (...) {
     here = std::current_exception();
   }
   for (auto& t : pool) t.join();
   if (here) std::rethrow_exception(here);
-  // a helper that failed (died, or its scene raised an error): its frames are drawn here
-  // (where an error of the scene itself is raised again) and no helper is asked again
-  for (size_t j = 1; j <= helpers; ++j) {
-    if (!errors[j - 1]) continue;
+  // a helper that failed (died, or its scene raised an error): the frames it did not give
+  // are drawn here (where an error of the scene itself is raised again), and no helper is
+  // asked again
+  if (std::find(failed.begin(), failed.end(), 1) != failed.end()) {
     workers_failed_ = true;
+    workers_.clear();
     for (size_t k = 0; k < n; ++k)
-      if (owner[k] == j) out[k] = frame(samples[k], labels[k]);
+      if (out[k].rgb.empty()) out[k] = frame(samples[k], labels[k]);
   }
-  if (workers_failed_) workers_.clear();
   return out;
 }
 

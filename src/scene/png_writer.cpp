@@ -46,31 +46,45 @@ void chunk(std::string* out, const char* type, const std::string& data) {
 }
 
 // rows [y0, y1) of `image`, each after its filter byte 0 (none), as raw deflate at level 1;
-// the last band ends the stream, the others end on a byte boundary (sync flush)
+// the last band ends the stream, the others end on a byte boundary (sync flush). The rows
+// go to zlib as they are (no copy), the output grows in chunks as zlib fills them (its
+// bound is about the input's size, a hundred times what a frame compresses to)
 std::string deflate_band(const Image& image, int y0, int y1, bool last, uLong* adler) {
   const size_t row = static_cast<size_t>(image.width) * 3;
-  std::string raw;
-  raw.reserve((row + 1) * static_cast<size_t>(y1 - y0));
-  for (int y = y0; y < y1; ++y) {
-    raw.push_back('\0');
-    raw.append(reinterpret_cast<const char*>(&image.rgb[static_cast<size_t>(y) * row]), row);
-  }
-  *adler = adler32(1L, reinterpret_cast<const Bytef*>(raw.data()), static_cast<uInt>(raw.size()));
   z_stream z{};
   if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK)
     throw SceneError("zlib: cannot start a deflate stream");
-  std::string out(deflateBound(&z, raw.size()) + 16, '\0');
-  z.next_in = reinterpret_cast<Bytef*>(raw.data());
-  z.avail_in = static_cast<uInt>(raw.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = static_cast<uInt>(out.size());
-  const int rc = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
-  const size_t n = out.size() - z.avail_out;
+  std::string out;
+  size_t used = 0;  // bytes of out written
+  constexpr size_t kChunk = 64 << 10;
+  uLong a = adler32(0L, nullptr, 0);
+  int rc = Z_OK;
+  const auto run = [&](const Bytef* in, size_t n, int flush) {
+    z.next_in = const_cast<Bytef*>(in);
+    z.avail_in = static_cast<uInt>(n);
+    do {
+      if (out.size() - used < kChunk / 2) out.resize(out.size() + kChunk);
+      z.next_out = reinterpret_cast<Bytef*>(out.data() + used);
+      z.avail_out = static_cast<uInt>(out.size() - used);
+      rc = deflate(&z, flush);
+      used = out.size() - z.avail_out;
+    } while (rc == Z_OK && (z.avail_in != 0 || z.avail_out == 0));
+  };
+  static const Bytef kFilterNone = 0;
+  for (int y = y0; y < y1 && rc == Z_OK; ++y) {
+    const Bytef* r = &image.rgb[static_cast<size_t>(y) * row];
+    a = adler32(a, &kFilterNone, 1);
+    a = adler32(a, r, static_cast<uInt>(row));
+    run(&kFilterNone, 1, Z_NO_FLUSH);
+    if (rc == Z_OK) run(r, row, Z_NO_FLUSH);
+  }
+  if (rc == Z_OK) run(nullptr, 0, last ? Z_FINISH : Z_SYNC_FLUSH);
   deflateEnd(&z);
   if (rc != (last ? Z_STREAM_END : Z_OK) || z.avail_in != 0)
     throw SceneError("zlib could not compress a band of a " + std::to_string(image.width) + " x " +
                      std::to_string(image.height) + " image");
-  out.resize(n);
+  *adler = a;
+  out.resize(used);
   return out;
 }
 

@@ -99,13 +99,20 @@ TEST(FrameWorker, DrawsThisProcesssFramesByteForByteAlsoAfterAnotherScene) {
   for (size_t k = 0; k < ref.size(); ++k) EXPECT_TRUE(got2[k].rgb == ref[k].rgb) << "frame " << k;
 }
 
-TEST(FrameWorker, ASceneMuJoCoRejectsIsNotLoadedAndSaysWhy) {
+TEST(FrameWorker, ASceneMuJoCoRejectsIsAnErrorOfTheFirstFrameAndSaysWhy) {
   ArmScene bad = default_tray_scene();
   bad.mjcf = "<mujoco><worldbody><body><geom type=\"nonsense\"/></body></worldbody></mujoco>";
-  std::string why;
-  EXPECT_FALSE(FrameWorker::acquire(bad, "bad scene", RenderSettings{}, &why));
-  EXPECT_NE(why.find("could not load the scene"), std::string::npos) << why;
-  EXPECT_NE(why.find("bad scene"), std::string::npos) << why;
+  SceneRenderer here(default_tray_scene(), "tray", RenderSettings{});
+  auto w = FrameWorker::acquire(bad, "bad scene", RenderSettings{});
+  ASSERT_TRUE(w);
+  try {
+    w->draw({worker_pose(here, tray_pose(0.1), "t")});
+    FAIL() << "a scene MuJoCo rejects was drawn";
+  } catch (const SceneError& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("could not load the scene"), std::string::npos) << why;
+    EXPECT_NE(why.find("bad scene"), std::string::npos) << why;
+  }
 }
 
 TEST(FrameWorker, AHelperThatDiesIsAnErrorOfDraw) {
@@ -136,9 +143,10 @@ TEST(FrameWorker, AStripOnTwoProcessesIsTheStripOnOne) {
     EXPECT_TRUE(encode_png(two.strip(poses, "title", 3)) == ref);
   }
   {
-    // the helper the first SceneRenderer gave back is this thread's: kill it
+    // a helper of this thread's pool (used once, given back), which the renderer takes
     auto w = FrameWorker::acquire(default_tray_scene(), "tray", RenderSettings{});
     ASSERT_TRUE(w);
+    w->draw({worker_pose(one, poses[0], "t")});
     const int pid = w->pid();
     FrameWorker::release(std::move(w));
     SceneRenderer two(default_tray_scene(), "tray", RenderSettings{});
