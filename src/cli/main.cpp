@@ -36,7 +36,9 @@
 #include "cli/sweep.hpp"
 #include "report/case_report.hpp"
 #include "report/sweep_report.hpp"
+#include "scene/frame_worker.hpp"
 #include "scene/frames.hpp"
+#include "scene/model_files.hpp"
 #include "scene/phase_times.hpp"
 #include "scene/scene_error.hpp"
 #include "version.hpp"
@@ -231,7 +233,13 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   };
   const int n = std::clamp(jobs, 1, static_cast<int>(std::max<size_t>(1, cases.size())));
   // the cores a case has draw its frames, each core a process (scene/frame_worker.hpp)
-  armstudy::scene::set_default_frame_processes(std::max(1, available_cores() / n));
+  const int frame_processes = std::max(1, available_cores() / n);
+  armstudy::scene::set_default_frame_processes(frame_processes);
+  // this thread's helpers start now, their first scene drawn while the first case solves
+  // (the other threads' start with their first strip)
+  if (options.render)
+    for (int k = 1; k < frame_processes; ++k)
+      armstudy::scene::FrameWorker::prewarm(armstudy::scene::default_horizontal_scene(), {});
   std::vector<std::thread> pool;
   for (int k = 1; k < n; ++k) pool.emplace_back(worker);
   worker();

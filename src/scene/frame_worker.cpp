@@ -31,6 +31,7 @@ namespace {
 // order (both ends are one machine), a string as its length (u64) and bytes
 enum : char {
   kScene = 'S',  // parent: mjcf, source, width, height, shadows, margin, view box
+  kWarm = 'W',   // parent: as kScene, and one frame drawn and dropped (its contexts warm)
   kReset = 'R',  // parent: mj_resetData (no answer)
   kFrame = 'F',  // parent: time, nq, qpos, nv, qvel, three labels
   kReady = 'K',  // helper: the scene is loaded
@@ -197,9 +198,9 @@ void FrameWorker::send_bytes(const std::string& bytes) {
 }
 
 void FrameWorker::load(const ArmScene& scene, const std::string& source,
-                       const RenderSettings& settings) {
+                       const RenderSettings& settings, bool warm) {
   Out o;
-  o.put(kScene);
+  o.put(warm ? kWarm : kScene);
   o.put_string(scene.mjcf);
   o.put_string(source);
   o.put<std::int32_t>(settings.frame.width);
@@ -211,7 +212,27 @@ void FrameWorker::load(const ArmScene& scene, const std::string& source,
   o.put(scene.view.y_min);
   o.put(scene.view.y_max);
   send_bytes(o.bytes);
-  load_pending_ = true;
+  ++loads_pending_;
+}
+
+// the answers to the loads asked for, in order: an error of the last is thrown, of an
+// earlier one (a scene replaced before it was drawn) dropped; false if the helper is gone
+bool FrameWorker::read_loads(bool* timed_out) {
+  In in{fd_, kAnswerTimeoutMs};
+  while (loads_pending_ > 0) {
+    const char type = in.get<char>();
+    if (!in.ok) return *timed_out = in.timed_out, false;
+    --loads_pending_;
+    if (type == kError) {
+      const std::string why = in.get_string(1 << 16);
+      if (!in.ok) return *timed_out = in.timed_out, false;
+      if (loads_pending_ == 0)
+        throw SceneError("the frame helper (armstudy-frames) could not load the scene: " + why);
+    } else if (type != kReady) {
+      return false;
+    }
+  }
+  return true;
 }
 
 namespace {
@@ -235,7 +256,7 @@ std::unique_ptr<FrameWorker> FrameWorker::acquire(const ArmScene& scene, const s
   }
   if (!w) return nullptr;
   try {
-    w->load(scene, source, settings);
+    w->load(scene, source, settings, false);
   } catch (const SceneError& e) {
     if (why) *why = e.what();
     return nullptr;
@@ -245,19 +266,32 @@ std::unique_ptr<FrameWorker> FrameWorker::acquire(const ArmScene& scene, const s
 
 void FrameWorker::release(std::unique_ptr<FrameWorker> worker) {
   if (!worker || worker->failed_ || worker->frames_pending_ != 0) return;
-  if (worker->load_pending_) {
-    // asked to load a scene it never drew (this process drew every frame first): its
-    // answer read now, so that the next acquire starts clean
-    In in{worker->fd_, kAnswerTimeoutMs};
-    if (in.get<char>() != kReady || !in.ok) return;
-    worker->load_pending_ = false;
+  // a scene it never drew (this process drew every frame first): its answer read now, so
+  // that the next acquire starts clean
+  bool timed_out = false;
+  try {
+    if (!worker->read_loads(&timed_out)) return;
+  } catch (const SceneError&) {
+    return;
   }
   idle_workers().push_back(std::move(worker));
+}
+
+void FrameWorker::prewarm(const ArmScene& scene, const RenderSettings& settings) {
+  std::unique_ptr<FrameWorker> w = spawn(nullptr);
+  if (!w) return;
+  try {
+    w->load(scene, "warm-up scene", settings, true);
+  } catch (const SceneError&) {
+    return;
+  }
+  idle_workers().push_back(std::move(w));
 }
 
 FrameWorker::~FrameWorker() {
   if (fd_ >= 0) ::close(fd_);  // the helper reads the end of its input and exits
   if (pid_ <= 0) return;
+  if (loads_pending_ > 0 || frames_pending_ > 0) ::kill(pid_, SIGKILL);  // busy: not waited for
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(2);
   int status = 0;
   while (::waitpid(pid_, &status, WNOHANG) == 0) {
@@ -297,15 +331,7 @@ Image FrameWorker::receive() {
     return SceneError(in.timed_out ? "the frame helper (armstudy-frames) stopped answering"
                                    : "the frame helper (armstudy-frames) ended unexpectedly");
   };
-  if (load_pending_) {
-    const char type = in.get<char>();
-    if (!in.ok) throw gone();
-    if (type == kError)
-      throw SceneError("the frame helper (armstudy-frames) could not load the scene: " +
-                       in.get_string(1 << 16));
-    if (type != kReady) throw gone();
-    load_pending_ = false;
-  }
+  if (!read_loads(&in.timed_out)) throw gone();
   if (frames_pending_ <= 0) throw SceneError("frame helper: no frame was asked for");
   const char type = in.get<char>();
   if (in.ok && type == kError) throw SceneError(in.get_string(1 << 16));
@@ -342,7 +368,7 @@ int run_frame_worker(int in_fd, int out_fd) {
   while (true) {
     const char type = in.get<char>();
     if (!in.ok) return 0;  // the parent closed the connection
-    if (type == kScene) {
+    if (type == kScene || type == kWarm) {
       const std::string mjcf = in.get_string(size_t{1} << 30);
       const std::string source = in.get_string(1 << 16);
       RenderSettings s;
@@ -361,6 +387,10 @@ int run_frame_worker(int in_fd, int out_fd) {
         model.reset();
         model.emplace(mjcf, source);
         renderer.emplace(model->model(), s, v);
+        if (type == kWarm) {
+          mj_forward(model->model(), model->data());
+          renderer->render(model->data(), FrameLabels{"warm-up", "", ""});
+        }
         const char ready = kReady;
         if (!send_all(out_fd, &ready, 1)) return 1;
       } catch (const std::exception& e) {

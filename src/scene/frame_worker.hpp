@@ -39,6 +39,10 @@ class FrameWorker {
   static std::unique_ptr<FrameWorker> acquire(const ArmScene& scene, const std::string& source,
                                               const RenderSettings& settings,
                                               std::string* why = nullptr);
+  /// Starts a helper in this thread's pool that loads `scene` and draws one frame of it
+  /// while the caller goes on, so that the next acquire on this thread finds its OSMesa
+  /// context made and llvmpipe's shaders compiled. Nothing happens where none can start.
+  static void prewarm(const ArmScene& scene, const RenderSettings& settings);
   /// Gives a helper back to this thread's pool, for the next acquire on this thread. A
   /// helper with answers not received, or that failed, is closed instead.
   static void release(std::unique_ptr<FrameWorker> worker);
@@ -63,13 +67,15 @@ class FrameWorker {
  private:
   FrameWorker(int fd, int pid) : fd_(fd), pid_(pid) {}
   static std::unique_ptr<FrameWorker> spawn(std::string* why);
-  void load(const ArmScene& scene, const std::string& source, const RenderSettings& settings);
+  void load(const ArmScene& scene, const std::string& source, const RenderSettings& settings,
+            bool warm);
+  bool read_loads(bool* timed_out);
   void send_bytes(const std::string& bytes);
   int fd_ = -1;
   int pid_ = -1;
-  bool load_pending_ = false;  // the answer to load() not read yet
-  int frames_pending_ = 0;     // frames sent and not received
-  bool failed_ = false;        // an error was raised: not reused
+  int loads_pending_ = 0;   // answers to load() not read yet
+  int frames_pending_ = 0;  // frames sent and not received
+  bool failed_ = false;     // an error was raised: not reused
 };
 
 /// The helper program: $ARMSTUDY_FRAME_WORKER when set (empty or "none": no helper), else

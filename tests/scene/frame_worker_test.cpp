@@ -99,6 +99,23 @@ TEST(FrameWorker, DrawsThisProcesssFramesByteForByteAlsoAfterAnotherScene) {
   for (size_t k = 0; k < ref.size(); ++k) EXPECT_TRUE(got2[k].rgb == ref[k].rgb) << "frame " << k;
 }
 
+// a helper warmed with one scene (armstudy run starts its helpers so) is the one the next
+// acquire takes, loaded with another scene, and draws it as this process does
+TEST(FrameWorker, APrewarmedHelperIsTakenByTheNextAcquire) {
+  const RenderSettings rs;
+  FrameWorker::prewarm(default_horizontal_scene(), rs);
+  SceneRenderer here(default_tray_scene(), "tray", rs);
+  auto w = FrameWorker::acquire(default_tray_scene(), "tray", rs);
+  ASSERT_TRUE(w);
+  const PoseSample p = tray_pose(0.2);
+  begin_replay(here.model());
+  const Image ref = here.frame(p, {"t", "right", "below"});
+  const std::vector<Image> got = w->draw({worker_pose(here, p, "t")});
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_TRUE(got[0].rgb == ref.rgb);
+  FrameWorker::release(std::move(w));
+}
+
 TEST(FrameWorker, ASceneMuJoCoRejectsIsAnErrorOfTheFirstFrameAndSaysWhy) {
   ArmScene bad = default_tray_scene();
   bad.mjcf = "<mujoco><worldbody><body><geom type=\"nonsense\"/></body></worldbody></mujoco>";
