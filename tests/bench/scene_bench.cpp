@@ -18,17 +18,12 @@
 #include "scene/model_files.hpp"
 #include "scene/osmesa_context.hpp"
 #include "scene/png_writer.hpp"
+#include "testing/tray_poses.hpp"
 
 namespace armstudy::scene {
 namespace {
 
-PoseSample pose(double t) {
-  PoseSample s;
-  s.t = t;
-  s.q = core::JointVector(4);
-  s.q << -0.8 + 1.5 * t, -0.8 + 0.4 * t, 0.3 * std::sin(6 * t), 0.5 * std::sin(9 * t);
-  return s;
-}
+PoseSample pose(double t) { return testing::tray_arm_pose(t); }
 
 void run(benchmark::State& state, bool png, bool shadows) {
   RenderSettings rs;

@@ -18,16 +18,14 @@
 #include "scene/model_files.hpp"
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
+#include "testing/tray_poses.hpp"
 
 namespace armstudy::scene {
 namespace {
 
-// a pose of the tray arm (4 joints) at "time" t
+// a pose of the tray arm (4 joints) at "time" t, moving
 PoseSample tray_pose(double t) {
-  PoseSample s;
-  s.t = t;
-  s.q = core::JointVector(4);
-  s.q << -0.8 + 1.5 * t, -0.8 + 0.4 * t, 0.3 * std::sin(6 * t), 0.5 * std::sin(9 * t);
+  PoseSample s = testing::tray_arm_pose(t);
   s.qd = core::JointVector::Constant(4, 0.2);
   return s;
 }
