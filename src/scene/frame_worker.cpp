@@ -14,7 +14,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <optional>
 #include <thread>
 
 #include "scene/mujoco_model.hpp"
@@ -356,8 +355,8 @@ std::vector<Image> FrameWorker::draw(const std::vector<WorkerPose>& poses) {
 
 int run_frame_worker(int in_fd, int out_fd) {
   install_mujoco_handlers();
-  std::optional<MujocoModel> model;
-  std::optional<Renderer> renderer;
+  std::unique_ptr<MujocoModel> model;
+  std::unique_ptr<Renderer> renderer;
   In in{in_fd, -1};
   const auto answer_error = [&](const std::string& text) {
     Out o;
@@ -385,8 +384,8 @@ int run_frame_worker(int in_fd, int out_fd) {
       try {
         renderer.reset();
         model.reset();
-        model.emplace(mjcf, source);
-        renderer.emplace(model->model(), s, v);
+        model = std::make_unique<MujocoModel>(mjcf, source);
+        renderer = std::make_unique<Renderer>(model->model(), s, v);
         if (type == kWarm) {
           mj_forward(model->model(), model->data());
           renderer->render(model->data(), FrameLabels{"warm-up", "", ""});
