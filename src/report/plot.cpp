@@ -1,6 +1,7 @@
 #include "report/plot.hpp"
 
 #include "report/part_name.hpp"
+#include "report/svg_compact.hpp"
 
 #include <locale.h>
 #include <plplot/plstream.h>
@@ -69,38 +70,6 @@ std::string pl_text(const std::string& s) {
     if (c == '#') out += '#';
   }
   return out;
-}
-
-// cairo repeats a ~300-byte style attribute on every path; a shaded map has thousands of
-// paths. Each distinct style becomes one css class in a <style> element of the svg, which
-// keeps the drawing identical and the file several times smaller.
-std::string compact_svg(const std::string& svg) {
-  static const std::string kOpen = " style=\"";
-  std::map<std::string, std::string> classes;
-  std::string body;
-  body.reserve(svg.size() / 2);
-  size_t pos = 0;
-  while (true) {
-    const size_t a = svg.find(kOpen, pos);
-    if (a == std::string::npos) break;
-    const size_t b = svg.find('"', a + kOpen.size());
-    if (b == std::string::npos) break;
-    const std::string style = svg.substr(a + kOpen.size(), b - a - kOpen.size());
-    auto [it, fresh] = classes.try_emplace(style, "s" + std::to_string(classes.size()));
-    body.append(svg, pos, a - pos);
-    body += " class=\"" + it->second + "\"";
-    pos = b + 1;
-  }
-  body.append(svg, pos, std::string::npos);
-  std::string css = "<style>";
-  for (const auto& [style, name] : classes) css += "." + name + "{" + style + "}\n";
-  css += "</style>\n";
-  // right after the opening <svg ...> tag
-  const size_t root = body.find("<svg");
-  const size_t end = root == std::string::npos ? root : body.find('>', root);
-  if (end == std::string::npos) return svg;
-  body.insert(end + 1, "\n" + css);
-  return body;
 }
 
 PLINT style_code(LineStyle s) {
