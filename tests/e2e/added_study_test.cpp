@@ -62,7 +62,7 @@ class TallyRun final : public StudyRun {
   }
   json results() const override { return report::to_json(section_); }
   std::vector<KeyFigure> key_figures() const override {
-    return {{"sum", double(section_.sum), ""}};
+    return {{"sum", double(section_.sum), "", "the sum"}};
   }
 
  private:

@@ -110,7 +110,25 @@ PathPoint PathGeometry::at(double s, bool from_left) const {
     i = static_cast<int>(std::upper_bound(piece_s_.begin(), piece_s_.end(), s) - piece_s_.begin()) -
         1;
   }
-  i = std::clamp(i, 0, pieces - 1);
+  return at_piece(s, std::clamp(i, 0, pieces - 1));
+}
+
+void PathGeometry::at_increasing(const double* s, size_t n, PathPoint* out) const {
+  const int pieces = static_cast<int>(piece_s_.size()) - 1;
+  // upper_bound - 1: the last piece start <= s, which only grows with s
+  int after = 0;  // the number of piece starts <= the clamped s so far
+  const int starts = static_cast<int>(piece_s_.size());
+  double last = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const double c = std::clamp(s[k], 0.0, length_);
+    if (c < last) after = 0;  // (not increasing after all: from the start again)
+    last = c;
+    while (after < starts && piece_s_[after] <= c) ++after;
+    out[k] = at_piece(c, std::clamp(after - 1, 0, pieces - 1));
+  }
+}
+
+PathPoint PathGeometry::at_piece(double s, int i) const {
   PathPoint out;
   if (kind_ != PathKind::kSpline) {
     const Eigen::Vector2d& d = dir_[i];
@@ -245,6 +263,11 @@ void TipRateArrays::resize(size_t n) {
   ok.resize(n);
 }
 
+// an AVX build of the loop beside the baseline one, picked at load time where the CPU has
+// AVX (4 lanes instead of 2; still no FMA, so the same roundings)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx", "default")))
+#endif
 void TipRateEvaluator::at_points(size_t n, TipRateArrays* a) const {
   // at_point's operations term by term (Eigen's 2x2 products are r00 x + r01 y)
   const double r00 = rt_(0, 0), r01 = rt_(0, 1), r10 = rt_(1, 0), r11 = rt_(1, 1);

@@ -34,12 +34,17 @@ class PathGeometry {
   /// The path at arc length s in [0, length]. At a polyline corner, `from_left` picks the
   /// piece that ends there (true) or the one that starts there (false).
   PathPoint at(double s, bool from_left = false) const;
+  /// at(s[i], false) for the n points s[0] <= s[1] <= ... (the same numbers): the piece of
+  /// each found from the one before instead of by bisection.
+  void at_increasing(const double* s, size_t n, PathPoint* out) const;
   /// Arc lengths where the tangent jumps (interior polyline corners): the arm must stop.
   const std::vector<double>& stops() const { return stops_; }
   /// True when at(s, true) and at(s, false) may differ: s is where two pieces meet.
   bool joins_pieces(double s) const;
 
  private:
+  /// at(s) in piece i (s clamped to [0, length]).
+  PathPoint at_piece(double s, int i) const;
   PathKind kind_;
   std::vector<Eigen::Vector2d> pts_;
   double length_ = 0;

@@ -8,6 +8,10 @@
 #include <stdexcept>
 #include <type_traits>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 #include "core/check.hpp"
 #include "core/dynamics.hpp"
 #include "core/kinematics.hpp"
@@ -57,8 +61,33 @@ std::string Problem::where(double s, bool from_left) const {
 }
 
 PointSource::PointSource(const Problem& problem) : problem_(&problem) {
-  if (!problem.path.joint_space())
+  if (!problem.path.joint_space()) {
     tip_.emplace(problem.chain, problem.path.tip(), problem.configuration);
+    rates_.emplace(problem.chain, problem.path.tip(), problem.configuration);
+    dyn_ = make_two_link_dynamics(problem.chain);
+  }
+}
+
+void PointSource::solver_at(double s, bool from_left, JointPoint* jp) const {
+  if (rates_) {
+    const PathPoint pp = problem_->path.tip().at(s, from_left);
+    TipRates r;
+    if (rates_->at_point(pp, &r)) {
+      jp->s = s;
+      jp->p = pp.p;
+      jp->q.setConstant(2, std::numeric_limits<double>::quiet_NaN());
+      jp->dq.resize(2);
+      jp->ddq.resize(2);
+      jp->dq << r.dq[0], r.dq[1];
+      jp->ddq << r.ddq[0], r.ddq[1];
+      jp->sin_q2 = r.s2;
+      const double ct12 = r.c1 * r.c2 - r.s1 * r.s2, st12 = r.s1 * r.c2 + r.c1 * r.s2;
+      path_dynamics_abs(dyn_, r.c2, r.s2, r.c1, r.s1, ct12, st12, r.dq, r.ddq, &jp->a, &jp->b,
+                        &jp->c);
+      return;
+    }
+  }
+  at(s, from_left, jp);
 }
 
 void PointSource::at(double s, bool from_left, JointPoint* jp) const {
@@ -237,6 +266,70 @@ inline double use_ratio(double value, double lim) {
   return lim > 0 ? v / lim : (v > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0);
 }
 
+
+// the largest |v[i]|, i < n, and 0 when there is none (NaN is never the largest)
+inline double largest_abs(const double* v, size_t n) {
+  size_t i = 0;
+  double m = 0;
+#ifdef __SSE2__
+  // maxpd(x, m) is x > m ? x : m lane by lane, as below; four chains for its latency
+  const __m128d sign = _mm_set1_pd(-0.0);
+  __m128d m0 = _mm_setzero_pd(), m1 = _mm_setzero_pd();
+  for (; i + 4 <= n; i += 4) {
+    m0 = _mm_max_pd(_mm_andnot_pd(sign, _mm_loadu_pd(v + i)), m0);
+    m1 = _mm_max_pd(_mm_andnot_pd(sign, _mm_loadu_pd(v + i + 2)), m1);
+  }
+  double lanes[2];
+  _mm_storeu_pd(lanes, _mm_max_pd(m1, m0));
+  m = lanes[0] > lanes[1] ? lanes[0] : lanes[1];
+#endif
+  for (; i < n; ++i) {
+    const double x = std::abs(v[i]);
+    m = x > m ? x : m;
+  }
+  return m;
+}
+
+// the joint velocities (v), torques (t) and accelerations (a) at n points of the dense
+// re-check from their rates and local states, the torques by the closed form; an AVX build
+// beside the baseline one, picked at load time (no FMA: the same roundings)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx", "default")))
+#endif
+void scan_block(const TwoLinkDynamics& dyn, const TipRateArrays& ra, const double* __restrict sds,
+                const double* __restrict xs, const double* __restrict us, size_t n,
+                double* __restrict v0, double* __restrict v1, double* __restrict t0,
+                double* __restrict t1, double* __restrict a0, double* __restrict a1) {
+  const double* __restrict dq0 = ra.dq0.data();
+  const double* __restrict dq1 = ra.dq1.data();
+  const double* __restrict ddq0 = ra.ddq0.data();
+  const double* __restrict ddq1 = ra.ddq1.data();
+  const double* __restrict c1 = ra.c1.data();
+  const double* __restrict s1 = ra.s1.data();
+  const double* __restrict c2 = ra.c2.data();
+  const double* __restrict s2 = ra.s2.data();
+  const auto scan = [&](auto gravity) {
+#pragma GCC ivdep
+    for (size_t i = 0; i < n; ++i) {
+      const double sd = sds[i], x = xs[i], u = us[i];
+      const double vq[2] = {dq0[i] * sd, dq1[i] * sd};
+      const double aq[2] = {dq0[i] * u + ddq0[i] * x, dq1[i] * u + ddq1[i] * x};
+      double tq[2];
+      inverse_dynamics_cs_fixed<decltype(gravity)::value>(dyn, c1[i], s1[i], c2[i], s2[i], vq, aq,
+                                                          tq);
+      v0[i] = vq[0];
+      v1[i] = vq[1];
+      t0[i] = tq[0];
+      t1[i] = tq[1];
+      a0[i] = aq[0];
+      a1[i] = aq[1];
+    }
+  };
+  if (dyn.gravity == 0.0)
+    scan(std::false_type{});
+  else
+    scan(std::true_type{});
+}
 }  // namespace
 
 void resample_reference(const Problem& problem, const Profile& pr, int per_interval, int keep,
@@ -362,7 +455,6 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     int k, m;
     double r;
   };
-  double best[3][nj] = {};
   std::vector<Candidate> cand[3][nj];
 
   // where point m of interval k lies: s and the side (the interval's end from the left)
@@ -404,23 +496,30 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
   // (in blocks of intervals whose arrays stay in cache)
   constexpr int kBlock = 32;
   thread_local TipRateArrays ra_buffer;
-  thread_local std::vector<double> buffers[4 + 6 * nj];
+  thread_local std::vector<double> buffers[3 + 3 * nj];
   // (plain references: one thread-local address computation per call)
   TipRateArrays& ra = ra_buffer;
   std::vector<double>& xs = buffers[0];
   std::vector<double>& us = buffers[1];
-  std::vector<double>& dts = buffers[2];
-  std::vector<double>& sds = buffers[3];
-  std::vector<double>* val[3] = {buffers + 4, buffers + 4 + nj, buffers + 4 + 2 * nj};
-  std::vector<double>* use[3] = {buffers + 4 + 3 * nj, buffers + 4 + 4 * nj, buffers + 4 + 5 * nj};
+  std::vector<double>& sds = buffers[2];
+  // the values of the limits at every point of the profile, and their largest use in each
+  // interval (peak[(kind nj + j) K + k])
+  std::vector<double>* val[3] = {buffers + 3, buffers + 3 + nj, buffers + 3 + 2 * nj};
+  for (int kind = 0; kind < 3; ++kind)
+    for (int j = 0; j < nj; ++j) val[kind][j].resize(static_cast<size_t>(total));
+  thread_local std::vector<double> peak_buffer;
+  std::vector<double>& peaks = peak_buffer;
+  peaks.assign(static_cast<size_t>(kinds) * nj * K, 0.0);
+  const auto peak = [&](int kind, int j, int k) -> double& {
+    return peaks[static_cast<size_t>(kind * nj + j) * K + k];
+  };
   double t_node = 0;
-  int to_keep = 0;  // points to the next kept one (the kept ones: index % stride == 0)
   for (int k0 = 0; k0 < K; k0 += kBlock) {
     const int k1 = std::min(K, k0 + kBlock);
     const size_t i0 = k0 == 0 ? 0 : static_cast<size_t>(k0) * per_interval + 1;
     const size_t n = static_cast<size_t>(k1) * per_interval + 1 - i0;
     ra.resize(n);
-    for (std::vector<double>* v : {&xs, &us, &dts, &sds}) v->resize(n);
+    for (std::vector<double>* v : {&xs, &us, &sds}) v->resize(n);
     {
       const PathGeometry& path = problem.path.tip();
       for (int k = k0; k < k1; ++k) {
@@ -428,11 +527,18 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
         // point m of interval k at index base + m of the block
         const std::ptrdiff_t base =
             static_cast<std::ptrdiff_t>(k) * per_interval - static_cast<std::ptrdiff_t>(i0);
+        // the points m < per_interval from the right, in increasing s; the last from the left
+        thread_local std::vector<double> s_at;
+        thread_local std::vector<PathPoint> pp_at;
+        s_at.resize(static_cast<size_t>(per_interval + 1));
+        pp_at.resize(static_cast<size_t>(per_interval + 1));
+        for (int m = m0; m < per_interval; ++m) where(k, m, &s_at[m]);
+        path.at_increasing(s_at.data() + m0, static_cast<size_t>(per_interval - m0),
+                           pp_at.data() + m0);
+        pp_at[per_interval] = path.at(pr.s[k + 1], true);
         for (int m = m0; m <= per_interval; ++m) {
           const size_t i = static_cast<size_t>(base + m);
-          double s;
-          const bool left = where(k, m, &s);
-          const PathPoint pp = path.at(s, left);
+          const PathPoint& pp = pp_at[m];
           ra.px[i] = pp.p.x();
           ra.py[i] = pp.p.y();
           ra.vx[i] = pp.dp.x();
@@ -444,16 +550,14 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
         // x = max(0, ..), in a loop without branches
         const double ds = pr.s[k + 1] - pr.s[k];
         const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
-        const double u = (x1 - x0) / (2 * ds), sd0 = pr.sd[k];
+        const double u = (x1 - x0) / (2 * ds);
         for (int m = m0; m <= per_interval; ++m) {
           const size_t i = static_cast<size_t>(base + m);
           const double theta = static_cast<double>(m) / per_interval;
           const double x = std::max(0.0, x0 + theta * (x1 - x0));
           const double root = std::sqrt(x);
-          const double v = sd0 + root;
           xs[i] = x;
           us[i] = u;
-          dts[i] = v > 0 ? 2 * theta * ds / v : 0.0;
           sds[i] = root;
         }
       }
@@ -479,101 +583,106 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
       ra.c2[i] = std::cos(jp.q[1]);
       ra.s2[i] = std::sin(jp.q[1]);
     }
-    for (int kind = 0; kind < 3; ++kind)
-      for (int j = 0; j < nj; ++j) {
-        val[kind][j].resize(n);
-        use[kind][j].resize(n);
-      }
-    {
-      double* __restrict v0 = val[0][0].data();
-      double* __restrict v1 = val[0][1].data();
-      double* __restrict t0 = val[1][0].data();
-      double* __restrict t1 = val[1][1].data();
-      double* __restrict a0 = val[2][0].data();
-      double* __restrict a1 = val[2][1].data();
-      const auto scan = [&](auto gravity) {
-#pragma GCC ivdep
-        for (size_t i = 0; i < n; ++i) {
-          const double sd = sds[i], x = xs[i], u = us[i];
-          const double vq[2] = {ra.dq0[i] * sd, ra.dq1[i] * sd};
-          const double aq[2] = {ra.dq0[i] * u + ra.ddq0[i] * x, ra.dq1[i] * u + ra.ddq1[i] * x};
-          double tq[2];
-          inverse_dynamics_cs_fixed<decltype(gravity)::value>(dyn, ra.c1[i], ra.s1[i], ra.c2[i],
-                                                              ra.s2[i], vq, aq, tq);
-          v0[i] = vq[0];
-          v1[i] = vq[1];
-          t0[i] = tq[0];
-          t1[i] = tq[1];
-          a0[i] = aq[0];
-          a1[i] = aq[1];
-        }
-      };
-      if (dyn.gravity == 0.0)
-        scan(std::false_type{});
-      else
-        scan(std::true_type{});
-    }
+    scan_block(dyn, ra, sds.data(), xs.data(), us.data(), n, val[0][0].data() + i0,
+               val[0][1].data() + i0, val[1][0].data() + i0, val[1][1].data() + i0,
+               val[2][0].data() + i0, val[2][1].data() + i0);
+    // the largest |value| of each limit in each interval of the block, over its points
+    // m = 1..per_interval (and m = 0 in the first); its use is the largest use, division
+    // by the limit being monotone (NaN is never the largest)
     for (int kind = 0; kind < kinds; ++kind)
       for (int j = 0; j < nj; ++j) {
         const double* __restrict v = val[kind][j].data();
-        double* __restrict r = use[kind][j].data();
-        const double L = lim[kind][j];
-        if (L > 0) {
-          for (size_t i = 0; i < n; ++i) r[i] = std::abs(v[i]) / L;
-        } else {
-          for (size_t i = 0; i < n; ++i)
-            r[i] = std::abs(v[i]) > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0;
+        for (int k = k0; k < k1; ++k) {
+          const size_t a = k == 0 ? 0 : static_cast<size_t>(k) * per_interval + 1;
+          const size_t e = static_cast<size_t>(k + 1) * per_interval + 1;
+          peak(kind, j, k) = use_ratio(largest_abs(v + a, e - a), lim[kind][j]);
         }
       }
-
-    const double* uses[3][nj];
-    for (int kind = 0; kind < kinds; ++kind)
-      for (int j = 0; j < nj; ++j) uses[kind][j] = use[kind][j].data();
-    const double* dt_at = dts.data();
+    if (interval_worst) {
+      for (int k = k0; k < k1; ++k) {
+        double w = -1;
+        for (int kind = 0; kind < kinds; ++kind)
+          for (int j = 0; j < nj; ++j) w = std::max(w, peak(kind, j, k) - 1);
+        if (w > (*interval_worst)[k]) (*interval_worst)[k] = w;
+      }
+    }
+    // the times at the interval ends, and the kept samples (index % stride == 0, and the
+    // last point) evaluated as resample_reference does
     for (int k = k0; k < k1; ++k) {
-      double t_end = t_node;
-      for (int m = (k == 0 ? 0 : 1); m <= per_interval; ++m) {
-        const size_t i = static_cast<size_t>(k) * per_interval + m - i0;
-        const double t = t_node + dt_at[i];
-        t_end = t;
-        double worst_here = -1;
-        for (int kind = 0; kind < kinds; ++kind) {
-          for (int j = 0; j < nj; ++j) {
-            const double r = uses[kind][j][i];
-            worst_here = std::max(worst_here, r - 1);
-            double& b = best[kind][j];
-            if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
-            auto& c = cand[kind][j];
-            if (r > b) {
-              const double floor = r - kRounding * std::max(1.0, r);
-              if (b < floor) {
-                c.clear();  // every earlier candidate is below the new floor
-              } else {
-                c.erase(std::remove_if(c.begin(), c.end(),
-                                       [&](const Candidate& e) { return e.r < floor; }),
-                        c.end());
-              }
-              b = r;
-            }
-            c.push_back({k, m, r});
+      const size_t first = k == 0 ? 0 : static_cast<size_t>(k) * per_interval + 1;
+      const size_t last = static_cast<size_t>(k + 1) * per_interval;
+      const double ds = pr.s[k + 1] - pr.s[k];
+      // (the operations of the local states above)
+      const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1], sd0 = pr.sd[k];
+      const auto dt_at = [&](int m) {
+        const double theta = static_cast<double>(m) / per_interval;
+        const double v = sd0 + std::sqrt(std::max(0.0, x0 + theta * (x1 - x0)));
+        return v > 0 ? 2 * theta * ds / v : 0.0;
+      };
+      const auto keep_point = [&](size_t gi) {
+        const int m = static_cast<int>(gi - static_cast<size_t>(k) * per_interval);
+        const Reference ref = reference(k, m);
+        out->s.push_back(ref.jp.s);
+        out->t.push_back(t_node + dt_at(m));
+        out->sd.push_back(ref.sd);
+        out->sdd.push_back(ref.u);
+        q.push_back(ref.jp.q);
+        qd.push_back(ref.qd);
+        qdd.push_back(ref.qdd);
+        // (the closed form: core's generic chain to 1e-12 relative)
+        inverse_dynamics(dyn, ref.jp.q, ref.qd, ref.qdd, &tau.emplace_back());
+      };
+      const size_t st = static_cast<size_t>(stride);
+      for (size_t g = (first + st - 1) / st * st; g <= last; g += st) keep_point(g);
+      if (k == K - 1 && last % st != 0) keep_point(last);
+      t_node = t_node + dt_at(per_interval);
+      nt[k + 1] = t_node;
+    }
+  }
+  // the candidates of each limit: the points a stream over them in order keeps, when it
+  // keeps every point within kRounding of the largest use so far (and above 0) and drops
+  // the ones below the largest use's floor when it rises. With a finite largest use B,
+  // those are the points with a use of at least B's floor, in order: their use is at least
+  // the floor of the largest use so far when they come, and never below a later floor; any
+  // other point is below B's floor and was dropped or never kept. Only the intervals whose
+  // largest use reaches B's floor are looked at. (An infinite use, of a zero limit, has no
+  // floor: that limit is streamed point by point.)
+  for (int kind = 0; kind < kinds; ++kind) {
+    for (int j = 0; j < nj; ++j) {
+      const double* __restrict v = val[kind][j].data();
+      auto& c = cand[kind][j];
+      double B = 0;
+      for (int k = 0; k < K; ++k) B = std::max(B, peak(kind, j, k));
+      if (!(B > 0)) continue;
+      const auto point = [&](int k, int m) {
+        return use_ratio(v[static_cast<size_t>(k) * per_interval + m], lim[kind][j]);
+      };
+      if (std::isfinite(B)) {
+        const double floor = B - kRounding * std::max(1.0, B);
+        for (int k = 0; k < K; ++k) {
+          if (peak(kind, j, k) < floor) continue;
+          for (int m = k == 0 ? 0 : 1; m <= per_interval; ++m) {
+            const double r = point(k, m);
+            if (r >= floor && r > 0) c.push_back({k, m, r});
           }
         }
-        if (interval_worst && worst_here > (*interval_worst)[k]) (*interval_worst)[k] = worst_here;
-        if (to_keep == 0 || (k == K - 1 && m == per_interval)) {
-          const Reference ref = reference(k, m);
-          out->s.push_back(ref.jp.s);
-          out->t.push_back(t);
-          out->sd.push_back(ref.sd);
-          out->sdd.push_back(ref.u);
-          q.push_back(ref.jp.q);
-          qd.push_back(ref.qd);
-          qdd.push_back(ref.qdd);
-          tau.push_back(core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd));
-        }
-        to_keep = to_keep == 0 ? stride - 1 : to_keep - 1;
+        continue;
       }
-      t_node = t_end;
-      nt[k + 1] = t_node;
+      double b = 0;
+      for (int k = 0; k < K; ++k) {
+        for (int m = k == 0 ? 0 : 1; m <= per_interval; ++m) {
+          const double r = point(k, m);
+          if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
+          if (r > b) {
+            const double floor = r - kRounding * std::max(1.0, r);
+            c.erase(std::remove_if(c.begin(), c.end(),
+                                   [&](const Candidate& e) { return e.r < floor; }),
+                    c.end());
+            b = r;
+          }
+          c.push_back({k, m, r});
+        }
+      }
     }
   }
   // every candidate again as resample_reference: the first point of each limit's largest

@@ -61,10 +61,18 @@ class PointSource {
   explicit PointSource(const Problem& problem);
   /// @throws std::logic_error as Problem::at does.
   void at(double s, bool from_left, JointPoint* jp) const;
+  /// The numbers the solvers' limits take (s, p, q', q'', a, b, c, sin q2) of the same
+  /// point: on a 2-link tip path without trigonometric functions (TipRateEvaluator and
+  /// path_dynamics_abs: equal to `at`'s to rounding, 1e-12 relative in the tests), q left
+  /// NaN; `at`'s numbers wherever TipRateEvaluator gives none (near the workspace's edge
+  /// or a singular pose).
+  void solver_at(double s, bool from_left, JointPoint* jp) const;
 
  private:
   const Problem* problem_;
   std::optional<TipPointEvaluator> tip_;
+  std::optional<TipRateEvaluator> rates_;
+  TwoLinkDynamics dyn_;
 };
 
 /// The problem of `spec`: its path in the spec's space, the spec's chain and `limits`.
@@ -117,14 +125,15 @@ TimedState state_at_time(const Problem& problem, const Profile& profile,
 /// times go to `node_t`; the largest use of any limit inside each interval, as ratio - 1,
 /// to `interval_worst` (one per interval) when given. On a 2-link tip path with constant
 /// s'' the closed-form inverse dynamics find the worst points, and core's generic inverse
-/// dynamics give the torques at them and at every kept sample (the same numbers as core's
-/// everywhere, the tests check).
+/// dynamics give the torques at them (the same numbers as core's everywhere, the tests
+/// check); the kept samples' torques come from the closed form (1e-12 relative).
 void resample(const Problem& problem, const Profile& profile, int per_interval, int keep,
               MotionSamples* samples, Violation* violation, std::vector<double>* node_t,
               std::vector<double>* interval_worst = nullptr);
 
 /// resample's plain implementation, for any path and law: core's inverse dynamics at every
-/// point. resample gives its numbers (the tests compare the two bitwise).
+/// point. resample gives its numbers (the tests compare the two bitwise, the kept samples'
+/// torques to 1e-12 relative).
 void resample_reference(const Problem& problem, const Profile& profile, int per_interval, int keep,
                         MotionSamples* samples, Violation* violation, std::vector<double>* node_t,
                         std::vector<double>* interval_worst = nullptr);

@@ -369,7 +369,7 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
       // (after m = 0, the point of the interval before is no longer needed)
       JointPoint& fresh = ws.buf[next];
       next ^= 1;
-      source.at(s, m == checks, &fresh);
+      source.solver_at(s, m == checks, &fresh);
       if (cache) cache->add(fresh, m == checks);
       c += add_rows(fresh, pb.limits, shift, rows + c);
       if (m == checks) prev = &fresh;

@@ -63,9 +63,9 @@ SolverOutput solve_exact(const Problem& problem, const std::vector<double>& node
                          const std::vector<int>& checks, ExactPointCache* cache = nullptr);
 
 /// solve_exact's plain implementation: every row with the tag of its limit, the arrays
-/// allocated per solve. solve_exact gives the same numbers (the tests compare the two
-/// bitwise) without allocating once its per-thread arrays have grown, and words its
-/// failures through this one.
+/// allocated per solve, every point from Problem::at. solve_exact gives the same numbers to
+/// rounding (its points from PointSource::solver_at; the tests: 1e-12 relative) without
+/// allocating once its per-thread arrays have grown, and words its failures through this one.
 SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes,
                                    int checks);
 SolverOutput solve_exact_reference(const Problem& problem, const std::vector<double>& nodes,
@@ -73,7 +73,9 @@ SolverOutput solve_exact_reference(const Problem& problem, const std::vector<dou
 
 /// Maximum velocity curve at `nodes`: the largest s' (m/s) at which some s'' meets every
 /// limit at that point (`sd_all`), and the s' allowed by the velocity limits alone.
-/// The points come from `cache` where it has them (the same numbers).
+/// The points come from `cache` where it has them (the exact solver's numbers, equal to
+/// Problem::at's to rounding), from Problem::at elsewhere; without a cache every point is
+/// Problem::at's, so the DP's state grid does not depend on the solver's rounding.
 void max_velocity_curve(const Problem& problem, const std::vector<double>& nodes,
                         std::vector<double>* sd_all, std::vector<double>* sd_velocity,
                         const ExactPointCache* cache = nullptr);

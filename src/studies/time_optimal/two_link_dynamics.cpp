@@ -53,6 +53,19 @@ void path_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
 void path_dynamics_cs(const TwoLinkDynamics& d, double c2, double s2, const core::JointVector& q,
                       const core::JointVector& dq, const core::JointVector& ddq,
                       core::JointVector* a, core::JointVector* b, core::JointVector* c) {
+  const double rates[2][2] = {{dq[0], dq[1]}, {ddq[0], ddq[1]}};
+  if (d.gravity == 0.0) {
+    path_dynamics_abs(d, c2, s2, 0.0, 0.0, 0.0, 0.0, rates[0], rates[1], a, b, c);
+    return;
+  }
+  const double t1 = d.base_angle + q[0], t12 = t1 + q[1];
+  path_dynamics_abs(d, c2, s2, std::cos(t1), std::sin(t1), std::cos(t12), std::sin(t12),
+                    rates[0], rates[1], a, b, c);
+}
+
+void path_dynamics_abs(const TwoLinkDynamics& d, double c2, double s2, double ct1, double st1,
+                       double ct12, double st12, const double dq[2], const double ddq[2],
+                       core::JointVector* a, core::JointVector* b, core::JointVector* c) {
   const double g = d.A * c2 - d.B * s2;
   const double gp = -d.A * s2 - d.B * c2;
   const double m11 = d.a11 + 2.0 * g, m12 = d.a12 + g, m22 = d.a22;
@@ -68,8 +81,6 @@ void path_dynamics_cs(const TwoLinkDynamics& d, double c2, double s2, const core
     (*c)[1] = 0.0;
     return;
   }
-  const double t1 = d.base_angle + q[0], t12 = t1 + q[1];
-  const double ct1 = std::cos(t1), st1 = std::sin(t1), ct12 = std::cos(t12), st12 = std::sin(t12);
   (*c)[1] = d.gravity * (ct12 * d.X2 - st12 * d.Y2);
   (*c)[0] = d.gravity * (ct1 * (d.X1 + d.L1 * d.m2) - st1 * d.Y1) + (*c)[1];
 }

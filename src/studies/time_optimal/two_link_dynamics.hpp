@@ -43,6 +43,14 @@ void path_dynamics_cs(const TwoLinkDynamics& d, double c2, double s2, const core
                       const core::JointVector& dq, const core::JointVector& ddq,
                       core::JointVector* a, core::JointVector* b, core::JointVector* c);
 
+/// path_dynamics from the cosines and sines of q2 (c2, s2), of link 1's absolute angle
+/// (base_angle + q1: ct1, st1) and of link 2's (ct12, st12) instead of q: the same
+/// operations after the angles' functions, so the same numbers for the same cosines and
+/// sines (path_dynamics_cs takes them with std::cos and std::sin).
+void path_dynamics_abs(const TwoLinkDynamics& d, double c2, double s2, double ct1, double st1,
+                       double ct12, double st12, const double dq[2], const double ddq[2],
+                       core::JointVector* a, core::JointVector* b, core::JointVector* c);
+
 /// tau = M(q) qdd + C(q, qd) qd + g(q) of the model above (2 entries, N m): the inverse
 /// dynamics of the dense re-check, equal to core::inverse_dynamics to 1e-12 relative.
 void inverse_dynamics(const TwoLinkDynamics& d, const core::JointVector& q,
