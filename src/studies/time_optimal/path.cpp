@@ -124,7 +124,16 @@ void PathGeometry::at_increasing(const double* s, size_t n, PathPoint* out) cons
     if (c < last) after = 0;  // (not increasing after all: from the start again)
     last = c;
     while (after < starts && piece_s_[after] <= c) ++after;
-    out[k] = at_piece(c, std::clamp(after - 1, 0, pieces - 1));
+    const int i = std::clamp(after - 1, 0, pieces - 1);
+    if (kind_ == PathKind::kSpline) {
+      out[k] = at_piece(c, i);
+      continue;
+    }
+    // (at_piece's straight piece, inline)
+    const Eigen::Vector2d& d = dir_[i];
+    out[k].p = pts_[i] + d * (c - piece_s_[i]);
+    out[k].dp = d;
+    out[k].ddp.setZero();
   }
 }
 

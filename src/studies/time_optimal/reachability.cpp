@@ -294,11 +294,22 @@ const double* ExactPointCache::find(double s, bool from_left) const {
   return nullptr;
 }
 
+void ExactPointCache::reserve(size_t points) {
+  if (!path_) return;
+  fresh_.reserve(fresh_.size() + points);
+  coef_.reserve(coef_.size() + points * static_cast<size_t>(stride()));
+}
+
 void ExactPointCache::add(const JointPoint& p, bool from_left) {
   if (!path_) return;
-  fresh_.push_back({p.s, from_left, coef_.size()});
-  for (const core::JointVector* v : {&p.dq, &p.ddq, &p.a, &p.b, &p.c})
-    for (int j = 0; j < joints_; ++j) coef_.push_back((*v)[j]);
+  const size_t at = coef_.size();
+  fresh_.push_back({p.s, from_left, at});
+  coef_.resize(at + static_cast<size_t>(stride()));
+  double* out = coef_.data() + at;
+  for (const core::JointVector* v : {&p.dq, &p.ddq, &p.a, &p.b, &p.c}) {
+    const double* in = v->data();
+    for (int j = 0; j < joints_; ++j) *out++ = in[j];
+  }
 }
 
 void ExactPointCache::merge() {
@@ -341,6 +352,7 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
   // rows of every interval in (x_i, u), limits at theta = m / checks (interval_points'
   // points: the first point of an interval is the last of the one before, except at a stop)
   const PointSource source(pb);
+  if (cache) cache->reserve(ws.start[N] / (static_cast<size_t>(nj) * kinds));  // (every point)
   const JointPoint* prev = nullptr;    // the last point of the interval before, or its
   const double* prev_known = nullptr;  // numbers from the cache
   int next = 0;                        // the buffer of the next new point

@@ -35,6 +35,8 @@ class ExactPointCache {
   /// Keeps the numbers of a point, to be found after the next `merge` (a solve's points
   /// come in increasing s).
   void add(const JointPoint& point, bool from_left);
+  /// Room for `points` more points before the next `merge`.
+  void reserve(size_t points);
   void merge();
   int stride() const { return 5 * joints_; }
 
