@@ -8,9 +8,10 @@
 #   cmake --build toppra-build
 #
 # usage: scripts/bench_toppra.sh TOPPRA_BUILD_DIR [ARMSTUDY_BUILD_DIR (build)] [ROUNDS (3)]
-# Each round runs TOPP-RA (median of 200 solves) and then armstudy's benchmark
-# BM_TimeOptimalAnchor (tests/bench/time_optimal_anchor_bench.cpp) at 1000 intervals, and
-# prints both durations and the ratio of the solve times with the machine's load.
+# Each round runs TOPP-RA (median of 200 solves), armstudy's benchmarks BM_TimeOptimalAnchor*
+# (tests/bench/time_optimal_anchor_bench.cpp) at 1000 intervals and TOPP-RA again, and prints
+# the durations and the ratios of the solve times to the mean of TOPP-RA's two medians, with
+# the machine's load.
 set -euo pipefail
 toppra_build=$(cd "${1:?usage: $0 TOPPRA_BUILD_DIR [ARMSTUDY_BUILD_DIR] [ROUNDS]}" && pwd)
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,16 +26,24 @@ trap 'rm -rf "$work"' EXIT
 c++ -O3 -DNDEBUG -std=c++17 -I "$src/src" -I "$(dirname "$lib")" -isystem /usr/include/eigen3 \
   "$here/scripts/toppra_anchor.cpp" -o "$work/toppra_anchor" "$lib" -Wl,-rpath,"$(dirname "$lib")"
 for r in $(seq "$rounds"); do
+  # TOPP-RA just before and just after armstudy's benchmarks: the ratio is taken to the mean
+  # of its two medians, so that the machine's drift over the round falls on both sides
   echo "round $r: $(uptime | sed 's/.*load/load/')"
-  t=$("$work/toppra_anchor" 1000 200)
-  echo "  $t"
+  t1=$("$work/toppra_anchor" 1000 200)
   a=$("$build/tests/armstudy_bench" --benchmark_filter='BM_TimeOptimalAnchor' \
         --benchmark_format=csv 2>/dev/null | grep '^"BM_TimeOptimalAnchor')
+  t2=$("$work/toppra_anchor" 1000 200)
+  echo "  before: $t1"
+  echo "  after:  $t2"
   echo "$a" | while IFS=, read -r name iters real cpu unit rest; do
     echo "  armstudy $name real_${unit} $real cpu_${unit} $cpu"
   done
-  tm=$(echo "$t" | sed 's/.* median_ms \([0-9.]*\).*/\1/')
-  tc=$(echo "$t" | sed 's/.*cpu_median_ms \([0-9.]*\).*/\1/')
+  tm=$(python3 -c "import sys; print((float(sys.argv[1]) + float(sys.argv[2])) / 2)" \
+        "$(echo "$t1" | sed 's/.* median_ms \([0-9.]*\).*/\1/')" \
+        "$(echo "$t2" | sed 's/.* median_ms \([0-9.]*\).*/\1/')")
+  tc=$(python3 -c "import sys; print((float(sys.argv[1]) + float(sys.argv[2])) / 2)" \
+        "$(echo "$t1" | sed 's/.*cpu_median_ms \([0-9.]*\).*/\1/')" \
+        "$(echo "$t2" | sed 's/.*cpu_median_ms \([0-9.]*\).*/\1/')")
   echo "$a" | while IFS=, read -r name iters real cpu unit rest; do
     python3 -c "print('  TOPP-RA / armstudy solve time, $name: wall %.2fx, CPU %.2fx' % ($tm / $real, $tc / $cpu))"
   done
