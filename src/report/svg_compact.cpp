@@ -33,10 +33,17 @@ std::map<std::string, std::string> declarations(std::string_view style) {
 // declaration not listed could make the order matter, and keeps the paths apart.
 Merge merge_kind(std::string_view style) {
   const auto d = declarations(style);
-  static const char* kKnown[] = {"fill",           "fill-rule",        "fill-opacity",
-                                 "stroke",         "stroke-width",     "stroke-linecap",
-                                 "stroke-linejoin", "stroke-opacity",  "stroke-miterlimit",
-                                 "opacity",        "stroke-dasharray"};
+  static const char* kKnown[] = {"fill",
+                                 "fill-rule",
+                                 "fill-opacity",
+                                 "stroke",
+                                 "stroke-width",
+                                 "stroke-linecap",
+                                 "stroke-linejoin",
+                                 "stroke-opacity",
+                                 "stroke-miterlimit",
+                                 "opacity",
+                                 "stroke-dasharray"};
   for (const auto& [key, value] : d) {
     bool known = false;
     for (const char* k : kKnown) known |= key == k;
@@ -183,8 +190,7 @@ std::string merge_paths(const std::string& body, const std::map<std::string, std
       size_t q = next;
       while (q < text.size() && (text[q] == '\n' || text[q] == ' ')) ++q;
       const std::optional<PathElement> e = path_at(text, q);
-      if (!e || e->cls != first->cls || e->transform != first->transform || !add_polygon(*e))
-        break;
+      if (!e || e->cls != first->cls || e->transform != first->transform || !add_polygon(*e)) break;
       run.push_back(*e);
       next = e->end;
     }

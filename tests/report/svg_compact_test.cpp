@@ -32,8 +32,8 @@ std::string path(const std::string& style, const std::string& d, bool transform 
 }
 
 TEST(SvgCompact, StylesBecomeClasses) {
-  const std::string out = compact_svg(svg_of(path(kLine, "M 0 0 L 1 1 ", false) +
-                                             "<rect style=\"" + kFill + "\"/>\n"));
+  const std::string out =
+      compact_svg(svg_of(path(kLine, "M 0 0 L 1 1 ", false) + "<rect style=\"" + kFill + "\"/>\n"));
   EXPECT_EQ(out.find(" style=\""), std::string::npos);
   EXPECT_EQ(count(out, "<style>"), 1u);
   EXPECT_NE(out.find(std::string("{") + kLine + "}"), std::string::npos) << out;
@@ -41,9 +41,9 @@ TEST(SvgCompact, StylesBecomeClasses) {
 }
 
 TEST(SvgCompact, ARunOfOneStrokeIsOnePathOfItsSubpaths) {
-  const std::string out = compact_svg(svg_of(path(kLine, "M 0 0 L 1 1 ") +
-                                             path(kLine, "M 2 2 C 3 3 4 4 5 5 ") +
-                                             path(kLine, "M 6 6 L 7 7 ")));
+  const std::string out =
+      compact_svg(svg_of(path(kLine, "M 0 0 L 1 1 ") + path(kLine, "M 2 2 C 3 3 4 4 5 5 ") +
+                         path(kLine, "M 6 6 L 7 7 ")));
   EXPECT_EQ(count(out, "<path"), 1u) << out;
   EXPECT_NE(out.find("d=\"M 0 0 L 1 1 M 2 2 C 3 3 4 4 5 5 M 6 6 L 7 7\""), std::string::npos)
       << out;
@@ -53,8 +53,8 @@ TEST(SvgCompact, ARunOfOneStrokeIsOnePathOfItsSubpaths) {
 TEST(SvgCompact, FilledPolygonsAreOrientedAlikeSoThatTheirUnionIsFilled) {
   // a counter-clockwise and a clockwise triangle overlapping: under the non-zero rule, one
   // path of both as drawn would leave their overlap empty
-  const std::string out = compact_svg(svg_of(path(kFill, "M 0 0 L 4 0 L 0 4 Z ") +
-                                             path(kFill, "M 1 1 L 1 5 L 5 1 L 1 1 ")));
+  const std::string out = compact_svg(
+      svg_of(path(kFill, "M 0 0 L 4 0 L 0 4 Z ") + path(kFill, "M 1 1 L 1 5 L 5 1 L 1 1 ")));
   EXPECT_EQ(count(out, "<path"), 1u) << out;
   EXPECT_NE(out.find("d=\"M 0 0 L 4 0 L 0 4 Z M 1 1 L 5 1 L 1 5 L 1 1\""), std::string::npos)
       << out;
@@ -78,10 +78,10 @@ TEST(SvgCompact, PathsWhoseOrderOrSeparationShowsStayApart) {
     EXPECT_EQ(count(out, "<path"), 2u) << d << "\n" << out;
   }
   // another element, another class or another transform between them ends a run
-  const std::string out = compact_svg(
-      svg_of(path(kLine, "M 0 0 L 1 1 ") + "<use href=\"#g\"/>\n" + path(kLine, "M 1 1 L 2 2 ") +
-             path(kFill, "M 0 0 L 1 0 L 0 1 ") + path(kLine, "M 2 2 L 3 3 ") +
-             path(kLine, "M 3 3 L 4 4 ", false)));
+  const std::string out =
+      compact_svg(svg_of(path(kLine, "M 0 0 L 1 1 ") + "<use href=\"#g\"/>\n" +
+                         path(kLine, "M 1 1 L 2 2 ") + path(kFill, "M 0 0 L 1 0 L 0 1 ") +
+                         path(kLine, "M 2 2 L 3 3 ") + path(kLine, "M 3 3 L 4 4 ", false)));
   EXPECT_EQ(count(out, "<path"), 5u) << out;
 }
 

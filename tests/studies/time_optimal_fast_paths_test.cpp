@@ -1,10 +1,10 @@
 // The time-optimal study's fast paths keep its answers: solve_exact (no allocation, rows
 // without tags, its points without trigonometric functions) gives solve_exact_reference's
-// numbers to 1e-12 relative and its failure messages word for word, on tip paths (line, polyline, spline, acceleration limits, a rotated base with
-// gravity) and on a 3-link joint-space path; the joint points of a tip path equal core's
-// generic chain (forward kinematics, the Jacobian and the generic recursion) to 1e-12 relative,
-// and so do the dense re-check's joint rates without angles (TipRateEvaluator; its loop over
-// arrays gives the point-by-point numbers bitwise) and its
+// numbers to 1e-12 relative and its failure messages word for word, on tip paths (line, polyline,
+// spline, acceleration limits, a rotated base with gravity) and on a 3-link joint-space path; the
+// joint points of a tip path equal core's generic chain (forward kinematics, the Jacobian and the
+// generic recursion) to 1e-12 relative, and so do the dense re-check's joint rates without angles
+// (TipRateEvaluator; its loop over arrays gives the point-by-point numbers bitwise) and its
 // closed-form torques; resample gives resample_reference's samples and limit uses bitwise,
 // the samples' torques (closed form) to 1e-12 relative.
 #include <gtest/gtest.h>

@@ -266,7 +266,6 @@ inline double use_ratio(double value, double lim) {
   return lim > 0 ? v / lim : (v > 1e-12 ? std::numeric_limits<double>::infinity() : 0.0);
 }
 
-
 // the largest |v[i]|, i < n, and 0 when there is none (NaN is never the largest)
 inline double largest_abs(const double* v, size_t n) {
   size_t i = 0;
@@ -675,9 +674,9 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
           if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
           if (r > b) {
             const double floor = r - kRounding * std::max(1.0, r);
-            c.erase(std::remove_if(c.begin(), c.end(),
-                                   [&](const Candidate& e) { return e.r < floor; }),
-                    c.end());
+            c.erase(
+                std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
+                c.end());
             b = r;
           }
           c.push_back({k, m, r});

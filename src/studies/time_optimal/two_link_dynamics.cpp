@@ -59,8 +59,8 @@ void path_dynamics_cs(const TwoLinkDynamics& d, double c2, double s2, const core
     return;
   }
   const double t1 = d.base_angle + q[0], t12 = t1 + q[1];
-  path_dynamics_abs(d, c2, s2, std::cos(t1), std::sin(t1), std::cos(t12), std::sin(t12),
-                    rates[0], rates[1], a, b, c);
+  path_dynamics_abs(d, c2, s2, std::cos(t1), std::sin(t1), std::cos(t12), std::sin(t12), rates[0],
+                    rates[1], a, b, c);
 }
 
 void path_dynamics_abs(const TwoLinkDynamics& d, double c2, double s2, double ct1, double st1,
