@@ -506,6 +506,8 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
   std::vector<double>* val[3] = {buffers + 3, buffers + 3 + nj, buffers + 3 + 2 * nj};
   for (int kind = 0; kind < 3; ++kind)
     for (int j = 0; j < nj; ++j) val[kind][j].resize(static_cast<size_t>(total));
+  thread_local std::vector<double> s_at;  // (one interval's arc lengths and path points)
+  thread_local std::vector<PathPoint> pp_at;
   thread_local std::vector<double> peak_buffer;
   std::vector<double>& peaks = peak_buffer;
   peaks.assign(static_cast<size_t>(kinds) * nj * K, 0.0);
@@ -521,16 +523,14 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     for (std::vector<double>* v : {&xs, &us, &sds}) v->resize(n);
     {
       const PathGeometry& path = problem.path.tip();
+      s_at.resize(static_cast<size_t>(per_interval + 1));
+      pp_at.resize(static_cast<size_t>(per_interval + 1));
       for (int k = k0; k < k1; ++k) {
         const int m0 = k == 0 ? 0 : 1;
         // point m of interval k at index base + m of the block
         const std::ptrdiff_t base =
             static_cast<std::ptrdiff_t>(k) * per_interval - static_cast<std::ptrdiff_t>(i0);
         // the points m < per_interval from the right, in increasing s; the last from the left
-        thread_local std::vector<double> s_at;
-        thread_local std::vector<PathPoint> pp_at;
-        s_at.resize(static_cast<size_t>(per_interval + 1));
-        pp_at.resize(static_cast<size_t>(per_interval + 1));
         for (int m = m0; m < per_interval; ++m) where(k, m, &s_at[m]);
         path.at_increasing(s_at.data() + m0, static_cast<size_t>(per_interval - m0),
                            pp_at.data() + m0);
@@ -610,19 +610,11 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     for (int k = k0; k < k1; ++k) {
       const size_t first = k == 0 ? 0 : static_cast<size_t>(k) * per_interval + 1;
       const size_t last = static_cast<size_t>(k + 1) * per_interval;
-      const double ds = pr.s[k + 1] - pr.s[k];
-      // (the operations of the local states above)
-      const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1], sd0 = pr.sd[k];
-      const auto dt_at = [&](int m) {
-        const double theta = static_cast<double>(m) / per_interval;
-        const double v = sd0 + std::sqrt(std::max(0.0, x0 + theta * (x1 - x0)));
-        return v > 0 ? 2 * theta * ds / v : 0.0;
-      };
       const auto keep_point = [&](size_t gi) {
         const int m = static_cast<int>(gi - static_cast<size_t>(k) * per_interval);
         const Reference ref = reference(k, m);
         out->s.push_back(ref.jp.s);
-        out->t.push_back(t_node + dt_at(m));
+        out->t.push_back(t_node + ref.dt);
         out->sd.push_back(ref.sd);
         out->sdd.push_back(ref.u);
         q.push_back(ref.jp.q);
@@ -634,7 +626,7 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
       const size_t st = static_cast<size_t>(stride);
       for (size_t g = (first + st - 1) / st * st; g <= last; g += st) keep_point(g);
       if (k == K - 1 && last % st != 0) keep_point(last);
-      t_node = t_node + dt_at(per_interval);
+      t_node = t_node + path_acceleration_state(pr, k, 1.0).dt;  // (theta = m / m at the end)
       nt[k + 1] = t_node;
     }
   }
