@@ -5,6 +5,7 @@
 /// new allocation arena: measured ~0.6 ms more for the halved-grid solve of the
 /// time-optimal study, two thirds of the work itself.
 
+#include <atomic>
 #include <functional>
 #include <future>
 #include <memory>
@@ -15,6 +16,11 @@ namespace armstudy::studies {
 /// Runs `task` on the calling thread's helper, after the tasks posted before it.
 void post_to_side_thread(std::function<void()> task);
 
+/// How long a thread waiting for the other stays awake, checking, before it sleeps.
+inline constexpr int kSpinMicroseconds = 200;
+/// Returns once `done()` is true, or after kSpinMicroseconds.
+void spin_until(const std::function<bool()>& done);
+
 /// A value computed on the side thread. It is waited for when read and when it goes out of
 /// scope (so a task may refer to the caller's locals declared before it); an exception of
 /// the task is rethrown by get(). A task must not wait for another side task.
@@ -23,15 +29,19 @@ class SideTask {
  public:
   SideTask() = default;
   template <class F>
-  explicit SideTask(F f) {
+  explicit SideTask(F f) : done_(std::make_shared<std::atomic<bool>>(false)) {
     auto task = std::make_shared<std::packaged_task<T()>>(std::move(f));
     result_ = task->get_future();
-    post_to_side_thread([task] { (*task)(); });
+    post_to_side_thread([task, done = done_] {
+      (*task)();
+      done->store(true, std::memory_order_release);
+    });
   }
   SideTask(SideTask&&) noexcept = default;
   SideTask& operator=(SideTask&& other) noexcept {
     wait();
     result_ = std::move(other.result_);
+    done_ = std::move(other.done_);
     return *this;
   }
   SideTask(const SideTask&) = delete;
@@ -40,12 +50,18 @@ class SideTask {
 
   bool valid() const { return result_.valid(); }
   void wait() const {
-    if (result_.valid()) result_.wait();
+    if (!result_.valid()) return;
+    spin_until([this] { return done_->load(std::memory_order_acquire); });
+    result_.wait();
   }
-  T get() { return result_.get(); }
+  T get() {
+    wait();
+    return result_.get();
+  }
 
  private:
   std::future<T> result_;
+  std::shared_ptr<std::atomic<bool>> done_;  // set once the task has run
 };
 
 }  // namespace armstudy::studies

@@ -1,6 +1,7 @@
 // The study's side thread: a task runs on another thread, the same one for every task of a
-// caller (its thread_local buffers stay warm), its exception reaches get(), and a task is
-// finished before its SideTask goes out of scope.
+// caller (its thread_local buffers stay warm), a task runs whether the side thread is awake
+// or asleep when it comes, its exception reaches get(), and a task is finished before its
+// SideTask goes out of scope.
 #include "studies/side_thread.hpp"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,18 @@ TEST(SideThread, TasksOfOneCallerRunOnOneOtherThread) {
   const std::thread::id ia = a.get(), ib = b.get();
   EXPECT_NE(ia, std::this_thread::get_id());
   EXPECT_EQ(ia, ib);
+}
+
+TEST(SideThread, ATaskPostedAfterTheSideThreadHasGoneToSleepRuns) {
+  // a task within kSpinMicroseconds of the last finds the side thread awake; one long after
+  // wakes it
+  SideTask<int> a([] { return 1; });
+  EXPECT_EQ(a.get(), 1);
+  SideTask<int> b([] { return 2; });
+  EXPECT_EQ(b.get(), 2);
+  std::this_thread::sleep_for(std::chrono::microseconds(20 * kSpinMicroseconds));
+  SideTask<int> c([] { return 3; });
+  EXPECT_EQ(c.get(), 3);
 }
 
 TEST(SideThread, TheTasksExceptionReachesGet) {

@@ -320,6 +320,77 @@ void ExactPointCache::merge() {
   fresh_.clear();
 }
 
+void ExactPointCache::absorb(const ExactPointCache& other) {
+  if (!path_) return;
+  fresh_.reserve(fresh_.size() + other.index_.size());
+  coef_.reserve(coef_.size() + other.coef_.size());
+  for (const Entry& e : other.index_) {
+    const size_t at = coef_.size();
+    fresh_.push_back({e.s, e.from_left, at});
+    coef_.insert(coef_.end(), other.coef_.begin() + static_cast<std::ptrdiff_t>(e.at),
+                 other.coef_.begin() + static_cast<std::ptrdiff_t>(e.at + stride()));
+  }
+}
+
+bool ExactPointCache::same_point(double s, bool from_left, double s2, bool from_left2) const {
+  return s == s2 && (from_left == from_left2 || !path_->joins_pieces(s));
+}
+
+namespace {
+// Where solve_exact evaluates the points of `nodes` with checks[k] check points in interval k,
+// in its order (increasing s): at m = checks the interval's end, from the left; at m = 0 of
+// an interval after the first the end of the one before, taken again, except at a stop.
+struct SolverPointAt {
+  double s;
+  bool from_left;
+};
+inline double check_point_s(const std::vector<double>& nodes, int k, int m, int checks) {
+  const double ds = nodes[k + 1] - nodes[k];
+  return m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
+}
+inline bool is_stop(const std::vector<double>& stops, double s) {
+  return std::find(stops.begin(), stops.end(), s) != stops.end();
+}
+std::vector<SolverPointAt> solver_points(const std::vector<double>& nodes,
+                                         const std::vector<int>& checks,
+                                         const std::vector<double>& stops) {
+  std::vector<SolverPointAt> out;
+  for (size_t k = 0; k + 1 < nodes.size(); ++k)
+    for (int m = 0; m <= checks[k]; ++m) {
+      if (m == 0 && k > 0 && !is_stop(stops, nodes[k])) continue;
+      out.push_back({check_point_s(nodes, static_cast<int>(k), m, checks[k]), m == checks[k]});
+    }
+  return out;
+}
+}  // namespace
+
+void prefetch_points(const Problem& pb, const std::vector<double>& nodes,
+                     const std::vector<int>& checks, const std::vector<double>& known_nodes,
+                     const std::vector<int>& known_checks, ExactPointCache* cache) {
+  if (!cache->active()) return;
+  const auto& stops = pb.path.stops();
+  const std::vector<SolverPointAt> want = solver_points(nodes, checks, stops);
+  const std::vector<SolverPointAt> known = solver_points(known_nodes, known_checks, stops);
+  const PointSource source(pb);
+  cache->reserve(want.size());
+  JointPoint jp;
+  size_t i = 0;  // known[i] is the first with s >= the wanted point's (both in increasing s)
+  for (const SolverPointAt& w : want) {
+    while (i < known.size() && known[i].s < w.s) ++i;
+    bool have = false;
+    for (size_t j = i; j < known.size() && known[j].s == w.s && !have; ++j)
+      have = cache->same_point(w.s, w.from_left, known[j].s, known[j].from_left);
+    if (have) continue;
+    try {
+      source.solver_at(w.s, w.from_left, &jp);
+    } catch (const std::exception&) {
+      continue;  // (the solve meets it again and says why)
+    }
+    cache->add(jp, w.from_left);
+  }
+  cache->merge();
+}
+
 SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
                          const std::vector<int>& checks_per, ExactPointCache* cache) {
   thread_local ExactWorkspace ws;
@@ -362,12 +433,12 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
     Coef* rows = ws.rows.data() + ws.start[k];
     int c = 0;
     for (int m = 0; m <= checks; ++m) {
-      if (m == 0 && k > 0 && std::find(stops.begin(), stops.end(), nodes[k]) == stops.end()) {
+      if (m == 0 && k > 0 && !is_stop(stops, nodes[k])) {
         c += prev ? add_rows(*prev, pb.limits, 0.0, rows + c)
                   : add_rows(prev_known, nj, pb.limits, 0.0, rows + c);
         continue;
       }
-      const double s = m == checks ? nodes[k + 1] : nodes[k] + ds * m / checks;
+      const double s = check_point_s(nodes, k, m, checks);
       const double shift = 2.0 * ds * m / checks;
       const double* known = cache ? cache->find(s, m == checks) : nullptr;
       if (known) {

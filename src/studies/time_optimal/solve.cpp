@@ -184,8 +184,14 @@ struct RefinedGrid {
   SolverOutput solution;
   MinSinQ2 min_sin_q2;  // (on the refined grid's points: points() is that grid)
 };
-RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& grid,
-                               const std::vector<int>& checks, ExactPointCache* points) {
+// What the side thread computes once the case's grid is solved: the halved grid, and the
+// maximum velocity curve on the case's grid (which does not depend on the check points)
+struct SideResults {
+  RefinedGrid refined;
+  std::vector<double> mvc_sd, mvc_velocity_sd;
+};
+// the grid with every interval halved, and its check points (interval k's in both halves)
+std::vector<double> halved(const std::vector<double>& grid) {
   const int n = static_cast<int>(grid.size());
   std::vector<double> fine;
   fine.reserve(2 * n - 1);
@@ -193,9 +199,17 @@ RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& gri
     if (k > 0) fine.push_back(0.5 * (grid[k - 1] + grid[k]));
     fine.push_back(grid[k]);
   }
-  std::vector<int> fine_checks(fine.size() - 1);
-  for (size_t i = 0; i < fine_checks.size(); ++i) fine_checks[i] = checks[i / 2];
-  SolverOutput o = solve_exact(pb, fine, fine_checks, points);
+  return fine;
+}
+std::vector<int> halved_checks(const std::vector<int>& checks) {
+  std::vector<int> fine(2 * checks.size());
+  for (size_t i = 0; i < fine.size(); ++i) fine[i] = checks[i / 2];
+  return fine;
+}
+RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& grid,
+                               const std::vector<int>& checks, ExactPointCache* points) {
+  std::vector<double> fine = halved(grid);
+  SolverOutput o = solve_exact(pb, fine, halved_checks(checks), points);
   return RefinedGrid{checks, std::move(o), MinSinQ2(pb, std::move(fine))};
 }
 
@@ -285,6 +299,37 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
   g.text = os.str();
   return g;
 }
+
+// The exact motion at `steps` + 1 equal time steps: inside interval k,
+// s = s_k + s'_k tau + u tau^2 / 2 (Problem::at's joint numbers)
+void sample_exact_motion(const Problem& pb, const SolverResult& exact, int steps, Result* res) {
+  const int nj = pb.limits.joints();
+  res->motion_t.resize(steps + 1);
+  res->motion_s.resize(steps + 1);
+  res->motion_p.resize(2, steps + 1);
+  res->motion_q.resize(nj, steps + 1);
+  res->motion_qd.resize(nj, steps + 1);
+  size_t k = 0;
+  const PointSource source(pb);
+  JointPoint jp;
+  for (int i = 0; i <= steps; ++i) {
+    const double t = exact.duration * i / steps;
+    while (k + 2 < exact.node_t.size() && exact.node_t[k + 1] < t) ++k;
+    const double ds = exact.node_s[k + 1] - exact.node_s[k];
+    const double x0 = exact.node_sd[k] * exact.node_sd[k];
+    const double x1 = exact.node_sd[k + 1] * exact.node_sd[k + 1];
+    const double u = (x1 - x0) / (2 * ds);
+    const double tau = std::clamp(t - exact.node_t[k], 0.0, exact.node_t[k + 1] - exact.node_t[k]);
+    const double s = std::clamp(exact.node_s[k] + exact.node_sd[k] * tau + 0.5 * u * tau * tau,
+                                exact.node_s[k], exact.node_s[k + 1]);
+    source.at(s, i == steps, &jp);
+    res->motion_t[i] = t;
+    res->motion_s[i] = s;
+    res->motion_p.col(i) = jp.p;
+    res->motion_q.col(i) = jp.q;
+    res->motion_qd.col(i) = jp.dq * std::max(0.0, exact.node_sd[k] + u * tau);
+  }
+}
 }  // namespace
 
 core::PlanarChain default_arm(double L1, double L2) {
@@ -361,6 +406,20 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     return false;
   };
 
+  // the halved grid's points that the case's grid has not, on the side thread while the
+  // exact solver runs (the halved grid's solve below takes them; a point that fails is left
+  // to it, as is any error the case's grid raises here)
+  ExactPointCache fine_points(pb);
+  SideTask<void> prefetch(
+      [&pb, &fine_points, n = spec.exact.grid_points, c = spec.exact.checks_per_interval] {
+        try {
+          const std::vector<double> grid = make_nodes(pb.path, n - 1);
+          const std::vector<int> checks(grid.size() - 1, c);
+          prefetch_points(pb, halved(grid), halved_checks(checks), grid, checks, &fine_points);
+        } catch (const std::exception&) {
+        }
+      });
+
   // exact solver
   report(0.05, "exact solver (reachability)");
   ExactPointCache points(pb);  // the re-solves and the halved grid evaluate only new points
@@ -377,7 +436,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     throw;
   }
   if (!path_passed()) return res;
-  SideTask<RefinedGrid> speculative;  // (waited for by its destructor on every way out)
+  SideTask<SideResults> speculative;  // (waited for by its destructor on every way out)
   {
     // limits hold at the check points of each interval; between them a limit may be
     // overshot by O(h^2). While the dense resampling of the whole answer finds a limit
@@ -394,9 +453,14 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     // the halved grid on a second thread meanwhile, with these check points (solved again
     // below if the re-check doubles any); it owns the point cache until it is waited for
     if (o.solved)
-      speculative = SideTask<RefinedGrid>([&pb, &grid, &points, checks = exact_checks] {
-        return solve_refined_grid(pb, grid, checks, &points);
-      });
+      speculative =
+          SideTask<SideResults>([&pb, &grid, &points, &fine_points, checks = exact_checks] {
+            points.absorb(fine_points);  // (after the prefetch: the side thread runs tasks in turn)
+            points.merge();
+            SideResults out{solve_refined_grid(pb, grid, checks, &points), {}, {}};
+            max_velocity_curve(pb, grid, &out.mvc_sd, &out.mvc_velocity_sd, &points);
+            return out;
+          });
     finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
     for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance; ++k) {
       if (speculative.valid()) speculative.wait();  // (the cache is this thread's again)
@@ -442,21 +506,27 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   }
   // (no reference into res.solvers: it grows below)
   const double exact_duration = res.solvers.front().duration;
+  // the exact motion and the path's points, while the side thread solves the halved grid
+  report(0.08, "sampling the exact motion");
+  sample_exact_motion(pb, res.solvers.front(), std::max(1, spec.motion_steps), &res);
+  res.path_p.resize(2, grid.size());
+  for (size_t k = 0; k < grid.size(); ++k)
+    res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());
   report(0.1, "exact solver on the refined grid");
   {
     std::optional<RefinedGrid> refined;
     if (speculative.valid()) {
-      RefinedGrid r = speculative.get();
-      if (r.checks == exact_checks) refined.emplace(std::move(r));
+      SideResults side = speculative.get();
+      if (side.refined.checks == exact_checks) refined.emplace(std::move(side.refined));
+      res.mvc_sd = std::move(side.mvc_sd);
+      res.mvc_velocity_sd = std::move(side.mvc_velocity_sd);
+    } else {
+      max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
     }
     if (!refined) refined.emplace(solve_refined_grid(pb, grid, exact_checks, &points));
     res.grid = grid_convergence(pb, res.solvers.front(), *refined, spec.exact.grid_tolerance);
   }
-  max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
   res.mvc_s = grid;
-  res.path_p.resize(2, grid.size());
-  for (size_t k = 0; k < grid.size(); ++k)
-    res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());
 
   // DP and Complex enforce the limits at checks_per_segment + 1 points of each of their
   // long segments; between them a limit can be overshot. Like the exact solver, each is
@@ -558,40 +628,10 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     run_row(0);
   }
 
-  // the exact motion at equal time steps: inside interval k, s = s_k + s'_k tau + u tau^2 / 2
-  report(0.95, "sampling the motion");
-  const SolverResult& exact = res.solvers.front();
-  const int steps = std::max(1, spec.motion_steps);
-  res.motion_t.resize(steps + 1);
-  res.motion_s.resize(steps + 1);
-  res.motion_p.resize(2, steps + 1);
-  res.motion_q.resize(nj, steps + 1);
-  res.motion_qd.resize(nj, steps + 1);
-  size_t k = 0;
-  const PointSource source(pb);  // (Problem::at's numbers)
-  JointPoint jp;
-  for (int i = 0; i <= steps; ++i) {
-    const double t = exact.duration * i / steps;
-    while (k + 2 < exact.node_t.size() && exact.node_t[k + 1] < t) ++k;
-    const double ds = exact.node_s[k + 1] - exact.node_s[k];
-    const double x0 = exact.node_sd[k] * exact.node_sd[k];
-    const double x1 = exact.node_sd[k + 1] * exact.node_sd[k + 1];
-    const double u = (x1 - x0) / (2 * ds);
-    const double tau = std::clamp(t - exact.node_t[k], 0.0, exact.node_t[k + 1] - exact.node_t[k]);
-    const double s = std::clamp(exact.node_s[k] + exact.node_sd[k] * tau + 0.5 * u * tau * tau,
-                                exact.node_s[k], exact.node_s[k + 1]);
-    source.at(s, i == steps, &jp);
-    res.motion_t[i] = t;
-    res.motion_s[i] = s;
-    res.motion_p.col(i) = jp.p;
-    res.motion_q.col(i) = jp.q;
-    res.motion_qd.col(i) = jp.dq * std::max(0.0, exact.node_sd[k] + u * tau);
-  }
-
   res.status = Status::kSolved;
   std::ostringstream os;
   os << "fastest traversal of the " << fixed(res.path_length, 3) << " " << pb.path.unit()
-     << (res.joint_space ? " joint-space path: " : " path: ") << fixed(exact.duration, 4)
+     << (res.joint_space ? " joint-space path: " : " path: ") << fixed(exact_duration, 4)
      << " s (exact)";
   for (const SolverResult& r : res.solvers)
     if (r.name != "exact" && r.solved)

@@ -38,7 +38,15 @@ class ExactPointCache {
   /// Room for `points` more points before the next `merge`.
   void reserve(size_t points);
   void merge();
+  /// Keeps every point `other` (a cache of the same problem) can find, to be found after the
+  /// next `merge`; the points must be none this one has.
+  void absorb(const ExactPointCache& other);
   int stride() const { return 5 * joints_; }
+  /// false on a joint-space path (nothing is kept).
+  bool active() const { return path_ != nullptr; }
+  /// Whether a point at s from that side is the one at s2 from side2 (the same s and side, or
+  /// the same s where no two pieces of the path join).
+  bool same_point(double s, bool from_left, double s2, bool from_left2) const;
 
  private:
   const PathGeometry* path_ = nullptr;
@@ -52,6 +60,14 @@ class ExactPointCache {
   std::vector<double> coef_;          // stride() numbers per point
   mutable size_t hint_ = 0;           // where find last looked (one thread at a time)
 };
+
+/// Evaluates into `cache` (found after its next merge) the points that solve_exact(problem,
+/// nodes, checks, cache) takes and solve_exact on `known_nodes` with `known_checks` takes
+/// none of: a solve on a refined grid can have them while the one on the coarse grid runs
+/// (each cache on its own thread). A point that cannot be evaluated is left to the solve.
+void prefetch_points(const Problem& problem, const std::vector<double>& nodes,
+                     const std::vector<int>& checks, const std::vector<double>& known_nodes,
+                     const std::vector<int>& known_checks, ExactPointCache* cache);
 
 /// Exact solver on the grid `nodes` (TOPP-RA's reachability analysis, Pham & Pham 2018):
 /// backward controllable sets K_i = {x_i : some u meets the limits over interval i and
