@@ -290,7 +290,7 @@ const double* ExactPointCache::find(double s, bool from_left) const {
   hint_ = i;
   auto it = index_.begin() + static_cast<std::ptrdiff_t>(i);
   for (; it != index_.end() && it->s == s; ++it)
-    if (it->from_left == from_left || !path_->joins_pieces(s)) return coef_.data() + it->at;
+    if (same_point(s, from_left, it->s, it->from_left)) return coef_.data() + it->at;
   return nullptr;
 }
 
