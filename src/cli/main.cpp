@@ -146,10 +146,8 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     return kExitBadInput;
   }
   if (options.pdf && armstudy::report::find_chromium().empty()) {
-    std::fprintf(stderr,
-                 "armstudy: --pdf needs headless Chromium, and none was found (looked for "
-                 "$ARMSTUDY_CHROMIUM, then chromium, chromium-browser, google-chrome on "
-                 "PATH); install it with 'apt-get install chromium'; nothing was written\n");
+    std::fprintf(stderr, "armstudy: %s; nothing was written\n",
+                 armstudy::report::missing_chromium_text().c_str());
     return kExitRuntime;
   }
   // a stable subset: cases sorted by name, every N-th from I

@@ -87,9 +87,14 @@ class PdfError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The Chromium executable: $ARMSTUDY_CHROMIUM if set, else the first of chromium,
-/// chromium-browser, google-chrome on PATH; empty when none is found.
+/// The Chromium executable: $ARMSTUDY_CHROMIUM if set, else the first of
+/// chromium-headless-shell, chromium, chromium-browser, google-chrome on PATH; empty when
+/// none is found.
 std::string find_chromium();
+
+/// Why --pdf cannot print when find_chromium() finds nothing: where it looked and what to
+/// install.
+std::string missing_chromium_text();
 
 /// Prints `html` (a local file) to `pdf` with headless Chromium (A4 from the page's print
 /// CSS, no header or footer, a fresh profile, no network services), writing through a

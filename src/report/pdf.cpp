@@ -150,20 +150,27 @@ std::string find_chromium() {
   std::string dir;
   std::vector<std::string> entries;
   while (std::getline(dirs, dir, ':')) entries.push_back(dir.empty() ? "." : dir);
-  for (const char* name : {"chromium", "chromium-browser", "google-chrome"})
+  // chromium-headless-shell first: Chromium's headless mode built on its own (Debian's
+  // package of that name), which prints the same pages as the full browser with less than
+  // half its CPU (it starts in a third of the time)
+  for (const char* name :
+       {"chromium-headless-shell", "chromium", "chromium-browser", "google-chrome"})
     for (const auto& d : entries)
       if (is_executable(fs::path(d) / name)) return (fs::path(d) / name).string();
   return "";
 }
 
+std::string missing_chromium_text() {
+  return "--pdf needs headless Chromium, and none was found (looked for $ARMSTUDY_CHROMIUM, "
+         "then chromium-headless-shell, chromium, chromium-browser and google-chrome on PATH); "
+         "install it with 'apt-get install chromium-headless-shell' (or chromium) or set "
+         "ARMSTUDY_CHROMIUM to the browser's path";
+}
+
 namespace {
 std::string chromium_or_throw() {
   const std::string chromium = find_chromium();
-  if (chromium.empty())
-    throw PdfError(
-        "--pdf needs headless Chromium, and none was found (looked for $ARMSTUDY_CHROMIUM, then "
-        "chromium, chromium-browser and google-chrome on PATH); install it with "
-        "'apt-get install chromium' or set ARMSTUDY_CHROMIUM to the browser's path");
+  if (chromium.empty()) throw PdfError(missing_chromium_text());
   return chromium;
 }
 }  // namespace
