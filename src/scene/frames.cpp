@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <deque>
 #include <exception>
+#include <functional>
+#include <mutex>
+#include <optional>
 #include <thread>
 
 #include "core/kinematics.hpp"
@@ -85,6 +88,14 @@ Image SceneRenderer::frame(const PoseSample& s, const FrameLabels& labels) {
 
 std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
                                          std::span<const FrameLabels> labels) {
+  std::vector<Image> out(samples.size());
+  draw_frames(samples, labels, [&](size_t k, Image&& image) { out[k] = std::move(image); });
+  return out;
+}
+
+void SceneRenderer::draw_frames(std::span<const PoseSample> samples,
+                                std::span<const FrameLabels> labels,
+                                const std::function<void(size_t, Image&&)>& take) {
   if (labels.size() != samples.size())
     throw SceneError("frames: " + std::to_string(labels.size()) + " labels for " +
                      std::to_string(samples.size()) + " poses");
@@ -105,7 +116,7 @@ std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
   // itself, a helper's thread keeps two asked of its helper (one drawn while the other
   // travels); a helper still starting takes fewer (the model's state of each pose is
   // mapped here, as set_pose maps it)
-  std::vector<Image> out(n);
+  std::vector<char> taken(n, 0);
   std::atomic<size_t> next{0};
   std::vector<char> failed(helpers, 0);
   std::vector<std::thread> pool;
@@ -116,7 +127,10 @@ std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
       try {
         w.reset();
         while (true) {
-          while (asked.size() < 2) {
+          // two asked while frames are plenty (one drawn while the other travels), one
+          // near the end: a frame asked early would wait for the helper while this process
+          // could draw it sooner
+          while (asked.size() < (n - std::min(n, next.load()) > 2 ? 2u : 1u)) {
             const size_t k = next++;
             if (k >= n) break;
             const PoseSample& s = samples[k];
@@ -126,7 +140,9 @@ std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
             asked.push_back(k);
           }
           if (asked.empty()) break;
-          out[asked.front()] = w.receive();
+          const size_t k = asked.front();
+          take(k, w.receive());
+          taken[k] = 1;
           asked.pop_front();
         }
       } catch (...) {
@@ -137,7 +153,10 @@ std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
   std::exception_ptr here;
   try {
     begin_replay(model_);
-    for (size_t k = next++; k < n; k = next++) out[k] = frame(samples[k], labels[k]);
+    for (size_t k = next++; k < n; k = next++) {
+      take(k, frame(samples[k], labels[k]));
+      taken[k] = 1;
+    }
   } catch (...) {
     here = std::current_exception();
   }
@@ -150,9 +169,8 @@ std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
     workers_failed_ = true;
     workers_.clear();
     for (size_t k = 0; k < n; ++k)
-      if (out[k].rgb.empty()) out[k] = frame(samples[k], labels[k]);
+      if (!taken[k]) take(k, frame(samples[k], labels[k]));
   }
-  return out;
 }
 
 Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::string& title,
@@ -162,7 +180,22 @@ Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::strin
     labels[k].top_left = time_label(samples[k].t);
     if (k == 0 && !title.empty()) labels[k].bottom_left = title;
   }
-  return tile(frames(samples, labels), columns, 8, Rgb{255, 255, 255});
+  // each frame goes to its place on the strip as it comes, on the thread that drew or
+  // received it (tile() after frames() gives the same image, one copy after the other)
+  Image out;
+  std::optional<TileGrid> grid;
+  std::mutex first;
+  draw_frames(samples, labels, [&](size_t k, Image&& image) {
+    {
+      std::lock_guard<std::mutex> lock(first);
+      if (!grid) {
+        grid.emplace(image.width, image.height, samples.size(), columns, 8);
+        out = grid->canvas(Rgb{255, 255, 255});
+      }
+    }
+    grid->place(image, k, &out);
+  });
+  return out;
 }
 
 std::vector<size_t> evenly_spaced(size_t n, size_t at_most) {

@@ -2,6 +2,7 @@
 /// Frame strips (N poses at given times, one PNG, time labels) and stroboscopic loci
 /// (several poses superimposed, older ones fainter, the end-effector path traced).
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -88,6 +89,11 @@ class SceneRenderer {
   int strip_threads_ = 1;
   std::vector<std::unique_ptr<FrameWorker>> workers_;
   bool workers_failed_ = false;  // a helper did not start: draw here from then on
+
+  // frames() with each frame handed to `take` (index, image) as it is drawn or received,
+  // from the thread that has it: different frames may be taken at once, each once
+  void draw_frames(std::span<const PoseSample> samples, std::span<const FrameLabels> labels,
+                   const std::function<void(size_t, Image&&)>& take);
 };
 
 /// The processes a SceneRenderer made from now on draws its frames on (its initial

@@ -29,18 +29,29 @@ void blit(const Image& src, Image* dst, int x, int y) {
   }
 }
 
+TileGrid::TileGrid(int w_, int h_, size_t n, int columns_, int gap_)
+    : w(w_), h(h_), columns(std::clamp(columns_, 1, std::max(1, static_cast<int>(n)))), gap(gap_) {
+  rows = (static_cast<int>(n) + columns - 1) / columns;
+}
+
+Image TileGrid::canvas(Rgb background) const {
+  return Image(columns * w + (columns + 1) * gap, rows * h + (rows + 1) * gap, background);
+}
+
+void TileGrid::place(const Image& image, size_t k, Image* canvas) const {
+  if (image.width != w || image.height != h) throw SceneError("frame strip tiles differ in size");
+  const int c = static_cast<int>(k) % columns, r = static_cast<int>(k) / columns;
+  blit(image, canvas, gap + c * (w + gap), gap + r * (h + gap));
+}
+
 Image tile(const std::vector<Image>& tiles, int columns, int gap, Rgb background) {
   if (tiles.empty()) return {};
-  const int w = tiles[0].width, h = tiles[0].height;
+  const TileGrid grid(tiles[0].width, tiles[0].height, tiles.size(), columns, gap);
   for (const Image& t : tiles)
-    if (t.width != w || t.height != h) throw SceneError("frame strip tiles differ in size");
-  columns = std::clamp(columns, 1, static_cast<int>(tiles.size()));
-  const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
-  Image out(columns * w + (columns + 1) * gap, rows * h + (rows + 1) * gap, background);
-  for (size_t k = 0; k < tiles.size(); ++k) {
-    const int c = static_cast<int>(k) % columns, r = static_cast<int>(k) / columns;
-    blit(tiles[k], &out, gap + c * (w + gap), gap + r * (h + gap));
-  }
+    if (t.width != grid.w || t.height != grid.h)
+      throw SceneError("frame strip tiles differ in size");
+  Image out = grid.canvas(background);
+  for (size_t k = 0; k < tiles.size(); ++k) grid.place(tiles[k], k, &out);
   return out;
 }
 

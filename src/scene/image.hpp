@@ -1,6 +1,7 @@
 #pragma once
 /// 8-bit RGB images (top row first) and the few operations the frame strips need.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -35,6 +36,18 @@ struct Image {
 
 /// Copies `src` into `dst` with its top-left corner at (x, y) px (clipped).
 void blit(const Image& src, Image* dst, int x, int y);
+
+/// Where tile() puts n images of w x h px: a grid of `columns` (1 to n) with `gap` px
+/// between them and an outer margin of `gap` px.
+struct TileGrid {
+  int w = 0, h = 0, columns = 1, rows = 0, gap = 0;
+  TileGrid(int w, int h, size_t n, int columns, int gap);
+  /// The grid's image, all `background`.
+  Image canvas(Rgb background) const;
+  /// Copies image k into its place on `canvas`; images of different k may be placed from
+  /// different threads at once. @throws SceneError if `image` is not w x h px.
+  void place(const Image& image, size_t k, Image* canvas) const;
+};
 
 /// Tiles images of equal size in a grid of `columns` with `gap` px between them and an
 /// outer margin of `gap` px, on `background`. @throws SceneError if sizes differ.

@@ -229,6 +229,12 @@ TEST(Renderer, StripOnTwoThreadsEqualsTheStripOnOne) {
     for (int run = 0; run < 2; ++run)
       EXPECT_TRUE(encode_png(two.strip(samples, "one thread", 3)) == ref)
           << frames << " frames, run " << run;
+    // strip() places each frame as it arrives: the same image as tiling frames() afterwards
+    std::vector<FrameLabels> labels(samples.size());
+    for (size_t k = 0; k < samples.size(); ++k) labels[k].top_left = time_label(samples[k].t);
+    labels[0].bottom_left = "one thread";
+    EXPECT_TRUE(encode_png(tile(two.frames(samples, labels), 3, 8, Rgb{255, 255, 255})) == ref)
+        << frames << " frames";
   }
 }
 
