@@ -151,8 +151,8 @@ std::string find_chromium() {
   std::vector<std::string> entries;
   while (std::getline(dirs, dir, ':')) entries.push_back(dir.empty() ? "." : dir);
   // chromium-headless-shell first: Chromium's headless mode built on its own (Debian's
-  // package of that name), which prints the same pages as the full browser with less than
-  // half its CPU (it starts in a third of the time)
+  // package of that name), which prints the same pages as the full browser and starts with
+  // about a third of its CPU (an empty page: 1.3 against 3.7 CPU-s)
   for (const char* name :
        {"chromium-headless-shell", "chromium", "chromium-browser", "google-chrome"})
     for (const auto& d : entries)

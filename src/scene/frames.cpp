@@ -7,8 +7,6 @@
 #include <deque>
 #include <exception>
 #include <functional>
-#include <mutex>
-#include <optional>
 #include <thread>
 
 #include "core/kinematics.hpp"
@@ -114,8 +112,8 @@ void SceneRenderer::draw_frames(std::span<const PoseSample> samples,
   const size_t helpers = std::min(want, workers_.size());
   // the frames are taken in order, each by whichever process is free: this one draws them
   // itself, a helper's thread keeps two asked of its helper (one drawn while the other
-  // travels); a helper still starting takes fewer (the model's state of each pose is
-  // mapped here, as set_pose maps it)
+  // travels; one near the end); a helper still starting takes fewer (the model's state of each pose
+  // is mapped here, as set_pose maps it)
   std::vector<char> taken(n, 0);
   std::atomic<size_t> next{0};
   std::vector<char> failed(helpers, 0);
@@ -181,20 +179,12 @@ Image SceneRenderer::strip(std::span<const PoseSample> samples, const std::strin
     if (k == 0 && !title.empty()) labels[k].bottom_left = title;
   }
   // each frame goes to its place on the strip as it comes, on the thread that drew or
-  // received it (tile() after frames() gives the same image, one copy after the other)
-  Image out;
-  std::optional<TileGrid> grid;
-  std::mutex first;
-  draw_frames(samples, labels, [&](size_t k, Image&& image) {
-    {
-      std::lock_guard<std::mutex> lock(first);
-      if (!grid) {
-        grid.emplace(image.width, image.height, samples.size(), columns, 8);
-        out = grid->canvas(Rgb{255, 255, 255});
-      }
-    }
-    grid->place(image, k, &out);
-  });
+  // received it (tile() after frames() gives the same image, one copy after the other);
+  // every frame, a helper's too, is this renderer's size
+  if (samples.empty()) return {};
+  const TileGrid grid(renderer_.width(), renderer_.height(), samples.size(), columns, 8);
+  Image out = grid.canvas(Rgb{255, 255, 255});
+  draw_frames(samples, labels, [&](size_t k, Image&& image) { grid.place(image, k, &out); });
   return out;
 }
 

@@ -47,9 +47,6 @@ void TileGrid::place(const Image& image, size_t k, Image* canvas) const {
 Image tile(const std::vector<Image>& tiles, int columns, int gap, Rgb background) {
   if (tiles.empty()) return {};
   const TileGrid grid(tiles[0].width, tiles[0].height, tiles.size(), columns, gap);
-  for (const Image& t : tiles)
-    if (t.width != grid.w || t.height != grid.h)
-      throw SceneError("frame strip tiles differ in size");
   Image out = grid.canvas(background);
   for (size_t k = 0; k < tiles.size(); ++k) grid.place(tiles[k], k, &out);
   return out;
