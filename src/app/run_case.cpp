@@ -12,6 +12,7 @@
 #include <atomic>
 #include <chrono>
 #include <fstream>
+#include <iterator>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -19,7 +20,9 @@
 
 #include "app/json_numbers.hpp"
 #include "app/provenance.hpp"
+#include "cases/case_info.hpp"
 #include "report/case_report.hpp"
+#include "report/owned_output.hpp"
 #include "report/scratch_dir.hpp"
 #include "scene/animation.hpp"
 #include "scene/osmesa_context.hpp"
@@ -75,12 +78,26 @@ bool exchange_unsupported(int e) { return e == EINVAL || e == ENOSYS || e == EOP
 // (renameat2 RENAME_EXCHANGE), so `target` is never missing; elsewhere (NFS) the earlier
 // report first moves to `old_slot` in the scratch folder, which a later run (or this one's
 // signal clean-up) moves back if a kill comes between the two renames.
-void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::path& old_slot) {
+// Only a case folder armstudy wrote for this case is ever replaced: anything else at
+// `target` (a user's folder or file of the case's name) is refused, checked before the swap
+// and, for one that appeared meanwhile, after the exchange (which is then undone).
+void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::path& old_slot,
+                     const std::string& name) {
   std::error_code ec;
   std::lock_guard<std::mutex> lock(report::swap_mutex());
+  const auto refuse = [&](const std::string& why) {
+    throw report::ForeignOutput(target.string() + ": " + why + "; armstudy leaves it as it is");
+  };
   for (int attempt = 0; attempt < 8; ++attempt) {
+    if (const std::string why = report::foreign_case_folder(target, name); !why.empty())
+      refuse(why);
     if (::renameat2(AT_FDCWD, fresh.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) {
-      fs::remove_all(fresh, ec);  // now the earlier report
+      // now the earlier report, unless something else was put there since the check
+      if (const std::string why = report::foreign_case_folder(fresh, name); !why.empty()) {
+        ::renameat2(AT_FDCWD, fresh.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE);
+        refuse(why);
+      }
+      fs::remove_all(fresh, ec);
       return;
     }
     int e = errno;
@@ -214,7 +231,8 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
     j["files"] = report::to_json(list_files(tmp_dir, "results.json"));
     write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
 
-    swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name);
+    swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name,
+                    c.info.name);
     if (options.printer) {
       // printed in the scratch folder, renamed into the case folder (a failure is printed
       // again, and reported, by finish_reports)
@@ -256,19 +274,42 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
   return outcome;
 }
 
-std::vector<std::string> finish_reports(const RunOptions& options, int jobs) {
+namespace {
+
+// the case page in `dir` is the one armstudy wrote: results.json (armstudy's, for `name`)
+// lists index.html with the sha256 it has now; a page edited or replaced since is not printed
+bool page_as_written(const fs::path& dir, const std::string& name) {
+  if (!report::foreign_case_folder(dir, name).empty()) return false;
+  try {
+    std::ifstream in(dir / "results.json", std::ios::binary);
+    const report::ResultsRecord r = report::read_record(nlohmann::json::parse(in));
+    std::ifstream page(dir / "index.html", std::ios::binary);
+    if (!fs::is_regular_file(fs::symlink_status(dir / "index.html")) || !page) return false;
+    const std::string bytes{std::istreambuf_iterator<char>(page), {}};
+    for (const report::FileRecord& f : r.files)
+      if (f.path == "index.html") return f.sha256 == cases::sha256_hex(bytes);
+  } catch (const std::exception&) {
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<std::string> finish_reports(const RunOptions& options, int jobs,
+                                        const std::vector<std::string>& cases) {
   std::vector<std::string> problems;
   if (options.pdf) {
-    // every case page without an up-to-date pdf, including cases skipped as already done
+    // the page of every case of this run without an up-to-date pdf, including cases skipped
+    // as already done; only pages armstudy wrote (page_as_written)
     std::vector<fs::path> todo;
-    if (fs::is_directory(options.out_dir))
-      for (const auto& e : fs::directory_iterator(options.out_dir)) {
-        const fs::path html = e.path() / "index.html", pdf = e.path() / "report.pdf";
-        if (!e.is_directory() || e.path().filename().string().starts_with(".") || !fs::exists(html))
-          continue;
-        if (!fs::exists(pdf) || fs::last_write_time(pdf) < fs::last_write_time(html))
-          todo.push_back(e.path());
-      }
+    for (const std::string& name : cases) {
+      const fs::path dir = options.out_dir / name;
+      const fs::path html = dir / "index.html", pdf = dir / "report.pdf";
+      std::error_code ec;
+      if (!fs::exists(html, ec) || !page_as_written(dir, name)) continue;
+      if (!fs::exists(pdf) || fs::last_write_time(pdf) < fs::last_write_time(html))
+        todo.push_back(dir);
+    }
     std::sort(todo.begin(), todo.end());
     report::remove_stale_profiles();  // what killed runs' browsers left in /tmp
     // one browser prints every page, `jobs` at a time, into the scratch folder; each PDF

@@ -46,11 +46,13 @@ report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Statu
                                      const std::string& message,
                                      const std::vector<studies::Check>& checks);
 
-/// After every case of a run: with options.pdf, prints each case report in out_dir that has
-/// no report.pdf at least as new as its index.html (headless Chromium, up to `jobs` at a
-/// time), then writes out_dir/index.html over every case folder there. Returns one line per
-/// problem (empty: all written).
-std::vector<std::string> finish_reports(const RunOptions& options, int jobs);
+/// After every case of a run: with options.pdf, prints the report of each of the run's
+/// `cases` (names) that has no report.pdf at least as new as its index.html (headless
+/// Chromium, up to `jobs` at a time), only a page armstudy wrote (its results.json lists it
+/// with its sha256), then writes out_dir/index.html over every case folder there. Returns
+/// one line per problem (empty: all written).
+std::vector<std::string> finish_reports(const RunOptions& options, int jobs,
+                                        const std::vector<std::string>& cases);
 
 /// "<host>-<pid>-<random>" of this process (report::process_tag): names its scratch folder.
 std::string process_tag();

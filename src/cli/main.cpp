@@ -35,6 +35,7 @@
 #include "cli/progress.hpp"
 #include "cli/sweep.hpp"
 #include "report/case_report.hpp"
+#include "report/owned_output.hpp"
 #include "report/sweep_report.hpp"
 #include "scene/frame_worker.hpp"
 #include "scene/frames.hpp"
@@ -138,6 +139,32 @@ int available_cores() {
   return std::max(1, CPU_COUNT(&set));
 }
 
+// the run-level outputs a run (or, with `sweep_report`, a merge) writes in its folder; the
+// sweep tables only where there are sweep points
+std::vector<std::string> run_level_names(bool sweep_report, bool sweep_tables) {
+  std::vector<std::string> figures;
+  for (const auto& st : armstudy::app::index_studies())
+    if (st.figure.draw) figures.emplace_back(st.figure.file);
+  std::vector<std::string> names;
+  for (const std::string& n : armstudy::report::run_level_outputs(figures))
+    if ((n != "sweep" || sweep_report) && (!n.starts_with("sweep.") || sweep_tables))
+      names.push_back(n);
+  return names;
+}
+
+// prints each entry of `out_dir` armstudy would replace but did not write; true if any
+bool refuse_foreign_outputs(const std::filesystem::path& out_dir,
+                            const std::vector<std::string>& cases,
+                            const std::vector<std::string>& run_level) {
+  const auto foreign = armstudy::report::foreign_outputs(out_dir, cases, run_level);
+  for (const std::string& f : foreign) std::fprintf(stderr, "armstudy: %s\n", f.c_str());
+  if (!foreign.empty())
+    std::fprintf(stderr,
+                 "nothing was written: armstudy replaces only what it wrote; move these "
+                 "away or choose another --out\n");
+  return !foreign.empty();
+}
+
 int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
             int jobs, const std::string& shard, bool force, bool allow_large) {
   std::vector<LoadedCase> cases;
@@ -166,6 +193,16 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
                  cases.size());
     cases = std::move(mine);
   }
+  // never over a folder or file armstudy did not write: a user's folder of a case's name,
+  // a foreign index.html or summary.md (report/owned_output.hpp); nothing is written then
+  std::vector<std::string> names;
+  bool sweep_points = false;
+  for (const auto& c : cases) {
+    names.push_back(c.info.name);
+    sweep_points |= !c.info.sweep_name.empty();
+  }
+  if (refuse_foreign_outputs(options.out_dir, names, run_level_names(false, sweep_points)))
+    return kExitBadInput;
   // what killed runs on this host left behind (hidden temporary folders and files)
   {
     const auto stale = armstudy::app::remove_stale_outputs(options.out_dir);
@@ -217,6 +254,9 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
         std::snprintf(secs, sizeof secs, "%.1f s", o.seconds);
         line = (code == 0 ? "done: " : "FAILED: ") + c.info.name + " (" + c.info.study + ", " +
                secs + ") -> " + o.folder.string() + (o.message.empty() ? "" : "\n  " + o.message);
+      } catch (const armstudy::report::ForeignOutput& e) {
+        code = kExitBadInput;  // a user's folder of the case's name appeared during the run
+        line = "ERROR: " + c.info.name + ": " + e.what();
       } catch (const armstudy::scene::ModelError& e) {
         code = kExitBadInput;  // MuJoCo cannot load the arm the case describes
         line = "ERROR: " + c.info.name + " (" + c.info.path + "): " + e.what();
@@ -251,7 +291,7 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   // the page of all cases and, with --pdf, every case's report.pdf
-  for (const auto& problem : armstudy::app::finish_reports(options, jobs)) {
+  for (const auto& problem : armstudy::app::finish_reports(options, jobs, names)) {
     std::fprintf(stderr, "armstudy: %s\n", problem.c_str());
     worst = std::max(worst, kExitRuntime);
   }
@@ -260,6 +300,9 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::vector<std::string> warnings;
     const auto outputs = armstudy::app::collect_outputs({options.out_dir}, &warnings);
     armstudy::app::write_merged(outputs, options.out_dir);
+  } catch (const armstudy::report::ForeignOutput& e) {
+    std::fprintf(stderr, "armstudy: %s\n", e.what());
+    worst = std::max(worst, kExitBadInput);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: cannot write summary.md/junit.xml: %s\n", e.what());
     worst = std::max(worst, kExitRuntime);
@@ -338,8 +381,19 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
   if (out.empty()) out = dirs.front();
   std::vector<std::string> warnings;
   const auto outputs = armstudy::app::collect_outputs(ds, &warnings);
+  const bool sweep_points = std::any_of(outputs.begin(), outputs.end(), [](const auto& o) {
+    return o.record.case_info.sweep.has_value();
+  });
+  if (refuse_foreign_outputs(out, {}, run_level_names(sweep_points, sweep_points)))
+    return kExitBadInput;
   for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  const size_t failed = armstudy::app::write_merged(outputs, out);
+  size_t failed = 0;
+  try {
+    failed = armstudy::app::write_merged(outputs, out);
+  } catch (const armstudy::report::ForeignOutput& e) {
+    std::fprintf(stderr, "armstudy: %s\n", e.what());
+    return kExitBadInput;
+  }
   std::fprintf(stderr, "merged %zu case(s) into %s (%zu failed)\n", outputs.size(), out.c_str(),
                failed);
   // the pages: every case folder inside `out`, and the sweep's plots over its axes
@@ -352,11 +406,15 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
           name = o.record.case_info.sweep->name;
           break;
         }
+      armstudy::report::check_run_level_output(out, "sweep");
       const int plots =
           armstudy::report::write_sweep_report(std::filesystem::path(out) / "sweep", table, name);
       std::fprintf(stderr, "sweep report: %s/sweep/index.html (%d plot(s))\n", out.c_str(), plots);
     }
     armstudy::report::write_index(out, armstudy::app::index_studies());
+  } catch (const armstudy::report::ForeignOutput& e) {
+    std::fprintf(stderr, "armstudy: %s\n", e.what());
+    return kExitBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: cannot write the pages: %s\n", e.what());
     return kExitRuntime;

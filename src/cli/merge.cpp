@@ -11,6 +11,7 @@
 #include "app/run_case.hpp"
 #include "report/markdown.hpp"
 #include "report/number_format.hpp"
+#include "report/owned_output.hpp"
 #include "report/results_fields.hpp"
 #include "report/results_record.hpp"
 
@@ -340,9 +341,13 @@ json sweep_json(const std::vector<CaseOutput>& cases) {
 
 size_t write_merged(const std::vector<CaseOutput>& cases, const fs::path& out_dir) {
   fs::create_directories(out_dir);
+  // never over a file of these names that armstudy did not write (report/owned_output.hpp)
+  const std::string csv = sweep_csv(cases);
+  for (const char* name : {"summary.md", "junit.xml", "sweep.csv", "sweep.json"})
+    if (!csv.empty() || std::string(name).ends_with(".md") || std::string(name).ends_with(".xml"))
+      report::check_run_level_output(out_dir, name);
   write_file_atomic(out_dir / "summary.md", summary_markdown(cases));
   write_file_atomic(out_dir / "junit.xml", junit_xml(cases));
-  const std::string csv = sweep_csv(cases);
   if (!csv.empty()) {
     write_file_atomic(out_dir / "sweep.csv", csv);
     write_file_atomic(out_dir / "sweep.json", sweep_json(cases).dump(2) + "\n");

@@ -14,6 +14,7 @@
 
 #include "report/animation_view.hpp"
 #include "report/number_format.hpp"
+#include "report/owned_output.hpp"
 #include "report/page.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
@@ -570,6 +571,11 @@ int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies)
   d.set("count", std::to_string(rows.size()));
   d.set("has_sweep", fs::exists(out_dir / "sweep" / "index.html"));
   fs::create_directories(out_dir);
+  // never over a file of these names that armstudy did not write (report/owned_output.hpp)
+  check_run_level_output(out_dir, "index.html");
+  check_run_level_output(out_dir, "report.css");
+  for (const IndexStudy& st : studies)
+    if (st.figure.draw) check_run_level_output(out_dir, std::string(st.figure.file));
   // each study's figure over all of its cases (e.g. the thesis's figure 9.30 over the
   // placement cases), drawn here where every case is
   mus::data across{mus::data::type::list};

@@ -97,8 +97,10 @@ std::string find_chromium();
 std::string missing_chromium_text();
 
 /// Prints `html` (a local file) to `pdf` with headless Chromium (A4 from the page's print
-/// CSS, no header or footer, a fresh profile, no network services), writing through a
-/// temporary file. Gives up after `timeout_s` seconds.
+/// CSS, no header or footer, a fresh profile, no network services) over the DevTools
+/// protocol, with scripts off and every request outside `html`'s folder refused (a
+/// `file://` iframe of another file prints as an error, not as that file's text), writing
+/// through a temporary file. Gives up after `timeout_s` seconds.
 /// @throws PdfError naming the problem (Chromium missing: how to install it).
 void print_pdf(const std::filesystem::path& html, const std::filesystem::path& pdf,
                double timeout_s = 120);
@@ -113,8 +115,9 @@ struct PdfJob {
 /// them (DevTools protocol over --remote-debugging-pipe, Page.printToPDF with the options of
 /// --print-to-pdf: backgrounds, CSS page size, no header or footer), up to `parallel` pages
 /// at a time in their own tabs; each PDF written through a temporary file. A page that does
-/// not print within `timeout_s` s of its start fails alone. If the browser does not speak
-/// the protocol (or dies), the pages it has not printed go through print_pdf one by one.
+/// not print within `timeout_s` s of its start fails alone. If the browser dies (or does
+/// not speak the protocol), the pages it has not printed go through print_pdf one by one,
+/// each with a browser of its own.
 /// Returns one message per job: empty when printed, else why not.
 /// @throws PdfError when Chromium is missing.
 std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel,

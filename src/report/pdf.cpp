@@ -1,5 +1,6 @@
-// html -> pdf through headless chromium: one fresh profile per browser; one browser per page
-// (print_pdf, --print-to-pdf) or one for all pages of a run (print_pdfs, DevTools protocol)
+// html -> pdf through headless chromium over the DevTools protocol: one fresh profile per
+// browser; one browser per page (print_pdf) or one for all pages of a run (print_pdfs). Every
+// page is printed with scripts off and no file read outside the page's own folder.
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -31,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/part_name.hpp"
+#include "report/safe_remove.hpp"
 #include "report/scratch_dir.hpp"
 
 #include "report/case_report.hpp"
@@ -174,117 +176,6 @@ std::string chromium_or_throw() {
   return chromium;
 }
 }  // namespace
-
-void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
-  const std::string chromium = chromium_or_throw();
-  if (stopping()) throw PdfError("stopped by a signal");
-  if (!fs::exists(html)) throw PdfError("cannot print " + html.string() + ": no such file");
-
-  // a fresh profile: no state shared between prints or with a user's browser
-  Profile profile;
-  const fs::path log = profile.path / "chromium.log";
-  const fs::path part = part_path(pdf);
-
-  std::vector<std::string> args = {chromium,
-                                   "--headless",
-                                   "--no-sandbox",
-                                   "--disable-gpu",
-                                   "--disable-quic",
-                                   "--no-first-run",
-                                   "--disable-background-networking",
-                                   "--disable-component-update",
-                                   "--disable-sync",
-                                   "--disable-extensions",
-                                   "--user-data-dir=" + profile.path.string(),
-                                   "--no-pdf-header-footer",
-                                   "--print-to-pdf=" + part.string(),
-                                   file_url(html)};
-  // the browser's own temporary files (org.chromium.Chromium.*) go inside the profile
-  // too, so that removing the profile removes everything a killed browser left
-  const fs::path browser_tmp = profile.path / "tmp";
-  fs::create_directories(browser_tmp);
-  std::vector<std::string> env_text = {"TMPDIR=" + browser_tmp.string()};
-  for (char** e = environ; *e; ++e)
-    if (std::strncmp(*e, "TMPDIR=", 7) != 0) env_text.emplace_back(*e);
-  std::vector<char*> envp;
-  for (auto& e : env_text) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::error_code ec;
-  fs::remove(part, ec);
-
-  // only async-signal-safe calls between fork and exec
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid < 0) throw PdfError("cannot start Chromium: fork failed");
-  if (pid == 0) {
-    ::setpgid(0, 0);
-    // dies with armstudy, even when armstudy is killed with SIGKILL
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) ::_exit(127);
-    // armstudy blocks the termination signals in every thread (its signal thread waits
-    // for them); the browser gets the default behaviour back
-    sigset_t none;
-    sigemptyset(&none);
-    ::sigprocmask(SIG_SETMASK, &none, nullptr);
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    if (fd >= 0) {
-      ::dup2(fd, 1);
-      ::dup2(fd, 2);
-    }
-    const int null_in = ::open("/dev/null", O_RDONLY);
-    if (null_in >= 0) ::dup2(null_in, 0);
-    ::execve(argv[0], argv.data(), envp.data());
-    ::_exit(127);
-  }
-  ::setpgid(pid, pid);
-  BrowserGroup group(pid);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  int status = 0;
-  while (true) {
-    const pid_t r = ::waitpid(pid, &status, WNOHANG);
-    if (r == pid) break;
-    if (r < 0) {
-      group.reaped = true;
-      fs::remove(part, ec);
-      throw PdfError("lost track of the Chromium process");
-    }
-    if (std::chrono::steady_clock::now() > deadline) {
-      ::kill(-pid, SIGKILL);  // the browser and its helper processes
-      ::waitpid(pid, &status, 0);
-      group.reaped = true;
-      fs::remove(part, ec);
-      throw PdfError("Chromium did not print " + html.string() + " within " +
-                     std::to_string(static_cast<int>(timeout_s)) + " s");
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  group.reaped = true;
-  // helper processes of the browser's group that outlived it
-  ::kill(-pid, SIGKILL);
-  const bool exited_ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-  std::string head;
-  {
-    std::ifstream in(part, std::ios::binary);
-    char buf[5] = {};
-    in.read(buf, 4);
-    head.assign(buf, static_cast<size_t>(in.gcount()));
-  }
-  if (!exited_ok || head != "%PDF") {
-    fs::remove(part, ec);
-    throw PdfError("Chromium did not print " + html.string() +
-                   (WIFEXITED(status) ? " (exit " + std::to_string(WEXITSTATUS(status)) + ")"
-                                      : " (killed by a signal)") +
-                   ": " + tail_of(log, 600));
-  }
-  if (::rename(part.c_str(), pdf.c_str()) != 0) {
-    const int e = errno;
-    fs::remove(part, ec);
-    throw PdfError(system_error_text("write", pdf, e));
-  }
-}
 
 namespace {
 
@@ -464,15 +355,48 @@ class PipeBrowser {
 
 // one tab printing one page: create a target, attach, enable page events, navigate, wait
 // for the load event, print, close
+// for the page's folder `folder`: scripts off (Emulation), every request paused (Fetch) and
+// let through only for a file inside the folder, navigate, wait for the load event, print,
+// close
 struct Tab {
-  enum Step { kIdle, kCreate, kAttach, kEnable, kNavigate, kPrint, kClose };
+  enum Step { kIdle, kCreate, kAttach, kEnable, kNoScript, kConfine, kNavigate, kPrint, kClose };
   Step step = kIdle;
   int job = -1;
   int pending = -1;  // id of the command waiting for its answer
   bool navigated = false, loaded = false;
   std::string target, session;
+  fs::path folder;  // canonical: the only folder the page may read from
   std::chrono::steady_clock::time_point deadline;
 };
+
+// the file behind a file:// URL (percent-decoded, without query or fragment); "" for any
+// other URL
+std::string file_of_url(const std::string& url) {
+  if (url.rfind("file://", 0) != 0) return "";
+  std::string path;
+  for (size_t i = 7; i < url.size() && url[i] != '?' && url[i] != '#'; ++i) {
+    if (url[i] == '%' && i + 2 < url.size() &&
+        std::isxdigit(static_cast<unsigned char>(url[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(url[i + 2]))) {
+      path += static_cast<char>(std::stoi(url.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      path += url[i];
+    }
+  }
+  return path;
+}
+
+// true when `url` names a file inside `folder` (links resolved: a link out of it is outside)
+bool inside_folder(const std::string& url, const fs::path& folder) {
+  const std::string file = file_of_url(url);
+  if (file.empty() || file[0] != '/') return false;
+  std::error_code ec;
+  const fs::path real = fs::weakly_canonical(fs::path(file), ec);
+  if (ec) return false;
+  auto [a, b] = std::mismatch(folder.begin(), folder.end(), real.begin(), real.end());
+  return a == folder.end() && b != real.end();
+}
 
 // writes a printed page through its temporary sibling; "" or why not
 std::string write_printed(const std::string& bytes, const fs::path& pdf) {
@@ -575,6 +499,8 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
       }
       t = Tab{};
       t.job = static_cast<int>(*j);
+      std::error_code ec;
+      t.folder = fs::weakly_canonical(fs::absolute(job.html).parent_path(), ec);
       t.deadline = clock::now() + limit;
       t.step = Tab::kCreate;
       t.pending = browser.send("Target.createTarget", {{"url", "about:blank"}});
@@ -616,6 +542,22 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
     last_message = now;
     const nlohmann::json& m = *got;
     if (m.contains("method")) {
+      if (m["method"] == "Fetch.requestPaused" && m.contains("sessionId")) {
+        // a page reads only files of its own folder: anything else fails as if denied
+        const nlohmann::json& p = m["params"];
+        const std::string id = p.value("requestId", "");
+        bool allowed = false;
+        for (const Tab& t : tabs)
+          if (t.step != Tab::kIdle && t.session == m["sessionId"])
+            allowed = p.contains("request") && p["request"].is_object() &&
+                      inside_folder(p["request"].value("url", ""), t.folder);
+        if (allowed)
+          browser.send("Fetch.continueRequest", {{"requestId", id}}, m["sessionId"]);
+        else
+          browser.send("Fetch.failRequest", {{"requestId", id}, {"errorReason", "AccessDenied"}},
+                       m["sessionId"]);
+        continue;
+      }
       if (m["method"] == "Page.loadEventFired" && m.contains("sessionId"))
         for (Tab& t : tabs)
           if (t.step == Tab::kNavigate && t.session == m["sessionId"]) {
@@ -650,6 +592,17 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
         t.pending = browser.send("Page.enable", nlohmann::json::object(), t.session);
         break;
       case Tab::kEnable:
+        t.step = Tab::kNoScript;
+        t.pending =
+            browser.send("Emulation.setScriptExecutionDisabled", {{"value", true}}, t.session);
+        break;
+      case Tab::kNoScript:
+        t.step = Tab::kConfine;
+        t.pending =
+            browser.send("Fetch.enable",
+                         {{"patterns", nlohmann::json::array({{{"urlPattern", "*"}}})}}, t.session);
+        break;
+      case Tab::kConfine:
         t.step = Tab::kNavigate;
         t.pending = browser.send("Page.navigate", {{"url", file_url(job.html)}}, t.session);
         break;
@@ -714,6 +667,19 @@ void drain(const std::string& chromium, PrintQueue& q, int parallel, double time
 }
 
 }  // namespace
+
+void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
+  const std::string chromium = chromium_or_throw();
+  if (stopping()) throw PdfError("stopped by a signal");
+  if (!fs::exists(html)) throw PdfError("cannot print " + html.string() + ": no such file");
+  // a browser of its own for this page, speaking the protocol as print_pdfs' does: only
+  // there can scripts be turned off and the page kept to its folder
+  PrintQueue q;
+  q.add({html, pdf}, {});
+  q.closed = true;
+  print_through_one_browser(chromium, q, 1, timeout_s);
+  if (!q.errors[0].empty()) throw PdfError(q.errors[0]);
+}
 
 std::vector<std::string> print_pdfs(const std::vector<PdfJob>& jobs, int parallel,
                                     double timeout_s) {
@@ -781,21 +747,32 @@ size_t remove_stale_profiles() {
   size_t removed = 0;
   const fs::path tmp = fs::temp_directory_path(ec);
   if (ec) return 0;
-  for (const auto& e : fs::directory_iterator(tmp, ec)) {
-    const std::string f = e.path().filename().string();
-    if (f.rfind(kProfilePrefix, 0) != 0 || !e.is_directory(ec)) continue;
-    const int fd = ::open((e.path() / kProfileLock).c_str(), O_RDONLY | O_CLOEXEC);
+  // the shared temporary folder: only real folders of this user named as armstudy names
+  // its profiles, removed through the open folder, never following a link
+  const int tmp_fd = ::open(tmp.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (tmp_fd < 0) return 0;
+  for (const std::string& f : list_folder(tmp_fd)) {
+    struct stat st {};
+    if (f.rfind(kProfilePrefix, 0) != 0 || !stat_at(tmp_fd, f, &st) || !S_ISDIR(st.st_mode) ||
+        st.st_uid != ::geteuid())
+      continue;
+    const int dir = open_folder_at(tmp_fd, f);
+    if (dir < 0) continue;
+    const int fd = ::openat(dir, kProfileLock, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    ::close(dir);
     bool stale = false;
     if (fd >= 0) {
       stale = ::flock(fd, LOCK_EX | LOCK_NB) == 0;  // nobody prints with it
     } else {
       // no lock file: an earlier version's profile, or one being made right now
-      const auto t = fs::last_write_time(e.path(), ec);
-      stale = !ec && fs::file_time_type::clock::now() - t > std::chrono::minutes(10);
+      stale =
+          std::chrono::system_clock::now() - std::chrono::system_clock::from_time_t(st.st_mtime) >
+          std::chrono::minutes(10);
     }
-    if (stale) removed += fs::remove_all(e.path(), ec) > 0;
+    if (stale) removed += remove_tree_at(tmp_fd, f) > 0;
     if (fd >= 0) ::close(fd);
   }
+  ::close(tmp_fd);
   return removed;
 }
 

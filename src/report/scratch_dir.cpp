@@ -20,7 +20,9 @@
 #include <system_error>
 #include <thread>
 
+#include "report/owned_output.hpp"
 #include "report/part_name.hpp"
+#include "report/safe_remove.hpp"
 
 namespace armstudy::report {
 namespace fs = std::filesystem;
@@ -54,33 +56,44 @@ fs::path canonical_dir(const fs::path& dir) {
   return p;
 }
 
-// true when the lock file exists and nobody holds it; then *fd keeps it locked
-bool lock_is_free(const fs::path& lock, int* fd) {
-  *fd = ::open(lock.c_str(), O_RDONLY | O_CLOEXEC);
-  if (*fd < 0) return errno == ENOENT;  // a scratch folder without its lock: nobody's
+// true when the lock file of the scratch folder `name` (in `dir_fd`) exists and nobody
+// holds it, or is missing; then *fd keeps it locked (-1 when missing)
+bool lock_is_free(int dir_fd, const std::string& name, int* fd) {
+  *fd = -1;
+  const int scratch = open_folder_at(dir_fd, name);
+  if (scratch < 0) return false;
+  *fd = ::openat(scratch, "lock", O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  const int e = errno;
+  ::close(scratch);
+  if (*fd < 0) return e == ENOENT;  // a scratch folder without its lock: nobody's
   if (::flock(*fd, LOCK_EX | LOCK_NB) == 0) return true;
   ::close(*fd);
   *fd = -1;
   return false;
 }
 
-bool older_than(const fs::path& p, std::chrono::minutes age) {
-  std::error_code ec;
-  const auto t = fs::last_write_time(p, ec);
-  return !ec && fs::file_time_type::clock::now() - t > age;
+bool older_than(const struct stat& st, std::chrono::minutes age) {
+  const auto t = std::chrono::system_clock::from_time_t(st.st_mtime);
+  return std::chrono::system_clock::now() - t > age;
+}
+
+bool missing_at(int dir_fd, const std::string& name) {
+  struct stat st {};
+  return !stat_at(dir_fd, name, &st) && errno == ENOENT;
 }
 
 // moves each report waiting in <scratch>/old/ back to <dir>/<name> when <dir> has none
-void restore_old(const fs::path& scratch, const fs::path& dir, std::vector<std::string>* restored) {
-  std::error_code ec;
-  const fs::path old = scratch / "old";
-  if (!fs::is_directory(old, ec)) return;
-  for (const auto& e : fs::directory_iterator(old, ec)) {
-    const fs::path target = dir / e.path().filename();
-    if (fs::symlink_status(target, ec).type() != fs::file_type::not_found) continue;
-    if (::rename(e.path().c_str(), target.c_str()) == 0 && restored)
-      restored->push_back(target.string());
-  }
+void restore_old(int dir_fd, const std::string& scratch, const fs::path& dir,
+                 std::vector<std::string>* restored) {
+  const int s = open_folder_at(dir_fd, scratch);
+  if (s < 0) return;
+  const int old = open_folder_at(s, "old");
+  ::close(s);
+  if (old < 0) return;
+  for (const std::string& n : list_folder(old))
+    if (missing_at(dir_fd, n) && ::renameat(old, n.c_str(), dir_fd, n.c_str()) == 0 && restored)
+      restored->push_back((dir / n).string());
+  ::close(old);
 }
 
 bool process_gone(pid_t pid) {
@@ -96,10 +109,12 @@ bool process_gone(pid_t pid) {
   return paren != std::string::npos && paren + 2 < s.size() && s[paren + 2] == 'Z';
 }
 
-// earlier versions' `.<name>.tmp-<host>-<pid>` and `.<name>.old-<host>-<pid>`: this host's
-// entries of dead processes; an `.old-` one is put back when <name> is missing
-void clean_legacy(const fs::path& dir, const fs::directory_entry& e, StaleCleanup* out) {
-  const std::string f = e.path().filename().string();
+// earlier versions' `.<name>.tmp-<host>-<pid>` and `.<name>.old-<host>-<pid>` (a real
+// file or folder, never a link): this host's entries of dead processes; an `.old-` one is
+// put back when <name> is missing
+void clean_legacy(int dir_fd, const fs::path& dir, const std::string& f, const struct stat& st,
+                  StaleCleanup* out) {
+  if (!S_ISDIR(st.st_mode) && !S_ISREG(st.st_mode)) return;
   char host[256] = {0};
   if (::gethostname(host, sizeof host - 1) != 0 || !host[0])
     std::snprintf(host, sizeof host, "host");
@@ -107,7 +122,6 @@ void clean_legacy(const fs::path& dir, const fs::directory_entry& e, StaleCleanu
   for (const char* c = host; *c; ++c)
     h += (std::isalnum(static_cast<unsigned char>(*c)) || *c == '.') ? *c : '_';
   h += "-";
-  std::error_code ec;
   for (const char* kind : {".tmp-", ".old-"}) {
     const size_t at = f.rfind(kind);
     if (at == std::string::npos || at == 0 || f.compare(at + 5, h.size(), h) != 0) continue;
@@ -117,66 +131,88 @@ void clean_legacy(const fs::path& dir, const fs::directory_entry& e, StaleCleanu
       continue;
     if (!process_gone(static_cast<pid_t>(std::stol(pid_text)))) continue;
     if (kind[1] == 'o') {
-      const fs::path target = dir / f.substr(1, at - 1);
-      if (fs::symlink_status(target, ec).type() == fs::file_type::not_found &&
-          ::rename(e.path().c_str(), target.c_str()) == 0) {
-        out->restored.push_back(target.string());
+      const std::string target = f.substr(1, at - 1);
+      if (missing_at(dir_fd, target) &&
+          ::renameat(dir_fd, f.c_str(), dir_fd, target.c_str()) == 0) {
+        out->restored.push_back((dir / target).string());
         continue;
       }
     }
-    out->removed += fs::remove_all(e.path(), ec) > 0;
+    out->removed += remove_tree_at(dir_fd, f) > 0;
   }
 }
 
-// puts back the reports waiting in `scratch`, renames it to `<scratch>.removing` (which
-// anyone may remove: a kill during the removal never leaves a folder that looks live or
-// unlocked) and removes it
-bool discard(const fs::path& scratch, const fs::path& dir, std::vector<std::string>* restored) {
-  restore_old(scratch, dir, restored);
-  std::error_code ec;
-  fs::path doomed = scratch;
-  doomed += kRemoving;
-  if (::rename(scratch.c_str(), doomed.c_str()) != 0) doomed = scratch;
-  return fs::remove_all(doomed, ec) > 0;
+// puts back the reports waiting in the scratch folder `name` of `dir_fd`, renames it to
+// `<name>.removing` (which anyone may remove: a kill during the removal never leaves a
+// folder that looks live or unlocked) and removes it, never through a link
+bool discard(int dir_fd, const std::string& name, const fs::path& dir,
+             std::vector<std::string>* restored) {
+  restore_old(dir_fd, name, dir, restored);
+  std::string doomed = name + kRemoving;
+  if (::renameat(dir_fd, name.c_str(), dir_fd, doomed.c_str()) != 0) doomed = name;
+  return remove_tree_at(dir_fd, doomed) > 0;
 }
 
-// the scratch folders, old-style leftovers and old-style part files of one folder
-void clean_folder(const fs::path& dir, bool top, StaleCleanup* out) {
-  std::error_code ec;
+// `<file>.part-<pid>-<thread>`, as earlier versions wrote them beside the file
+bool legacy_part(const std::string& f) {
+  const size_t at = f.rfind(".part-");
+  if (at == std::string::npos || at == 0) return false;
+  const std::string rest = f.substr(at + 6);
+  const size_t dash = rest.find('-');
+  return dash != std::string::npos && dash > 0 && dash + 1 < rest.size() &&
+         rest.find_first_not_of("0123456789-") == std::string::npos &&
+         rest.find('-', dash + 1) == std::string::npos;
+}
+
+// the scratch folders, old-style leftovers and old-style part files of the open folder
+// `dir_fd` (`dir`): only entries armstudy names itself, each a real folder or file (a link
+// of such a name is left alone), never anything through a link. In the output folder
+// itself (`top`) a part file is one of a run-level file's; in a case folder any.
+void clean_folder(int dir_fd, const fs::path& dir, bool top, StaleCleanup* out) {
   const std::string mine = std::string(kPrefix) + process_tag();
-  std::vector<fs::directory_entry> entries;
-  for (const auto& e : fs::directory_iterator(dir, ec)) entries.push_back(e);
-  for (const auto& e : entries) {
-    const std::string f = e.path().filename().string();
+  for (const std::string& f : list_folder(dir_fd)) {
+    struct stat st {};
+    if (!stat_at(dir_fd, f, &st)) continue;
+    const bool folder = S_ISDIR(st.st_mode);
     if (f.rfind(kPrefix, 0) == 0 && f.size() > kRemoving.size() &&
         f.compare(f.size() - kRemoving.size(), kRemoving.size(), kRemoving) == 0) {
-      out->removed += fs::remove_all(e.path(), ec) > 0;  // its reports were put back already
+      if (folder) out->removed += remove_tree_at(dir_fd, f) > 0;  // its reports are back
     } else if (f.rfind(kPrefix, 0) == 0) {
-      if (f == mine || !e.is_directory(ec)) continue;
+      if (f == mine || !folder) continue;
       int fd = -1;
-      if (!lock_is_free(e.path() / "lock", &fd)) continue;  // a live run's
+      if (!lock_is_free(dir_fd, f, &fd)) continue;  // a live run's
       // no lock file: being set up right now (microseconds), or a kill came in between
-      if (fd < 0 && !older_than(e.path(), std::chrono::minutes(1))) continue;
-      out->removed += discard(e.path(), dir, &out->restored);
+      if (fd < 0 && !older_than(st, std::chrono::minutes(1))) continue;
+      out->removed += discard(dir_fd, f, dir, &out->restored);
       if (fd >= 0) ::close(fd);
     } else if (top && f.size() > 1 && f[0] == '.') {
-      clean_legacy(dir, e, out);
-    } else if (const size_t at = f.rfind(".part-");
-               at != std::string::npos && e.is_regular_file(ec)) {
-      // `<file>.part-<pid>-<thread>` beside the file, as earlier versions wrote them
-      const std::string rest = f.substr(at + 6);
-      if (rest.find_first_not_of("0123456789-") == std::string::npos &&
-          older_than(e.path(), kLegacyAge))
-        out->removed += fs::remove(e.path(), ec);
+      clean_legacy(dir_fd, dir, f, st, out);
+    } else if (S_ISREG(st.st_mode) && legacy_part(f) && older_than(st, kLegacyAge)) {
+      const std::string base = f.substr(0, f.rfind(".part-"));
+      const auto run_level = run_level_outputs({});
+      if (!top || base.ends_with(".svg") ||
+          std::find(run_level.begin(), run_level.end(), base) != run_level.end())
+        out->removed += ::unlinkat(dir_fd, f.c_str(), 0) == 0;
     }
   }
+}
+
+// a sub-folder of the output folder that armstudy wrote, where runs leave scratch folders
+// and part files: a case folder or the sweep report (report/owned_output.hpp)
+bool own_sub_folder(const fs::path& dir, const std::string& name) {
+  return name == "sweep" ? foreign_run_level_output(dir, name).empty()
+                         : foreign_case_folder(dir / name, name).empty();
 }
 
 void remove_own_scratch_locked() {
   Registry& r = registry();
   std::lock_guard<std::mutex> lock(r.mu);
   for (auto& [dir, s] : r.by_dir) {
-    discard(s.path, dir, nullptr);
+    const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir_fd >= 0) {
+      discard(dir_fd, s.path.filename().string(), dir, nullptr);
+      ::close(dir_fd);
+    }
     if (s.lock_fd >= 0) ::close(s.lock_fd);
   }
   r.by_dir.clear();
@@ -281,13 +317,24 @@ void remove_own_scratch() {
 
 StaleCleanup remove_stale_scratch(const fs::path& dir) {
   StaleCleanup out;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return out;
-  clean_folder(dir, true, &out);
-  std::vector<fs::path> subs;
-  for (const auto& e : fs::directory_iterator(dir, ec))
-    if (e.is_directory(ec) && e.path().filename().string()[0] != '.') subs.push_back(e.path());
-  for (const auto& s : subs) clean_folder(s, false, &out);
+  // the output folder as the user named it (a link given as --out is followed: it is the
+  // user's choice); below it, nothing through a link
+  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir_fd < 0) return out;
+  clean_folder(dir_fd, dir, true, &out);
+  for (const std::string& name : list_folder(dir_fd)) {
+    if (name[0] == '.') continue;
+    const int sub = open_folder_at(dir_fd, name);
+    if (sub < 0) continue;  // a file, or a link (to a folder elsewhere, say): left alone
+    // only folders with something armstudy names itself in them are checked further
+    const auto names = list_folder(sub);
+    const bool candidates = std::any_of(names.begin(), names.end(), [](const std::string& f) {
+      return f.rfind(kPrefix, 0) == 0 || legacy_part(f);
+    });
+    if (candidates && own_sub_folder(dir, name)) clean_folder(sub, dir / name, false, &out);
+    ::close(sub);
+  }
+  ::close(dir_fd);
   return out;
 }
 

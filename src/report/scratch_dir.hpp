@@ -41,13 +41,16 @@ struct StaleCleanup {
   std::vector<std::string> restored;  ///< case folders put back from a killed run's `old/`
 };
 
-/// In `dir` and each of its sub-folders: removes the scratch folders whose lock no process
+/// In `dir` and each of its sub-folders that armstudy wrote (a case folder, the sweep
+/// report: report/owned_output.hpp): removes the scratch folders whose lock no process
 /// holds (after moving each report of their `old/` back into `dir` when `dir` has none of
-/// that name) and the temporary files (`*.part-<tag>-*`) of processes without a live
-/// scratch folder in `dir`. Also handles what earlier armstudy versions left: hidden
+/// that name). Also handles what earlier armstudy versions left: hidden
 /// `.<name>.old-<host>-<pid>` folders are put back the same way, and
-/// `.<name>.tmp-<host>-<pid>` entries and `*.part-<pid>-<n>` files older than ten minutes
-/// are removed.
+/// `.<name>.tmp-<host>-<pid>` entries and `<file>.part-<pid>-<n>` files older than ten
+/// minutes are removed (directly in `dir` only those of a run-level file). Only entries of
+/// those names that are real folders or files are touched, each through its open folder
+/// (report/safe_remove.hpp): a link is never followed nor removed, a user's folder never
+/// entered.
 StaleCleanup remove_stale_scratch(const std::filesystem::path& dir);
 
 /// Held while a case folder is swapped into place and while a signal's clean-up runs.

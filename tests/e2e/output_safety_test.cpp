@@ -19,11 +19,13 @@
 
 #include "report/results_record.hpp"
 #include "testing/files.hpp"
+#include "testing/output_folder.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 using armstudy::testing::fresh_dir;
 using armstudy::testing::slurp;
+using armstudy::testing::snapshot;
 
 const fs::path kSource = ARMSTUDY_SOURCE_DIR;
 const std::string kBin = ARMSTUDY_BINARY;
@@ -46,22 +48,8 @@ CmdRun shell(const std::string& command) {
 
 CmdRun armstudy(const std::string& args) { return shell(kBin + " " + args); }
 
-// placement-example-2 (a quick case) under another name
 fs::path write_case(const fs::path& dir, const std::string& name) {
-  std::string text = slurp(kSource / "reports/cases/placement-example-2.yaml");
-  const size_t at = text.find("\nname: ");
-  text.replace(at + 7, text.find('\n', at + 1) - at - 7, name);
-  const fs::path p = dir / (name + ".yaml");
-  std::ofstream(p) << text;
-  return p;
-}
-
-// every file under `dir` (hidden ones included) with its bytes
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
-  return files;
+  return armstudy::testing::quick_case(dir, name);
 }
 
 // what a failed or stopped run must never leave: temporary files and scratch folders
