@@ -2,13 +2,16 @@
 """Checks an armstudy output folder after a run was killed, for the crash-safety tests.
 
 usage: crash_check.py OUT CASE_NAME SHA_OLD SHA_NEW [--no-hidden]
+       crash_check.py --serve
+
 
 Passes (exit 0) when OUT/CASE_NAME is a complete report, the earlier one (its results.json
 names the case file SHA_OLD) or the new one (SHA_NEW): results.json parses and every file
 it lists is there with its size and sha256 (a missing folder fails). The run-level files
 that exist are complete: junit.xml parses as XML, sweep.json and results.json as JSON,
 index.html ends with </html>. With --no-hidden nothing hidden (a killed run's scratch
-folder or an earlier version's .<case>.old-*) may be left in OUT. Prints what is wrong.
+folder or an earlier version's .<case>.old-*) may be left in OUT, nor a *.part-* file in OUT
+or the case folder. Prints what is wrong.
 """
 import hashlib
 import json
@@ -57,11 +60,26 @@ def problems(out, name, shas, no_hidden):
         found.append(f"{out / 'index.html'}: half-written")
     if no_hidden:
         found += [f"{p}: left behind" for p in out.iterdir() if p.name.startswith(".")]
-        found += [f"{p}: left behind" for p in out.rglob("*.part-*")]
+        # (a user's folder beside the cases may hold files of any name)
+        found += [f"{p}: left behind" for p in out.glob("*.part-*")]
+        found += [f"{p}: left behind" for p in case.rglob("*.part-*")]
     return found
 
 
+def serve():
+    for line in sys.stdin:
+        out, name, old, new, *flags = line.rstrip("\n").split("\t")
+        out = pathlib.Path(out)
+        if not ("--aside-ok" in flags and not (out / name).exists()):
+            for f in problems(out, name, {old, new}, "--no-hidden" in flags):
+                print(f)
+        print(".", flush=True)
+    return 0
+
+
 def main(argv):
+    if argv[1:] == ["--serve"]:
+        return serve()
     if len(argv) < 5:
         print(__doc__, file=sys.stderr)
         return 2

@@ -10,6 +10,10 @@
 # exits 3 saying "No space left on device", and leaves no temporary file and the earlier
 # report as it was.
 #
+# Beside the case, the output folder holds a user's folder and file and a link to an outside
+# folder holding *.part-N files and .armstudy-* folders: after every kill and the next run,
+# each of them is as it was, byte for byte.
+#
 # usage: fault_injection_test.sh SOURCE_DIR ARMSTUDY
 set -euo pipefail
 src=$1
@@ -18,10 +22,24 @@ command -v strace >/dev/null || { echo "strace is missing (scripts/packages.txt)
 work=$(mktemp -d "${TMPDIR:-/tmp}/armstudy_faults.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 export LP_NUM_THREADS=1
-check="python3 $src/tests/e2e/crash_check.py"
+# one checker for every state (crash_check.py --serve): a Python start per check took a
+# third of the test's time
+coproc CHECKER { python3 "$src/tests/e2e/crash_check.py" --serve; }
+# sets $state to what is wrong with OUT's case folder crash-case ("" when complete)
+check() {  # OUT SHA_OLD SHA_NEW [--no-hidden] [--aside-ok]
+  local IFS=$'\t' line
+  printf '%s\n' "$1"$'\t'crash-case$'\t'"${*:2}" >&"${CHECKER[1]}"
+  state=""
+  while true; do
+    IFS= read -r line <&"${CHECKER[0]}" || { echo "FAIL: crash_check.py stopped"; exit 1; }
+    [ "$line" = . ] && break
+    state+="$line"$'\n'
+  done
+}
 
-# the case (a placement study on a coarse grid: a run takes about 0.05 s of CPU and writes
-# 13 files) and a second case whose run is "the next run"
+# the case (a placement study on the coarsest grid that still solves: a run takes about
+# 0.1 s of CPU, mostly armstudy's start, and writes 17 files) and a second case whose run is
+# "the next run"
 cat > "$work/case.yaml" <<'EOF'
 study: placement
 name: crash-case
@@ -29,15 +47,41 @@ placement:
   length_fraction: 0.8
   programs: [cycloidal]
   configurations: [1]
-  nx_s: 4
-  phi_step_deg: 15
-  samples: 201
+  nx_s: 3
+  phi_step_deg: 30
+  samples: 51
   refine: false
   threads: 1
-  map: {nx: 4, ny: 3}
+  map: {nx: 2, ny: 2}
 EOF
 sed 's/^name: .*/name: next-run/' "$work/case.yaml" > "$work/next.yaml"
 "$bin" run --no-render --out "$work/pristine" "$work/case.yaml" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+
+# what is not armstudy's: a user's folder and file beside the cases, and a link in the
+# output folder to an outside folder holding what looks like killed runs' leftovers
+# (*.part-N files, stale .armstudy-* scratch folders, one with a "report" to put back)
+mkdir -p "$work/pristine/user-data/sub" "$work/outside/.armstudy-host-1-0badc0de/old/crash-case" \
+  "$work/outside/.armstudy-host-2-0badc0de.removing"
+echo "a user's notes" > "$work/pristine/user-data/notes.txt"
+echo "hidden" > "$work/pristine/user-data/.config"
+echo "data" > "$work/pristine/user-data/sub/data.part-1-2"
+echo "beside the cases" > "$work/pristine/notes.txt"
+echo "{}" > "$work/outside/.armstudy-host-1-0badc0de/old/crash-case/results.json"
+echo "a download" > "$work/outside/video.part-1"
+echo "a user's file" > "$work/outside/summary.md.part-1-2"
+find "$work/outside" "$work/pristine/user-data" -exec touch -h -d '1 hour ago' {} +
+ln -s "$work/outside" "$work/pristine/outside-link"
+# every entry of the user's (links not followed) with its type and checksum
+user_files() {  # OUT
+  (cd "$1" && find user-data notes.txt outside-link "$work/outside" -printf '%p %y %l\n' |
+     sort && find user-data notes.txt "$work/outside" -type f -print0 | sort -z |
+     xargs -0 sha256sum)
+}
+users=$(user_files "$work/pristine")
+# "" when the user's files are as they were, else what changed
+user_changes() {  # OUT
+  diff <(echo "$users") <(user_files "$1") || true
+}
 sha_old=$(sha256sum "$work/case.yaml" | cut -d' ' -f1)
 echo "# changed: the new report differs from the earlier one" >> "$work/case.yaml"
 sha_new=$(sha256sum "$work/case.yaml" | cut -d' ' -f1)
@@ -68,8 +112,8 @@ full_disk() {  # N
   strace -f -qq --seccomp-bpf -o /dev/null -e trace=write -e inject=write:error=ENOSPC:when="$n" \
     "$bin" run --no-render --out "$out" "$work/case.yaml" > "$work/full.log" 2>&1 || code=$?
   runs=$((runs + 1))
-  local state
-  state=$($check "$out" crash-case "$sha_old" "$sha_new" --no-hidden || true)
+  check "$out" "$sha_old" "$sha_new" --no-hidden
+  state+=$(user_changes "$out")
   # a write into the case's scratch folder: the earlier report stays (a write after the
   # swap, of index.html, summary.md or junit.xml, fails with the new report in place)
   if [ $code != 3 ] || ! grep -q ": No space left on device" "$work/full.log" || [ -n "$state" ] ||
@@ -99,9 +143,17 @@ one() {  # mode syscall N
   fi
   # what the kill left: the run-level files complete; the report complete or, with the
   # two-rename swap, waiting in the scratch folder for the next run to put it back
-  local state
-  state=$($check "$out" crash-case "$sha_old" "$sha_new" || true)
-  if [ -n "$state" ] && ! { [ "$mode" = two-renames ] && [ ! -e "$out/crash-case" ]; }; then
+  local changed
+  changed=$(user_changes "$out")
+  if [ -n "$changed" ]; then
+    echo "FAIL ($mode, kill at $sc #$n): the user's files changed:"; echo "$changed"
+    failures=$((failures + 1))
+    return
+  fi
+  local aside=()
+  [ "$mode" = two-renames ] && aside=(--aside-ok)
+  check "$out" "$sha_old" "$sha_new" "${aside[@]}"
+  if [ -n "$state" ]; then
     echo "FAIL ($mode, kill at $sc #$n) right after the kill:"; echo "$state"
     failures=$((failures + 1))
     return
@@ -111,8 +163,12 @@ one() {  # mode syscall N
     failures=$((failures + 1))
     return
   fi
-  if ! state=$($check "$out" crash-case "$sha_old" "$sha_new" --no-hidden); then
+  check "$out" "$sha_old" "$sha_new" --no-hidden
+  if [ -n "$state" ]; then
     echo "FAIL ($mode, kill at $sc #$n) after the next run:"; echo "$state"; cat "$work/next.log"
+    failures=$((failures + 1))
+  elif changed=$(user_changes "$out") && [ -n "$changed" ]; then
+    echo "FAIL ($mode, kill at $sc #$n): the next run changed the user's files:"; echo "$changed"
     failures=$((failures + 1))
   fi
 }
@@ -126,8 +182,10 @@ for mode in exchange two-renames; do
   done
 done
 for n in $(targets write); do full_disk "$n"; done
-# the earlier report really was replaced when nothing was killed
-$check "$work/count" crash-case "$sha_new" "$sha_new" --no-hidden
+# the earlier report really was replaced when nothing was killed, the user's files kept
+check "$work/count" "$sha_new" "$sha_new" --no-hidden
+[ -z "$state" ] || { echo "FAIL: the uninterrupted run:"; echo "$state"; exit 1; }
+[ -z "$(user_changes "$work/count")" ] || { echo "FAIL: a run changed the user's files"; user_changes "$work/count"; exit 1; }
 echo "fault injection: $runs killed runs, $failures failure(s)"
 for sc in ${calls//,/ }; do printf '  %s: %s\n' "$sc" "$(targets "$sc" | wc -l)"; done
 [ "$failures" = 0 ]
