@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The browser armstudy starts for --pdf is tied to it. A stand-in for Chromium (it writes
-# half a PDF to --print-to-pdf, starts a helper process in its group, and hangs) makes the
-# timing deterministic:
+# The browser armstudy starts for --pdf is tied to it. A stand-in for Chromium (it starts a
+# helper process in its group and hangs; for the last run it answers the DevTools protocol
+# and prints) makes the timing deterministic:
 #  - SIGINT during the print: exit 130, the browser and its helper are gone, its profile
 #    is removed, no report.pdf, no .part file, no scratch folder; the report is complete.
 #  - SIGKILL of armstudy during the print: the browser dies with it (PR_SET_PDEATHSIG),
@@ -20,19 +20,45 @@ cleanup() {
 }
 trap cleanup EXIT
 export LP_NUM_THREADS=1 FAKE_STATE=$state TMPDIR=$work/tmp
+cat > "$work/fake-devtools.py" <<'EOF'
+# answers the DevTools messages armstudy sends on fd 3 (each ended by NUL) on fd 4, as
+# headless Chromium does, and prints every page as a minimal PDF
+import base64, json, os
+buf = b""
+while True:
+    data = os.read(3, 65536)
+    if not data:
+        break
+    buf += data
+    while b"\0" in buf:
+        raw, buf = buf.split(b"\0", 1)
+        m = json.loads(raw)
+        result, events = {}, []
+        method = m.get("method")
+        if method == "Browser.close":
+            raise SystemExit(0)
+        if method == "Target.createTarget":
+            result = {"targetId": "t1"}
+        elif method == "Target.attachToTarget":
+            result = {"sessionId": "s1"}
+        elif method == "Page.navigate":
+            result = {"frameId": "f1"}
+            events = [{"method": "Page.loadEventFired", "params": {}, "sessionId": "s1"}]
+        elif method == "Page.printToPDF":
+            result = {"data": base64.b64encode(b"%PDF-1.4\n%%EOF\n").decode()}
+        answer = {"id": m["id"], "result": result}
+        if "sessionId" in m:
+            answer["sessionId"] = m["sessionId"]
+        for x in [answer] + events:
+            os.write(4, json.dumps(x).encode() + b"\0")
+EOF
 cat > "$work/fake-chromium" <<'EOF'
 #!/bin/sh
-# stands in for headless Chromium: FAKE_MODE=hang writes half a PDF and waits forever (with
-# a helper in its process group); FAKE_MODE=print writes a whole one and exits
-out=""
-for a in "$@"; do
-  case $a in --print-to-pdf=*) out=${a#--print-to-pdf=} ;; esac
-done
+# stands in for headless Chromium: FAKE_MODE=hang waits forever (with a helper in its
+# process group); FAKE_MODE=print speaks the DevTools protocol and prints every page
 if [ "${FAKE_MODE:-hang}" = print ]; then
-  printf '%%PDF-1.4\n%%%%EOF\n' > "$out"
-  exit 0
+  exec python3 "$(dirname "$0")/fake-devtools.py"
 fi
-printf '%%PDF-1.4 half' > "$out"
 sleep 600 &
 echo $! > "$FAKE_STATE/helper.pid"
 echo $$ > "$FAKE_STATE/browser.pid.tmp" && mv "$FAKE_STATE/browser.pid.tmp" "$FAKE_STATE/browser.pid"
