@@ -80,7 +80,8 @@ bool exchange_unsupported(int e) { return e == EINVAL || e == ENOSYS || e == EOP
 // signal clean-up) moves back if a kill comes between the two renames.
 // Only a case folder armstudy wrote for this case is ever replaced: anything else at
 // `target` (a user's folder or file of the case's name) is refused, checked before the swap
-// and, for one that appeared meanwhile, after the exchange (which is then undone).
+// and, for one that appeared meanwhile, after the exchange or the move aside (which is then
+// undone).
 void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::path& old_slot,
                      const std::string& name) {
   std::error_code ec;
@@ -116,6 +117,10 @@ void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::pa
       if (e == ENOENT) continue;
       throw std::runtime_error(
           report::system_error_text("move the earlier report aside from", target, e));
+    }
+    if (const std::string why = report::foreign_case_folder(old_slot, name); !why.empty()) {
+      ::rename(old_slot.c_str(), target.c_str());  // put there since the check: back
+      refuse(why);
     }
     if (::rename(fresh.c_str(), target.c_str()) != 0) {
       e = errno;
