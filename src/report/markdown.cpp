@@ -14,7 +14,7 @@ std::string md_cell(const std::string& s) {
     else if (cp == '\n' || cp == '\r' || cp == '\t')
       o += ' ';
     else if (cp < 0x20 || (cp >= 0x7f && cp <= 0x9f))  // controls and bytes that are not UTF-8
-      o += hex_byte(static_cast<unsigned char>(bytes[0]));
+      for (const char b : bytes) o += hex_byte(static_cast<unsigned char>(b));
     else
       o += bytes;
   });
