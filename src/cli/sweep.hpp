@@ -6,7 +6,7 @@
 ///
 /// ```yaml
 /// sweep: placement-link-ratio      # the sweep's name
-/// base: ../cases/placement-example-2.yaml   # relative to this file
+/// base: placement-example-2.yaml  # relative to this file, inside its folder (or --base-dir)
 /// mode: grid                       # grid (every combination) or zip (i-th with i-th)
 /// axes:
 ///   - path: arm.links[2].length
