@@ -14,6 +14,41 @@ double estimated_seconds(const LoadedCase& c, bool render) {
   return seconds;
 }
 
+double estimated_memory_bytes(const LoadedCase& c, bool render) {
+  double bytes = 0;
+  for (const cases::Demand& d : c.demands) {
+    bytes += d.memory_bytes;
+    if (render) {
+      // a strip image and its PNG rows, RGB (as cases::over_budget counts them)
+      const int strip = std::max(c.info.render.frames, d.strip_frames);
+      bytes += 2.0 * 3.0 * strip * c.info.render.frame.width * c.info.render.frame.height;
+    }
+  }
+  return bytes;
+}
+
+void MemoryGate::acquire(double bytes) {
+  std::unique_lock<std::mutex> lock(mu_);
+  freed_.wait(lock, [&] { return running_ == 0 || in_use_ + bytes <= budget_; });
+  in_use_ += bytes;
+  ++running_;
+}
+
+void MemoryGate::release(double bytes) {
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    in_use_ -= bytes;
+    --running_;
+    if (running_ == 0) in_use_ = 0;  // no rounding left over
+  }
+  freed_.notify_all();
+}
+
+double MemoryGate::in_use() const {
+  std::lock_guard<std::mutex> lock(mu_);
+  return in_use_;
+}
+
 std::vector<size_t> longest_first(const std::vector<LoadedCase>& cases, bool render) {
   std::vector<double> seconds(cases.size());
   for (size_t i = 0; i < cases.size(); ++i) seconds[i] = estimated_seconds(cases[i], render);

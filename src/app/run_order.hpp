@@ -3,7 +3,9 @@
 /// finish on each core is a short one. Only the order changes; every case's output is the
 /// same in any order.
 
+#include <condition_variable>
 #include <cstddef>
+#include <mutex>
 #include <vector>
 
 #include "app/pipeline.hpp"
@@ -17,6 +19,28 @@ inline constexpr double kFramesPerSecond = 40.0;
 /// the work a core does per second, plus, when `render`, the frames it renders at
 /// kFramesPerSecond. 0 when no demand says.
 double estimated_seconds(const LoadedCase& c, bool render);
+
+/// The memory the case holds at once, estimated from its loader's demands as the budget
+/// judges it (the solve's arrays, plus its strip's pixels when `render`).
+double estimated_memory_bytes(const LoadedCase& c, bool render);
+
+/// The run's memory budget shared by its jobs: acquire(bytes) waits until `bytes` fit beside
+/// what the running cases hold within the budget (or nothing runs: a case beyond the
+/// budget alone, allowed with --allow-large, runs alone); release(bytes) gives them back.
+class MemoryGate {
+ public:
+  explicit MemoryGate(double budget_bytes) : budget_(budget_bytes) {}
+  void acquire(double bytes);
+  void release(double bytes);
+  double in_use() const;
+
+ private:
+  const double budget_;
+  double in_use_ = 0;
+  int running_ = 0;
+  mutable std::mutex mu_;
+  std::condition_variable freed_;
+};
 
 /// Indices into `cases`, the longest estimate first; cases of equal estimate keep their
 /// order.

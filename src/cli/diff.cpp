@@ -9,6 +9,7 @@
 #include "app/run_case.hpp"
 #include "cases/case_error.hpp"
 #include "cli/diff_frames.hpp"
+#include "report/text_escape.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::app {
@@ -305,12 +306,17 @@ std::vector<CaseOutput> read_run(const fs::path& dir) {
     throw DiffInputError(dir.string() +
                          ": not a folder; expected an output folder of 'armstudy run' or 'merge'");
   std::vector<std::string> problems;
-  std::vector<CaseOutput> out = collect_outputs({dir}, &problems);
+  std::vector<CaseOutput> out;
+  try {
+    out = collect_outputs({dir}, &problems);
+  } catch (const InputLimitError& e) {
+    throw DiffInputError(report::terminal_text(e.what()));
+  }
   // collect_outputs read every shared key of each file strictly (a misspelt, missing or
   // mistyped one is a problem named there), so the records below are whole
   if (!problems.empty()) {
     std::string msg;
-    for (const auto& p : problems) msg += (msg.empty() ? "" : "\n") + p;
+    for (const auto& p : problems) msg += (msg.empty() ? "" : "\n") + report::terminal_text(p);
     throw DiffInputError(msg);
   }
   if (out.empty())

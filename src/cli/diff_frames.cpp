@@ -1,10 +1,13 @@
 #include "cli/diff_frames.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
+#include "cli/confined_path.hpp"
 #include "scene/image.hpp"
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
@@ -41,6 +44,28 @@ void outline(scene::Image* img, int x0, int y0, int x1, int y1, int pad, int wid
   }
 }
 
+// why the PNG at p is not decoded ("" if it may be): not a PNG, or more pixels than a frame
+// may have (read from its header before decoding)
+std::string png_header_problem(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  unsigned char h[24] = {};
+  in.read(reinterpret_cast<char*>(h), sizeof h);
+  static const unsigned char kSig[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (in.gcount() != sizeof h || !std::equal(kSig, kSig + 8, h) ||
+      std::string(reinterpret_cast<char*>(h + 12), 4) != "IHDR")
+    return p.string() + ": not a PNG image; expected a frame armstudy rendered";
+  const auto be32 = [](const unsigned char* b) {
+    return (std::uint64_t(b[0]) << 24) | (std::uint64_t(b[1]) << 16) | (std::uint64_t(b[2]) << 8) |
+           std::uint64_t(b[3]);
+  };
+  const std::uint64_t w = be32(h + 16), hgt = be32(h + 20);
+  if (double(w) * double(hgt) > kMaxFramePixels)
+    return p.string() + ": a PNG of " + std::to_string(w) + " x " + std::to_string(hgt) +
+           " px; expected a frame of at most " + std::to_string(std::uint64_t(kMaxFramePixels)) +
+           " px (docs/budgets.md), not decoded";
+  return "";
+}
+
 }  // namespace
 
 report::FrameDiff compare_frame(const fs::path& base, const fs::path& now, const std::string& file,
@@ -49,6 +74,18 @@ report::FrameDiff compare_frame(const fs::path& base, const fs::path& now, const
   report::FrameDiff d;
   d.file = file;
   const fs::path a = base / file, b = now / file;
+  // a path from results.json is read only inside its case folder, and only a regular file
+  for (const auto& [folder, p] : {std::pair{base, a}, std::pair{now, b}}) {
+    std::string why = confined_problem(folder, file);
+    std::error_code ec;
+    if (why.empty() && fs::exists(p, ec) && !fs::is_regular_file(p, ec))
+      why = "not a regular file; expected a PNG frame";
+    if (!why.empty()) {
+      d.error = (folder / "results.json").string() + ": frame '" + file + "' is " + why;
+      d.beyond = true;
+      return d;
+    }
+  }
   std::string ab, bb;
   if (!read_bytes(a, &ab)) {
     d.error = a.string() + ": cannot read the frame";
@@ -64,6 +101,12 @@ report::FrameDiff compare_frame(const fs::path& base, const fs::path& now, const
     d.identical = true;
     return d;
   }
+  for (const auto& p : {a, b})
+    if (std::string why = png_header_problem(p); !why.empty()) {
+      d.error = why;
+      d.beyond = true;
+      return d;
+    }
   scene::Image ia, ib;
   try {
     ia = scene::read_png(a);

@@ -18,6 +18,8 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <new>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -27,16 +29,21 @@
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
 #include "app/run_order.hpp"
+#include "cases/budget.hpp"
 #include "cases/case_error.hpp"
+#include "cases/case_info.hpp"
+#include "cli/confined_path.hpp"
 #include "cli/diff.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/merge.hpp"
 #include "cli/process_memory.hpp"
 #include "cli/progress.hpp"
 #include "cli/sweep.hpp"
+#include "cli/sweep_manifest.hpp"
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
 #include "report/sweep_report.hpp"
+#include "report/text_escape.hpp"
 #include "scene/frame_worker.hpp"
 #include "scene/frames.hpp"
 #include "scene/model_files.hpp"
@@ -112,9 +119,39 @@ bool parse_shard(const std::string& text, int* index, int* count) {
   return *count >= 1 && *index >= 0 && *index < *count;
 }
 
+// every file results.json lists is there, in the case folder, a regular file of its size,
+// and (up to 4 MiB each, where hashing is cheap) of its sha256
+bool listed_files_intact(const std::filesystem::path& folder,
+                         const armstudy::report::ResultsRecord& r) {
+  namespace fs = std::filesystem;
+  constexpr long long kHashedBytes = 4ll << 20;
+  std::vector<std::string> frames = r.frames;
+  for (const auto& f : r.files) {
+    if (!armstudy::app::confined_problem(folder, f.path).empty()) return false;
+    std::error_code ec;
+    const fs::path p = folder / f.path;
+    if (!fs::is_regular_file(p, ec) || static_cast<long long>(fs::file_size(p, ec)) != f.bytes ||
+        ec)
+      return false;
+    if (f.bytes <= kHashedBytes) {
+      std::ifstream in(p, std::ios::binary);
+      std::ostringstream ss;
+      ss << in.rdbuf();
+      if (armstudy::cases::sha256_hex(ss.str()) != f.sha256) return false;
+    }
+  }
+  for (const auto& f : r.frames) {
+    std::error_code ec;
+    if (!armstudy::app::confined_problem(folder, f).empty() || !fs::is_regular_file(folder / f, ec))
+      return false;
+  }
+  return true;
+}
+
 // true if out_dir/<name>/results.json is what this run would write again: the same case
-// file contents, armstudy version and commit, and render option, and the case passed (a
-// failed case is always redone). A missing report.pdf is printed by finish_reports.
+// file contents, armstudy version and commit, and render option, the case passed (a
+// failed case is always redone) and the files it lists are intact. A missing report.pdf is printed
+// by finish_reports.
 bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
                   const armstudy::app::RunOptions& options) {
   const auto rj = out_dir / c.info.name / "results.json";
@@ -125,7 +162,7 @@ bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
     const std::string commit = armstudy::git_commit();
     return r.case_info.sha256 == c.info.sha256 && r.armstudy_version == armstudy::kVersion &&
            r.git_commit.value_or("") == commit && r.run_options.render == options.render &&
-           armstudy::app::case_passed(r);
+           armstudy::app::case_passed(r) && listed_files_intact(out_dir / c.info.name, r);
   } catch (const std::exception&) {
     return false;
   }
@@ -165,8 +202,32 @@ bool refuse_foreign_outputs(const std::filesystem::path& out_dir,
   return !foreign.empty();
 }
 
+// the manifest of the sweep whose case folder is run, copied into the output folder, where
+// merge finds it (an earlier sweep's is replaced; a file armstudy did not write is not)
+int copy_manifest(const std::vector<std::string>& run_paths, const std::filesystem::path& out) {
+  namespace fs = std::filesystem;
+  for (const auto& p : run_paths) {
+    if (!fs::is_directory(p)) continue;
+    try {
+      const auto m = armstudy::app::read_manifest(fs::path(p) / armstudy::app::kManifestName);
+      if (!m) continue;
+      const fs::path dst = out / armstudy::app::kManifestName;
+      armstudy::app::read_manifest(dst);  // throws for a file that is not a manifest
+      fs::create_directories(out);
+      armstudy::app::write_file_atomic(dst, armstudy::app::manifest_text(*m));
+      return kExitDone;
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "armstudy: %s; nothing was written\n",
+                   armstudy::report::terminal_text(e.what()).c_str());
+      return kExitBadInput;
+    }
+  }
+  return kExitDone;
+}
+
 int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
-            int jobs, const std::string& shard, bool force, bool allow_large) {
+            int jobs, const std::string& shard, bool force, bool allow_large,
+            const std::vector<std::string>& run_paths) {
   std::vector<LoadedCase> cases;
   if (!load_all(paths, &cases, allow_large)) {
     std::fprintf(stderr, "nothing was written: fix the case files above\n");
@@ -203,6 +264,7 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   }
   if (refuse_foreign_outputs(options.out_dir, names, run_level_names(false, sweep_points)))
     return kExitBadInput;
+  if (const int code = copy_manifest(run_paths, options.out_dir); code != kExitDone) return code;
   // what killed runs on this host left behind (hidden temporary folders and files)
   {
     const auto stale = armstudy::app::remove_stale_outputs(options.out_dir);
@@ -242,31 +304,58 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   std::atomic<size_t> next{0};
   std::mutex mu;
   int worst = kExitDone;
+  // cases that ended in an error wrote no results.json: they are failed cases in summary.md
+  // and junit.xml all the same
+  std::vector<armstudy::app::CaseOutput> errored;
+  // the run's memory budget covers all its jobs: a case starts when its estimate fits
+  // beside the running ones' (a case beyond it alone, with --allow-large, runs alone)
+  armstudy::app::MemoryGate memory(armstudy::cases::kMemoryBudgetBytes);
   auto worker = [&] {
     for (size_t i = next++; i < cases.size(); i = next++) {
       LoadedCase& c = cases[order[i]];
+      const double need = armstudy::app::estimated_memory_bytes(c, options.render);
+      memory.acquire(need);
       int code = kExitDone;
-      std::string line;
+      std::string line, error;
+      const std::string name = armstudy::report::terminal_text(c.info.name);
       try {
         const auto o = armstudy::app::run_case(c, case_options, progress.task(c.info.name));
         code = o.exit_code;
         char secs[32];
         std::snprintf(secs, sizeof secs, "%.1f s", o.seconds);
-        line = (code == 0 ? "done: " : "FAILED: ") + c.info.name + " (" + c.info.study + ", " +
-               secs + ") -> " + o.folder.string() + (o.message.empty() ? "" : "\n  " + o.message);
+        line = (code == 0 ? "done: " : "FAILED: ") + name + " (" + c.info.study + ", " + secs +
+               ") -> " + o.folder.string() +
+               (o.message.empty() ? "" : "\n  " + armstudy::report::terminal_text(o.message));
       } catch (const armstudy::report::ForeignOutput& e) {
         code = kExitBadInput;  // a user's folder of the case's name appeared during the run
-        line = "ERROR: " + c.info.name + ": " + e.what();
+        error = e.what();
+        line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
       } catch (const armstudy::scene::ModelError& e) {
         code = kExitBadInput;  // MuJoCo cannot load the arm the case describes
-        line = "ERROR: " + c.info.name + " (" + c.info.path + "): " + e.what();
+        error = e.what();
+        line =
+            "ERROR: " + name + " (" + c.info.path + "): " + armstudy::report::terminal_text(error);
+      } catch (const std::bad_alloc&) {
+        code = kExitRuntime;
+        error = "out of memory: the case's estimate is " + armstudy::cases::bytes_text(need) +
+                " and the run's memory budget of " +
+                armstudy::cases::bytes_text(armstudy::cases::kMemoryBudgetBytes) +
+                " covers all its jobs (docs/budgets.md); run it with fewer --jobs or on a "
+                "machine with more free memory";
+        line = "ERROR: " + name + ": " + error;
       } catch (const std::exception& e) {
         code = kExitRuntime;
-        line = "ERROR: " + c.info.name + ": " + e.what();
+        error = e.what();
+        line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
       }
+      memory.release(need);
       progress.line(line);
       std::lock_guard<std::mutex> lock(mu);
       worst = std::max(worst, code);
+      if (!error.empty())
+        errored.push_back(armstudy::app::failed_output(options.out_dir / c.info.name, c.info.name,
+                                                       c.info.study, "error",
+                                                       "the run ended in an error: " + error));
     }
   };
   const int n = std::clamp(jobs, 1, static_cast<int>(std::max<size_t>(1, cases.size())));
@@ -298,10 +387,27 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   // what CI reads, over every case in the output folder (not only this run's)
   try {
     std::vector<std::string> warnings;
-    const auto outputs = armstudy::app::collect_outputs({options.out_dir}, &warnings);
+    auto outputs = armstudy::app::collect_outputs({options.out_dir}, &warnings);
+    // an errored case is failed, whatever an earlier run left in its folder
+    for (auto& e : errored) {
+      const auto it = std::find_if(outputs.begin(), outputs.end(), [&](const auto& o) {
+        return o.record.case_info.name == e.record.case_info.name;
+      });
+      if (it != outputs.end())
+        *it = std::move(e);
+      else
+        outputs.push_back(std::move(e));
+    }
+    std::sort(outputs.begin(), outputs.end(), [](const auto& a, const auto& b) {
+      return a.record.case_info.name < b.record.case_info.name;
+    });
     armstudy::app::write_merged(outputs, options.out_dir);
   } catch (const armstudy::report::ForeignOutput& e) {
-    std::fprintf(stderr, "armstudy: %s\n", e.what());
+    std::fprintf(stderr, "armstudy: %s\n", armstudy::report::terminal_text(e.what()).c_str());
+    worst = std::max(worst, kExitBadInput);
+  } catch (const armstudy::app::InputLimitError& e) {
+    std::fprintf(stderr, "armstudy: no summary.md/junit.xml written: %s\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
     worst = std::max(worst, kExitBadInput);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: cannot write summary.md/junit.xml: %s\n", e.what());
@@ -313,17 +419,24 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   return worst;
 }
 
-int cmd_sweep_expand(const std::string& sweep_path, const std::string& out) {
+int cmd_sweep_expand(const std::string& sweep_path, const std::string& out,
+                     const std::vector<std::string>& base_dirs) {
   try {
-    const auto sw = armstudy::app::load_sweep(sweep_path);
+    const auto sw = armstudy::app::load_sweep(
+        sweep_path, std::vector<std::filesystem::path>(base_dirs.begin(), base_dirs.end()));
     std::fprintf(stderr, "sweep %s: %zu case(s); writing them to %s\n", sw.name.c_str(),
                  sw.points.size(), out.c_str());
-    const size_t written = armstudy::app::expand_sweep(sw, out);
+    const auto r = armstudy::app::expand_sweep(sw, out);
+    for (const auto& id : r.removed)
+      std::fprintf(stderr, "removed %s.yaml: no longer a point of the sweep\n", id.c_str());
     std::fprintf(stderr, "sweep %s: %zu case(s), %zu file(s) written to %s\n", sw.name.c_str(),
-                 sw.points.size(), written, out.c_str());
+                 sw.points.size(), r.written, out.c_str());
     return kExitDone;
   } catch (const armstudy::cases::CaseErrors& e) {
     std::fprintf(stderr, "%s\n", e.what());
+    return kExitBadInput;
+  } catch (const armstudy::app::ExpandRefused& e) {
+    std::fprintf(stderr, "armstudy sweep expand: %s\n", e.what());
     return kExitBadInput;
   }
 }
@@ -363,7 +476,8 @@ int cmd_list(const std::vector<std::string>& items, bool as_json) {
   return ok ? kExitDone : kExitBadInput;
 }
 
-int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
+int cmd_merge(const std::vector<std::string>& dirs, std::string out,
+              const std::string& manifest_file) {
   std::vector<std::filesystem::path> ds(dirs.begin(), dirs.end());
   bool missing = false;
   for (const auto& d : ds) {
@@ -380,18 +494,60 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
   }
   if (out.empty()) out = dirs.front();
   std::vector<std::string> warnings;
-  const auto outputs = armstudy::app::collect_outputs(ds, &warnings);
+  std::vector<armstudy::app::CaseOutput> outputs;
+  // the sweep the folders are the result of: --manifest, else one found in a folder
+  std::optional<armstudy::app::SweepManifest> manifest;
+  std::filesystem::path manifest_at = manifest_file;
+  try {
+    outputs = armstudy::app::collect_outputs(ds, &warnings);
+    if (!manifest_file.empty()) {
+      manifest = armstudy::app::read_manifest(manifest_file);
+      if (!manifest)
+        throw armstudy::app::InputLimitError(manifest_file +
+                                             ": no such file; expected the sweep manifest that "
+                                             "'armstudy sweep expand' writes");
+    }
+    for (const auto& d : ds) {
+      if (manifest) break;
+      manifest_at = d / armstudy::app::kManifestName;
+      manifest = armstudy::app::read_manifest(manifest_at);
+    }
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    return kExitBadInput;
+  }
+  size_t missing_cases = 0;
+  if (manifest)
+    missing_cases = armstudy::app::apply_manifest(*manifest, manifest_at, &outputs, &warnings);
+  for (const auto& w : warnings)
+    std::fprintf(stderr, "warning: %s\n", armstudy::report::terminal_text(w).c_str());
+  if (outputs.empty()) {
+    std::fprintf(stderr,
+                 "armstudy merge: no case folder with a results.json in the folder(s) given; "
+                 "expected output folders of 'armstudy run'\nnothing was written\n");
+    return kExitBadInput;
+  }
   const bool sweep_points = std::any_of(outputs.begin(), outputs.end(), [](const auto& o) {
     return o.record.case_info.sweep.has_value();
   });
   if (refuse_foreign_outputs(out, {}, run_level_names(sweep_points, sweep_points)))
     return kExitBadInput;
-  for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (missing_cases) {
+    std::string names;
+    size_t listed = 0;
+    for (const auto& o : outputs)
+      if (o.record.status == "missing" && listed++ < 10) names += "\n  " + o.record.case_info.name;
+    if (missing_cases > 10) names += "\n  ... and " + std::to_string(missing_cases - 10) + " more";
+    std::fprintf(stderr, "armstudy merge: %zu case(s) of sweep '%s' (%s) have no result:%s\n",
+                 missing_cases, armstudy::report::terminal_text(manifest->sweep).c_str(),
+                 manifest_at.c_str(), armstudy::report::terminal_text(names).c_str());
+  }
   size_t failed = 0;
   try {
     failed = armstudy::app::write_merged(outputs, out);
   } catch (const armstudy::report::ForeignOutput& e) {
-    std::fprintf(stderr, "armstudy: %s\n", e.what());
+    std::fprintf(stderr, "armstudy: %s\n", armstudy::report::terminal_text(e.what()).c_str());
     return kExitBadInput;
   }
   std::fprintf(stderr, "merged %zu case(s) into %s (%zu failed)\n", outputs.size(), out.c_str(),
@@ -476,6 +632,12 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   expand->add_option("--out", sweep_out, "Folder for the generated case files")
       ->capture_default_str();
+  std::vector<std::string> base_dirs;
+  expand
+      ->add_option("--base-dir", base_dirs,
+                   "A folder the sweep's base case may also be in (default: only the sweep "
+                   "file's folder)")
+      ->check(CLI::ExistingDirectory);
 
   std::vector<std::string> list_items;
   bool list_json = false;
@@ -491,6 +653,10 @@ int main(int argc, char** argv) {
                          "report (sweep/index.html) from the results.json of output folders");
   merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
   merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
+  std::string merge_manifest;
+  merge->add_option("--manifest", merge_manifest,
+                    "The sweep's sweep-manifest.json (default: one in a merged folder); a case "
+                    "of the sweep without a result fails the merge");
   armstudy::app::DiffOptions diff_options;
   std::string diff_base, diff_new, diff_out = diff_options.out.string();
   auto* diff = app.add_subcommand(
@@ -532,11 +698,11 @@ int main(int argc, char** argv) {
     if (*validate)
       code = cmd_validate(validate_paths, allow_large);
     else if (*expand)
-      code = cmd_sweep_expand(sweep_file, sweep_out);
+      code = cmd_sweep_expand(sweep_file, sweep_out, base_dirs);
     else if (*list)
       code = cmd_list(list_items, list_json);
     else if (*merge)
-      code = cmd_merge(merge_dirs, merge_out);
+      code = cmd_merge(merge_dirs, merge_out, merge_manifest);
     else if (*diff) {
       diff_options.base = diff_base;
       diff_options.now = diff_new;
@@ -545,7 +711,7 @@ int main(int argc, char** argv) {
     } else {
       options.out_dir = out_dir;
       options.render = !no_render;
-      code = cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large);
+      code = cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large, run_paths);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: internal error: %s\n", e.what());

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "app/run_case.hpp"
 #include "report/markdown.hpp"
@@ -14,6 +15,7 @@
 #include "report/owned_output.hpp"
 #include "report/results_fields.hpp"
 #include "report/results_record.hpp"
+#include "report/text_escape.hpp"
 
 namespace armstudy::app {
 namespace fs = std::filesystem;
@@ -21,33 +23,17 @@ using nlohmann::json;
 
 namespace {
 
-std::string xml_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      case '\'': o += "&apos;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t')
-          o += ' ';
-        else
-          o += c;
-    }
-  }
-  return o;
-}
-
 using report::md_cell;
 using report::ResultsRecord;
+using report::xml_text;
 
 // the case ended as it expects
 bool status_as_expected(const ResultsRecord& r) { return r.status == r.expected_status(); }
 
 std::string failure_text(const ResultsRecord& r) {
-  if (r.status == "unreadable") return r.message;
+  if (r.status == "unreadable" || r.status == "duplicate" || r.status == "missing" ||
+      r.status == "error")
+    return r.message;
   if (!status_as_expected(r) && r.expected_status() == "unsolvable")
     return "solved, but the case expects it to be unsolvable";
   if (!status_as_expected(r)) return "could not be solved: " + r.message;
@@ -70,10 +56,10 @@ std::string csv_cell(const std::string& s) {
 std::vector<std::pair<std::string, std::string>> figure_columns(
     const std::vector<const CaseOutput*>& cases) {
   std::vector<std::pair<std::string, std::string>> cols;
+  std::set<std::string> seen;
   for (const auto* c : cases)
     for (const auto& k : c->record.key_figures)
-      if (std::none_of(cols.begin(), cols.end(), [&](auto& p) { return p.first == k.name; }))
-        cols.emplace_back(k.name, k.unit);
+      if (seen.insert(k.name).second) cols.emplace_back(k.name, k.unit);
   return cols;
 }
 
@@ -107,9 +93,42 @@ std::string results_problem(const json& r) {
   return "";
 }
 
+CaseOutput failed_output(const fs::path& folder, const std::string& name, const std::string& study,
+                         const std::string& status, const std::string& message) {
+  ResultsRecord bad;
+  bad.study = study;
+  bad.case_info.name = name;
+  bad.status = status;
+  bad.message = message;
+  return CaseOutput{folder, json::object(), std::move(bad)};
+}
+
+namespace {
+
+void check_limits(const fs::path& rj, const ResultsRecord& r, std::set<std::string>* names) {
+  if (r.key_figures.size() > kMaxKeyFigures)
+    throw InputLimitError(rj.string() + ": " + std::to_string(r.key_figures.size()) +
+                          " key figures; expected at most " + std::to_string(kMaxKeyFigures) +
+                          " (docs/budgets.md)");
+  if (r.frames.size() > kMaxFrames)
+    throw InputLimitError(rj.string() + ": " + std::to_string(r.frames.size()) +
+                          " frames; expected at most " + std::to_string(kMaxFrames) +
+                          " (docs/budgets.md)");
+  for (const auto& k : r.key_figures) names->insert(k.name);
+  if (names->size() > kMaxKeyFigures)
+    throw InputLimitError(rj.string() + ": the cases so far have " + std::to_string(names->size()) +
+                          " different key figures; expected at most " +
+                          std::to_string(kMaxKeyFigures) + " (docs/budgets.md)");
+}
+
+}  // namespace
+
 std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
                                         std::vector<std::string>* warnings) {
   std::map<std::string, CaseOutput> by_name;
+  std::set<std::string> duplicates, figure_names;
+  size_t files = 0;
+  std::uintmax_t total_bytes = 0;
   for (const auto& dir : dirs) {
     if (!fs::is_directory(dir)) {
       if (warnings) warnings->push_back(dir.string() + ": not a folder");
@@ -122,6 +141,21 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
     for (const auto& f : folders) {
       const fs::path rj = f / "results.json";
       if (!fs::exists(rj)) continue;
+      if (++files > kMaxMergedCases)
+        throw InputLimitError(dir.string() + ": more than " + std::to_string(kMaxMergedCases) +
+                              " results.json files; expected at most that many cases "
+                              "(docs/budgets.md)");
+      std::error_code ec;
+      const std::uintmax_t bytes = fs::is_regular_file(rj, ec) ? fs::file_size(rj, ec) : 0;
+      if (!ec && bytes > kMaxResultsBytes)
+        throw InputLimitError(rj.string() + ": " + std::to_string(bytes) +
+                              " bytes; expected a results.json of at most " +
+                              std::to_string(kMaxResultsBytes) + " bytes (docs/budgets.md)");
+      total_bytes += bytes;
+      if (total_bytes > kMaxMergedBytes)
+        throw InputLimitError(rj.string() + ": the results.json files so far hold " +
+                              std::to_string(total_bytes) + " bytes; expected at most " +
+                              std::to_string(kMaxMergedBytes) + " together (docs/budgets.md)");
       CaseOutput c{f, json()};
       std::string problem;
       try {
@@ -138,26 +172,28 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
       } catch (const std::exception& e) {
         problem = e.what();
       }
+      if (problem.empty()) check_limits(rj, c.record, &figure_names);
       if (!problem.empty()) {
         // a failed case, named after its folder: CI must not go green on it
         const std::string reason = rj.string() + ": " + problem;
         if (warnings) warnings->push_back(reason);
-        ResultsRecord bad;
-        bad.study =
+        const std::string study =
             c.results.is_object() && c.results.contains("study") && c.results["study"].is_string()
                 ? c.results["study"].get<std::string>()
                 : std::string("unreadable");
-        bad.case_info.name = f.filename().string();
-        bad.status = "unreadable";
-        bad.message = "results.json unreadable: " + reason;
-        c.record = std::move(bad);
-        c.results = json::object();
+        c = failed_output(f, f.filename().string(), study, "unreadable",
+                          "results.json unreadable: " + reason);
       }
       const std::string n = c.record.case_info.name;
-      if (by_name.count(n)) {
-        if (warnings)
-          warnings->push_back(rj.string() + ": case '" + n + "' already found in " +
-                              by_name[n].folder.string() + "; skipped");
+      if (auto it = by_name.find(n); it != by_name.end()) {
+        // two results for one case: neither is the case's result
+        const std::string reason = "case '" + n + "' has results in " + it->second.folder.string() +
+                                   " and " + f.string() + "; expected one (remove the stale one)";
+        if (warnings) warnings->push_back(reason);
+        if (!duplicates.count(n))
+          it->second =
+              failed_output(it->second.folder, n, it->second.record.study, "duplicate", reason);
+        duplicates.insert(n);
         continue;
       }
       by_name.emplace(n, std::move(c));
@@ -166,6 +202,36 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
   std::vector<CaseOutput> out;
   for (auto& [n, c] : by_name) out.push_back(std::move(c));
   return out;
+}
+
+size_t apply_manifest(const SweepManifest& m, const fs::path& where, std::vector<CaseOutput>* cases,
+                      std::vector<std::string>* warnings) {
+  const std::set<std::string> ids(m.cases.begin(), m.cases.end());
+  std::vector<CaseOutput> kept;
+  std::set<std::string> found;
+  for (auto& c : *cases) {
+    const std::string& n = c.record.case_info.name;
+    if (ids.count(n)) {
+      found.insert(n);
+      kept.push_back(std::move(c));
+    } else if (warnings) {
+      warnings->push_back(c.folder.string() + ": case '" + n + "' is not in sweep '" + m.sweep +
+                          "' (" + where.string() + "); left out");
+    }
+  }
+  size_t missing = 0;
+  for (const auto& id : m.cases) {
+    if (found.count(id)) continue;
+    ++missing;
+    kept.push_back(failed_output(fs::path(), id, "missing", "missing",
+                                 "no results.json: case '" + id + "' of sweep '" + m.sweep +
+                                     "' did not run or its output is not in the merged folders"));
+  }
+  std::sort(kept.begin(), kept.end(), [](const CaseOutput& a, const CaseOutput& b) {
+    return a.record.case_info.name < b.record.case_info.name;
+  });
+  *cases = std::move(kept);
+  return missing;
 }
 
 bool case_passed(const ResultsRecord& r) { return status_as_expected(r) && r.checks_passed(); }
@@ -187,9 +253,9 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
   for (const auto& c : cases) by_study[c.record.study].push_back(&c);
   for (const auto& [study, list] : by_study) {
     const auto cols = figure_columns(list);
-    md << "## " << study << " (" << list.size() << ")\n\n| case | status | checks |";
+    md << "## " << md_cell(study) << " (" << list.size() << ")\n\n| case | status | checks |";
     for (const auto& [n, u] : cols)
-      md << " " << md_cell(n) << (u.empty() ? "" : " (" + u + ")") << " |";
+      md << " " << md_cell(u.empty() ? n : n + " (" + u + ")") << " |";
     md << "\n|---|---|---|";
     for (size_t i = 0; i < cols.size(); ++i) md << "---:|";
     md << "\n";
@@ -232,30 +298,30 @@ std::string junit_xml(const std::vector<CaseOutput>& cases) {
     std::ostringstream tc;
     for (const auto* c : list) {
       const auto& r = c->record;
-      const std::string cls = xml_escape(study + "." + r.case_info.name);
+      const std::string cls = xml_text(study + "." + r.case_info.name);
       ++st;
       tc << "    <testcase classname=\"" << cls << "\" name=\"solve\"";
       if (!status_as_expected(r)) {
         ++sf;
-        tc << "><failure message=\"" << xml_escape(failure_text(r)) << "\"/></testcase>\n";
+        tc << "><failure message=\"" << xml_text(failure_text(r)) << "\"/></testcase>\n";
       } else {
         tc << "/>\n";
       }
       for (const auto& ch : r.checks) {
         ++st;
-        tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_escape(ch.name) << "\"";
+        tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_text(ch.name) << "\"";
         if (!ch.passed) {
           ++sf;
           tc << "><failure message=\""
-             << xml_escape("value " + report::format_sig(ch.value, 6) + " exceeds tolerance " +
-                           report::format_sig(ch.tolerance, 6))
-             << "\">" << xml_escape(ch.description) << "</failure></testcase>\n";
+             << xml_text("value " + report::format_sig(ch.value, 6) + " exceeds tolerance " +
+                         report::format_sig(ch.tolerance, 6))
+             << "\">" << xml_text(ch.description) << "</failure></testcase>\n";
         } else {
           tc << "/>\n";
         }
       }
     }
-    body << "  <testsuite name=\"" << xml_escape(study) << "\" tests=\"" << st << "\" failures=\""
+    body << "  <testsuite name=\"" << xml_text(study) << "\" tests=\"" << st << "\" failures=\""
          << sf << "\" errors=\"0\">\n"
          << tc.str() << "  </testsuite>\n";
     tests += st;

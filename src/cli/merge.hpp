@@ -4,11 +4,14 @@
 /// its point and key figures). Built from results.json files only, independent of the
 /// order in which cases ran or shards finished: rows are sorted by case name.
 
+#include <cstdint>
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "cli/sweep_manifest.hpp"
 #include "report/results_record.hpp"
 
 namespace armstudy::app {
@@ -22,14 +25,42 @@ struct CaseOutput {
   report::ResultsRecord record;
 };
 
-/// Every DIR/<case>/results.json under the given folders, sorted by case name (the first
-/// folder wins when a name appears twice). A file that cannot be used (truncated, not
-/// JSON, a wrong type, an unknown schema_version) is a failed case named after its folder,
-/// with status "unreadable" and a message naming the file and what is wrong; it is also
-/// reported in `warnings`. A folder that is not there is reported in `warnings` (callers
-/// that take folders from the user check them first).
+/// Every DIR/<case>/results.json under the given folders, sorted by case name. Two results
+/// of one case id are one failed case (status "duplicate") naming both folders, and a
+/// warning. @throws InputLimitError beyond the limits above. A file that cannot be used (truncated,
+/// not JSON, a wrong type, an unknown schema_version) is a failed case named after its folder, with
+/// status "unreadable" and a message naming the file and what is wrong; it is also reported in
+/// `warnings`. A folder that is not there is reported in `warnings` (callers that take folders from
+/// the user check them first).
 std::vector<CaseOutput> collect_outputs(const std::vector<std::filesystem::path>& dirs,
                                         std::vector<std::string>* warnings);
+
+/// What merge, diff and run read of output folders (docs/budgets.md): beyond a limit,
+/// collect_outputs throws InputLimitError and the command writes nothing (exit 2).
+inline constexpr size_t kMaxMergedCases = 100000;              ///< results.json files
+inline constexpr std::uintmax_t kMaxResultsBytes = 16u << 20;  ///< bytes of one results.json
+inline constexpr std::uintmax_t kMaxMergedBytes = 1ull << 30;  ///< bytes of all of them
+inline constexpr size_t kMaxKeyFigures = 200;  ///< per case, and distinct names over all cases
+inline constexpr size_t kMaxFrames = 1000;     ///< frames listed by one results.json
+
+class InputLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A failed case of armstudy's own making: status "unreadable" (its results.json cannot be
+/// used), "duplicate" (two results of one case id), "missing" (a case of the sweep without a
+/// result) or "error" (the run ended in an error); `message` says what is wrong and is the
+/// failure in summary.md and junit.xml.
+CaseOutput failed_output(const std::filesystem::path& folder, const std::string& name,
+                         const std::string& study, const std::string& status,
+                         const std::string& message);
+
+/// Checks `cases` against a sweep's manifest (found at `where`): a case of the sweep without
+/// a result is added as a failed case (status "missing"), a result of a case that is not in
+/// the sweep is left out (and named in `warnings`). Returns the number of missing cases.
+size_t apply_manifest(const SweepManifest& manifest, const std::filesystem::path& where,
+                      std::vector<CaseOutput>* cases, std::vector<std::string>* warnings);
 
 /// Why `results` cannot be merged ("" if it can): an unknown schema_version, or the path
 /// and expected type of the first field merge reads that has another type.

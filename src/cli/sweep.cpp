@@ -1,14 +1,21 @@
 #include "cli/sweep.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
 #include "cases/case_info.hpp"
 #include "cases/yaml_reader.hpp"
+#include "cli/confined_path.hpp"
+#include "cli/sweep_manifest.hpp"
 
 namespace armstudy::app {
 namespace fs = std::filesystem;
@@ -74,6 +81,83 @@ std::string scalar_text(const YAML::Node& n) {
   return e.c_str();
 }
 
+// the base case file: `rel` taken from the sweep file's folder, which must stay, after
+// resolving symlinks, inside that folder or inside one of `base_dirs` (--base-dir);
+// otherwise *why says so
+std::string confined_base(const std::string& sweep_path, const std::string& rel,
+                          const std::vector<fs::path>& base_dirs, std::string* why) {
+  const fs::path sweep_dir = fs::absolute(fs::path(sweep_path)).parent_path();
+  const std::string allowed =
+      "expected a path relative to the sweep file's folder, inside it" +
+      std::string(base_dirs.empty() ? " (or inside a folder given with --base-dir)"
+                                    : " or inside a --base-dir folder");
+  if (rel.empty() || fs::path(rel).is_absolute()) {
+    *why =
+        "'base' is " + (rel.empty() ? std::string("empty") : "an absolute path") + "; " + allowed;
+    return "";
+  }
+  const fs::path joined = (fs::path(sweep_path).parent_path() / rel).lexically_normal();
+  bool ok = lies_inside(joined, sweep_dir);
+  for (const auto& d : base_dirs) ok = ok || lies_inside(joined, d);
+  if (!ok) {
+    *why = "'base' names '" + cases::brief(rel, 200) +
+           "', which is outside the sweep file's folder" +
+           (base_dirs.empty() ? "" : " and the --base-dir folders") + " (symlinks resolved); " +
+           allowed;
+    return "";
+  }
+  return joined.string();
+}
+
+// a value's text for comparing: numbers by their value (0.5 and 0.50 are one value)
+std::string value_key(const YAML::Node& v) {
+  if (v.IsScalar()) {
+    try {
+      const double x = v.as<double>();
+      if (std::isfinite(x)) {
+        std::ostringstream os;
+        os.imbue(std::locale::classic());
+        os.precision(17);
+        os << x;
+        return "#" + os.str();
+      }
+    } catch (const YAML::Exception&) {
+    }
+  }
+  return "=" + scalar_text(v);
+}
+
+// why an axis cannot be one ("" if it can): over the case's name or the sweep's own
+// metadata (both set per point), a path of an earlier axis, or one value twice
+std::string axis_problem(const SweepAxis& ax, const std::vector<SweepAxis>& earlier) {
+  std::vector<Segment> segs;
+  if (!ax.path.empty() && parse_path(ax.path, &segs) && !segs.empty()) {
+    if (segs[0].key == "name")
+      return "axis path '" + cases::brief(ax.path) +
+             "' is the case's name, which sweep expand sets for every point; expected a "
+             "parameter of the base case";
+    if (segs[0].key == "sweep")
+      return "axis path '" + cases::brief(ax.path) +
+             "' is inside the 'sweep' mapping, which sweep expand writes for every point; "
+             "expected a parameter of the base case";
+  }
+  for (const auto& e : earlier)
+    if (!ax.path.empty() && e.path == ax.path)
+      return "axis path '" + cases::brief(ax.path) + "' is also the axis at line " +
+             std::to_string(e.mark.line + 1) + "; expected each parameter on one axis";
+  std::map<std::string, size_t> seen;
+  for (size_t i = 0; i < ax.values.size(); ++i) {
+    const auto [it, fresh] = seen.emplace(value_key(ax.values[i]), i);
+    if (!fresh)
+      return "axis '" + cases::brief(ax.path) + "' has value " + std::to_string(i + 1) + " (" +
+             cases::brief(scalar_text(ax.values[i])) + ") equal to value " +
+             std::to_string(it->second + 1) + " (" +
+             cases::brief(scalar_text(ax.values[it->second])) +
+             "); expected distinct values (each would be the same case)";
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string set_path(YAML::Node root, const std::string& path, const YAML::Node& value) {
@@ -121,7 +205,7 @@ size_t sweep_point_count(const Sweep& sweep) {
   return count;
 }
 
-Sweep load_sweep(const std::string& path) {
+Sweep load_sweep(const std::string& path, const std::vector<fs::path>& base_dirs) {
   cases::Diagnostics diag(path);
   std::string text;
   const auto root_node = cases::parse_file(path, diag, &text);
@@ -174,21 +258,36 @@ Sweep load_sweep(const std::string& path) {
         }
       }
       a->finish();
+      if (const std::string bad = axis_problem(ax, sw.axes); !bad.empty()) diag.error(ax.mark, bad);
       sw.axes.push_back(ax);
     }
   }
   root.finish();
   if (base_rel) {
-    const fs::path base = fs::path(path).parent_path() / *base_rel;
-    sw.base_path = base.lexically_normal().string();
-    cases::Diagnostics bd(sw.base_path);
-    const auto b = cases::parse_file(sw.base_path, bd, nullptr);
-    if (!b)
-      root.error("base", "'base' names '" + cases::brief(sw.base_path, 200) +
-                             "', which cannot be read as a case: " +
-                             (bd.errors().empty() ? "" : bd.errors()[0].format()));
-    else
-      sw.base = *b;
+    std::string why;
+    sw.base_path = confined_base(path, *base_rel, base_dirs, &why);
+    if (!why.empty()) {
+      root.error("base", why);
+    } else {
+      // the file is named, never quoted: it may be anything the path reaches
+      cases::Diagnostics bd(sw.base_path);
+      std::error_code ec;
+      const auto b = fs::exists(sw.base_path, ec) ? cases::parse_file(sw.base_path, bd, nullptr)
+                                                  : std::nullopt;
+      if (!fs::exists(sw.base_path, ec)) {
+        root.error("base", "'base' names " + cases::brief(sw.base_path, 200) +
+                               ", which does not exist; expected a case file");
+      } else if (!b || !b->IsMap()) {
+        std::string where;
+        if (!bd.errors().empty() && bd.errors()[0].line > 0)
+          where = " (at line " + std::to_string(bd.errors()[0].line) + ")";
+        root.error("base", "'base' names " + cases::brief(sw.base_path, 200) +
+                               ", which is not a case file" + where +
+                               "; expected a YAML mapping with study: and name:");
+      } else {
+        sw.base = *b;
+      }
+    }
   }
   if (sw.zip && sw.axes.size() > 1) {
     for (const auto& ax : sw.axes)
@@ -266,8 +365,8 @@ Sweep load_sweep(const std::string& path) {
     doc["sweep"] = swn;
     YAML::Emitter e;
     e << doc;
-    SweepPoint p{name, "# generated by armstudy sweep expand from " + sw.path + "; do not edit\n" +
-                           std::string(e.c_str()) + "\n"};
+    SweepPoint p{name,
+                 kGeneratedHeader + sw.path + "; do not edit\n" + std::string(e.c_str()) + "\n"};
     // the generated case must be valid: an error names the axis and the point
     try {
       // the budget is judged by run and validate, where --allow-large can raise it
@@ -288,9 +387,33 @@ Sweep load_sweep(const std::string& path) {
   return sw;
 }
 
-size_t expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
+ExpandResult expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
+  ExpandResult r;
+  std::set<std::string> ids;
+  for (const SweepPoint& p : sweep.points) ids.insert(p.case_name);
+  // the folder is the sweep's: another sweep's cases, or a file of the user's where a case
+  // goes, are refused before anything is written
+  const fs::path manifest_path = out_dir / kManifestName;
+  std::optional<SweepManifest> old;
+  try {
+    old = read_manifest(manifest_path);
+  } catch (const std::runtime_error& e) {
+    throw ExpandRefused(std::string(e.what()) + "; nothing was written");
+  }
+  if (old && old->sweep != sweep.name)
+    throw ExpandRefused(out_dir.string() + " holds the cases of sweep '" +
+                        cases::brief(old->sweep) + "' (" + kManifestName +
+                        "); expected an empty folder or one of sweep '" + sweep.name +
+                        "'; nothing was written");
+  for (const SweepPoint& p : sweep.points) {
+    const fs::path f = out_dir / (p.case_name + ".yaml");
+    std::error_code ec;
+    if (fs::symlink_status(f, ec).type() != fs::file_type::not_found && !generated_by_expand(f))
+      throw ExpandRefused(f.string() +
+                          " exists and was not written by 'armstudy sweep expand'; expected "
+                          "no such file (move it away); nothing was written");
+  }
   fs::create_directories(out_dir);
-  size_t written = 0;
   for (const SweepPoint& p : sweep.points) {
     const fs::path f = out_dir / (p.case_name + ".yaml");
     if (fs::exists(f)) {
@@ -300,9 +423,23 @@ size_t expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
       if (ss.str() == p.yaml) continue;
     }
     write_file_atomic(f, p.yaml);
-    ++written;
+    ++r.written;
   }
-  return written;
+  // points no longer in the sweep: only case files expansion wrote (their first line says so)
+  std::vector<fs::path> stale;
+  for (const auto& e : fs::directory_iterator(out_dir)) {
+    const fs::path f = e.path();
+    if (f.extension() != ".yaml" || ids.count(f.stem().string())) continue;
+    if (generated_by_expand(f)) stale.push_back(f);
+  }
+  std::sort(stale.begin(), stale.end());
+  for (const auto& f : stale) {
+    fs::remove(f);
+    r.removed.push_back(f.stem().string());
+  }
+  SweepManifest m{sweep.name, sweep.path, std::vector<std::string>(ids.begin(), ids.end())};
+  write_file_atomic(manifest_path, manifest_text(m));
+  return r;
 }
 
 }  // namespace armstudy::app

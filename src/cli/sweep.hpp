@@ -6,7 +6,7 @@
 ///
 /// ```yaml
 /// sweep: placement-link-ratio      # the sweep's name
-/// base: ../cases/placement-example-2.yaml   # relative to this file
+/// base: placement-example-2.yaml  # relative to this file, inside its folder (or --base-dir)
 /// mode: grid                       # grid (every combination) or zip (i-th with i-th)
 /// axes:
 ///   - path: arm.links[2].length
@@ -16,6 +16,7 @@
 /// ```
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -56,13 +57,31 @@ inline constexpr double kMaxSweepNodes = 2e7;
 size_t sweep_point_count(const Sweep& sweep);
 
 /// Reads and validates a sweep file and every case it generates; refuses more than
-/// kMaxSweepPoints points.
+/// kMaxSweepPoints points. `base:` is taken from the sweep file's folder and must lie,
+/// symlinks resolved, inside that folder or inside one of `base_dirs` (--base-dir); a base
+/// that is not a case file is named, never quoted. Refused too: an axis over `name` or into
+/// `sweep`, two axes over one path, and one value twice on an axis (0.5 and 0.50).
 /// @throws cases::CaseErrors (file:line:col), e.g. for a path that names no parameter.
-Sweep load_sweep(const std::string& path);
+Sweep load_sweep(const std::string& path, const std::vector<std::filesystem::path>& base_dirs = {});
+
+/// Why expansion wrote nothing: the folder holds another sweep's manifest, or a file that
+/// expansion did not write where a case goes.
+class ExpandRefused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ExpandResult {
+  size_t written = 0;                ///< case files written (new or changed)
+  std::vector<std::string> removed;  ///< case ids of earlier expansions no longer in the sweep
+};
 
 /// Writes each point's case file to out_dir/<case_name>.yaml (existing files with the same
-/// content are left alone). Returns the number of files written.
-size_t expand_sweep(const Sweep& sweep, const std::filesystem::path& out_dir);
+/// content are left alone), removes the case files an earlier expansion wrote that are no
+/// longer points of the sweep (only files beginning with kGeneratedHeader) and writes the
+/// manifest (sweep_manifest.hpp). @throws ExpandRefused before writing anything when the
+/// folder is another sweep's or holds a foreign file where a case goes.
+ExpandResult expand_sweep(const Sweep& sweep, const std::filesystem::path& out_dir);
 
 /// Sets the value at `path` in a clone of `root` (missing mapping keys are created).
 /// Returns "" or a complaint ("'links[9]' is past the end of a list of 2").

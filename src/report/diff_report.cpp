@@ -299,7 +299,7 @@ std::string diff_markdown(const RunDiff& d, size_t max_bytes) {
     for (const CaseDiff* cp : moved_cases(d)) {
       const CaseDiff& c = *cp;
       if (c.presence != CaseDiff::Presence::kBoth) continue;
-      md << "### " << md_cell(c.name) << " (" << c.study << ")\n\n";
+      md << "### " << md_cell(c.name) << " (" << md_cell(c.study) << ")\n\n";
       if (c.status_changed())
         md << "Status " << status_text(c.base_status, c.base_passed) << " → "
            << status_text(c.new_status, c.new_passed) << ": " << md_cell(c.new_message) << "\n\n";

@@ -1,17 +1,23 @@
 #include "report/markdown.hpp"
 
+#include "report/text_escape.hpp"
+
 namespace armstudy::report {
 
 std::string md_cell(const std::string& s) {
   std::string o;
-  for (char c : s) {
-    if (c == '|')
+  for_each_utf8(s, [&](long cp, const std::string& bytes) {
+    if (cp == '|')
       o += "\\|";
-    else if (c == '\n')
+    else if (cp == '<')
+      o += "&lt;";  // no HTML tag from a name reaches the page GitHub renders
+    else if (cp == '\n' || cp == '\r' || cp == '\t')
       o += ' ';
+    else if (cp < 0x20 || (cp >= 0x7f && cp <= 0x9f))  // controls and bytes that are not UTF-8
+      for (const char b : bytes) o += hex_byte(static_cast<unsigned char>(b));
     else
-      o += c;
-  }
+      o += bytes;
+  });
   return o;
 }
 

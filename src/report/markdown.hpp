@@ -5,7 +5,9 @@
 
 namespace armstudy::report {
 
-/// `s` as one cell of a Markdown table: '|' escaped, line breaks as spaces.
+/// `s` as one cell of a Markdown table: '|' escaped, '<' as &lt;, line breaks and tabs as
+/// spaces, other control characters and bytes that are not UTF-8 as `\xNN`
+/// (report/text_escape.hpp).
 std::string md_cell(const std::string& s);
 
 }  // namespace armstudy::report

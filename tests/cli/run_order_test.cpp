@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "app/run_order.hpp"
@@ -83,6 +86,41 @@ TEST(RunOrder, MoreIdpIterationsEstimateALongerSolve) {
   const LoadedCase more = armstudy::app::load_case_text(text, path);
   EXPECT_GT(armstudy::app::estimated_seconds(more, false),
             1.5 * armstudy::app::estimated_seconds(base, false));
+}
+
+}  // namespace
+
+namespace {
+
+// two cases of 3 GiB each never run at once under a 4 GiB budget; small ones do
+TEST(RunOrder, TheMemoryBudgetCoversAllJobs) {
+  armstudy::app::MemoryGate gate(4.0 * (1ull << 30));
+  const double big = 3.0 * (1ull << 30), small = 0.5 * (1ull << 30);
+  std::atomic<int> running{0}, most{0};
+  auto job = [&](double bytes) {
+    gate.acquire(bytes);
+    const int now = ++running;
+    int m = most.load();
+    while (now > m && !most.compare_exchange_weak(m, now)) {
+    }
+    EXPECT_LE(gate.in_use(), 4.0 * (1ull << 30));
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    --running;
+    gate.release(bytes);
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < 4; ++k) pool.emplace_back(job, big);
+  for (auto& t : pool) t.join();
+  EXPECT_EQ(most.load(), 1) << "3 GiB cases ran side by side";
+  pool.clear();
+  most = 0;
+  for (int k = 0; k < 4; ++k) pool.emplace_back(job, small);
+  for (auto& t : pool) t.join();
+  EXPECT_GE(most.load(), 1);
+  EXPECT_EQ(gate.in_use(), 0.0);
+  // a case beyond the budget alone (--allow-large) still runs, alone
+  gate.acquire(8.0 * (1ull << 30));
+  gate.release(8.0 * (1ull << 30));
 }
 
 }  // namespace

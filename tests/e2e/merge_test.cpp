@@ -1,6 +1,8 @@
 // summary.md, junit.xml and sweep tables built from results.json data.
 #include "cli/merge.hpp"
 
+#include "report/text_escape.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,6 +79,46 @@ TEST(Merge, SweepTablesDoNotDependOnCaseOrder) {
   EXPECT_EQ(sweep_json(cases).dump(), js);
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "case,status,arm.links[2].length,min_energy_J (J)");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 21);
+}
+
+}  // namespace
+}  // namespace armstudy::app
+
+namespace armstudy::app {
+namespace {
+
+// every character of s is one XML 1.0 allows (a newline, or printable and valid UTF-8)
+bool xml_safe(const std::string& s) {
+  bool ok = true;
+  report::for_each_utf8(s, [&](long cp, const std::string&) {
+    ok = ok && (cp == '\n' || (cp >= 0x20 && cp != 0x7f && !(cp >= 0x80 && cp <= 0x9f) &&
+                               cp != 0xfffe && cp != 0xffff));
+  });
+  return ok;
+}
+
+TEST(Merge, JunitAndSummaryCarryNoRawControlOrForeignBytesFromNamesAndMessages) {
+  const std::string hostile = std::string("a\x1b[31m\nb\r\x01\x7f\xc2\x9b", 13) +
+                              std::string("\0", 1) + " <&>\"' \xff\xef\xbf\xbe|end";
+  std::vector<CaseOutput> cases = {make_case("a", "placement", false, {{hostile, false}}, 1)};
+  cases[0].record.message = hostile;
+  cases[0].record.key_figures[0].unit = hostile;
+  cases.push_back(failed_output("f", hostile, hostile, "error", hostile));
+  const std::string x = junit_xml(cases);
+  EXPECT_TRUE(xml_safe(x)) << x;
+  EXPECT_NE(x.find("a\\x1B[31m&#10;b\\x0D\\x01\\x7F\\xC2\\x9B\\x00 "
+                   "&lt;&amp;&gt;&quot;&apos; \\xFF\\xEF\\xBF\\xBE|end"),
+            std::string::npos)
+      << x;
+  const std::string md = summary_markdown(cases);
+  bool raw = false;  // a control character or a byte that is not UTF-8
+  report::for_each_utf8(md, [&](long cp, const std::string&) {
+    raw = raw || cp < 0 || (cp < 0x20 && cp != '\n') || (cp >= 0x7f && cp <= 0x9f);
+  });
+  EXPECT_FALSE(raw) << md;
+  EXPECT_NE(md.find("a\\x1B[31m b \\x01\\x7F\\xC2\\x9B\\x00 &lt;&>\"' \\xFF"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("\\|end"), std::string::npos) << md;
 }
 
 }  // namespace
