@@ -3,7 +3,7 @@
 /// input is refused quickly with its file:line:col instead of hanging, crashing or running
 /// away with memory:
 /// - only a regular file is read (a folder, FIFO or device is refused without reading),
-///   at most kMaxFileBytes;
+///   at most kMaxFileBytes (input_file.hpp, as every file armstudy reads);
 /// - the text is UTF-8 without NUL bytes or other control characters but tab, LF and CR;
 /// - the file holds one YAML document (text after `...` or a second `---` is refused);
 /// - nesting is at most kMaxDepth levels deep, keys are plain scalars (no complex keys),
@@ -28,7 +28,8 @@ inline constexpr int kMaxDepth = 64;
 inline constexpr std::size_t kMaxNodes = 200000;
 
 /// Reads the bytes of a regular file of at most kMaxFileBytes into `bytes`; otherwise
-/// records why not (no position) and returns false. Never blocks on a FIFO.
+/// records why not (no position) and returns false. Never blocks on a FIFO
+/// (read_input_file).
 bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* bytes);
 
 /// Checks the text (UTF-8, no NUL or control characters) and its YAML structure (one

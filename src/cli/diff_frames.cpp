@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
+#include "cases/input_file.hpp"
 #include "scene/image.hpp"
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
@@ -14,13 +13,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// false when the frame is missing (a difference); @throws cases::InputFileError when it
+// is there but no regular file of at most kMaxFrameBytes (a FIFO, a device, a link)
 bool read_bytes(const fs::path& p, std::string* out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return static_cast<bool>(in) || in.eof();
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(p, ec))) return false;
+  *out = cases::read_input_file(p.string(), {cases::kMaxFrameBytes, "PNG frame", false});
+  return true;
 }
 
 // outlines the box [x0, x1] x [y0, y1] grown by `pad` px with a `width` px line

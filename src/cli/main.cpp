@@ -11,11 +11,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <string>
@@ -28,9 +28,11 @@
 #include "app/run_case.hpp"
 #include "app/run_order.hpp"
 #include "cases/case_error.hpp"
+#include "cases/input_file.hpp"
 #include "cli/diff.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/merge.hpp"
+#include "cli/open_files.hpp"
 #include "cli/process_memory.hpp"
 #include "cli/progress.hpp"
 #include "cli/sweep.hpp"
@@ -114,13 +116,18 @@ bool parse_shard(const std::string& text, int* index, int* count) {
 // true if out_dir/<name>/results.json is what this run would write again: the same case
 // file contents, armstudy version and commit, and render option, and the case passed (a
 // failed case is always redone). A missing report.pdf is printed by finish_reports.
+// @throws cases::InputFileError when results.json is there but no regular file of at most
+// kMaxResultsJsonBytes (a FIFO, a device, a link): nothing is run then
 bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
                   const armstudy::app::RunOptions& options) {
   const auto rj = out_dir / c.info.name / "results.json";
-  if (!std::filesystem::exists(rj)) return false;
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(rj, ec))) return false;
+  const std::string bytes = armstudy::cases::read_input_file(
+      rj.string(), {armstudy::cases::kMaxResultsJsonBytes, "results.json file", false});
   try {
-    std::ifstream in(rj);
-    const auto r = armstudy::report::read_record(nlohmann::json::parse(in));  // strict: else redone
+    const auto r =
+        armstudy::report::read_record(nlohmann::json::parse(bytes));  // strict: else redone
     const std::string commit = armstudy::git_commit();
     return r.case_info.sha256 == c.info.sha256 && r.armstudy_version == armstudy::kVersion &&
            r.git_commit.value_or("") == commit && r.run_options.render == options.render &&
@@ -180,10 +187,15 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::vector<LoadedCase> todo;
     size_t skipped = 0;
     for (auto& c : cases) {
-      if (already_done(options.out_dir, c, options))
-        ++skipped;
-      else
-        todo.push_back(std::move(c));
+      try {
+        if (already_done(options.out_dir, c, options))
+          ++skipped;
+        else
+          todo.push_back(std::move(c));
+      } catch (const armstudy::cases::InputFileError& e) {
+        std::fprintf(stderr, "armstudy: %s\nnothing was run\n", e.what());
+        return e.runtime() ? kExitRuntime : kExitBadInput;
+      }
     }
     if (skipped)
       std::fprintf(stderr,
@@ -337,7 +349,13 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
   }
   if (out.empty()) out = dirs.front();
   std::vector<std::string> warnings;
-  const auto outputs = armstudy::app::collect_outputs(ds, &warnings);
+  std::vector<armstudy::app::CaseOutput> outputs;
+  try {
+    outputs = armstudy::app::collect_outputs(ds, &warnings);
+  } catch (const armstudy::cases::InputFileError& e) {
+    std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n", e.what());
+    return e.runtime() ? kExitRuntime : kExitBadInput;
+  }
   for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   const size_t failed = armstudy::app::write_merged(outputs, out);
   std::fprintf(stderr, "merged %zu case(s) into %s (%zu failed)\n", outputs.size(), out.c_str(),
@@ -369,6 +387,9 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out) {
 int main(int argc, char** argv) {
   armstudy::cli::keep_freed_memory();          // before any thread: see process_memory.hpp
   armstudy::app::install_interrupt_cleanup();  // first: every thread inherits its signal mask
+  // a write to a pipe or socket whose reader is gone (a helper that died, a closed `| head`)
+  // fails with EPIPE and is reported, instead of killing armstudy without a word
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{
       "armstudy: energy-optimal placement, throwing and time-optimal studies of planar "
       "robot arms, from YAML case files to MuJoCo-rendered reports"};
@@ -468,6 +489,12 @@ int main(int argc, char** argv) {
     return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)
                ? 0
                : (code ? kExitBadInput : 0);
+  }
+  if (*run || *merge || *diff) {
+    if (const std::string why = armstudy::cli::ensure_open_files(); !why.empty()) {
+      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      return kExitRuntime;
+    }
   }
   int code = kExitRuntime;
   try {

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "app/run_case.hpp"
+#include "cases/input_file.hpp"
 #include "report/markdown.hpp"
 #include "report/number_format.hpp"
 #include "report/results_fields.hpp"
@@ -120,13 +120,15 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
     std::sort(folders.begin(), folders.end());
     for (const auto& f : folders) {
       const fs::path rj = f / "results.json";
-      if (!fs::exists(rj)) continue;
+      std::error_code ec;
+      if (!fs::exists(fs::symlink_status(rj, ec))) continue;
+      // a FIFO, device, link or oversized file is refused (InputFileError), never read
+      const std::string bytes = cases::read_input_file(
+          rj.string(), {cases::kMaxResultsJsonBytes, "results.json file", false});
       CaseOutput c{f, json()};
       std::string problem;
       try {
-        std::ifstream in(rj, std::ios::binary);
-        if (!in) throw std::runtime_error("cannot open it");
-        c.results = json::parse(in);
+        c.results = json::parse(bytes);
         problem = results_problem(c.results);
         if (problem.empty()) c.record = report::read_record(c.results);
       } catch (const json::parse_error& e) {

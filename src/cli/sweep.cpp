@@ -1,13 +1,13 @@
 #include "cli/sweep.hpp"
 
 #include <cstdint>
-#include <fstream>
 #include <regex>
 #include <sstream>
 
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
 #include "cases/case_info.hpp"
+#include "cases/input_file.hpp"
 #include "cases/yaml_reader.hpp"
 
 namespace armstudy::app {
@@ -293,12 +293,12 @@ size_t expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
   size_t written = 0;
   for (const SweepPoint& p : sweep.points) {
     const fs::path f = out_dir / (p.case_name + ".yaml");
-    if (fs::exists(f)) {
-      std::ifstream in(f, std::ios::binary);
-      std::ostringstream ss;
-      ss << in.rdbuf();
-      if (ss.str() == p.yaml) continue;
-    }
+    std::string now, why;
+    bool runtime = false;
+    if (cases::read_input_file(f.string(), {cases::kMaxFileBytes, "YAML file", false}, &now, &why,
+                               &runtime) &&
+        now == p.yaml)
+      continue;
     write_file_atomic(f, p.yaml);
     ++written;
   }

@@ -17,6 +17,7 @@
 #include <cerrno>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -89,8 +90,7 @@ Live& live() {
 struct Profile {
   fs::path path;
   Profile() {
-    std::string tmpl =
-        (fs::temp_directory_path() / (std::string(kProfilePrefix) + "XXXXXX")).string();
+    std::string tmpl = (fs::temp_directory_path() / (std::string(kProfilePrefix) + "XXXXXX")).string();
     if (!::mkdtemp(tmpl.data()))
       throw PdfError(std::string("cannot create a temporary Chromium profile in ") +
                      fs::temp_directory_path().string() + ": " + std::strerror(errno));
@@ -229,6 +229,7 @@ void print_pdf(const fs::path& html, const fs::path& pdf, double timeout_s) {
     sigset_t none;
     sigemptyset(&none);
     ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::signal(SIGPIPE, SIG_DFL);  // armstudy ignores it
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     if (fd >= 0) {
       ::dup2(fd, 1);
@@ -364,6 +365,7 @@ class PipeBrowser {
       sigset_t none;
       sigemptyset(&none);
       ::sigprocmask(SIG_SETMASK, &none, nullptr);
+      ::signal(SIGPIPE, SIG_DFL);  // armstudy ignores it
       const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
       if (fd >= 0) {
         ::dup2(fd, 1);
