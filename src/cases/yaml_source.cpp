@@ -94,6 +94,15 @@ bool check_text(const std::string& s, Diagnostics& diag) {
   return true;
 }
 
+// characters that print as nothing or reorder the text around them: a name holding one
+// would look like another in a message (zero-width spaces and joiners, direction marks and
+// overrides, the byte order mark, the soft hyphen, invisible operators)
+bool invisible(char32_t cp) {
+  return cp == 0xAD || cp == 0x180E || (cp >= 0x200B && cp <= 0x200F) ||
+         (cp >= 0x2028 && cp <= 0x202E) || (cp >= 0x2060 && cp <= 0x2069) || cp == 0xFEFF ||
+         cp == 0x85 || (cp >= 0xFFF9 && cp <= 0xFFFB);
+}
+
 struct Refused {
   YAML::Mark mark;
   std::string message;
@@ -215,7 +224,13 @@ std::string brief(const std::string& s, size_t max_chars) {
       ++i;
       continue;
     }
-    out.append(s, i, n);
+    if (invisible(cp)) {
+      char esc[16];
+      std::snprintf(esc, sizeof esc, "\\u%04x", static_cast<unsigned>(cp));
+      out += esc;
+    } else {
+      out.append(s, i, n);
+    }
     i += n;
   }
   if (i < s.size()) out += "... (" + std::to_string(s.size()) + " bytes)";

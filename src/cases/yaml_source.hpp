@@ -37,8 +37,10 @@ bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* 
 /// its line:col and returns false. A syntax error is recorded as "not valid YAML".
 bool check_yaml_source(const std::string& bytes, Diagnostics& diag);
 
-/// `s` for a message: control characters escaped, at most `max_chars` characters (a
-/// longer text is cut and says how long it was). Never quotes a whole file.
+/// `s` for a message: control characters escaped (\n, \t, \x1B), characters that print
+/// as nothing or reorder text (zero-width space, byte order mark, direction marks) as
+/// \u200b; at most `max_chars` characters (a longer text is cut and says how long it was).
+/// Never quotes a whole file.
 std::string brief(const std::string& s, std::size_t max_chars = 60);
 
 }  // namespace armstudy::cases

@@ -97,6 +97,24 @@ int cmd_validate(const std::vector<std::string>& paths, bool allow_large) {
   return ok ? kExitDone : kExitBadInput;
 }
 
+// why `out` cannot be an output folder ("" if it can): it is empty, or it or a folder
+// above it is a file (a missing folder is made later)
+std::string out_problem(const std::string& out) {
+  if (out.empty()) return "--out is empty; expected a folder (made if missing)";
+  for (std::filesystem::path p = out; !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(p, ec);
+    if (!std::filesystem::exists(st)) {
+      if (p == p.parent_path()) break;
+      continue;
+    }
+    if (std::filesystem::is_directory(st)) break;
+    return "--out '" + out + "': " + (p == out ? "is" : "'" + p.string() + "' is") +
+           " a file, not a folder; expected a folder (made if missing)";
+  }
+  return "";
+}
+
 // "I/N" with 0 <= I < N
 bool parse_shard(const std::string& text, int* index, int* count) {
   const auto slash = text.find('/');
@@ -453,7 +471,8 @@ int main(int argc, char** argv) {
                          "Build index.html, summary.md, junit.xml, sweep tables and the sweep "
                          "report (sweep/index.html) from the results.json of output folders");
   merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
-  merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
+  auto* merge_out_option =
+      merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
   armstudy::app::DiffOptions diff_options;
   std::string diff_base, diff_new, diff_out = diff_options.out.string();
   auto* diff = app.add_subcommand(
@@ -489,6 +508,18 @@ int main(int argc, char** argv) {
     return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)
                ? 0
                : (code ? kExitBadInput : 0);
+  }
+  // the output folder: "" or a file is bad usage, refused before anything is done
+  const std::string* out_given = *run                                  ? &out_dir
+                                 : *expand                             ? &sweep_out
+                                 : *diff                               ? &diff_out
+                                 : *merge && merge_out_option->count() ? &merge_out
+                                                                       : nullptr;
+  if (out_given) {
+    if (const std::string why = out_problem(*out_given); !why.empty()) {
+      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      return kExitBadInput;
+    }
   }
   if (*run || *merge || *diff) {
     if (const std::string why = armstudy::cli::ensure_open_files(); !why.empty()) {

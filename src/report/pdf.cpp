@@ -85,15 +85,32 @@ Live& live() {
   return *l;
 }
 
+// the temporary folder: TMPDIR when it names a folder, otherwise /tmp (and a TMPDIR that
+// names no folder is said once, rather than failing every print)
+fs::path temp_folder() {
+  static const fs::path dir = [] {
+    const char* env = std::getenv("TMPDIR");
+    if (!env || !*env) return fs::path("/tmp");
+    std::error_code ec;
+    if (fs::is_directory(env, ec)) return fs::path(env);
+    std::fprintf(stderr,
+                 "armstudy: TMPDIR is '%s', which is not a folder; Chromium's temporary "
+                 "profiles go to /tmp\n",
+                 env);
+    return fs::path("/tmp");
+  }();
+  return dir;
+}
+
 // a fresh profile folder under the system's temporary folder, holding a lock file this
 // process keeps locked while it prints: remove_stale_profiles() leaves live ones alone
 struct Profile {
   fs::path path;
   Profile() {
-    std::string tmpl = (fs::temp_directory_path() / (std::string(kProfilePrefix) + "XXXXXX")).string();
+    std::string tmpl = (temp_folder() / (std::string(kProfilePrefix) + "XXXXXX")).string();
     if (!::mkdtemp(tmpl.data()))
       throw PdfError(std::string("cannot create a temporary Chromium profile in ") +
-                     fs::temp_directory_path().string() + ": " + std::strerror(errno));
+                     temp_folder().string() + ": " + std::strerror(errno));
     path = tmpl;
     const int fd = ::open((path / kProfileLock).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
     if (fd >= 0) ::flock(fd, LOCK_EX | LOCK_NB);
@@ -781,8 +798,7 @@ void kill_browsers() {
 size_t remove_stale_profiles() {
   std::error_code ec;
   size_t removed = 0;
-  const fs::path tmp = fs::temp_directory_path(ec);
-  if (ec) return 0;
+  const fs::path tmp = temp_folder();
   for (const auto& e : fs::directory_iterator(tmp, ec)) {
     const std::string f = e.path().filename().string();
     if (f.rfind(kProfilePrefix, 0) != 0 || !e.is_directory(ec)) continue;
