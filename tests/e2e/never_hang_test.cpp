@@ -1,4 +1,4 @@
-// Never hang, never crash (issue 33): a FIFO, device or link loop where armstudy reads a
+// Never hang, never crash: a FIFO, device or link loop where armstudy reads a
 // file, PLplot without its driver, too few open files and every study's failure path end
 // promptly in a message and an exit code (2 bad input, 1 unsolvable, 3 runtime), never in
 // a prompt, a wait for a writer or a signal. Each run is bounded (testing::run_bounded):

@@ -1,4 +1,4 @@
-// Smaller items of issue 33: `--out ""` or a file as --out is bad usage (exit 2, not 3),
+// Usage and environment: `--out ""` or a file as --out is bad usage (exit 2, not 3),
 // and a TMPDIR that is no folder does not stop --pdf.
 #include <gtest/gtest.h>
 
