@@ -84,7 +84,8 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
       se.ball_xy_m.push_back(xy(r.ball[k]));
       se.circle_centre_xy_m.push_back(xy(r.circle_centre[k]));
     }
-    for (size_t i = 0; i < r.snapshot_t.size(); ++i) {
+    // a failed integration has the snapshot times it asked for, but no states to index
+    for (size_t i = 0; i < r.snapshot_index.size(); ++i) {
       const int k = r.snapshot_index[i];
       s.snapshots.push_back({r.snapshot_t[i], k, vec(r.q[k]), xy(r.ball[k])});
     }

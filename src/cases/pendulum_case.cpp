@@ -33,6 +33,7 @@ studies::PendulumSpec load_pendulum_spec(Map& root) {
   if (const auto v = sec->number("atol", NumberRule::range(1e-16, 1e-3, ""))) s.atol = *v;
   if (const auto v = sec->number("drift_tolerance", NumberRule::positive("")))
     s.drift_tolerance = *v;
+  if (const auto v = sec->integer("max_steps", 100, 100'000'000)) s.max_steps = *v;
   // the strip and the locus draw every snapshot
   const double snapshots = std::floor(s.duration / s.snapshot_step + 1e-9) + 1;
   if (snapshots > kMaxPendulumSnapshots)

@@ -114,6 +114,20 @@ std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std
   }
   double v = 0;
   const std::string& s = node.Scalar();
+  // yaml-cpp reads "1.0" and !!str 0.5 as numbers: a quoted or text-tagged scalar is text,
+  // and text where a number belongs is refused (!!float and !!int are numbers)
+  const std::string& tag = node.Tag();
+  if (tag == "!") {
+    diag.error(node.Mark(), name + " is the quoted text '" + brief(s) +
+                                "'; expected a number (written without quotes)");
+    return std::nullopt;
+  }
+  if (tag != "?" && tag != "tag:yaml.org,2002:float" && tag != "tag:yaml.org,2002:int") {
+    const std::string shown = tag.rfind("tag:yaml.org,2002:", 0) == 0 ? "!!" + tag.substr(18) : tag;
+    diag.error(node.Mark(), name + " is '" + brief(s) + "' tagged " + brief(shown) +
+                                "; expected a number (untagged, or tagged !!float or !!int)");
+    return std::nullopt;
+  }
   // yaml-cpp converts .nan/.inf; anything else that is not a number fails
   try {
     v = node.as<double>();
@@ -449,7 +463,12 @@ std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag,
   return root;
 }
 
-std::optional<YAML::Node> parse_text(const std::string& bytes, Diagnostics& diag) {
+std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag) {
+  // old Mac line breaks (a CR alone): yaml-cpp reads a file of them as one line, often a
+  // comment, so "the file is empty"; as LF, one for one, the lines and columns stay
+  std::string bytes = text;
+  for (size_t i = 0; i < bytes.size(); ++i)
+    if (bytes[i] == '\r' && (i + 1 == bytes.size() || bytes[i + 1] != '\n')) bytes[i] = '\n';
   if (!check_yaml_source(bytes, diag)) return std::nullopt;
   YAML::Node root;
   try {

@@ -177,7 +177,8 @@ class Seq {
 /// non-mapping root, records the error and returns nullopt. `text` receives the bytes.
 std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text);
 
-/// Parses YAML text like parse_file (errors recorded against diag's path).
+/// Parses YAML text like parse_file (errors recorded against diag's path). Line breaks
+/// may be LF, CRLF or a CR alone.
 std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag);
 
 /// The closest of `candidates` to `word` by edit distance, if close enough to suggest.

@@ -1,30 +1,17 @@
 #include "cases/yaml_source.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
+#include <cstdio>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
 
 #include <yaml-cpp/eventhandler.h>
 
+#include "cases/input_file.hpp"
 #include "cases/yaml_reader.hpp"
 
 namespace armstudy::cases {
 namespace {
-
-std::string size_text(double bytes) {
-  char buf[32];
-  if (bytes >= 1 << 20)
-    std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / (1 << 20));
-  else
-    std::snprintf(buf, sizeof buf, "%.0f bytes", bytes);
-  return buf;
-}
 
 // a position in the text: line and column (1-based, columns in characters) as a yaml-cpp
 // mark (0-based), so that Diagnostics formats it like every other error
@@ -105,6 +92,15 @@ bool check_text(const std::string& s, Diagnostics& diag) {
     i += n;
   }
   return true;
+}
+
+// characters that print as nothing or reorder the text around them: a name holding one
+// would look like another in a message (zero-width spaces and joiners, direction marks and
+// overrides, the byte order mark, the soft hyphen, invisible operators)
+bool invisible(char32_t cp) {
+  return cp == 0xAD || cp == 0x180E || (cp >= 0x200B && cp <= 0x200F) ||
+         (cp >= 0x2028 && cp <= 0x202E) || (cp >= 0x2060 && cp <= 0x2069) || cp == 0xFEFF ||
+         cp == 0x85 || (cp >= 0xFFF9 && cp <= 0xFFFB);
 }
 
 struct Refused {
@@ -228,7 +224,13 @@ std::string brief(const std::string& s, size_t max_chars) {
       ++i;
       continue;
     }
-    out.append(s, i, n);
+    if (invisible(cp)) {
+      char esc[16];
+      std::snprintf(esc, sizeof esc, "\\u%04x", static_cast<unsigned>(cp));
+      out += esc;
+    } else {
+      out.append(s, i, n);
+    }
     i += n;
   }
   if (i < s.size()) out += "... (" + std::to_string(s.size()) + " bytes)";
@@ -236,72 +238,11 @@ std::string brief(const std::string& s, size_t max_chars) {
 }
 
 bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* bytes) {
-  // O_NONBLOCK: opening a FIFO without a writer must not wait for one
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) {
-    diag.error(YAML::Mark::null_mark(), std::string("cannot open the file: ") +
-                                            std::strerror(errno) +
-                                            "; expected a readable YAML file");
-    return false;
-  }
-  struct FdCloser {
-    int fd;
-    ~FdCloser() { ::close(fd); }
-  } closer{fd};
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) {
-    diag.error(YAML::Mark::null_mark(),
-               std::string("cannot read the file: ") + std::strerror(errno));
-    return false;
-  }
-  if (S_ISDIR(st.st_mode)) {
-    diag.error(YAML::Mark::null_mark(), "is a folder; expected a YAML file");
-    return false;
-  }
-  if (!S_ISREG(st.st_mode)) {
-    const char* kind = S_ISFIFO(st.st_mode)                         ? "a FIFO (named pipe)"
-                       : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
-                       : S_ISSOCK(st.st_mode)                       ? "a socket"
-                                                                    : "not a regular file";
-    diag.error(YAML::Mark::null_mark(),
-               std::string("is ") + kind + "; expected a regular YAML file");
-    return false;
-  }
-  if (static_cast<unsigned long long>(st.st_size) > kMaxFileBytes) {
-    diag.error(YAML::Mark::null_mark(), "is " + size_text(double(st.st_size)) +
-                                            "; expected a YAML file of at most " +
-                                            size_text(double(kMaxFileBytes)));
-    return false;
-  }
-  // back to blocking reads of a regular file; never more than the cap, even if it grows
-  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-  std::string out;
-  out.resize(static_cast<size_t>(st.st_size) + 1);
-  size_t got = 0;
-  for (;;) {
-    if (got == out.size()) {
-      if (out.size() > kMaxFileBytes) break;
-      out.resize(std::min(out.size() * 2, kMaxFileBytes + 1));
-    }
-    const ssize_t r = ::read(fd, out.data() + got, out.size() - got);
-    if (r < 0 && errno == EINTR) continue;
-    if (r < 0) {
-      diag.error(YAML::Mark::null_mark(),
-                 std::string("cannot read the file: ") + std::strerror(errno));
-      return false;
-    }
-    if (r == 0) break;
-    got += static_cast<size_t>(r);
-  }
-  if (got > kMaxFileBytes) {
-    diag.error(YAML::Mark::null_mark(),
-               "grew past " + size_text(double(kMaxFileBytes)) +
-                   " while being read; expected a YAML file of at most that size");
-    return false;
-  }
-  out.resize(got);
-  *bytes = std::move(out);
-  return true;
+  std::string why;
+  bool runtime = false;
+  if (read_input_file(path, {kMaxFileBytes, "YAML file", true}, bytes, &why, &runtime)) return true;
+  diag.error(YAML::Mark::null_mark(), why);
+  return false;
 }
 
 bool check_yaml_source(const std::string& bytes, Diagnostics& diag) {

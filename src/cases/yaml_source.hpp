@@ -3,7 +3,7 @@
 /// input is refused quickly with its file:line:col instead of hanging, crashing or running
 /// away with memory:
 /// - only a regular file is read (a folder, FIFO or device is refused without reading),
-///   at most kMaxFileBytes;
+///   at most kMaxFileBytes (input_file.hpp, as every file armstudy reads);
 /// - the text is UTF-8 without NUL bytes or other control characters but tab, LF and CR;
 /// - the file holds one YAML document (text after `...` or a second `---` is refused);
 /// - nesting is at most kMaxDepth levels deep, keys are plain scalars (no complex keys),
@@ -28,7 +28,8 @@ inline constexpr int kMaxDepth = 64;
 inline constexpr std::size_t kMaxNodes = 200000;
 
 /// Reads the bytes of a regular file of at most kMaxFileBytes into `bytes`; otherwise
-/// records why not (no position) and returns false. Never blocks on a FIFO.
+/// records why not (no position) and returns false. Never blocks on a FIFO
+/// (read_input_file).
 bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* bytes);
 
 /// Checks the text (UTF-8, no NUL or control characters) and its YAML structure (one
@@ -36,8 +37,10 @@ bool read_regular_file(const std::string& path, Diagnostics& diag, std::string* 
 /// its line:col and returns false. A syntax error is recorded as "not valid YAML".
 bool check_yaml_source(const std::string& bytes, Diagnostics& diag);
 
-/// `s` for a message: control characters escaped, at most `max_chars` characters (a
-/// longer text is cut and says how long it was). Never quotes a whole file.
+/// `s` for a message: control characters escaped (\n, \t, \x1B), characters that print
+/// as nothing or reorder text (zero-width space, byte order mark, direction marks) as
+/// \u200b; at most `max_chars` characters (a longer text is cut and says how long it was).
+/// Never quotes a whole file.
 std::string brief(const std::string& s, std::size_t max_chars = 60);
 
 }  // namespace armstudy::cases

@@ -8,6 +8,7 @@
 
 #include "app/run_case.hpp"
 #include "cases/case_error.hpp"
+#include "cases/input_file.hpp"
 #include "cli/diff_frames.hpp"
 #include "report/text_escape.hpp"
 #include "scene/scene_error.hpp"
@@ -311,6 +312,9 @@ std::vector<CaseOutput> read_run(const fs::path& dir) {
     out = collect_outputs({dir}, &problems);
   } catch (const InputLimitError& e) {
     throw DiffInputError(report::terminal_text(e.what()));
+  } catch (const cases::InputFileError& e) {
+    if (e.runtime()) throw;
+    throw DiffInputError(report::terminal_text(e.what()));
   }
   // collect_outputs read every shared key of each file strictly (a misspelt, missing or
   // mistyped one is a problem named there), so the records below are whole
@@ -380,6 +384,9 @@ int run_diff(const DiffOptions& o) {
   } catch (const cases::CaseErrors& e) {
     std::fprintf(stderr, "%s\nnothing was written\n", e.what());
     return kBadInput;
+  } catch (const cases::InputFileError& e) {  // out of file descriptors, an I/O error
+    std::fprintf(stderr, "armstudy diff: %s\nnothing was written\n", e.what());
+    return kRuntime;
   }
   FrameOptions fo;
   fo.channel_tolerance = o.pixel_tolerance.value_or(tol.pixel_channel.value_or(0));
@@ -401,6 +408,11 @@ int run_diff(const DiffOptions& o) {
     fs::remove_all(tmp);
     write_file_atomic(o.out / "diff.md", report::diff_markdown(d));
     report::write_diff_page(o.out, d);
+  } catch (const cases::InputFileError& e) {  // a frame that is a FIFO, a device, a link
+    std::error_code ec;
+    fs::remove_all(o.out / (".diff.tmp-" + process_tag()), ec);
+    std::fprintf(stderr, "armstudy diff: %s\nnothing was written\n", e.what());
+    return e.runtime() ? kRuntime : kBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy diff: cannot write the diff into %s: %s\n", o.out.c_str(),
                  e.what());

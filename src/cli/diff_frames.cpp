@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "cases/input_file.hpp"
 #include "cli/confined_path.hpp"
 #include "scene/image.hpp"
 #include "scene/png_writer.hpp"
@@ -17,13 +18,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// false when the frame is missing (a difference); @throws cases::InputFileError when it
+// is there but no regular file of at most kMaxFrameBytes (a FIFO, a device, a link)
 bool read_bytes(const fs::path& p, std::string* out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return static_cast<bool>(in) || in.eof();
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(p, ec))) return false;
+  *out = cases::read_input_file(p.string(), {cases::kMaxFrameBytes, "PNG frame", false});
+  return true;
 }
 
 // outlines the box [x0, x1] x [y0, y1] grown by `pad` px with a `width` px line
@@ -76,10 +77,8 @@ report::FrameDiff compare_frame(const fs::path& base, const fs::path& now, const
   const fs::path a = base / file, b = now / file;
   // a path from results.json is read only inside its case folder, and only a regular file
   for (const auto& [folder, p] : {std::pair{base, a}, std::pair{now, b}}) {
-    std::string why = confined_problem(folder, file);
-    std::error_code ec;
-    if (why.empty() && fs::exists(p, ec) && !fs::is_regular_file(p, ec))
-      why = "not a regular file; expected a PNG frame";
+    // (a FIFO, device or link inside the folder is refused by read_bytes: bad input)
+    const std::string why = confined_problem(folder, file);
     if (!why.empty()) {
       d.error = (folder / "results.json").string() + ": frame '" + file + "' is " + why;
       d.beyond = true;

@@ -19,10 +19,12 @@ inline constexpr double kMaxFramePixels = 1e8;
 /// sizes differ). When the files differ, copies of both and a difference image (the base
 /// faded to grey, the pixels beyond in red, their bounding box outlined in magenta) are
 /// written to out_dir/<copy_prefix>{base,new,diff}_<file name>, named in the result
-/// relative to out_dir. A frame that cannot be read is a FrameDiff with `error` set (and
-/// beyond), as is one whose path leaves its case folder (absolute, `..`, a symlink out), one
-/// that is not a regular file or a PNG of more than kMaxFramePixels. @throws scene::SceneError when
-/// a copy or the difference image cannot be written.
+/// relative to out_dir. A frame that is missing or cannot be decoded is a FrameDiff with
+/// `error` set (and beyond), as is one whose path leaves its case folder (absolute, `..`, a
+/// symlink out), one that is not a regular file or a PNG of more than kMaxFramePixels.
+/// @throws scene::SceneError when a copy or the difference image cannot be written;
+/// cases::InputFileError when a frame is there but no regular file of at most
+/// cases::kMaxFrameBytes (a FIFO, a device, a link: never opened for reading).
 report::FrameDiff compare_frame(const std::filesystem::path& base, const std::filesystem::path& now,
                                 const std::string& file, int channel_tolerance,
                                 std::size_t pixels_allowed, const std::filesystem::path& out_dir,

@@ -11,11 +11,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <new>
@@ -32,10 +32,12 @@
 #include "cases/budget.hpp"
 #include "cases/case_error.hpp"
 #include "cases/case_info.hpp"
+#include "cases/input_file.hpp"
 #include "cli/confined_path.hpp"
 #include "cli/diff.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/merge.hpp"
+#include "cli/open_files.hpp"
 #include "cli/process_memory.hpp"
 #include "cli/progress.hpp"
 #include "cli/sweep.hpp"
@@ -103,6 +105,24 @@ int cmd_validate(const std::vector<std::string>& paths, bool allow_large) {
   return ok ? kExitDone : kExitBadInput;
 }
 
+// why `out` cannot be an output folder ("" if it can): it is empty, or it or a folder
+// above it is a file (a missing folder is made later)
+std::string out_problem(const std::string& out) {
+  if (out.empty()) return "--out is empty; expected a folder (made if missing)";
+  for (std::filesystem::path p = out; !p.empty(); p = p.parent_path()) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(p, ec);
+    if (!std::filesystem::exists(st)) {
+      if (p == p.parent_path()) break;
+      continue;
+    }
+    if (std::filesystem::is_directory(st)) break;
+    return "--out '" + out + "': " + (p == out ? "is" : "'" + p.string() + "' is") +
+           " a file, not a folder; expected a folder (made if missing)";
+  }
+  return "";
+}
+
 // "I/N" with 0 <= I < N
 bool parse_shard(const std::string& text, int* index, int* count) {
   const auto slash = text.find('/');
@@ -150,15 +170,20 @@ bool listed_files_intact(const std::filesystem::path& folder,
 
 // true if out_dir/<name>/results.json is what this run would write again: the same case
 // file contents, armstudy version and commit, and render option, the case passed (a
-// failed case is always redone) and the files it lists are intact. A missing report.pdf is printed
-// by finish_reports.
+// failed case is always redone) and the files it lists are intact. A missing report.pdf is
+// printed by finish_reports. @throws cases::InputFileError when results.json is there but
+// no regular file of at most kMaxResultsJsonBytes (a FIFO, a device, a link): nothing is
+// run then
 bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
                   const armstudy::app::RunOptions& options) {
   const auto rj = out_dir / c.info.name / "results.json";
-  if (!std::filesystem::exists(rj)) return false;
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(rj, ec))) return false;
+  const std::string bytes = armstudy::cases::read_input_file(
+      rj.string(), {armstudy::cases::kMaxResultsJsonBytes, "results.json file", false});
   try {
-    std::ifstream in(rj);
-    const auto r = armstudy::report::read_record(nlohmann::json::parse(in));  // strict: else redone
+    const auto r =
+        armstudy::report::read_record(nlohmann::json::parse(bytes));  // strict: else redone
     const std::string commit = armstudy::git_commit();
     return r.case_info.sha256 == c.info.sha256 && r.armstudy_version == armstudy::kVersion &&
            r.git_commit.value_or("") == commit && r.run_options.render == options.render &&
@@ -279,10 +304,15 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::vector<LoadedCase> todo;
     size_t skipped = 0;
     for (auto& c : cases) {
-      if (already_done(options.out_dir, c, options))
-        ++skipped;
-      else
-        todo.push_back(std::move(c));
+      try {
+        if (already_done(options.out_dir, c, options))
+          ++skipped;
+        else
+          todo.push_back(std::move(c));
+      } catch (const armstudy::cases::InputFileError& e) {
+        std::fprintf(stderr, "armstudy: %s\nnothing was run\n", e.what());
+        return e.runtime() ? kExitRuntime : kExitBadInput;
+      }
     }
     if (skipped)
       std::fprintf(stderr,
@@ -512,6 +542,10 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out,
       manifest_at = d / armstudy::app::kManifestName;
       manifest = armstudy::app::read_manifest(manifest_at);
     }
+  } catch (const armstudy::cases::InputFileError& e) {
+    std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    return e.runtime() ? kExitRuntime : kExitBadInput;
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n",
                  armstudy::report::terminal_text(e.what()).c_str());
@@ -583,6 +617,9 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out,
 int main(int argc, char** argv) {
   armstudy::cli::keep_freed_memory();          // before any thread: see process_memory.hpp
   armstudy::app::install_interrupt_cleanup();  // first: every thread inherits its signal mask
+  // a write to a pipe or socket whose reader is gone (a helper that died, a closed `| head`)
+  // fails with EPIPE and is reported, instead of killing armstudy without a word
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{
       "armstudy: energy-optimal placement, throwing and time-optimal studies of planar "
       "robot arms, from YAML case files to MuJoCo-rendered reports"};
@@ -652,7 +689,8 @@ int main(int argc, char** argv) {
                          "Build index.html, summary.md, junit.xml, sweep tables and the sweep "
                          "report (sweep/index.html) from the results.json of output folders");
   merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
-  merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
+  auto* merge_out_option =
+      merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
   std::string merge_manifest;
   merge->add_option("--manifest", merge_manifest,
                     "The sweep's sweep-manifest.json (default: one in a merged folder); a case "
@@ -692,6 +730,24 @@ int main(int argc, char** argv) {
     return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)
                ? 0
                : (code ? kExitBadInput : 0);
+  }
+  // the output folder: "" or a file is bad usage, refused before anything is done
+  const std::string* out_given = *run                                  ? &out_dir
+                                 : *expand                             ? &sweep_out
+                                 : *diff                               ? &diff_out
+                                 : *merge && merge_out_option->count() ? &merge_out
+                                                                       : nullptr;
+  if (out_given) {
+    if (const std::string why = out_problem(*out_given); !why.empty()) {
+      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      return kExitBadInput;
+    }
+  }
+  if (*run || *merge || *diff) {
+    if (const std::string why = armstudy::cli::ensure_open_files(); !why.empty()) {
+      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      return kExitRuntime;
+    }
   }
   int code = kExitRuntime;
   try {

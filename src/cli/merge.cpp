@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -10,6 +9,7 @@
 #include <system_error>
 
 #include "app/run_case.hpp"
+#include "cases/input_file.hpp"
 #include "report/markdown.hpp"
 #include "report/number_format.hpp"
 #include "report/owned_output.hpp"
@@ -140,18 +140,21 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
     std::sort(folders.begin(), folders.end());
     for (const auto& f : folders) {
       const fs::path rj = f / "results.json";
-      if (!fs::exists(rj)) continue;
+      std::error_code ec;
+      if (!fs::exists(fs::symlink_status(rj, ec))) continue;
       if (++files > kMaxMergedCases)
         throw InputLimitError(dir.string() + ": more than " + std::to_string(kMaxMergedCases) +
                               " results.json files; expected at most that many cases "
                               "(docs/budgets.md)");
-      std::error_code ec;
-      const std::uintmax_t bytes = fs::is_regular_file(rj, ec) ? fs::file_size(rj, ec) : 0;
-      if (!ec && bytes > kMaxResultsBytes)
-        throw InputLimitError(rj.string() + ": " + std::to_string(bytes) +
+      const std::uintmax_t size = fs::is_regular_file(rj, ec) ? fs::file_size(rj, ec) : 0;
+      if (!ec && size > kMaxResultsBytes)
+        throw InputLimitError(rj.string() + ": " + std::to_string(size) +
                               " bytes; expected a results.json of at most " +
                               std::to_string(kMaxResultsBytes) + " bytes (docs/budgets.md)");
-      total_bytes += bytes;
+      // a FIFO, device, link or oversized file is refused (InputFileError), never read
+      const std::string bytes = cases::read_input_file(
+          rj.string(), {cases::kMaxResultsJsonBytes, "results.json file", false});
+      total_bytes += bytes.size();
       if (total_bytes > kMaxMergedBytes)
         throw InputLimitError(rj.string() + ": the results.json files so far hold " +
                               std::to_string(total_bytes) + " bytes; expected at most " +
@@ -159,9 +162,7 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
       CaseOutput c{f, json()};
       std::string problem;
       try {
-        std::ifstream in(rj, std::ios::binary);
-        if (!in) throw std::runtime_error("cannot open it");
-        c.results = json::parse(in);
+        c.results = json::parse(bytes);
         problem = results_problem(c.results);
         if (problem.empty()) c.record = report::read_record(c.results);
       } catch (const json::parse_error& e) {

@@ -27,11 +27,14 @@ struct CaseOutput {
 
 /// Every DIR/<case>/results.json under the given folders, sorted by case name. Two results
 /// of one case id are one failed case (status "duplicate") naming both folders, and a
-/// warning. @throws InputLimitError beyond the limits above. A file that cannot be used (truncated,
-/// not JSON, a wrong type, an unknown schema_version) is a failed case named after its folder, with
-/// status "unreadable" and a message naming the file and what is wrong; it is also reported in
-/// `warnings`. A folder that is not there is reported in `warnings` (callers that take folders from
-/// the user check them first).
+/// warning. @throws InputLimitError beyond the limits above. A file that cannot be used
+/// (truncated, not JSON, a wrong type, an unknown schema_version) is a failed case named
+/// after its folder, with status "unreadable" and a message naming the file and what is
+/// wrong; it is also reported in `warnings`. A folder that is not there is reported in
+/// `warnings` (callers that take folders from the user check them first). @throws
+/// cases::InputFileError when a results.json is no regular file of at most
+/// cases::kMaxResultsJsonBytes (a FIFO, a device, a link): it is never opened for reading
+/// then, and nothing can be merged.
 std::vector<CaseOutput> collect_outputs(const std::vector<std::filesystem::path>& dirs,
                                         std::vector<std::string>* warnings);
 

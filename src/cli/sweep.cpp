@@ -13,6 +13,7 @@
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
 #include "cases/case_info.hpp"
+#include "cases/input_file.hpp"
 #include "cases/yaml_reader.hpp"
 #include "cli/confined_path.hpp"
 #include "cli/sweep_manifest.hpp"
@@ -416,12 +417,12 @@ ExpandResult expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
   fs::create_directories(out_dir);
   for (const SweepPoint& p : sweep.points) {
     const fs::path f = out_dir / (p.case_name + ".yaml");
-    if (fs::exists(f)) {
-      std::ifstream in(f, std::ios::binary);
-      std::ostringstream ss;
-      ss << in.rdbuf();
-      if (ss.str() == p.yaml) continue;
-    }
+    std::string now, why;
+    bool runtime = false;
+    if (cases::read_input_file(f.string(), {cases::kMaxFileBytes, "YAML file", false}, &now, &why,
+                               &runtime) &&
+        now == p.yaml)
+      continue;
     write_file_atomic(f, p.yaml);
     ++r.written;
   }

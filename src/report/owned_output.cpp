@@ -82,7 +82,7 @@ std::string what_it_is(Kind k) {
     case Kind::kFile: return "a file";
     case Kind::kFolder: return "a folder";
     case Kind::kLink: return "a symbolic link";
-    default: return "not a regular file or folder";
+    default: return "a FIFO, socket or device";
   }
 }
 
@@ -93,9 +93,14 @@ std::string foreign_case_folder(const fs::path& dir, const std::string& name) {
   if (k == Kind::kMissing) return "";
   if (k != Kind::kFolder) return what_it_is(k) + ", not a case folder armstudy wrote";
   std::string text;
-  if (kind_of(dir / "results.json") != Kind::kFile ||
-      !read_head(dir / "results.json", kResultsCap + 1, &text))
+  const Kind results = kind_of(dir / "results.json");
+  if (results == Kind::kMissing)
     return "a folder armstudy did not write (it holds no results.json)";
+  if (results != Kind::kFile)
+    return "a folder armstudy did not write (its results.json is not a regular file but " +
+           what_it_is(results) + "; expected the regular results.json armstudy writes)";
+  if (!read_head(dir / "results.json", kResultsCap + 1, &text))
+    return "a folder armstudy did not write (its results.json cannot be read)";
   const auto j =
       text.size() > kResultsCap ? nlohmann::json() : nlohmann::json::parse(text, nullptr, false);
   if (!j.is_object() || !j.contains("schema_version") || !j["schema_version"].is_number_integer() ||

@@ -18,6 +18,7 @@
 #include <cerrno>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -86,16 +87,32 @@ Live& live() {
   return *l;
 }
 
+// the temporary folder: TMPDIR when it names a folder, otherwise /tmp (and a TMPDIR that
+// names no folder is said once, rather than failing every print)
+fs::path temp_folder() {
+  static const fs::path dir = [] {
+    const char* env = std::getenv("TMPDIR");
+    if (!env || !*env) return fs::path("/tmp");
+    std::error_code ec;
+    if (fs::is_directory(env, ec)) return fs::path(env);
+    std::fprintf(stderr,
+                 "armstudy: TMPDIR is '%s', which is not a folder; Chromium's temporary "
+                 "profiles go to /tmp\n",
+                 env);
+    return fs::path("/tmp");
+  }();
+  return dir;
+}
+
 // a fresh profile folder under the system's temporary folder, holding a lock file this
 // process keeps locked while it prints: remove_stale_profiles() leaves live ones alone
 struct Profile {
   fs::path path;
   Profile() {
-    std::string tmpl =
-        (fs::temp_directory_path() / (std::string(kProfilePrefix) + "XXXXXX")).string();
+    std::string tmpl = (temp_folder() / (std::string(kProfilePrefix) + "XXXXXX")).string();
     if (!::mkdtemp(tmpl.data()))
       throw PdfError(std::string("cannot create a temporary Chromium profile in ") +
-                     fs::temp_directory_path().string() + ": " + std::strerror(errno));
+                     temp_folder().string() + ": " + std::strerror(errno));
     path = tmpl;
     const int fd = ::open((path / kProfileLock).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
     if (fd >= 0) ::flock(fd, LOCK_EX | LOCK_NB);
@@ -255,6 +272,7 @@ class PipeBrowser {
       sigset_t none;
       sigemptyset(&none);
       ::sigprocmask(SIG_SETMASK, &none, nullptr);
+      ::signal(SIGPIPE, SIG_DFL);  // armstudy ignores it
       const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
       if (fd >= 0) {
         ::dup2(fd, 1);
@@ -745,8 +763,7 @@ void kill_browsers() {
 size_t remove_stale_profiles() {
   std::error_code ec;
   size_t removed = 0;
-  const fs::path tmp = fs::temp_directory_path(ec);
-  if (ec) return 0;
+  const fs::path tmp = temp_folder();
   // the shared temporary folder: only real folders of this user named as armstudy names
   // its profiles, removed through the open folder, never following a link
   const int tmp_fd = ::open(tmp.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);

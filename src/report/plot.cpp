@@ -3,10 +3,14 @@
 #include "report/part_name.hpp"
 #include "report/svg_compact.hpp"
 
+#include <fcntl.h>
 #include <locale.h>
 #include <plplot/plstream.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +22,7 @@
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace armstudy::report {
 namespace fs = std::filesystem;
@@ -48,6 +53,91 @@ class CLocaleGuard {
   locale_t c_;
   locale_t old_ = static_cast<locale_t>(0);
 };
+
+// PLplot's errors. plabort() reports through the abort handler and goes on; plexit() calls
+// the exit handler and then exit(1) ("unsolvable" to a caller). The exit handler here
+// throws instead, so that a plot PLplot cannot draw ends in a runtime error with a message
+// (exit 3). PLplot's state after a plexit is undefined: the stream is leaked, not ended,
+// and every later plot is refused with the same message.
+std::string& plplot_failure() {  // guarded by plplot_mutex()
+  static std::string failure;
+  return failure;
+}
+std::string& plplot_last_abort() {  // guarded by plplot_mutex()
+  static std::string text;
+  return text;
+}
+
+std::string drivers_text() {
+  const char* dir = std::getenv("PLPLOT_DRV_DIR");
+  return dir ? std::string("PLPLOT_DRV_DIR is '") + dir + "'"
+             : std::string("PLPLOT_DRV_DIR is unset: PLplot's default driver folder");
+}
+
+// PLplot says "could not open drivers directory" or "unable to load driver" when the
+// process is out of file descriptors: that is named when it is the case now
+std::string fd_shortage() {
+  const int fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (fd >= 0) {
+    ::close(fd);
+    return "";
+  }
+  if (errno != EMFILE && errno != ENFILE) return "";
+  struct rlimit rl {};
+  ::getrlimit(RLIMIT_NOFILE, &rl);
+  return errno == ENFILE ? "; the system is out of file descriptors"
+                         : "; armstudy is out of file descriptors (ulimit -n is " +
+                               std::to_string(rl.rlim_cur) + ")";
+}
+
+std::string plplot_error_text(const std::string& what) {
+  return "cannot draw plots: " + what + fd_shortage() + " (" + drivers_text() +
+         "); expected PLplot's cairo driver (Debian: plplot-driver-cairo) in the folder that "
+         "PLPLOT_DRV_DIR names, or PLPLOT_DRV_DIR unset";
+}
+
+int throw_on_plexit(PLCHAR_VECTOR message) {
+  std::string m = message ? message : "";
+  if (!plplot_last_abort().empty()) m += " after: " + plplot_last_abort();
+  plplot_failure() = plplot_error_text("PLplot failed: " + m);
+  throw std::runtime_error(plplot_failure());
+}
+
+void keep_plabort(PLCHAR_VECTOR message) { plplot_last_abort() = message ? message : ""; }
+
+// true if PLplot lists the device; plinit would otherwise ask for a device on stdin (and
+// hang there, or exit(1) after ten tries)
+bool device_listed(const char* device) {
+  std::vector<const char*> menu(256), names(256);
+  const char** m = menu.data();
+  const char** n = names.data();
+  int count = static_cast<int>(names.size());
+  plgDevs(&m, &n, &count);
+  for (int i = 0; i < count; ++i)
+    if (n[i] && std::strcmp(n[i], device) == 0) return true;
+  return false;
+}
+
+// called with plplot_mutex() held, before a stream is made: throws if a plot cannot be drawn
+void require_device(const char* device) {
+  if (!plplot_failure().empty()) throw std::runtime_error(plplot_failure());
+  plsexit(throw_on_plexit);
+  plsabort(keep_plabort);
+  // plabort prints to stderr unless the stream has an error buffer: the handler keeps it
+  static PLINT code = 0;
+  static char text[1024];
+  plsError(&code, text);
+  static bool listed = false;  // once listed, it stays (PLplot reads its folder once)
+  if (listed) return;
+  plplot_last_abort().clear();
+  listed = device_listed(device);
+  if (!listed) {
+    const std::string why = plplot_last_abort().empty() ? "" : " (" + plplot_last_abort() + ")";
+    plplot_failure() =
+        plplot_error_text(std::string("PLplot has no '") + device + "' device" + why);
+    throw std::runtime_error(plplot_failure());
+  }
+}
 
 // okabe-ito colour-blind-safe palette, then a few darker extras
 constexpr Rgb kPalette[] = {{0, 114, 178},  {213, 94, 0},   {0, 158, 115}, {204, 121, 167},
@@ -84,22 +174,27 @@ PLINT style_code(LineStyle s) {
 class Page {
  public:
   Page(const fs::path& svg, int width_pt, int height_pt, int slots)
-      : lock_(plplot_mutex()), stream_(std::make_unique<plstream>()), p(*stream_) {
+      : lock_(plplot_mutex()), stream_(make_stream(kDevice)), p(*stream_) {
     // plplot (through cairo) ignores failed writes: it draws into memory here, and the
     // file is written by write_file_atomic, which says why a write fails (disk full, ...)
     mem_ = ::open_memstream(&buf_, &len_);
     if (!mem_) throw std::runtime_error("cannot draw " + svg.string() + ": out of memory");
-    p.sdev("svgcairo");
-    p.sfile(mem_);
-    p.spage(0, 0, width_pt, height_pt, 0, 0);
-    p.scolbg(kWhite.r, kWhite.g, kWhite.b);
-    p.scmap0n(std::max(16, kFirstFreeSlot + slots));
-    p.init();
-    p.scol0(kSlotBackground, kWhite.r, kWhite.g, kWhite.b);
-    p.scol0(kSlotInk, kBlack.r, kBlack.g, kBlack.b);
-    p.col0(kSlotInk);
-    p.adv(0);
-    p.schr(0, 1.0);
+    try {
+      p.sdev(kDevice);
+      p.sfile(mem_);
+      p.spage(0, 0, width_pt, height_pt, 0, 0);
+      p.scolbg(kWhite.r, kWhite.g, kWhite.b);
+      p.scmap0n(std::max(16, kFirstFreeSlot + slots));
+      p.init();
+      p.scol0(kSlotBackground, kWhite.r, kWhite.g, kWhite.b);
+      p.scol0(kSlotInk, kBlack.r, kBlack.g, kBlack.b);
+      p.col0(kSlotInk);
+      p.adv(0);
+      p.schr(0, 1.0);
+    } catch (...) {
+      abandon();
+      throw;
+    }
   }
   Page(const Page&) = delete;
   Page& operator=(const Page&) = delete;
@@ -114,6 +209,7 @@ class Page {
   // closes the stream (which writes the file), compacts it and moves it into place
   void finish(const fs::path& svg) {
     stream_.reset();  // plplot closes mem_: buf_ holds the SVG
+    mem_ = nullptr;
     const std::string text = buf_ ? std::string(buf_, len_) : std::string();
     if (text.find("</svg>") == std::string::npos)
       throw std::runtime_error("plplot drew no complete SVG for " + svg.string());
@@ -121,11 +217,30 @@ class Page {
   }
 
   ~Page() {
+    if (!plplot_failure().empty()) {
+      abandon();
+      return;
+    }
     stream_.reset();  // (closes mem_ when finish() was not reached)
     std::free(buf_);
   }
 
  private:
+  static constexpr const char* kDevice = "svgcairo";
+
+  static std::unique_ptr<plstream> make_stream(const char* device) {
+    require_device(device);
+    return std::make_unique<plstream>();
+  }
+  // after a plexit: PLplot's stream is left as it is (ending it may fail again)
+  void abandon() {
+    (void)stream_.release();
+    if (mem_) std::fclose(mem_);
+    mem_ = nullptr;
+    std::free(buf_);
+    buf_ = nullptr;
+  }
+
   std::lock_guard<std::mutex> lock_;
   CLocaleGuard locale_;
   std::unique_ptr<plstream> stream_;

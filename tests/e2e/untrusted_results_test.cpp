@@ -5,6 +5,7 @@
 // a case whose listed files are gone is redone and an errored case is a failed case.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -61,7 +62,8 @@ fs::path write_case(const fs::path& dir, const std::string& name) {
 class UntrustedResults : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    root_ = fresh_dir("untrusted_results");
+    // one folder per process: CTest runs the tests of this suite side by side
+    root_ = fresh_dir("untrusted_results_" + std::to_string(::getpid()));
     const CmdRun r = armstudy("run --no-render --out " + (root_ / "run").string() + " " +
                               write_case(root_, "a").string());
     ASSERT_EQ(r.exit_code, 0) << r.output;

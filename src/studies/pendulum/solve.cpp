@@ -86,6 +86,7 @@ PendulumResult solve_pendulum(const PendulumSpec& spec, const ProgressFn& progre
   Dopri5Options opt;
   opt.rtol = spec.rtol;
   opt.atol = spec.atol;
+  opt.max_steps = spec.max_steps;
   Dopri5Stats stats;
   std::vector<OdeState> xs;
   try {

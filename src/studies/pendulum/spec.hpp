@@ -26,6 +26,7 @@ struct PendulumSpec {
   double rtol = 1e-12;             ///< DOPRI5 relative tolerance
   double atol = 1e-12;             ///< DOPRI5 absolute tolerance (rad, rad/s)
   double drift_tolerance = 1e-8;   ///< allowed relative energy drift (check)
+  long max_steps = 10'000'000;     ///< DOPRI5 steps (accepted + rejected) before it gives up
 };
 
 /// Sec. 3's parameters: m3 = 0.109 kg, m4 = 0.122 kg, r4 = 0.075 m, r_b = 0.015 m. What
