@@ -41,15 +41,16 @@ make_work() {
   export PARALLEL_HOME=$work/parallel TMPDIR=$work  # GNU Parallel's files stay in here
 }
 
-# make_cases COUNT: the bundled sweep expanded into $work/all, every k-th case (sorted by
-# name) copied into $work/sweep-cases so that COUNT cases spread over the whole sweep, and
-# the unsharded reference run of them in $work/one (merged). Sets local_seconds.
+# make_cases COUNT: the tests' sweep (tests/sweeps/placement-small.yaml, 24 cases)
+# expanded into $work/all, every k-th case (sorted by name) copied into $work/sweep-cases
+# so that COUNT cases spread over the whole sweep, and the unsharded reference run of them
+# in $work/one (merged). Sets local_seconds.
 make_cases() {
-  local count=$1 sweep="$src/reports/sweeps/placement-link-ratio.yaml"
+  local count=$1 sweep="$src/tests/sweeps/placement-small.yaml"
   "$armstudy" sweep expand "$sweep" --out "$work/all" 2>"$work/expand.log" || { cat "$work/expand.log"; fail "expand"; }
   local files=("$work/all"/*.yaml)
   local n=${#files[@]} step i
-  [ "$n" -ge "$count" ] || fail "the bundled sweep has $n cases; expected at least $count"
+  [ "$n" -ge "$count" ] || fail "the tests' sweep has $n cases; expected at least $count"
   step=$((n / count))
   mkdir "$work/sweep-cases"
   for ((i = 0; i < count; i++)); do cp "${files[$((i * step))]}" "$work/sweep-cases/"; done

@@ -4,7 +4,7 @@
 # made here; config, keys and logs in one temporary folder) stands for a lab machine that
 # shares the output folder at the same path (as over NFS). The README's line
 #   parallel --sshlogin 2/NODE --workdir "$PWD" armstudy run sweep-cases ... --shard {}/4 ::: 0 1 2 3
-# runs a subset of the bundled sweep through it; every shard must have gone over ssh, and
+# runs the tests' 24-case sweep through it; every shard must have gone over ssh, and
 # the merged tables must equal an unsharded local run byte for byte. The daemon is stopped
 # and the folder removed on every exit path. Prints the overhead against the local run.
 # usage: ssh_parallel_test.sh SOURCE_DIR ARMSTUDY
@@ -15,7 +15,7 @@ armstudy=$(realpath "$2")
 need_root "the GNU Parallel over ssh test" /usr/sbin/sshd ssh ssh-keygen parallel python3
 make_work
 
-cases=48
+cases=24   # the tests' sweep (tests/sweeps/placement-small.yaml)
 shards=4
 node=armstudy-node   # the ssh_config entry GNU Parallel logs in to
 sshd_pid=""

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# The bundled sweep, expanded and run (a) in one run, (b) as 4 shards in a scrambled order
-# with one shard killed midway and re-run, (c) by GNU Parallel with 2 jobs, (d) through the
-# Slurm array script's body with the scheduler's variables set. Every way must merge into
-# byte-identical sweep tables; every results.json must validate against the schema and a
-# broken one must not.
+# The tests' sweep (tests/sweeps/placement-small.yaml: the bundled sweep's two axes, 24
+# cheap cases), expanded and run (a) in one run, (b) as 4 shards in a scrambled order with
+# one shard killed after its first case and re-run, (c) by GNU Parallel with 2 jobs, (d)
+# through the Slurm array script's body with the scheduler's variables set. Every way must
+# merge into byte-identical sweep tables; every results.json must validate against the
+# schema and a broken one must not. The bundled 200-case sweep is scripts/bench_sweep.sh's.
 # usage: sweep_scale_out_test.sh SOURCE_DIR ARMSTUDY
 set -euo pipefail
 src=$1
@@ -13,10 +14,10 @@ trap 'rm -rf "$work"' EXIT
 export LP_NUM_THREADS=1
 fail() { echo "FAIL: $*"; exit 1; }
 
-sweep="$src/reports/sweeps/placement-link-ratio.yaml"
+sweep="$src/tests/sweeps/placement-small.yaml"
 "$armstudy" sweep expand "$sweep" --out "$work/cases" 2>"$work/expand.log" || { cat "$work/expand.log"; fail "expand"; }
 n=$(ls "$work/cases"/*.yaml | wc -l)
-[ "$n" -ge 200 ] || fail "the bundled sweep has $n cases; expected at least 200"
+[ "$n" -eq 24 ] || fail "the tests' sweep has $n cases; expected 6 x 4 = 24"
 # expanding again writes nothing new and names are content hashes: stable
 "$armstudy" sweep expand "$sweep" --out "$work/cases" 2>"$work/expand2.log"
 grep -q ", 0 file(s) written" "$work/expand2.log" || fail "re-expansion rewrote files: $(cat "$work/expand2.log")"
@@ -39,15 +40,30 @@ grep -q "Key figures over arm.links\[2\].length" "$work/one/sweep/index.html" ||
 [ "$(grep -c '<td class="name">' "$work/one/index.html")" -eq "$n" ] || fail "index.html does not list the $n cases"
 grep -q 'href="sweep/index.html"' "$work/one/index.html" || fail "index.html does not link the sweep report"
 
-# (b) 4 shards in the order 2, 0, 3, then shard 1 killed midway and run again
+# (b) 4 shards in the order 2, 0, 3, then shard 1 killed (SIGKILL) after its first case
+# and run again
 for i in 2 0 3; do
   "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard "$i/4" 2>>"$work/shards.log" ||
     { tail "$work/shards.log"; fail "shard $i/4"; }
 done
-timeout -s KILL 1 "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 1/4 2>>"$work/shards.log" || true
-leftovers=$(find "$work/sharded" -maxdepth 1 -name '.*.tmp-*' | wc -l)
+per_shard=$(( $(ls "$work/sharded"/*/results.json | wc -l) / 3 ))
+[ "$per_shard" -ge 3 ] || fail "a shard has $per_shard case(s); expected 24 / 4"
+"$armstudy" run "$work/cases" --no-render --jobs 1 --out "$work/sharded" --shard 1/4 2>"$work/killed.log" &
+killed_pid=$!
+until grep -qs '^done:' "$work/killed.log"; do
+  kill -0 "$killed_pid" 2>/dev/null || { cat "$work/killed.log"; fail "shard 1/4 ended before its first case was done"; }
+  sleep 0.01
+done
+kill -KILL "$killed_pid"
+wait "$killed_pid" 2>/dev/null && fail "shard 1/4 was not killed: it had finished (cases too quick for this check)"
+leftovers=$(find "$work/sharded" -maxdepth 1 -name '.armstudy-*' | wc -l)
+[ "$leftovers" -ge 1 ] || fail "the killed shard left no scratch folder: it was not killed mid-run"
 "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 1/4 2>"$work/rerun.log" ||
   { tail "$work/rerun.log"; fail "re-run of the killed shard"; }
+grep -q "^removed [0-9]* temporary folder" "$work/rerun.log" || fail "the re-run did not remove the killed shard's scratch folder: $(cat "$work/rerun.log")"
+skipped=$(grep -o '^skipped [0-9]*' "$work/rerun.log" | cut -d' ' -f2)
+[ -n "$skipped" ] && [ "$skipped" -ge 1 ] && [ "$skipped" -lt "$per_shard" ] ||
+  fail "the re-run skipped '${skipped}' of the killed shard's $per_shard cases; expected those it had finished"
 "$armstudy" merge "$work/sharded" 2>"$work/merge-sharded.log" || { cat "$work/merge-sharded.log"; fail "merge of the shards"; }
 for f in sweep.csv sweep.json; do
   cmp "$work/one/$f" "$work/sharded/$f" || fail "$f of the sharded run differs from the unsharded run"
@@ -55,9 +71,9 @@ done
 # a re-run skips what exists
 "$armstudy" run "$work/cases" --no-render --out "$work/sharded" --shard 0/4 2>"$work/skip.log"
 grep -q "skipped" "$work/skip.log" || fail "a re-run did not skip finished cases: $(cat "$work/skip.log")"
-left=$(find "$work/sharded" -maxdepth 1 -name ".*.tmp-*" | wc -l)
-[ "$left" -eq 0 ] || fail "$left temporary folder(s) of the killed shard remain after the re-run"
-echo "killed shard left $leftovers temporary folder(s); the re-run cleaned them and completed it"
+left=$(find "$work/sharded" -maxdepth 1 -name ".armstudy-*" | wc -l)
+[ "$left" -eq 0 ] || fail "$left scratch folder(s) of the killed shard remain after the re-run"
+echo "killed shard left $leftovers scratch folder(s) and finished $skipped case(s); the re-run cleaned them and ran the rest"
 
 # (c) GNU Parallel, 2 jobs on this machine (the README's one-liner)
 parallel -j2 "$armstudy" run "$work/cases" --no-render --out "$work/par" --shard {}/2 ::: 0 1 2>"$work/par.log" ||

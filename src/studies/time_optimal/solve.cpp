@@ -332,15 +332,6 @@ void sample_exact_motion(const Problem& pb, const SolverResult& exact, int steps
 }
 }  // namespace
 
-core::PlanarChain default_arm(double L1, double L2) {
-  core::PlanarChain c;
-  // massless links, 1.0 kg at the end of each (Ozkipcak 1994)
-  c.links = {{L1, 0.0, L1 / 2, 0.0, 0.0, true}, {L2, 0.0, L2 / 2, 0.0, 0.0, true}};
-  c.point_masses = {{0, L1, 0.0, 1.0}, {1, L2, 0.0, 1.0}};
-  c.gravity = 0.0;
-  return core::make_chain(c);
-}
-
 Result solve(const Spec& spec, const ProgressFn& progress) {
   const auto report = [&](double f, std::string_view stage) {
     if (progress) progress(f, stage);

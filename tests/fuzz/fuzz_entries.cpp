@@ -1,0 +1,105 @@
+#include "fuzz/fuzz_entries.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "app/pipeline.hpp"
+#include "cases/case_error.hpp"
+#include "cli/diff_tolerances.hpp"
+#include "cli/merge.hpp"
+#include "cli/sweep.hpp"
+
+namespace armstudy::fuzz {
+namespace {
+namespace fs = std::filesystem;
+
+const char* kBase =
+    "study: placement\nname: base\nplacement: {length_fraction: 0.5, nx_s: 4, samples: 21}\n";
+const char* kSweep =
+    "sweep: fuzz\nbase: fuzz-base.yaml\nmode: grid\naxes:\n"
+    "  - path: placement.length_fraction\n    values: [0.4, 0.6]\n";
+
+// this process's folder for the files the readers take by path, removed at exit
+struct WorkDir {
+  fs::path path = fs::temp_directory_path() / ("armstudy-fuzz-" + std::to_string(getpid()));
+  WorkDir() { fs::create_directories(path / "run" / "case-a"); }
+  ~WorkDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+const fs::path& work_dir() {
+  static const WorkDir dir;
+  return dir.path;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
+// "" when `load` loaded or refused with CaseErrors that each say why
+template <class Load>
+std::string only_case_errors(const char* what, Load load) {
+  try {
+    load();
+  } catch (const cases::CaseErrors& e) {
+    if (e.errors().empty()) return std::string(what) + ": refused without an error";
+    for (const auto& err : e.errors())
+      if (err.message.empty()) return std::string(what) + ": an error without a message";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string case_and_sweep_loaders(const std::string& input) {
+  std::string problem =
+      only_case_errors("as a case", [&] { app::load_case_text(input, "fuzz.yaml"); });
+  if (!problem.empty()) return problem;
+  const fs::path& d = work_dir();
+  const std::string sweep = (d / "fuzz-sweep.yaml").string();
+  // the input as a sweep over the fixed base
+  write(d / "fuzz-base.yaml", kBase);
+  write(sweep, input);
+  problem = only_case_errors("as a sweep", [&] { app::load_sweep(sweep); });
+  if (!problem.empty()) return problem;
+  // the input as the base of the fixed sweep
+  write(d / "fuzz-base.yaml", input);
+  write(sweep, kSweep);
+  return only_case_errors("as a sweep's base", [&] { app::load_sweep(sweep); });
+}
+
+std::string results_and_tolerances_readers(const std::string& input) {
+  const fs::path& d = work_dir();
+  write(d / "run" / "case-a" / "results.json", input);
+  std::vector<std::string> warnings;
+  const std::vector<app::CaseOutput> outputs = app::collect_outputs({d / "run"}, &warnings);
+  if (outputs.size() != 1)
+    return "as results.json: " + std::to_string(outputs.size()) + " cases read";
+  const report::ResultsRecord& r = outputs[0].record;
+  if (warnings.empty() && r.status != "solved" && r.status != "unsolvable")
+    return "as results.json: read without a warning, status '" + r.status + "'";
+  if (!warnings.empty() && (r.status != "unreadable" || r.message.empty() ||
+                            warnings[0].find("results.json") == std::string::npos))
+    return "as results.json: refused without a failed case naming the file";
+  // what merge writes from it
+  (void)app::summary_markdown(outputs);
+  (void)app::junit_xml(outputs);
+  (void)app::sweep_csv(outputs);
+  (void)app::sweep_json(outputs).dump();
+
+  const std::string tolerances = (d / "tolerances.yaml").string();
+  write(tolerances, input);
+  return only_case_errors("as --tolerances", [&] {
+    const app::DiffTolerances t = app::load_diff_tolerances(tolerances);
+    (void)t.lookup("placement", "min_energy_J");
+    (void)t.lookup("throwing", "idp_run_time_s");
+  });
+}
+
+}  // namespace armstudy::fuzz
