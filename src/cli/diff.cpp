@@ -10,6 +10,7 @@
 #include "cases/case_error.hpp"
 #include "cases/input_file.hpp"
 #include "cli/diff_frames.hpp"
+#include "report/owned_output.hpp"
 #include "report/text_escape.hpp"
 #include "scene/scene_error.hpp"
 
@@ -387,6 +388,16 @@ int run_diff(const DiffOptions& o) {
   } catch (const cases::InputFileError& e) {  // out of file descriptors, an I/O error
     std::fprintf(stderr, "armstudy diff: %s\nnothing was written\n", e.what());
     return kRuntime;
+  }
+  // never over a diff.md, diff.html, report.css or diff-frames/ armstudy did not write
+  if (const auto foreign = report::foreign_outputs(o.out, {}, report::kDiffOutputs);
+      !foreign.empty()) {
+    for (const std::string& f : foreign)
+      std::fprintf(stderr, "armstudy diff: %s\n", report::terminal_text(f).c_str());
+    std::fprintf(stderr,
+                 "nothing was written: armstudy replaces only what it wrote; move these away or "
+                 "choose another --out\n");
+    return kBadInput;
   }
   FrameOptions fo;
   fo.channel_tolerance = o.pixel_tolerance.value_or(tol.pixel_channel.value_or(0));

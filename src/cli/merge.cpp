@@ -159,7 +159,7 @@ std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
         throw InputLimitError(rj.string() + ": the results.json files so far hold " +
                               std::to_string(total_bytes) + " bytes; expected at most " +
                               std::to_string(kMaxMergedBytes) + " together (docs/budgets.md)");
-      CaseOutput c{f, json()};
+      CaseOutput c{f, json(), {}};
       std::string problem;
       try {
         c.results = json::parse(bytes);

@@ -60,6 +60,22 @@ bool html_is_ours(const fs::path& p) {
   return read_head(p, 4096, &head) && head.find(kGeneratorMeta) != std::string::npos;
 }
 
+// diff's frame copies: <case>/{base,new,diff}_<frame>.png, real folders and files only
+bool diff_frames_are_ours(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& c : fs::directory_iterator(dir, ec)) {
+    if (kind_of(c.path()) != Kind::kFolder) return false;
+    for (const auto& f : fs::directory_iterator(c.path(), ec)) {
+      const std::string n = f.path().filename().string();
+      if (kind_of(f.path()) != Kind::kFile || !n.ends_with(".png") ||
+          !(n.starts_with("base_") || n.starts_with("new_") || n.starts_with("diff_")))
+        return false;
+    }
+    if (ec) return false;
+  }
+  return !ec;
+}
+
 bool sweep_json_is_ours(const fs::path& p) {
   std::string text;
   if (!read_head(p, kResultsCap + 1, &text) || text.size() > kResultsCap) return false;
@@ -123,6 +139,12 @@ std::string foreign_run_level_output(const fs::path& out_dir, const std::string&
   const fs::path p = out_dir / name;
   const Kind k = kind_of(p);
   if (k == Kind::kMissing) return "";
+  if (name == "diff-frames") {
+    if (k != Kind::kFolder) return what_it_is(k) + ", not the frame copies armstudy diff writes";
+    return diff_frames_are_ours(p) ? ""
+                                   : "a folder armstudy did not write (it holds more than "
+                                     "diff's <case>/{base,new,diff}_*.png copies)";
+  }
   if (name == "sweep") {
     if (k != Kind::kFolder) return what_it_is(k) + ", not the sweep report armstudy writes";
     if (kind_of(p / "index.html") == Kind::kFile && html_is_ours(p / "index.html")) return "";
@@ -131,8 +153,10 @@ std::string foreign_run_level_output(const fs::path& out_dir, const std::string&
   }
   if (k != Kind::kFile) return what_it_is(k) + ", not a file armstudy wrote";
   bool ours = false;
-  if (name == "index.html")
+  if (name == "index.html" || name == "diff.html")
     ours = html_is_ours(p);
+  else if (name == "diff.md")
+    ours = starts_with_text(p, "# armstudy diff: ");
   else if (name == "report.css")
     ours = starts_with_text(p, "/* armstudy report");
   else if (name == "summary.md")

@@ -23,8 +23,12 @@ std::string foreign_case_folder(const std::filesystem::path& dir, const std::str
 /// (`figures`, e.g. placement_root_loci.svg) and the sweep report's folder `sweep`.
 std::vector<std::string> run_level_outputs(const std::vector<std::string>& figures);
 
-/// Why `out_dir`/`name` (one of run_level_outputs) is not armstudy's: "" when it is
-/// missing or carries armstudy's mark, else what it is.
+/// The outputs `armstudy diff` writes in its --out folder.
+inline const std::vector<std::string> kDiffOutputs = {"diff.md", "diff.html", "report.css",
+                                                      "diff-frames"};
+
+/// Why `out_dir`/`name` (one of run_level_outputs or kDiffOutputs) is not armstudy's: ""
+/// when it is missing or carries armstudy's mark, else what it is.
 std::string foreign_run_level_output(const std::filesystem::path& out_dir, const std::string& name);
 
 /// Every entry in `out_dir` a run would replace and may not: the case folders of `cases`

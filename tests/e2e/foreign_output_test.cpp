@@ -255,3 +255,41 @@ TEST(ForeignOutput, PrintingRunsNoScriptAndReadsNothingOutsideThePagesFolder) {
 }
 
 }  // namespace
+
+namespace {
+
+// armstudy diff writes diff.md, diff.html, report.css and diff-frames/ in its --out: a
+// user's file or folder of one of those names is refused (exit 2) and kept byte for byte,
+// and a diff armstudy wrote there before is replaced
+TEST(ForeignOutput, DiffNeverOverwritesAUsersFileOrFolderOfItsOutputNames) {
+  const fs::path d = fresh_dir("foreign_diff_outputs");
+  const fs::path c = quick_case(d, "compared");
+  ASSERT_EQ(run_cli("run --no-render --out " + (d / "a").string() + " " + c.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("run --no-render --out " + (d / "b").string() + " " + c.string()).exit_code, 0);
+  const std::string diff = "diff " + (d / "a").string() + " " + (d / "b").string() + " --out ";
+  for (const char* name : {"diff.md", "diff.html", "report.css"}) {
+    const fs::path out = d / ("out-" + std::string(name));
+    fs::create_directories(out);
+    std::ofstream(out / name) << "a user's " << name << "\n";
+    const auto before = snapshot(out);
+    const auto r = run_cli(diff + out.string());
+    EXPECT_EQ(r.exit_code, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
+    EXPECT_TRUE(snapshot(out) == before) << name << " was touched";
+  }
+  const fs::path out = d / "out-frames";
+  user_folder(out / "diff-frames");
+  const auto before = snapshot(out);
+  auto r = run_cli(diff + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(snapshot(out) == before) << "a user's diff-frames folder was touched";
+  // armstudy's own diff is replaced by the next one
+  const fs::path mine = d / "out-mine";
+  ASSERT_EQ(run_cli(diff + mine.string()).exit_code, 0);
+  r = run_cli(diff + mine.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(slurp(mine / "diff.md").rfind("# armstudy diff: ", 0), 0u);
+  fs::remove_all(d);
+}
+
+}  // namespace

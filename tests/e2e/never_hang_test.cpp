@@ -64,15 +64,16 @@ TEST(NeverHang, ResultsJsonThatIsAFifoIsRefusedByRunMergeAndDiff) {
   ASSERT_EQ(::mkfifo((out / "swing" / "results.json").c_str(), 0600), 0);
 
   const BoundedRun run =
-      run_bounded({"run", "--no-render", "--out", out.string(), (d / "swing.yaml").string()}, {30});
+      run_bounded({"run", "--no-render", "--out", out.string(), (d / "swing.yaml").string()},
+                  {.timeout_s = 30});
   EXPECT_EQ(run.exit_code, 2) << how(run);
   EXPECT_TRUE(has(run, "its results.json is not a regular file")) << how(run);
-  const BoundedRun merge = run_bounded({"merge", out.string()}, {30});
+  const BoundedRun merge = run_bounded({"merge", out.string()}, {.timeout_s = 30});
   EXPECT_EQ(merge.exit_code, 2) << how(merge);
   EXPECT_TRUE(has(merge, "is a FIFO (named pipe)")) << how(merge);
   for (const auto& [a, b] : {std::pair{out, other}, std::pair{other, out}}) {
-    const BoundedRun diff =
-        run_bounded({"diff", a.string(), b.string(), "--out", (d / "diff").string()}, {30});
+    const BoundedRun diff = run_bounded(
+        {"diff", a.string(), b.string(), "--out", (d / "diff").string()}, {.timeout_s = 30});
     EXPECT_EQ(diff.exit_code, 2) << how(diff);
     EXPECT_TRUE(has(diff, "is a FIFO (named pipe)")) << how(diff);
   }
@@ -85,7 +86,7 @@ TEST(NeverHang, ResultsJsonThatIsALinkIsRefusedByMerge) {
   const fs::path out = pendulum_output(d);
   fs::rename(out / "swing" / "results.json", d / "elsewhere.json");
   fs::create_symlink(d / "elsewhere.json", out / "swing" / "results.json");
-  const BoundedRun merge = run_bounded({"merge", out.string()}, {30});
+  const BoundedRun merge = run_bounded({"merge", out.string()}, {.timeout_s = 30});
   EXPECT_EQ(merge.exit_code, 2) << how(merge);
   EXPECT_TRUE(has(merge, "is a symbolic link; expected a regular results.json file")) << how(merge);
   fs::remove_all(d);
@@ -103,8 +104,8 @@ TEST(NeverHang, FrameThatIsAFifoOrADeviceIsRefusedByDiff) {
   fs::copy(base, now, fs::copy_options::recursive);
   fs::remove(now / "swing" / "strip.png");
   ASSERT_EQ(::mkfifo((now / "swing" / "strip.png").c_str(), 0600), 0);
-  BoundedRun r =
-      run_bounded({"diff", base.string(), now.string(), "--out", (d / "diff").string()}, {30});
+  BoundedRun r = run_bounded({"diff", base.string(), now.string(), "--out", (d / "diff").string()},
+                             {.timeout_s = 30});
   EXPECT_EQ(r.exit_code, 2) << how(r);
   EXPECT_TRUE(has(r, "strip.png: is a FIFO (named pipe); expected a regular PNG frame")) << how(r);
   EXPECT_FALSE(fs::exists(d / "diff" / "diff.md"));
@@ -112,7 +113,8 @@ TEST(NeverHang, FrameThatIsAFifoOrADeviceIsRefusedByDiff) {
   // in diff.md (the confinement of paths from results.json)
   fs::remove(now / "swing" / "strip.png");
   fs::create_symlink("/dev/zero", now / "swing" / "strip.png");
-  r = run_bounded({"diff", base.string(), now.string(), "--out", (d / "diff").string()}, {30});
+  r = run_bounded({"diff", base.string(), now.string(), "--out", (d / "diff").string()},
+                  {.timeout_s = 30});
   EXPECT_EQ(r.exit_code, 1) << how(r);
   EXPECT_NE(slurp(d / "diff" / "diff.md").find("a path through a symlink out of the case folder"),
             std::string::npos);
@@ -128,7 +130,7 @@ TEST(NeverHang, TolerancesThatAreAFifoOrALinkLoopAreRefused) {
   for (const char* f : {"tol.yaml", "loop_a.yaml"}) {
     const BoundedRun r = run_bounded({"diff", out.string(), out.string(), "--out",
                                       (d / "diff").string(), "--tolerances", (d / f).string()},
-                                     {30});
+                                     {.timeout_s = 30});
     EXPECT_EQ(r.exit_code, 2) << f << ": " << how(r);
     EXPECT_TRUE(has(r, "is a FIFO (named pipe)") || has(r, "symbolic links (a link loop?)"))
         << how(r);

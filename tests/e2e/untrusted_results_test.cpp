@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testing/cli.hpp"
 #include "testing/files.hpp"
 
 namespace {
@@ -27,20 +28,8 @@ using nlohmann::json;
 const fs::path kSource = ARMSTUDY_SOURCE_DIR;
 const std::string kBin = ARMSTUDY_BINARY;
 
-struct CmdRun {
-  int exit_code;
-  std::string output;
-};
-
-CmdRun shell(const std::string& command) {
-  CmdRun r{-1, ""};
-  FILE* p = popen((command + " 2>&1 </dev/null").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using CmdRun = armstudy::testing::CliRun;
+CmdRun shell(const std::string& command) { return armstudy::testing::run_shell(command); }
 
 CmdRun armstudy(const std::string& args) { return shell(kBin + " " + args); }
 

@@ -25,9 +25,9 @@ struct CliRun {
   std::string output;  ///< standard output and standard error, interleaved
 };
 
-/// `armstudy ARGS 2>&1 </dev/null`; exit_code -1 when it did not exit normally.
-inline CliRun run_cli(const std::string& args) {
-  const std::string cmd = std::string(ARMSTUDY_BINARY) + " " + args + " 2>&1 </dev/null";
+/// `COMMAND 2>&1 </dev/null` through the shell; exit_code -1 when it did not exit normally.
+inline CliRun run_shell(const std::string& command) {
+  const std::string cmd = command + " 2>&1 </dev/null";
   CliRun r{-1, ""};
   FILE* p = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf;
@@ -37,12 +37,17 @@ inline CliRun run_cli(const std::string& args) {
   return r;
 }
 
+/// `armstudy ARGS 2>&1 </dev/null`; exit_code -1 when it did not exit normally.
+inline CliRun run_cli(const std::string& args) {
+  return run_shell(std::string(ARMSTUDY_BINARY) + " " + args);
+}
+
 /// How run_bounded runs armstudy.
 struct Bounds {
   double timeout_s = 60;    ///< then it is killed (SIGKILL) and counted as a hang
   bool stdin_open = false;  ///< standard input a pipe nobody writes to, kept open (else /dev/null)
   long open_files = 0;      ///< > 0: ulimit -n (soft and hard) for armstudy
-  std::vector<std::pair<std::string, std::string>> env;  ///< set for armstudy only
+  std::vector<std::pair<std::string, std::string>> env = {};  ///< set for armstudy only
 };
 
 struct BoundedRun {
