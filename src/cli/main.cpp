@@ -439,6 +439,11 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::fprintf(stderr, "armstudy: no summary.md/junit.xml written: %s\n",
                  armstudy::report::terminal_text(e.what()).c_str());
     worst = std::max(worst, kExitBadInput);
+  } catch (const armstudy::cases::InputFileError& e) {
+    // a results.json in another folder of --out that is a FIFO, a device or a link
+    std::fprintf(stderr, "armstudy: no summary.md/junit.xml written: %s\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    worst = std::max(worst, e.runtime() ? kExitRuntime : kExitBadInput);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: cannot write summary.md/junit.xml: %s\n", e.what());
     worst = std::max(worst, kExitRuntime);

@@ -25,6 +25,9 @@ namespace mus = kainjow::mustache;
 
 namespace {
 
+// the largest results.json the run's index reads (as merge and diff, docs/budgets.md)
+constexpr std::uintmax_t kMaxIndexedResultsBytes = std::uintmax_t(16) << 20;
+
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + p.string());
@@ -492,9 +495,16 @@ int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies)
       const std::string name = e.path().filename().string();
       if (!e.is_directory() || name.empty() || name[0] == '.') continue;
       const fs::path rj = e.path() / "results.json";
-      if (!fs::exists(rj)) continue;
+      std::error_code ec;
+      const fs::file_status st = fs::symlink_status(rj, ec);
+      if (!fs::exists(st)) continue;
       Row row{name, {}, {}, {}};
+      // another folder's results.json is read only when it is a regular file of at most
+      // kMaxIndexedResultsBytes: a FIFO, device or link is an unreadable row, never opened
+      const bool readable = st.type() == fs::file_type::regular &&
+                            fs::file_size(rj, ec) <= kMaxIndexedResultsBytes && !ec;
       try {
+        if (!readable) throw ResultsError(rj.string(), "not a regular file of armstudy's");
         row.results = nlohmann::json::parse(read_text(rj));
         row.record = read_record(row.results);  // every shared key, typed (else: unreadable)
         const IndexStudy* st = study_of(row.record->study);

@@ -121,6 +121,26 @@ TEST(NeverHang, FrameThatIsAFifoOrADeviceIsRefusedByDiff) {
   fs::remove_all(d);
 }
 
+// the run's index.html and summary.md list every case folder of --out: another folder's
+// results.json that is a FIFO is never opened (an unreadable row in the index; no summary,
+// exit 2, naming it)
+TEST(NeverHang, AFifoResultsJsonInAnotherFolderOfOutIsNotReadForTheIndex) {
+  const fs::path d = fresh_dir("fifo_other_results");
+  const fs::path out = d / "out";
+  fs::create_directories(out / "someone-else");
+  ASSERT_EQ(::mkfifo((out / "someone-else" / "results.json").c_str(), 0600), 0);
+  const fs::path c = pendulum_case(d, "swing");
+  const BoundedRun r =
+      run_bounded({"run", "--no-render", "--out", out.string(), c.string()}, {.timeout_s = 60});
+  EXPECT_FALSE(r.hung) << how(r);
+  // the case is done; the run's summary cannot count a case whose result is a FIFO
+  EXPECT_EQ(r.exit_code, 2) << how(r);
+  EXPECT_TRUE(has(r, "someone-else/results.json: is a FIFO (named pipe)")) << how(r);
+  EXPECT_TRUE(fs::exists(out / "swing" / "results.json"));
+  EXPECT_NE(slurp(out / "index.html").find("someone-else"), std::string::npos);
+  fs::remove_all(d);
+}
+
 TEST(NeverHang, TolerancesThatAreAFifoOrALinkLoopAreRefused) {
   const fs::path d = fresh_dir("fifo_tolerances");
   const fs::path out = pendulum_output(d);
