@@ -87,6 +87,13 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
     num(*n, "ftol_rel", s.nlopt.ftol_rel, NumberRule::range(1e-12, 0.1, ""));
     num(*n, "xtol_rel", s.nlopt.xtol_rel, NumberRule::range(1e-12, 0.1, ""));
     num(*n, "fd_step_rad_s", s.nlopt.fd_step, NumberRule::range(1e-9, 1e-1, "rad/s"));
+    num(*n, "kkt_tolerance", s.nlopt.kkt_tolerance, NumberRule::range(1e-8, 1.0, ""));
+    num(*n, "restart_gain", s.nlopt.restart_gain, NumberRule::range(1e-12, 0.1, ""));
+    s.nlopt.restarts = n->integer_or("restarts", s.nlopt.restarts, 0, 100);
+    s.nlopt.perturbed_starts = n->integer_or("perturbed_starts", s.nlopt.perturbed_starts, 0, 64);
+    num(*n, "perturbation_rad_s", s.nlopt.perturbation, NumberRule::positive("rad/s"));
+    s.nlopt.hops = n->integer_or("hops", s.nlopt.hops, 0, 64);
+    num(*n, "hop_size_rad_s", s.nlopt.hop_size, NumberRule::positive("rad/s"));
     n->finish();
   }
   if (auto c = sec->map("checks")) {
@@ -109,8 +116,11 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
   const double steps = double(s.stages) * s.steps_per_stage;
   const double idp = double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * (s.stages - 1.0) *
                      s.idp.candidates;
+  // SLSQP: every start (the reference, IDP's, eq. 8's, the perturbed ones and the hops) with
+  // its budget of gradient evaluations
+  const double starts = 3.0 + s.nlopt.perturbed_starts + s.nlopt.hops;
   const double nlopt =
-      s.run_nlopt ? double(s.nlopt.max_evaluations) * (4.0 * (s.stages - 1.0) + 1.0) : 0.0;
+      s.run_nlopt ? starts * s.nlopt.max_evaluations * (4.0 * (s.stages - 1.0) + 1.0) : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
   d.keys =

@@ -61,7 +61,7 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
     bool strip;
   };
   std::vector<Thrown> thrown = {
-      {&result.idp, "IDP optimum", "throwing_idp", "throwing_flight", result.flight, true}};
+      {&result.idp, "IDP optimum", "throwing_idp", "throwing_flight", result.idp_flight, true}};
   if (result.nlopt_ran && result.nlopt.series.t.size() >= 2)
     thrown.push_back({&result.nlopt, "SLSQP optimum", "throwing_slsqp", "throwing_slsqp_flight",
                       result.nlopt_flight, false});

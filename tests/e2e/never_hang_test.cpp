@@ -208,6 +208,8 @@ TEST(NeverCrash, EveryStudysFailurePathExitsOneWithItsMessage) {
          "  velocity_limit_rad_s: [3.0, 0.0]\n";
   std::ofstream(d / "throwing.yaml")
       << "study: throwing\nname: throw-too-high\nthrowing:\n  task: {landing_height_m: 50.0}\n"
+         "  motors: {power_max_W: 1000, current_max_A: 100}\n"
+         "  constraints: {release_tolerance_deg: 30}\n"  // a feasible throw, too low
          "  idp: {max_passes: 2, seeds: 1, iterations: 1, stages: 4, steps_per_stage: 10, "
          "candidates: 2}\n  nlopt: {enabled: false}\n  threads: 1\n";
   const Failing cases[] = {

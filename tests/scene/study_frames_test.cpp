@@ -107,12 +107,13 @@ TEST(StudyFrames, ThrowingLocusWithTheFlightAfterRelease) {
   const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
   const core::JointVector& q = r.idp.series.q.back();
   const core::JointVector& qd = r.idp.series.qd.back();
-  r.flight = studies::ballistic_flight(studies::ball_position(chain, q),
-                                       studies::ball_velocity(chain, q, qd), spec.arm.gravity,
-                                       spec.landing_height);
+  r.idp_flight = studies::ballistic_flight(studies::ball_position(chain, q),
+                                           studies::ball_velocity(chain, q, qd), spec.arm.gravity,
+                                           spec.landing_height);
   const fs::path dir = out_dir("throwing");
-  expect_images(dir, render_throwing_frames(spec, r, cases::RenderOptions{}, dir),
-                r.flight.path.size() >= 2 ? 4 : 3);  // strip, locus, close-up at release, flight
+  expect_images(
+      dir, render_throwing_frames(spec, r, cases::RenderOptions{}, dir),
+      r.idp_flight.path.size() >= 2 ? 4 : 3);  // strip, locus, close-up at release, flight
 }
 
 // the renderer's input only (the solver is tested by its own engineer): a motion along the

@@ -43,7 +43,7 @@ TEST(ThrowingPipeline, BudgetCutIdpFailsTheCaseUnlessTheCaseAllowsIt) {
     EXPECT_EQ(find(checks, "slsqp_converged"), nullptr);  // SLSQP is off in this case
     // every constraint of the reported optimum is checked at 4x the steps
     for (const char* n : {"idp_contact", "idp_friction", "idp_ball_in_tray", "idp_voltage",
-                          "idp_current", "idp_power", "idp_release_theta3", "reference_feasible"})
+                          "idp_current", "idp_power", "idp_release_theta3"})
       EXPECT_NE(find(checks, n), nullptr) << n;
     const nlohmann::json j = lc.run->results();
     EXPECT_EQ(j["idp"]["converged"], false);

@@ -86,15 +86,27 @@ struct ThrowingResult {
   bool idp_converged = false;        ///< every seed converged
   double idp_time = 0;               ///< s, wall clock of all seeds
   Verification idp_check;
+  /// SLSQP from several starts ("reference", "idp", "eq8", "perturbed 1", ...): each local
+  /// optimum, its first-order measure and its re-check
+  struct SlsqpStart {
+    std::string name;
+    NloptOutcome run;
+    Verification check;
+  };
+  std::vector<SlsqpStart> slsqp_starts;
+  int slsqp_best_start = -1;  ///< the answer's start: lowest converged, re-checked feasible
+  Optimality idp_optimality;  ///< the first-order measure at IDP's optimum
   bool nlopt_ran = false;
-  ThrowMotion nlopt;  ///< SLSQP's answer (its final point)
+  ThrowMotion nlopt;  ///< SLSQP's answer (the best start's local optimum)
   NloptOutcome nlopt_run;
   Verification nlopt_check;
-  double saving_percent = 0;   ///< 100 (E_ref - E_idp) / E_ref
-  std::string answer = "idp";  ///< "slsqp" when its converged, re-checked throw costs less
-  Flight flight;               ///< after IDP's release
-  Flight nlopt_flight;         ///< after SLSQP's release (when it ran)
-  double replay_error = 0;     ///< rad, max |q_replay - q_plan (16x steps)|, 4 joints
+  double saving_percent = NAN;      ///< 100 (E_eq8 - E_answer) / E_eq8 (NaN: no feasible answer)
+  double idp_saving_percent = NAN;  ///< 100 (E_eq8 - E_idp) / E_eq8 (NaN: IDP's is infeasible)
+  std::string answer = "idp";       ///< "slsqp" when its converged, re-checked throw costs less
+  Flight flight;                    ///< after the answer's release
+  Flight idp_flight;                ///< after IDP's release
+  Flight nlopt_flight;              ///< after SLSQP's release (when it ran)
+  double replay_error = 0;          ///< rad, max |q_replay - q_plan (16x steps)|, 4 joints
   std::vector<double> replay_t;
   std::vector<core::JointVector> replay_q;
   double rk4_energy_error = 0;  ///< relative |E(n) - E(16n)| of the optimum

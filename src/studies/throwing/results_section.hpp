@@ -121,6 +121,12 @@ struct ThrowingResultsSection {
   struct Spread {
     double best_J = 0, median_J = 0, worst_J = 0;
   };
+  /// the first-order optimality of an answer
+  struct FirstOrder {
+    double kkt_residual = 0, kkt_tolerance = 0;
+    int active_constraints = 0;
+    std::vector<std::string> binding;
+  };
   struct IdpStep {
     int iteration = 0, pass = 0;
     double energy_J = 0, violation = 0;
@@ -147,6 +153,16 @@ struct ThrowingResultsSection {
     std::vector<SeedRun> seed_runs;
     Spread spread;
     std::vector<IdpStep> convergence;
+    std::optional<FirstOrder> first_order;
+  };
+  /// one SLSQP start and the local optimum it reached
+  struct Start {
+    std::string name;
+    double energy_J = 0;
+    bool feasible = false, converged = false;
+    double kkt_residual = 0;
+    int iterations = 0, restarts = 0;
+    std::string return_code;
   };
   struct NloptRun {
     std::string algorithm, return_code;
@@ -159,6 +175,9 @@ struct ThrowingResultsSection {
     double max_time_s = 0, ftol_rel = 0, xtol_rel = 0;
     std::vector<double> history_J;
     Motion motion;
+    std::optional<FirstOrder> first_order;
+    std::optional<std::vector<Start>> starts;
+    std::optional<std::string> best_start;
   };
   struct Nlopt {
     bool ran = false;
@@ -455,12 +474,34 @@ void fields(V& v, ThrowingResultsSection::Idp& x) {
   v("seed_runs", x.seed_runs, "every seed");
   v("spread", x.spread, "the seeds' energies");
   v("convergence", x.convergence, "the best seed's iterations");
+  v.optional("first_order", x.first_order, "first-order optimality of the best seed's optimum");
+}
+template <class V>
+void fields(V& v, ThrowingResultsSection::Start& x) {
+  v("name", x.name, "where SLSQP started: reference, idp, eq8, or a hop from the best so far");
+  v("energy_J", x.energy_J, "energy of the local optimum it reached");
+  v("feasible", x.feasible, "meets every constraint");
+  v("converged", x.converged, "feasible with its first-order residual within the tolerance");
+  v("kkt_residual", x.kkt_residual, "first-order residual / E per rad/s at its end");
+  v("iterations", x.iterations, "gradient evaluations");
+  v("restarts", x.restarts, "SLSQP restarts from its last iterate");
+  v("return_code", x.return_code, "NLopt's return code of the last run");
+}
+template <class V>
+void fields(V& v, ThrowingResultsSection::FirstOrder& x) {
+  v("kkt_residual", x.kkt_residual,
+    "|grad E + sum lambda_i grad g_i| / E per rad/s of node rate, multipliers >= 0 of the "
+    "displacement equalities and the active inequalities");
+  v("kkt_tolerance", x.kkt_tolerance, "converged: kkt_residual at most this");
+  v("active_constraints", x.active_constraints, "inequalities within 1e-3 of their bound");
+  v("binding", x.binding, "constraint kinds with a positive multiplier");
 }
 template <class V>
 void fields(V& v, ThrowingResultsSection::NloptRun& x) {
   v("algorithm", x.algorithm, "the gradient method (when it ran)");
   v("return_code", x.return_code, "NLopt's return code (when it ran)");
-  v("converged", x.converged, "stopped on ftol_rel/xtol_rel at a feasible point (when it ran)");
+  v("converged", x.converged,
+    "feasible with its first-order residual within the tolerance (when it ran)");
   v("feasible", x.feasible, "meets every constraint (when it ran)");
   v("last_gain", x.last_gain, "relative change of the last iteration (when it ran)");
   v("iterations", x.iterations, "SLSQP iterations (when it ran)");
@@ -472,6 +513,9 @@ void fields(V& v, ThrowingResultsSection::NloptRun& x) {
   v("xtol_rel", x.xtol_rel, "relative step tolerance (when it ran)");
   v("history_J", x.history_J, "energy per iteration (when it ran)");
   v("motion", x.motion, "the SLSQP optimum (when it ran)");
+  v.optional("first_order", x.first_order, "the answer's first-order optimality");
+  v.optional("starts", x.starts, "every SLSQP start and the local optimum it reached");
+  v.optional("best_start", x.best_start, "the start whose local optimum is the answer");
 }
 template <class V>
 void fields(V& v, ThrowingResultsSection::Nlopt& x) {
@@ -565,9 +609,11 @@ void fields(V& v, ThrowingResultsSection& x) {
   v("assumptions", x.assumptions, "what the source leaves open, with the values used");
   v("limits", x.limits, "the constraints");
   v("energy_initial_J", x.energy_initial_J, "energy of the raw eq. 8 start");
-  v("energy_reference_J", x.energy_reference_J, "energy of the reference");
-  v("energy_optimised_J", x.energy_optimised_J, "energy of the IDP optimum");
-  v("saving_percent", x.saving_percent, "IDP's saving against the reference");
+  v("energy_reference_J", x.energy_reference_J,
+    "energy of the reference (IDP's feasible start; no saving is quoted against it)");
+  v("energy_optimised_J", x.energy_optimised_J, "energy of the answer");
+  v("saving_percent", x.saving_percent,
+    "the answer's saving against the eq. 8 start (null: no feasible answer)");
   v.inline_when("reference", x.run);  // the optimisers' part: there when its first key is
 }
 

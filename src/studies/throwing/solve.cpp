@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/kinematics.hpp"
+#include "studies/throwing/slsqp_starts.hpp"
 
 namespace armstudy::studies {
 namespace {
@@ -20,6 +21,68 @@ std::string fixed(double v, int digits) {
   os.precision(digits);
   os << v;
   return os.str();
+}
+
+// "the contact and power limits": the constraint kinds broken by a motion's worst values
+std::string broken_limits(const std::array<double, kConstraintKinds>& worst) {
+  std::vector<std::string> names;
+  for (int k = 0; k < kConstraintKinds; ++k)
+    if (worst[k] > 0) names.push_back(constraint_name(static_cast<ConstraintKind>(k)));
+  std::string s = "the ";
+  for (size_t i = 0; i < names.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return s + (names.size() == 1 ? " limit" : " limits");
+}
+
+// the status and the sentence that leads the report, from the answer and its checks
+void decide_answer(const ThrowingSpec& spec, ThrowingResult& r) {
+  const bool slsqp = r.answer == "slsqp";
+  const ThrowMotion& m = slsqp ? r.nlopt : r.idp;
+  const Verification& check = slsqp ? r.nlopt_check : r.idp_check;
+  const Flight& flight = slsqp ? r.nlopt_flight : r.idp_flight;
+  const bool converged = slsqp ? r.nlopt_run.converged : r.idp_converged;
+  const double kkt = slsqp ? r.nlopt_run.kkt_residual : r.idp_optimality.kkt_residual;
+  r.flight = flight;
+  const bool feasible = m.evaluation.feasible && check.feasible;
+  const double e8 = r.initial.evaluation.energy, e = m.evaluation.energy;
+  const std::string idp_words =
+      "IDP (the paper's method) " + fixed(r.idp.evaluation.energy, 3) + " J" +
+      (r.idp_check.feasible ? "" : " (infeasible in the re-check)") +
+      (r.idp_converged ? ""
+                       : " (a stall: first-order residual " +
+                             fixed(r.idp_optimality.kkt_residual, 4) + " /(rad/s))");
+  if (!feasible) {
+    r.status = Status::kUnsolvable;
+    r.saving_percent = r.idp_saving_percent = NAN;
+    r.message = "no feasible throw found: the best " + std::string(slsqp ? "SLSQP" : "IDP") +
+                " throw" + (converged ? "" : " (NOT converged)") + " (" + fixed(e, 3) +
+                " J) breaks " + broken_limits(m.evaluation.feasible ? check.worst : m.worst) +
+                (m.evaluation.feasible ? " in the re-check with finer steps" : "") +
+                " (the limits may leave no feasible throw; see the margins)";
+    return;
+  }
+  r.saving_percent = 100.0 * (e8 - e) / std::abs(e8);
+  r.idp_saving_percent =
+      r.idp_check.feasible ? 100.0 * (e8 - r.idp.evaluation.energy) / std::abs(e8) : NAN;
+  if (!flight.reaches) {
+    r.status = Status::kUnsolvable;
+    r.message = "the ball never reaches the landing height " + fixed(spec.landing_height, 3) +
+                " m: its apex is " + fixed(flight.apex, 3) + " m";
+    return;
+  }
+  r.status = Status::kSolved;
+  std::string eq8_words = "eq. 8 start " + fixed(e8, 3) + " J";
+  if (!r.initial_feasible) eq8_words += ", which breaks " + broken_limits(r.initial.worst);
+  const std::string who = slsqp ? "SLSQP from " + std::to_string(r.slsqp_starts.size()) +
+                                      " starts (best from " +
+                                      r.slsqp_starts[r.slsqp_best_start].name + ")"
+                                : std::string("IDP");
+  r.message = std::string(converged ? "lowest-energy throw found: " : "NOT converged: ") +
+              fixed(e, 3) + " J by " + who + ", first-order residual " + fixed(kkt, 6) +
+              " /(rad/s), feasible in the re-check (" + eq8_words + "; saving " +
+              fixed(r.saving_percent, 1) +
+              " %); the ball lands at x = " + fixed(flight.landing.x(), 3) + " m";
+  if (slsqp) r.message += "; " + idp_words;
 }
 
 }  // namespace
@@ -152,7 +215,10 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
 
   r.initial_feasible = r.initial.evaluation.feasible;
 
-  // the feasible reference: eq. 8 itself, or the feasible profile nearest to it
+  // IDP's feasible start (the reference): eq. 8 itself, or the first profile twice the
+  // back-off inside every limit on the descent of the violation from eq. 8. That point moves
+  // with the last digit of an input (a first feasible point, not an optimum), so no saving
+  // is quoted against it: the saving is against eq. 8, the paper's comparison
   NloptSettings ns = spec.nlopt;
   ns.threads = spec.threads;
   ns.backoff = spec.backoff;
@@ -161,7 +227,7 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
     r.reference_kind = "eq8";
     r.reference = r.initial;
   } else {
-    if (progress) progress(0.02, "repair of eq. 8 (nearest feasible)");
+    if (progress) progress(0.02, "repair of eq. 8 (IDP's feasible start)");
     r.repair_run = run_nlopt(setup, initial, delta, ns, Objective::kViolation);
     if (r.repair_run.feasible) {
       r.reference_kind = "repaired";
@@ -180,42 +246,46 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   {
     const auto t0 = std::chrono::steady_clock::now();
     r.idp_seeds = run_idp_seeds(setup, start, delta, is, [&](double f, std::string_view s) {
-      if (progress) progress(0.05 + 0.55 * f, s);
+      if (progress) progress(0.05 + 0.35 * f, s);
     });
     r.idp_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
-  r.idp_converged = true;
-  for (size_t k = 0; k < r.idp_seeds.size(); ++k) {
-    r.idp_converged &= r.idp_seeds[k].converged;
+  for (size_t k = 0; k < r.idp_seeds.size(); ++k)
     if (better_profile(r.idp_seeds[k].evaluation, r.idp_seeds[r.idp_best_seed].evaluation))
       r.idp_best_seed = static_cast<int>(k);
-  }
   r.idp_run = r.idp_seeds[r.idp_best_seed];
   r.idp = record_motion(setup, spec, r.idp_run.best);
   r.idp_check = verify_profile(setup, r.idp_run.best, spec.check_refinement);
-  r.saving_percent = 100.0 * (r.reference.evaluation.energy - r.idp.evaluation.energy) /
-                     std::abs(r.reference.evaluation.energy);
+  r.idp_optimality = first_order_optimality(setup, r.idp_run.best, delta, ns);
+  // IDP converged: every seed stopped on its rule, and its answer is first-order stationary
+  r.idp_converged = r.idp_optimality.kkt_residual <= ns.kkt_tolerance;
+  for (const IdpResult& sd : r.idp_seeds) r.idp_converged &= sd.converged;
 
-  // the same constrained problem by SLSQP on the same parameterisation, same start
+  // the same constrained problem by SLSQP from several starts; the answer is the lowest
+  // converged local optimum that the re-check finds feasible
   if (spec.run_nlopt) {
-    if (progress) progress(0.6, "SLSQP (NLopt)");
-    r.nlopt_run = run_nlopt(setup, start, delta, ns);
-    r.nlopt = record_motion(setup, spec, r.nlopt_run.best);
-    r.nlopt_check = verify_profile(setup, r.nlopt_run.best, spec.check_refinement);
-    r.nlopt_ran = true;
+    if (progress) progress(0.4, "SLSQP (NLopt) from several starts");
+    run_slsqp_starts(setup, spec, start, initial, delta, ns, r);
+    r.nlopt_ran = r.slsqp_best_start >= 0;
   }
   if (progress) progress(0.95, "open-loop replay");
+  // the answer: SLSQP's best start when it is feasible (also in the re-check); else IDP's
+  // throw when that is; else whichever ran last, infeasible (the case is then not solved)
+  const bool slsqp_feasible = r.nlopt_ran && r.nlopt_run.feasible && r.nlopt_check.feasible;
+  const bool idp_feasible = r.idp.evaluation.feasible && r.idp_check.feasible;
+  r.answer = slsqp_feasible || (r.nlopt_ran && !idp_feasible) ? "slsqp" : "idp";
+  const ThrowMotion& answer = r.answer == "slsqp" ? r.nlopt : r.idp;
 
-  // integration accuracy: the optimum with 16 times the rk4 steps
+  // integration accuracy: the answer with 16 times the rk4 steps
   ThrowSetup fine = setup;
   fine.steps_per_stage = 16 * setup.steps_per_stage;
   std::vector<ThrowSample> fine_samples;
   {
-    const ProfileEvaluation ef = simulate_profile(fine, r.idp.profile, &fine_samples);
-    r.rk4_energy_error = std::abs(ef.energy - r.idp.evaluation.energy) / std::abs(ef.energy);
-    r.rk4_theta3_error = std::abs(ef.theta3_final - r.idp.evaluation.theta3_final);
+    const ProfileEvaluation ef = simulate_profile(fine, answer.profile, &fine_samples);
+    r.rk4_energy_error = std::abs(ef.energy - answer.evaluation.energy) / std::abs(ef.energy);
+    r.rk4_theta3_error = std::abs(ef.theta3_final - answer.evaluation.theta3_final);
   }
-  // the optimum's voltages (sampled densely, from the 16x simulation) applied open loop to
+  // the answer's voltages (sampled densely, from the 16x simulation) applied open loop to
   // the model with all four joints free, compared with the planned angles of that same
   // simulation (the rk4 error of the coarse plan is checked apart, above)
   {
@@ -234,7 +304,7 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
       }
       // keep the replay at the coarse series' times for the report
       j = 0;
-      for (double t : r.idp.series.t) {
+      for (double t : answer.series.t) {
         while (j + 1 < rr.t.size() && rr.t[j] < t - 1e-12) ++j;
         if (!r.replay_t.empty() && r.replay_t.back() == rr.t[j]) continue;
         r.replay_t.push_back(rr.t[j]);
@@ -246,56 +316,17 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   }
 
   // ballistic flight of the ball after release
-  const core::JointVector& qf = r.idp.series.q.back();
-  const core::JointVector& qdf = r.idp.series.qd.back();
-  r.flight = ballistic_flight(ball_position(setup.chain, qf), ball_velocity(setup.chain, qf, qdf),
-                              spec.arm.gravity, spec.landing_height);
-  if (r.nlopt_ran && r.nlopt.series.t.size() >= 2) {
-    const core::JointVector& qn = r.nlopt.series.q.back();
-    const core::JointVector& qdn = r.nlopt.series.qd.back();
-    r.nlopt_flight =
-        ballistic_flight(ball_position(setup.chain, qn), ball_velocity(setup.chain, qn, qdn),
-                         spec.arm.gravity, spec.landing_height);
-  }
+  auto flight_of = [&](const ThrowMotion& m) {
+    if (m.series.t.size() < 2) return Flight{};
+    const core::JointVector& qf = m.series.q.back();
+    const core::JointVector& qdf = m.series.qd.back();
+    return ballistic_flight(ball_position(setup.chain, qf), ball_velocity(setup.chain, qf, qdf),
+                            spec.arm.gravity, spec.landing_height);
+  };
+  r.idp_flight = flight_of(r.idp);
+  if (r.nlopt_ran) r.nlopt_flight = flight_of(r.nlopt);
   r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-  if (!r.flight.reaches) {
-    r.message = "the ball never reaches the landing height " + fixed(spec.landing_height, 3) +
-                " m: its apex is " + fixed(r.flight.apex, 3) + " m";
-    return r;
-  }
-  r.status = Status::kSolved;
-  const std::string ref = r.reference_kind == "eq8"        ? "eq. 8"
-                          : r.reference_kind == "repaired" ? "repaired eq. 8"
-                                                           : "infeasible eq. 8";
-  // the sentence leads with the lowest energy of a converged answer that the independent
-  // re-check found feasible; the other optimiser follows as the comparison
-  const std::string idp_words = std::string("IDP") + (r.idp_converged ? "" : " (NOT converged)") +
-                                (r.idp_check.feasible ? "" : " (infeasible in the re-check)") +
-                                " " + fixed(r.idp.evaluation.energy, 3) + " J";
-  const std::string ref_words = ref + ": " + fixed(r.reference.evaluation.energy, 3) + " J";
-  const bool slsqp_answer = r.nlopt_ran && r.nlopt_run.converged && r.nlopt_run.feasible &&
-                            r.nlopt_check.feasible && r.nlopt_flight.reaches &&
-                            r.nlopt.evaluation.energy < r.idp.evaluation.energy &&
-                            !(r.idp_converged && r.idp_check.feasible &&
-                              r.idp.evaluation.energy <= r.nlopt.evaluation.energy);
-  if (slsqp_answer) {
-    r.answer = "slsqp";
-    const double saving = 100.0 * (r.reference.evaluation.energy - r.nlopt.evaluation.energy) /
-                          r.reference.evaluation.energy;
-    r.message =
-        "lowest-energy throw found: SLSQP's, " + fixed(r.nlopt.evaluation.energy, 3) +
-        " J, converged and feasible in the re-check (" + ref_words + ", saving " +
-        fixed(saving, 1) + " %); " + idp_words + " (saving " + fixed(r.saving_percent, 1) +
-        " %), a stall above it; the ball lands at x = " + fixed(r.nlopt_flight.landing.x(), 3) +
-        " m";
-  } else {
-    r.message = idp_words + " (" + ref_words + ", saving " + fixed(r.saving_percent, 1) +
-                " %); ball lands at x = " + fixed(r.flight.landing.x(), 3) + " m";
-    if (r.nlopt_ran)
-      r.message += "; SLSQP" + std::string(r.nlopt_run.converged ? "" : " (NOT converged)") + ": " +
-                   fixed(r.nlopt.evaluation.energy, 3) + " J" +
-                   (r.nlopt_run.feasible && r.nlopt_check.feasible ? "" : " (infeasible)");
-  }
+  decide_answer(spec, r);
   return r;
 }
 

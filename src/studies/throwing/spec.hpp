@@ -3,14 +3,14 @@
 /// the release state in tf; joints 1, 2 follow a velocity profile optimised for the energy
 /// the DC motors consume (eq. 7), the tray (joint 3) and the ball (joint 4) follow the
 /// dynamics. IDP (Luus) is the paper's optimiser; SLSQP (NLopt) solves the same constrained
-/// problem on the same parameterisation beside it (docs/throwing.md): the tray must push
-/// the ball (normal force >= a margin), rolling must need no more friction than the
-/// coefficient allows, the ball stays within the tray's width, the motors within their
-/// voltage, current and power ratings, and the tray reaches its release angle. Both start
-/// from a feasible reference: the eq. 8 trajectory when it is feasible, else the feasible
-/// profile nearest to it (SLSQP repair). Every reported optimum is re-simulated with 4x the
-/// steps and checked against every constraint. The ball flies ballistically after release
-/// down (or up) to a given height.
+/// problem on the same parameterisation from several starts, IDP's optimum among them
+/// (docs/throwing.md): the tray must push the ball (normal force >= a margin), rolling must
+/// need no more friction than the coefficient allows, the ball stays within the tray's
+/// width, the motors within their voltage, current and power ratings, and the tray reaches
+/// its release angle. The answer is the lowest throw that is converged (first order, and a
+/// restart gains nothing) and feasible when re-simulated with 4x the steps; the saving is
+/// against the eq. 8 start. IDP starts from eq. 8 when it is feasible, else from its
+/// repair. The ball flies ballistically after release down (or up) to a given height.
 ///
 /// This header: the study's validated input. result.hpp holds its answer, solve.hpp the
 /// computation.
