@@ -39,7 +39,7 @@ const std::vector<std::pair<std::string, std::string>> kCases = {
      "study: throwing\nname: numbers-throwing\nthrowing:\n"
      "  motors: {power_max_W: 1000, current_max_A: 100}\n"
      "  constraints: {release_tolerance_deg: 30}\n"
-     "  idp: {stages: 4, steps_per_stage: 5, iterations: 2, max_passes: 1, candidates: 3, "
+     "  idp: {stages: 4, steps_per_stage: 20, iterations: 2, max_passes: 1, candidates: 3, "
      "seeds: 1}\n"
      "  nlopt: {max_evaluations: 3}\n  checks: {allow_not_converged: true}\n"},
     {"numbers-time-optimal",
