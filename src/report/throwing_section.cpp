@@ -26,7 +26,7 @@ std::vector<Motion> motions(const TS::Optimised& th) {
   std::vector<Motion> out;
   out.push_back({"eq. 8 start", "initial", &th.initial});
   if (th.reference_motion)
-    out.push_back({"repaired reference", "reference", &*th.reference_motion});
+    out.push_back({"IDP's repaired start", "reference", &*th.reference_motion});
   out.push_back({"IDP optimum", "idp", &th.optimum});
   if (th.nlopt.run) out.push_back({"SLSQP (gradient)", "gradient", &th.nlopt.run->motion});
   return out;
@@ -167,9 +167,9 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       "Several printed coefficients of the equations of motion of Sato et al. are inconsistent "
       "with its "
       "kinematics (a3's m4 term, two lines labelled A45, a5's inverted ratio, the ball spin "
-      "of eq. 3, S234 in eq. 4); the model here is derived from first principles instead, so "
-      "energies and angles differ from the paper's figures by design (docs/defects.md, "
-      "docs/derivations/throwing.md).");
+      "of eq. 3, S234 in eq. 4); the model here is derived from first principles instead "
+      "(docs/defects.md, docs/derivations/throwing.md). The paper prints no throw energies, so "
+      "there is no printed energy to compare with.");
   for (const std::string& c : par.choices)
     method.note("What Sato et al. leave open (docs/assumptions.md): " + c);
   {
@@ -404,8 +404,19 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
   const double vmax = lim.voltage_max_V, imax = lim.current_max_A, pmax = lim.power_max_W;
   const char* joints_note =
       " Solid: motor 1; dashed: motor 2. Colours: grey the eq. 8 start, "
-      "blue the IDP optimum, vermillion the gradient optimum (the repaired "
-      "reference, if any, in its own colour).";
+      "blue the IDP optimum, vermillion the gradient optimum (IDP's repaired "
+      "start, if any, in its own colour).";
+  // the paper's main output (Sato et al. Figs 5 and 9): the active joints' rate profiles
+  LinePlot jv = motion_plot(ms, "joint velocities", "rate (rad/s)", &TS::Series::qd_rad_s, -1,
+                            {"θ1'", "θ2'"});
+  if (!jv.series.empty())
+    mot.figure(figures.line(
+        "joint_velocities", jv,
+        std::string("The optimised joint-velocity profiles θ1'(t) (solid) and θ2'(t) (dashed), "
+                    "linear within each stage, beside the eq. 8 start: the decision variables "
+                    "of both optimisers (the paper's Figs 5 and 9 show its IDP profiles).") +
+            " Colours: grey the eq. 8 start, blue the IDP optimum, vermillion the gradient "
+            "optimum (IDP's repaired start, if any, in its own colour)."));
   LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", &TS::Series::voltage_V, -1,
                            {"motor 1", "motor 2"});
   if (std::isfinite(vmax))
@@ -571,8 +582,8 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
       locus.y_max = y1 + pad;
       ball.figure(figures.map("throw_locus", locus,
                               "The ball's centre in the vertical plane (the arm's base at the "
-                              "origin) during each motion, and its flight after the IDP "
-                              "optimum's release."));
+                              "origin) during each motion, and its flight after the answer's "
+                              "release."));
     }
   }
   page.sections.push_back(std::move(ball));
@@ -593,7 +604,7 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                "region (rad/s)", "improvements", "simulations"};
   int k = 0;
   const auto& rows = idp.convergence;
-  // the start: pass 0 is the feasible reference both optimisers begin from
+  // the start: pass 0 is IDP's feasible start
   if (ran && std::isfinite(section.energy_reference_J)) {
     en.x.push_back(0);
     en.y.push_back(section.energy_reference_J);
