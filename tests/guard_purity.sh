@@ -1,5 +1,5 @@
 #!/bin/sh
-# core and studies are pure: no file or console I/O, no YAML, no MuJoCo (README, Layout).
+# core and studies are pure: no file or console I/O, no YAML, no MuJoCo (docs/development.md, Layout).
 # MuJoCo is its headers and calls (mujoco/..., mj_*): a results.json key such as
 # "mujoco_replay" in a study's typed section (results_section.hpp) is data, not a use of it.
 cd "$1" || exit 2
