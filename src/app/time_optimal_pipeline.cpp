@@ -133,7 +133,15 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
     std::vector<KeyFigure> k;
     if (result_.status != studies::Status::kSolved) return k;
     const double exact = result_.solvers.front().duration;
-    k.push_back({"duration_s[exact]", exact, "s", "shortest duration (exact solver)"});
+    const auto& g = result_.grid;
+    if (g.extrapolation_computed && std::isfinite(g.extrapolated)) {
+      k.push_back({"duration_s[converged]", g.extrapolated, "s",
+                   g.asymptotic ? "shortest duration, extrapolated over three grids"
+                                : "shortest duration, finest grid (not asymptotic)"});
+      k.push_back({"duration_error_s[converged]", g.extrapolation_error, "s",
+                   "error estimate of the converged duration"});
+    }
+    k.push_back({"duration_s[exact]", exact, "s", "shortest duration on the case's grid"});
     for (const auto& r : result_.solvers) {
       if (r.name == "exact" || !r.solved) continue;
       k.push_back({"duration_s[" + r.name + "]", r.duration, "s", "duration (" + r.words() + ")"});
@@ -224,7 +232,12 @@ Section TimeOptimalRun::section() const {
                                                   g.max_sd,
                                                   joint_space ? NAN : g.min_sin_q2,
                                                   joint_space ? NAN : g.path_min_sin_q2,
-                                                  g.text};
+                                                  g.text,
+                                                  std::nullopt};
+    if (g.extrapolation_computed)
+      o.grid_convergence->extrapolation =
+          Section::Extrapolation{g.coarse_points, g.coarse_duration, g.order,
+                                 g.asymptotic,    g.extrapolated,    g.extrapolation_error};
   }
   if (replay_) o.mujoco_replay = replay_section(*replay_);
   return o;

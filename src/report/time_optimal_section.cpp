@@ -238,6 +238,22 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                        format_sig(g.change, 3), format_sig(g.tolerance, 3),
                        passed ? "passed" : "FAILED"});
     conv.table(std::move(gt));
+    if (g.extrapolation) {
+      const auto& x = *g.extrapolation;
+      conv.paragraph(
+          "Converged duration: " + format_sig(x.duration_s, 8) + " s ± " +
+          format_sig(x.error_s, 2) + " s" +
+          (x.asymptotic
+               ? ", Richardson-extrapolated from a coarser grid of " + as_text(x.coarse_points) +
+                     " points (" + format_sig(x.coarse_duration_s, 8) +
+                     " s), the case's grid and the refined one; observed order " +
+                     format_sig(x.order, 3) + ", the error estimate is the extrapolation's size."
+               : ": the refined grid's duration, because the coarser grid of " +
+                     as_text(x.coarse_points) + " points (" + format_sig(x.coarse_duration_s, 8) +
+                     " s) and the two finer ones are not in the asymptotic range; the error is "
+                     "the larger change between them.") +
+          " The page's headline is this duration; the case's grid value is a detail.");
+    }
     if (passed)
       conv.paragraph("Exact solver grid: " + g.text + ".");
     else

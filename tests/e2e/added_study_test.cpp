@@ -1,5 +1,5 @@
-// Adding a study is its folder and one registry record (docs/development.md, "Adding a study"): a trivial
-// study defined here, with its typed results.json section, loader, solver, checks, key
+// Adding a study is its folder and one registry record (docs/development.md, "Adding a study"): a
+// trivial study defined here, with its typed results.json section, loader, solver, checks, key
 // figures and report sections, runs through run_case like the bundled studies and gets its
 // results.json (written from and read back into its typed section) and its index.html.
 #include <gtest/gtest.h>

@@ -84,6 +84,25 @@ TEST(TimeOptimalGrid, RegularPathPassesTheGridCheck) {
   EXPECT_GT(res.grid.path_min_sin_q2, 0.3);
 }
 
+// the headline is the converged duration: extrapolated from 200 grid points it lands within
+// its stated error of the 3200-point grid's own extrapolation, closer than the 200-point
+// value, and the observed order is the solver's first
+TEST(TimeOptimalGrid, TheHeadlineIsTheExtrapolatedDurationWithinItsStatedError) {
+  const Result coarse = solve(exact_only({0.3, 0.1}, {-0.1, 0.8}, 200));
+  const Result fine = solve(exact_only({0.3, 0.1}, {-0.1, 0.8}, 3200));
+  ASSERT_EQ(coarse.status, Status::kSolved) << coarse.message;
+  ASSERT_EQ(fine.status, Status::kSolved) << fine.message;
+  const GridConvergence& g = coarse.grid;
+  ASSERT_TRUE(g.extrapolation_computed);
+  ASSERT_TRUE(g.asymptotic) << g.coarse_duration << " " << g.duration << " " << g.refined_duration;
+  EXPECT_NEAR(g.order, 1.0, 0.2);
+  const double reference = fine.grid.extrapolated;
+  EXPECT_LT(std::abs(g.extrapolated - reference), g.extrapolation_error)
+      << g.extrapolated << " vs " << reference;
+  EXPECT_LT(std::abs(g.extrapolated - reference), 0.1 * std::abs(g.duration - reference));
+  EXPECT_TRUE(has(coarse.message, "extrapolated over 3 grids")) << coarse.message;
+}
+
 TEST(TimeOptimalGrid, DpFailureNamesTheSegmentThePlaceAndTheLimit) {
   // two velocity levels per node (rest and the maximum velocity curve): leaving rest at the
   // maximum speed in one segment breaks a torque limit

@@ -108,6 +108,19 @@ struct GridConvergence {
   double max_sd = 0;
   double min_sin_q2 = 1, path_min_sin_q2 = 1;
   std::string text;  ///< the sentence for the check and the page
+  /// Richardson extrapolation over three grids: a coarser one (about half the case's
+  /// intervals), the case's and the refined one, T(I) = T_inf + C I^-p with the order p
+  /// solved from the three; the error estimate is |T_inf - refined duration|. When the three
+  /// are not in the asymptotic range (the changes differ in sign, or p outside [0.5, 4]),
+  /// the extrapolation is not used: extrapolated is the refined duration and the error the
+  /// larger of the two changes.
+  bool extrapolation_computed = false;
+  int coarse_points = 0;
+  double coarse_duration = NAN;  ///< s
+  double order = NAN;            ///< observed p (NaN when not in the asymptotic range)
+  bool asymptotic = false;
+  double extrapolated = NAN;         ///< s, the headline duration
+  double extrapolation_error = NAN;  ///< s
 };
 
 struct Result {

@@ -66,6 +66,12 @@ struct ResultsSection {
     std::vector<double> t_s, s;
     Rows tip_m, q_rad;
   };
+  struct Extrapolation {
+    int coarse_points = 0;
+    double coarse_duration_s = 0, order = 0;
+    bool asymptotic = false;
+    double duration_s = 0, error_s = 0;
+  };
   struct GridConvergence {
     int grid_points = 0, refined_points = 0;
     bool refined_solved = false;
@@ -75,6 +81,7 @@ struct ResultsSection {
     std::vector<int> grid_point_range;
     double share = 0, max_sd = 0, min_abs_sin_q2 = 0, path_min_abs_sin_q2 = 0;
     std::string text;
+    std::optional<Extrapolation> extrapolation;
   };
   Path path;
   double path_length = 0;
@@ -181,6 +188,17 @@ void fields(V& v, ResultsSection::Motion& x) {
   v("q_rad", x.q_rad, "joint angles per sample");
 }
 template <class V>
+void fields(V& v, ResultsSection::Extrapolation& x) {
+  v("coarse_points", x.coarse_points, "grid points of the third, coarser grid");
+  v("coarse_duration_s", x.coarse_duration_s, "duration on it (null when not solved)");
+  v("order", x.order,
+    "observed order p of T(I) = T_inf + C I^-p from the three grids (null: not asymptotic)");
+  v("asymptotic", x.asymptotic, "the three grids are in the asymptotic range");
+  v("duration_s", x.duration_s,
+    "the converged duration: extrapolated, or the refined grid's when not asymptotic");
+  v("error_s", x.error_s, "its error estimate");
+}
+template <class V>
 void fields(V& v, ResultsSection::GridConvergence& x) {
   v("grid_points", x.grid_points, "grid points of the case");
   v("refined_points", x.refined_points, "2 grid_points - 1");
@@ -198,6 +216,8 @@ void fields(V& v, ResultsSection::GridConvergence& x) {
   v("min_abs_sin_q2", x.min_abs_sin_q2, "smallest |sin q2| there (null for a joint-space path)");
   v("path_min_abs_sin_q2", x.path_min_abs_sin_q2,
     "smallest |sin q2| along the path (null for a joint-space path)");
+  v.optional("extrapolation", x.extrapolation,
+             "Richardson extrapolation over a coarser, the case's and the refined grid");
   v("text", x.text, "the sentence for the check and the page");
 }
 template <class V>
