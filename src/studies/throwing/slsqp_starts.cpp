@@ -92,7 +92,14 @@ void run_slsqp_starts(const ThrowSetup& setup, const ThrowingSpec& spec,
                       const Eigen::Vector2d& delta, const NloptSettings& settings,
                       ThrowingResult& r) {
   r.slsqp_starts.clear();
-  std::vector<Start> starts = {{"reference", reference}, {"idp", r.idp_run.best}, {"eq8", eq8}};
+  std::vector<Start> starts;
+  // a start equal to an earlier one (eq. 8 feasible as it is, an IDP that never moved) would
+  // only repeat it
+  for (const Start& s :
+       {Start{"reference", reference}, Start{"idp", r.idp_run.best}, Start{"eq8", eq8}})
+    if (std::none_of(starts.begin(), starts.end(),
+                     [&](const Start& t) { return t.second.v == s.second.v; }))
+      starts.push_back(s);
   perturbations(reference, delta, settings.perturbed_starts, settings.perturbation, spec.idp.seed,
                 "perturbed reference", starts);
   run_wave(setup, spec, starts, delta, settings, r);
