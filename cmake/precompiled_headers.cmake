@@ -2,7 +2,8 @@
 # file was much of the front end's time (results_record.cpp: 4.0 of its 8.0 CPU-s were
 # -fsyntax-only; run_case.cpp 11.9 -> 8.6 CPU-s with them); each target now parses them
 # once. The Release build from scratch on two cores: 434 s with them, 503 s without (load
-# about 2, both measured at the commit that added them). ARMSTUDY_PCH=OFF builds without
+# about 2, both measured at the commit that added them; the unity build,
+# cmake/unity_build.cmake, then halved the compiling again). ARMSTUDY_PCH=OFF builds without
 # them (the fuzz build, tests/fuzz, never uses them, so a missing #include still shows
 # there and in this build with the option off).
 option(ARMSTUDY_PCH "Precompile the standard library, Eigen and nlohmann-json headers" ON)
