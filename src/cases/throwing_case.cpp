@@ -8,7 +8,7 @@
 namespace armstudy::cases {
 namespace {
 
-constexpr double kDeg = core::kPi / 180.0;
+constexpr double kThrowingDeg = core::kPi / 180.0;
 
 // a number key that keeps `value` when absent or wrong (the error is recorded)
 void num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
@@ -41,13 +41,13 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
   }
   if (auto t = sec->map("task")) {
     if (const auto v = t->numbers("start_deg", NumberRule::range(-360, 360, "deg"), 4)) {
-      s.start = {(*v)[0] * kDeg, (*v)[1] * kDeg};
-      s.theta3_start = (*v)[2] * kDeg;
-      s.theta4_start = (*v)[3] * kDeg;
+      s.start = {(*v)[0] * kThrowingDeg, (*v)[1] * kThrowingDeg};
+      s.theta3_start = (*v)[2] * kThrowingDeg;
+      s.theta4_start = (*v)[3] * kThrowingDeg;
     }
     if (const auto v = t->numbers("release_deg", NumberRule::range(-360, 360, "deg"), 3)) {
-      s.release = {(*v)[0] * kDeg, (*v)[1] * kDeg};
-      s.theta3_release = (*v)[2] * kDeg;
+      s.release = {(*v)[0] * kThrowingDeg, (*v)[1] * kThrowingDeg};
+      s.theta3_release = (*v)[2] * kThrowingDeg;
     }
     if (const auto v = t->numbers("release_rate_rad_s", NumberRule::range(-200, 200, "rad/s"), 2))
       s.release_rate = {(*v)[0], (*v)[1]};
@@ -59,7 +59,7 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
     num(*c, "contact_margin_N", s.contact_margin, NumberRule::non_negative("N"));
     num(*c, "friction_coefficient", s.friction_coefficient, NumberRule::range(1e-3, 10.0, ""));
     if (const auto v = c->number("release_tolerance_deg", NumberRule::positive("deg")))
-      s.release_tolerance = *v * kDeg;
+      s.release_tolerance = *v * kThrowingDeg;
     num(*c, "backoff", s.backoff, NumberRule::range(0.0, 0.2, ""));
     c->finish();
   }

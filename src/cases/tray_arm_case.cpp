@@ -5,10 +5,10 @@
 namespace armstudy::cases {
 namespace {
 
-constexpr double kDeg = core::kPi / 180.0;
+constexpr double kTrayDeg = core::kPi / 180.0;
 
 // a number key that keeps `value` when absent or wrong (the error is recorded)
-void num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
+void tray_num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
   if (const auto v = m.number(key, rule)) value = *v;
 }
 
@@ -16,36 +16,36 @@ void read_link(Map& section, std::string_view key, double& length, double& mass,
                double& inertia) {
   auto m = section.map(key);
   if (!m) return;
-  num(*m, "length_m", length, NumberRule::positive("m"));
-  num(*m, "mass_kg", mass, NumberRule::non_negative("kg"));
-  num(*m, "com_m", com, NumberRule::any("m"));
-  num(*m, "inertia_kg_m2", inertia, NumberRule::non_negative("kg m^2"));
+  tray_num(*m, "length_m", length, NumberRule::positive("m"));
+  tray_num(*m, "mass_kg", mass, NumberRule::non_negative("kg"));
+  tray_num(*m, "com_m", com, NumberRule::any("m"));
+  tray_num(*m, "inertia_kg_m2", inertia, NumberRule::non_negative("kg m^2"));
   m->finish();
 }
 
 }  // namespace
 
 void read_tray_arm(Map& section, studies::TrayArmParams& a, double* width) {
-  num(section, "gravity_m_s2", a.gravity, NumberRule::range(1e-3, 100.0, "m/s^2"));
+  tray_num(section, "gravity_m_s2", a.gravity, NumberRule::range(1e-3, 100.0, "m/s^2"));
   read_link(section, "link1", a.l1, a.m1, a.r1, a.I1);
   read_link(section, "link2", a.l2, a.m2, a.r2, a.I2);
   if (auto t = section.map("tray")) {
-    num(*t, "circle_offset_m", a.circle_offset, NumberRule::positive("m"));
-    num(*t, "mass_kg", a.m3, NumberRule::non_negative("kg"));
-    num(*t, "com_m", a.r3, NumberRule::any("m"));
-    num(*t, "com_lateral_m", a.r3_lateral, NumberRule::any("m"));
-    num(*t, "inertia_kg_m2", a.I3, NumberRule::non_negative("kg m^2"));
+    tray_num(*t, "circle_offset_m", a.circle_offset, NumberRule::positive("m"));
+    tray_num(*t, "mass_kg", a.m3, NumberRule::non_negative("kg"));
+    tray_num(*t, "com_m", a.r3, NumberRule::any("m"));
+    tray_num(*t, "com_lateral_m", a.r3_lateral, NumberRule::any("m"));
+    tray_num(*t, "inertia_kg_m2", a.I3, NumberRule::non_negative("kg m^2"));
     if (width) {
       if (const auto w = t->number("width_deg", NumberRule::range(1.0, 360.0, "deg")))
-        *width = *w * kDeg;
+        *width = *w * kTrayDeg;
     }
     t->finish();
   }
   bool solid_sphere = true;
   if (auto b = section.map("ball")) {
-    num(*b, "mass_kg", a.m4, NumberRule::positive("kg"));
-    num(*b, "circle_radius_m", a.r4, NumberRule::positive("m"));
-    num(*b, "radius_m", a.rb, NumberRule::positive("m"));
+    tray_num(*b, "mass_kg", a.m4, NumberRule::positive("kg"));
+    tray_num(*b, "circle_radius_m", a.r4, NumberRule::positive("m"));
+    tray_num(*b, "radius_m", a.rb, NumberRule::positive("m"));
     const YAML::Node in = b->get("inertia");
     if (in.IsDefined() && !(in.IsScalar() && in.Scalar() == "solid_sphere")) {
       const auto v =

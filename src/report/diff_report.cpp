@@ -62,7 +62,7 @@ std::string signed_num(double v) {
   return (v > 0 ? "+" : "") + format_sig(v, 4);
 }
 
-std::string percent(double rel) {
+std::string percent_change(double rel) {
   if (std::isnan(rel)) return "n/a";
   if (std::isinf(rel)) return "from 0";
   return (rel > 0 ? "+" : "") + format_sig(100 * rel, 3) + " %";
@@ -127,7 +127,7 @@ std::string what_moved(const CaseDiff& c, int pixel_tolerance, bool beyond_only)
     if (v == "same" || v == "ignored" || (beyond_only && v != "BEYOND")) continue;
     if (++figs > 4) continue;
     parts.push_back(f.name + " " + with_unit(num(f.base), f.unit) + " → " +
-                    with_unit(num(f.now), f.unit) + " (" + percent(f.rel_change()) + ")");
+                    with_unit(num(f.now), f.unit) + " (" + percent_change(f.rel_change()) + ")");
   }
   if (figs > 4) parts.push_back("and " + std::to_string(figs - 4) + " more key figure(s)");
   for (const auto& ch : c.checks)
@@ -188,7 +188,7 @@ Table figure_table(const CaseDiff& c, bool all) {
     const std::string v = verdict(f);
     if (!all && v == "same") continue;
     t.rows.push_back({f.name, with_unit(num(f.base), f.unit), with_unit(num(f.now), f.unit),
-                      with_unit(signed_num(f.abs_change()), f.unit), percent(f.rel_change()),
+                      with_unit(signed_num(f.abs_change()), f.unit), percent_change(f.rel_change()),
                       tolerance_text(f.tolerance, f.unit), v});
   }
   return t;
@@ -260,7 +260,7 @@ Table sweep_table(const RunDiff& d, size_t limit) {
     f.now = r.now;
     t.rows.push_back({r.case_name, r.point, status, r.figure, with_unit(num(r.base), r.unit),
                       with_unit(num(r.now), r.unit),
-                      r.figure.empty() ? "" : percent(f.rel_change()),
+                      r.figure.empty() ? "" : percent_change(f.rel_change()),
                       std::to_string(r.figures_changed), r.beyond ? "BEYOND" : "within"});
   }
   return t;

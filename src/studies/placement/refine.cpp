@@ -14,8 +14,8 @@
 namespace armstudy::studies::placement {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRefineInf = std::numeric_limits<double>::infinity();
+constexpr double kRefineNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kMaxConstraints = 6;  // inner, outer, torque 1, 2, power 1, 2
 
 // the problem in scaled variables u = (x_s - x0) / hx, v = (phi - p0) / hphi
@@ -40,8 +40,8 @@ class Problem {
   }
 
   struct Eval {
-    double u = kNaN, v = kNaN;
-    double energy = kInf;
+    double u = kRefineNaN, v = kRefineNaN;
+    double energy = kRefineInf;
     double g[kMaxConstraints] = {};
     bool feasible = false;
   };
@@ -70,7 +70,7 @@ class Problem {
     e.v = v;
     const double xs = x_s(u);
     if (!(xs > 0)) {
-      for (double& g : e.g) g = kInf;
+      for (double& g : e.g) g = kRefineInf;
       last_ = e;
       return last_;
     }
@@ -82,12 +82,14 @@ class Problem {
     if (chk.boundary_distance >= 0)
       m = evaluate_line(arm_, table_, line, configuration_);
     else
-      m.energy = kInf;
+      m.energy = kRefineInf;
     for (int j = 0; j < 2; ++j) {
-      e.g[2 + j] = spec_.torque_limit ? m.peak_torque[j] / (*spec_.torque_limit)[j] - 1.0 : -kInf;
-      e.g[4 + j] = spec_.power_limit ? m.peak_power[j] / (*spec_.power_limit)[j] - 1.0 : -kInf;
+      e.g[2 + j] =
+          spec_.torque_limit ? m.peak_torque[j] / (*spec_.torque_limit)[j] - 1.0 : -kRefineInf;
+      e.g[4 + j] =
+          spec_.power_limit ? m.peak_power[j] / (*spec_.power_limit)[j] - 1.0 : -kRefineInf;
     }
-    e.energy = m.finite() ? m.energy : kInf;
+    e.energy = m.finite() ? m.energy : kRefineInf;
     e.feasible = std::isfinite(e.energy);
     for (int k = 0; k < kMaxConstraints; ++k) e.feasible = e.feasible && !(e.g[k] > 0);
     if (e.feasible && (!best_.feasible || e.energy < best_.energy)) best_ = e;
@@ -149,7 +151,7 @@ double cobyla(Problem& pr, double u0, double v0, double step, int maxeval) {
   } catch (const std::exception&) {
     // a roundoff-limited stop: the problem keeps the best admissible point it evaluated
   }
-  return pr.has_best() ? pr.best().energy : kInf;
+  return pr.has_best() ? pr.best().energy : kRefineInf;
 }
 
 void nelder_mead(Problem& pr, double u0, double v0, double step, int maxeval = 2000) {
@@ -220,10 +222,10 @@ void along_boundary(Problem& pr, int k) {
   const auto h = [&](double f) {
     const auto dep =
         solve_on_boundary([&](double x) { return dep_is_u ? gk(x, f) : gk(f, x); }, dep_guess);
-    if (!dep) return kInf;
+    if (!dep) return kRefineInf;
     dep_guess = *dep;
     const Problem::Eval& e = dep_is_u ? pr.at(*dep, f) : pr.at(f, *dep);
-    return e.feasible ? e.energy : kInf;
+    return e.feasible ? e.energy : kRefineInf;
   };
   // scan one grid spacing either side, then golden section around the best scan point
   constexpr int kScan = 20;
@@ -314,7 +316,7 @@ Decision decide(const Spec& spec, const Candidate& c, double active_m, double ac
   Decision d;
   d.inner_slack = c.inner_clearance - spec.singularity_margin;
   d.outer_slack = c.outer_clearance - spec.singularity_margin;
-  double worst = kInf;  // the smallest normalised slack among the active constraints
+  double worst = kRefineInf;  // the smallest normalised slack among the active constraints
   const auto consider = [&](double normalised, Binding b, int joint) {
     if (normalised <= 1.0 && normalised < worst) {
       worst = normalised;

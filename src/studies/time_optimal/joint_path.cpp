@@ -75,7 +75,7 @@ JointPathPoint JointPathGeometry::at(double s, bool from_left) const {
 }
 
 namespace {
-std::string fixed(double v, int digits) {
+std::string fixed_digits(double v, int digits) {
   std::ostringstream os;
   os.setf(std::ios::fixed);
   os.precision(digits);
@@ -132,11 +132,11 @@ std::optional<RangeExcursion> range_excursion(const JointPathGeometry& path,
   out->piece = 0;
   while (out->piece + 2 < path.waypoints() && path.knot(out->piece + 1) <= out->s) ++out->piece;
   std::ostringstream os;
-  os << "the path leaves joint " << out->joint + 1 << "'s range [" << fixed(out->lo, 4) << ", "
-     << fixed(out->hi, 4) << "] rad at s = " << fixed(out->s, 4) << " rad of "
-     << fixed(path.length(), 4) << " (between waypoints " << out->piece + 1 << " and "
-     << out->piece + 2 << "), where q" << out->joint + 1 << " reaches " << fixed(out->worst, 4)
-     << " rad";
+  os << "the path leaves joint " << out->joint + 1 << "'s range [" << fixed_digits(out->lo, 4)
+     << ", " << fixed_digits(out->hi, 4) << "] rad at s = " << fixed_digits(out->s, 4) << " rad of "
+     << fixed_digits(path.length(), 4) << " (between waypoints " << out->piece + 1 << " and "
+     << out->piece + 2 << "), where q" << out->joint + 1 << " reaches "
+     << fixed_digits(out->worst, 4) << " rad";
   out->text = os.str();
   return out;
 }

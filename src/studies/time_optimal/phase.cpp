@@ -5,7 +5,7 @@
 
 namespace armstudy::studies::time_optimal {
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPhaseInf = std::numeric_limits<double>::infinity();
 
 // one bound on u, affine in x: u >= p + r x (lower) or u <= p + r x (upper)
 struct Line {
@@ -36,9 +36,9 @@ double Limits::of(LimitKind kind, int joint) const {
   switch (kind) {
     case LimitKind::kVelocity: return velocity[joint];
     case LimitKind::kTorque: return torque[joint];
-    case LimitKind::kAcceleration: return acceleration ? (*acceleration)[joint] : kInf;
+    case LimitKind::kAcceleration: return acceleration ? (*acceleration)[joint] : kPhaseInf;
   }
-  return kInf;
+  return kPhaseInf;
 }
 
 void append_rows(const JointPoint& jp, const Limits& lim, double shift, int point,
@@ -49,7 +49,7 @@ void append_rows(const JointPoint& jp, const Limits& lim, double shift, int poin
   };
   const int n = static_cast<int>(jp.dq.size());
   for (int j = 0; j < n; ++j) {
-    add(jp.dq[j] * jp.dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j], j,
+    add(jp.dq[j] * jp.dq[j], 0.0, -kPhaseInf, lim.velocity[j] * lim.velocity[j], j,
         LimitKind::kVelocity);
     add(jp.b[j], jp.a[j], -lim.torque[j] - jp.c[j], lim.torque[j] - jp.c[j], j, LimitKind::kTorque);
     if (lim.acceleration)

@@ -9,7 +9,7 @@
 
 namespace armstudy::studies::time_optimal {
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kReachInf = std::numeric_limits<double>::infinity();
 
 std::string place(const Problem& pb, double s, int node, int nodes) {
   std::ostringstream os;
@@ -132,7 +132,7 @@ inline int add_rows(const JointPoint& jp, const Limits& lim, double shift, Coef*
   };
   const int nj = static_cast<int>(jp.dq.size());
   for (int j = 0; j < nj; ++j) {
-    add(jp.dq[j] * jp.dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j]);
+    add(jp.dq[j] * jp.dq[j], 0.0, -kReachInf, lim.velocity[j] * lim.velocity[j]);
     add(jp.b[j], jp.a[j], -lim.torque[j] - jp.c[j], lim.torque[j] - jp.c[j]);
     if (lim.acceleration) add(jp.ddq[j], jp.dq[j], -(*lim.acceleration)[j], (*lim.acceleration)[j]);
   }
@@ -147,7 +147,7 @@ inline int add_rows(const double* p, int nj, const Limits& lim, double shift, Co
   };
   const double *dq = p, *ddq = p + nj, *a = p + 2 * nj, *b = p + 3 * nj, *c = p + 4 * nj;
   for (int j = 0; j < nj; ++j) {
-    add(dq[j] * dq[j], 0.0, -kInf, lim.velocity[j] * lim.velocity[j]);
+    add(dq[j] * dq[j], 0.0, -kReachInf, lim.velocity[j] * lim.velocity[j]);
     add(b[j], a[j], -lim.torque[j] - c[j], lim.torque[j] - c[j]);
     if (lim.acceleration) add(ddq[j], dq[j], -(*lim.acceleration)[j], (*lim.acceleration)[j]);
   }
@@ -157,7 +157,7 @@ inline int add_rows(const double* p, int nj, const Limits& lim, double shift, Co
 // feasible_x of rows[0..n) and the extra row `last`, without tags: the same bounds (every
 // candidate is the same quotient; min and max do not depend on the order)
 struct XRange {
-  double lo = 0, hi = kInf;
+  double lo = 0, hi = kReachInf;
 };
 XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace& ws) {
   XRange out;
@@ -227,7 +227,7 @@ XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace
 
 // u_range(rows, x).hi without tags
 double u_hi_fast(const Coef* rows, int n, double x) {
-  double hi = kInf;
+  double hi = kReachInf;
   for (int i = 0; i < n; ++i) {
     const Coef& r = rows[i];
     if (r.cu == 0.0) continue;
@@ -246,7 +246,7 @@ void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
   sd_velocity->assign(nodes.size(), 0.0);
   thread_local ExactWorkspace ws;
   const PointSource source(pb);
-  const Coef none{0.0, 0.0, -kInf, kInf};  // no extra row
+  const Coef none{0.0, 0.0, -kReachInf, kReachInf};  // no extra row
   ws.rows.resize(static_cast<size_t>(pb.limits.joints()) * 3);
   for (size_t k = 0; k < nodes.size(); ++k) {
     const int nj = pb.limits.joints();
@@ -261,7 +261,7 @@ void max_velocity_curve(const Problem& pb, const std::vector<double>& nodes,
     const double* dq = known ? known : ws.cur.dq.data();
     const XRange xi = feasible_x_fast(ws.rows.data(), c, none, ws);
     (*sd_all)[k] = xi.lo > xi.hi ? 0.0 : std::sqrt(std::max(0.0, xi.hi));
-    double v = kInf;
+    double v = kReachInf;
     for (int j = 0; j < nj; ++j)
       if (dq[j] != 0) v = std::min(v, pb.limits.velocity[j] / std::abs(dq[j]));
     (*sd_velocity)[k] = v;
