@@ -196,7 +196,7 @@ void measure_kkt(Problem& pr, const std::vector<double>& x, NloptOutcome& out) {
   std::vector<int> index;
   if (pr.objective != Objective::kViolation)
     for (int j = 0; j < pr.ineq; ++j)
-      if (pr.values[1 + j] >= -kActiveBand - pr.settings.backoff) {
+      if (pr.values[1 + j] >= -kActiveBand) {  // values hold the back-off: 0 is the target
         ineq.emplace_back(Eigen::Map<const Eigen::VectorXd>(pr.grads.data() + (1 + j) * n, n));
         index.push_back(j);
       }
