@@ -236,6 +236,7 @@ Section PlacementRun::section() const {
   j.duration_s = spec_.duration;
   j.samples = spec_.samples;
   j.singularity_margin_m = spec_.singularity_margin;
+  j.thesis_divisions = spec_.thesis_divisions;
   j.annulus_m = {r.inner, r.outer};
   if (spec_.torque_limit)
     j.torque_limits_Nm = Section::Pair{(*spec_.torque_limit)[0], (*spec_.torque_limit)[1]};

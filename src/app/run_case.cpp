@@ -24,6 +24,7 @@
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
 #include "report/scratch_dir.hpp"
+#include "report/source_comparison.hpp"
 #include "scene/animation.hpp"
 #include "scene/osmesa_context.hpp"
 #include "scene/phase_times.hpp"
@@ -228,6 +229,17 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
     }
     nlohmann::json j = report::write_record(r);
     j[c.info.study] = section;
+    if (!c.info.source.empty()) {
+      // the source's printed figures beside armstudy's, read from this very results.json
+      r.source = report::compare_with_source(c.info.source, j);
+      r.checks.push_back(report::source_explained_check(*r.source));
+      if (!r.checks.back().passed) {
+        checks_ok = false;
+        failed += (failed.empty() ? "" : ", ") + r.checks.back().name;
+      }
+      j = report::write_record(r);
+      j[c.info.study] = section;
+    }
     {
       scene::PhaseScope phase("report");
       report::write_case_report(tmp_dir, c.info, j, c.entry->report, c.entry->answer);

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "cases/source_spec.hpp"
+
 namespace armstudy::cases {
 
 /// The size of a rendered frame, px: the one place its default is written. The case's
@@ -37,6 +39,8 @@ struct CaseInfo {
   /// point's values by parameter path (values as YAML text), in axis order.
   std::string sweep_name;
   std::vector<std::pair<std::string, std::string>> sweep_point;
+  /// `source:`: what the case's source printed, to set beside armstudy's numbers
+  SourceSpec source;
 };
 
 /// SHA-256 of bytes, lowercase hex.

@@ -21,17 +21,20 @@ core::PlanarChain placement_default_arm() {
 }
 
 Demand placement_demand(const studies::placement::Spec& spec, const YAML::Mark& mark) {
-  // the solver's candidates: (nx_s + 1) start points x the directions in [0, 180] deg, for
-  // the full sweep and again for the thesis's own grids, plus the map's nx x ny nodes; each
-  // is one trajectory of `samples` samples per (program, configuration) pair
+  // the solver's candidates: (nx_s + 1) start points x the directions in [0, 180] deg for
+  // the full sweep, (thesis_divisions + 1)^2 for the thesis's own grid, plus the map's
+  // nx x ny nodes; each is one trajectory of `samples` samples per (program,
+  // configuration) pair
   const double starts = spec.nx_s + 1.0;
   const double directions = std::ceil(core::kPi / spec.phi_step) + 1.0;
-  const double candidates = 2.0 * starts * directions + double(spec.map_nx) * spec.map_ny;
+  const double thesis = (spec.thesis_divisions + 1.0) * (spec.thesis_divisions + 1.0);
+  const double candidates = starts * directions + thesis + double(spec.map_nx) * spec.map_ny;
   const double pairs = double(spec.programs.size()) * double(spec.configurations.size());
   Demand d;
   d.what = "the placement sweep";
   d.keys =
-      "placement.nx_s, placement.phi_step_deg, placement.map, placement.samples, "
+      "placement.nx_s, placement.phi_step_deg, placement.thesis_divisions, placement.map, "
+      "placement.samples, "
       "placement.programs and placement.configurations";
   d.unit = "trajectory samples";
   d.work = candidates * pairs * spec.samples;
@@ -146,6 +149,7 @@ studies::placement::Spec load_placement(Map& root) {
     }
   }
   spec.nx_s = p->integer_or("nx_s", spec.nx_s, 1, 10000);
+  spec.thesis_divisions = p->integer_or("thesis_divisions", spec.thesis_divisions, 1, 1000);
   spec.phi_step =
       p->number_or("phi_step_deg", spec.phi_step / kDeg, NumberRule::range(1e-3, 45.0, "deg")) *
       kDeg;

@@ -8,6 +8,7 @@
 #include "report/number_format.hpp"
 #include "report/page.hpp"
 #include "report/results_record.hpp"
+#include "report/source_comparison.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -53,6 +54,7 @@ AnswerBox answer_box(const nlohmann::json& results, const CasePage& page, StudyA
   // what binds and what the case assumes, in the study's words; the study may name its key
   // picture (the locus of the motion that answers)
   if (study) study(results, record, a);
+  if (record.source) a.source = source_summary(*record.source);
 
   // else the first locus, else the first strip, else the page's first figure
   auto pick = [&](auto pred) {

@@ -26,6 +26,7 @@ struct AnswerBox {
   bool verdict_ok = true;
   std::vector<std::string> binding;      ///< what binds / decides the optimum, in words
   std::vector<std::string> assumptions;  ///< where the source is silent: value used and why
+  std::string source;  ///< the case's source beside armstudy, in one line; empty: no source
 };
 
 /// A study's own lines of its answer box (its registry record, app::StudyEntry::answer): what

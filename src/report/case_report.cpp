@@ -17,6 +17,7 @@
 #include "report/owned_output.hpp"
 #include "report/page.hpp"
 #include "report/results_record.hpp"
+#include "report/source_comparison.hpp"
 #include "report/study_sections.hpp"
 
 namespace armstudy::report {
@@ -376,6 +377,8 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
     ad.set("has_binding", !a.binding.empty());
     ad.set("assumptions", list(a.assumptions));
     ad.set("has_assumptions", !a.assumptions.empty());
+    ad.set("source", a.source);
+    ad.set("has_source", !a.source.empty());
     d.set("answer", ad);
   }
   return d;
@@ -420,6 +423,8 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
     page.sections.push_back(std::move(s));
   }
   sections(results, figures, page);  // the study's own (its registry record)
+  // page 2 opens with the source beside armstudy, for a case that reproduces one
+  if (record.source) page.sections.insert(page.sections.begin(), source_section(*record.source));
   if (solved) {
     Section motion = animation_section(record.animations);
     if (!motion.blocks.empty()) page.sections.push_back(std::move(motion));

@@ -104,6 +104,18 @@ struct CasePage {
   std::optional<AnswerBox> answer;
 };
 
+/// `f` printed at half the page width, beside the next half one.
+inline Figure half(Figure f) {
+  f.half = true;
+  return f;
+}
+/// `p` drawn for half the page width: a smaller drawing whose text prints larger.
+inline LinePlot half_size(LinePlot p) {
+  p.width_pt = 360;
+  p.height_pt = 225;
+  return p;
+}
+
 /// Writes the figures of one page into its folder with stable, ordered names
 /// (fig01_<name>.svg, ...), so that the first figure can serve as the page's thumbnail.
 class FigureWriter {

@@ -1,6 +1,10 @@
 // the placement study's lines of the answer box (page 1): what decides each optimum, the
 // assumptions of the energy integral, and the locus of the optimum of least energy
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "report/answer_box.hpp"
 #include "report/number_format.hpp"
@@ -34,12 +38,51 @@ std::string binding_words(const PS::Decision& d) {
 
 void placement_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& a) {
   const auto pl = read_section<PS>(results, "placement");
-  for (const auto& o : pl.optima)
-    a.binding.push_back(o.program + " " + as_text(o.configuration) + ": " +
-                        binding_words(o.decided_by));
-  for (const auto& u : pl.unsolved)
-    a.binding.push_back(u.program + ", configuration " + as_text(u.configuration) +
-                        ": no optimum (" + u.reason + ")");
+  // optima decided alike share one line: "cycloidal 1, poly345 1: ..."
+  std::vector<std::pair<std::string, std::string>> decided;  // (words, who), in order
+  for (const auto& o : pl.optima) {
+    const std::string words = binding_words(o.decided_by);
+    const std::string who = o.program + " " + as_text(o.configuration);
+    auto it = std::find_if(decided.begin(), decided.end(),
+                           [&](const auto& d) { return d.first == words; });
+    if (it == decided.end())
+      decided.emplace_back(words, who);
+    else
+      it->second += ", " + who;
+  }
+  for (const auto& [words, who] : decided) a.binding.push_back(who + ": " + words);
+  // configurations 1 and 2 tie at mirrored optima: say so once, and why (docs/defects.md)
+  std::string ties;
+  bool mirrored = true;
+  for (const auto& o1 : pl.optima) {
+    if (o1.configuration != 1) continue;
+    for (const auto& o2 : pl.optima) {
+      if (o2.configuration != 2 || o2.program != o1.program) continue;
+      const double gap = std::abs(o1.energy_J - o2.energy_J) / std::max(o1.energy_J, o2.energy_J);
+      if (!(gap <= 1e-6)) continue;
+      mirrored = mirrored && std::hypot(o1.root_xy_m[0] + o2.root_xy_m[0] - pl.length_m,
+                                        o1.root_xy_m[1] - o2.root_xy_m[1]) <= 1e-3;
+      ties += (ties.empty() ? "" : ", ") + o1.program + " " + format_sig(o1.energy_J, 6) + " J";
+    }
+  }
+  if (!ties.empty())
+    a.binding.push_back(
+        "configurations 1 and 2 tie (" + ties + ")" +
+        (mirrored ? ": mirrored in the line's perpendicular bisector and run backwards in time, "
+                    "each is the other (docs/defects.md, kopmaz-configuration-symmetry)"
+                  : ""));
+  std::vector<std::pair<std::string, std::string>> unsolved;  // (reason, who), in order
+  for (const auto& u : pl.unsolved) {
+    const std::string who = u.program + " " + as_text(u.configuration);
+    auto it = std::find_if(unsolved.begin(), unsolved.end(),
+                           [&](const auto& d) { return d.first == u.reason; });
+    if (it == unsolved.end())
+      unsolved.emplace_back(u.reason, who);
+    else
+      it->second += ", " + who;
+  }
+  for (const auto& [reason, who] : unsolved)
+    a.binding.push_back(who + ": no optimum (" + reason + ")");
   a.assumptions.push_back("energy integral (8.1): " + as_text(pl.samples) +
                           " samples, doubled until it changes by < 1e-4");
   a.assumptions.push_back("singular: a line within " + format_sig(pl.singularity_margin_m, 3) +

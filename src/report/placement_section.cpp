@@ -128,16 +128,20 @@ LinePlot optima_plot(const std::string& title, const std::string& y_label,
   return plot;
 }
 
-// a figure printed at half the page width, beside the next half one
-Figure half(Figure f) {
-  f.half = true;
-  return f;
-}
-// a line plot drawn for half the page width: a smaller drawing whose text prints larger
-LinePlot half_size(LinePlot p) {
-  p.width_pt = 360;
-  p.height_pt = 225;
-  return p;
+// The thesis's figure of the same kind for its example at this line length (Kopmaz 2016,
+// Ch. 9: each example draws angles, velocities, accelerations, torques and powers, then the
+// energy over the direction angle), e.g. kind 0 at L = 0.5 Lmax -> "Figure 9.12"; a length
+// of no example: its figures in general.
+std::string thesis_figure(const PS& pl, int kind) {
+  struct Example {
+    double fraction;
+    int first;
+  };
+  static const Example examples[] = {{1.0, 1}, {0.8, 6}, {0.5, 12}, {0.4, 18}, {0.2, 24}};
+  for (const Example& e : examples)
+    if (std::abs(pl.length_fraction - e.fraction) < 1e-9 && !(e.first == 1 && kind == 5))
+      return "Figure 9." + std::to_string(e.first + kind);
+  return kind == 5 ? "Figures 9.11, 9.17, 9.23, 9.29" : "figures of Ch. 9";
 }
 
 Section task_section(const PS& pl) {
@@ -179,7 +183,7 @@ Section task_section(const PS& pl) {
              {c.unreachable, "unreachable (part of the line outside the annulus)"},
              {c.singular, "inside the margin (closer to a boundary than the margin)"},
              {c.clear, "clear of both boundaries"},
-             {c.thesis_admitted, "admitted by the thesis's intervals (4.7-4.13)"},
+             {c.thesis_admitted, "the thesis's own grid (its intervals 4.7-4.13)"},
              {c.thesis_rejected_by_exact_check, "of those, rejected by the exact check"},
              {c.exact_accepted_outside_thesis,
               "accepted by the exact check outside the thesis's φ interval"}})
@@ -374,18 +378,18 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
     Column key1;
     Column key2;
     const char* unit_label;
-    const char* thesis_fig;
+    int thesis_kind;  ///< 0..4: angles, velocities, accelerations, torques, powers
   };
   const Quantity quantities[] = {
       {"joint_angles", "joint angles", &PS::Series::q1_rad, &PS::Series::q2_rad,
-       "joint angle (rad)", "9.1"},
+       "joint angle (rad)", 0},
       {"joint_velocities", "joint velocities", &PS::Series::qd1_rad_s, &PS::Series::qd2_rad_s,
-       "joint velocity (rad/s)", "9.2"},
+       "joint velocity (rad/s)", 1},
       {"joint_accelerations", "joint accelerations", &PS::Series::qdd1_rad_s2,
-       &PS::Series::qdd2_rad_s2, "joint acceleration (rad/s²)", "9.3"},
+       &PS::Series::qdd2_rad_s2, "joint acceleration (rad/s²)", 2},
       {"joint_torques", "joint torques", &PS::Series::tau1_Nm, &PS::Series::tau2_Nm,
-       "joint torque (N m)", "9.4"},
-      {"joint_powers", "powers", &PS::Series::power1_W, &PS::Series::power2_W, "power (W)", "9.5"},
+       "joint torque (N m)", 3},
+      {"joint_powers", "powers", &PS::Series::power1_W, &PS::Series::power2_W, "power (W)", 4},
   };
   s.paragraph(
       "The motion of each optimum over time, two plots to a row: colour is the "
@@ -396,8 +400,9 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
     LinePlot plot = optima_plot(what + " of the optima", q.unit_label, owners, {q.key1, q.key2},
                                 {"joint 1", "joint 2"});
     if (plot.series.empty()) continue;
-    s.figure(half(figures.line(q.name, half_size(plot),
-                               what + " over time (the thesis's Figure " + q.thesis_fig + ").")));
+    s.figure(half(figures.line(
+        q.name, half_size(plot),
+        what + " over time (the thesis's " + thesis_figure(pl, q.thesis_kind) + ").")));
   }
   LinePlot energy = optima_plot("actuator energy of the optima", "energy used so far (J)", owners,
                                 {&PS::Series::energy_J}, {"energy"});
@@ -464,11 +469,13 @@ void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
   // (each curve's x_S is in its legend entry)
   s.figure(
       half(figures.line("energy_vs_phi", half_size(plot),
-                        "Energy of the motion over the direction angle φ at each optimum's own "
-                        "start abscissa x_S, as the thesis's Figure 9.11; the marker is the "
-                        "optimum itself (an optimum on the margin sits where its curve turns "
-                        "dotted). Solid: admissible; dotted: inside the margin or over a limit "
-                        "(excluded); gaps: unreachable or the energy not converged.")));
+                        std::string("Energy of the motion over the direction angle φ at "
+                                    "each optimum's own ") +
+                            "start abscissa x_S, as the thesis's " + thesis_figure(pl, 5) +
+                            "; the marker is the optimum itself (an optimum on the margin sits "
+                            "where its curve turns dotted). Solid: admissible; dotted: inside "
+                            "the margin or over a limit (excluded); gaps: unreachable or the "
+                            "energy not converged.")));
 }
 
 // one placement map (rows of text in results.json) as a shaded map
@@ -832,9 +839,13 @@ Section convergence_and_evaluations(const PS& pl) {
   }
   Table th;
   th.caption =
-      "Least energy among the thesis's own candidates (its intervals 4.7-4.13), "
-      "whatever their status: where it lies inside the margin (or is singular), the "
-      "thesis's method would have reported it as the optimum.";
+      "Least energy among the thesis's own candidates, whatever their status: its grid of " +
+      as_text(pl.thesis_divisions + 1) + " x " + as_text(pl.thesis_divisions + 1) +
+      " lines (x_S in " + as_text(pl.thesis_divisions) + " steps of its interval 4.7-4.9, φ at k/" +
+      as_text(pl.thesis_divisions) +
+      " of [φ_init, φ_fin] 4.10-4.13; every optimum the thesis prints lies on the 10-step "
+      "grid). Where it lies inside the margin (or is singular), the thesis's method would "
+      "have reported it as the optimum.";
   th.header = {
       "program, configuration", "energy (J)",  "x_S (m)", "φ (deg)", "root (X, Y) (m)", "status",
       "boundary distance (m)",  "min |sin q2|"};

@@ -83,6 +83,30 @@ struct FileRecord {
   std::string sha256;
 };
 
+/// One of results["source"]["rows"]: a figure or claim the case's source printed, beside
+/// armstudy's value (report/source_comparison.hpp).
+struct SourceRowRecord {
+  std::string where, says;
+  std::string kind;               ///< "figure" or "claim"
+  std::optional<double> printed;  ///< a figure: the printed number
+  std::string unit;
+  std::optional<double> tolerance;          ///< a figure: half a unit of its last printed digit
+  std::optional<double> at_source_setting;  ///< armstudy under the source's own setting
+  std::optional<double> at_optimum;         ///< armstudy at its own optimum
+  std::optional<double> difference;         ///< armstudy (source setting, else optimum) - printed
+  std::optional<double> a, b;               ///< a claim: the two values it compares
+  std::optional<std::string> relation;      ///< a claim: "less" or "greater"
+  std::string verdict;                ///< agrees, differs, confirmed, contradicted or no_value
+  std::optional<std::string> reason;  ///< docs/defects.md anchor
+  std::string why;
+};
+
+/// results["source"]: the case's source beside armstudy (cases with `source:` only).
+struct SourceRecord {
+  std::string document;
+  std::vector<SourceRowRecord> rows;
+};
+
 /// The whole of results.json but the study's own section (results[study]).
 struct ResultsRecord {
   int schema_version = kSchemaVersion;
@@ -100,6 +124,7 @@ struct ResultsRecord {
   std::vector<ExportRecord> exports;
   std::vector<AnimationRecord> animations;
   std::vector<FileRecord> files;
+  std::optional<SourceRecord> source;
 
   bool solved() const { return status == "solved"; }
   /// the status the case expects: "unsolvable" when its file says so, else "solved"
@@ -194,6 +219,36 @@ void fields(V& v, FileRecord& x) {
   v("sha256", x.sha256, "SHA-256 of its bytes", kSha256);
 }
 template <class V>
+void fields(V& v, SourceRowRecord& x) {
+  v("where", x.where, "where the source prints it (chapter, page, table, equation)");
+  v("says", x.says, "what the source prints, as it prints it");
+  v("kind", x.kind, "a printed number or a claim",
+    {{"enum", nlohmann::json::array({"figure", "claim"})}});
+  v.optional("printed", x.printed, "a figure: the printed number");
+  v("unit", x.unit, "its unit, empty for none");
+  v.optional("tolerance", x.tolerance,
+             "a figure: half a unit of its last printed digit (or the case's tolerance)");
+  v.optional("at_source_setting", x.at_source_setting,
+             "armstudy's value under the source's own setting (null: none computed)");
+  v.optional("at_optimum", x.at_optimum, "armstudy's value at its own optimum (null: none)");
+  v.optional("difference", x.difference,
+             "a figure: armstudy (at the source's setting, else at its optimum) minus printed");
+  v.optional("a", x.a, "a claim: armstudy's value of its first term");
+  v.optional("b", x.b, "a claim: armstudy's value of its second term");
+  v.optional("relation", x.relation, "a claim: what the source says a is to b",
+             {{"enum", nlohmann::json::array({"less", "greater"})}});
+  v("verdict", x.verdict, "agrees / differs (figures), confirmed / contradicted (claims)",
+    {{"enum",
+      nlohmann::json::array({"agrees", "differs", "confirmed", "contradicted", "no_value"})}});
+  v.optional("reason", x.reason, "the docs/defects.md entry that explains a difference");
+  v("why", x.why, "the reason in one sentence (empty when armstudy agrees)");
+}
+template <class V>
+void fields(V& v, SourceRecord& x) {
+  v("document", x.document, "the source the case reproduces");
+  v("rows", x.rows, "every figure and claim the source prints for the case");
+}
+template <class V>
 void fields(V& v, ResultsRecord& x) {
   v("schema_version", x.schema_version, "the version of this format; only this one is read",
     {{"const", kSchemaVersion}});
@@ -221,6 +276,8 @@ void fields(V& v, ResultsRecord& x) {
     "one per rendered motion: frames at equal time steps as a sprite sheet (the report's CSS "
     "animation), its last frame as a still and an MP4 at the motion's real speed");
   v("files", x.files, "every file written beside results.json, with its sha256");
+  v.optional("source", x.source,
+             "cases that reproduce a source: what it printed beside armstudy's values");
 }
 
 /// The shared record of a whole results.json (results[record.study] is left to the study's

@@ -417,6 +417,17 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                     "of both optimisers (the paper's Figs 5 and 9 show its IDP profiles).") +
             " Colours: grey the eq. 8 start, blue the IDP optimum, vermillion the gradient "
             "optimum (IDP's repaired start, if any, in its own colour)."));
+  // each optimiser's profile alone beside the eq. 8 start, two to a row
+  for (const Motion& mo : ms) {
+    if (mo.colour_key == "initial" || mo.colour_key == "reference") continue;
+    const std::vector<Motion> pair = {ms.front(), mo};
+    LinePlot one = motion_plot(pair, mo.label + ": joint velocities", "rate (rad/s)",
+                               &TS::Series::qd_rad_s, -1, {"θ1'", "θ2'"});
+    if (!one.series.empty())
+      mot.figure(half(figures.line("joint_velocities_" + mo.colour_key, half_size(one),
+                                   mo.label + ": the joint-velocity profiles θ1' (solid) and "
+                                              "θ2' (dashed) beside the eq. 8 start (grey).")));
+  }
   LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", &TS::Series::voltage_V, -1,
                            {"motor 1", "motor 2"});
   if (std::isfinite(vmax))

@@ -52,7 +52,7 @@ TEST(HostileInput, BudgetIsJudgedByValidateAndRunAndRaisedByAllowLarge) {
   const CliRun v = run_cli("validate " + c.string());
   EXPECT_EQ(v.exit_code, 2) << v.output;
   EXPECT_NE(v.output.find(c.string() +
-                          ":4:3: the placement sweep asks for about 5.8e+11 trajectory samples"),
+                          ":4:3: the placement sweep asks for about 2.9e+11 trajectory samples"),
             std::string::npos)
       << v.output;
   EXPECT_NE(v.output.find("more than the budget of 1e+10 trajectory samples"), std::string::npos)

@@ -161,6 +161,7 @@ struct ResultsSection {
 
   double lmax_m = 0, length_m = 0, length_fraction = 0, duration_s = 0;
   int samples = 0;
+  int thesis_divisions = 0;
   double singularity_margin_m = 0;
   Pair annulus_m{};
   std::optional<Pair> torque_limits_Nm, power_limits_W;
@@ -220,7 +221,8 @@ void fields(V& v, ResultsSection::SweepCounts& x) {
   v("singular", x.singular, "candidates closer to a boundary than the margin");
   v("over_limit", x.over_limit, "clear candidates over a torque or power limit");
   v("feasible", x.feasible, "admissible candidates");
-  v("thesis_admitted", x.thesis_admitted, "candidates the thesis's intervals (4.7-4.13) generate");
+  v("thesis_admitted", x.thesis_admitted,
+    "candidates of the thesis's own grid (its intervals 4.7-4.13, thesis_divisions steps each)");
   v("thesis_rejected_by_exact_check", x.thesis_rejected_by_exact_check,
     "of those, rejected by the exact check (unreachable or singular)");
   v("exact_accepted_outside_thesis", x.exact_accepted_outside_thesis,
@@ -232,7 +234,8 @@ void fields(V& v, ResultsSection::GeometryCounts& x) {
   v("unreachable", x.unreachable, "candidates partly outside the annulus");
   v("singular", x.singular, "candidates closer to a boundary than the margin");
   v("clear", x.clear, "candidates clear of both boundaries (limits not applied)");
-  v("thesis_admitted", x.thesis_admitted, "candidates the thesis's intervals (4.7-4.13) generate");
+  v("thesis_admitted", x.thesis_admitted,
+    "candidates of the thesis's own grid (its intervals 4.7-4.13, thesis_divisions steps each)");
   v("thesis_rejected_by_exact_check", x.thesis_rejected_by_exact_check,
     "of those, rejected by the exact check (unreachable or singular)");
   v("exact_accepted_outside_thesis", x.exact_accepted_outside_thesis,
@@ -420,6 +423,8 @@ void fields(V& v, ResultsSection& x) {
   v("length_fraction", x.length_fraction, "L / Lmax");
   v("duration_s", x.duration_s, "duration of the motion");
   v("samples", x.samples, "samples of the sweep's motions");
+  v("thesis_divisions", x.thesis_divisions,
+    "steps of the thesis's own grid in x_S and in phi (thesis_search)", {{"minimum", 1}});
   v("singularity_margin_m", x.singularity_margin_m, "least clearance to a boundary of the annulus");
   v("annulus_m", x.annulus_m, "[inner, outer] radii of the reachable annulus");
   v("torque_limits_Nm", x.torque_limits_Nm, "torque limits [j1, j2] (null: none)");

@@ -259,13 +259,19 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       const size_t k = add(xs[i], phis[j], Set::kSweep, int(i), int(j));
       geo[k].thesis_admits = phis[j] >= pi.init - tiny && phis[j] <= pi.fin + tiny;
     }
-    // the thesis's grid: phi_init + k dphi up to phi_fin, phi_fin included (steps 4-5)
-    if (pi.fin >= pi.init) {
-      int k = 0;
-      for (; pi.init + k * spec.phi_step < pi.fin - tiny; ++k)
-        add(xs[i], pi.init + k * spec.phi_step, Set::kThesis, int(i), k);
-      add(xs[i], pi.fin, Set::kThesis, int(i), k);
-    }
+  }
+  // the thesis's own grid (steps 3-5 of its Ch. 4): x_s over its interval and phi over
+  // [phi_init, phi_fin] in thesis_divisions equal steps each, both ends included
+  const int nd = spec.thesis_divisions;
+  const std::vector<double> xs_thesis =
+      xsi.init == xsi.fin ? std::vector<double>{xsi.init} : linspace(xsi.init, xsi.fin, nd + 1);
+  for (size_t i = 0; i < xs_thesis.size(); ++i) {
+    const PhiInterval pi = thesis_phi_interval(an, L, xs_thesis[i]);
+    if (!(pi.fin >= pi.init)) continue;
+    const int steps = pi.fin - pi.init < tiny ? 0 : nd;
+    for (int k = 0; k <= steps; ++k)
+      add(xs_thesis[i], k == steps ? pi.fin : pi.init + k * (pi.fin - pi.init) / nd, Set::kThesis,
+          int(i), k);
   }
   // map nodes over the region where both ends can be reached: X in [L - R, R], Y in [0, R]
   const std::vector<double> mx = linspace(L - an.outer, an.outer, spec.map_nx);

@@ -30,6 +30,10 @@ struct Spec {
   std::vector<int> configurations = {1, 2};
   int nx_s = 50;                                   ///< start-point steps: nx_s + 1 start points
   double phi_step = 3.14159265358979323846 / 180;  ///< rad, direction-angle step (1 deg)
+  /// the thesis's own grid (its candidates, `thesis_search`): x_s over its interval and phi
+  /// over [phi_init, phi_fin] at each x_s, each in this many equal steps (every printed
+  /// optimum of Kopmaz's Ch. 9 sits on the 10-step grid, 11 x 11 candidates)
+  int thesis_divisions = 10;
   int samples = 401;                 ///< samples per trajectory (uniform in time, both ends)
   double singularity_margin = 0.01;  ///< m, least distance of the line to either boundary
   std::optional<std::array<double, 2>> torque_limit;  ///< N m, per joint

@@ -1,0 +1,243 @@
+#include "report/source_comparison.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "report/number_format.hpp"
+
+namespace armstudy::report {
+namespace {
+
+using nlohmann::json;
+
+// a scalar of results.json as the text a selector compares with
+bool scalar_matches(const json& v, const std::string& want) {
+  if (v.is_string()) return v.get<std::string>() == want;
+  if (v.is_boolean()) return want == (v.get<bool>() ? "true" : "false");
+  if (v.is_number()) {
+    char* end = nullptr;
+    const double w = std::strtod(want.c_str(), &end);
+    return end && *end == '\0' && !want.empty() && v.get<double>() == w;
+  }
+  return false;
+}
+
+// applies one selector, "3" or "k=v,k2=v2", to an array
+const json* select(const json& arr, const std::string& sel) {
+  if (!arr.is_array()) return nullptr;
+  if (sel.find('=') == std::string::npos) {
+    char* end = nullptr;
+    const long k = std::strtol(sel.c_str(), &end, 10);
+    if (!end || *end != '\0' || k < 0 || static_cast<size_t>(k) >= arr.size()) return nullptr;
+    return &arr[static_cast<size_t>(k)];
+  }
+  std::vector<std::pair<std::string, std::string>> want;
+  size_t at = 0;
+  while (at <= sel.size()) {
+    const size_t comma = std::min(sel.find(',', at), sel.size());
+    const std::string part = sel.substr(at, comma - at);
+    const size_t eq = part.find('=');
+    if (eq == std::string::npos) return nullptr;
+    want.emplace_back(part.substr(0, eq), part.substr(eq + 1));
+    at = comma + 1;
+  }
+  const json* found = nullptr;
+  for (const json& e : arr) {
+    if (!e.is_object()) continue;
+    const bool all = std::all_of(want.begin(), want.end(), [&](const auto& kv) {
+      return e.contains(kv.first) && scalar_matches(e[kv.first], kv.second);
+    });
+    if (!all) continue;
+    if (found) return nullptr;  // more than one: the path does not name one value
+    found = &e;
+  }
+  return found;
+}
+
+std::optional<double> number_of(const json* v) {
+  if (!v || !v->is_number()) return std::nullopt;
+  const double x = v->get<double>();
+  if (!std::isfinite(x)) return std::nullopt;
+  return x;
+}
+
+std::string with_unit(double v, const std::string& unit) {
+  return format_sig(v, 6) + (unit.empty() ? "" : " " + unit);
+}
+
+std::string cell(const std::optional<double>& v, const std::string& unit) {
+  return v ? with_unit(*v, unit) : "-";
+}
+
+}  // namespace
+
+std::optional<double> value_at(const json& results, const std::string& path) {
+  if (path.starts_with("key:")) {
+    const std::string name = path.substr(4);
+    if (!results.contains("key_figures")) return std::nullopt;
+    for (const json& k : results["key_figures"])
+      if (k.is_object() && k.value("name", "") == name && k.contains("value"))
+        return number_of(&k["value"]);
+    return std::nullopt;
+  }
+  const json* at = &results;
+  size_t i = 0;
+  while (i < path.size() && at) {
+    size_t end = i;
+    while (end < path.size() && path[end] != '.' && path[end] != '[') ++end;
+    const std::string key = path.substr(i, end - i);
+    if (!key.empty()) at = at->is_object() && at->contains(key) ? &(*at)[key] : nullptr;
+    i = end;
+    while (at && i < path.size() && path[i] == '[') {
+      const size_t close = path.find(']', i);
+      if (close == std::string::npos) return std::nullopt;
+      at = select(*at, path.substr(i + 1, close - i - 1));
+      i = close + 1;
+    }
+    if (i < path.size() && path[i] == '.') ++i;
+  }
+  return number_of(at);
+}
+
+SourceRecord compare_with_source(const cases::SourceSpec& spec, const json& results) {
+  SourceRecord out;
+  out.document = spec.document;
+  for (const cases::PrintedItem& it : spec.printed) {
+    SourceRowRecord r;
+    r.where = it.where;
+    r.says = it.says;
+    r.unit = it.unit;
+    r.why = it.why;
+    if (!it.reason.empty()) r.reason = it.reason;
+    if (it.claim) {
+      const cases::SourceClaim& c = *it.claim;
+      r.kind = "claim";
+      r.relation = c.relation;
+      r.a = value_at(results, c.a);
+      char* end = nullptr;
+      const double b = std::strtod(c.b.c_str(), &end);
+      r.b = end && *end == '\0' ? std::optional<double>(b) : value_at(results, c.b);
+      if (!r.a || !r.b) {
+        r.verdict = "no_value";
+      } else {
+        const double scale = std::max(std::abs(*r.a), std::abs(*r.b));
+        const bool tie = std::abs(*r.a - *r.b) <= c.tie_rel * scale;
+        const bool holds = !tie && (c.relation == "less" ? *r.a < *r.b : *r.a > *r.b);
+        r.verdict = holds ? "confirmed" : "contradicted";
+      }
+    } else {
+      r.kind = "figure";
+      r.printed = it.value;
+      r.tolerance = it.tolerance;
+      if (!it.at_source_setting.empty())
+        r.at_source_setting = value_at(results, it.at_source_setting);
+      if (!it.at_optimum.empty()) r.at_optimum = value_at(results, it.at_optimum);
+      const std::optional<double> ours = r.at_source_setting ? r.at_source_setting : r.at_optimum;
+      if (!ours || !r.printed) {
+        r.verdict = "no_value";
+      } else {
+        r.difference = *ours - *r.printed;
+        const double slack = 1e-12 * std::max(1.0, std::abs(*r.printed));
+        r.verdict = std::abs(*r.difference) <= it.tolerance + slack ? "agrees" : "differs";
+      }
+    }
+    out.rows.push_back(std::move(r));
+  }
+  return out;
+}
+
+CheckRecord source_explained_check(const SourceRecord& source) {
+  int unexplained = 0;
+  for (const SourceRowRecord& r : source.rows)
+    if ((r.verdict == "differs" || r.verdict == "contradicted" || r.verdict == "no_value") &&
+        (!r.reason || r.why.empty()))
+      ++unexplained;
+  CheckRecord c;
+  c.name = "source.differences_explained";
+  c.description = "every figure of " + source.document +
+                  " armstudy differs from, every claim it contradicts, has its reason "
+                  "(a docs/defects.md entry) on page 2";
+  c.value = unexplained;
+  c.tolerance = 0;
+  c.passed = unexplained == 0;
+  return c;
+}
+
+std::string source_summary(const SourceRecord& source) {
+  int figures = 0, agrees = 0, claims = 0, confirmed = 0, none = 0;
+  for (const SourceRowRecord& r : source.rows) {
+    none += r.verdict == "no_value";
+    if (r.kind == "figure") {
+      ++figures;
+      agrees += r.verdict == "agrees";
+    } else {
+      ++claims;
+      confirmed += r.verdict == "confirmed";
+    }
+  }
+  std::string s = source.document + ": ";
+  if (figures)
+    s += std::to_string(figures) + (figures == 1 ? " printed figure, " : " printed figures, ") +
+         std::to_string(agrees) + " agree, " + std::to_string(figures - agrees) + " differ";
+  if (figures && claims) s += "; ";
+  if (claims)
+    s += std::to_string(claims) + (claims == 1 ? " claim, " : " claims, ") +
+         std::to_string(confirmed) + " confirmed, " + std::to_string(claims - confirmed) +
+         " contradicted";
+  if (none) s += " (" + std::to_string(none) + " with no armstudy value)";
+  return s + ". Reasons: page 2.";
+}
+
+Section source_section(const SourceRecord& source) {
+  Section s;
+  s.id = "source";
+  s.heading = "Source and armstudy";
+  s.paragraph(
+      "What " + source.document +
+      " prints for this case, beside armstudy's value under the source's own setting (the "
+      "printed placement, grid or parameters) and at armstudy's own optimum. A printed figure "
+      "agrees when armstudy's value rounds to it (within half a unit of its last printed "
+      "digit); a claim is confirmed when armstudy's values stand in the relation it states "
+      "(a tie, equal to 1e-6, is no relation). Every difference names its reason; each is "
+      "derived in docs/defects.md under the anchor given.");
+  Table t;
+  t.caption = "The source's figures and claims for this case, and armstudy's.";
+  t.header = {"Where",
+              "The source prints",
+              "armstudy at the source's setting",
+              "armstudy at its optimum",
+              "Difference",
+              "Verdict",
+              "Why (docs/defects.md)"};
+  for (const SourceRowRecord& r : source.rows) {
+    std::string at_setting, at_opt, diff;
+    if (r.kind == "claim") {
+      at_setting = "a = " + cell(r.a, r.unit) + ", b = " + cell(r.b, r.unit);
+      at_opt = "-";
+      if (r.a && r.b) {
+        const double scale = std::max(std::abs(*r.a), std::abs(*r.b));
+        diff = "a - b = " + format_sig(*r.a - *r.b, 3) +
+               (scale > 0 ? " (" + format_sig(100 * (*r.a - *r.b) / scale, 3) + " %)" : "");
+      }
+    } else {
+      at_setting = cell(r.at_source_setting, r.unit);
+      at_opt = cell(r.at_optimum, r.unit);
+      if (r.difference) {
+        diff = format_sig(*r.difference, 4) + (r.unit.empty() ? "" : " " + r.unit);
+        if (r.printed && *r.printed != 0)
+          diff += " (" + format_sig(100 * *r.difference / std::abs(*r.printed), 3) + " %)";
+      }
+    }
+    std::string why = r.why;
+    if (r.reason) why += (why.empty() ? "" : " ") + std::string("(#") + *r.reason + ")";
+    std::string says = r.says;
+    if (r.kind == "figure" && r.printed) says += " [" + with_unit(*r.printed, r.unit) + "]";
+    t.rows.push_back({r.where, says, at_setting, at_opt, diff.empty() ? "-" : diff,
+                      r.verdict == "no_value" ? "no value" : r.verdict, why.empty() ? "-" : why});
+  }
+  s.table(std::move(t));
+  return s;
+}
+
+}  // namespace armstudy::report

@@ -1,0 +1,160 @@
+// Every report that reproduces a source sets the source's printed figures beside
+// armstudy's: each printed figure and claim of a bundled case file (its `source:` part, the
+// repository's data) is found in the case's results.json and in its HTML, each difference
+// names a docs/defects.md entry that exists, and a difference without its reason fails the
+// case.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
+
+#include "report/number_format.hpp"
+#include "testing/cli.hpp"
+#include "testing/files.hpp"
+
+namespace armstudy::source_comparison_e2e {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kRepo = ARMSTUDY_SOURCE_DIR;
+
+std::string html_escaped(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// the bundled cases that reproduce a source
+std::vector<fs::path> source_cases() {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(kRepo / "reports/cases"))
+    if (e.path().extension() == ".yaml" && YAML::LoadFile(e.path().string())["source"])
+      out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(SourceComparison, EveryCaseThatReproducesASourceCarriesItsPrintedFigures) {
+  const auto cases = source_cases();
+  std::vector<std::string> names;
+  for (const auto& p : cases) names.push_back(p.stem().string());
+  for (const std::string want :
+       {"placement-example-1", "placement-example-2", "placement-example-3", "placement-example-4",
+        "placement-example-5", "throwing", "throwing-motor-on-base", "pendulum",
+        "time-optimal-source"})
+    EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+}
+
+TEST(SourceComparison, EveryReasonIsAnEntryOfTheDefectsPage) {
+  const std::string defects = testing::slurp(kRepo / "docs/defects.md");
+  ASSERT_FALSE(defects.empty());
+  int reasons = 0;
+  for (const auto& p : source_cases()) {
+    for (const auto& item : YAML::LoadFile(p.string())["source"]["printed"]) {
+      if (!item["reason"]) continue;
+      ++reasons;
+      const std::string anchor = item["reason"].as<std::string>();
+      EXPECT_NE(defects.find("id=\"" + anchor + "\""), std::string::npos)
+          << p.filename() << ": reason '" << anchor << "' is no anchor of docs/defects.md";
+    }
+  }
+  EXPECT_GE(reasons, 40);
+}
+
+// the quick ones (placement, time-optimal, pendulum; the throwing cases take a minute each)
+TEST(SourceComparison, EachPrintedFigureIsInResultsJsonAndTheReport) {
+  const fs::path out = testing::fresh_dir("source_comparison");
+  std::string args = "run --no-render --out " + out.string();
+  std::vector<fs::path> run;
+  for (const auto& p : source_cases())
+    if (!p.stem().string().starts_with("throwing")) {
+      run.push_back(p);
+      args += " " + p.string();
+    }
+  const auto r = testing::run_cli(args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const auto& p : run) {
+    SCOPED_TRACE(p.filename().string());
+    const YAML::Node printed = YAML::LoadFile(p.string())["source"]["printed"];
+    const json results = json::parse(testing::slurp(out / p.stem() / "results.json"));
+    const std::string html = testing::slurp(out / p.stem() / "index.html");
+    ASSERT_TRUE(results.contains("source"));
+    const json& rows = results["source"]["rows"];
+    ASSERT_EQ(rows.size(), printed.size());
+    EXPECT_NE(html.find("Source and armstudy"), std::string::npos);
+    for (size_t k = 0; k < printed.size(); ++k) {
+      const YAML::Node item = printed[k];
+      const json& row = rows[k];
+      EXPECT_EQ(row["says"], item["says"].as<std::string>());
+      EXPECT_NE(html.find(html_escaped(item["says"].as<std::string>())), std::string::npos)
+          << item["says"];
+      if (item["value"]) {
+        const double v = item["value"].as<double>();
+        EXPECT_EQ(row["printed"].get<double>(), v);
+        const std::string unit = item["unit"] ? item["unit"].as<std::string>() : "";
+        EXPECT_NE(
+            html.find("[" + report::format_sig(v, 6) + (unit.empty() ? "" : " " + unit) + "]"),
+            std::string::npos)
+            << v;
+        // the verdict, judged again here from the written numbers
+        const json& ours =
+            row.contains("at_source_setting") ? row["at_source_setting"] : row["at_optimum"];
+        if (ours.is_number()) {
+          const bool agrees = std::abs(ours.get<double>() - v) <=
+                              row["tolerance"].get<double>() + 1e-12 * std::max(1.0, std::abs(v));
+          EXPECT_EQ(row["verdict"], agrees ? "agrees" : "differs");
+        }
+      }
+      if (row["verdict"] != "agrees" && row["verdict"] != "confirmed") {
+        EXPECT_TRUE(row.contains("reason")) << row.dump();
+        EXPECT_FALSE(row["why"].get<std::string>().empty()) << row.dump();
+      }
+    }
+    bool explained = false;
+    for (const json& c : results["checks"])
+      if (c["name"] == "source.differences_explained") explained = c["passed"].get<bool>();
+    EXPECT_TRUE(explained);
+  }
+  // page 1 names the symmetry where the configurations tie
+  const std::string p3 = testing::slurp(out / "placement-example-3" / "index.html");
+  EXPECT_NE(p3.find("configurations 1 and 2 tie"), std::string::npos);
+  EXPECT_NE(p3.find("mirrored in the line&apos;s perpendicular bisector and run backwards"), std::string::npos);
+}
+
+TEST(SourceComparison, ADifferenceWithoutItsReasonFailsTheCase) {
+  const fs::path dir = testing::fresh_dir("source_unexplained");
+  const fs::path yaml = dir / "case.yaml";
+  std::ofstream(yaml) << "study: pendulum\nname: unexplained\npendulum: {duration_s: 0.4}\n"
+                         "source:\n  document: A (2000)\n  printed:\n"
+                         "    - where: p. 1\n      says: the drift is 0.5\n      value: 0.5\n"
+                         "      at_optimum: \"key:energy_drift_relative\"\n";
+  const auto r =
+      testing::run_cli("run --no-render --out " + (dir / "out").string() + " " + yaml.string());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("source.differences_explained"), std::string::npos) << r.output;
+  // a misspelt key of the part is an error with its line
+  std::ofstream(yaml) << "study: pendulum\nname: unexplained\npendulum: {duration_s: 0.4}\n"
+                         "source:\n  document: A (2000)\n  printed:\n"
+                         "    - where: p. 1\n      says: x\n      valeu: 0.5\n";
+  const auto bad = testing::run_cli("validate " + yaml.string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("case.yaml:9"), std::string::npos) << bad.output;
+}
+
+}  // namespace armstudy::source_comparison_e2e
