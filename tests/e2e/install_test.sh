@@ -4,7 +4,7 @@
 # installed into the system), then run from another folder, under strace, on a bundled case
 # the package ships, to a complete report with --pdf:
 #  - the file name, the Depends (the shared libraries by dpkg-shlibdeps and PLplot's cairo
-#    driver) and Recommends (a headless Chromium, ffmpeg);
+#    driver) and Recommends (a headless Chromium, ffmpeg, the DejaVu fonts);
 #  - the files: both programs, the templates, the schema, the docs and bundled cases, a man
 #    page per command of `armstudy --help` (each formats without a groff warning) and the
 #    bash completion (it completes the commands);
@@ -33,7 +33,7 @@ depends=$(dpkg-deb -f "$deb" Depends)
 for lib in libmujoco libosmesa6 libyaml-cpp libnlopt libplplot libpng libssl plplot-driver-cairo; do
   grep -q "$lib" <<<"$depends" || fail "Depends lacks $lib: $depends"
 done
-[ "$(dpkg-deb -f "$deb" Recommends)" = "chromium-headless-shell | chromium, ffmpeg" ] ||
+[ "$(dpkg-deb -f "$deb" Recommends)" = "chromium-headless-shell | chromium, ffmpeg, fonts-dejavu-core" ] ||
   fail "Recommends: $(dpkg-deb -f "$deb" Recommends)"
 echo "Depends: $depends"
 
