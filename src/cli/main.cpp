@@ -42,6 +42,7 @@
 #include "cli/progress.hpp"
 #include "cli/sweep.hpp"
 #include "cli/sweep_manifest.hpp"
+#include "cli/version_text.hpp"
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
 #include "report/sweep_report.hpp"
@@ -628,7 +629,10 @@ int main(int argc, char** argv) {
   CLI::App app{
       "armstudy: energy-optimal placement, throwing and time-optimal studies of planar "
       "robot arms, from YAML case files to MuJoCo-rendered reports"};
-  app.set_version_flag("--version", std::string("armstudy ") + armstudy::kVersion);
+  app.set_version_flag(
+      "--version", [] { return armstudy::cli::version_text(); },
+      "Print armstudy's version and commit, the versions of the libraries it "
+      "runs with and the browser --pdf would use, and exit");
   app.require_subcommand(1);
   std::string studies;
   for (const auto& e : armstudy::app::study_registry())

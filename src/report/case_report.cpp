@@ -388,7 +388,16 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
 
 fs::path template_dir() {
   if (const char* env = std::getenv("ARMSTUDY_TEMPLATE_DIR"); env && *env) return env;
-  return ARMSTUDY_TEMPLATE_DIR;
+  // installed: <prefix>/bin/armstudy reads <prefix>/share/armstudy/templates; a program of
+  // the build tree (armstudy, the tests) reads the source tree's templates/
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  const fs::path installed = self.parent_path().parent_path() / "share" / "armstudy" / "templates";
+#if defined(ARMSTUDY_BUILD_TREE) && defined(ARMSTUDY_TEMPLATE_DIR)
+  const std::string build = ARMSTUDY_BUILD_TREE "/";
+  if (ec || self.string().rfind(build, 0) == 0) return ARMSTUDY_TEMPLATE_DIR;
+#endif
+  return installed;
 }
 
 std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord& record) {

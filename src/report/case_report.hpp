@@ -77,8 +77,9 @@ int write_index(const std::filesystem::path& out_dir, const std::vector<IndexStu
 /// Key figures of a case for the index and the page header (label, value with unit).
 std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord& record);
 
-/// The folder holding the templates: $ARMSTUDY_TEMPLATE_DIR if set, else the source tree's
-/// templates/ (compiled in).
+/// The folder holding the templates: $ARMSTUDY_TEMPLATE_DIR if set; else, for a program of
+/// the build tree, the source tree's templates/ (compiled in); else, installed,
+/// <prefix>/share/armstudy/templates beside the program's <prefix>/bin (from /proc/self/exe).
 std::filesystem::path template_dir();
 
 /// Chromium could not be found or did not print.

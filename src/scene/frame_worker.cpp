@@ -133,8 +133,11 @@ std::string frame_worker_program() {
   const fs::path self = fs::read_symlink("/proc/self/exe", ec);
   if (!ec && is_executable(self.parent_path() / "armstudy-frames"))
     return (self.parent_path() / "armstudy-frames").string();
-#ifdef ARMSTUDY_FRAME_WORKER_BUILT
-  if (is_executable(ARMSTUDY_FRAME_WORKER_BUILT)) return ARMSTUDY_FRAME_WORKER_BUILT;
+#if defined(ARMSTUDY_FRAME_WORKER_BUILT) && defined(ARMSTUDY_BUILD_TREE)
+  // the build's helper, for the build tree's programs only (the tests in build/tests); an
+  // installed armstudy never looks into the build tree
+  const bool in_build = !ec && self.string().rfind(ARMSTUDY_BUILD_TREE "/", 0) == 0;
+  if (in_build && is_executable(ARMSTUDY_FRAME_WORKER_BUILT)) return ARMSTUDY_FRAME_WORKER_BUILT;
 #endif
   return "";
 }

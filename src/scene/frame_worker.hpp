@@ -79,8 +79,9 @@ class FrameWorker {
 };
 
 /// The helper program: $ARMSTUDY_FRAME_WORKER when set (empty or "none": no helper), else
-/// armstudy-frames beside the running program, else the one in the build tree this was
-/// built in; "" when none of them is an executable file.
+/// armstudy-frames beside the running program (installed: <prefix>/bin/armstudy-frames),
+/// else, for a program of the build tree (the tests), the one that build tree made; "" when
+/// none of them is an executable file.
 std::string frame_worker_program();
 
 /// The helper's side: reads requests from `in_fd` and answers on `out_fd` until the

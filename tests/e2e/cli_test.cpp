@@ -16,6 +16,7 @@
 
 #include "cases/case_info.hpp"
 #include "testing/cli.hpp"
+#include "version.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -52,6 +53,37 @@ TEST(Cli, HelpAndVersionExitZero) {
   const CliRun v = run_cli("--version");
   EXPECT_EQ(v.exit_code, 0);
   EXPECT_EQ(v.output.rfind("armstudy ", 0), 0u) << v.output;
+}
+
+// --version names armstudy's version and commit and every library and browser it runs
+// with, and never waits for a browser that does not answer
+TEST(Cli, VersionNamesTheLibrariesAndTheBrowser) {
+  const fs::path dir = temp_dir("version");
+  fs::create_directories(dir);
+  const fs::path hanging = dir / "hanging-browser";
+  { std::ofstream(hanging) << "#!/bin/sh\nsleep 600\n"; }
+  fs::permissions(hanging, fs::perms::owner_all);
+  using armstudy::testing::Bounds;
+  using armstudy::testing::run_bounded;
+  const auto v = run_bounded({"--version"}, Bounds{.timeout_s = 60});
+  ASSERT_EQ(v.exit_code, 0) << v.output;
+  EXPECT_EQ(v.output.rfind(std::string("armstudy ") + armstudy::kVersion + " (commit ", 0), 0u)
+      << v.output;
+  for (const char* line : {"\nMuJoCo 2.", "\nOSMesa/Mesa ", "Mesa 2", "\nEigen 3.", "\nyaml-cpp 0.",
+                           "\nNLopt 2.", "\nbrowser (--pdf) "})
+    EXPECT_NE(v.output.find(line), std::string::npos) << line << " in\n" << v.output;
+  const auto absent = run_bounded(
+      {"--version"}, Bounds{.timeout_s = 60, .env = {{"ARMSTUDY_CHROMIUM", "/nonexistent"}}});
+  EXPECT_NE(absent.output.find("\nbrowser (--pdf) not found"), std::string::npos) << absent.output;
+  // a browser that never answers is killed (its shell and its sleep) after 5 s
+  const auto hung = run_bounded(
+      {"--version"}, Bounds{.timeout_s = 60, .env = {{"ARMSTUDY_CHROMIUM", hanging.string()}}});
+  EXPECT_FALSE(hung.hung);
+  EXPECT_EQ(hung.exit_code, 0);
+  EXPECT_NE(hung.output.find("\nbrowser (--pdf) " + hanging.string() + ": version unknown"),
+            std::string::npos)
+      << hung.output;
+  fs::remove_all(dir);
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
