@@ -40,8 +40,10 @@ void placement_answer(const nlohmann::json& results, const ResultsRecord& record
   for (const auto& u : pl.unsolved)
     a.binding.push_back(u.program + ", configuration " + as_text(u.configuration) +
                         ": no optimum (" + u.reason + ")");
-  a.assumptions.push_back("energy integral (8.1): " + as_text(pl.samples) +
-                          " samples, doubled until it changes by < 1e-4");
+  a.assumptions.push_back(
+      "energy integral (8.1): adaptive Gauss-Kronrod quadrature to 1e-9 "
+      "for the printed motions (the sweep: " +
+      as_text(pl.samples) + " samples, doubled until it changes by < 1e-4)");
   a.assumptions.push_back("singular: a line within " + format_sig(pl.singularity_margin_m, 3) +
                           " m of the annulus' boundary (a setting)");
   a.assumptions.push_back(pl.torque_limits_Nm || pl.power_limits_W

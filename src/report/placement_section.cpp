@@ -35,9 +35,13 @@ std::string pair_str(const std::optional<PS::Pair>& p, int digits) {
 }
 // a motion whose energy is withheld (on the inner circle, or not converged): no energy, peak
 // or saving is printed
-bool no_energy(const PS::Metrics& o) { return !std::isfinite(o.energy_J); }
+bool no_energy(const PS::Metrics& o) {
+  return o.singular_trajectory.value_or(false) && !std::isfinite(o.energy_J);
+}
 // a motion whose peak torque is withheld (unbounded at a singular pose); its energy may stand
-bool no_peak(const PS::Metrics& o) { return !o.peak_torque_Nm.has_value(); }
+bool no_peak(const PS::Metrics& o) {
+  return o.singular_trajectory.value_or(false) && !o.peak_torque_Nm.has_value();
+}
 constexpr const char* kSingularText = "singular: energy not converged, peak torque unbounded";
 constexpr const char* kPeakText = "peak torque unbounded (singular pose)";
 // the energy with its quadrature error estimate, e.g. "17.10670 ± 2.1e-09"
@@ -383,8 +387,9 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
     else if (no_peak(e))
       text += " (clearance " + format_sig(e.boundary_distance_m, 3) +
               " m): its energy is finite and converged (adaptive quadrature, with its error "
-              "estimate) but its " +
-              kPeakText + ", so no peak torque is given; its energies: " + energies + ".";
+              "estimate), but its peak torque is unbounded (a singular pose), so no peak torque "
+              "is given; its energies: " +
+              energies + ".";
     else if (status == "singular")
       text += ": it comes within " + format_sig(e.boundary_distance_m, 3) +
               " m of a workspace boundary (smallest |sin q2| " +
@@ -889,9 +894,8 @@ Section convergence_and_evaluations(const PS& pl) {
     ev.rows.push_back(
         {e.label, id_label(e), format_sig(e.x_s_m, 5), format_sig(e.phi_deg, 5), energy_text(e, 6),
          status_text(e.status),
-         !std::isfinite(e.saving_J) ? std::string("none (singular)") : format_sig(e.saving_J, 4),
-         !std::isfinite(e.saving_percent) ? std::string("none (singular)")
-                                          : format_sig(e.saving_percent, 3)});
+         no_energy(e) ? std::string("none (singular)") : format_sig(e.saving_J, 4),
+         no_energy(e) ? std::string("none (singular)") : format_sig(e.saving_percent, 3)});
   if (!ev.rows.empty()) s.table(std::move(ev));
   if (s.blocks.empty()) s.paragraph("No convergence table or evaluations in the result.");
   return s;
