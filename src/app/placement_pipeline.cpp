@@ -182,10 +182,14 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
     const pl::ProgramConfig* best = nullptr;
     for (const pl::ProgramConfig& pc : result_.cases) {
       if (!pc.found || pc.series.t.size() < 2) continue;
+      // energies equal within their error estimates (mirror-image optima) are a tie: the
+      // first stays, as in the answer's sentence
       const bool regular = pc.refined.convergence.regular();
       if (!best || (regular && (!best->refined.convergence.regular() ||
                                 pc.refined.reported_metrics().energy <
-                                    best->refined.reported_metrics().energy)))
+                                    best->refined.reported_metrics().energy -
+                                        (pc.refined.convergence.energy_error +
+                                         best->refined.convergence.energy_error))))
         best = &pc;
     }
     if (!best) return out;

@@ -756,9 +756,15 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
              "with both ends on the outer one, a singular motion)";
     res.message = why;
   } else {
+    // the least printed energy; energies equal within their error estimates (mirror-image
+    // optima) are a tie and the first stays (the exports and the report's picture agree)
     const ProgramConfig* best = nullptr;
     for (const auto& c : res.cases)
-      if (c.found && (!best || c.refined.metrics.energy < best->refined.metrics.energy)) best = &c;
+      if (c.found && (!best || c.refined.reported_metrics().energy <
+                                   best->refined.reported_metrics().energy -
+                                       (c.refined.convergence.energy_error +
+                                        best->refined.convergence.energy_error)))
+        best = &c;
     std::ostringstream os;
     os << "least energy " << fmt(best->refined.reported_metrics().energy) << " J ("
        << core::program_name(best->program) << ", configuration " << best->configuration
