@@ -72,24 +72,40 @@ Section::EnergyConvergence convergence_section(const pl::EnergyConvergence& c) {
   for (const auto& r : c.rows) o.rows.push_back({r.samples, r.energy, r.peak_torque});
   o.converged = c.converged;
   o.touches_boundary = c.touches_boundary;
-  o.singular = c.singular();
+  o.singular = !c.regular();
   o.samples = c.samples;
   o.rel_change = c.rel_change;
   o.peak_torque_rel_change = c.peak_rel_change;
   o.tolerance_rel = c.tolerance;
+  o.peak_converged = c.peak_converged;
+  if (c.quadrature) {
+    Section::Quadrature q;
+    q.energy_J = c.energy;
+    q.error_J = c.energy_error;
+    q.tolerance_rel = c.quadrature_tolerance;
+    q.converged = c.energy_converged();
+    q.intervals = c.quadrature_intervals;
+    q.evaluations = c.quadrature_evaluations;
+    o.quadrature = q;
+  }
   return o;
 }
 
-// energy, peak torque, peak power of a candidate: null (and a note) for a singular motion
+// energy (with its error), peak torque of a candidate: null (and a note) where withheld
 void set_metrics(Section::Metrics& o, const pl::Candidate& c) {
-  const bool singular = c.convergence.singular();
+  const pl::EnergyConvergence& conv = c.convergence;
+  const bool no_energy = conv.energy_withheld(), no_peak = conv.peak_withheld();
   const pl::LineMetrics& m = c.reported_metrics();
-  o.energy_J = singular ? NAN : m.energy;
-  if (!singular) o.peak_torque_Nm = Section::Pair{m.peak_torque[0], m.peak_torque[1]};
-  if (c.convergence.checked) o.energy_samples = c.convergence.samples;
-  o.singular_trajectory = singular;
-  if (singular) o.note = pl::kSingularNote;
-  if (c.convergence.checked) o.energy_convergence = convergence_section(c.convergence);
+  o.energy_J = no_energy ? NAN : m.energy;
+  if (!no_energy && conv.quadrature) o.energy_error_J = conv.energy_error;
+  if (!no_energy && !no_peak) o.peak_torque_Nm = Section::Pair{m.peak_torque[0], m.peak_torque[1]};
+  if (conv.checked) o.energy_samples = conv.samples;
+  o.singular_trajectory = no_energy || no_peak;
+  if (no_energy)
+    o.note = pl::kSingularNote;
+  else if (no_peak)
+    o.note = pl::kPeakUnboundedNote;
+  if (conv.checked) o.energy_convergence = convergence_section(conv);
 }
 
 // what decides an optimum (refine.hpp)
@@ -138,7 +154,7 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
     std::vector<KeyFigure> k;
     double best = std::numeric_limits<double>::infinity();
     for (const pl::ProgramConfig& pc : result_.cases) {
-      if (!pc.found || pc.refined.convergence.singular()) continue;
+      if (!pc.found || pc.refined.convergence.energy_withheld()) continue;
       const std::string id = "[" + prog(pc.program) + "," + std::to_string(pc.configuration) + "]";
       const std::string who = ", " + prog(pc.program) + " " + std::to_string(pc.configuration);
       const double energy = pc.refined.reported_metrics().energy;
@@ -166,10 +182,14 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
     const pl::ProgramConfig* best = nullptr;
     for (const pl::ProgramConfig& pc : result_.cases) {
       if (!pc.found || pc.series.t.size() < 2) continue;
-      const bool regular = !pc.refined.convergence.singular();
-      if (!best || (regular && (best->refined.convergence.singular() ||
+      // energies equal within their error estimates (mirror-image optima) are a tie: the
+      // first stays, as in the answer's sentence
+      const bool regular = pc.refined.convergence.regular();
+      if (!best || (regular && (!best->refined.convergence.regular() ||
                                 pc.refined.reported_metrics().energy <
-                                    best->refined.reported_metrics().energy)))
+                                    best->refined.reported_metrics().energy -
+                                        (pc.refined.convergence.energy_error +
+                                         best->refined.convergence.energy_error))))
         best = &pc;
     }
     if (!best) return out;
@@ -270,7 +290,7 @@ Section PlacementRun::section() const {
       o.boundary_distance_m = c.boundary_distance;
       o.peak_power_W = {c.metrics.peak_power[0], c.metrics.peak_power[1]};
       o.signed_work_J = c.metrics.signed_work;
-      o.singular = c.status != pl::CandidateStatus::kFeasible || c.convergence.singular();
+      o.singular = c.status != pl::CandidateStatus::kFeasible || !c.convergence.regular();
       o.refine_evaluations = pc.refine_evaluations;
       o.decided_by = decision_section(spec_, pc.decision);
       if (!pc.refine_method.empty()) o.refinement.method = pc.refine_method;

@@ -33,11 +33,27 @@ std::string pair_str(const PS::Pair& p, int digits) {
 std::string pair_str(const std::optional<PS::Pair>& p, int digits) {
   return p ? pair_str(*p, digits) : "n/a";
 }
-// a singular motion's energy, peak and saving are never printed
-bool singular_motion(const PS::Metrics& o) { return o.singular_trajectory.value_or(false); }
+// a motion whose energy is withheld (on the inner circle, or not converged): no energy, peak
+// or saving is printed
+bool no_energy(const PS::Metrics& o) {
+  return o.singular_trajectory.value_or(false) && !std::isfinite(o.energy_J);
+}
+// a motion whose peak torque is withheld (unbounded at a singular pose); its energy may stand
+bool no_peak(const PS::Metrics& o) {
+  return o.singular_trajectory.value_or(false) && !o.peak_torque_Nm.has_value();
+}
 constexpr const char* kSingularText = "singular: energy not converged, peak torque unbounded";
+constexpr const char* kPeakText = "peak torque unbounded (singular pose)";
+// the energy with its quadrature error estimate, e.g. "17.10670 ± 2.1e-09"
 std::string energy_text(const PS::Metrics& o, int digits) {
-  return singular_motion(o) ? std::string(kSingularText) : format_sig(o.energy_J, digits);
+  if (no_energy(o)) return kSingularText;
+  std::string t = format_sig(o.energy_J, digits);
+  if (o.energy_error_J) t += " ± " + format_sig(*o.energy_error_J, 2);
+  return t;
+}
+std::string peak_text(const PS::Metrics& o, int digits) {
+  if (no_energy(o)) return kSingularText;
+  return no_peak(o) ? std::string(kPeakText) : pair_str(o.peak_torque_Nm, digits);
 }
 // "inner circle |L1 - L2|" etc. for a binding name
 std::string binding_text(const PS::Optimum& o, const PS& pl) {
@@ -201,10 +217,11 @@ Table decision_table(const PS& pl) {
       "What decides each optimum: the binding constraint (a clearance margin to a "
       "workspace circle, a torque or power limit) or 'interior' when none is active; "
       "the constrained refinement's final tolerance (the relative energy a last COBYLA "
-      "restart still gained, target 1e-7) and the optimum's own energy convergence "
-      "(samples doubled until the energy changes by less than 1e-4).";
+      "restart still gained, target 1e-7), the relative error estimate of the optimum's "
+      "energy (adaptive Gauss-Kronrod quadrature, asked for 1e-9) and its sampled peak "
+      "torque's convergence (samples doubled until it changes by less than 1e-3).";
   t.header = {"program, configuration", "decided by", "inner / outer clearance − margin (m)",
-              "refinement tolerance", "energy: samples, change on doubling"};
+              "refinement tolerance", "energy error; peak torque: samples, change on doubling"};
   for (const auto& o : pl.optima) {
     std::string tol = "not refined", conv = "n/a";
     if (o.refinement.method)
@@ -212,8 +229,16 @@ Table decision_table(const PS& pl) {
             (o.refinement.converged ? " (converged)" : " (NOT converged)");
     if (o.energy_convergence) {
       const auto& c = *o.energy_convergence;
-      conv = c.singular ? std::string(kSingularText)
-                        : as_text(c.samples) + " samples, " + format_sig(c.rel_change, 2);
+      if (no_energy(o))
+        conv = kSingularText;
+      else
+        conv = (c.quadrature
+                    ? "error " + format_sig(c.quadrature->error_J / c.quadrature->energy_J, 2) +
+                          " (quadrature); "
+                    : std::string()) +
+               (no_peak(o) ? std::string(kPeakText)
+                           : "peak: " + as_text(c.samples) + " samples, " +
+                                 format_sig(c.peak_torque_rel_change, 2));
     }
     // a slack within roundoff of 0 is the binding constraint itself
     const auto slack = [&](double v) {
@@ -241,7 +266,7 @@ std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
     se.colour = colour_for(id_key(o));
     se.markers = true;
     for (const auto& m : o.margin_sensitivity) {
-      if (!m.found || !m.optimum || singular_motion(*m.optimum)) continue;
+      if (!m.found || !m.optimum || no_energy(*m.optimum)) continue;
       se.x.push_back(m.margin_m);
       se.y.push_back(m.optimum->energy_J);
     }
@@ -295,11 +320,11 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
               "signed work (J)"};
   std::vector<SeriesOwner> owners;
   for (const auto& o : pl.optima) {
-    t.rows.push_back(
-        {id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6), format_sig(o.x_s_m, 6),
-         format_sig(o.phi_deg, 6), pair_str(o.root_xy_m, 5), format_sig(o.min_abs_sin_elbow, 3),
-         singular_motion(o) ? std::string(kSingularText) : pair_str(o.peak_torque_Nm, 4),
-         pair_str(o.peak_power_W, 4), format_sig(o.signed_work_J, 3)});
+    t.rows.push_back({id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6),
+                      format_sig(o.x_s_m, 6), format_sig(o.phi_deg, 6), pair_str(o.root_xy_m, 5),
+                      format_sig(o.min_abs_sin_elbow, 3), peak_text(o, 4),
+                      no_peak(o) ? std::string("n/a") : pair_str(o.peak_power_W, 4),
+                      format_sig(o.signed_work_J, 3)});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
     owners.push_back({id_label(o), id_key(o), &o.series});
   }
@@ -341,30 +366,40 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
       if (!first) first = &e;
       energies +=
           (energies.empty() ? "" : "; ") + id_label(e) + " " +
-          (singular_motion(e) ? std::string(kSingularText) : format_sig(e.energy_J, 5) + " J") +
+          (no_energy(e) ? std::string(kSingularText)
+                        : format_sig(e.energy_J, 5) + " J" +
+                              (e.energy_error_J ? " ± " + format_sig(*e.energy_error_J, 2) : "")) +
           (std::isfinite(e.saving_percent)
                ? " (the optimum saves " + format_sig(e.saving_percent, 3) + " %)"
                : "");
     }
     const PS::Evaluation& e = *first;
     const std::string& status = e.status;
-    text = "The thesis's printed placement '" + label + "' (x_S = " + format_sig(e.x_s_m, 5) +
-           " m, φ = " + format_sig(e.phi_deg, 5) + "°) is " +
-           (singular_motion(e) && status != "unreachable" ? std::string("on a workspace boundary")
-                                                          : status_text(e.status)) +
-           " by the exact check";
+    text =
+        "The thesis's printed placement '" + label + "' (x_S = " + format_sig(e.x_s_m, 5) +
+        " m, φ = " + format_sig(e.phi_deg, 5) + "°) is " +
+        (e.energy_convergence && e.energy_convergence->touches_boundary && status != "unreachable"
+             ? std::string("on a workspace boundary")
+             : status_text(e.status)) +
+        " by the exact check";
     if (status == "unreachable")
       text += ": with its printed digits part of the line lies outside the annulus (by " +
               format_sig(-e.boundary_distance_m, 3) + " m), so no motion exists there.";
-    else if (singular_motion(e))
+    else if (no_energy(e))
       text += " (clearance " + format_sig(e.boundary_distance_m, 3) + " m), so its motion is " +
               kSingularText + "; no energy, peak torque or saving is given for it.";
+    else if (no_peak(e))
+      text += " (clearance " + format_sig(e.boundary_distance_m, 3) +
+              " m): its energy is finite and converged (adaptive quadrature, with its error "
+              "estimate), but its peak torque is unbounded (a singular pose), so no peak torque "
+              "is given; its energies: " +
+              energies + ".";
     else if (status == "singular")
       text += ": it comes within " + format_sig(e.boundary_distance_m, 3) +
               " m of a workspace boundary (smallest |sin q2| " +
               format_sig(e.min_abs_sin_elbow, 3) +
-              "), so it is not admissible; its energies with the samples doubled until they "
-              "converge: " +
+              "), so it is not admissible; its energies (adaptive quadrature, with their error "
+              "estimates): " +
               energies + ".";
     else
       text += "; its energies here: " + energies + ".";
@@ -448,7 +483,7 @@ void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
     plot.series.push_back(std::move(excluded));
     // the optimum itself, on its own curve (the curve is drawn at the optimum's x_S)
     for (const auto& o : pl.optima) {
-      if (id_key(o) != id_key(c) || singular_motion(o)) continue;
+      if (id_key(o) != id_key(c) || no_energy(o)) continue;
       Series mark;
       mark.label = "";
       mark.colour = colour_for(id_key(c));
@@ -818,15 +853,19 @@ Section convergence_and_evaluations(const PS& pl) {
   {
     Table t;
     t.caption =
-        "Energy convergence of each optimum on its own: samples doubled until the "
-        "energy changes by less than 1e-4 and the sampled peak torque by less than 1e-3 "
-        "relative; the first row of each optimum is its printed value.";
+        "Sampled convergence of each optimum on its own: samples doubled until the "
+        "sampled energy changes by less than 1e-4 and the sampled peak torque by less than 1e-3 "
+        "relative (the first row's peak torque is the printed one); the verdict gives the "
+        "printed energy, by adaptive Gauss-Kronrod quadrature with its error estimate.";
     t.header = {"optimum", "samples", "energy (J)", "sampled peak torque (N m)", "verdict"};
     for (const auto& o : pl.optima) {
       if (!o.energy_convergence) continue;
       const auto& c = *o.energy_convergence;
-      const std::string verdict = c.singular ? std::string(kSingularText)
-                                             : "converged, change " + format_sig(c.rel_change, 2);
+      const std::string verdict =
+          no_energy(o) ? std::string(kSingularText)
+                       : "energy " + energy_text(o, 10) + " J" +
+                             (no_peak(o) ? "; " + std::string(kPeakText)
+                                         : "; sampled change " + format_sig(c.rel_change, 2));
       bool first = true;
       for (const auto& r : c.rows) {
         t.rows.push_back({first ? id_label(o) : "", as_text(r.samples), format_sig(r.energy_J, 10),
@@ -866,8 +905,8 @@ Section convergence_and_evaluations(const PS& pl) {
     ev.rows.push_back(
         {e.label, id_label(e), format_sig(e.x_s_m, 5), format_sig(e.phi_deg, 5), energy_text(e, 6),
          status_text(e.status),
-         singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_J, 4),
-         singular_motion(e) ? std::string("none (singular)") : format_sig(e.saving_percent, 3)});
+         no_energy(e) ? std::string("none (singular)") : format_sig(e.saving_J, 4),
+         no_energy(e) ? std::string("none (singular)") : format_sig(e.saving_percent, 3)});
   if (!ev.rows.empty()) s.table(std::move(ev));
   if (s.blocks.empty()) s.paragraph("No convergence table or evaluations in the result.");
   return s;
@@ -896,10 +935,14 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
       "constraints (NLopt COBYLA with the clearances and limits as inequalities, Nelder-Mead "
       "inside the admissible set, a golden-section search along a nearly active constraint) "
       "until a restart gains less than 1e-7 relative in energy, and each optimum says which "
-      "constraint decides it. Every printed energy is checked by doubling the samples until "
-      "it changes by less than 1e-4; a motion that touches a workspace boundary, or whose "
-      "energy does not converge, is reported as singular without an energy, a peak or a "
-      "saving.");
+      "constraint decides it. Every printed energy of an optimum or an evaluated placement is "
+      "computed by adaptive Gauss-Kronrod quadrature (breakpoints at the closest approach "
+      "to the inner circle and at the sign changes of the joint powers) and printed with its "
+      "error estimate; its peak torque is checked by doubling the samples until it changes by "
+      "less than 1e-3. Near a workspace boundary the energy stays finite while the peak "
+      "torque grows without bound: such a motion has its energy but no peak torque "
+      "(peak torque unbounded, singular pose); a line tangent to the inner circle is reported "
+      "as singular without an energy, a peak or a saving.");
   method.note(
       "The thesis's printed example energies cannot be reproduced from its own model and "
       "parameters, and its eq. 7.2 is wrong (M2 is (6.35) itself and M1 = (6.29) + (6.35); "

@@ -53,9 +53,9 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
 
     const std::string name = "placement_" + std::string(core::program_name(pc.program)) + "_c" +
                              std::to_string(pc.configuration);
-    // a singular motion's energy is never printed (it did not converge)
+    // a withheld energy is never printed (a line on the inner circle, or not converged)
     char energy[48];
-    if (pc.refined.convergence.singular())
+    if (pc.refined.convergence.energy_withheld())
       std::snprintf(energy, sizeof energy, "singular: energy not converged");
     else
       std::snprintf(energy, sizeof energy, "%.3f J", pc.refined.reported_metrics().energy);

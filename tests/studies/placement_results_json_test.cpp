@@ -62,7 +62,17 @@ TEST(PlacementResultsJson, HoldsOptimaEvaluationsCountsAndLmaxAsSpecified) {
     EXPECT_NEAR(o["root_xy_m"][1].get<double>(), xs * std::sin(phi), 1e-6);
     EXPECT_EQ(o["peak_torque_Nm"].size(), 2u);
     EXPECT_EQ(o["series"]["t_s"].size(), o["series"]["tau2_Nm"].size());
-    EXPECT_NEAR(o["series"]["energy_J"].back().get<double>(), o["energy_J"].get<double>(), 1e-5);
+    // the series is sampled (the spec's samples) and ends on the sampled energy there; the
+    // printed energy is the quadrature's, within the doubling's 1e-4 of the sampled one
+    const json& rows = o["energy_convergence"]["rows"];
+    ASSERT_EQ(rows[0]["samples"].get<int>(), j["samples"].get<int>());
+    EXPECT_NEAR(o["series"]["energy_J"].back().get<double>(), rows[0]["energy_J"].get<double>(),
+                1e-9);
+    EXPECT_NEAR(o["series"]["energy_J"].back().get<double>(), o["energy_J"].get<double>(),
+                1e-4 * o["energy_J"].get<double>());
+    EXPECT_DOUBLE_EQ(o["energy_J"].get<double>(),
+                     o["energy_convergence"]["quadrature"]["energy_J"].get<double>());
+    EXPECT_LT(o["energy_error_J"].get<double>(), 1e-9 * o["energy_J"].get<double>());
   }
   ASSERT_EQ(j["evaluations"].size(), 4u);
   for (const json& e : j["evaluations"]) {
@@ -154,7 +164,7 @@ TEST(PlacementResultsJson, AMarginBoundOptimumSaysSoInResultsAndOnThePage) {
           "study: placement\nname: margin-page\nplacement:\n  length_fraction: 0.5\n"
           "  programs: [cycloidal]\n  configurations: [1]\n  nx_s: 16\n  phi_step_deg: 3\n"
           "  map: {nx: 8, ny: 4}\n  evaluate:\n    - {label: tangent, x_s_m: 0.36, phi_deg: ") +
-          tangent + "}\n",
+          tangent + "}\n    - {label: outer-start, x_s_m: 0.6, phi_deg: 150}\n",
       "margin");
   const json& pl = p.results["placement"];
   ASSERT_EQ(pl["optima"].size(), 1u);
@@ -179,7 +189,7 @@ TEST(PlacementResultsJson, AMarginBoundOptimumSaysSoInResultsAndOnThePage) {
             std::string::npos);
   EXPECT_NE(p.html.find("Margin sensitivity"), std::string::npos);
   // the tangent line: singular, and no energy, peak or saving anywhere
-  ASSERT_EQ(pl["evaluations"].size(), 1u);
+  ASSERT_EQ(pl["evaluations"].size(), 2u);
   const json& e = pl["evaluations"][0];
   EXPECT_TRUE(e["singular_trajectory"].get<bool>());
   EXPECT_TRUE(e["energy_J"].is_null());
@@ -195,6 +205,24 @@ TEST(PlacementResultsJson, AMarginBoundOptimumSaysSoInResultsAndOnThePage) {
       << tr;
   EXPECT_NE(tr.find("none (singular)"), std::string::npos) << tr;
   EXPECT_EQ(tr.find(" J"), std::string::npos) << tr;
+  // the line starting on the outer circle (stretched elbow at rest): its energy is finite and
+  // printed with its quadrature error, only its peak torque is withheld; it has a saving
+  const json& o2 = pl["evaluations"][1];
+  EXPECT_TRUE(o2["singular_trajectory"].get<bool>());
+  ASSERT_TRUE(o2["energy_J"].is_number());
+  ASSERT_TRUE(o2["energy_error_J"].is_number());
+  EXPECT_LT(o2["energy_error_J"].get<double>(), 1e-9 * o2["energy_J"].get<double>());
+  EXPECT_GT(o2["energy_error_J"].get<double>(), 0.0);
+  EXPECT_TRUE(o2["peak_torque_Nm"].is_null());
+  EXPECT_TRUE(o2["saving_J"].is_number());
+  EXPECT_EQ(o2["note"], "peak torque unbounded (singular pose)");
+  EXPECT_TRUE(o2["energy_convergence"]["quadrature"]["converged"].get<bool>());
+  EXPECT_FALSE(o2["energy_convergence"]["peak_converged"].get<bool>());
+  const size_t row2 = p.html.rfind("<tr><td>outer-start</td>");
+  ASSERT_NE(row2, std::string::npos);
+  const std::string tr2 = p.html.substr(row2, p.html.find("</tr>", row2) - row2);
+  EXPECT_NE(tr2.find(" ± "), std::string::npos) << tr2;
+  EXPECT_EQ(tr2.find("none (singular)"), std::string::npos) << tr2;
   // the Pareto fronts hold admissible placements only
   for (const json& f : pl["pareto"])
     for (const json& sg : f["singular"]) EXPECT_FALSE(sg.get<bool>());

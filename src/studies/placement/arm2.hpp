@@ -66,15 +66,28 @@ struct Arm2Sample {
 /// v and acceleration a (root at the origin; m, m/s, m/s^2) in configuration `sign`
 /// (+1: configuration 1, q2 in (0, pi); -1: configuration 2). Outside the annulus c2 is
 /// clamped; at a singular pose (s2 = 0) rates are infinite.
+inline Arm2Sample arm2_sample_elbow(const Arm2& arm, double px, double py, double vx, double vy,
+                                    double ax, double ay, double c2, double s2);
+
 inline Arm2Sample arm2_sample(const Arm2& arm, double px, double py, double vx, double vy,
                               double ax, double ay, double sign) {
-  Arm2Sample o;
   const double L1 = arm.L1, L2 = arm.L2;
   const double r2 = px * px + py * py;
   // law of cosines for the elbow, eq. 3.3 in relative form
   double c2 = (r2 - L1 * L1 - L2 * L2) / (2.0 * L1 * L2);
   c2 = c2 > 1.0 ? 1.0 : (c2 < -1.0 ? -1.0 : c2);
   const double s2 = sign * std::sqrt(1.0 - c2 * c2);
+  return arm2_sample_elbow(arm, px, py, vx, vy, ax, ay, c2, s2);
+}
+
+/// arm2_sample with the elbow's cos q2 and sin q2 given (signed as the configuration): for a
+/// caller that knows them more accurately than the law of cosines on p gives them near a
+/// boundary of the annulus (quadrature.hpp).
+inline Arm2Sample arm2_sample_elbow(const Arm2& arm, double px, double py, double vx, double vy,
+                                    double ax, double ay, double c2, double s2) {
+  Arm2Sample o;
+  const double L1 = arm.L1, L2 = arm.L2;
+  const double r2 = px * px + py * py;
   // link 1 direction without trigonometry: p = R(theta1) (L1 + L2 c2, L2 s2)
   const double k1 = L1 + L2 * c2, k2 = L2 * s2;
   const double inv_r2 = 1.0 / r2;

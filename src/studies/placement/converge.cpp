@@ -1,5 +1,7 @@
 #include "studies/placement/converge.hpp"
 
+#include "studies/placement/quadrature.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,6 +28,7 @@ EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, 
     if (!prev.finite() || !next.finite()) {
       // a sample on the singular pose itself: nothing converges
       c.rel_change = std::numeric_limits<double>::infinity();
+      c.peak_converged = false;
       prev = next;
       n = m;
       if (!next.finite()) break;
@@ -35,7 +38,8 @@ EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, 
     const double pk_prev = std::max(prev.peak_torque[0], prev.peak_torque[1]);
     const double pk_next = std::max(next.peak_torque[0], next.peak_torque[1]);
     c.peak_rel_change = std::abs(pk_next - pk_prev) / pk_next;
-    if (c.rel_change < tol && c.peak_rel_change < peak_tol) {
+    c.peak_converged = c.peak_rel_change < peak_tol;
+    if (c.rel_change < tol && c.peak_converged) {
       c.converged = true;
       c.samples = n;
       c.metrics = prev;
@@ -46,6 +50,26 @@ EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, 
   }
   c.samples = n;
   c.metrics = prev;
+  return c;
+}
+
+EnergyConvergence check_energy(const Arm2& arm, core::MotionProgram program, double duration,
+                               double length, const Line& line, int configuration, int samples,
+                               bool touches, bool touches_inner, double tol, double quad_tol,
+                               double peak_tol, int max_samples) {
+  EnergyConvergence c = converge_energy(arm, program, duration, length, line, configuration,
+                                        samples, touches, tol, peak_tol, max_samples);
+  c.touches_inner = touches_inner;
+  if (touches_inner) return c;  // the tangent's limit energy is not its integral
+  const EnergyQuadrature q =
+      energy_quadrature(arm, program, duration, length, line, configuration, quad_tol);
+  c.quadrature = true;
+  c.energy = q.energy;
+  c.energy_error = q.error;
+  c.quadrature_tolerance = q.tolerance_rel;
+  c.quadrature_intervals = q.intervals;
+  c.quadrature_evaluations = q.evaluations;
+  if (c.energy_converged()) c.metrics.energy = q.energy;
   return c;
 }
 

@@ -1,12 +1,19 @@
 #pragma once
-/// Energy of one motion converged by doubling the samples per trajectory: no
-/// printed energy, peak or saving comes from an unconverged integral. A line that touches
-/// a workspace boundary (|sin q2| = 0 on it) is a singular motion whatever the doubling
-/// shows: tangent to the inner circle the elbow folds and its rate jumps (an impulsive
-/// torque that no sample sees, so the sampled energy settles on a value that misses it);
-/// an end on the outer circle at rest gives the elbow rate a square-root cusp and the
-/// sampled peak torque grows like h^-1/2 without bound.
+/// The figures of one checked motion (an optimum, an evaluated placement, the thesis's best):
+/// - its energy by adaptive Gauss-Kronrod quadrature with an error estimate (quadrature.hpp),
+///   printed when the estimate is within the tolerance;
+/// - its sampled peak torque and power, and the other sampled metrics, converged by doubling
+///   the samples per trajectory; withheld when the peak does not settle.
+/// Near a workspace boundary these part: a line at d > 0 from the inner circle has a finite
+/// energy with a finite limit as d -> 0+ while its peak torque grows like d^-1/2; a line
+/// ending on the outer circle at rest has a finite energy while its torque grows like
+/// (T - t)^-1/2 at that end, so the sampled peak grows like h^-1/2 without bound. So the
+/// energy is printed with its error and only the peak (and the peak power) is withheld.
+/// A line exactly tangent to the inner circle (within 1e-9 m) keeps no energy: as d -> 0+
+/// the elbow rate reverses in a vanishing time and the limit energy holds a jump term that
+/// the integral of the tangent line itself does not see.
 
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -22,20 +29,45 @@ struct ConvergenceRow {
   double peak_torque = 0;  ///< N m, max over both joints
 };
 
-/// What the doubling found for one motion.
+/// What the quadrature and the doubling found for one motion.
 struct EnergyConvergence {
   bool checked = false;  ///< converge_energy ran (false: not a printed candidate)
+  /// on one doubling the sampled energy changed by < tol and the sampled peak torque by
+  /// < peak_tol
   bool converged = false;
-  /// on one doubling the energy changed by < tol and the sampled peak torque by < peak_tol
+  /// the sampled peak torque changed by < peak_tol on the last doubling
+  bool peak_converged = false;
   bool touches_boundary = false;  ///< the line is on a boundary (exact geometry, 1e-9 m)
-  /// no energy, peak or saving may be printed: touching a boundary or not converged
-  bool singular() const { return checked && (touches_boundary || !converged); }
+  /// touches the inner circle |L1 - L2| (an exact tangent, or an end on it): no energy
+  bool touches_inner = false;
+  /// the energy below comes from the adaptive quadrature (check_energy); false: the energy
+  /// is the doubling's (converge_energy alone, the sweep)
+  bool quadrature = false;
+  double energy = std::numeric_limits<double>::quiet_NaN();       ///< J, the quadrature's
+  double energy_error = std::numeric_limits<double>::infinity();  ///< J, its estimate
+  double quadrature_tolerance = 0;  ///< relative error the quadrature was asked for
+  int quadrature_intervals = 0, quadrature_evaluations = 0;
+  /// the energy may be printed: the quadrature's estimate within `tolerance` (or, without
+  /// the quadrature, the doubling converged), and the line not on the inner circle
+  bool energy_converged() const {
+    if (!checked || touches_inner) return false;
+    if (quadrature) return std::isfinite(energy) && energy_error <= tolerance * std::abs(energy);
+    return converged && !touches_boundary;
+  }
+  /// no energy (nor saving) may be printed
+  bool energy_withheld() const { return checked && !energy_converged(); }
+  /// no peak torque or peak power may be printed: the line touches a boundary or the
+  /// sampled peak did not settle (it grows without bound at a singular pose)
+  bool peak_withheld() const { return checked && (touches_boundary || !peak_converged); }
+  /// every figure of the motion may be printed
+  bool regular() const { return checked && !energy_withheld() && !peak_withheld(); }
   int samples = 0;  ///< samples of `metrics`: the coarser of the converged pair
   double rel_change = std::numeric_limits<double>::quiet_NaN();  ///< energy, at the last doubling
   double peak_rel_change = std::numeric_limits<double>::quiet_NaN();  ///< peak torque, same
-  double tolerance = 0;              ///< the relative tolerance asked for
-  LineMetrics metrics;               ///< at `samples`
-  std::vector<ConvergenceRow> rows;  ///< every doubling tried, coarsest first
+  double tolerance = 0;  ///< the relative tolerance asked for (energy error, doubling)
+  /// at `samples`; with the quadrature, metrics.energy is the quadrature's energy
+  LineMetrics metrics;
+  std::vector<ConvergenceRow> rows;  ///< every doubling tried, coarsest first (sampled)
 };
 
 /// Doubles the samples (n -> 2 n - 1, nested grids) from `samples` until the energy
@@ -47,8 +79,21 @@ EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, 
                                   bool touches, double tol = 1e-4, double peak_tol = 1e-3,
                                   int max_samples = 409601);
 
-/// The sentence printed instead of an energy, peak or saving of a singular motion.
+/// converge_energy, then the energy by energy_quadrature (relative tolerance
+/// `quad_tol`): what the checked candidates get. `touches_inner`: the line is within 1e-9 m
+/// of the inner circle (its energy is not computed).
+EnergyConvergence check_energy(const Arm2& arm, core::MotionProgram program, double duration,
+                               double length, const Line& line, int configuration, int samples,
+                               bool touches, bool touches_inner, double tol = 1e-4,
+                               double quad_tol = 1e-9, double peak_tol = 1e-3,
+                               int max_samples = 409601);
+
+/// The sentence printed instead of the energy, peak and saving of a motion whose energy is
+/// withheld (a line tangent to the inner circle, or a quadrature that did not converge).
 inline constexpr const char* kSingularNote =
     "singular: energy not converged, peak torque unbounded";
+/// The sentence printed instead of the peak torque (and peak power) of a motion whose energy
+/// is printed but whose sampled peak does not settle.
+inline constexpr const char* kPeakUnboundedNote = "peak torque unbounded (singular pose)";
 
 }  // namespace armstudy::studies::placement

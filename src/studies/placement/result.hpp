@@ -65,11 +65,12 @@ struct Candidate {
   double outer_clearance = 0;    ///< m, L1 + L2 - r_max (exact)
   double min_abs_sin = 0;        ///< exact smallest |sin q2| along the line
   LineMetrics metrics;           ///< energy, signed work, peaks (unset when unreachable)
-  /// the energy converged by doubling (optima, evaluations, the thesis's best); when
-  /// convergence.singular() no energy, peak or saving of this candidate is printed
+  /// the energy by adaptive quadrature and the peaks converged by doubling (optima,
+  /// evaluations, the thesis's best); convergence.energy_withheld(): no energy or saving of
+  /// this candidate is printed; convergence.peak_withheld(): no peak torque or power
   EnergyConvergence convergence;
-  /// the metrics a report prints: at the samples where the doubling converged, or the
-  /// sweep's when the candidate was not checked
+  /// the metrics a report prints: at the samples where the doubling converged, with the
+  /// quadrature's energy, or the sweep's when the candidate was not checked
   const LineMetrics& reported_metrics() const {
     return convergence.checked ? convergence.metrics : metrics;
   }
@@ -171,7 +172,7 @@ struct Evaluation {
   Candidate candidate;
   Placement placement;
   TimeSeries series;          ///< empty when unreachable
-  bool has_saving = false;    ///< both energies converged and neither motion singular
+  bool has_saving = false;    ///< both energies converged (quadrature within its tolerance)
   double saving = 0;          ///< J, energy minus the refined optimum's
   double saving_percent = 0;  ///< % of this placement's energy
 };

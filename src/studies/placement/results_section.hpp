@@ -6,9 +6,13 @@
 /// keys ending in _deg are degrees; positions are in the arm's frame A unless a key says
 /// otherwise (root_xy_m: the root in the line frame P, see geometry.hpp).
 ///
-/// A singular motion (touching a boundary, or its energy not converged by doubling the
-/// samples) has energy_J and peak_torque_Nm null, singular_trajectory true and the note
-/// kSingularNote; its saving is null.
+/// A checked motion's energy_J is the adaptive quadrature's (converge.hpp, quadrature.hpp)
+/// with its error estimate energy_error_J. A motion whose energy is withheld (a line on the
+/// inner circle, or a quadrature that did not converge) has energy_J and peak_torque_Nm
+/// null, singular_trajectory true and the note kSingularNote; its saving is null. A motion
+/// whose energy converged but whose sampled peak torque does not settle (a line on or near a
+/// boundary) has its energy, peak_torque_Nm null, singular_trajectory true and the note
+/// kPeakUnboundedNote.
 
 #include <array>
 #include <optional>
@@ -30,16 +34,25 @@ struct ResultsSection {
     int samples = 0;
     double energy_J = 0, peak_torque_Nm = 0;
   };
+  /// the adaptive quadrature of one motion's energy (quadrature.hpp)
+  struct Quadrature {
+    double energy_J = 0, error_J = 0, tolerance_rel = 0;
+    bool converged = false;
+    int intervals = 0, evaluations = 0;
+  };
   /// the doubling of one motion's samples (converge.hpp)
   struct EnergyConvergence {
     bool converged = false, touches_boundary = false, singular = false;
     int samples = 0;
     double rel_change = 0, peak_torque_rel_change = 0, tolerance_rel = 0;
     std::vector<ConvergenceRow> rows;
+    std::optional<bool> peak_converged;
+    std::optional<Quadrature> quadrature;
   };
   /// energy and peak torque of a motion, null (and a note) when it is singular
   struct Metrics {
     double energy_J = 0;
+    std::optional<double> energy_error_J;
     std::optional<Pair> peak_torque_Nm;
     std::optional<int> energy_samples;
     std::optional<bool> singular_trajectory;
@@ -192,25 +205,44 @@ void fields(V& v, ResultsSection::ConvergenceRow& x) {
   v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| over both joints at these samples");
 }
 template <class V>
+void fields(V& v, ResultsSection::Quadrature& x) {
+  v("energy_J", x.energy_J, "energy by adaptive Gauss-Kronrod (G7-K15) quadrature");
+  v("error_J", x.error_J, "its error estimate (sum over the intervals of |K15 - G7|)");
+  v("tolerance_rel", x.tolerance_rel, "the relative error asked for");
+  v("converged", x.converged, "error_J <= tolerance_rel * energy_J");
+  v("intervals", x.intervals, "final subintervals");
+  v("evaluations", x.evaluations, "integrand evaluations");
+}
+template <class V>
 void fields(V& v, ResultsSection::EnergyConvergence& x) {
-  v("converged", x.converged, "the energy changed by < tolerance_rel on one doubling");
+  v("converged", x.converged,
+    "the sampled energy changed by < tolerance_rel and the sampled peak torque by < 1e-3 on "
+    "one doubling");
   v("touches_boundary", x.touches_boundary, "the line is on a boundary of the annulus");
-  v("singular", x.singular, "touches_boundary or not converged: no energy is printed");
+  v("singular", x.singular, "the energy or the peak torque is withheld (see the motion's note)");
   v("samples", x.samples, "samples of the reported metrics");
   v("rel_change", x.rel_change, "relative energy change at the last doubling");
   v("peak_torque_rel_change", x.peak_torque_rel_change,
     "relative peak torque change at the last doubling");
   v("tolerance_rel", x.tolerance_rel, "the relative tolerance asked for");
   v("rows", x.rows, "every doubling tried, coarsest first");
+  v.optional("peak_converged", x.peak_converged,
+             "the sampled peak torque changed by < 1e-3 on the last doubling");
+  v.optional("quadrature", x.quadrature,
+             "the energy by adaptive quadrature (absent: the line is on the inner circle)");
 }
 template <class V>
 void fields(V& v, ResultsSection::Metrics& x) {
-  v("energy_J", x.energy_J, "energy of the motion (null: singular or unreachable)");
-  v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| [j1, j2] (null: singular or unreachable)");
+  v("energy_J", x.energy_J, "energy of the motion (null: withheld or unreachable)");
+  v.optional("energy_error_J", x.energy_error_J,
+             "error estimate of energy_J (its adaptive quadrature; when checked and printed)");
+  v("peak_torque_Nm", x.peak_torque_Nm,
+    "peak |torque| [j1, j2] (null: unbounded, singular pose, or unreachable)");
   v.optional("energy_samples", x.energy_samples,
              "samples where the energy converged (when checked)");
-  v.optional("singular_trajectory", x.singular_trajectory, "the motion is singular");
-  v.optional("note", x.note, "present for a singular motion");
+  v.optional("singular_trajectory", x.singular_trajectory,
+             "the motion's energy or peak torque is withheld");
+  v.optional("note", x.note, "what is withheld and why (present when something is)");
   v.optional("energy_convergence", x.energy_convergence,
              "the doubling of the samples (when checked)");
 }

@@ -27,6 +27,8 @@ constexpr double kTouch = 1e-9;  // m, a line this far outside the annulus touch
 constexpr double kMarginTol = 1e-12;
 // relative quadrature error below which a sampled energy counts as converged
 constexpr double kEnergyTol = 1e-4;
+// relative error the adaptive quadrature of a checked candidate's energy is asked for
+constexpr double kQuadTol = 1e-9;
 
 // which candidate set a geometric candidate belongs to
 enum class Set : std::uint8_t { kSweep, kThesis, kMap };
@@ -87,11 +89,13 @@ bool within_limits(const Spec& spec, const LineMetrics& m) {
 double arm_inner(const Arm2& arm) { return std::abs(arm.L1 - arm.L2); }
 double arm_outer(const Arm2& arm) { return arm.L1 + arm.L2; }
 
-// converged by doubling from the spec's samples
+// a checked candidate: its energy by adaptive quadrature (to kQuadTol, printed within
+// kEnergyTol), its sampled peaks converged by doubling from the spec's samples
 EnergyConvergence converged(const Spec& spec, const Arm2& arm, core::MotionProgram program,
                             const Candidate& c, int configuration) {
-  return converge_energy(arm, program, spec.duration, spec.length, thesis_line(c.x_s, c.phi),
-                         configuration, spec.samples, c.boundary_distance < kTouch, kEnergyTol);
+  return check_energy(arm, program, spec.duration, spec.length, thesis_line(c.x_s, c.phi),
+                      configuration, spec.samples, c.boundary_distance < kTouch,
+                      c.inner_clearance < kTouch, kEnergyTol, kQuadTol);
 }
 
 // a sampled energy whose embedded error estimate is within the tolerance
@@ -127,14 +131,14 @@ std::string decision_sentence(const Spec& spec, const Annulus& an, const Program
       const MarginPoint* lo = nullptr;
       const MarginPoint* hi = nullptr;
       for (const MarginPoint& m : c.margin_sensitivity) {
-        if (!m.found || m.optimum.convergence.singular()) continue;
+        if (!m.found || m.optimum.convergence.energy_withheld()) continue;
         if (!lo || m.margin < lo->margin) lo = &m;
         if (!hi || m.margin > hi->margin) hi = &m;
       }
       if (lo && hi && lo != hi)
-        os << ": its energy is " << fmt(lo->optimum.metrics.energy) << " J at a "
-           << fmt(lo->margin, 4) << " m margin and " << fmt(hi->optimum.metrics.energy) << " J at "
-           << fmt(hi->margin, 4) << " m";
+        os << ": its energy is " << fmt(lo->optimum.reported_metrics().energy) << " J at a "
+           << fmt(lo->margin, 4) << " m margin and " << fmt(hi->optimum.reported_metrics().energy)
+           << " J at " << fmt(hi->margin, 4) << " m";
       return os.str();
     }
     case Binding::kTorqueLimit:
@@ -403,7 +407,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       out.thesis_best = candidate(size_t(thesis_best));
       out.thesis_best.convergence =
           converged(spec, arm, out.program, out.thesis_best, out.configuration);
-      if (!out.thesis_best.convergence.singular())
+      if (!out.thesis_best.convergence.energy_withheld())
         out.thesis_best.metrics = out.thesis_best.convergence.metrics;
     }
 
@@ -592,7 +596,9 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
         if (!ok && c.status != CandidateStatus::kUnreachable && c.metrics.finite() &&
             c.boundary_distance >= spec.singularity_margin - kMarginTol) {
           // as in the sweep: clear of the margin, samples doubled until the energy converges
-          const EnergyConvergence ec = converged(spec, arm, out.program, c, out.configuration);
+          const EnergyConvergence ec =
+              converge_energy(arm, out.program, spec.duration, L, thesis_line(c.x_s, c.phi),
+                              out.configuration, spec.samples, false, kEnergyTol);
           if (ec.converged) {
             c.metrics = ec.metrics;
             ok = true;
@@ -619,26 +625,27 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       if (e.candidate.status != CandidateStatus::kUnreachable) {
         e.candidate.convergence = converged(spec, arm, e.program, e.candidate, e.configuration);
         // the printed metrics are those at the samples where the doubling converged
-        if (!e.candidate.convergence.singular())
+        if (!e.candidate.convergence.energy_withheld())
           e.candidate.metrics = e.candidate.convergence.metrics;
       }
       const Line line = thesis_line(ev.x_s, ev.phi);
       e.placement = placement_of(line, L);
       if (e.candidate.status != CandidateStatus::kUnreachable) {
-        const int n =
-            e.candidate.convergence.singular() ? spec.samples : e.candidate.convergence.samples;
+        const EnergyConvergence& ec = e.candidate.convergence;
+        const int n = ec.touches_boundary || !ec.converged ? spec.samples : ec.samples;
         e.series = n == spec.samples
                        ? sample_series(arm, tables[pcs[pc].program], line, e.configuration)
                        : sample_series(arm, make_program_table(e.program, spec.duration, L, n),
                                        line, e.configuration);
       }
       const ProgramConfig& opt = res.cases[pc];
-      // a saving only between converged, regular motions
+      // a saving only between energies that converged (a peak torque that does not settle
+      // does not withhold it)
       if (opt.found && e.candidate.status != CandidateStatus::kUnreachable &&
-          e.candidate.convergence.checked && !e.candidate.convergence.singular() &&
-          !opt.refined.convergence.singular()) {
+          e.candidate.convergence.checked && e.candidate.convergence.energy_converged() &&
+          opt.refined.convergence.energy_converged()) {
         e.has_saving = true;
-        e.saving = e.candidate.metrics.energy - opt.refined.metrics.energy;
+        e.saving = e.candidate.metrics.energy - opt.refined.reported_metrics().energy;
         e.saving_percent = 100.0 * e.saving / e.candidate.metrics.energy;
       }
       res.evaluations.push_back(std::move(e));
@@ -707,14 +714,14 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     for (const auto& c : res.cases) {
       if (!c.found) continue;
       const EnergyConvergence& ec = c.refined.convergence;
-      worst_conv = std::max(worst_conv, ec.singular() ? kInf : ec.rel_change);
+      worst_conv = std::max(worst_conv, ec.energy_withheld() ? kInf : ec.energy_error / ec.energy);
       ++conv_n;
     }
     if (conv_n > 0)
       res.checks.push_back(make_check(
           "optima_energy_converged",
-          "largest relative change of an optimum's energy when its samples are doubled (each "
-          "optimum checked on its own)",
+          "largest relative error estimate of an optimum's energy (adaptive Gauss-Kronrod "
+          "quadrature, asked for 1e-9; each optimum on its own)",
           worst_conv, kEnergyTol));
     double worse = 0;
     for (const auto& c : res.cases)
@@ -755,11 +762,17 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
              "with both ends on the outer one, a singular motion)";
     res.message = why;
   } else {
+    // the least printed energy; energies equal within their error estimates (mirror-image
+    // optima) are a tie and the first stays (the exports and the report's picture agree)
     const ProgramConfig* best = nullptr;
     for (const auto& c : res.cases)
-      if (c.found && (!best || c.refined.metrics.energy < best->refined.metrics.energy)) best = &c;
+      if (c.found && (!best || c.refined.reported_metrics().energy <
+                                   best->refined.reported_metrics().energy -
+                                       (c.refined.convergence.energy_error +
+                                        best->refined.convergence.energy_error)))
+        best = &c;
     std::ostringstream os;
-    os << "least energy " << fmt(best->refined.metrics.energy) << " J ("
+    os << "least energy " << fmt(best->refined.reported_metrics().energy) << " J ("
        << core::program_name(best->program) << ", configuration " << best->configuration
        << ") with the root at X = " << fmt(best->refined.root.x())
        << " m, Y = " << fmt(best->refined.root.y())
