@@ -118,8 +118,14 @@ Section::Decision decision_section(const pl::Spec& spec, const pl::Decision& d) 
   if (d.joint >= 0) o.joint = d.joint + 1;
   o.torque_slack_Nm = {d.torque_slack[0], d.torque_slack[1]};
   o.power_slack_W = {d.power_slack[0], d.power_slack[1]};
-  o.set_by_margin =
-      d.binding == pl::Binding::kInnerClearance || d.binding == pl::Binding::kOuterClearance;
+  for (const pl::ActiveConstraint& a : d.active) {
+    Section::Active s;
+    s.constraint = pl::binding_name(a.kind);
+    if (a.joint >= 0) s.joint = a.joint + 1;
+    s.slack = a.slack;
+    o.active.push_back(std::move(s));
+  }
+  o.set_by_margin = d.margin_active();
   return o;
 }
 

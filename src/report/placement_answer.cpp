@@ -34,14 +34,38 @@ std::string binding_words(const PS::Decision& d) {
   return b.empty() ? "not reported" : b;
 }
 
+// the active constraints of `d` as (constraint, joint) pairs
+std::vector<std::pair<std::string, std::optional<int>>> active_of(const PS::Decision& d) {
+  std::vector<std::pair<std::string, std::optional<int>>> out;
+  for (const auto& a : d.active) out.emplace_back(a.constraint, a.joint);
+  return out;
+}
+
 }  // namespace
+
+std::string placement_also_active(
+    const std::vector<std::pair<std::string, std::optional<int>>>& active) {
+  std::string out;
+  for (size_t k = 1; k < active.size(); ++k) {
+    const auto& [c, joint] = active[k];
+    const std::string j = joint ? as_text(*joint) : "";
+    out += (out.empty() ? "" : ", ") +
+           (c == "inner_clearance"   ? std::string("the clearance margin to the inner circle")
+            : c == "outer_clearance" ? std::string("the clearance margin to the outer circle")
+            : c == "torque_limit"    ? "the torque limit of joint " + j
+            : c == "power_limit"     ? "the power limit of joint " + j
+                                     : c);
+  }
+  return out.empty() ? "" : "; also active: " + out;
+}
 
 void placement_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& a) {
   const auto pl = read_section<PS>(results, "placement");
   // optima decided alike share one line: "cycloidal 1, poly345 1: ..."
   std::vector<std::pair<std::string, std::string>> decided;  // (words, who), in order
   for (const auto& o : pl.optima) {
-    const std::string words = binding_words(o.decided_by);
+    const std::string words =
+        binding_words(o.decided_by) + placement_also_active(active_of(o.decided_by));
     const std::string who = o.program + " " + as_text(o.configuration);
     auto it = std::find_if(decided.begin(), decided.end(),
                            [&](const auto& d) { return d.first == words; });

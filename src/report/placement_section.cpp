@@ -56,7 +56,7 @@ std::string peak_text(const PS::Metrics& o, int digits) {
   return no_peak(o) ? std::string(kPeakText) : pair_str(o.peak_torque_Nm, digits);
 }
 // "inner circle |L1 - L2|" etc. for a binding name
-std::string binding_text(const PS::Optimum& o, const PS& pl) {
+std::string binding_first(const PS::Optimum& o, const PS& pl) {
   const PS::Decision& d = o.decided_by;
   const std::string& b = d.binding;
   const std::string margin = format_sig(d.margin_m, 3) + " m";
@@ -75,6 +75,13 @@ std::string binding_text(const PS::Optimum& o, const PS& pl) {
     return "interior (clearances exceed the margin by " + format_sig(d.inner_slack_m, 3) +
            " m inner, " + format_sig(d.outer_slack_m, 3) + " m outer)";
   return b;
+}
+// ... and every other active constraint
+std::string binding_text(const PS::Optimum& o, const PS& pl) {
+  const PS::Decision& d = o.decided_by;
+  std::vector<std::pair<std::string, std::optional<int>>> active;
+  for (const auto& a : d.active) active.emplace_back(a.constraint, a.joint);
+  return binding_first(o, pl) + placement_also_active(active);
 }
 // a candidate's status in words ("singular" in results.json is "inside the margin": the
 // word singular is kept for motions that are singular themselves)
@@ -280,10 +287,12 @@ std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
       const std::string b = m.optimum ? m.optimum->binding : std::string();
       if (!prev.empty() && !b.empty() && b != prev)
         changes += ", " +
-                   std::string(b == "outer_clearance"   ? "the outer"
-                               : b == "inner_clearance" ? "the inner"
+                   std::string(b == "outer_clearance"   ? "the outer circle"
+                               : b == "inner_clearance" ? "the inner circle"
+                               : b == "torque_limit"    ? "a torque limit"
+                               : b == "power_limit"     ? "a power limit"
                                                         : b) +
-                   " circle binds from " + format_sig(m.margin_m, 3) + " m";
+                   " binds first from " + format_sig(m.margin_m, 3) + " m";
       if (!b.empty()) prev = b;
     }
     range += changes;

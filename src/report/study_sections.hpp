@@ -5,6 +5,7 @@
 /// (method, results tables, plots, notes on the source document) to the page. A value that
 /// is null in the file (not finite) is shown as "n/a", never invented.
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,5 +50,10 @@ Table json_table(const nlohmann::json& obj, std::string caption);
 /// Axis label of a results.json key by its unit suffix: "energy_J" -> "energy (J)",
 /// "q_rad" -> "q (rad)", "phi_deg" -> "phi (deg)".
 std::string label_from_key(const std::string& key);
+/// A placement optimum's active constraints after the first, in words ("; also active: the
+/// power limit of joint 2"), from its results.json `decided_by.active` (constraint, joint);
+/// "" when at most one is active.
+std::string placement_also_active(
+    const std::vector<std::pair<std::string, std::optional<int>>>& active);
 
 }  // namespace armstudy::report

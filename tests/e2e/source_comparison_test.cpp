@@ -134,7 +134,8 @@ TEST(SourceComparison, EachPrintedFigureIsInResultsJsonAndTheReport) {
   // page 1 names the symmetry where the configurations tie
   const std::string p3 = testing::slurp(out / "placement-example-3" / "index.html");
   EXPECT_NE(p3.find("configurations 1 and 2 tie"), std::string::npos);
-  EXPECT_NE(p3.find("mirrored in the line&apos;s perpendicular bisector and run backwards"), std::string::npos);
+  EXPECT_NE(p3.find("mirrored in the line&apos;s perpendicular bisector and run backwards"),
+            std::string::npos);
 }
 
 TEST(SourceComparison, ADifferenceWithoutItsReasonFailsTheCase) {

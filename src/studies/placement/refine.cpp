@@ -316,27 +316,27 @@ Decision decide(const Spec& spec, const Candidate& c, double active_m, double ac
   Decision d;
   d.inner_slack = c.inner_clearance - spec.singularity_margin;
   d.outer_slack = c.outer_clearance - spec.singularity_margin;
-  double worst = kRefineInf;  // the smallest normalised slack among the active constraints
-  const auto consider = [&](double normalised, Binding b, int joint) {
-    if (normalised <= 1.0 && normalised < worst) {
-      worst = normalised;
-      d.binding = b;
-      d.joint = joint;
-    }
+  // every constraint within tolerance, in a fixed order: the first names the binding one
+  const auto consider = [&](double slack, double tolerance, Binding b, int joint) {
+    if (slack / tolerance <= 1.0) d.active.push_back({b, joint, slack});
   };
-  consider(d.inner_slack / active_m, Binding::kInnerClearance, -1);
-  consider(d.outer_slack / active_m, Binding::kOuterClearance, -1);
+  consider(d.inner_slack, active_m, Binding::kInnerClearance, -1);
+  consider(d.outer_slack, active_m, Binding::kOuterClearance, -1);
   for (int j = 0; j < 2; ++j) {
     if (spec.torque_limit) {
       const double lim = (*spec.torque_limit)[j];
       d.torque_slack[j] = lim - c.metrics.peak_torque[j];
-      consider(d.torque_slack[j] / (active_rel * lim), Binding::kTorqueLimit, j);
+      consider(d.torque_slack[j], active_rel * lim, Binding::kTorqueLimit, j);
     }
     if (spec.power_limit) {
       const double lim = (*spec.power_limit)[j];
       d.power_slack[j] = lim - c.metrics.peak_power[j];
-      consider(d.power_slack[j] / (active_rel * lim), Binding::kPowerLimit, j);
+      consider(d.power_slack[j], active_rel * lim, Binding::kPowerLimit, j);
     }
+  }
+  if (!d.active.empty()) {
+    d.binding = d.active.front().kind;
+    d.joint = d.active.front().joint;
   }
   return d;
 }

@@ -42,10 +42,28 @@ enum class Binding : std::uint8_t {
   kPowerLimit,      ///< a joint's peak |power| equals its limit
 };
 
-/// The constraints' slacks at an optimum and the one that binds.
+/// A constraint within the activity tolerance of its bound at an optimum.
+struct ActiveConstraint {
+  Binding kind = Binding::kInterior;
+  int joint = -1;    ///< 0 or 1 for a limit, else -1
+  double slack = 0;  ///< m, N m or W: bound minus value
+};
+
+/// The constraints' slacks at an optimum, every active one, and the one named as binding.
 struct Decision {
+  /// the first of `active` (interior when none): a configuration and its mirror image,
+  /// whose slacks differ only by rounding, name the same one
   Binding binding = Binding::kInterior;
-  int joint = -1;          ///< 0 (root) or 1 (elbow) for a limit, else -1
+  int joint = -1;  ///< 0 (root) or 1 (elbow) for a limit, else -1
+  /// every constraint within tolerance, in a fixed order (inner clearance, outer clearance,
+  /// then joint 1's torque and power, joint 2's torque and power), never by slack
+  std::vector<ActiveConstraint> active;
+  /// a clearance margin is among the active constraints: the margin sets the optimum
+  bool margin_active() const {
+    for (const ActiveConstraint& a : active)
+      if (a.kind == Binding::kInnerClearance || a.kind == Binding::kOuterClearance) return true;
+    return false;
+  }
   double inner_slack = 0;  ///< m, clearance to the inner circle minus the margin
   double outer_slack = 0;  ///< m, clearance to the outer circle minus the margin
   double torque_slack[2] = {std::numeric_limits<double>::quiet_NaN(),

@@ -78,8 +78,14 @@ struct ResultsSection {
     std::vector<double> t_s, q1_rad, q2_rad, qd1_rad_s, qd2_rad_s, qdd1_rad_s2, qdd2_rad_s2,
         tau1_Nm, tau2_Nm, power1_W, power2_W, energy_J;
   };
+  struct Active {
+    std::string constraint;  ///< inner_clearance, outer_clearance, torque_limit, power_limit
+    std::optional<int> joint;
+    double slack = 0;
+  };
   struct Decision {
     std::string binding;
+    std::vector<Active> active;
     double inner_slack_m = 0, outer_slack_m = 0, margin_m = 0;
     std::optional<int> joint;
     Pair torque_slack_Nm{}, power_slack_W{};
@@ -296,16 +302,27 @@ void fields(V& v, ResultsSection::Series& x) {
   v("energy_J", x.energy_J, "cumulative |power1| + |power2|");
 }
 template <class V>
+void fields(V& v, ResultsSection::Active& x) {
+  v("constraint", x.constraint, "inner_clearance, outer_clearance, torque_limit or power_limit");
+  v("joint", x.joint, "the joint of a limit (1-based; null for a clearance)");
+  v("slack", x.slack, "bound minus value (m for a clearance, N m or W for a limit)");
+}
+template <class V>
 void fields(V& v, ResultsSection::Decision& x) {
   v("binding", x.binding,
-    "interior, inner_clearance, outer_clearance, torque_limit or power_limit");
+    "the first active constraint in the fixed order of `active` (interior: none)");
+  v("active", x.active,
+    "every constraint within tolerance at the optimum, in a fixed order (inner clearance, "
+    "outer clearance, joint 1's torque and power, joint 2's), the same for a configuration and "
+    "its mirror image");
   v("inner_slack_m", x.inner_slack_m, "clearance to the inner circle minus the margin");
   v("outer_slack_m", x.outer_slack_m, "clearance to the outer circle minus the margin");
   v("margin_m", x.margin_m, "the singularity margin");
   v("joint", x.joint, "the joint of a binding limit (1-based; null otherwise)");
   v("torque_slack_Nm", x.torque_slack_Nm, "limit minus peak |torque| [j1, j2] (null: no limit)");
   v("power_slack_W", x.power_slack_W, "limit minus peak |power| [j1, j2] (null: no limit)");
-  v("set_by_margin", x.set_by_margin, "a clearance binds: the optimum is set by the margin");
+  v("set_by_margin", x.set_by_margin,
+    "a clearance margin is active: the optimum is set by the margin");
 }
 template <class V>
 void fields(V& v, ResultsSection::Refinement& x) {

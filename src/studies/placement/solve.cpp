@@ -110,6 +110,31 @@ Placement placement_of(const Line& line, double L) {
   return p;
 }
 
+// the active constraints after the first, in words: "; the power limit of joint 2 (2 W) is
+// active too"
+std::string also_active(const Spec& spec, const Decision& d) {
+  std::string out;
+  for (size_t k = 1; k < d.active.size(); ++k) {
+    const ActiveConstraint& a = d.active[k];
+    std::string what;
+    switch (a.kind) {
+      case Binding::kInnerClearance: what = "the clearance margin to the inner circle"; break;
+      case Binding::kOuterClearance: what = "the clearance margin to the outer circle"; break;
+      case Binding::kTorqueLimit:
+        what = "the torque limit of joint " + std::to_string(a.joint + 1) + " (" +
+               fmt((*spec.torque_limit)[size_t(a.joint)], 4) + " N m)";
+        break;
+      case Binding::kPowerLimit:
+        what = "the power limit of joint " + std::to_string(a.joint + 1) + " (" +
+               fmt((*spec.power_limit)[size_t(a.joint)], 4) + " W)";
+        break;
+      case Binding::kInterior: break;
+    }
+    out += (out.empty() ? "" : ", ") + what;
+  }
+  return out.empty() ? "" : "; " + out + (d.active.size() > 2 ? " are" : " is") + " active too";
+}
+
 // what decides an optimum, in words (the summary sentence)
 std::string decision_sentence(const Spec& spec, const Annulus& an, const ProgramConfig& c) {
   const Decision& d = c.decision;
@@ -139,15 +164,16 @@ std::string decision_sentence(const Spec& spec, const Annulus& an, const Program
         os << ": its energy is " << fmt(lo->optimum.reported_metrics().energy) << " J at a "
            << fmt(lo->margin, 4) << " m margin and " << fmt(hi->optimum.reported_metrics().energy)
            << " J at " << fmt(hi->margin, 4) << " m";
+      os << also_active(spec, d);
       return os.str();
     }
     case Binding::kTorqueLimit:
       os << "the optimum is set by the torque limit of joint " << d.joint + 1 << " ("
-         << fmt((*spec.torque_limit)[size_t(d.joint)], 4) << " N m)";
+         << fmt((*spec.torque_limit)[size_t(d.joint)], 4) << " N m)" << also_active(spec, d);
       return os.str();
     case Binding::kPowerLimit:
       os << "the optimum is set by the power limit of joint " << d.joint + 1 << " ("
-         << fmt((*spec.power_limit)[size_t(d.joint)], 4) << " W)";
+         << fmt((*spec.power_limit)[size_t(d.joint)], 4) << " W)" << also_active(spec, d);
       return os.str();
   }
   return "";
@@ -482,9 +508,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     }
 
     // the optimum against the clearance margin, when a clearance decides it
-    if (out.found && spec.refine &&
-        (out.decision.binding == Binding::kInnerClearance ||
-         out.decision.binding == Binding::kOuterClearance)) {
+    if (out.found && spec.refine && out.decision.margin_active()) {
       std::vector<double> margins = spec.sensitivity_margins;
       margins.push_back(spec.singularity_margin);
       std::sort(margins.begin(), margins.end());
@@ -780,9 +804,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
        << " m, phi = " << fmt(best->refined.phi / kDeg, 3) << " deg)";
     os << "; " << decision_sentence(spec, an, *best);
     int by_margin = 0;
-    for (const auto& c : res.cases)
-      by_margin += c.found && (c.decision.binding == Binding::kInnerClearance ||
-                               c.decision.binding == Binding::kOuterClearance);
+    for (const auto& c : res.cases) by_margin += c.found && c.decision.margin_active();
     if (found > 1 && by_margin > 0)
       os << " (" << by_margin << " of " << found << " optima are set by the clearance margin)";
     if (found < int(res.cases.size()))
