@@ -152,8 +152,14 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
     o.asset_extra = grid_asset("table", kTableGridM, v, decor.offscreen.width,
                                decor.offscreen.height, rgb, mark);
   }
+  std::ostringstream what;  // the case's own arm: its links and its gravity
+  what.imbue(std::locale::classic());
+  what << "    A " << chain.num_links() << "-link planar arm in the x-y plane, "
+       << (chain.gravity == 0 ? "horizontal (gravity 0)" : "gravity ");
+  if (chain.gravity != 0) what << chain.gravity << " m/s^2 along -y";
+  what << ": the\n";
   o.comment =
-      "    The 2-link arm of Kopmaz (2016) in a horizontal plane (gravity 0): the\n"
+      what.str() +
       "    table is the x-y plane seen from above (camera looking down -z), the root is the\n"
       "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.2 m grid.\n"
       "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
