@@ -19,8 +19,8 @@
 
 namespace armstudy::app {
 namespace {
+using core::kDeg;
 using nlohmann::json;
-constexpr double kDeg = core::kPi / 180.0;
 
 std::array<double, 2> xy(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
 std::vector<double> vec(const core::JointVector& v) { return {v.data(), v.data() + v.size()}; }

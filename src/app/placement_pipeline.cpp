@@ -27,8 +27,8 @@
 namespace armstudy::app {
 namespace {
 namespace pl = studies::placement;
+using core::kDeg;
 using nlohmann::json;
-constexpr double kDeg = core::kPi / 180.0;
 
 using Section = pl::ResultsSection;
 

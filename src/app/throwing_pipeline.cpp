@@ -22,7 +22,7 @@ namespace armstudy::app {
 namespace {
 using nlohmann::json;
 namespace st = studies;
-constexpr double kDeg = core::kPi / 180.0;
+using core::kDeg;
 
 using Section = st::ThrowingResultsSection;
 

@@ -8,7 +8,7 @@
 namespace armstudy::cases {
 
 studies::PendulumSpec load_pendulum_spec(Map& root) {
-  constexpr double kDeg = core::kPi / 180.0;
+  using core::kDeg;
   studies::PendulumSpec s = studies::default_pendulum_spec();
   auto sec = root.map("pendulum");
   if (!sec) return s;

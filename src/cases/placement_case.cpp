@@ -8,7 +8,7 @@
 
 namespace armstudy::cases {
 namespace {
-constexpr double kDeg = core::kPi / 180.0;
+using core::kDeg;
 }  // namespace
 
 core::PlanarChain placement_default_arm() {

@@ -8,8 +8,6 @@
 namespace armstudy::cases {
 namespace {
 
-constexpr double kThrowingDeg = core::kPi / 180.0;
-
 // a number key that keeps `value` when absent or wrong (the error is recorded)
 void num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
   if (const auto v = m.number(key, rule)) value = *v;
@@ -41,13 +39,13 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
   }
   if (auto t = sec->map("task")) {
     if (const auto v = t->numbers("start_deg", NumberRule::range(-360, 360, "deg"), 4)) {
-      s.start = {(*v)[0] * kThrowingDeg, (*v)[1] * kThrowingDeg};
-      s.theta3_start = (*v)[2] * kThrowingDeg;
-      s.theta4_start = (*v)[3] * kThrowingDeg;
+      s.start = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
+      s.theta3_start = (*v)[2] * core::kDeg;
+      s.theta4_start = (*v)[3] * core::kDeg;
     }
     if (const auto v = t->numbers("release_deg", NumberRule::range(-360, 360, "deg"), 3)) {
-      s.release = {(*v)[0] * kThrowingDeg, (*v)[1] * kThrowingDeg};
-      s.theta3_release = (*v)[2] * kThrowingDeg;
+      s.release = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
+      s.theta3_release = (*v)[2] * core::kDeg;
     }
     if (const auto v = t->numbers("release_rate_rad_s", NumberRule::range(-200, 200, "rad/s"), 2))
       s.release_rate = {(*v)[0], (*v)[1]};
@@ -59,7 +57,7 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
     num(*c, "contact_margin_N", s.contact_margin, NumberRule::non_negative("N"));
     num(*c, "friction_coefficient", s.friction_coefficient, NumberRule::range(1e-3, 10.0, ""));
     if (const auto v = c->number("release_tolerance_deg", NumberRule::positive("deg")))
-      s.release_tolerance = *v * kThrowingDeg;
+      s.release_tolerance = *v * core::kDeg;
     num(*c, "backoff", s.backoff, NumberRule::range(0.0, 0.2, ""));
     c->finish();
   }

@@ -5,8 +5,6 @@
 namespace armstudy::cases {
 namespace {
 
-constexpr double kTrayDeg = core::kPi / 180.0;
-
 // a number key that keeps `value` when absent or wrong (the error is recorded)
 void tray_num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
   if (const auto v = m.number(key, rule)) value = *v;
@@ -37,7 +35,7 @@ void read_tray_arm(Map& section, studies::TrayArmParams& a, double* width) {
     tray_num(*t, "inertia_kg_m2", a.I3, NumberRule::non_negative("kg m^2"));
     if (width) {
       if (const auto w = t->number("width_deg", NumberRule::range(1.0, 360.0, "deg")))
-        *width = *w * kTrayDeg;
+        *width = *w * core::kDeg;
     }
     t->finish();
   }

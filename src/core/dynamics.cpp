@@ -140,10 +140,4 @@ double potential_energy(const PlanarChain& chain, const JointVector& q) {
   return u;
 }
 
-Eigen::Vector2d link_com(const PlanarChain& chain, const JointVector& q, int link) {
-  const ChainPose pose = forward_kinematics(chain, q);
-  const Link& l = chain.links[link];
-  return point_position(pose, link, Eigen::Vector2d(l.com, l.com_lateral));
-}
-
 }  // namespace armstudy::core

@@ -48,7 +48,4 @@ double kinetic_energy(const PlanarChain& chain, const JointVector& q, const Join
 /// Potential energy sum m g y of every mass (zero at y = 0), J.
 double potential_energy(const PlanarChain& chain, const JointVector& q);
 
-/// World position of the centre of mass of link i, m.
-Eigen::Vector2d link_com(const PlanarChain& chain, const JointVector& q, int link);
-
 }  // namespace armstudy::core

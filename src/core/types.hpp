@@ -14,5 +14,7 @@ using JointMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMa
 using PointJacobian = Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxLinks>;
 
 inline constexpr double kPi = 3.14159265358979323846;
+/// One degree in radians.
+inline constexpr double kDeg = kPi / 180.0;
 
 }  // namespace armstudy::core

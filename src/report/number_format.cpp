@@ -15,14 +15,4 @@ std::string format_sig(double value, int digits) {
   return os.str();
 }
 
-std::string format_fixed(double value, int decimals) {
-  if (std::isnan(value)) return "n/a";
-  std::ostringstream os;
-  os.imbue(std::locale::classic());
-  os.setf(std::ios::fixed);
-  os.precision(decimals);
-  os << value;
-  return os.str();
-}
-
 }  // namespace armstudy::report

@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/types.hpp"
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
 #include "report/results_fields.hpp"
@@ -758,8 +759,8 @@ Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps) {
     locus.width = 1.2;
     for (size_t k = 0; k < xs.size(); ++k) {
       // root location in the line frame, eq. 4.14
-      locus.x.push_back(-xs[k] * std::cos(ph[k] * M_PI / 180));
-      locus.y.push_back(xs[k] * std::sin(ph[k] * M_PI / 180));
+      locus.x.push_back(-xs[k] * std::cos(ph[k] * armstudy::core::kDeg));
+      locus.y.push_back(xs[k] * std::sin(ph[k] * armstudy::core::kDeg));
       grow(locus.x.back(), locus.y.back());
     }
     loci.overlays.push_back(std::move(locus));

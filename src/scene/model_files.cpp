@@ -14,7 +14,7 @@ ArmScene default_horizontal_scene() {
   c = core::make_chain(c);
   // an example task: L = 0.5 Lmax, Lmax = 4 sqrt(L1 L2) (4.6), from (0.3, 0) at 100 deg
   const double L = 0.5 * 4 * std::sqrt(0.4 * 0.2);
-  const double phi = 100.0 * core::kPi / 180;
+  const double phi = 100.0 * core::kDeg;
   TableDecor d;
   d.task_start = Eigen::Vector2d(0.3, 0.0);
   d.task_end = *d.task_start + L * Eigen::Vector2d(std::cos(phi), std::sin(phi));

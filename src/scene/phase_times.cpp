@@ -60,10 +60,6 @@ PhaseScope::~PhaseScope() {
   t_phases.add(t_phases.path(name_), s);
 }
 
-void add_phase_time(const char* name, double seconds) {
-  if (phase_times_enabled()) t_phases.add(t_phases.path(name), seconds);
-}
-
 std::string take_phase_times() {
   if (!phase_times_enabled()) return "";
   std::string out;

@@ -27,9 +27,6 @@ class PhaseScope {
   long long start_ns_ = -1;
 };
 
-/// Adds `seconds` to phase `name` of this thread's current case.
-void add_phase_time(const char* name, double seconds);
-
 /// This thread's phases since the last call, as "solve 1.23 s, render 0.40 s, ..." in the
 /// order first seen (nested phases after their parent), and clears them; "" when off.
 std::string take_phase_times();

@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDeg = core::kPi / 180.0;
+using core::kDeg;
 constexpr double kTouch = 1e-9;  // m, a line this far outside the annulus touches it
 // m, a line this much closer than the margin is on it (a refinement along the constraint
 // ends within roundoff of it, on either side)

@@ -9,13 +9,25 @@
 /// included). cos and sin call std::cos and std::sin on each lane.
 ///
 /// The scalar overloads (double, bool) let one template serve both widths.
+///
+/// Without SSE2 (another architecture, or ARMSTUDY_PORTABLE_LANES defined, as the test of
+/// the fallback does) D2 and M2 are two plain doubles and two bools with the same operations
+/// lane by lane: the same results bit for bit, without the vector registers. Each variant
+/// lives in an inline namespace of its own, so both can be in one program.
 
+#if defined(__SSE2__) && !defined(ARMSTUDY_PORTABLE_LANES)
+#define ARMSTUDY_LANES_SSE2 1
 #include <emmintrin.h>
+#else
+#define ARMSTUDY_LANES_SSE2 0
+#endif
 
 #include <algorithm>
 #include <cmath>
 
 namespace armstudy::studies {
+#if ARMSTUDY_LANES_SSE2
+inline namespace lanes_sse2 {
 
 /// Lane mask of D2 comparisons (all bits set in a true lane).
 struct M2 {
@@ -56,16 +68,93 @@ inline M2 operator!(M2 a) { return {_mm_xor_pd(a.m, _mm_castsi128_pd(_mm_set1_ep
 
 /// Bit i set: lane i's mask is true.
 inline int lanes_set(M2 a) { return _mm_movemask_pd(a.m); }
-inline int lanes_set(bool a) { return a ? 1 : 0; }
 
 inline D2 select(M2 m, D2 a, D2 b) {
   return D2(_mm_or_pd(_mm_and_pd(m.m, a.v), _mm_andnot_pd(m.m, b.v)));
 }
-inline double select(bool m, double a, double b) { return m ? a : b; }
 
 inline D2 lane_abs(D2 a) { return D2(_mm_andnot_pd(_mm_set1_pd(-0.0), a.v)); }
-inline double lane_abs(double a) { return std::abs(a); }
 inline D2 lane_sqrt(D2 a) { return D2(_mm_sqrt_pd(a.v)); }
+}  // namespace lanes_sse2
+#else
+inline namespace lanes_portable {
+
+/// Lane mask of D2 comparisons.
+struct M2 {
+  bool m[2];
+};
+
+/// Two double lanes.
+struct D2 {
+  double v[2];
+  D2() = default;
+  D2(double x) : v{x, x} {}  // NOLINT: implicit, a constant in both lanes
+  static D2 of(double lane0, double lane1) {
+    D2 d;
+    d.v[0] = lane0;
+    d.v[1] = lane1;
+    return d;
+  }
+  double lane(int i) const { return v[i]; }
+};
+
+template <class F>
+inline D2 each(D2 a, D2 b, F f) {
+  return D2::of(f(a.v[0], b.v[0]), f(a.v[1], b.v[1]));
+}
+template <class F>
+inline M2 each_mask(D2 a, D2 b, F f) {
+  return {{f(a.v[0], b.v[0]), f(a.v[1], b.v[1])}};
+}
+inline D2 operator+(D2 a, D2 b) {
+  return each(a, b, [](double x, double y) { return x + y; });
+}
+inline D2 operator-(D2 a, D2 b) {
+  return each(a, b, [](double x, double y) { return x - y; });
+}
+inline D2 operator*(D2 a, D2 b) {
+  return each(a, b, [](double x, double y) { return x * y; });
+}
+inline D2 operator/(D2 a, D2 b) {
+  return each(a, b, [](double x, double y) { return x / y; });
+}
+inline D2 operator-(D2 a) { return D2::of(-a.v[0], -a.v[1]); }
+inline D2& operator+=(D2& a, D2 b) { return a = a + b; }
+inline D2& operator-=(D2& a, D2 b) { return a = a - b; }
+inline D2& operator/=(D2& a, D2 b) { return a = a / b; }
+
+inline M2 operator<(D2 a, D2 b) {
+  return each_mask(a, b, [](double x, double y) { return x < y; });
+}
+inline M2 operator>(D2 a, D2 b) {
+  return each_mask(a, b, [](double x, double y) { return x > y; });
+}
+inline M2 operator<=(D2 a, D2 b) {
+  return each_mask(a, b, [](double x, double y) { return x <= y; });
+}
+inline M2 operator==(D2 a, D2 b) {
+  return each_mask(a, b, [](double x, double y) { return x == y; });
+}
+inline M2 operator!=(D2 a, D2 b) {
+  return each_mask(a, b, [](double x, double y) { return x != y; });
+}
+inline M2 operator|(M2 a, M2 b) { return {{a.m[0] || b.m[0], a.m[1] || b.m[1]}}; }
+inline M2 operator&(M2 a, M2 b) { return {{a.m[0] && b.m[0], a.m[1] && b.m[1]}}; }
+inline M2 operator!(M2 a) { return {{!a.m[0], !a.m[1]}}; }
+
+/// Bit i set: lane i's mask is true.
+inline int lanes_set(M2 a) { return (a.m[0] ? 1 : 0) | (a.m[1] ? 2 : 0); }
+
+inline D2 select(M2 m, D2 a, D2 b) {
+  return D2::of(m.m[0] ? a.v[0] : b.v[0], m.m[1] ? a.v[1] : b.v[1]);
+}
+inline D2 lane_abs(D2 a) { return D2::of(std::abs(a.v[0]), std::abs(a.v[1])); }
+inline D2 lane_sqrt(D2 a) { return D2::of(std::sqrt(a.v[0]), std::sqrt(a.v[1])); }
+}  // namespace lanes_portable
+#endif
+inline int lanes_set(bool a) { return a ? 1 : 0; }
+inline double select(bool m, double a, double b) { return m ? a : b; }
+inline double lane_abs(double a) { return std::abs(a); }
 inline double lane_sqrt(double a) { return std::sqrt(a); }
 inline D2 lane_max(D2 a, D2 b) { return select(a < b, b, a); }
 inline double lane_max(double a, double b) { return std::max(a, b); }

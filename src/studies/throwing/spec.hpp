@@ -52,10 +52,10 @@ struct ThrowingSpec {
   IdpSettings idp;
   bool run_nlopt = true;
   NloptSettings nlopt;
-  double release_tolerance = core::kPi / 180;  ///< rad, allowed |theta3(tf) - release| (check)
-  double landing_height = 0.0;                 ///< m, height (y) at which the flight ends
-  double replay_tolerance = 2e-3;              ///< rad, open-loop replay vs plan (check)
-  int threads = 2;                             ///< evaluation threads
+  double release_tolerance = core::kDeg;  ///< rad, allowed |theta3(tf) - release| (check)
+  double landing_height = 0.0;            ///< m, height (y) at which the flight ends
+  double replay_tolerance = 2e-3;         ///< rad, open-loop replay vs plan (check)
+  int threads = 2;                        ///< evaluation threads
 };
 
 }  // namespace armstudy::studies
