@@ -29,7 +29,13 @@ jobs=$(nproc 2>/dev/null || echo 2)
 flags="-O1 -g1 -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DARMSTUDY_BUILD_BENCH=OFF "${launcher[@]}" \
+# Ninja (scripts/packages.txt) for a new build-asan/; a folder made earlier keeps its generator
+generator=()
+if command -v ninja >/dev/null && { [ ! -f build-asan/CMakeCache.txt ] ||
+  grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' build-asan/CMakeCache.txt; }; then
+  generator=(-G Ninja)
+fi
+cmake "${generator[@]}" -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DARMSTUDY_BUILD_BENCH=OFF "${launcher[@]}" \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build build-asan -j"$jobs"
