@@ -19,10 +19,10 @@
 # (ARMSTUDY_TEST_COMPILE_OPTIONS, instrumented alike), with Ninja; the benchmarks are not
 # built. From a fresh tree without ccache (CCACHE_DISABLE=1) the build compiles for 789 CPU-s
 # (1549 s wall at load 6-11 on the shared 2-core machine, niced); before (tests -O1, 20 test
-# files outside the unity batches, test objects waiting for armstudy, Makefiles) 1064 CPU-s
-# (2158 s at load 7-20) and 533 s on two quiet cores, so by CPU an estimated 400 s now (not
-# measured on a quiet machine). The tests' -O0 does not slow the run: 464 CPU-s (1110 s at
-# load 6-11) against 466 (1127 s at load 6-8).
+# files outside the unity batches, test objects waiting for armstudy; measured with Ninja)
+# 1064 CPU-s (2158 s at load 7-20), and 533 s on two quiet cores (Makefiles), so by CPU an
+# estimated 400 s now (not measured on a quiet machine). The tests' -O0 does not slow the
+# run: 464 CPU-s (1110 s at load 6-11) against 466 (1127 s at load 6-8).
 #
 # Leaks in libraries armstudy uses (fontconfig, libltdl, OSMesa) are suppressed in
 # tests/sanitizers/lsan.supp; everything in armstudy's own code fails the test.
