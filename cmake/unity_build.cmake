@@ -10,9 +10,9 @@
 # against 586 s at load 0.6-2.9, so about 290 s on two quiet cores.
 #
 # Files with their own COMPILE_OPTIONS stay on their own (CMake leaves them out of the
-# batches), and so do the files listed with SKIP_UNITY_BUILD_INCLUSION (CMakeLists.txt,
-# tests/CMakeLists.txt): a name in an anonymous namespace must be unique among the files of a
-# batch. The lists were checked with the whole of each target in one batch
+# batches), and so do the files listed with SKIP_UNITY_BUILD_INCLUSION (CMakeLists.txt): a
+# name in an anonymous namespace must be unique among the files of a batch (the tests share
+# their helpers through tests/testing/ and all compile in batches: tests/CMakeLists.txt). The lists were checked with the whole of each target in one batch
 # (-DARMSTUDY_UNITY_BATCH=0), so any batch size builds; a new file that clashes ("redefinition
 # of ... {anonymous}::...") gets a unique name or goes on a list. ARMSTUDY_UNITY=OFF builds
 # every file on its own (and shows a missing #include that a file of the batch provided).

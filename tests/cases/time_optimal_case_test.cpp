@@ -12,16 +12,16 @@ namespace armstudy::cases {
 namespace {
 namespace to = studies::time_optimal;
 
-struct Loaded {
+struct TimeOptimalLoad {
   to::Spec spec;
   std::string errors;
 };
 
-Loaded load(const std::string& yaml) {
+TimeOptimalLoad load_yaml(const std::string& yaml) {
   Diagnostics d("c.yaml");
   const YAML::Node n = YAML::Load(yaml);
   Map root(n, d, "");
-  Loaded out;
+  TimeOptimalLoad out;
   out.spec = load_time_optimal(root);
   root.finish();
   for (const auto& e : d.errors()) out.errors += e.format() + "\n";
@@ -29,7 +29,8 @@ Loaded load(const std::string& yaml) {
 }
 
 TEST(TimeOptimalCase, DefaultsAreTheSourcesArmAndTheDocumentedSettings) {
-  const Loaded l = load("time_optimal:\n  path: {points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n");
+  const TimeOptimalLoad l =
+      load_yaml("time_optimal:\n  path: {points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n");
   ASSERT_TRUE(l.errors.empty()) << l.errors;
   const to::Spec& s = l.spec;
   // massless links with 1.0 kg at the end of each, L1 = 0.5 m, L2 = 0.4 m, horizontal
@@ -59,7 +60,7 @@ TEST(TimeOptimalCase, DefaultsAreTheSourcesArmAndTheDocumentedSettings) {
 }
 
 TEST(TimeOptimalCase, ReadsEveryKeyAndAnEmptyConvergenceList) {
-  const Loaded l = load(R"(
+  const TimeOptimalLoad l = load_yaml(R"(
 time_optimal:
   path: {kind: spline, points_m: [[0.6, -0.2], [0.55, 0.25], [0.2, 0.5]]}
   configuration: 2
@@ -91,7 +92,7 @@ time_optimal:
 }
 
 TEST(TimeOptimalCase, AGridToleranceMustBePositive) {
-  const Loaded l = load(R"(
+  const TimeOptimalLoad l = load_yaml(R"(
 time_optimal:
   path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}
   exact: {grid_tolerance: 0}
@@ -100,7 +101,7 @@ time_optimal:
 }
 
 TEST(TimeOptimalCase, APolylineNeedsTwoSegmentsPerPiece) {
-  const Loaded l = load(R"(
+  const TimeOptimalLoad l = load_yaml(R"(
 time_optimal:
   path: {kind: polyline, points_m: [[0.6, -0.2], [0.55, 0.25], [0.2, 0.5], [-0.2, 0.5]]}
   dp: {segments: 4}
@@ -115,12 +116,13 @@ const char* kThreeLinks =
     "    - {length: 0.25, mass: 1.0}\ngravity: 9.81\n";
 
 TEST(TimeOptimalCase, ReadsAJointPathWithItsRangesAndOneLimitPerJoint) {
-  const Loaded l = load(std::string(kThreeLinks) +
-                        "time_optimal:\n  joint_path:\n    kind: spline\n"
-                        "    points_rad: [[-2.3, 0.5, 0.4], [-1.9, 0.2, 0.3], [-0.8, -0.5, -0.4]]\n"
-                        "    range_rad: [[-3, 0], [-1.5, 1.5], [-1.5, 1.5]]\n"
-                        "  velocity_limit_rad_s: [2, 3, 4]\n  torque_limit_Nm: [30, 12, 3]\n"
-                        "  acceleration_limit_rad_s2: [50, 60, 70]\n");
+  const TimeOptimalLoad l =
+      load_yaml(std::string(kThreeLinks) +
+                "time_optimal:\n  joint_path:\n    kind: spline\n"
+                "    points_rad: [[-2.3, 0.5, 0.4], [-1.9, 0.2, 0.3], [-0.8, -0.5, -0.4]]\n"
+                "    range_rad: [[-3, 0], [-1.5, 1.5], [-1.5, 1.5]]\n"
+                "  velocity_limit_rad_s: [2, 3, 4]\n  torque_limit_Nm: [30, 12, 3]\n"
+                "  acceleration_limit_rad_s2: [50, 60, 70]\n");
   ASSERT_EQ(l.errors, "");
   EXPECT_EQ(l.spec.space, to::PathSpace::kJoint);
   EXPECT_EQ(l.spec.joint_path.kind, to::PathKind::kSpline);
@@ -138,23 +140,24 @@ TEST(TimeOptimalCase, AJointPathRefusesATipPathBesideItAnElbowAndMissingLimits) 
   const std::string jp =
       "  joint_path: {kind: line, points_rad: [[-2.3, 0.5, 0.4], [-0.8, -0.5, -0.4]]}\n";
   const std::string limits = "  velocity_limit_rad_s: [2, 3, 4]\n  torque_limit_Nm: [30, 12, 3]\n";
-  const auto has = [](const Loaded& l, const std::string& what) {
+  const auto has = [](const TimeOptimalLoad& l, const std::string& what) {
     return l.errors.find(what) != std::string::npos;
   };
-  const Loaded both = load(std::string(kThreeLinks) + "time_optimal:\n" + jp + limits +
-                           "  path: {points_m: [[0.3, 0.1], [0.0, 0.5]]}\n");
+  const TimeOptimalLoad both = load_yaml(std::string(kThreeLinks) + "time_optimal:\n" + jp +
+                                         limits + "  path: {points_m: [[0.3, 0.1], [0.0, 0.5]]}\n");
   EXPECT_TRUE(has(both, "has both 'path' (a tip path) and 'joint_path'")) << both.errors;
-  const Loaded elbow =
-      load(std::string(kThreeLinks) + "time_optimal:\n" + jp + limits + "  configuration: 2\n");
+  const TimeOptimalLoad elbow = load_yaml(std::string(kThreeLinks) + "time_optimal:\n" + jp +
+                                          limits + "  configuration: 2\n");
   EXPECT_TRUE(has(elbow, "'time_optimal.configuration' chooses the elbow")) << elbow.errors;
   // a 3-link arm has no default limits (the defaults are the 2-link source's)
-  const Loaded bare = load(std::string(kThreeLinks) + "time_optimal:\n" + jp);
+  const TimeOptimalLoad bare = load_yaml(std::string(kThreeLinks) + "time_optimal:\n" + jp);
   EXPECT_TRUE(
       has(bare, "missing required key 'time_optimal.velocity_limit_rad_s' for an arm of 3 links"))
       << bare.errors;
   EXPECT_TRUE(has(bare, "missing required key 'time_optimal.torque_limit_Nm'")) << bare.errors;
   // a 2-link arm's joint path takes the default limits
-  const Loaded two = load("time_optimal:\n  joint_path: {points_rad: [[0.1, 1.0], [0.8, 0.4]]}\n");
+  const TimeOptimalLoad two =
+      load_yaml("time_optimal:\n  joint_path: {points_rad: [[0.1, 1.0], [0.8, 0.4]]}\n");
   EXPECT_EQ(two.errors, "");
   EXPECT_EQ(two.spec.space, to::PathSpace::kJoint);
   EXPECT_EQ(two.spec.velocity_limit, to::joint_pair(3.0, 4.0));
@@ -170,7 +173,7 @@ TEST(TimeOptimalCase, ARefusedArmIsReportedOnceNotAgainstEveryWaypointAndLimit) 
           ", [0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2]]}\n"
           "  velocity_limit_rad_s: " +
           eight + "\n  torque_limit_Nm: " + eight + "\n";
-  const Loaded l = load(yaml);
+  const TimeOptimalLoad l = load_yaml(yaml);
   EXPECT_NE(l.errors.find("'arm.links' has 8 links; expected 1 to 7 links"), std::string::npos)
       << l.errors;
   EXPECT_EQ(std::count(l.errors.begin(), l.errors.end(), '\n'), 1) << l.errors;

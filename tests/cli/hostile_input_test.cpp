@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 using armstudy::testing::CliRun;
 using armstudy::testing::run_cli;
 
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+using armstudy::testing::write_file;
 
 TEST(HostileInput, DevicesFifosAndFoldersAreRefusedWithoutReading) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_hostile_files");
@@ -46,9 +46,9 @@ TEST(HostileInput, DevicesFifosAndFoldersAreRefusedWithoutReading) {
 TEST(HostileInput, BudgetIsJudgedByValidateAndRunAndRaisedByAllowLarge) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_budget");
   const fs::path c = dir / "big.yaml";
-  write(c,
-        "study: placement\nname: big\nplacement:\n  length_fraction: 0.5\n  nx_s: 10000\n"
-        "  phi_step_deg: 0.01\n");
+  write_file(c,
+             "study: placement\nname: big\nplacement:\n  length_fraction: 0.5\n  nx_s: 10000\n"
+             "  phi_step_deg: 0.01\n");
   const CliRun v = run_cli("validate " + c.string());
   EXPECT_EQ(v.exit_code, 2) << v.output;
   EXPECT_NE(v.output.find(c.string() +
@@ -66,26 +66,26 @@ TEST(HostileInput, BudgetIsJudgedByValidateAndRunAndRaisedByAllowLarge) {
   EXPECT_EQ(a.exit_code, 0) << a.output;
   // the documented range of samples is within the budget (and renders: a traced path is
   // drawn through at most 1000 segments)
-  write(c, "study: placement\nname: big\nplacement: {length_fraction: 0.5, samples: 20001}\n");
+  write_file(c, "study: placement\nname: big\nplacement: {length_fraction: 0.5, samples: 20001}\n");
   EXPECT_EQ(run_cli("validate " + c.string()).exit_code, 0);
   fs::remove_all(dir);
 }
 
 TEST(HostileInput, MergeKeysAreSupportedAsYamlDefinesThem) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_merge");
-  write(dir / "m.yaml",
-        "study: placement\nname: merged\n"
-        "arm:\n  links:\n    - &link {length: 0.4, mass: 4.0}\n"
-        "    - {<<: *link, length: 0.2, mass: 2.0}\n"
-        "placement: {length_fraction: 0.5}\n");
+  write_file(dir / "m.yaml",
+             "study: placement\nname: merged\n"
+             "arm:\n  links:\n    - &link {length: 0.4, mass: 4.0}\n"
+             "    - {<<: *link, length: 0.2, mass: 2.0}\n"
+             "placement: {length_fraction: 0.5}\n");
   const CliRun r = run_cli("validate " + (dir / "m.yaml").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   // a merged mapping's keys are judged like the mapping's own, at their place
-  write(dir / "m.yaml",
-        "study: placement\nname: merged\n"
-        "arm:\n  links:\n    - &link {length: 0.4, mas: 4.0}\n"
-        "    - {<<: *link, length: 0.2}\n"
-        "placement: {length_fraction: 0.5}\n");
+  write_file(dir / "m.yaml",
+             "study: placement\nname: merged\n"
+             "arm:\n  links:\n    - &link {length: 0.4, mas: 4.0}\n"
+             "    - {<<: *link, length: 0.2}\n"
+             "placement: {length_fraction: 0.5}\n");
   const CliRun bad = run_cli("validate " + (dir / "m.yaml").string());
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(
@@ -98,13 +98,13 @@ TEST(HostileInput, MergeKeysAreSupportedAsYamlDefinesThem) {
 
 TEST(HostileInput, SweepPointCountNeverOverflowsAndIsCapped) {
   const fs::path dir = armstudy::testing::fresh_dir("cli_sweep_count");
-  write(dir / "base.yaml", "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n");
+  write_file(dir / "base.yaml", "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n");
   const std::string range = "    range: {from: 0.1, to: 0.9, steps: 65536}\n";
-  write(dir / "huge.yaml",
-        "sweep: huge\nbase: base.yaml\naxes:\n"
-        "  - path: placement.length_fraction\n" +
-            range + "  - path: placement.duration_s\n" + range + "  - path: placement.samples\n" +
-            range + "  - path: placement.nx_s\n" + range);
+  write_file(dir / "huge.yaml",
+             "sweep: huge\nbase: base.yaml\naxes:\n"
+             "  - path: placement.length_fraction\n" +
+                 range + "  - path: placement.duration_s\n" + range +
+                 "  - path: placement.samples\n" + range + "  - path: placement.nx_s\n" + range);
   CliRun r =
       run_cli("sweep expand " + (dir / "huge.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -112,10 +112,10 @@ TEST(HostileInput, SweepPointCountNeverOverflowsAndIsCapped) {
                           "65536 x 65536 x 65536 values)"),
             std::string::npos)
       << r.output;
-  write(dir / "big.yaml",
-        "sweep: big\nbase: base.yaml\naxes:\n"
-        "  - path: placement.length_fraction\n    range: {from: 0.1, to: 0.9, steps: 101}\n"
-        "  - path: placement.duration_s\n    range: {from: 0.5, to: 2, steps: 100}\n");
+  write_file(dir / "big.yaml",
+             "sweep: big\nbase: base.yaml\naxes:\n"
+             "  - path: placement.length_fraction\n    range: {from: 0.1, to: 0.9, steps: 101}\n"
+             "  - path: placement.duration_s\n    range: {from: 0.5, to: 2, steps: 100}\n");
   r = run_cli("sweep expand " + (dir / "big.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(
@@ -124,9 +124,9 @@ TEST(HostileInput, SweepPointCountNeverOverflowsAndIsCapped) {
       << r.output;
   EXPECT_FALSE(fs::exists(dir / "out"));
   // a small sweep says its count before it writes
-  write(dir / "small.yaml",
-        "sweep: small\nbase: base.yaml\naxes:\n"
-        "  - path: placement.length_fraction\n    values: [0.4, 0.6]\n");
+  write_file(dir / "small.yaml",
+             "sweep: small\nbase: base.yaml\naxes:\n"
+             "  - path: placement.length_fraction\n    values: [0.4, 0.6]\n");
   r = run_cli("sweep expand " + (dir / "small.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   const size_t said = r.output.find("sweep small: 2 case(s); writing them to");
@@ -142,8 +142,8 @@ TEST(HostileInput, SweepNamesABadBaseWithoutQuotingIt) {
   std::string passwd;
   for (int i = 0; i < 40; ++i)
     passwd += "user" + std::to_string(i) + ":x:1000:1000::/home/u:/bin/sh\n";
-  write(dir / "passwd", passwd);
-  write(dir / "s.yaml", "sweep: s\nbase: passwd\naxes:\n  - path: a\n    values: [1]\n");
+  write_file(dir / "passwd", passwd);
+  write_file(dir / "s.yaml", "sweep: s\nbase: passwd\naxes:\n  - path: a\n    values: [1]\n");
   const CliRun r =
       run_cli("sweep expand " + (dir / "s.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -151,9 +151,9 @@ TEST(HostileInput, SweepNamesABadBaseWithoutQuotingIt) {
   EXPECT_EQ(r.output.find("user0"), std::string::npos) << "named, never quoted: " << r.output;
   EXPECT_LT(r.output.size(), 800u) << r.output;
   // a hostile axis path (a long one once overflowed std::regex's stack)
-  write(dir / "base.yaml", "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n");
-  write(dir / "p.yaml", "sweep: p\nbase: base.yaml\naxes:\n  - path: " + std::string(200000, 'a') +
-                            "\n    values: [1]\n");
+  write_file(dir / "base.yaml", "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n");
+  write_file(dir / "p.yaml", "sweep: p\nbase: base.yaml\naxes:\n  - path: " +
+                                 std::string(200000, 'a') + "\n    values: [1]\n");
   const CliRun p =
       run_cli("sweep expand " + (dir / "p.yaml").string() + " --out " + (dir / "out").string());
   EXPECT_EQ(p.exit_code, 2) << p.output.substr(0, 500);

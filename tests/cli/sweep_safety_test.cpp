@@ -19,7 +19,7 @@ using armstudy::testing::CliRun;
 using armstudy::testing::run_cli;
 using armstudy::testing::slurp;
 
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+using armstudy::testing::write_file;
 
 const std::string kBase = "study: placement\nname: b\nplacement: {length_fraction: 0.5}\n";
 
@@ -32,14 +32,14 @@ TEST(SweepSafety, BaseOutsideTheSweepFolderIsRefusedAndNeverQuoted) {
   fs::create_directories(dir / "sweeps");
   fs::create_directories(dir / "cases");
   const std::string secret = "https://ci:ghp_SECRETTOKEN0123456789@github.com\n";
-  write(dir / "secret", secret);
-  write(dir / "cases" / "base.yaml", kBase);
+  write_file(dir / "secret", secret);
+  write_file(dir / "cases" / "base.yaml", kBase);
   fs::create_symlink(dir / "secret", dir / "sweeps" / "link.yaml");
   const std::string axes = "axes:\n  - path: placement.length_fraction\n    values: [0.4]\n";
   for (const std::string& base : {(dir / "secret").string(), std::string("../secret"),
                                   std::string("link.yaml"), std::string("../cases/base.yaml")}) {
     SCOPED_TRACE(base);
-    write(dir / "sweeps" / "s.yaml", "sweep: s\nbase: " + base + "\n" + axes);
+    write_file(dir / "sweeps" / "s.yaml", "sweep: s\nbase: " + base + "\n" + axes);
     const CliRun r = expand(dir / "sweeps" / "s.yaml", dir / "out");
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("s.yaml:2:"), std::string::npos) << r.output;
@@ -54,13 +54,13 @@ TEST(SweepSafety, BaseOutsideTheSweepFolderIsRefusedAndNeverQuoted) {
     EXPECT_FALSE(fs::exists(dir / "out"));
   }
   // a folder the user names may hold it
-  write(dir / "sweeps" / "s.yaml", "sweep: s\nbase: ../cases/base.yaml\n" + axes);
+  write_file(dir / "sweeps" / "s.yaml", "sweep: s\nbase: ../cases/base.yaml\n" + axes);
   CliRun r =
       expand(dir / "sweeps" / "s.yaml", dir / "out", " --base-dir " + (dir / "cases").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   // a file in the folder that is not a case is named, not quoted
-  write(dir / "sweeps" / "notes.txt", secret);
-  write(dir / "sweeps" / "s.yaml", "sweep: s\nbase: notes.txt\n" + axes);
+  write_file(dir / "sweeps" / "notes.txt", secret);
+  write_file(dir / "sweeps" / "s.yaml", "sweep: s\nbase: notes.txt\n" + axes);
   r = expand(dir / "sweeps" / "s.yaml", dir / "out2");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("notes.txt, which is not a case file"), std::string::npos) << r.output;
@@ -70,7 +70,7 @@ TEST(SweepSafety, BaseOutsideTheSweepFolderIsRefusedAndNeverQuoted) {
 
 TEST(SweepSafety, AxesThatWouldBeSilentlyMergedAreRefusedNamingKeyAndLine) {
   const fs::path dir = armstudy::testing::fresh_dir("sweep_axes");
-  write(dir / "base.yaml", kBase);
+  write_file(dir / "base.yaml", kBase);
   struct Bad {
     std::string axes, expected;
   };
@@ -87,7 +87,7 @@ TEST(SweepSafety, AxesThatWouldBeSilentlyMergedAreRefusedNamingKeyAndLine) {
                "s.yaml:4:5: axis path 'sweep.name' is inside the 'sweep' mapping"},
        }) {
     SCOPED_TRACE(b.axes);
-    write(dir / "s.yaml", "sweep: s\nbase: base.yaml\naxes:\n" + b.axes);
+    write_file(dir / "s.yaml", "sweep: s\nbase: base.yaml\naxes:\n" + b.axes);
     const CliRun r = expand(dir / "s.yaml", dir / "out");
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find(b.expected), std::string::npos) << r.output;
@@ -98,22 +98,22 @@ TEST(SweepSafety, AxesThatWouldBeSilentlyMergedAreRefusedNamingKeyAndLine) {
 
 TEST(SweepSafety, ExpansionRemovesItsOwnStalePointsNeverAUsersFile) {
   const fs::path dir = armstudy::testing::fresh_dir("sweep_owns_folder");
-  write(dir / "base.yaml", kBase);
+  write_file(dir / "base.yaml", kBase);
   const fs::path out = dir / "cases";
-  write(dir / "s.yaml",
-        "sweep: s\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
-        "    values: [0.3, 0.4, 0.6]\n");
+  write_file(dir / "s.yaml",
+             "sweep: s\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
+             "    values: [0.3, 0.4, 0.6]\n");
   ASSERT_EQ(expand(dir / "s.yaml", out).exit_code, 0);
   fs::create_directories(out);
-  write(out / "mine.yaml", "# my own case\n" + kBase);
+  write_file(out / "mine.yaml", "# my own case\n" + kBase);
   const auto manifest = [&] {
     return nlohmann::json::parse(slurp(out / "sweep-manifest.json"))["cases"];
   };
   ASSERT_EQ(manifest().size(), 3u);
   // the sweep edited: one point fewer
-  write(dir / "s.yaml",
-        "sweep: s\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
-        "    values: [0.3, 0.4]\n");
+  write_file(dir / "s.yaml",
+             "sweep: s\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
+             "    values: [0.3, 0.4]\n");
   CliRun r = expand(dir / "s.yaml", out);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("no longer a point of the sweep"), std::string::npos) << r.output;
@@ -124,16 +124,16 @@ TEST(SweepSafety, ExpansionRemovesItsOwnStalePointsNeverAUsersFile) {
   EXPECT_EQ(manifest().size(), 2u);
   // a file of the user's where a case goes is refused, not replaced
   const std::string first = manifest()[0].get<std::string>();
-  write(out / (first + ".yaml"), "# mine\n" + kBase);
+  write_file(out / (first + ".yaml"), "# mine\n" + kBase);
   r = expand(dir / "s.yaml", out);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("was not written by 'armstudy sweep expand'"), std::string::npos)
       << r.output;
   EXPECT_EQ(slurp(out / (first + ".yaml")), "# mine\n" + kBase);
   // another sweep's folder is refused
-  write(dir / "t.yaml",
-        "sweep: t\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
-        "    values: [0.7]\n");
+  write_file(dir / "t.yaml",
+             "sweep: t\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
+             "    values: [0.7]\n");
   r = expand(dir / "t.yaml", out);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("holds the cases of sweep 's'"), std::string::npos) << r.output;

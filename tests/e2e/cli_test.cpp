@@ -16,6 +16,7 @@
 
 #include "cases/case_info.hpp"
 #include "testing/cli.hpp"
+#include "testing/files.hpp"
 #include "version.hpp"
 
 namespace {
@@ -38,7 +39,7 @@ fs::path temp_dir(const std::string& tag) {
   return d;
 }
 
-const fs::path kSource = ARMSTUDY_SOURCE_DIR;
+using armstudy::testing::kSource;
 
 TEST(Cli, HelpAndVersionExitZero) {
   const CliRun help = run_cli("--help");

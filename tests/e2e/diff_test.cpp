@@ -66,7 +66,7 @@ std::vector<std::string> table_cases(const std::string& md, const std::string& h
 }
 
 // what the shared runs were made from: the binary and the bundled case files used
-std::string input_stamp() {
+std::string diff_input_stamp() {
   std::ostringstream os;
   for (const fs::path& p : {fs::path(ARMSTUDY_BINARY), kCases / "placement-example-3.yaml",
                             kCases / "placement-example-5.yaml", kCases / "pendulum.yaml"})
@@ -86,7 +86,7 @@ class Diff : public ::testing::Test {
         ::open((root_.parent_path() / "diff_e2e.lock").c_str(), O_CREAT | O_RDWR, 0644);
     ASSERT_GE(lock, 0);
     ::flock(lock, LOCK_EX);
-    const std::string stamp = input_stamp();
+    const std::string stamp = diff_input_stamp();
     if (slurp(root_ / "stamp") != stamp) make_runs();
     ::flock(lock, LOCK_UN);
     ::close(lock);
@@ -117,7 +117,7 @@ class Diff : public ::testing::Test {
     fs::copy(root_ / "longer/placement-example-3", root_ / "mixed/placement-example-3",
              fs::copy_options::recursive);
     run_into(root_ / "mixed", q(kCases / "placement-example-5.yaml"), false);
-    write_text(root_ / "stamp", input_stamp());
+    write_text(root_ / "stamp", diff_input_stamp());
   }
 
   static fs::path out(const std::string& tag) { return root_ / ("diff-" + tag); }

@@ -18,18 +18,14 @@
 #include "cases/case_info.hpp"
 #include "scene/mujoco_model.hpp"
 #include "testing/cli.hpp"
+#include "testing/files.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 using armstudy::testing::run_cli;
 using nlohmann::json;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using armstudy::testing::slurp;
 
 struct Csv {
   std::vector<std::string> header;

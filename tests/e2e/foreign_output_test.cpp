@@ -30,7 +30,7 @@ using armstudy::testing::slurp;
 using armstudy::testing::snapshot;
 
 // `command` through the shell, standard input closed; its output and error captured
-armstudy::testing::CliRun shell(const std::string& command) {
+armstudy::testing::CliRun shell_group(const std::string& command) {
   armstudy::testing::CliRun r{-1, ""};
   FILE* p = popen(("{ " + command + "; } 2>&1 </dev/null").c_str(), "r");
   char buf[4096];
@@ -79,8 +79,8 @@ TEST(ForeignOutput, AUserFolderOrFileOfTheCasesNameIsRefusedAndKeptByteForByte) 
   user_folder(project / "src");
   const fs::path c = quick_case(d, "src");
   const auto before = snapshot(project);
-  const auto here = shell("cd " + project.string() + " && " + ARMSTUDY_BINARY +
-                          " run --no-render --out . " + c.string());
+  const auto here = shell_group("cd " + project.string() + " && " + ARMSTUDY_BINARY +
+                                " run --no-render --out . " + c.string());
   EXPECT_EQ(here.exit_code, 2) << here.output;
   EXPECT_NE(here.output.find("./src: a folder armstudy did not write"), std::string::npos)
       << here.output;
@@ -237,7 +237,7 @@ TEST(ForeignOutput, PrintingRunsNoScriptAndReadsNothingOutsideThePagesFolder) {
                                               "<iframe src=\"link.txt\"></iframe>"
                                               "<iframe src=\"inside.txt\"></iframe></body></html>";
   armstudy::report::print_pdf(d / "page/index.html", d / "page.pdf");
-  const std::string text = shell("pdftotext " + (d / "page.pdf").string() + " -").output;
+  const std::string text = shell_group("pdftotext " + (d / "page.pdf").string() + " -").output;
   EXPECT_NE(text.find("VISIBLE-TEXT"), std::string::npos) << text;
   EXPECT_NE(text.find("TEXT-INSIDE-THE-FOLDER"), std::string::npos) << text;
   EXPECT_EQ(text.find("SCRIPT-OUTPUT"), std::string::npos) << text;
@@ -246,7 +246,7 @@ TEST(ForeignOutput, PrintingRunsNoScriptAndReadsNothingOutsideThePagesFolder) {
   const auto errors = armstudy::report::print_pdfs(
       {{d / "page/index.html", d / "a.pdf"}, {d / "page/index.html", d / "b.pdf"}}, 2);
   for (const char* pdf : {"a.pdf", "b.pdf"}) {
-    const std::string t = shell("pdftotext " + (d / pdf).string() + " -").output;
+    const std::string t = shell_group("pdftotext " + (d / pdf).string() + " -").output;
     EXPECT_NE(t.find("VISIBLE-TEXT"), std::string::npos) << t;
     EXPECT_EQ(t.find("SCRIPT-OUTPUT"), std::string::npos) << t;
     EXPECT_EQ(t.find("TOKEN-OUTSIDE-THE-FOLDER"), std::string::npos) << t;

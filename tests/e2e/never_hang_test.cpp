@@ -23,7 +23,7 @@ using armstudy::testing::fresh_dir;
 using armstudy::testing::run_bounded;
 using armstudy::testing::slurp;
 
-const fs::path kSource = ARMSTUDY_SOURCE_DIR;
+using armstudy::testing::kSource;
 
 bool has(const BoundedRun& r, const std::string& text) {
   return r.output.find(text) != std::string::npos;

@@ -15,7 +15,7 @@ using armstudy::testing::BoundedRun;
 using armstudy::testing::fresh_dir;
 using armstudy::testing::run_bounded;
 
-const fs::path kSource = ARMSTUDY_SOURCE_DIR;
+using armstudy::testing::kSource;
 
 TEST(OutOption, EmptyOrAFileIsBadUsageAndTheFileIsUntouched) {
   const fs::path d = fresh_dir("out_option");

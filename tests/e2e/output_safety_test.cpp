@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/results_record.hpp"
+#include "testing/cli.hpp"
 #include "testing/files.hpp"
 #include "testing/output_folder.hpp"
 
@@ -27,30 +28,12 @@ using armstudy::testing::fresh_dir;
 using armstudy::testing::slurp;
 using armstudy::testing::snapshot;
 
-const fs::path kSource = ARMSTUDY_SOURCE_DIR;
-const std::string kBin = ARMSTUDY_BINARY;
-
-struct CmdRun {
-  int exit_code;
-  std::string output;
-};
-
-// `command` through the shell; its stderr (and stdout unless redirected) captured
-CmdRun shell(const std::string& command) {
-  CmdRun r{-1, ""};
-  FILE* p = popen((command + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf;
-  while (p && fgets(buf.data(), buf.size(), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-CmdRun armstudy(const std::string& args) { return shell(kBin + " " + args); }
-
-fs::path write_case(const fs::path& dir, const std::string& name) {
-  return armstudy::testing::quick_case(dir, name);
-}
+using armstudy::testing::kBin;
+using armstudy::testing::kSource;
+using armstudy::testing::quick_case;
+using armstudy::testing::run_cli;
+using armstudy::testing::run_shell;
+using CmdRun = armstudy::testing::CliRun;
 
 // what a failed or stopped run must never leave: temporary files and scratch folders
 std::string leftovers(const fs::path& dir) {
@@ -67,26 +50,26 @@ TEST(OutputSafety, CaseNamesOfRunLevelFilesAreRefusedAtValidate) {
   const fs::path d = fresh_dir("names_reserved");
   for (const char* name : {"index.html", "summary.md", "junit.xml", "report.css", "sweep",
                            "sweep.csv", "sweep.json"}) {
-    const fs::path c = write_case(d, name);
-    const CmdRun r = armstudy("validate " + c.string());
+    const fs::path c = quick_case(d, name);
+    const CmdRun r = run_cli("validate " + c.string());
     EXPECT_EQ(r.exit_code, 2) << name << "\n" << r.output;
     EXPECT_NE(r.output.find(c.string() + ": case name '" + name + "' is the name of " + name),
               std::string::npos)
         << r.output;
-    const CmdRun run = armstudy("run --no-render --out " + (d / "out").string() + " " + c.string());
+    const CmdRun run = run_cli("run --no-render --out " + (d / "out").string() + " " + c.string());
     EXPECT_EQ(run.exit_code, 2) << run.output;
     EXPECT_FALSE(fs::exists(d / "out")) << "nothing is written for a refused case";
   }
-  EXPECT_EQ(armstudy("validate " + write_case(d, "sweep-1").string()).exit_code, 0)
+  EXPECT_EQ(run_cli("validate " + quick_case(d, "sweep-1").string()).exit_code, 0)
       << "only the exact names";
   fs::remove_all(d);
 }
 
 TEST(OutputSafety, TwoCasesWithOneNameAreRefusedAtValidate) {
   const fs::path d = fresh_dir("names_twice");
-  const fs::path a = write_case(d, "twice");
+  const fs::path a = quick_case(d, "twice");
   fs::copy_file(a, d / "copy.yaml");
-  const CmdRun r = armstudy("validate " + a.string() + " " + (d / "copy.yaml").string());
+  const CmdRun r = run_cli("validate " + a.string() + " " + (d / "copy.yaml").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("case name 'twice' is also the name of " + a.string()), std::string::npos)
       << r.output;
@@ -95,30 +78,30 @@ TEST(OutputSafety, TwoCasesWithOneNameAreRefusedAtValidate) {
 
 TEST(OutputSafety, AFailedWriteToStandardOutputIsAnError) {
   const fs::path d = fresh_dir("stdout_full");
-  write_case(d, "listed");
+  quick_case(d, "listed");
   for (const char* args : {"list --json ", "list ", "validate "}) {
     const std::string target =
         std::string(args) == "validate " ? (d / "listed.yaml").string() : d.string();
-    const CmdRun r = shell("{ " + kBin + " " + args + target + " >/dev/full; }");
+    const CmdRun r = run_shell("{ " + kBin + " " + args + target + " >/dev/full; }");
     EXPECT_EQ(r.exit_code, 3) << args << r.output;
     EXPECT_NE(r.output.find("cannot write to standard output: No space left on device"),
               std::string::npos)
         << args << r.output;
   }
-  EXPECT_EQ(shell(kBin + " list --json " + d.string() + " >/dev/null").exit_code, 0);
+  EXPECT_EQ(run_shell(kBin + " list --json " + d.string() + " >/dev/null").exit_code, 0);
   fs::remove_all(d);
 }
 
 // the skip-if-done key: case file, armstudy version and commit, render option, and passed
 TEST(OutputSafety, SkipIfDoneRedoesACaseWhoseOutputIsStaleOrFailed) {
   const fs::path d = fresh_dir("skip_key");
-  const fs::path c = write_case(d, "skip-me");
+  const fs::path c = quick_case(d, "skip-me");
   const std::string run = "run --no-render --out " + (d / "out").string() + " " + c.string();
-  ASSERT_EQ(armstudy(run).exit_code, 0);
+  ASSERT_EQ(run_cli(run).exit_code, 0);
   const fs::path rj = d / "out/skip-me/results.json";
   const auto original = nlohmann::json::parse(slurp(rj));
   EXPECT_EQ(original["run_options"]["render"], false);
-  const CmdRun again = armstudy(run);
+  const CmdRun again = run_cli(run);
   EXPECT_EQ(again.exit_code, 0);
   EXPECT_NE(again.output.find("skipped 1 case(s)"), std::string::npos) << again.output;
 
@@ -134,7 +117,7 @@ TEST(OutputSafety, SkipIfDoneRedoesACaseWhoseOutputIsStaleOrFailed) {
     nlohmann::json j = original;
     edit(j);
     std::ofstream(rj, std::ios::trunc) << j.dump(2);
-    const CmdRun r = armstudy(run);
+    const CmdRun r = run_cli(run);
     EXPECT_EQ(r.exit_code, 0) << what << "\n" << r.output;
     EXPECT_EQ(r.output.find("skipped"), std::string::npos) << what << ": kept a stale report\n"
                                                            << r.output;
@@ -149,7 +132,7 @@ TEST(OutputSafety, SkipIfDoneRedoesACaseWhoseOutputIsStaleOrFailed) {
 TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
   const fs::path d = fresh_dir("merge_broken");
   const fs::path out = d / "out";
-  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + write_case(d, "good").string())
+  ASSERT_EQ(run_cli("run --no-render --out " + out.string() + " " + quick_case(d, "good").string())
                 .exit_code,
             0);
   const std::string good = slurp(out / "good/results.json");
@@ -195,7 +178,7 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
     fs::create_directories(out / name);
     std::ofstream(out / name / "results.json") << contents.first;
   }
-  const CmdRun r = armstudy("merge " + out.string());
+  const CmdRun r = run_cli("merge " + out.string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("(8 failed)"), std::string::npos) << r.output;
@@ -217,13 +200,13 @@ TEST(OutputSafety, MergeCountsAndNamesEveryUnreadableResultsJson) {
 
 TEST(OutputSafety, MergeOfAMissingFolderIsAnErrorAndCreatesNothing) {
   const fs::path d = fresh_dir("merge_missing");
-  const CmdRun r = armstudy("merge " + (d / "nope").string());
+  const CmdRun r = run_cli("merge " + (d / "nope").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find((d / "nope").string() + ": no such folder"), std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(d / "nope"));
   std::ofstream(d / "file") << "x";
-  const CmdRun f = armstudy("merge " + (d / "file").string() + " --out " + (d / "out").string());
+  const CmdRun f = run_cli("merge " + (d / "file").string() + " --out " + (d / "out").string());
   EXPECT_EQ(f.exit_code, 2) << f.output;
   EXPECT_NE(f.output.find("not a folder"), std::string::npos) << f.output;
   EXPECT_FALSE(fs::exists(d / "out"));
@@ -233,9 +216,9 @@ TEST(OutputSafety, MergeOfAMissingFolderIsAnErrorAndCreatesNothing) {
 // a folder the user may not write into: why, exit 3, nothing written, the report kept
 TEST(OutputSafety, AReadOnlyOutputFolderSaysPermissionDeniedAndWritesNothing) {
   const fs::path d = fresh_dir("eacces");
-  const fs::path c = write_case(d, "read-only");
+  const fs::path c = quick_case(d, "read-only");
   const fs::path out = d / "out";
-  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
   std::ofstream(c, std::ios::app) << "# changed\n";
   const auto before = snapshot(out);
   fs::permissions(out, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
@@ -246,7 +229,7 @@ TEST(OutputSafety, AReadOnlyOutputFolderSaysPermissionDeniedAndWritesNothing) {
   const std::string as_user =
       ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
   const CmdRun r =
-      shell(as_user + kBin + " run --no-render --out " + out.string() + " " + c.string());
+      run_shell(as_user + kBin + " run --no-render --out " + out.string() + " " + c.string());
   fs::permissions(out, fs::perms::owner_all, fs::perm_options::add);
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find(": Permission denied"), std::string::npos) << r.output;
@@ -264,9 +247,9 @@ namespace {
 // namespace, a container) is kept while its lock is held, and removed once it is not
 TEST(OutputSafety, LeftoversAreRemovedByTheirFreeLockNotByHostAndPid) {
   const fs::path d = fresh_dir("stale_lock");
-  const fs::path c = write_case(d, "locked");
+  const fs::path c = quick_case(d, "locked");
   const fs::path out = d / "out";
-  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
   char host[256] = {0};
   ::gethostname(host, sizeof host - 1);
   const fs::path live = out / (std::string(".armstudy-") + host + "-999999-0badc0de");
@@ -280,16 +263,16 @@ TEST(OutputSafety, LeftoversAreRemovedByTheirFreeLockNotByHostAndPid) {
   FILE* holder =
       popen(("flock " + (live / "lock").string() + " -c 'echo locked; read x'").c_str(), "w");
   ASSERT_NE(holder, nullptr);
-  for (int i = 0; i < 200 && shell("flock -n " + (live / "lock").string() + " true").exit_code == 0;
-       ++i)
+  for (int i = 0;
+       i < 200 && run_shell("flock -n " + (live / "lock").string() + " true").exit_code == 0; ++i)
     ::usleep(20000);
-  const CmdRun r = armstudy("run --no-render --force --out " + out.string() + " " + c.string());
+  const CmdRun r = run_cli("run --no-render --force --out " + out.string() + " " + c.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(live / "new/locked/results.json")) << "a live run's folder was removed\n"
                                                             << r.output;
   EXPECT_FALSE(fs::exists(dead)) << "a dead run's folder was kept\n" << r.output;
   pclose(holder);  // the holder exits: its lock is free
-  const CmdRun again = armstudy("run --no-render --force --out " + out.string() + " " + c.string());
+  const CmdRun again = run_cli("run --no-render --force --out " + out.string() + " " + c.string());
   EXPECT_EQ(again.exit_code, 0) << again.output;
   EXPECT_FALSE(fs::exists(live)) << again.output;
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out);
@@ -300,9 +283,9 @@ TEST(OutputSafety, LeftoversAreRemovedByTheirFreeLockNotByHostAndPid) {
 // the only copy of the report in the scratch folder's old/: the next run puts it back
 TEST(OutputSafety, AReportAKillLeftAsideIsPutBack) {
   const fs::path d = fresh_dir("put_back");
-  const fs::path c = write_case(d, "aside");
+  const fs::path c = quick_case(d, "aside");
   const fs::path out = d / "out";
-  ASSERT_EQ(armstudy("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("run --no-render --out " + out.string() + " " + c.string()).exit_code, 0);
   const std::string report = slurp(out / "aside/results.json");
   const fs::path scratch = out / ".armstudy-elsewhere-1-12345678";
   fs::create_directories(scratch / "old");
@@ -312,10 +295,10 @@ TEST(OutputSafety, AReportAKillLeftAsideIsPutBack) {
   char host[256] = {0};
   ::gethostname(host, sizeof host - 1);
   fs::rename(out / "summary.md", out / (std::string(".summary.md.old-") + host + "-999997"));
-  armstudy("validate " + c.string());  // validate touches nothing
+  run_cli("validate " + c.string());  // validate touches nothing
   EXPECT_FALSE(fs::exists(out / "aside"));
-  const fs::path other = write_case(d, "other");
-  const CmdRun next = armstudy("run --no-render --out " + out.string() + " " + other.string());
+  const fs::path other = quick_case(d, "other");
+  const CmdRun next = run_cli("run --no-render --out " + out.string() + " " + other.string());
   EXPECT_EQ(next.exit_code, 0) << next.output;
   EXPECT_NE(next.output.find("put back " + (fs::weakly_canonical(out) / "aside").string()),
             std::string::npos)

@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 // small cases of every study, seconds each; run twice by the fixture
-const std::vector<std::pair<std::string, std::string>> kCases = {
+const std::vector<std::pair<std::string, std::string>> kNumberCases = {
     {"numbers-pendulum", "study: pendulum\nname: numbers-pendulum\npendulum: {duration_s: 0.4}\n"},
     {"numbers-placement",
      "study: placement\nname: numbers-placement\nplacement:\n  length_fraction: 0.4\n"
@@ -50,7 +50,7 @@ const std::vector<std::pair<std::string, std::string>> kCases = {
      "  complex: {max_iterations: 400}\n  exact: {grid_points: 200}\n"},
 };
 
-int run_cli(const std::string& args) {
+int run_quiet(const std::string& args) {
   const std::string cmd = std::string(ARMSTUDY_BINARY) + " " + args + " >/dev/null 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -91,13 +91,13 @@ class ResultsNumbers : public ::testing::Test {
   static void SetUpTestSuite() {
     root_ = armstudy::testing::fresh_dir("results_numbers_" + std::to_string(getpid()));
     std::string paths;
-    for (const auto& [name, text] : kCases) {
+    for (const auto& [name, text] : kNumberCases) {
       std::ofstream(root_ / (name + ".yaml")) << text;
       paths += " " + (root_ / (name + ".yaml")).string();
     }
     // two separate runs, each case in its own process, as a user would run them
     for (const char* out : {"a", "b"})
-      run_cli("run" + paths + " --no-render --jobs 1 --out " + (root_ / out).string());
+      run_quiet("run" + paths + " --no-render --jobs 1 --out " + (root_ / out).string());
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
 
@@ -252,7 +252,7 @@ TEST_F(ResultsNumbers, TimeOptimalDurationFollowsFromTheWrittenNodes) {
 }
 
 TEST_F(ResultsNumbers, TwoRunsWriteTheSameBytesApartFromRunTimes) {
-  for (const auto& [name, text] : kCases) {
+  for (const auto& [name, text] : kNumberCases) {
     SCOPED_TRACE(name);
     const std::string a = armstudy::testing::slurp(root_ / "a" / name / "results.json");
     const std::string b = armstudy::testing::slurp(root_ / "b" / name / "results.json");

@@ -18,6 +18,7 @@
 
 #include "testing/cli.hpp"
 #include "testing/files.hpp"
+#include "testing/output_folder.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -25,27 +26,13 @@ using armstudy::testing::fresh_dir;
 using armstudy::testing::slurp;
 using nlohmann::json;
 
-const fs::path kSource = ARMSTUDY_SOURCE_DIR;
-const std::string kBin = ARMSTUDY_BINARY;
-
+using armstudy::testing::kBin;
+using armstudy::testing::kSource;
+using armstudy::testing::quick_case;
+using armstudy::testing::run_cli;
+using armstudy::testing::run_shell;
+using armstudy::testing::write_file;
 using CmdRun = armstudy::testing::CliRun;
-CmdRun shell(const std::string& command) { return armstudy::testing::run_shell(command); }
-
-CmdRun armstudy(const std::string& args) { return shell(kBin + " " + args); }
-
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary | std::ios::trunc) << text;
-}
-
-// placement-example-2 (a quick case) under another name
-fs::path write_case(const fs::path& dir, const std::string& name) {
-  std::string text = slurp(kSource / "reports/cases/placement-example-2.yaml");
-  const size_t at = text.find("\nname: ");
-  text.replace(at + 7, text.find('\n', at + 1) - at - 7, name);
-  const fs::path p = dir / (name + ".yaml");
-  write(p, text);
-  return p;
-}
 
 // one case run once (--no-render) for the whole suite; each test edits a copy
 class UntrustedResults : public ::testing::Test {
@@ -53,8 +40,8 @@ class UntrustedResults : public ::testing::Test {
   static void SetUpTestSuite() {
     // one folder per process: CTest runs the tests of this suite side by side
     root_ = fresh_dir("untrusted_results_" + std::to_string(::getpid()));
-    const CmdRun r = armstudy("run --no-render --out " + (root_ / "run").string() + " " +
-                              write_case(root_, "a").string());
+    const CmdRun r = run_cli("run --no-render --out " + (root_ / "run").string() + " " +
+                             quick_case(root_, "a").string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
@@ -69,7 +56,7 @@ class UntrustedResults : public ::testing::Test {
   static void edit(const fs::path& rj, const std::function<void(json&)>& f) {
     json j = json::parse(slurp(rj));
     f(j);
-    write(rj, j.dump(1));
+    write_file(rj, j.dump(1));
   }
   static fs::path root_;
 };
@@ -80,16 +67,16 @@ TEST_F(UntrustedResults, DiffReadsFramesOnlyInsideTheirCaseFolderAndBoundsTheirP
   // a PNG header saying 12000 x 12000 px: never decoded
   std::string big = std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
   big += std::string("\0\0\x2e\xe0\0\0\x2e\xe0\x08\x02\0\0\0", 13);
-  write(base / "a" / "big.png", big + "1");
-  write(now / "a" / "big.png", big + "2");
+  write_file(base / "a" / "big.png", big + "1");
+  write_file(now / "a" / "big.png", big + "2");
   fs::create_symlink("/dev/zero", base / "a" / "zero.png");
   fs::create_symlink("/dev/zero", now / "a" / "zero.png");
   for (const fs::path& d : {base, now})
     edit(d / "a" / "results.json", [](json& j) {
       j["frames"] = {"/dev/zero", "../../frames_new/a/big.png", "zero.png", "big.png"};
     });
-  const CmdRun r = armstudy("diff " + base.string() + " " + now.string() + " --out " +
-                            (root_ / "frames_diff").string());
+  const CmdRun r = run_cli("diff " + base.string() + " " + now.string() + " --out " +
+                           (root_ / "frames_diff").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const std::string md = slurp(root_ / "frames_diff" / "diff.md");
   EXPECT_NE(md.find("frame '/dev/zero' is an absolute path"), std::string::npos) << md;
@@ -112,19 +99,19 @@ TEST_F(UntrustedResults, MergeAndDiffRefuseResultsBeyondTheirLimits) {
       j["key_figures"].push_back(k);
     }
   });
-  CmdRun r = armstudy("merge " + figures.string());
+  CmdRun r = run_cli("merge " + figures.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("key figures; expected at most 200"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(figures / "summary.md")) << "nothing is written";
   EXPECT_FALSE(fs::exists(figures / "sweep"));
-  r = armstudy("diff " + figures.string() + " " + figures.string() + " --out " +
-               (root_ / "limit_diff").string());
+  r = run_cli("diff " + figures.string() + " " + figures.string() + " --out " +
+              (root_ / "limit_diff").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("key figures; expected at most 200"), std::string::npos) << r.output;
   // a results.json larger than 16 MiB is not parsed
   const fs::path large = copy_run("large_results");
   fs::resize_file(large / "a" / "results.json", (16u << 20) + 1);
-  r = armstudy("merge " + large.string());
+  r = run_cli("merge " + large.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("16777217 bytes; expected a results.json of at most 16777216 bytes"),
             std::string::npos)
@@ -143,8 +130,8 @@ TEST_F(UntrustedResults, ControlBytesGiveWellFormedJunitAndNoRawControlInSummary
   // bytes that are not UTF-8 cannot be in JSON text: they come in as a folder's name
   const fs::path weird = d / ("b\x1b[2Jx\x01" + std::string("\xff"));
   fs::create_directories(weird);
-  write(weird / "results.json", "{\"study\": \"" + std::string("p\\u001b[31m") + "\", " + "}");
-  const CmdRun r = armstudy("merge " + d.string());
+  write_file(weird / "results.json", "{\"study\": \"" + std::string("p\\u001b[31m") + "\", " + "}");
+  const CmdRun r = run_cli("merge " + d.string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << "no raw escape on the terminal";
   const std::string md = slurp(d / "summary.md");
@@ -155,7 +142,7 @@ TEST_F(UntrustedResults, ControlBytesGiveWellFormedJunitAndNoRawControlInSummary
   EXPECT_EQ(md.find('\x7f'), std::string::npos);
   EXPECT_EQ(md.find('\xff'), std::string::npos);
   EXPECT_NE(md.find("\\x1B[2J"), std::string::npos) << md;
-  const CmdRun parse = shell(
+  const CmdRun parse = run_shell(
       "python3 -c \"import sys, xml.etree.ElementTree as E; r = E.parse(sys.argv[1]).getroot(); "
       "print(r.get('failures'))\" " +
       (d / "junit.xml").string());
@@ -167,8 +154,8 @@ TEST_F(UntrustedResults, TwoResultsForOneCaseIdAreAFailedCaseNamingBothFolders) 
   const fs::path first = copy_run("dup_1"), second = copy_run("dup_2");
   // a stale passing copy in another folder under another folder name
   fs::rename(second / "a", second / "a-old");
-  const CmdRun r = armstudy("merge " + first.string() + " " + second.string() + " --out " +
-                            (root_ / "dup_out").string());
+  const CmdRun r = run_cli("merge " + first.string() + " " + second.string() + " --out " +
+                           (root_ / "dup_out").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("case 'a' has results in " + (first / "a").string() + " and " +
                           (second / "a-old").string()),
@@ -182,22 +169,22 @@ TEST_F(UntrustedResults, SkipRedoesAPassedCaseWhoseListedFilesAreGoneOrChanged) 
   const fs::path out = copy_run("skip_files");
   const std::string run =
       "run --no-render --out " + out.string() + " " + (root_ / "a.yaml").string();
-  CmdRun r = armstudy(run);
+  CmdRun r = run_cli(run);
   ASSERT_NE(r.output.find("skipped 1 case(s)"), std::string::npos) << r.output;
   const json files = json::parse(slurp(out / "a" / "results.json"))["files"];
   ASSERT_GE(files.size(), 1u);
   const fs::path listed = out / "a" / files[0]["path"].get<std::string>();
   const std::string bytes = slurp(listed);
   fs::remove(listed);
-  r = armstudy(run);
+  r = run_cli(run);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("skipped"), std::string::npos) << "a deleted file: " << r.output;
   EXPECT_EQ(slurp(listed), bytes);
   // the same size, other bytes
   std::string changed = bytes;
   changed[0] = changed[0] == 'x' ? 'y' : 'x';
-  write(listed, changed);
-  r = armstudy(run);
+  write_file(listed, changed);
+  r = run_cli(run);
   EXPECT_EQ(r.output.find("skipped"), std::string::npos) << "a changed file: " << r.output;
   EXPECT_EQ(slurp(listed), bytes);
 }
@@ -206,9 +193,9 @@ TEST_F(UntrustedResults, AnErroredCaseIsAFailedCaseInSummaryAndJunit) {
   const fs::path out = copy_run("errored");
   // writes beyond 64 KiB fail (EFBIG, "File too large"): the case's report cannot be written,
   // the small summary.md and junit.xml can; the earlier, passed report of the case stays
-  const CmdRun r = shell("bash -c \"trap '' XFSZ; ulimit -f 64; exec " + kBin +
-                         " run --force --no-render --out " + out.string() + " " +
-                         (root_ / "a.yaml").string() + "\"");
+  const CmdRun r = run_shell("bash -c \"trap '' XFSZ; ulimit -f 64; exec " + kBin +
+                             " run --force --no-render --out " + out.string() + " " +
+                             (root_ / "a.yaml").string() + "\"");
   ASSERT_EQ(r.exit_code, 3) << r.output;
   const std::string md = slurp(out / "summary.md");
   EXPECT_EQ(md.rfind("# armstudy: 1 case(s), 1 failed", 0), 0u) << md;
@@ -218,21 +205,21 @@ TEST_F(UntrustedResults, AnErroredCaseIsAFailedCaseInSummaryAndJunit) {
 
 TEST(SweepManifest, MergeOfAPartialSweepOrAnEmptyFolderFailsNamingWhatIsMissing) {
   const fs::path d = fresh_dir("merge_manifest");
-  write(d / "base.yaml", "study: placement\nname: m\nplacement: {length_fraction: 0.5}\n");
-  write(d / "s.yaml",
-        "sweep: s\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
-        "    values: [0.4, 0.6]\n");
-  ASSERT_EQ(armstudy("sweep expand " + (d / "s.yaml").string() + " --out " + (d / "cases").string())
+  write_file(d / "base.yaml", "study: placement\nname: m\nplacement: {length_fraction: 0.5}\n");
+  write_file(d / "s.yaml",
+             "sweep: s\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
+             "    values: [0.4, 0.6]\n");
+  ASSERT_EQ(run_cli("sweep expand " + (d / "s.yaml").string() + " --out " + (d / "cases").string())
                 .exit_code,
             0);
   const json ids = json::parse(slurp(d / "cases" / "sweep-manifest.json"))["cases"];
   ASSERT_EQ(ids.size(), 2u);
   // shard 0 of 2 only: the other case never ran
-  CmdRun r = armstudy("run --no-render --shard 0/2 --out " + (d / "out").string() + " " +
-                      (d / "cases").string());
+  CmdRun r = run_cli("run --no-render --shard 0/2 --out " + (d / "out").string() + " " +
+                     (d / "cases").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(d / "out" / "sweep-manifest.json"));
-  r = armstudy("merge " + (d / "out").string());
+  r = run_cli("merge " + (d / "out").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const std::string missing = ids[1].get<std::string>();
   EXPECT_NE(r.output.find("1 case(s) of sweep 's'"), std::string::npos) << r.output;
@@ -242,12 +229,12 @@ TEST(SweepManifest, MergeOfAPartialSweepOrAnEmptyFolderFailsNamingWhatIsMissing)
   EXPECT_NE(md.find(missing), std::string::npos) << md;
   // an empty folder: nothing merged is not "0 failed"
   fs::create_directories(d / "empty");
-  r = armstudy("merge " + (d / "empty").string());
+  r = run_cli("merge " + (d / "empty").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_FALSE(fs::exists(d / "empty" / "summary.md"));
   // given the manifest, an empty folder names every case
-  r = armstudy("merge " + (d / "empty").string() + " --manifest " +
-               (d / "cases" / "sweep-manifest.json").string());
+  r = run_cli("merge " + (d / "empty").string() + " --manifest " +
+              (d / "cases" / "sweep-manifest.json").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("2 case(s) of sweep 's'"), std::string::npos) << r.output;
   fs::remove_all(d);

@@ -17,12 +17,7 @@ namespace armstudy::report {
 namespace {
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using armstudy::testing::slurp;
 
 size_t lines(const fs::path& p) {
   std::ifstream in(p);

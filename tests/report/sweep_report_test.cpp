@@ -18,7 +18,7 @@ using nlohmann::json;
 
 using armstudy::testing::slurp;
 
-fs::path fresh_dir(const std::string& name) {
+fs::path sweep_dir(const std::string& name) {
   return armstudy::testing::fresh_dir("sweep_report_test_" + name);
 }
 
@@ -42,7 +42,7 @@ json table() {
 }
 
 TEST(SweepReport, DrawsEveryKeyFigureOverTheNumericAxisInTheStudysOrder) {
-  const fs::path dir = fresh_dir("plots");
+  const fs::path dir = sweep_dir("plots");
   EXPECT_EQ(write_sweep_report(dir, table(), "demo-sweep"), 2);
   const std::string html = slurp(dir / "index.html");
   EXPECT_NE(html.find("demo-sweep"), std::string::npos);
@@ -73,7 +73,7 @@ TEST(SweepReport, WithoutANumericParameterSaysSoAndDrawsNothing) {
   for (auto& r : t["rows"])
     r["parameters"]["arm.ratio"] = "a" + r["parameters"]["arm.ratio"].get<std::string>();
   for (auto& r : t["rows"]) r["parameters"]["task.fraction"] = json::array({1, 2});
-  const fs::path dir = fresh_dir("none");
+  const fs::path dir = sweep_dir("none");
   EXPECT_EQ(write_sweep_report(dir, t, "no-axis"), 0);
   EXPECT_NE(slurp(dir / "index.html").find("no axis to plot over"), std::string::npos);
   fs::remove_all(dir);

@@ -13,16 +13,16 @@
 namespace armstudy::scene {
 namespace {
 
-struct Motion {
+struct CheckedMotion {
   std::vector<core::JointVector> q, qd, qdd, tau;
 };
 
-Motion throw_motion(const studies::ThrowingSpec& spec) {
+CheckedMotion throw_motion(const studies::ThrowingSpec& spec) {
   const studies::ThrowSetup setup = studies::make_throw_setup(spec);
   const auto profile = studies::eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release,
                                             spec.release_rate, spec.tf, spec.stages);
   const studies::ThrowMotion tm = studies::record_motion(setup, spec, profile);
-  Motion m;
+  CheckedMotion m;
   for (size_t k = 0; k < tm.series.t.size(); ++k) {
     m.q.push_back(tm.series.q[k]);
     m.qd.push_back(tm.series.qd[k]);
@@ -37,7 +37,7 @@ TEST(MujocoCheck, ThrowingMotionAgreesWithMujocoIncludingTheRollingBall) {
     studies::ThrowingSpec spec;
     spec.arm.motor2 = mount;
     spec.arm.rotor_inertia = 2e-7;  // rotors as spinners (kOnBase: rigid with link 2)
-    const Motion m = throw_motion(spec);
+    const CheckedMotion m = throw_motion(spec);
     ASSERT_GT(m.q.size(), 50u);
     const MujocoAgreement a =
         mujoco_agreement(studies::make_tray_arm(spec.arm), m.q, m.qd, m.qdd, m.tau);
@@ -51,15 +51,15 @@ TEST(MujocoCheck, ThrowingMotionAgreesWithMujocoIncludingTheRollingBall) {
 
 TEST(MujocoCheck, WrongTorquesOrAccelerationsFailTheCheck) {
   const studies::ThrowingSpec spec;
-  Motion m = throw_motion(spec);
+  CheckedMotion m = throw_motion(spec);
   const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
-  Motion bad_tau = m;
+  CheckedMotion bad_tau = m;
   bad_tau.tau[40][1] *= 1.001;
   const MujocoAgreement a =
       mujoco_agreement(chain, bad_tau.q, bad_tau.qd, bad_tau.qdd, bad_tau.tau);
   EXPECT_FALSE(mujoco_checks(a, true)[0].passed);
   EXPECT_EQ(a.worst_sample, 40);
-  Motion bad_qdd = m;
+  CheckedMotion bad_qdd = m;
   bad_qdd.qdd[30][3] += 0.01 * std::abs(bad_qdd.qdd[30][3]) + 1.0;
   const MujocoAgreement b =
       mujoco_agreement(chain, bad_qdd.q, bad_qdd.qd, bad_qdd.qdd, bad_qdd.tau);
@@ -83,7 +83,7 @@ TEST(MujocoCheck, PlacementOptimumAgreesWithMujoco) {
   ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
   const auto& s = r.cases.at(0).series;
   ASSERT_GT(s.t.size(), 50u);
-  Motion m;
+  CheckedMotion m;
   for (size_t k = 0; k < s.t.size(); ++k) {
     m.q.push_back(core::JointVector(s.q[k]));
     m.qd.push_back(core::JointVector(s.qd[k]));

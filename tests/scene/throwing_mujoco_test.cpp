@@ -19,7 +19,7 @@ namespace armstudy::scene {
 namespace {
 namespace st = studies;
 
-std::string sci(double v) {
+std::string sci3(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", v);
   return b;
@@ -104,7 +104,7 @@ void replay_in_mujoco(st::Motor2Mount mount) {
   EXPECT_LT(worst, 5e-3) << "at t = " << worst_t << " s";
   ::testing::Test::RecordProperty(
       mount == st::Motor2Mount::kOnBase ? "max_q_delta_rad_on_base" : "max_q_delta_rad",
-      sci(worst));
+      sci3(worst));
   EXPECT_EQ(take_mujoco_warnings(), "");
 }
 

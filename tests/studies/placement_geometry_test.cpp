@@ -11,7 +11,7 @@
 namespace armstudy::studies::placement {
 namespace {
 
-constexpr double kDeg = core::kPi / 180;
+using armstudy::testing::kDeg;
 const Annulus kThesis = annulus(0.4, 0.2);
 
 TEST(PlacementGeometry, LmaxIsTheChordOfTheOuterCircleTangentToTheInner) {

@@ -14,7 +14,7 @@
 namespace armstudy::studies::placement {
 namespace {
 
-constexpr double kDeg = core::kPi / 180;
+using armstudy::testing::kDeg;
 
 // a coarse sweep (fast); the refinement has to do the rest
 Spec small_spec(double fraction) {

@@ -12,8 +12,8 @@
 namespace armstudy::studies::placement {
 namespace {
 
+using armstudy::testing::kDeg;
 using testing::near_rel;
-constexpr double kDeg = core::kPi / 180;
 
 Spec thesis_spec(double fraction) {
   Spec s;

@@ -15,12 +15,12 @@
 namespace armstudy::studies {
 namespace {
 
-struct Case {
+struct ShortcutCase {
   ThrowingSpec spec;
   ThrowSetup setup;
   VelocityProfile eq8;
   Eigen::Vector2d delta;
-  explicit Case(int stages = 16, int steps = 20) {
+  explicit ShortcutCase(int stages = 16, int steps = 20) {
     spec.stages = stages;
     spec.steps_per_stage = steps;
     setup = make_throw_setup(spec);
@@ -54,7 +54,7 @@ TEST(ThrowShortcuts, AStoppedSimulationIsInfeasibleAndAFinishedOneIsTheFullOne) 
   // the points on both sides of the feasibility boundary found by bisection: the last
   // feasible one is a hair inside a limit
   for (Motor2Mount mount : {Motor2Mount::kOnLink1, Motor2Mount::kOnBase}) {
-    Case c;
+    ShortcutCase c;
     c.spec.arm.motor2 = mount;
     c.loosen();
     ASSERT_TRUE(simulate_profile(c.setup, c.eq8, nullptr, 0.02).feasible);
@@ -105,7 +105,7 @@ TEST(ThrowShortcuts, AStoppedSimulationIsInfeasibleAndAFinishedOneIsTheFullOne) 
 TEST(ThrowShortcuts, IdpWithTheEarlyStopMakesTheChoicesOfFullSimulations) {
   // wide limits but the power: 1 % inside its limit (with the back-off) at the start, so
   // that many candidates break it, some early in the throw
-  Case c(8, 8);
+  ShortcutCase c(8, 8);
   c.loosen();
   c.spec.power_max = simulate_profile(c.setup, c.eq8).max_power / 0.97;
   c.setup = make_throw_setup(c.spec);
@@ -131,7 +131,7 @@ TEST(ThrowShortcuts, IdpWithTheEarlyStopMakesTheChoicesOfFullSimulations) {
 
 TEST(ThrowShortcuts, ANeighbourResumedFromCheckpointsEqualsItsFullSimulation) {
   for (Motor2Mount mount : {Motor2Mount::kOnLink1, Motor2Mount::kOnBase}) {
-    Case c;
+    ShortcutCase c;
     c.spec.arm.motor2 = mount;
     c.spec.arm.rotor_inertia = 2e-6;
     c.setup = make_throw_setup(c.spec);

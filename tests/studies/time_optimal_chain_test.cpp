@@ -10,15 +10,12 @@
 #include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solve.hpp"
 #include "testing/three_link.hpp"
+#include "testing/time_optimal_solvers.hpp"
 
 namespace armstudy::studies::time_optimal {
 namespace {
 
-const SolverResult& solver(const Result& r, const std::string& name) {
-  for (const auto& s : r.solvers)
-    if (s.name == name) return s;
-  throw std::runtime_error("no solver " + name);
-}
+using armstudy::testing::solver;
 
 TEST(TimeOptimalChain, ATipPathAndTheSameMotionGivenInJointSpaceTakeTheSameTime) {
   // the source's arm and line, once as a tip path (inverse kinematics), once as a spline in

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "studies/time_optimal/path.hpp"
+#include "testing/time_optimal_solvers.hpp"
 
 namespace armstudy::studies::time_optimal {
 namespace {
@@ -26,11 +27,7 @@ Spec line_spec(Eigen::Vector2d a, Eigen::Vector2d b) {
   return spec;
 }
 
-const SolverResult& solver(const Result& r, const std::string& name) {
-  for (const auto& s : r.solvers)
-    if (s.name == name) return s;
-  throw std::runtime_error("no solver " + name);
-}
+using armstudy::testing::solver;
 
 // distance of the segment a-b from the origin, m
 double clearance(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {

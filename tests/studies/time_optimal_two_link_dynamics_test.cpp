@@ -15,7 +15,7 @@
 namespace armstudy::studies::time_optimal {
 namespace {
 
-core::PlanarChain rich_arm(double gravity) {
+core::PlanarChain rich_arm_with_rotor(double gravity) {
   core::PlanarChain c;
   c.links = {{0.5, 2.0, 0.2, 0.03, 0.04, true}, {0.4, 1.5, 0.25, -0.02, 0.02, true}};
   c.point_masses = {{1, 0.4, 0.01, 0.7}, {0, 0.3, -0.02, 0.2}};
@@ -33,7 +33,8 @@ core::PlanarChain rich_arm(double gravity) {
 TEST(TwoLinkPathDynamics, EqualsTheGenericChainTo1e12) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> ang(-3.0, 3.0), d1(-5.0, 5.0), d2(-50.0, 50.0);
-  for (const core::PlanarChain& chain : {rich_arm(0.0), rich_arm(9.81), default_arm(1.0, 1.0)}) {
+  for (const core::PlanarChain& chain :
+       {rich_arm_with_rotor(0.0), rich_arm_with_rotor(9.81), default_arm(1.0, 1.0)}) {
     const TwoLinkDynamics dyn = make_two_link_dynamics(chain);
     for (int k = 0; k < 2000; ++k) {
       core::JointVector q(2), dq(2), ddq(2), a, b, c;

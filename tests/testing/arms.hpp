@@ -14,6 +14,9 @@
 
 namespace armstudy::testing {
 
+/// One degree in radians.
+inline constexpr double kDeg = core::kPi / 180;
+
 inline ::testing::AssertionResult near_rel(double a, double b, double tol) {
   const double scale = std::max({1.0, std::abs(a), std::abs(b)});
   const double d = std::abs(a - b);

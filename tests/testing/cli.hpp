@@ -20,6 +20,9 @@
 
 namespace armstudy::testing {
 
+/// The armstudy command under test (the ARMSTUDY_BINARY the test target defines).
+inline const std::string kBin = ARMSTUDY_BINARY;
+
 struct CliRun {
   int exit_code;
   std::string output;  ///< standard output and standard error, interleaved

@@ -1,5 +1,7 @@
 #pragma once
-// File helpers shared by the tests: read a whole file, make a fresh temporary folder.
+// File helpers shared by the tests: the source tree, read or write a whole file, make a fresh
+// temporary folder. Test files use these instead of helpers of their own of the same name, so
+// that a folder's files compile together in unity batches (cmake/unity_build.cmake).
 
 #include <filesystem>
 #include <fstream>
@@ -8,12 +10,20 @@
 
 namespace armstudy::testing {
 
+/// The source tree (the ARMSTUDY_SOURCE_DIR the test targets define).
+inline const std::filesystem::path kSource = ARMSTUDY_SOURCE_DIR;
+
 /// The bytes of `p` ("" when it cannot be read).
 inline std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// `text` as the whole of `p` (replaced if it exists).
+inline void write_file(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary | std::ios::trunc) << text;
 }
 
 /// An empty folder `armstudy_<name>` under the system's temporary folder (removed first).
