@@ -3,6 +3,7 @@
 // zero over a stretch far shorter than an interval, and a uniform grid converges only like
 // N^-1/2), the grid is refined where the halving change arises. The headline durations
 // against references computed independently of armstudy (TOPP-RA) or on far finer grids.
+// Measured: 20-115 ms each, 0.24 s for the five (load 6-11 on 2 cores).
 #include <gtest/gtest.h>
 
 #include <cmath>

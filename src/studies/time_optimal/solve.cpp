@@ -218,6 +218,9 @@ RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& gri
 // exact.tolerance_rel, and how it was made.
 struct GradedGrid {
   std::vector<double> nodes;
+  /// the points the uniform study and the grading evaluated (of the same path; the study on
+  /// the graded grid takes only the new ones)
+  ExactPointCache* points = nullptr;
   int uniform_points = 0;
   double uniform_change = NAN;
   int rounds = 0;
@@ -245,19 +248,31 @@ std::vector<double> interval_changes(const std::vector<double>& grid, const std:
 // first), until the relative change of the duration is within ex.tolerance_rel, the grid
 // holds ex.max_grid_points nodes (capped) or a solve fails (the study's own solves say why).
 // Near a singular pose this grades the grid geometrically towards it.
+// The first round takes the uniform grid's solutions the study already has (grid_sd on
+// `grid`, fine_sd on its halved grid).
 GradedGrid grade_grid(const Problem& pb, std::vector<double> grid, int checks,
-                      const ExactSettings& ex, double uniform_change, ExactPointCache* cache) {
+                      const ExactSettings& ex, double uniform_change, ExactPointCache* cache,
+                      const std::vector<double>& grid_sd, const std::vector<double>& fine_sd) {
   GradedGrid out;
   out.uniform_points = static_cast<int>(grid.size());
   out.uniform_change = uniform_change;
+  out.points = cache;
   constexpr int kMaxRounds = 200;
   for (int round = 0; round < kMaxRounds; ++round) {
     const std::vector<double> fine = halved(grid);
-    const SolverOutput og = solve_exact(pb, grid, std::vector<int>(grid.size() - 1, checks), cache);
-    if (!og.solved) break;
-    const SolverOutput oh = solve_exact(pb, fine, std::vector<int>(fine.size() - 1, checks), cache);
-    if (!oh.solved) break;
-    if (std::abs(og.duration / oh.duration - 1) <= ex.tolerance_rel) break;
+    SolverOutput og, oh;
+    if (round == 0) {
+      og.solved = oh.solved = true;
+      og.profile.sd = grid_sd;
+      oh.profile.sd = fine_sd;
+      og.duration = oh.duration = 0;  // (the study found the change over the tolerance)
+    } else {
+      og = solve_exact(pb, grid, std::vector<int>(grid.size() - 1, checks), cache);
+      if (!og.solved) break;
+      oh = solve_exact(pb, fine, std::vector<int>(fine.size() - 1, checks), cache);
+      if (!oh.solved) break;
+      if (std::abs(og.duration / oh.duration - 1) <= ex.tolerance_rel) break;
+    }
     const int room = ex.max_grid_points - static_cast<int>(grid.size());
     if (room <= 0) {
       out.capped = true;
@@ -552,10 +567,13 @@ Result solve_grid(const Spec& spec, const ProgressFn& progress, const GradedGrid
   // (on the side thread while the exact solver starts: the solver's answer, or its failure,
   // counts only once the path has passed)
   report(0.02, "checking the path");
-  SideTask<std::string> path_check(
-      [&pb, probes = std::max(4 * spec.exact.grid_points, 4000), &range = spec.joint_path.range] {
-        return path_trouble(pb, probes, range);
-      });
+  // (on the graded grid the uniform grid's study has checked it already)
+  SideTask<std::string> path_check;
+  if (!graded)
+    path_check = SideTask<std::string>(
+        [&pb, probes = std::max(4 * spec.exact.grid_points, 4000), &range = spec.joint_path.range] {
+          return path_trouble(pb, probes, range);
+        });
   const auto path_passed = [&] {
     if (!path_check.valid()) return true;
     const std::string trouble = path_check.get();
@@ -582,7 +600,8 @@ Result solve_grid(const Spec& spec, const ProgressFn& progress, const GradedGrid
 
   // exact solver
   report(0.05, "exact solver (reachability)");
-  ExactPointCache points(pb);  // the re-solves and the halved grid evaluate only new points
+  ExactPointCache own_points(pb);  // the re-solves and the halved grid evaluate only new points
+  ExactPointCache& points = graded && graded->points ? *graded->points : own_points;
   const auto t_exact = std::chrono::steady_clock::now();
   std::vector<double> grid;
   std::vector<int> exact_checks;
@@ -695,8 +714,9 @@ Result solve_grid(const Spec& spec, const ProgressFn& progress, const GradedGrid
         res.grid.change > spec.exact.tolerance_rel &&
         static_cast<int>(grid.size()) < spec.exact.max_grid_points) {
       report(0.11, "grading the exact solver's grid");
-      const GradedGrid gg = grade_grid(pb, grid, spec.exact.checks_per_interval, spec.exact,
-                                       res.grid.change, &points);
+      const GradedGrid gg =
+          grade_grid(pb, grid, spec.exact.checks_per_interval, spec.exact, res.grid.change, &points,
+                     res.solvers.front().node_sd, refined->solution.profile.sd);
       return solve_grid(spec, progress, &gg);
     }
     // a third, coarser grid (about half the intervals) for the observed order
