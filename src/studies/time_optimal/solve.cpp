@@ -227,7 +227,7 @@ struct GradedGrid {
   bool capped = false;
 };
 
-// |time of interval k on `grid`| - |time of its two halves on halved(grid)|, per interval
+// per interval k of `grid`: |its time on grid - the time of its two halves on halved(grid)|
 std::vector<double> interval_changes(const std::vector<double>& grid, const std::vector<double>& sd,
                                      const std::vector<double>& fine,
                                      const std::vector<double>& fine_sd) {
