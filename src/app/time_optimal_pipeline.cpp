@@ -233,11 +233,16 @@ Section TimeOptimalRun::section() const {
                                                   joint_space ? NAN : g.min_sin_q2,
                                                   joint_space ? NAN : g.path_min_sin_q2,
                                                   g.text,
+                                                  std::nullopt,
                                                   std::nullopt};
     if (g.extrapolation_computed)
       o.grid_convergence->extrapolation =
           Section::Extrapolation{g.coarse_points, g.coarse_duration, g.order,
                                  g.asymptotic,    g.extrapolated,    g.extrapolation_error};
+    if (g.graded)
+      o.grid_convergence->graded =
+          Section::Graded{g.uniform_points,   g.uniform_change, g.graded_rounds,
+                          g.graded_tolerance, g.max_points,     g.capped};
   }
   if (replay_) o.mujoco_replay = replay_section(*replay_);
   return o;

@@ -365,6 +365,10 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
         e->integer_or("checks_per_interval", spec.exact.checks_per_interval, 1, 100);
     spec.exact.grid_tolerance =
         e->number_or("grid_tolerance", spec.exact.grid_tolerance, NumberRule::positive(""));
+    spec.exact.tolerance_rel =
+        e->number_or("tolerance_rel", spec.exact.tolerance_rel, NumberRule::non_negative(""));
+    spec.exact.max_grid_points =
+        e->integer_or("max_grid_points", spec.exact.max_grid_points, 3, 1000000);
     e->finish();
   }
   spec.motion_steps = t->integer_or("motion_steps", spec.motion_steps, 1, 100000);

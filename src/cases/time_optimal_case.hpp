@@ -51,6 +51,11 @@
 ///                            # solver runs again with every grid interval halved (default
 ///                            # 1e-3); beyond it the check exact_grid_converged FAILS the case
 ///                            # and names the stretch of the path where the grid is too coarse
+///     tolerance_rel: 1.0e-4  # graded grid: when the uniform grid changes by more than this
+///                            # with every interval halved, its intervals holding half the
+///                            # change are bisected, round after round, until the change is
+///                            # within it (default 1e-4, >= 0; 0: keep the uniform grid)
+///     max_grid_points: 200000 # most nodes of the graded grid (default 200000, at most 1e6)
 ///   motion_steps: 200        # equal time steps of the motion the frames show (default 200)
 /// ```
 

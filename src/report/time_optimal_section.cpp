@@ -238,6 +238,24 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                        format_sig(g.change, 3), format_sig(g.tolerance, 3),
                        passed ? "passed" : "FAILED"});
     conv.table(std::move(gt));
+    if (g.graded) {
+      const auto& gr = *g.graded;
+      conv.paragraph(
+          "Graded grid: the case's " + as_text(gr.uniform_points) + " uniform points changed by " +
+          format_sig(gr.uniform_change, 3) +
+          " with every interval halved, more than exact.tolerance_rel = " +
+          format_sig(gr.tolerance_rel, 3) +
+          ", so the exact solver refined the grid where the "
+          "change arose (near a singular pose the maximum velocity curve falls over a stretch "
+          "far shorter than an interval, and a uniform grid converges only like N^-1/2): " +
+          as_text(gr.rounds) + " round(s) of bisecting the intervals holding half the change, to " +
+          as_text(g.grid_points) + " points" +
+          (gr.capped ? ", stopped by the node cap exact.max_grid_points = " +
+                           as_text(gr.max_grid_points) + " before reaching the tolerance."
+                     : ".") +
+          " The table's grid is the graded one, and the coarser grid of the extrapolation is "
+          "every other node of it.");
+    }
     if (g.extrapolation) {
       const auto& x = *g.extrapolation;
       conv.paragraph(

@@ -11,7 +11,10 @@
 //     (on this problem it meets every limit to 1e-6 at once, so nothing is re-solved)
 //   BM_TimeOptimalAnchorStudy: the study's default exact solve with its re-checks (dense
 //     resampling, the doubled check points where it fails, the halved grid), DP and Complex off;
-//     the path check, the maximum velocity curve and the sampled motion are in it too
+//     the path check, the maximum velocity curve and the sampled motion are in it too. The
+//     1000 uniform intervals change by 1.9e-4 when halved, over exact.tolerance_rel (1e-4), so
+//     the study grades the grid (1422 points, 2 rounds) and runs again on it: 6.6-6.9 ms of
+//     process CPU per solve against 2.5 ms before grading (load 6.6 on 2 cores)
 #include <benchmark/benchmark.h>
 
 #include <time.h>

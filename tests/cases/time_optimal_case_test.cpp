@@ -57,6 +57,8 @@ TEST(TimeOptimalCase, DefaultsAreTheSourcesArmAndTheDocumentedSettings) {
   EXPECT_TRUE(s.complex.enabled);
   EXPECT_EQ(s.exact.grid_points, 1000);
   EXPECT_EQ(s.exact.grid_tolerance, 1e-3);
+  EXPECT_EQ(s.exact.tolerance_rel, 1e-4);
+  EXPECT_EQ(s.exact.max_grid_points, 200000);
 }
 
 TEST(TimeOptimalCase, ReadsEveryKeyAndAnEmptyConvergenceList) {
@@ -69,7 +71,7 @@ time_optimal:
   acceleration_limit_rad_s2: [7, 8]
   dp: {segments: 12, levels: 50, checks_per_segment: 3, states: [joint1_velocity, path_speed], convergence_segments: []}
   complex: {enabled: false, max_iterations: 10, tolerance: 1.0e-6, seed: 4}
-  exact: {grid_points: 300, checks_per_interval: 5, grid_tolerance: 2.5e-3}
+  exact: {grid_points: 300, checks_per_interval: 5, grid_tolerance: 2.5e-3, tolerance_rel: 0, max_grid_points: 5000}
   motion_steps: 40
 )");
   ASSERT_TRUE(l.errors.empty()) << l.errors;
@@ -88,6 +90,8 @@ time_optimal:
   EXPECT_EQ(s.exact.grid_points, 300);
   EXPECT_EQ(s.exact.checks_per_interval, 5);
   EXPECT_EQ(s.exact.grid_tolerance, 2.5e-3);
+  EXPECT_EQ(s.exact.tolerance_rel, 0.0);
+  EXPECT_EQ(s.exact.max_grid_points, 5000);
   EXPECT_EQ(s.motion_steps, 40);
 }
 
@@ -98,6 +102,15 @@ time_optimal:
   exact: {grid_tolerance: 0}
 )");
   EXPECT_NE(l.errors.find("grid_tolerance"), std::string::npos) << l.errors;
+}
+
+TEST(TimeOptimalCase, AGradingToleranceMustNotBeNegative) {
+  const Loaded l = load(R"(
+time_optimal:
+  path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}
+  exact: {tolerance_rel: -1.0e-4}
+)");
+  EXPECT_NE(l.errors.find("tolerance_rel"), std::string::npos) << l.errors;
 }
 
 TEST(TimeOptimalCase, APolylineNeedsTwoSegmentsPerPiece) {

@@ -1,6 +1,7 @@
 // The time-optimal pipeline records its grid-convergence check and MuJoCo's dynamic replay
-// in results.json and its checks: a near-singular line fails exact_grid_converged
-// and says so in its message; a regular one passes; both replay within their tolerance.
+// in results.json and its checks: a near-singular line is solved on a graded grid and says
+// so (on its uniform grid it fails exact_grid_converged and says so in its message); a
+// regular one passes; both replay within their tolerance.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -25,7 +26,7 @@ struct CaseRun {
   std::vector<studies::Check> checks;
 };
 
-CaseRun run_case_text(const std::string& end_point) {
+CaseRun run_case_text(const std::string& end_point, const std::string& exact_more = "") {
   const fs::path dir =
       fs::temp_directory_path() / ("armstudy_to_json_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -36,7 +37,8 @@ CaseRun run_case_text(const std::string& end_point) {
                              "]}\n"
                              "  dp: {states: [path_speed], convergence_segments: []}\n"
                              "  complex: {enabled: false}\n"
-                             "  exact: {grid_points: 600}\n";
+                             "  exact: {grid_points: 600" +
+                             exact_more + "}\n";
   LoadedCase c = load_case(file.string());
   CaseRun r;
   r.status = c.run->solve({});
@@ -72,18 +74,42 @@ TEST(TimeOptimalResultsJson, RegularLineRecordsAConvergedGridAndAFaithfulReplay)
   ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
   const json& g = r.results["grid_convergence"];
   EXPECT_TRUE(g["passed"].get<bool>()) << g["text"];
-  EXPECT_EQ(g["refined_points"].get<int>(), 1199);
+  EXPECT_EQ(g["refined_points"].get<int>(), 2 * g["grid_points"].get<int>() - 1);
   EXPECT_TRUE(check(r, "exact_grid_converged").passed);
   expect_replay_recorded(r.results["mujoco_replay"]);
   EXPECT_TRUE(check(r, "mujoco_dynamic_replay").passed);
 }
 
-TEST(TimeOptimalResultsJson, NearSingularLineFailsItsGridCheckAndSaysSo) {
+std::string near_singular_end() {
   // ends 1e-8 m inside the outer boundary, at (0.9 - 1e-8) m from the base
   const double r0 = 0.9 - 1e-8, a = 1.0;
   char end[80];
   std::snprintf(end, sizeof end, "[%.17g, %.17g]", r0 * std::cos(a), r0 * std::sin(a));
-  const CaseRun r = run_case_text(end);
+  return end;
+}
+
+TEST(TimeOptimalResultsJson, NearSingularLineRecordsItsGradedGrid) {
+  const CaseRun r = run_case_text(near_singular_end());
+  ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
+  const json& g = r.results["grid_convergence"];
+  EXPECT_TRUE(g["passed"].get<bool>()) << g["text"];
+  ASSERT_TRUE(g.contains("graded") && g["graded"].is_object()) << g;
+  const json& gr = g["graded"];
+  EXPECT_EQ(gr["uniform_points"].get<int>(), 600);
+  EXPECT_GT(gr["uniform_change"].get<double>(), 0.01);
+  EXPECT_GT(gr["rounds"].get<int>(), 0);
+  EXPECT_EQ(gr["tolerance_rel"].get<double>(), 1e-4);
+  EXPECT_FALSE(gr["capped"].get<bool>());
+  EXPECT_GT(g["grid_points"].get<int>(), 600);
+  EXPECT_LE(g["change"].get<double>(), 1e-4);
+  EXPECT_LT(g["path_min_abs_sin_q2"].get<double>(), 0.01);
+  EXPECT_TRUE(check(r, "exact_grid_converged").passed);
+  EXPECT_EQ(r.message.find("NOT converged"), std::string::npos) << r.message;
+  expect_replay_recorded(r.results["mujoco_replay"]);
+}
+
+TEST(TimeOptimalResultsJson, NearSingularLineOnItsUniformGridFailsItsGridCheckAndSaysSo) {
+  const CaseRun r = run_case_text(near_singular_end(), ", tolerance_rel: 0");
   ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
   const json& g = r.results["grid_convergence"];
   EXPECT_FALSE(g["passed"].get<bool>());

@@ -121,6 +121,18 @@ struct GridConvergence {
   bool asymptotic = false;
   double extrapolated = NAN;         ///< s, the headline duration
   double extrapolation_error = NAN;  ///< s
+  /// The graded grid (ExactSettings::tolerance_rel): whether the case's uniform grid was
+  /// refined where its halving change arose, the uniform grid's points and change, the
+  /// bisection rounds, the target and whether the node cap (max_grid_points) stopped it.
+  /// When graded, grid_points is the graded grid's and the coarser grid of the extrapolation
+  /// is every other node of it (a nested coarsening).
+  bool graded = false;
+  int uniform_points = 0;
+  double uniform_change = NAN;
+  int graded_rounds = 0;
+  double graded_tolerance = 0;
+  int max_points = 0;
+  bool capped = false;
 };
 
 struct Result {

@@ -72,6 +72,14 @@ struct ResultsSection {
     bool asymptotic = false;
     double duration_s = 0, error_s = 0;
   };
+  struct Graded {
+    int uniform_points = 0;
+    double uniform_change = 0;
+    int rounds = 0;
+    double tolerance_rel = 0;
+    int max_grid_points = 0;
+    bool capped = false;
+  };
   struct GridConvergence {
     int grid_points = 0, refined_points = 0;
     bool refined_solved = false;
@@ -82,6 +90,7 @@ struct ResultsSection {
     double share = 0, max_sd = 0, min_abs_sin_q2 = 0, path_min_abs_sin_q2 = 0;
     std::string text;
     std::optional<Extrapolation> extrapolation;
+    std::optional<Graded> graded;
   };
   Path path;
   double path_length = 0;
@@ -199,8 +208,20 @@ void fields(V& v, ResultsSection::Extrapolation& x) {
   v("error_s", x.error_s, "its error estimate");
 }
 template <class V>
+void fields(V& v, ResultsSection::Graded& x) {
+  v("uniform_points", x.uniform_points, "points of the case's uniform grid it was graded from");
+  v("uniform_change", x.uniform_change,
+    "relative change of the uniform grid's duration with every interval halved");
+  v("rounds", x.rounds, "rounds of bisecting the intervals that hold half the change");
+  v("tolerance_rel", x.tolerance_rel,
+    "exact.tolerance_rel: the relative change the grading aims for");
+  v("max_grid_points", x.max_grid_points, "exact.max_grid_points: the node cap");
+  v("capped", x.capped, "the grading stopped at the node cap before reaching tolerance_rel");
+}
+template <class V>
 void fields(V& v, ResultsSection::GridConvergence& x) {
-  v("grid_points", x.grid_points, "grid points of the case");
+  v("grid_points", x.grid_points,
+    "grid points the exact solver used: the case's uniform grid, or the graded grid");
   v("refined_points", x.refined_points, "2 grid_points - 1");
   v("refined_solved", x.refined_solved, "whether the refined grid solved");
   v("duration_s", x.duration_s, "duration on the case's grid");
@@ -218,6 +239,9 @@ void fields(V& v, ResultsSection::GridConvergence& x) {
     "smallest |sin q2| along the path (null for a joint-space path)");
   v.optional("extrapolation", x.extrapolation,
              "Richardson extrapolation over a coarser, the case's and the refined grid");
+  v.optional("graded", x.graded,
+             "the graded grid, when the uniform grid's change exceeded exact.tolerance_rel "
+             "(null: the uniform grid was kept)");
   v("text", x.text, "the sentence for the check and the page");
 }
 template <class V>

@@ -214,14 +214,135 @@ RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& gri
   return RefinedGrid{checks, std::move(o), MinSinQ2(pb, std::move(fine))};
 }
 
+// The graded grid the study solves on when the case's uniform grid is not converged to
+// exact.tolerance_rel, and how it was made.
+struct GradedGrid {
+  std::vector<double> nodes;
+  /// the points the uniform study and the grading evaluated (of the same path; the study on
+  /// the graded grid takes only the new ones)
+  ExactPointCache* points = nullptr;
+  int uniform_points = 0;
+  double uniform_change = NAN;
+  int rounds = 0;
+  bool capped = false;
+};
+
+// per interval k of `grid`: |its time on grid - the time of its two halves on halved(grid)|
+std::vector<double> interval_changes(const std::vector<double>& grid, const std::vector<double>& sd,
+                                     const std::vector<double>& fine,
+                                     const std::vector<double>& fine_sd) {
+  const size_t n = grid.size();
+  std::vector<double> d(n - 1);
+  for (size_t k = 0; k + 1 < n; ++k) {
+    const double t_coarse = 2 * (grid[k + 1] - grid[k]) / (sd[k] + sd[k + 1]);
+    double t_fine = 0;
+    for (size_t i = 2 * k; i < 2 * k + 2; ++i)
+      t_fine += 2 * (fine[i + 1] - fine[i]) / (fine_sd[i] + fine_sd[i + 1]);
+    d[k] = std::abs(t_coarse - t_fine);
+  }
+  return d;
+}
+
+// Refine `grid` where its halving change arises: solve it and its halved grid, and bisect
+// the fewest intervals that hold half of the summed per-interval change (the largest
+// first), until the relative change of the duration is within ex.tolerance_rel, the grid
+// holds ex.max_grid_points nodes (capped) or a solve fails (the study's own solves say why).
+// Near a singular pose this grades the grid geometrically towards it.
+// The first round takes the uniform grid's solutions the study already has (grid_sd on
+// `grid`, fine_sd on its halved grid).
+GradedGrid grade_grid(const Problem& pb, std::vector<double> grid, int checks,
+                      const ExactSettings& ex, double uniform_change, ExactPointCache* cache,
+                      const std::vector<double>& grid_sd, const std::vector<double>& fine_sd) {
+  GradedGrid out;
+  out.uniform_points = static_cast<int>(grid.size());
+  out.uniform_change = uniform_change;
+  out.points = cache;
+  constexpr int kMaxRounds = 200;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    const std::vector<double> fine = halved(grid);
+    SolverOutput og, oh;
+    if (round == 0) {
+      og.solved = oh.solved = true;
+      og.profile.sd = grid_sd;
+      oh.profile.sd = fine_sd;
+      og.duration = oh.duration = 0;  // (the study found the change over the tolerance)
+    } else {
+      og = solve_exact(pb, grid, std::vector<int>(grid.size() - 1, checks), cache);
+      if (!og.solved) break;
+      oh = solve_exact(pb, fine, std::vector<int>(fine.size() - 1, checks), cache);
+      if (!oh.solved) break;
+      if (std::abs(og.duration / oh.duration - 1) <= ex.tolerance_rel) break;
+    }
+    const int room = ex.max_grid_points - static_cast<int>(grid.size());
+    if (room <= 0) {
+      out.capped = true;
+      break;
+    }
+    const std::vector<double> d = interval_changes(grid, og.profile.sd, fine, oh.profile.sd);
+    std::vector<size_t> order(d.size());
+    for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return d[a] > d[b]; });
+    double total = 0;
+    for (double v : d) total += v;
+    std::vector<char> mark(d.size(), 0);
+    double held = 0;
+    int marked = 0;
+    for (size_t i = 0; i < order.size() && held < 0.5 * total && marked < room; ++i) {
+      mark[order[i]] = 1;
+      held += d[order[i]];
+      ++marked;
+    }
+    if (marked == 0) break;
+    std::vector<double> next;
+    next.reserve(grid.size() + marked);
+    for (size_t k = 0; k < grid.size(); ++k) {
+      if (k > 0 && mark[k - 1]) next.push_back(0.5 * (grid[k - 1] + grid[k]));
+      next.push_back(grid[k]);
+    }
+    grid.swap(next);
+    ++out.rounds;
+  }
+  out.nodes = std::move(grid);
+  return out;
+}
+
+// every other node of a grid, keeping its ends and the path's stops: a nested coarsening
+// with about half the intervals (the uniform coarser grid when the grid is uniform)
+std::vector<double> every_other(const std::vector<double>& grid, const std::vector<double>& stops) {
+  std::vector<double> out{grid.front()};
+  int since = 0;
+  for (size_t k = 1; k < grid.size(); ++k) {
+    ++since;
+    const bool stop = std::find(stops.begin(), stops.end(), grid[k]) != stops.end();
+    if (k + 1 == grid.size() || stop || since == 2) {
+      out.push_back(grid[k]);
+      since = 0;
+    }
+  }
+  return out;
+}
+
 // The exact solution on the case's grid against the same problem on the grid with every
 // interval halved (`refined`, solved with the solution's check points): the relative change
 // and where it lies.
 GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
-                                 const RefinedGrid& refined, double tolerance) {
+                                 const RefinedGrid& refined, const ExactSettings& ex,
+                                 const GradedGrid* graded) {
   GridConvergence g;
   g.computed = true;
+  const double tolerance = ex.grid_tolerance;
   g.tolerance = tolerance;
+  g.graded_tolerance = ex.tolerance_rel;
+  g.max_points = ex.max_grid_points;
+  if (graded) {
+    g.graded = true;
+    g.uniform_points = graded->uniform_points;
+    g.uniform_change = graded->uniform_change;
+    g.graded_rounds = graded->rounds;
+    g.capped = graded->capped;
+  } else {
+    g.uniform_points = static_cast<int>(exact.node_s.size());
+  }
   const std::vector<double>& grid = exact.node_s;
   const int n = static_cast<int>(grid.size());
   const std::vector<double>& fine = refined.min_sin_q2.points();
@@ -245,16 +366,9 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
   g.refined_duration = o.duration;
   g.change = std::abs(exact.duration / o.duration - 1);
   // time per case-grid interval on both grids (fine nodes 2k and 2k + 2 bound interval k)
-  std::vector<double> d(n - 1);
+  const std::vector<double> d = interval_changes(grid, exact.node_sd, fine, o.profile.sd);
   double total = 0;
-  for (int k = 0; k + 1 < n; ++k) {
-    const double t_coarse = 2 * (grid[k + 1] - grid[k]) / (exact.node_sd[k] + exact.node_sd[k + 1]);
-    double t_fine = 0;
-    for (int i = 2 * k; i < 2 * k + 2; ++i)
-      t_fine += 2 * (fine[i + 1] - fine[i]) / (o.profile.sd[i] + o.profile.sd[i + 1]);
-    d[k] = std::abs(t_coarse - t_fine);
-    total += d[k];
-  }
+  for (double v : d) total += v;
   // shortest window of intervals holding 90 % of the summed change (two pointers)
   int best_lo = 0, best_hi = n - 2;
   if (total > 0) {
@@ -279,8 +393,9 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
   for (int k = best_lo; k <= best_hi + 1; ++k) g.max_sd = std::max(g.max_sd, exact.node_sd[k]);
   g.min_sin_q2 = std::min(g.min_sin_q2, min_sin_q2(2 * best_lo, 2 * best_hi + 2));
   os.precision(7);
-  os << "duration " << exact.duration << " s on " << n << " grid points, " << o.duration << " s on "
-     << g.refined_points << " (every interval halved): relative change ";
+  os << "duration " << exact.duration << " s on " << n << (graded ? " graded" : "")
+     << " grid points, " << o.duration << " s on " << g.refined_points
+     << " (every interval halved): relative change ";
   os.precision(3);
   os << g.change;
   if (g.change > tolerance) {
@@ -293,9 +408,30 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
     if (!pb.path.joint_space()) os << " and |sin q2| falls to " << g.min_sin_q2;
     if (!pb.path.joint_space() && g.min_sin_q2 < 0.05)
       os << " (near a singular pose: the joint rates per metre of path grow without bound there)";
-    os << "; refine the grid there (more exact.grid_points) or keep the path away from it";
+    if (graded && g.capped)
+      os << "; the graded grid (refined from " << g.uniform_points
+         << " uniform points where the change arose) stopped at its cap of " << ex.max_grid_points
+         << " points (exact.max_grid_points): raise the cap or keep the path away from it";
+    else if (graded)
+      os << "; the graded grid (refined from " << g.uniform_points
+         << " uniform points) stopped at a failing solve or its round limit: keep the path away "
+            "from it";
+    else if (ex.tolerance_rel > 0)
+      os << "; the grid was not graded (its refined solve failed or the node cap "
+         << ex.max_grid_points
+         << " (exact.max_grid_points) is reached): keep the path away from it";
+    else
+      os << "; set exact.tolerance_rel > 0 to grade the grid there, or keep the path away from it";
   } else {
     os << " (tolerance " << tolerance << ")";
+  }
+  if (graded) {
+    os.precision(3);
+    os << "; graded from " << g.uniform_points << " uniform points (relative change "
+       << g.uniform_change << ") in " << g.graded_rounds
+       << " round(s) of bisecting the intervals that hold half the change, to "
+       << (g.capped ? "its cap of exact.max_grid_points" : "exact.tolerance_rel") << " "
+       << (g.capped ? static_cast<double>(ex.max_grid_points) : ex.tolerance_rel);
   }
   g.text = os.str();
   return g;
@@ -378,7 +514,8 @@ void sample_exact_motion(const Problem& pb, const SolverResult& exact, int steps
 }
 }  // namespace
 
-Result solve(const Spec& spec, const ProgressFn& progress) {
+namespace {
+Result solve_grid(const Spec& spec, const ProgressFn& progress, const GradedGrid* graded) {
   const auto report = [&](double f, std::string_view stage) {
     if (progress) progress(f, stage);
   };
@@ -430,10 +567,13 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   // (on the side thread while the exact solver starts: the solver's answer, or its failure,
   // counts only once the path has passed)
   report(0.02, "checking the path");
-  SideTask<std::string> path_check(
-      [&pb, probes = std::max(4 * spec.exact.grid_points, 4000), &range = spec.joint_path.range] {
-        return path_trouble(pb, probes, range);
-      });
+  // (on the graded grid the uniform grid's study has checked it already)
+  SideTask<std::string> path_check;
+  if (!graded)
+    path_check = SideTask<std::string>(
+        [&pb, probes = std::max(4 * spec.exact.grid_points, 4000), &range = spec.joint_path.range] {
+          return path_trouble(pb, probes, range);
+        });
   const auto path_passed = [&] {
     if (!path_check.valid()) return true;
     const std::string trouble = path_check.get();
@@ -448,7 +588,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   // to it, as is any error the case's grid raises here)
   ExactPointCache fine_points(pb);
   SideTask<void> prefetch(
-      [&pb, &fine_points, n = spec.exact.grid_points, c = spec.exact.checks_per_interval] {
+      [&pb, &fine_points, n = spec.exact.grid_points, c = spec.exact.checks_per_interval, graded] {
+        if (graded) return;  // (the grading solved both grids' points already)
         try {
           const std::vector<double> grid = make_nodes(pb.path, n - 1);
           const std::vector<int> checks(grid.size() - 1, c);
@@ -459,13 +600,14 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
 
   // exact solver
   report(0.05, "exact solver (reachability)");
-  ExactPointCache points(pb);  // the re-solves and the halved grid evaluate only new points
+  ExactPointCache own_points(pb);  // the re-solves and the halved grid evaluate only new points
+  ExactPointCache& points = graded && graded->points ? *graded->points : own_points;
   const auto t_exact = std::chrono::steady_clock::now();
   std::vector<double> grid;
   std::vector<int> exact_checks;
   SolverOutput first;
   try {
-    grid = make_nodes(pb.path, spec.exact.grid_points - 1);
+    grid = graded ? graded->nodes : make_nodes(pb.path, spec.exact.grid_points - 1);
     exact_checks.assign(grid.size() - 1, spec.exact.checks_per_interval);
     first = solve_exact(pb, grid, exact_checks, &points);
   } catch (...) {
@@ -529,8 +671,11 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       most = std::max(most, c);
     }
     r.method = "reachability analysis (backward controllable sets, greedy forward pass) on " +
-               std::to_string(spec.exact.grid_points) + " grid points, limits enforced at " +
-               std::to_string(base + 1) + " points of every interval";
+               std::to_string(grid.size()) +
+               (graded ? " grid points (graded from " + std::to_string(graded->uniform_points) +
+                             " uniform ones where the grid's halving change arose)"
+                       : std::string(" grid points")) +
+               ", limits enforced at " + std::to_string(base + 1) + " points of every interval";
     if (more > 0)
       r.method += " and at up to " + std::to_string(most + 1) + " in the " + std::to_string(more) +
                   " interval(s) where the dense re-check found a limit overshot between them";
@@ -561,13 +706,30 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
       max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
     }
     if (!refined) refined.emplace(solve_refined_grid(pb, grid, exact_checks, &points));
-    res.grid = grid_convergence(pb, res.solvers.front(), *refined, spec.exact.grid_tolerance);
+    res.grid = grid_convergence(pb, res.solvers.front(), *refined, spec.exact, graded);
+    // a uniform grid not converged to exact.tolerance_rel: grade it where the change arises
+    // and solve the study again on the graded grid (the uniform grid's work is lost; a case
+    // whose uniform grid converges pays nothing)
+    if (!graded && spec.exact.tolerance_rel > 0 && res.grid.refined_solved &&
+        res.grid.change > spec.exact.tolerance_rel &&
+        static_cast<int>(grid.size()) < spec.exact.max_grid_points) {
+      report(0.11, "grading the exact solver's grid");
+      const GradedGrid gg =
+          grade_grid(pb, grid, spec.exact.checks_per_interval, spec.exact, res.grid.change, &points,
+                     res.solvers.front().node_sd, refined->solution.profile.sd);
+      return solve_grid(spec, progress, &gg);
+    }
     // a third, coarser grid (about half the intervals) for the observed order
+    // (on a graded grid, every other node of it: the same nesting)
     const int intervals = static_cast<int>(grid.size()) - 1;
-    const int coarse_intervals = intervals / 2;
+    const std::vector<double> coarse_graded =
+        graded ? every_other(grid, pb.path.stops()) : std::vector<double>{};
+    const int coarse_intervals =
+        graded ? static_cast<int>(coarse_graded.size()) - 1 : intervals / 2;
     if (res.grid.refined_solved && coarse_intervals >= 4) {
       report(0.12, "exact solver on a coarser grid (extrapolation)");
-      const std::vector<double> coarse = make_nodes(pb.path, coarse_intervals);
+      const std::vector<double> coarse =
+          graded ? coarse_graded : make_nodes(pb.path, coarse_intervals);
       const SolverOutput oc = solve_exact(
           pb, coarse, std::vector<int>(coarse.size() - 1, spec.exact.checks_per_interval), &points);
       res.grid.coarse_points = static_cast<int>(coarse.size());
@@ -687,7 +849,8 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     os << significant(g.extrapolated, g.extrapolation_error) << " s +- " << std::setprecision(2)
        << g.extrapolation_error << " s (exact, "
        << (g.asymptotic ? "extrapolated over 3 grids" : "finest grid; not in the asymptotic range")
-       << "; " << fixed(exact_duration, 4) << " s on its " << g.grid_points << "-point grid)";
+       << "; " << fixed(exact_duration, 4) << " s on its " << g.grid_points
+       << (g.graded ? "-point graded grid)" : "-point grid)");
   } else {
     os << fixed(exact_duration, 4) << " s (exact)";
   }
@@ -701,6 +864,11 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
   res.message = os.str();
   report(1.0, "done");
   return res;
+}
+}  // namespace
+
+Result solve(const Spec& spec, const ProgressFn& progress) {
+  return solve_grid(spec, progress, nullptr);
 }
 
 std::vector<Check> checks(const Result& res) {
