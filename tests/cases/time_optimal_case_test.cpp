@@ -105,7 +105,7 @@ time_optimal:
 }
 
 TEST(TimeOptimalCase, AGradingToleranceMustNotBeNegative) {
-  const Loaded l = load(R"(
+  const TimeOptimalLoad l = load_yaml(R"(
 time_optimal:
   path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}
   exact: {tolerance_rel: -1.0e-4}
