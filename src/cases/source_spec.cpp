@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <regex>
 
 #include "cases/yaml_reader.hpp"
@@ -105,8 +106,6 @@ PrintedItem read_item(Map& m) {
     m.error_here(
         "a printed figure needs 'at_source_setting' or 'at_optimum' (the "
         "results.json value to compare it with)");
-  if (!it.reason.empty() && it.why.empty())
-    m.error("why", "an entry with a 'reason' needs 'why' (the reason in one sentence)");
   m.finish();
   return it;
 }
@@ -118,9 +117,30 @@ SourceSpec read_source(Map& root) {
   auto s = root.map("source");
   if (!s) return out;
   if (auto d = s->required_string("document")) out.document = *d;
+  std::map<std::string, std::string> reasons;  // anchor -> the reason in one sentence
+  if (auto r = s->map("reasons")) {
+    for (const auto& kv : r->node()) {
+      const std::string key = kv.first.Scalar();
+      if (auto why = r->string(key)) reasons[key] = *why;
+    }
+    r->finish();
+  }
   if (auto list = s->seq("printed")) {
-    for (size_t i = 0; i < list->size(); ++i)
-      if (auto m = list->map_at(i)) out.printed.push_back(read_item(*m));
+    for (size_t i = 0; i < list->size(); ++i) {
+      auto m = list->map_at(i);
+      if (!m) continue;
+      PrintedItem it = read_item(*m);
+      if (!it.reason.empty() && it.why.empty()) {
+        const auto found = reasons.find(it.reason);
+        if (found != reasons.end())
+          it.why = found->second;
+        else
+          m->error("reason", "reason '" + it.reason +
+                                 "' has no sentence: give 'why' here or 'source.reasons." +
+                                 it.reason + "'");
+      }
+      out.printed.push_back(std::move(it));
+    }
   } else {
     s->error("printed", "missing required key 'printed' (the source's figures and claims)");
   }

@@ -58,8 +58,8 @@ struct PrintedItem {
 
 /// The case's `source:` part.
 struct SourceSpec {
-  std::string document;  ///< e.g. "Kopmaz (2016)"; empty: the case reproduces no source
-  std::vector<PrintedItem> printed;
+  std::string document;              ///< e.g. "Kopmaz (2016)"; empty: the case reproduces no source
+  std::vector<PrintedItem> printed;  ///< each item's `why` filled in from `reasons`
   bool empty() const { return printed.empty(); }
 };
 
