@@ -9,7 +9,8 @@
 #    `columns`, each column `name [unit]` with the unit its quantity has (docs/running.md),
 #    as many rows as `rows`, every field a finite number, time from 0 increasing;
 #  - every model.xml passes MuJoCo's own tools (Debian's libmujoco-samples): testxml (load,
-#    save, reload, compare: the saved copy reloads and differs by less than 1e-4) and
+#    save, reload, compare: the saved copy reloads and differs by less than 1e-4, or only
+#    in the flag geom_sameframe, see below) and
 #    compile to .mjb, whose print is the XML's; and
 #    keyframe_poses (plain libmujoco) finds at each keyframe's time the joint angles of one
 #    of the case's motion CSVs.
