@@ -93,6 +93,19 @@ std::string grid_asset(const char* material, double cell_m, const ViewBox& v, in
 // a narrow field of view: nearly orthographic, little parallax between drawing heights
 constexpr double kFovy = 20;
 
+// The centre of the frames' view as the model's <statistic center>: where MuJoCo's viewer
+// (`simulate model.xml`) points its free camera when it opens the model. Without it the
+// viewer looks at the centre of all geoms' boxes (the wall's) and, at this narrow fovy, shows
+// the pedestal without the arm (tests/e2e/simulate_viewer_test.sh). armstudy's own renderer
+// places its camera itself and reads neither.
+std::string viewer_centre(double cx, double cy) {
+  std::ostringstream x;
+  x.imbue(std::locale::classic());
+  x.precision(6);
+  x << "  <statistic center=\"" << cx << " " << cy << " 0\"/>\n";
+  return x.str();
+}
+
 // a light headlight-lit look without specular glare
 const char* kVisual =
     "    <headlight ambient=\"0.45 0.45 0.45\" diffuse=\"0.35 0.35 0.35\" "
@@ -141,6 +154,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   MjcfOptions o;
   o.model_name = "horizontal_arm";
   o.fovy = kFovy;
+  o.top_extra = viewer_centre(cx, cy);
   o.offscreen = decor.offscreen;
   set_quality(&o, 2.2 * r, v.y_max - v.y_min,
               decor.offscreen.height);  // the pedestal is the roundest
@@ -231,6 +245,7 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
   MjcfOptions o;
   o.model_name = "tray_arm";
   o.fovy = kFovy;
+  o.top_extra = viewer_centre(cx, cy);
   o.offscreen = decor.offscreen;
   set_quality(&o, std::max(1.35 * r, rb), v.y_max - v.y_min,
               decor.offscreen.height);  // discs, ball

@@ -8,6 +8,16 @@
 
 namespace armstudy::scene {
 
+Eigen::MatrixXd stand_in_mass_matrix(const core::PlanarChain& chain) {
+  const int n = chain.num_links();
+  Eigen::MatrixXd dM = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    const double d = std::max(0.0, kMinMjcfInertia - combined_inertial(chain, i).izz);
+    dM.topLeftCorner(i + 1, i + 1).array() += d;
+  }
+  return dM;
+}
+
 LinkInertial combined_inertial(const core::PlanarChain& chain, int link) {
   const core::Link& l = chain.links[link];
   // bodies: (mass, x, y, own inertia)

@@ -88,9 +88,21 @@ struct LinkInertial {
 /// The inertial MuJoCo gets for link i.
 LinkInertial combined_inertial(const core::PlanarChain& chain, int link);
 
-/// Smallest inertia written to MJCF (MuJoCo rejects zero inertia on a moving body).
-inline constexpr double kMinMjcfInertia = 1e-14;
-inline constexpr double kMinMjcfMass = 1e-14;
+/// Smallest inertia and mass written to MJCF, the stand-in of a body with none of its own
+/// (MuJoCo rejects a moving body whose mass or inertia is below mjMINVAL = 1e-15). MuJoCo's
+/// XML writer (a saved copy: testxml, simulate's "Save xml") writes any number within 1e-12
+/// of an integer as that integer (xml_util.cc, isint), so a stand-in below 1e-12 comes back
+/// as 0 and the saved copy no longer loads; 2e-12 is the smallest round value kept with a
+/// margin (2x) against rounding. Its dynamic effect is of the order of 2e-12 over the real
+/// inertia it sits beside (tests/scene/mujoco_check_test.cpp).
+inline constexpr double kMinMjcfInertia = 2e-12;
+inline constexpr double kMinMjcfMass = 2e-12;
+
+/// What the stand-in inertias add to the chain's mass matrix, in the chain's coordinates:
+/// a link with less than kMinMjcfInertia of its own gets the difference d_i about its axis,
+/// whose angle is q_1 + ... + q_i, so entry (a, b) gains the d_i of every link i >= a, b
+/// (constant in q; the stand-in masses add another ~kMinMjcfMass x (1 m)^2 at most).
+Eigen::MatrixXd stand_in_mass_matrix(const core::PlanarChain& chain);
 
 /// The MJCF text of `chain` (see the header comment for how spinners are represented).
 /// @throws std::invalid_argument for a spinner no extra body can express.

@@ -9,8 +9,9 @@
 #    `columns`, each column `name [unit]` with the unit its quantity has (docs/running.md),
 #    as many rows as `rows`, every field a finite number, time from 0 increasing;
 #  - every model.xml passes MuJoCo's own tools (Debian's libmujoco-samples): testxml (load,
-#    save, reload, compare; the tray-arm models' saved copy does not reload, as
-#    docs/running.md says) and compile to .mjb, whose print is the XML's; and
+#    save, reload, compare: the saved copy reloads and differs by less than 1e-4, or only
+#    in the flag geom_sameframe, see below) and
+#    compile to .mjb, whose print is the XML's; and
 #    keyframe_poses (plain libmujoco) finds at each keyframe's time the joint angles of one
 #    of the case's motion CSVs.
 # results.json against results.schema.json for every bundled case is
@@ -70,24 +71,42 @@ echo "junit.xml valid against junit.xsd: the run's and the merge's" \
 
 # --- the motion CSVs, the models --------------------------------------------------------------
 checked=0
-stand_in=0
+worst=0
 for dir in "$work"/out/*/; do
   [ -f "$dir/results.json" ] || continue
   name=$(basename "$dir")
   [ -f "$dir/model.xml" ] || continue
+  # testxml loads model.xml, saves it with MuJoCo's XML writer, reloads the saved copy and
+  # compares the two compiled models: the copy must load (a massless body's stand-in mass
+  # and inertia, scene/mjcf_writer.hpp, are above the 1e-12 below which the writer writes 0)
+  # and match. The writer prints 6 significant digits, so a number of the model below 100
+  # (keyframe angles and rates, times, lengths, masses) comes back within 5e-5; the bundled
+  # models differ by 4e-6 at most (key_qvel, body_invweight0), the bound is 1e-4
   log=$(cd "$work" && mujoco-testxml "$dir/model.xml" 2>&1)
-  if grep -qE '(mass|diaginertia)="[^"]*e-1[3-9]' "$dir/model.xml"; then
-    # a massless body's stand-in 1e-14 kg / kg m^2 (scene/mjcf_writer.hpp): MuJoCo 2.2.2's
-    # XML writer saves it as 0, and its own saved copy does not load (docs/running.md)
-    grep -q "mass and inertia of moving bodies must be larger than mjMINVAL" <<<"$log" ||
-      fail "$name: testxml of a model with a 1e-14 stand-in: $log (docs/running.md says otherwise)"
-    echo "$name: testxml: MuJoCo's saved copy does not reload (its 1e-14 inertia saved as 0)"
-    stand_in=$((stand_in + 1))
+  grep -q "Comparison of original and saved model" <<<"$log" || fail "$name: testxml: $log"
+  diff=$(sed -n 's/^ *Max difference *: *//p' <<<"$log")
+  field=$(sed -n 's/^ *Field name *: *//p' <<<"$log")
+  if [[ "$field" =~ ^(geom|site)_sameframe$ ]]; then
+    # a flag, not a number: whether a geom's (site's) frame is exactly its body's inertial
+    # frame. A point mass at the tip puts the inertial at 0.39999999999999997 beside a
+    # payload geom at 0.4; written with 6 digits both are 0.4 and the flag turns on. The rest
+    # of such a model: the compiled prints of model.xml and of the copy MuJoCo saves
+    # (compile to .xml, the same writer) differ in nothing else but the sign of zeros
+    mujoco-compile "$dir/model.xml" "$work/$name.saved.xml" >/dev/null &&
+      mujoco-compile "$dir/model.xml" "$work/$name.orig.txt" >/dev/null &&
+      mujoco-compile "$work/$name.saved.xml" "$work/$name.saved.txt" >/dev/null ||
+      fail "$name: compile of the saved copy"
+    zeros='{ $1 = $1; for (i = 1; i <= NF; i++) if ($i == "-0") $i = "0"; print }'
+    other=$(diff <(awk "$zeros" "$work/$name.orig.txt") <(awk "$zeros" "$work/$name.saved.txt") |
+      grep '^[<>]' | grep -v '_sameframe' || true)
+    [ -z "$other" ] || fail "$name: the saved copy differs beyond $field: $other"
+    echo "$name: testxml: MuJoCo's saved copy reloads, differs in $field (a flag, see above)" \
+      "and prints the same otherwise"
   else
-    grep -q "Comparison of original and saved model" <<<"$log" || fail "$name: testxml: $log"
-    diff=$(sed -n 's/^ *Max difference *: *//p' <<<"$log")
     python3 -c "import sys; sys.exit(0 if float('$diff') < 1e-4 else 1)" ||
       fail "$name: testxml: the saved model differs by $diff: $log"
+    echo "$name: testxml: MuJoCo's saved copy reloads, max difference $diff"
+    worst=$(python3 -c "print(max(float('$worst'), float('$diff')))")
   fi
   for target in model.mjb from_xml.txt; do
     log=$(mujoco-compile "$dir/model.xml" "$work/$name.$target" 2>&1)
@@ -206,4 +225,4 @@ if bad:
     sys.exit(1)
 PY
 echo "$checked models load and compile to .mjb in MuJoCo's tools; testxml's save and reload" \
-  "matches for $((checked - stand_in)), and fails as documented for $stand_in"
+  "matches for all of them (max difference $worst)"

@@ -98,6 +98,9 @@ TEST(Models, LoadedFromDiskTheyCarryTheCasesMassesCentresAndInertias) {
           << name;
       total += e.mass;
     }
+    // and the stand-in masses of the bodies with none (the ball's spin body: 2e-12 kg)
+    for (int b = 1; b < mj->nbody; ++b)
+      if (mj->body_mass[b] == kMinMjcfMass) total += kMinMjcfMass;
     EXPECT_NEAR(mj->body_subtreemass[0], total, 1e-12 * total);
     // gravity and the actuated joints
     EXPECT_DOUBLE_EQ(mj->opt.gravity[1], -c.gravity);
