@@ -91,14 +91,40 @@ for dir in "$work"/out/*/; do
     # frame. A point mass at the tip puts the inertial at 0.39999999999999997 beside a
     # payload geom at 0.4; written with 6 digits both are 0.4 and the flag turns on. The rest
     # of such a model: the compiled prints of model.xml and of the copy MuJoCo saves
-    # (compile to .xml, the same writer) differ in nothing else but the sign of zeros
+    # (compile to .xml, the same writer) differ in nothing else but numbers within the same
+    # 1e-4 (a keyframe's qvel of 5e-16 is written as 0 and its all-zero row left out)
     mujoco-compile "$dir/model.xml" "$work/$name.saved.xml" >/dev/null &&
       mujoco-compile "$dir/model.xml" "$work/$name.orig.txt" >/dev/null &&
       mujoco-compile "$work/$name.saved.xml" "$work/$name.saved.txt" >/dev/null ||
       fail "$name: compile of the saved copy"
-    zeros='{ $1 = $1; for (i = 1; i <= NF; i++) if ($i == "-0") $i = "0"; print }'
-    other=$(diff <(awk "$zeros" "$work/$name.orig.txt") <(awk "$zeros" "$work/$name.saved.txt") |
-      grep '^[<>]' | grep -v '_sameframe' || true)
+    other=$(python3 - "$work/$name.orig.txt" "$work/$name.saved.txt" <<'PY'
+import sys
+def num(t):
+    try:
+        return float(t)
+    except ValueError:
+        return None
+def kept(l):
+    # a row whose numbers are all within 1e-4 of 0 may be left out of the saved copy
+    # (MuJoCo's writer writes 5e-16 as 0 and omits an all-zero keyframe qvel)
+    nums = [num(t) for t in l.split()[1:]]
+    return "_sameframe" not in l and not (nums and all(x is not None and abs(x) <= 1e-4 for x in nums))
+a = [l for l in open(sys.argv[1]) if kept(l)]
+b = [l for l in open(sys.argv[2]) if kept(l)]
+def same(x, y):
+    if x == y:
+        return True
+    try:
+        return abs(float(x) - float(y)) <= 1e-4
+    except ValueError:
+        return False
+bad = [f"{p.strip()} | {q.strip()}" for p, q in zip(a, b)
+       if len(p.split()) != len(q.split()) or not all(map(same, p.split(), q.split()))]
+if len(a) != len(b):
+    bad.append(f"{len(a)} against {len(b)} lines")
+print("\n".join(bad[:5]))
+PY
+)
     [ -z "$other" ] || fail "$name: the saved copy differs beyond $field: $other"
     echo "$name: testxml: MuJoCo's saved copy reloads, differs in $field (a flag, see above)" \
       "and prints the same otherwise"

@@ -38,7 +38,7 @@ CheckedMotion throw_motion(const studies::ThrowingSpec& spec) {
 // passive accelerations, to first order: they become qdd_p - Mpp^-1 (dM qdd)_p. Returned
 // relative to the largest passive |qdd| along the motion, as
 // MujocoAgreement::acceleration_rel is.
-double stand_in_acceleration_rel(const core::PlanarChain& chain, const Motion& m) {
+double stand_in_acceleration_rel(const core::PlanarChain& chain, const CheckedMotion& m) {
   const int n = chain.num_links();
   const Eigen::MatrixXd dM = stand_in_mass_matrix(chain);
   std::vector<int> pas;
