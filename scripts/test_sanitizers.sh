@@ -9,10 +9,11 @@
 # tests/slow_tests.txt, so every solver runs instrumented on the tests' small inputs) and
 # e2e.interrupt (the fork/exec code of the browser with a stand-in). Left out: the browser
 # tests (headless Chromium prints the bundled reports; minutes under ASan), the
-# fault-injection test (strace stops the run at every rename; LeakSanitizer cannot run under
-# ptrace), the sweep scale-out tests and the live Slurm and ssh ones (their armstudy part is
+# fault-injection and package tests (strace watches the run; LeakSanitizer cannot run under
+# ptrace), the exports' and viewer's client tests (their armstudy part is every bundled case,
+# as the browser tests'; minutes under ASan), the sweep scale-out tests and the live Slurm and ssh ones (their armstudy part is
 # the sweep code the e2e tests cover). ARMSTUDY_SANITIZE_ALL=1 runs every test but the
-# browser and fault-injection ones.
+# browser, fault-injection and package ones.
 #
 # The code under test (the libraries, armstudy) is built -O1 -g1 (line tables for the
 # reports' stack traces; about half the compile time of -O2 -g), the tests' own code -O0
@@ -47,11 +48,11 @@ cmake "${generator[@]}" -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DARMSTUDY_BU
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build build-asan -j"$jobs"
 if [ "${ARMSTUDY_SANITIZE_ALL:-0}" = 1 ]; then
-  exclude="BrowserReport|e2e.fault_injection"
+  exclude="BrowserReport|e2e.fault_injection|install.debian_package"
   select=()
 else
   exclude="BrowserReport"
-  select=(-L "^quick$|^e2e$" -E "$exclude|^guard\.|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection)$")
+  select=(-L "^quick$|^e2e$" -E "$exclude|^guard\.|^install\.|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection|export_clients|simulate_viewer)$")
 fi
 built=$(date +%s)
 
