@@ -60,13 +60,13 @@ EnergyConvergence check_energy(const Arm2& arm, core::MotionProgram program, dou
   EnergyConvergence c = converge_energy(arm, program, duration, length, line, configuration,
                                         samples, touches, tol, peak_tol, max_samples);
   c.touches_inner = touches_inner;
-  if (touches_inner) return c;  // the tangent's limit energy is not its integral
   const EnergyQuadrature q =
       energy_quadrature(arm, program, duration, length, line, configuration, quad_tol);
   c.quadrature = true;
   c.energy = q.energy;
   c.energy_error = q.error;
   c.quadrature_tolerance = q.tolerance_rel;
+  c.energy_jump = q.jump;
   c.quadrature_intervals = q.intervals;
   c.quadrature_evaluations = q.evaluations;
   if (c.energy_converged()) c.metrics.energy = q.energy;

@@ -93,6 +93,55 @@ bool gk15(const F& f, double a, double b, QuadSegment& out, int& evaluations) {
   return true;
 }
 
+// integral over l in [0, 1] of |a + l (b - a)|
+double mean_abs_on_segment(double a, double b) {
+  if ((a >= 0) == (b >= 0)) return 0.5 * std::abs(a + b);
+  return 0.5 * (a * a + b * b) / std::abs(b - a);
+}
+
+struct FoldJump {
+  double energy = 0, error = 0;
+};
+
+// The folded elbow's reversal term at t* (quadrature.hpp). The one-sided rates qd-, qd+ at t*
+// are limits (the formula is 0/0 there); each side is analytic in |t - t*|, so they are
+// extrapolated to t* by Neville's scheme from t* -+ h 2^-k, k = 0..4, h = 3e-4 T (quartic:
+// error ~ h^5; the rounding of the rates grows like 1/|t - t*| and stays near 1e-12 here).
+// The error is the change of the term between the last two orders. The mass matrix at the
+// fold: c2 = -1, s2 = 0.
+FoldJump fold_jump(const Arm2& arm, const LinePower& power) {
+  constexpr int kOrders = 5;
+  const double ts = power.t_closest(), h = 3e-4 * power.duration();
+  const auto rates = [&](double side, int orders) {
+    Eigen::Vector2d tab[kOrders];
+    double step[kOrders];
+    for (int k = 0; k < orders; ++k) {
+      step[k] = h * std::ldexp(1.0, -k);
+      const Arm2Sample o = power.sample(ts + side * step[k]);
+      tab[k] = Eigen::Vector2d(o.qd1, o.qd2);
+    }
+    for (int m = 1; m < orders; ++m)
+      for (int k = orders - 1; k >= m; --k)
+        tab[k] = (step[k - m] * tab[k] - step[k] * tab[k - 1]) / (step[k - m] - step[k]);
+    return tab[orders - 1];
+  };
+  const double g = -arm.A;  // A c2 - B s2 at c2 = -1, s2 = 0
+  Eigen::Matrix2d m;
+  m << arm.a11 + 2 * g, arm.a12 + g, arm.a12 + g, arm.a22;
+  const auto term = [&](int orders) {
+    const Eigen::Vector2d before = rates(-1, orders), after = rates(+1, orders);
+    const Eigen::Vector2d impulse = m * (after - before);
+    double e = 0;
+    for (int i = 0; i < 2; ++i)
+      e += std::abs(impulse[i]) * mean_abs_on_segment(before[i], after[i]);
+    return e;
+  };
+  FoldJump j;
+  j.energy = term(kOrders);
+  j.error = std::abs(term(kOrders - 1) - j.energy);
+  return j;
+}
+
 }  // namespace
 
 LinePower::LinePower(const Arm2& arm, core::MotionProgram program, double duration, double length,
@@ -129,6 +178,11 @@ LinePower::LinePower(const Arm2& arm, core::MotionProgram program, double durati
 }
 
 JointPowers LinePower::at(double t) const {
+  const Arm2Sample o = sample(t);
+  return {o.tau1 * o.qd1, o.tau2 * o.qd2};
+}
+
+Arm2Sample LinePower::sample(double t) const {
   // the half nearer to its end: s (or L - s, by the programs' symmetry) from that end
   const bool tail = t > 0.5 * T_;
   const double tau = tail ? T_ - t : t;
@@ -158,9 +212,8 @@ JointPowers LinePower::at(double t) const {
   const double two_l1l2 = 2.0 * arm_.L1 * arm_.L2;
   const double c2 = dout <= din ? 1.0 - dout / two_l1l2 : din / two_l1l2 - 1.0;
   const double s2 = sign_ * std::sqrt(din * dout) / two_l1l2;
-  const Arm2Sample o = arm2_sample_elbow(arm_, p.x(), p.y(), sd * line_.dir.x(), sd * line_.dir.y(),
-                                         sdd * line_.dir.x(), sdd * line_.dir.y(), c2, s2);
-  return {o.tau1 * o.qd1, o.tau2 * o.qd2};
+  return arm2_sample_elbow(arm_, p.x(), p.y(), sd * line_.dir.x(), sd * line_.dir.y(),
+                           sdd * line_.dir.x(), sdd * line_.dir.y(), c2, s2);
 }
 
 EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program, double duration,
@@ -269,6 +322,13 @@ EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program,
     if (heap.size() % 256 == 0) totals(value, error);
   }
   totals(value, error);
+  if (power.folds()) {
+    const FoldJump j = fold_jump(arm, power);
+    q.jump = j.energy;
+    q.jump_error = j.error;
+    value += j.energy;
+    error += j.error;
+  }
   q.energy = value;
   q.error = error;
   q.intervals = int(heap.size());
