@@ -66,7 +66,7 @@ struct EnergyConvergence {
   bool peak_withheld() const { return checked && (touches_boundary || !peak_converged); }
   /// every figure of the motion may be printed
   bool regular() const { return checked && !energy_withheld() && !peak_withheld(); }
-  int samples = 0;  ///< samples of `metrics`: the coarser of the converged pair
+  int samples = 0;  ///< samples of `metrics`: the finer of the converged pair
   double rel_change = std::numeric_limits<double>::quiet_NaN();  ///< energy, at the last doubling
   double peak_rel_change = std::numeric_limits<double>::quiet_NaN();  ///< peak torque, same
   double tolerance = 0;  ///< the relative tolerance asked for (energy error, doubling)
@@ -77,8 +77,10 @@ struct EnergyConvergence {
 
 /// Doubles the samples (n -> 2 n - 1, nested grids) from `samples` until the energy
 /// changes by less than `tol` and the sampled peak torque by less than `peak_tol`
-/// (relative), or `max_samples` is passed. `touches`: the exact line check puts the line
-/// on a boundary (|boundary distance| within 1e-9 m, so |sin q2| ~ 1e-4 or less on it).
+/// (relative) and by at most half its change on the doubling before (or is exactly still),
+/// or `max_samples` is passed; the finer of the last pair is kept. `touches`: the exact line check
+/// puts the line on a boundary (|boundary distance| within 1e-9 m, so |sin q2| ~ 1e-4 or less on
+/// it).
 EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, double duration,
                                   double length, const Line& line, int configuration, int samples,
                                   bool touches, double tol = 1e-4, double peak_tol = 1e-3,
