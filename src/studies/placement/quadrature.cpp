@@ -216,6 +216,97 @@ Arm2Sample LinePower::sample(double t) const {
                            sdd * line_.dir.x(), sdd * line_.dir.y(), c2, s2);
 }
 
+namespace {
+// the |.| kinks in [a, b]: sign changes of either joint's power on a scan of n points,
+// bisected to the last bit, appended to `kinks`; false when the power is not finite at a
+// scanned point
+bool power_kinks(const LinePower& power, double a, double b, int n, int& evaluations,
+                 std::vector<double>& kinks) {
+  double t_prev = 0;
+  JointPowers p_prev;
+  for (int k = 0; k < n; ++k) {
+    const double t = a + (b - a) * (k + 0.5) / n;
+    const JointPowers pk = power.at(t);
+    ++evaluations;
+    if (!std::isfinite(pk.p1) || !std::isfinite(pk.p2)) return false;
+    if (k > 0) {
+      for (int j = 0; j < 2; ++j) {
+        const double v0 = j == 0 ? p_prev.p1 : p_prev.p2, v1 = j == 0 ? pk.p1 : pk.p2;
+        if (!((v0 < 0 && v1 > 0) || (v0 > 0 && v1 < 0))) continue;
+        double lo = t_prev, hi = t;
+        for (int it = 0; it < 200; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          const JointPowers pm = power.at(mid);
+          ++evaluations;
+          const double vm = j == 0 ? pm.p1 : pm.p2;
+          if (!std::isfinite(vm)) break;
+          ((vm < 0) == (v0 < 0) ? lo : hi) = mid;
+        }
+        kinks.push_back(0.5 * (lo + hi));
+      }
+    }
+    t_prev = t;
+    p_prev = pk;
+  }
+  return true;
+}
+
+// the value and error summed afresh from the segments (no drift of running sums)
+void heap_totals(const std::priority_queue<QuadSegment>& heap, double& value, double& error) {
+  std::priority_queue<QuadSegment> copy = heap;
+  value = 0;
+  error = 0;
+  while (!copy.empty()) {
+    value += copy.top().value;
+    error += copy.top().error;
+    copy.pop();
+  }
+}
+
+// adaptive G7-K15 of f over the intervals between the breakpoints bp: the segment of the
+// largest error halved until the error is within tol_rel or max_intervals are used; fills
+// q's energy, error, intervals and converged (infinite energy when f is not finite)
+template <typename F>
+void adaptive_gk15(const F& f, const std::vector<double>& bp, double T, double tol_rel,
+                   int max_intervals, int& evaluations, EnergyQuadrature& q) {
+  std::priority_queue<QuadSegment> heap;
+  for (size_t i = 0; i + 1 < bp.size(); ++i) {
+    if (!(bp[i + 1] > bp[i])) continue;
+    QuadSegment s;
+    if (!gk15(f, bp[i], bp[i + 1], s, evaluations)) {
+      q.energy = std::numeric_limits<double>::infinity();
+      return;
+    }
+    heap.push(s);
+  }
+  double value = 0, error = 0;
+  heap_totals(heap, value, error);
+  while (int(heap.size()) < max_intervals && !(error <= tol_rel * std::abs(value))) {
+    const QuadSegment worst = heap.top();
+    const double mid = 0.5 * (worst.a + worst.b);
+    // an interval that cannot be halved any more: the estimate stays as it is
+    if (!(mid > worst.a && mid < worst.b) || worst.b - worst.a < 1e-15 * T) break;
+    QuadSegment left, right;
+    if (!gk15(f, worst.a, mid, left, evaluations) || !gk15(f, mid, worst.b, right, evaluations)) {
+      q.energy = std::numeric_limits<double>::infinity();
+      return;
+    }
+    heap.pop();
+    heap.push(left);
+    heap.push(right);
+    value += left.value + right.value - worst.value;
+    error += left.error + right.error - worst.error;
+    if (heap.size() % 256 == 0) heap_totals(heap, value, error);
+  }
+  heap_totals(heap, value, error);
+  q.energy = value;
+  q.error = error;
+  q.intervals = int(heap.size());
+  q.converged = std::isfinite(value) && error <= tol_rel * std::abs(value);
+}
+}  // namespace
+
 EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program, double duration,
                                    double length, const Line& line, int configuration,
                                    double tol_rel, int max_intervals) {
@@ -233,44 +324,17 @@ EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program,
     bp.push_back(2.0 * T / 3.0);
   }
   std::sort(bp.begin(), bp.end());
-  // the |.| kinks: sign changes of either joint's power on a scan inside each interval,
-  // bisected to the last bit
+  // the |.| kinks: sign changes of either joint's power on a scan inside each interval
   std::vector<double> kinks;
   constexpr int kScan = 256;
   for (size_t i = 0; i + 1 < bp.size(); ++i) {
     const double a = bp[i], b = bp[i + 1];
     if (!(b > a)) continue;
     const int n = std::max(8, int(std::lround(kScan * (b - a) / T)));
-    double t_prev = 0;
-    JointPowers p_prev;
-    for (int k = 0; k < n; ++k) {
-      const double t = a + (b - a) * (k + 0.5) / n;
-      const JointPowers pk = power.at(t);
-      ++evaluations;
-      if (!std::isfinite(pk.p1) || !std::isfinite(pk.p2)) {
-        q.energy = std::numeric_limits<double>::infinity();
-        q.evaluations = evaluations;
-        return q;
-      }
-      if (k > 0) {
-        for (int j = 0; j < 2; ++j) {
-          const double v0 = j == 0 ? p_prev.p1 : p_prev.p2, v1 = j == 0 ? pk.p1 : pk.p2;
-          if (!((v0 < 0 && v1 > 0) || (v0 > 0 && v1 < 0))) continue;
-          double lo = t_prev, hi = t;
-          for (int it = 0; it < 200; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            const JointPowers pm = power.at(mid);
-            ++evaluations;
-            const double vm = j == 0 ? pm.p1 : pm.p2;
-            if (!std::isfinite(vm)) break;
-            ((vm < 0) == (v0 < 0) ? lo : hi) = mid;
-          }
-          kinks.push_back(0.5 * (lo + hi));
-        }
-      }
-      t_prev = t;
-      p_prev = pk;
+    if (!power_kinks(power, a, b, n, evaluations, kinks)) {
+      q.energy = std::numeric_limits<double>::infinity();
+      q.evaluations = evaluations;
+      return q;
     }
   }
   for (const double k : kinks) bp.push_back(k);
@@ -279,61 +343,16 @@ EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program,
   q.breakpoints = int(bp.size()) - 2;
 
   const auto f = [&](double t) { return power.at(t).abs_sum(); };
-  std::priority_queue<QuadSegment> heap;
-  for (size_t i = 0; i + 1 < bp.size(); ++i) {
-    if (!(bp[i + 1] > bp[i])) continue;
-    QuadSegment s;
-    if (!gk15(f, bp[i], bp[i + 1], s, evaluations)) {
-      q.energy = std::numeric_limits<double>::infinity();
-      q.evaluations = evaluations;
-      return q;
-    }
-    heap.push(s);
-  }
-  const auto totals = [&](double& value, double& error) {
-    // summed afresh from the segments (no drift of running sums)
-    std::priority_queue<QuadSegment> copy = heap;
-    value = 0;
-    error = 0;
-    while (!copy.empty()) {
-      value += copy.top().value;
-      error += copy.top().error;
-      copy.pop();
-    }
-  };
-  double value = 0, error = 0;
-  totals(value, error);
-  while (int(heap.size()) < max_intervals && !(error <= tol_rel * std::abs(value))) {
-    const QuadSegment worst = heap.top();
-    const double mid = 0.5 * (worst.a + worst.b);
-    // an interval that cannot be halved any more: the estimate stays as it is
-    if (!(mid > worst.a && mid < worst.b) || worst.b - worst.a < 1e-15 * T) break;
-    QuadSegment left, right;
-    if (!gk15(f, worst.a, mid, left, evaluations) || !gk15(f, mid, worst.b, right, evaluations)) {
-      q.energy = std::numeric_limits<double>::infinity();
-      q.evaluations = evaluations;
-      return q;
-    }
-    heap.pop();
-    heap.push(left);
-    heap.push(right);
-    value += left.value + right.value - worst.value;
-    error += left.error + right.error - worst.error;
-    if (heap.size() % 256 == 0) totals(value, error);
-  }
-  totals(value, error);
-  if (power.folds()) {
+  adaptive_gk15(f, bp, T, tol_rel, max_intervals, evaluations, q);
+  if (power.folds() && std::isfinite(q.energy)) {
     const FoldJump j = fold_jump(arm, power);
     q.jump = j.energy;
     q.jump_error = j.error;
-    value += j.energy;
-    error += j.error;
+    q.energy += j.energy;
+    q.error += j.error;
+    q.converged = std::isfinite(q.energy) && q.error <= tol_rel * std::abs(q.energy);
   }
-  q.energy = value;
-  q.error = error;
-  q.intervals = int(heap.size());
   q.evaluations = evaluations;
-  q.converged = std::isfinite(value) && error <= tol_rel * std::abs(value);
   return q;
 }
 
