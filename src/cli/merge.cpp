@@ -76,6 +76,10 @@ const char* run_level_file(const std::string& name) {
   for (const char* f :
        {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"})
     if (name == f) return f;
+  // each study's figure over all its cases on the index page (e.g. placement_root_loci.svg)
+  for (const StudyEntry& e : study_registry())
+    if (!e.index_figure.file.empty() && name == e.index_figure.file)
+      return e.index_figure.file.data();
   return nullptr;
 }
 

@@ -48,8 +48,9 @@ std::string leftovers(const fs::path& dir) {
 
 TEST(OutputSafety, CaseNamesOfRunLevelFilesAreRefusedAtValidate) {
   const fs::path d = fresh_dir("names_reserved");
+  // (placement_root_loci.svg: a study's figure over all its cases on the index page)
   for (const char* name : {"index.html", "summary.md", "junit.xml", "report.css", "sweep",
-                           "sweep.csv", "sweep.json"}) {
+                           "sweep.csv", "sweep.json", "placement_root_loci.svg"}) {
     const fs::path c = quick_case(d, name);
     const CmdRun r = run_cli("validate " + c.string());
     EXPECT_EQ(r.exit_code, 2) << name << "\n" << r.output;
