@@ -41,6 +41,19 @@ std::vector<std::pair<std::string, std::optional<int>>> active_of(const PS::Deci
   return out;
 }
 
+// lines of the answer box that share their text: (text, who), in order of first appearance
+using GroupedLines = std::vector<std::pair<std::string, std::string>>;
+
+// adds `who` to the line of `text`, or a new line
+void add_to_group(GroupedLines& lines, const std::string& text, const std::string& who) {
+  auto it =
+      std::find_if(lines.begin(), lines.end(), [&](const auto& d) { return d.first == text; });
+  if (it == lines.end())
+    lines.emplace_back(text, who);
+  else
+    it->second += ", " + who;
+}
+
 }  // namespace
 
 std::string placement_also_active(
@@ -62,18 +75,11 @@ std::string placement_also_active(
 void placement_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& a) {
   const auto pl = read_section<PS>(results, "placement");
   // optima decided alike share one line: "cycloidal 1, poly345 1: ..."
-  std::vector<std::pair<std::string, std::string>> decided;  // (words, who), in order
-  for (const auto& o : pl.optima) {
-    const std::string words =
-        binding_words(o.decided_by) + placement_also_active(active_of(o.decided_by));
-    const std::string who = o.program + " " + as_text(o.configuration);
-    auto it = std::find_if(decided.begin(), decided.end(),
-                           [&](const auto& d) { return d.first == words; });
-    if (it == decided.end())
-      decided.emplace_back(words, who);
-    else
-      it->second += ", " + who;
-  }
+  GroupedLines decided;
+  for (const auto& o : pl.optima)
+    add_to_group(decided,
+                 binding_words(o.decided_by) + placement_also_active(active_of(o.decided_by)),
+                 o.program + " " + as_text(o.configuration));
   for (const auto& [words, who] : decided) a.binding.push_back(who + ": " + words);
   // configurations 1 and 2 tie at mirrored optima: say so once, and why (docs/defects.md)
   std::string ties;
@@ -95,16 +101,9 @@ void placement_answer(const nlohmann::json& results, const ResultsRecord& record
         (mirrored ? ": mirrored in the line's perpendicular bisector and run backwards in time, "
                     "each is the other (docs/defects.md, kopmaz-configuration-symmetry)"
                   : ""));
-  std::vector<std::pair<std::string, std::string>> unsolved;  // (reason, who), in order
-  for (const auto& u : pl.unsolved) {
-    const std::string who = u.program + " " + as_text(u.configuration);
-    auto it = std::find_if(unsolved.begin(), unsolved.end(),
-                           [&](const auto& d) { return d.first == u.reason; });
-    if (it == unsolved.end())
-      unsolved.emplace_back(u.reason, who);
-    else
-      it->second += ", " + who;
-  }
+  GroupedLines unsolved;
+  for (const auto& u : pl.unsolved)
+    add_to_group(unsolved, u.reason, u.program + " " + as_text(u.configuration));
   for (const auto& [reason, who] : unsolved)
     a.binding.push_back(who + ": no optimum (" + reason + ")");
   a.assumptions.push_back(
