@@ -653,6 +653,9 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_dir, "Output folder; each case goes to OUT/<case name>/")
       ->capture_default_str();
   run->add_flag("--no-render", no_render, "Skip MuJoCo frame rendering (everything else is made)");
+  bool no_sensitivity = false;
+  run->add_flag("--no-sensitivity", no_sensitivity,
+                "Skip the re-solves of each case's sensitivity: part (docs/sensitivity.md)");
   run->add_flag("--pdf", options.pdf,
                 "Also print each report to report.pdf with headless Chromium");
   run->add_option("--jobs,-j", jobs, "Cases run in parallel")
@@ -776,6 +779,7 @@ int main(int argc, char** argv) {
     } else {
       options.out_dir = out_dir;
       options.render = !no_render;
+      options.sensitivity = !no_sensitivity;
       code = cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large, run_paths);
     }
   } catch (const std::exception& e) {
