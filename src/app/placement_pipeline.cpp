@@ -2,6 +2,7 @@
 //
 // results.json "placement" section: studies/placement/results_section.hpp (every key, typed;
 // written from it here, read back from it by the report and merge).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -284,9 +285,11 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
         best = &pc;
     std::vector<std::string> b;
     if (!best) return b;
-    for (const pl::ActiveConstraint& a : best->decision.active)
-      b.push_back(std::string(pl::binding_name(a.kind)) +
-                  (a.joint >= 0 ? ", joint " + std::to_string(a.joint + 1) : ""));
+    for (const pl::ActiveConstraint& a : best->decision.active) {
+      std::string words = pl::binding_name(a.kind);  // inner_clearance -> inner clearance
+      std::replace(words.begin(), words.end(), '_', ' ');
+      b.push_back(words + (a.joint >= 0 ? ", joint " + std::to_string(a.joint + 1) : ""));
+    }
     return b;
   }
 };

@@ -209,7 +209,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
     // the sensitivity part: the case re-solved at each key's steps (no rendering)
     if (status == studies::Status::kSolved && options.sensitivity && !c.info.sensitivity.empty()) {
       scene::PhaseScope phase("sensitivity");
-      r.sensitivity = run_sensitivity(c, progress);
+      r.sensitivity = run_sensitivity(c, progress, 0.975, 0.99);  // after the studies' 0.97
     }
     // render and report only what was solved
     if (status == studies::Status::kSolved && options.render) {

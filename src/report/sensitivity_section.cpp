@@ -60,7 +60,7 @@ std::string write_tornado(const std::filesystem::path& dir, const SensitivityRec
   if (keys.empty() || !(span > 0) || !std::isfinite(span)) return "";
   // a bar per step from the nominal value (the centre line): the step below the key's
   // value in blue, above in orange; drawn for the answer box's narrow column
-  const int row = 20, top = 34, label_w = 150, plot_w = 150, right = 62;
+  const int row = 19, top = 32, label_w = 150, plot_w = 150, right = 62;
   const int width = label_w + plot_w + right, height = top + row * int(keys.size()) + 4;
   const double cx = label_w + plot_w / 2.0, scale = (plot_w / 2.0 - 3) / span;
   const char* minus_colour = "#0072b2";
@@ -134,7 +134,9 @@ Section sensitivity_section(const SensitivityRecord& s) {
   sec.paragraph(
       "How much the answer depends on the values the case assumes: the case was solved again "
       "with each key of its sensitivity part at its value minus and plus the step, every other "
-      "key as written (warm-started from this answer where the study allows it; no frames). "
+      "key as written (warm-started from this answer where the study allows it: such a step "
+      "follows this answer's local optimum, where a solve from scratch may land on another; "
+      "no frames). "
       "The figure is the " +
       s.label + ", " + format_sig(s.nominal, 6) + (s.unit.empty() ? "" : " " + s.unit) +
       " in this case's answer. The elasticity is the central difference ((f+ - f-) / f) / "
@@ -144,8 +146,9 @@ Section sensitivity_section(const SensitivityRecord& s) {
       format_sig(s.seconds, 3) + " s in all.");
   Table t;
   t.caption = "Every key of the case's sensitivity part, largest influence first.";
-  t.header = {"Key",          "Value, step", "At -step",         "At +step",
-              "Change - / +", "Elasticity",  "Binding at -step", "Binding at +step"};
+  t.header = {"What is varied",   "Case key, value, step", "At -step",
+              "At +step",         "Change - / +",          "Elasticity",
+              "Binding at -step", "Binding at +step"};
   const std::string unit = s.unit.empty() ? "" : " " + s.unit;
   auto at = [&](const SensitivityStepRecord& st) {
     const std::string v = "key " + values_words(st.key_value) + ": ";
@@ -161,11 +164,12 @@ Section sensitivity_section(const SensitivityRecord& s) {
     return list_words(st.binding) + (st.binding_changed ? " (changed)" : "");
   };
   for (const auto* k : by_influence(s)) {
-    t.rows.push_back({k->key + (k->why.empty() ? "" : " (" + k->why + ")"),
-                      values_words(k->nominal) + ", ±" + step_words(*k, +1).substr(1), at(k->minus),
-                      at(k->plus), change(k->minus) + " / " + change(k->plus),
-                      k->elasticity ? format_sig(*k->elasticity, 4) : std::string("-"),
-                      binding(k->minus), binding(k->plus)});
+    t.rows.push_back(
+        {k->why.empty() ? k->key : k->why,
+         k->key + " = " + values_words(k->nominal) + ", ±" + step_words(*k, +1).substr(1),
+         at(k->minus), at(k->plus), change(k->minus) + " / " + change(k->plus),
+         k->elasticity ? format_sig(*k->elasticity, 4) : std::string("-"), binding(k->minus),
+         binding(k->plus)});
   }
   sec.table(std::move(t));
   for (const auto& k : s.keys)
