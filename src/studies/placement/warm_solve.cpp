@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <limits>
+#include <locale>
+#include <sstream>
 
 #include "studies/placement/arm2.hpp"
 #include "studies/placement/converge.hpp"
@@ -62,9 +63,12 @@ std::optional<Result> solve_warm(const Spec& spec, const Result& nominal) {
     res.cases.push_back(std::move(out));
   }
   if (std::isfinite(best)) {
-    char b[120];
-    std::snprintf(b, sizeof b, "least energy %.4f J, refined from the nominal optimum", best);
-    res.message = b;
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os.setf(std::ios::fixed);
+    os.precision(4);
+    os << "least energy " << best << " J, refined from the nominal optimum";
+    res.message = os.str();
     res.status = Status::kSolved;
   } else {
     res.status = Status::kUnsolvable;

@@ -2,7 +2,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
+#include <locale>
+#include <sstream>
 
 #include "studies/throwing/solve.hpp"
 
@@ -62,19 +63,24 @@ ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfi
   r.idp = r.nlopt;  // no IDP ran: the comparison is the answer itself
   r.idp_check = r.nlopt_check;
   const bool feasible = r.nlopt_run.feasible && r.nlopt_check.feasible;
-  char b[160];
-  std::snprintf(b, sizeof b, "%.4f J by SLSQP from the nominal answer%s, first-order residual %.6f",
-                r.nlopt.evaluation.energy, r.slsqp_best_start == 1 ? " (repaired)" : "",
-                r.nlopt_run.kkt_residual);
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os.setf(std::ios::fixed);
+  os.precision(4);
+  os << r.nlopt.evaluation.energy << " J by SLSQP from the nominal answer"
+     << (r.slsqp_best_start == 1 ? " (repaired)" : "") << ", first-order residual ";
+  os.precision(6);
+  os << r.nlopt_run.kkt_residual;
+  const std::string b = os.str();
   if (!feasible) {
     r.status = Status::kUnsolvable;
-    r.message = std::string("no feasible throw found from the nominal answer: ") + b +
+    r.message = "no feasible throw found from the nominal answer: " + b +
                 (r.nlopt_run.feasible ? " breaks a limit in the re-check" : " breaks a limit");
   } else {
     r.status = Status::kSolved;
     r.saving_percent = 100.0 * (r.initial.evaluation.energy - r.nlopt.evaluation.energy) /
                        std::abs(r.initial.evaluation.energy);
-    r.message = std::string(r.nlopt_run.converged ? "" : "NOT converged: ") + b;
+    r.message = (r.nlopt_run.converged ? "" : "NOT converged: ") + b;
   }
   r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
