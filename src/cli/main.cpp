@@ -188,6 +188,9 @@ bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
     const std::string commit = armstudy::git_commit();
     return r.case_info.sha256 == c.info.sha256 && r.armstudy_version == armstudy::kVersion &&
            r.git_commit.value_or("") == commit && r.run_options.render == options.render &&
+           // its sensitivity part as this run would write it (none with --no-sensitivity)
+           r.sensitivity.has_value() ==
+               (options.sensitivity && !c.info.sensitivity.empty() && r.solved()) &&
            armstudy::app::case_passed(r) && listed_files_intact(out_dir / c.info.name, r);
   } catch (const std::exception&) {
     return false;

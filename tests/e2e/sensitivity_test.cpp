@@ -8,9 +8,12 @@
 #include <cstdio>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "app/pipeline.hpp"
 #include "app/sensitivity.hpp"
 #include "cases/case_error.hpp"
+#include "testing/cli.hpp"
 #include "testing/files.hpp"
 
 namespace armstudy::sensitivity_e2e {
@@ -91,6 +94,31 @@ sensitivity:
           << first.format();
       EXPECT_NE(first.message.find(b.words), std::string::npos) << first.format();
     }
+  }
+}
+
+// `run --no-sensitivity` writes no sensitivity part, and a later run without it does not keep
+// that output as done: it re-runs the case and writes the part (and the other way round);
+// the same options again skip the case
+TEST(Sensitivity, ARunWithoutTheSensitivityPartIsRedoneByOneWithIt) {
+  const std::filesystem::path out = testing::fresh_dir("sensitivity_skip");
+  const std::string run = "run " + std::string(ARMSTUDY_SOURCE_DIR) +
+                          "/reports/cases/time-optimal-source.yaml --no-render --out " +
+                          out.string();
+  auto part = [&] {
+    const auto j = nlohmann::json::parse(testing::slurp(out / "time-optimal-source/results.json"));
+    return j.contains("sensitivity") ? static_cast<int>(j["sensitivity"]["keys"].size()) : -1;
+  };
+  for (const auto& [flags, keys, runs] :
+       {std::tuple<std::string, int, std::string>{" --no-sensitivity", -1, "all 1 case(s)"},
+        {" --no-sensitivity", -1, "all 0 case(s)"},
+        {"", 2, "all 1 case(s)"},
+        {"", 2, "all 0 case(s)"},
+        {" --no-sensitivity", -1, "all 1 case(s)"}}) {
+    const testing::CliRun r = testing::run_cli(run + flags);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find(runs), std::string::npos) << flags << ": " << r.output;
+    EXPECT_EQ(part(), keys) << flags;
   }
 }
 
