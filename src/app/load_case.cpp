@@ -103,6 +103,7 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
     sw->finish();
   }
   out.info.source = cases::read_source(root);
+  out.info.sensitivity = cases::read_sensitivity(root);
   if (study) {
     out.info.study = *study;
     const auto it = std::find_if(study_registry().begin(), study_registry().end(),

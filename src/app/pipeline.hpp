@@ -60,6 +60,25 @@ class StudyRun {
                                        const cases::CaseInfo& info) {
     return nlohmann::json::array();
   }
+
+  // what a sensitivity part (app/sensitivity.hpp) asks of a solved study
+  /// The name of the key figure that answers the case (one of key_figures()); the
+  /// sensitivity part varies it. Default: the first key figure.
+  virtual std::string headline() const {
+    const auto k = key_figures();
+    return k.empty() ? std::string() : k.front().name;
+  }
+  /// The constraints that bind the answer, in words, in a fixed order (empty: none binds
+  /// or the study has no constraints).
+  virtual std::vector<std::string> binding() const { return {}; }
+  /// Prepares this run (the same case with one key changed) to solve from `nominal`'s
+  /// answer, and only for the headline figure (no report extras). Returns true when
+  /// solve() will then be warm-started; false: solve() solves from scratch (or only without
+  /// the extras). Called before solve().
+  virtual bool warm_start(const StudyRun& nominal) { return false; }
+  /// After solve(): whether the answer came from the nominal one (a warm start that could not
+  /// be used, e.g. a start outside a tightened constraint, solves from scratch).
+  virtual bool warm_started() const { return false; }
 };
 
 /// A study's sections of its case page, built from the whole results.json (the study's

@@ -2,9 +2,11 @@
 //
 // results.json "placement" section: studies/placement/results_section.hpp (every key, typed;
 // written from it here, read back from it by the report and merge).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "app/exports_json.hpp"
 #include "app/json_numbers.hpp"
@@ -23,6 +25,7 @@
 #include "studies/placement/refine.hpp"
 #include "studies/placement/results_section.hpp"
 #include "studies/placement/solve.hpp"
+#include "studies/placement/warm_solve.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -134,9 +137,12 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
   using TypedStudyRun::TypedStudyRun;
 
   studies::Status solve(const studies::ProgressFn& progress) override {
-    result_ = pl::solve(spec_, progress);
+    std::optional<pl::Result> warm;
+    if (warm_from_) warm = pl::solve_warm(spec_, *warm_from_);
+    warm_used_ = warm.has_value();
+    result_ = warm ? std::move(*warm) : pl::solve(spec_, progress);
     // MuJoCo's own dynamics on every optimum's torques (scene/dynamic_replay.hpp)
-    if (result_.status == studies::Status::kSolved) {
+    if (result_.status == studies::Status::kSolved && !lean_) {
       if (progress) progress(0.97, "MuJoCo dynamic replay");
       replays_ = scene::replay_placement(spec_, result_);
     }
@@ -251,6 +257,41 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
 
  private:
   std::vector<scene::PlacementReplay> replays_;
+  const pl::Result* warm_from_ = nullptr;  ///< a sensitivity step's nominal answer
+  bool lean_ = false;                      ///< a sensitivity step: no report extras
+  bool warm_used_ = false;                 ///< the last solve refined the nominal optimum
+
+ public:
+  // a sensitivity step: refined from the nominal optimum (studies/placement/warm_solve.hpp);
+  // where that optimum is not admissible at the step, solved anew without the map, the
+  // margin sweep, the evaluations and MuJoCo's replay
+  bool warm_start(const StudyRun& nominal) override {
+    lean_ = true;
+    spec_.map_nx = spec_.map_ny = 2;
+    spec_.sensitivity_margins.clear();
+    spec_.evaluations.clear();
+    const auto* n = dynamic_cast<const PlacementRun*>(&nominal);
+    if (!n || n->result_.status != studies::Status::kSolved) return false;
+    warm_from_ = &n->result_;
+    return true;
+  }
+  bool warm_started() const override { return warm_used_; }
+  // the active constraints of the least-energy optimum (refine.hpp's order)
+  std::vector<std::string> binding() const override {
+    const pl::ProgramConfig* best = nullptr;
+    for (const pl::ProgramConfig& pc : result_.cases)
+      if (pc.found && !pc.refined.convergence.energy_withheld() &&
+          (!best || pc.refined.reported_metrics().energy < best->refined.reported_metrics().energy))
+        best = &pc;
+    std::vector<std::string> b;
+    if (!best) return b;
+    for (const pl::ActiveConstraint& a : best->decision.active) {
+      std::string words = pl::binding_name(a.kind);  // inner_clearance -> inner clearance
+      std::replace(words.begin(), words.end(), '_', ' ');
+      b.push_back(words + (a.joint >= 0 ? ", joint " + std::to_string(a.joint + 1) : ""));
+    }
+    return b;
+  }
 };
 
 Section PlacementRun::section() const {

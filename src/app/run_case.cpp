@@ -20,6 +20,7 @@
 
 #include "app/json_numbers.hpp"
 #include "app/provenance.hpp"
+#include "app/sensitivity.hpp"
 #include "cases/case_info.hpp"
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
@@ -205,6 +206,11 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
         }
       }
     } wait_for_videos;
+    // the sensitivity part: the case re-solved at each key's steps (no rendering)
+    if (status == studies::Status::kSolved && options.sensitivity && !c.info.sensitivity.empty()) {
+      scene::PhaseScope phase("sensitivity");
+      r.sensitivity = run_sensitivity(c, progress, 0.975, 0.99);  // after the studies' 0.97
+    }
     // render and report only what was solved
     if (status == studies::Status::kSolved && options.render) {
       if (progress) progress(0.99, "rendering");

@@ -20,6 +20,9 @@ struct RunOptions {
   std::filesystem::path out_dir = "reports/out";
   bool render = true;
   bool pdf = false;
+  /// Re-solves each key of the case's `sensitivity:` part (app/sensitivity.hpp); false with
+  /// --no-sensitivity.
+  bool sensitivity = true;
   /// With --pdf: prints each case's page as soon as the case is in place (one browser for
   /// the run, beside the cases still solving); finish_reports prints what it did not.
   report::PdfPrinter* printer = nullptr;

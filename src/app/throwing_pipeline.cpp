@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "app/exports_json.hpp"
 #include "app/json_numbers.hpp"
@@ -17,6 +18,7 @@
 #include "scene/model_export.hpp"
 #include "scene/throwing_frames.hpp"
 #include "studies/throwing/results_section.hpp"
+#include "studies/throwing/warm_solve.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -137,8 +139,29 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
   using TypedStudyRun::TypedStudyRun;
 
   st::Status solve(const st::ProgressFn& progress) override {
-    result_ = st::solve_throwing(spec_, progress);
+    result_ = warm_ ? st::solve_throwing_warm(spec_, *warm_) : st::solve_throwing(spec_, progress);
     return result_.status;
+  }
+
+  // a sensitivity step: SLSQP from the nominal answer alone (studies/throwing/warm_solve.hpp)
+  bool warm_start(const StudyRun& nominal) override {
+    const auto* n = dynamic_cast<const ThrowingRun*>(&nominal);
+    if (!n || n->result_.status != st::Status::kSolved) return false;
+    const auto& r = n->result_;
+    const st::VelocityProfile& p = r.answer == "slsqp" ? r.nlopt.profile : r.idp.profile;
+    if (p.stages() != spec_.stages) return false;
+    warm_ = p;
+    return true;
+  }
+  bool warm_started() const override { return warm_.has_value(); }
+  // the kinds of the answer's active constraints with a positive multiplier
+  std::vector<std::string> binding() const override {
+    const auto& r = result_;
+    std::vector<std::string> b =
+        r.answer == "slsqp" ? r.nlopt_run.binding : r.idp_optimality.binding;
+    std::sort(b.begin(), b.end());
+    b.erase(std::unique(b.begin(), b.end()), b.end());
+    return b;
   }
 
   std::vector<st::Check> checks() const override {
@@ -540,6 +563,9 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
                                   const cases::CaseInfo& info) override {
     return scene::render_throwing_frames(spec_, result_, info.render, dir);
   }
+
+ private:
+  std::optional<st::VelocityProfile> warm_;  ///< a sensitivity step's start (warm_start)
 };
 
 std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {

@@ -100,7 +100,7 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
   studies::Status solve(const studies::ProgressFn& progress) override {
     result_ = to::solve(spec_, progress);
     // MuJoCo's own dynamics on the exact solution's torques
-    if (result_.status == studies::Status::kSolved) {
+    if (result_.status == studies::Status::kSolved && !lean_) {
       if (progress) progress(0.97, "MuJoCo dynamic replay");
       replay_ = scene::replay_time_optimal(spec_, result_);
     }
@@ -178,8 +178,31 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
   nlohmann::json write_exports(const std::filesystem::path& dir,
                                const cases::CaseInfo& info) override;
 
+  // a sensitivity step: the exact solver alone (it needs no start: it is fast), without the
+  // DP, the Complex method and MuJoCo's replay
+  bool warm_start(const StudyRun&) override {
+    spec_.dp.states.clear();
+    spec_.dp.convergence_segments.clear();
+    spec_.complex.enabled = false;
+    lean_ = true;
+    return false;
+  }
+  // the limits the exact solution reaches (within 0.1 %) somewhere along the path
+  std::vector<std::string> binding() const override {
+    std::vector<std::string> b;
+    if (result_.solvers.empty() || !result_.solvers.front().solved) return b;
+    const to::Violation& v = result_.solvers.front().violation;
+    for (int kind = 0; kind < 3; ++kind)
+      for (int j = 0; j < spec_.chain.num_links(); ++j)
+        if (v.ratio[kind][j] >= 0.999)
+          b.push_back(std::string(to::limit_name(static_cast<to::LimitKind>(kind))) +
+                      " limit, joint " + std::to_string(j + 1));
+    return b;
+  }
+
  private:
   std::optional<scene::DynamicReplay> replay_;
+  bool lean_ = false;  ///< a sensitivity step: no replay
 };
 
 Section TimeOptimalRun::section() const {

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "cases/sensitivity_spec.hpp"
 #include "cases/source_spec.hpp"
 
 namespace armstudy::cases {
@@ -41,6 +42,8 @@ struct CaseInfo {
   std::vector<std::pair<std::string, std::string>> sweep_point;
   /// `source:`: what the case's source printed, to set beside armstudy's numbers
   SourceSpec source;
+  /// `sensitivity:`: the keys re-solved at -step and +step (app/sensitivity.hpp)
+  SensitivitySpec sensitivity;
 };
 
 /// SHA-256 of bytes, lowercase hex.

@@ -188,6 +188,9 @@ bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
     const std::string commit = armstudy::git_commit();
     return r.case_info.sha256 == c.info.sha256 && r.armstudy_version == armstudy::kVersion &&
            r.git_commit.value_or("") == commit && r.run_options.render == options.render &&
+           // its sensitivity part as this run would write it (none with --no-sensitivity)
+           r.sensitivity.has_value() ==
+               (options.sensitivity && !c.info.sensitivity.empty() && r.solved()) &&
            armstudy::app::case_passed(r) && listed_files_intact(out_dir / c.info.name, r);
   } catch (const std::exception&) {
     return false;
@@ -653,6 +656,9 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_dir, "Output folder; each case goes to OUT/<case name>/")
       ->capture_default_str();
   run->add_flag("--no-render", no_render, "Skip MuJoCo frame rendering (everything else is made)");
+  bool no_sensitivity = false;
+  run->add_flag("--no-sensitivity", no_sensitivity,
+                "Skip the re-solves of each case's sensitivity: part (docs/sensitivity.md)");
   run->add_flag("--pdf", options.pdf,
                 "Also print each report to report.pdf with headless Chromium");
   run->add_option("--jobs,-j", jobs, "Cases run in parallel")
@@ -776,6 +782,7 @@ int main(int argc, char** argv) {
     } else {
       options.out_dir = out_dir;
       options.render = !no_render;
+      options.sensitivity = !no_sensitivity;
       code = cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large, run_paths);
     }
   } catch (const std::exception& e) {

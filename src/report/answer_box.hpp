@@ -27,6 +27,8 @@ struct AnswerBox {
   std::vector<std::string> binding;      ///< what binds / decides the optimum, in words
   std::vector<std::string> assumptions;  ///< where the source is silent: value used and why
   std::string source;  ///< the case's source beside armstudy, in one line; empty: no source
+  /// the tornado chart of the case's sensitivity part (report/sensitivity_section.hpp)
+  std::string sensitivity_chart, sensitivity_caption;
 };
 
 /// A study's own lines of its answer box (its registry record, app::StudyEntry::answer): what

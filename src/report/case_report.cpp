@@ -17,6 +17,7 @@
 #include "report/owned_output.hpp"
 #include "report/page.hpp"
 #include "report/results_record.hpp"
+#include "report/sensitivity_section.hpp"
 #include "report/source_comparison.hpp"
 #include "report/study_sections.hpp"
 
@@ -379,6 +380,9 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
     ad.set("has_assumptions", !a.assumptions.empty());
     ad.set("source", a.source);
     ad.set("has_source", !a.source.empty());
+    ad.set("sensitivity_chart", a.sensitivity_chart);
+    ad.set("sensitivity_caption", a.sensitivity_caption);
+    ad.set("has_sensitivity", !a.sensitivity_chart.empty());
     d.set("answer", ad);
   }
   return d;
@@ -432,6 +436,7 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
     page.sections.push_back(std::move(s));
   }
   sections(results, figures, page);  // the study's own (its registry record)
+  if (record.sensitivity) page.sections.push_back(sensitivity_section(*record.sensitivity));
   // page 2 opens with the source beside armstudy, for a case that reproduces one
   if (record.source) page.sections.insert(page.sections.begin(), source_section(*record.source));
   if (solved) {
@@ -474,6 +479,9 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
   page.sections.push_back(case_section(info));
   page.sections.push_back(provenance_section(record, info));
   lay_out_case_page(results, answer, page);
+  if (record.sensitivity && page.answer)
+    page.answer->sensitivity_chart =
+        write_tornado(dir, *record.sensitivity, &page.answer->sensitivity_caption);
 
   if (record.case_info.expect == page.status) page.status += " (as the case expects)";
   write_page(dir, page, info);

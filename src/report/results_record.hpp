@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/results_fields.hpp"
+#include "report/sensitivity_record.hpp"
 
 namespace armstudy::report {
 
@@ -125,6 +126,7 @@ struct ResultsRecord {
   std::vector<AnimationRecord> animations;
   std::vector<FileRecord> files;
   std::optional<SourceRecord> source;
+  std::optional<SensitivityRecord> sensitivity;
 
   bool solved() const { return status == "solved"; }
   /// the status the case expects: "unsolvable" when its file says so, else "solved"
@@ -278,6 +280,8 @@ void fields(V& v, ResultsRecord& x) {
   v("files", x.files, "every file written beside results.json, with its sha256");
   v.optional("source", x.source,
              "cases that reproduce a source: what it printed beside armstudy's values");
+  v.optional("sensitivity", x.sensitivity,
+             "cases with a sensitivity part: the answer re-solved at -step and +step of each key");
 }
 
 /// The shared record of a whole results.json (results[record.study] is left to the study's

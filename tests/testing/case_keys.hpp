@@ -6,10 +6,11 @@
 
 namespace armstudy::testing {
 
-/// Marks study, name, description, expect, render, sweep and source as known in `root`, so that
-/// root.finish() judges only the study's own keys.
+/// Marks study, name, description, expect, render, sweep, source and sensitivity as known in
+/// `root`, so that root.finish() judges only the study's own keys.
 inline void mark_cli_keys(cases::Map& root) {
-  for (const char* k : {"study", "name", "description", "expect", "render", "sweep", "source"})
+  for (const char* k :
+       {"study", "name", "description", "expect", "render", "sweep", "source", "sensitivity"})
     root.get(k);
 }
 

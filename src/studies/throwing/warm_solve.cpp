@@ -1,0 +1,89 @@
+#include "studies/throwing/warm_solve.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <locale>
+#include <sstream>
+
+#include "studies/throwing/solve.hpp"
+
+namespace armstudy::studies {
+
+ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfile& start) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ThrowingResult r;
+  ThrowSetup setup;
+  VelocityProfile initial;
+  const Eigen::Vector2d delta = spec.release - spec.start;
+  try {
+    setup = make_throw_setup(spec);
+    initial = eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release, spec.release_rate,
+                          spec.tf, spec.stages);
+  } catch (const std::invalid_argument& e) {
+    r.message = std::string("invalid throwing set-up: ") + e.what();
+    return r;
+  }
+  if (start.stages() != spec.stages) {
+    r.message = "the warm start has another number of stages";
+    return r;
+  }
+  r.initial = record_motion(setup, spec, initial);
+  r.initial_feasible = r.initial.evaluation.feasible;
+  NloptSettings ns = spec.nlopt;
+  ns.threads = spec.threads;
+  ns.backoff = spec.backoff;
+  VelocityProfile from = start;
+  project_displacement(from, delta);
+  ThrowingResult::SlsqpStart s;
+  s.name = "warm start";
+  s.run = run_nlopt(setup, from, delta, ns);
+  s.check = verify_profile(setup, s.run.best, spec.check_refinement);
+  r.slsqp_starts.push_back(s);
+  r.slsqp_best_start = 0;
+  if (!(s.run.feasible && s.check.feasible)) {
+    // the nominal answer breaks a tighter limit and SLSQP did not leave it: first the
+    // nearest profile twice the back-off inside every limit (as solve_throwing repairs
+    // eq. 8), then SLSQP from there
+    r.repair_run = run_nlopt(setup, from, delta, ns, Objective::kViolation);
+    if (r.repair_run.feasible) {
+      ThrowingResult::SlsqpStart t;
+      t.name = "warm start, repaired";
+      t.run = run_nlopt(setup, r.repair_run.best, delta, ns);
+      t.check = verify_profile(setup, t.run.best, spec.check_refinement);
+      r.slsqp_starts.push_back(t);
+      if (t.run.feasible && t.check.feasible) r.slsqp_best_start = 1;
+    }
+  }
+  s = r.slsqp_starts[r.slsqp_best_start];
+  r.nlopt_ran = true;
+  r.answer = "slsqp";
+  r.nlopt_run = s.run;
+  r.nlopt_check = s.check;
+  r.nlopt = record_motion(setup, spec, r.nlopt_run.best);
+  r.idp = r.nlopt;  // no IDP ran: the comparison is the answer itself
+  r.idp_check = r.nlopt_check;
+  const bool feasible = r.nlopt_run.feasible && r.nlopt_check.feasible;
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os.setf(std::ios::fixed);
+  os.precision(4);
+  os << r.nlopt.evaluation.energy << " J by SLSQP from the nominal answer"
+     << (r.slsqp_best_start == 1 ? " (repaired)" : "") << ", first-order residual ";
+  os.precision(6);
+  os << r.nlopt_run.kkt_residual;
+  const std::string b = os.str();
+  if (!feasible) {
+    r.status = Status::kUnsolvable;
+    r.message = "no feasible throw found from the nominal answer: " + b +
+                (r.nlopt_run.feasible ? " breaks a limit in the re-check" : " breaks a limit");
+  } else {
+    r.status = Status::kSolved;
+    r.saving_percent = 100.0 * (r.initial.evaluation.energy - r.nlopt.evaluation.energy) /
+                       std::abs(r.initial.evaluation.energy);
+    r.message = (r.nlopt_run.converged ? "" : "NOT converged: ") + b;
+  }
+  r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace armstudy::studies

@@ -1,0 +1,22 @@
+#pragma once
+/// The throwing study re-solved from a known throw (a sensitivity step, app/sensitivity.hpp):
+/// SLSQP from `start` alone (no IDP, no further starts, no replay), the answer re-checked
+/// with finer steps as in solve_throwing; when that throw is infeasible (the start breaks a
+/// tightened limit), SLSQP again from the repair of `start` (the nearest profile inside
+/// every limit, as solve_throwing repairs eq. 8). Only what the answer needs is
+/// filled: the eq. 8 start (for the saving), nlopt, nlopt_run, nlopt_check, the SLSQP starts
+/// ("warm start", "warm start, repaired"), the flight, status and message.
+
+#include "studies/common.hpp"
+#include "studies/throwing/result.hpp"
+#include "studies/throwing/spec.hpp"
+
+namespace armstudy::studies {
+
+/// Solves `spec` by SLSQP from `start` (a profile of spec.stages stages meeting the
+/// displacement, e.g. the nominal case's answer). Solved when SLSQP's throw is feasible,
+/// also in the re-check; its message starts "NOT converged" when it is feasible but not
+/// first-order converged.
+ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfile& start);
+
+}  // namespace armstudy::studies
