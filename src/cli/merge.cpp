@@ -17,7 +17,7 @@
 #include "report/results_record.hpp"
 #include "report/text_escape.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -84,7 +84,7 @@ std::string results_problem(const json& r) {
     // the shared record, typed and strict (schema_version first), then the study's own
     // section read into its typed result: a misspelt key is an error naming it
     const report::ResultsRecord record = report::read_record(r);
-    if (const StudyEntry* study = find_study(record.study)) study->check_section(r);
+    if (const app::StudyEntry* study = app::find_study(record.study)) study->check_section(r);
   } catch (const report::ResultsError& x) {
     if (x.path() == "/schema_version")
       return std::string(x.what()).substr(std::string("/schema_version: ").size());
@@ -413,15 +413,15 @@ size_t write_merged(const std::vector<CaseOutput>& cases, const fs::path& out_di
   for (const char* name : {"summary.md", "junit.xml", "sweep.csv", "sweep.json"})
     if (!csv.empty() || std::string(name).ends_with(".md") || std::string(name).ends_with(".xml"))
       report::check_run_level_output(out_dir, name);
-  write_file_atomic(out_dir / "summary.md", summary_markdown(cases));
-  write_file_atomic(out_dir / "junit.xml", junit_xml(cases));
+  app::write_file_atomic(out_dir / "summary.md", summary_markdown(cases));
+  app::write_file_atomic(out_dir / "junit.xml", junit_xml(cases));
   if (!csv.empty()) {
-    write_file_atomic(out_dir / "sweep.csv", csv);
-    write_file_atomic(out_dir / "sweep.json", sweep_json(cases).dump(2) + "\n");
+    app::write_file_atomic(out_dir / "sweep.csv", csv);
+    app::write_file_atomic(out_dir / "sweep.json", sweep_json(cases).dump(2) + "\n");
   }
   size_t failed = 0;
   for (const auto& c : cases) failed += !case_passed(c.record);
   return failed;
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli
