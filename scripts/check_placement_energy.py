@@ -21,11 +21,20 @@ Lines checked (T = 1 s, configuration 1 and 2, cycloidal and 3-4-5 polynomial):
     circle at rest), phi = 138.96 deg;
   example 3, thesis-config-2: L = 0.5 Lmax, x_s = 0.36 m, phi = 146.25 deg, 5.3 um outside
     the inner circle (near-tangent).
-armstudy's values are read from the results.json of placement-example-2 and -3 (the
+  example 1, thesis-only-line: L = Lmax, x_s = 0.6 m, tangent to the inner circle at its
+    middle (the elbow folds there and both rates reverse at once). Its energy is checked as
+    the limit of the lines just outside, d = 1e-8, 1e-10, 1e-12 m (both ends kept on the outer
+    circle, L(d) = 2 sqrt(0.6^2 - (0.2 + d)^2)), extrapolated in sqrt(d) (E(d) = E0 - c
+    sqrt(d) + O(d)) from the last two; the error is the extrapolation's change when the first
+    pair is used instead, plus the quadrature errors. No jump term is computed here: the
+    limit is armstudy's jump term's independent check.
+armstudy's values are read from the results.json of placement-example-1, -2 and -3 (the
 evaluations labelled as above, energy_J and energy_error_J).
 
-usage: check_placement_energy.py [example-2/results.json example-3/results.json]
-  without arguments it runs build/armstudy on reports/cases/placement-example-{2,3}.yaml
+usage: check_placement_energy.py [example-2/results.json example-3/results.json
+                                  [example-1/results.json]]
+  without arguments it runs build/armstudy (or $ARMSTUDY) on
+  reports/cases/placement-example-{1,2,3}.yaml
   into a temporary directory. Exit status 1 when a value differs from armstudy's by more
   than the two error estimates together (plus 1e-10 relative for roundoff), 2 on a usage
   or run error."""
@@ -220,19 +229,23 @@ def find_eval(results_path, label):
 
 def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    if len(sys.argv) == 3:
-        return check(sys.argv[1:3])
+    if len(sys.argv) in (3, 4):
+        bad = check(sys.argv[1:3])
+        return max(bad, check_fold(sys.argv[3])) if len(sys.argv) == 4 else bad
     if len(sys.argv) != 1:
         print(__doc__, file=sys.stderr)
         return 2
     with tempfile.TemporaryDirectory(prefix="check_placement_energy_") as out:
-        cases = [os.path.join(root, "reports", "cases", f"placement-example-{i}.yaml") for i in (2, 3)]
-        r = subprocess.run([os.path.join(root, "build", "armstudy"), "run", *cases, "--no-render",
+        cases = [os.path.join(root, "reports", "cases", f"placement-example-{i}.yaml")
+                 for i in (1, 2, 3)]
+        exe = os.environ.get("ARMSTUDY", os.path.join(root, "build", "armstudy"))
+        r = subprocess.run([exe, "run", *cases, "--no-render",
                             "--out", out], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        if r.returncode != 0:
+        if r.returncode != 0:   # example 1 expects no admissible placement and says so: 0
             print("armstudy run failed", file=sys.stderr)
             return 2
-        return check([os.path.join(out, f"placement-example-{i}", "results.json") for i in (2, 3)])
+        bad = check([os.path.join(out, f"placement-example-{i}", "results.json") for i in (2, 3)])
+        return max(bad, check_fold(os.path.join(out, "placement-example-1", "results.json")))
 
 
 def check(paths):
@@ -260,6 +273,40 @@ def check(paths):
                 bad += not ok
                 print(f"  {prog} {config}: here {e:.10f} +- {err:.1e} J, armstudy {a:.10f} +- "
                       f"{aerr:.1e} J, difference {diff:.1e} {'ok' if ok else 'BEYOND THE ERRORS'}")
+    print("all within the stated errors" if not bad else f"{bad} value(s) beyond the stated errors")
+    return 1 if bad else 0
+
+
+def check_fold(path):
+    evals = find_eval(path, "thesis-only-line")
+    print("example 1 thesis-only-line (tangent to the inner circle: the limit of the lines outside)")
+    bad = 0
+    ds = (1e-8, 1e-10, 1e-12)
+    for prog in ("cycloidal", "poly345"):
+        for config in (1, 2):
+            es, errs = [], []
+            for d in ds:
+                phi = 180.0 - math.degrees(math.asin((INNER + d) / OUTER))
+                L = 2.0 * math.sqrt(OUTER ** 2 - (INNER + d) ** 2)
+                e, err = energy(Line(OUTER, phi, L, 1.0, prog, config))
+                es.append(e)
+                errs.append(err)
+            lim = lambda i: es[i + 1] + (es[i + 1] - es[i]) / (math.sqrt(ds[i] / ds[i + 1]) - 1)  # noqa: E731
+            e0 = lim(1)
+            err0 = abs(e0 - lim(0)) + 2 * (errs[1] + errs[2])
+            ev = evals.get((prog, config))
+            a = ev.get("energy_J") if ev else None
+            aerr = ev.get("energy_error_J") if ev else None
+            if a is None or aerr is None:
+                print(f"  {prog} {config}: limit {e0:.8f} +- {err0:.1e} J; armstudy prints no energy")
+                bad += 1
+                continue
+            diff = abs(e0 - a)
+            ok = diff <= err0 + aerr + 1e-10 * abs(e0)
+            bad += not ok
+            print(f"  {prog} {config}: d = " + ", ".join(f"{e:.8f}" for e in es) +
+                  f" J; limit {e0:.8f} +- {err0:.1e} J, armstudy {a:.8f} +- {aerr:.1e} J, "
+                  f"difference {diff:.1e} {'ok' if ok else 'BEYOND THE ERRORS'}")
     print("all within the stated errors" if not bad else f"{bad} value(s) beyond the stated errors")
     return 1 if bad else 0
 

@@ -52,7 +52,7 @@ if [ "${ARMSTUDY_SANITIZE_ALL:-0}" = 1 ]; then
   select=()
 else
   exclude="BrowserReport"
-  select=(-L "^quick$|^e2e$" -E "$exclude|^guard\.|^install\.|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection|export_clients|simulate_viewer)$")
+  select=(-L "^quick$|^e2e$" -E "$exclude|^guard\.|^install\.|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection|export_clients|simulate_viewer|check_placement_energy)$")
 fi
 built=$(date +%s)
 

@@ -104,7 +104,7 @@ void set_metrics(Section::Metrics& o, const pl::Candidate& c) {
   if (no_energy)
     o.note = pl::kSingularNote;
   else if (no_peak)
-    o.note = pl::kPeakUnboundedNote;
+    o.note = conv.energy_jump > 0 ? pl::kFoldedElbowNote : pl::kPeakUnboundedNote;
   if (conv.checked) o.energy_convergence = convergence_section(conv);
 }
 

@@ -5,6 +5,64 @@
 
 namespace armstudy::cases {
 
+namespace {
+// one entry of arm.links: length, mass, centre of mass, inertia ('rod' or a number), joint
+core::Link read_arm_link(Map& lm) {
+  core::Link l;
+  l.length = lm.required_number("length", NumberRule::positive("m"));
+  // mass 0 is allowed only for a link that carries point masses (checked below)
+  l.mass = lm.required_number("mass", NumberRule::non_negative("kg"));
+  l.com = lm.number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, NumberRule::any("m"));
+  l.com_lateral = lm.number_or("com_lateral", 0.0, NumberRule::any("m"));
+  const YAML::Node in = lm.get("inertia");
+  if (!in.IsDefined() || (in.IsScalar() && in.Scalar() == "rod")) {
+    l.inertia = core::uniform_rod_inertia(l.mass, l.length);
+  } else {
+    const auto v = read_number(in, lm.diag(), "'" + lm.path_of("inertia") + "' (or 'rod')",
+                               NumberRule::non_negative("kg m^2"));
+    l.inertia = v ? *v : 0.0;
+  }
+  const auto joint = lm.choice("joint", {"active", "passive"});
+  l.active = !joint || *joint == "active";
+  lm.finish();
+  return l;
+}
+
+// arm.point_masses, each on one of the n links
+void read_point_masses(Map& arm, int n, core::PlanarChain& chain) {
+  auto pms = arm.seq("point_masses");
+  if (!pms) return;
+  for (size_t i = 0; i < pms->size(); ++i) {
+    auto pm = pms->map_at(i);
+    if (!pm) continue;
+    core::PointMass p;
+    p.link = pm->integer_or("link", 1, 1, std::max(1, n)) - 1;
+    p.x = pm->required_number("at", NumberRule::any("m"));
+    p.y = pm->number_or("lateral", 0.0, NumberRule::any("m"));
+    p.mass = pm->required_number("mass", NumberRule::positive("kg"));
+    pm->finish();
+    chain.point_masses.push_back(p);
+  }
+}
+
+// a massless link must carry a point mass: otherwise it is a typo, not a model
+void check_massless_links(const core::PlanarChain& chain,
+                          std::vector<std::optional<Map>>& link_maps) {
+  const int n = static_cast<int>(chain.links.size());
+  for (int i = 0; i < n; ++i) {
+    if (chain.links[i].mass != 0.0) continue;
+    bool carries = false;
+    for (const auto& p : chain.point_masses) carries |= p.link == i && p.mass > 0;
+    if (!carries && link_maps[i]) {
+      auto& lm = link_maps[i];
+      lm->error("mass", "'" + lm->path_of("mass") +
+                            "' is 0 kg for a massless link without a "
+                            "point mass; expected mass > 0 kg, or a point mass on this link");
+    }
+  }
+}
+}  // namespace
+
 core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int links_required) {
   core::PlanarChain chain = fallback;
   chain.gravity =
@@ -38,59 +96,14 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
   for (size_t i = 0; i < links->size(); ++i) {
     auto lm = links->map_at(i);
     link_maps.push_back(lm);
-    core::Link l;
-    if (!lm) {
-      chain.links.push_back(l);
-      continue;
-    }
-    l.length = lm->required_number("length", NumberRule::positive("m"));
-    // mass 0 is allowed only for a link that carries point masses (checked below)
-    l.mass = lm->required_number("mass", NumberRule::non_negative("kg"));
-    l.com =
-        lm->number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, NumberRule::any("m"));
-    l.com_lateral = lm->number_or("com_lateral", 0.0, NumberRule::any("m"));
-    const YAML::Node in = lm->get("inertia");
-    if (!in.IsDefined() || (in.IsScalar() && in.Scalar() == "rod")) {
-      l.inertia = core::uniform_rod_inertia(l.mass, l.length);
-    } else {
-      const auto v = read_number(in, lm->diag(), "'" + lm->path_of("inertia") + "' (or 'rod')",
-                                 NumberRule::non_negative("kg m^2"));
-      l.inertia = v ? *v : 0.0;
-    }
-    const auto joint = lm->choice("joint", {"active", "passive"});
-    l.active = !joint || *joint == "active";
-    lm->finish();
-    chain.links.push_back(l);
+    chain.links.push_back(lm ? read_arm_link(*lm) : core::Link{});
   }
   const int n = static_cast<int>(chain.links.size());
   const double payload = arm->number_or("payload", 0.0, NumberRule::non_negative("kg"));
-  if (auto pms = arm->seq("point_masses")) {
-    for (size_t i = 0; i < pms->size(); ++i) {
-      auto pm = pms->map_at(i);
-      if (!pm) continue;
-      core::PointMass p;
-      p.link = pm->integer_or("link", 1, 1, std::max(1, n)) - 1;
-      p.x = pm->required_number("at", NumberRule::any("m"));
-      p.y = pm->number_or("lateral", 0.0, NumberRule::any("m"));
-      p.mass = pm->required_number("mass", NumberRule::positive("kg"));
-      pm->finish();
-      chain.point_masses.push_back(p);
-    }
-  }
+  read_point_masses(*arm, n, chain);
   if (std::isfinite(payload) && payload > 0 && n > 0)
     chain.point_masses.push_back({n - 1, chain.links.back().length, 0.0, payload});
-  // a massless link must carry a point mass: otherwise it is a typo, not a model
-  for (int i = 0; i < n; ++i) {
-    if (chain.links[i].mass != 0.0) continue;
-    bool carries = false;
-    for (const auto& p : chain.point_masses) carries |= p.link == i && p.mass > 0;
-    if (!carries && link_maps[i]) {
-      auto& lm = link_maps[i];
-      lm->error("mass", "'" + lm->path_of("mass") +
-                            "' is 0 kg for a massless link without a "
-                            "point mass; expected mass > 0 kg, or a point mass on this link");
-    }
-  }
+  check_massless_links(chain, link_maps);
   arm->finish();
   if (arm->diag().count() != errors_before) return fallback;
   try {

@@ -46,6 +46,8 @@ std::string errno_text(int err) {
   return text;
 }
 
+// (over 60 lines, kept whole: one open file descriptor from open to the last read, each
+// refusal with its own message)
 bool read_input_file(const std::string& path, const InputFileRules& rules, std::string* bytes,
                      std::string* why, bool* runtime) {
   *runtime = false;

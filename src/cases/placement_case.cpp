@@ -57,65 +57,61 @@ Demand placement_demand(const studies::placement::Spec& spec, const YAML::Mark& 
   return d;
 }
 
-studies::placement::Spec load_placement(Map& root) {
-  namespace pl = studies::placement;
-  pl::Spec spec;  // its defaults are the defaults of the keys below (written once, in spec.hpp)
-  spec.chain = load_arm(root, placement_default_arm(), 2);
-  if (spec.chain.gravity != 0.0) {
-    root.error("gravity", "'gravity' is " + format_number(spec.chain.gravity) +
+namespace {
+namespace pl = studies::placement;
+
+// the arm: a horizontal 2-link arm with both joints active
+void check_placement_arm(Map& root, const core::PlanarChain& chain) {
+  if (chain.gravity != 0.0) {
+    root.error("gravity", "'gravity' is " + format_number(chain.gravity) +
                               " m/s^2; expected 0: the placement study is a horizontal plane");
   }
-  for (int i = 0; i < spec.chain.num_links(); ++i) {
-    if (!spec.chain.links[i].active) {
+  for (int i = 0; i < chain.num_links(); ++i) {
+    if (!chain.links[i].active) {
       root.error("arm",
                  "'arm.links[" + std::to_string(i + 1) +
                      "]' has a passive joint; expected both joints active for a placement study");
     }
   }
-  const pl::Annulus an = pl::annulus(spec.chain.links[0].length, spec.chain.links[1].length);
+}
 
-  auto p = root.map("placement");
-  if (!p) {
-    if (!root.has("placement"))
-      root.error_here(
-          "missing required key 'placement'; expected the placement task (length_fraction "
-          "or length_m, ...)");
-    return spec;
-  }
-  // task: exactly one of length_fraction and length_m
-  const bool has_fraction = p->has("length_fraction"), has_length = p->has("length_m");
+// the task: exactly one of length_fraction and length_m
+void load_line_length(Map& p, const pl::Annulus& an, pl::Spec& spec) {
+  const bool has_fraction = p.has("length_fraction"), has_length = p.has("length_m");
   if (has_fraction && has_length) {
-    p->error("length_m",
-             "'placement.length_m' and 'placement.length_fraction' are both given; "
-             "expected exactly one of them");
+    p.error("length_m",
+            "'placement.length_m' and 'placement.length_fraction' are both given; "
+            "expected exactly one of them");
   } else if (!has_fraction && !has_length) {
-    p->error_here(
+    p.error_here(
         "missing required key 'placement.length_fraction' (or 'placement.length_m'); "
         "expected the line length");
   }
   if (has_fraction) {
-    if (const auto f = p->number("length_fraction", NumberRule::range(0.0, 1.0, ""))) {
+    if (const auto f = p.number("length_fraction", NumberRule::range(0.0, 1.0, ""))) {
       if (*f <= 0) {
-        p->error("length_fraction", "'placement.length_fraction' is " + format_number(*f) +
-                                        "; expected a fraction in (0, 1] of Lmax");
+        p.error("length_fraction", "'placement.length_fraction' is " + format_number(*f) +
+                                       "; expected a fraction in (0, 1] of Lmax");
       }
       spec.length = *f * an.lmax;
     }
   }
   if (has_length) {
-    if (const auto L = p->number("length_m", NumberRule::positive("m"))) {
+    if (const auto L = p.number("length_m", NumberRule::positive("m"))) {
       spec.length = *L;
       if (*L > an.lmax * (1 + 1e-12)) {
-        p->error("length_m",
-                 "'placement.length_m' is " + format_number(*L) +
-                     " m, longer than Lmax = 4 sqrt(L1 L2) = " + format_number(an.lmax) +
-                     " m of this arm; expected 0 < length_m <= " + format_number(an.lmax));
+        p.error("length_m",
+                "'placement.length_m' is " + format_number(*L) +
+                    " m, longer than Lmax = 4 sqrt(L1 L2) = " + format_number(an.lmax) +
+                    " m of this arm; expected 0 < length_m <= " + format_number(an.lmax));
       }
     }
   }
-  spec.duration = p->number_or("duration_s", spec.duration, NumberRule::positive("s"));
+}
 
-  if (auto progs = p->seq("programs")) {
+// placement.programs (by name) and placement.configurations (1 or 2)
+void load_programs(Map& p, pl::Spec& spec) {
+  if (auto progs = p.seq("programs")) {
     spec.programs.clear();
     const auto names = core::program_names();
     for (size_t i = 0; i < progs->size(); ++i) {
@@ -134,73 +130,103 @@ studies::placement::Spec load_placement(Map& root) {
       spec.programs.push_back(*prog);
     }
     if (progs->size() == 0)
-      p->error("programs", "'placement.programs' is empty; expected at least one program");
+      p.error("programs", "'placement.programs' is empty; expected at least one program");
   }
-  if (auto cfgs = p->numbers("configurations", NumberRule::range(1, 2, ""))) {
+  if (auto cfgs = p.numbers("configurations", NumberRule::range(1, 2, ""))) {
     spec.configurations.clear();
     for (size_t i = 0; i < cfgs->size(); ++i) {
       const double c = (*cfgs)[i];
       if (c != 1.0 && c != 2.0) {
-        p->error("configurations", "'placement.configurations[" + std::to_string(i + 1) + "]' is " +
-                                       format_number(c) + "; expected 1 or 2");
+        p.error("configurations", "'placement.configurations[" + std::to_string(i + 1) + "]' is " +
+                                      format_number(c) + "; expected 1 or 2");
         continue;
       }
       spec.configurations.push_back(int(c));
     }
   }
-  spec.nx_s = p->integer_or("nx_s", spec.nx_s, 1, 10000);
-  spec.thesis_divisions = p->integer_or("thesis_divisions", spec.thesis_divisions, 1, 1000);
+}
+
+// the sweep's grid, samples, margin, limits, refinement and map
+void load_sweep_settings(Map& p, const pl::Annulus& an, pl::Spec& spec) {
+  spec.nx_s = p.integer_or("nx_s", spec.nx_s, 1, 10000);
+  spec.thesis_divisions = p.integer_or("thesis_divisions", spec.thesis_divisions, 1, 1000);
   spec.phi_step =
-      p->number_or("phi_step_deg", spec.phi_step / kDeg, NumberRule::range(1e-3, 45.0, "deg")) *
+      p.number_or("phi_step_deg", spec.phi_step / kDeg, NumberRule::range(1e-3, 45.0, "deg")) *
       kDeg;
   if (!(spec.phi_step > 0)) spec.phi_step = kDeg;  // an error was recorded
-  spec.samples = p->integer_or("samples", spec.samples, 21, 100001);
+  spec.samples = p.integer_or("samples", spec.samples, 21, 100001);
   spec.singularity_margin =
-      p->number_or("singularity_margin_m", spec.singularity_margin, NumberRule::positive("m"));
+      p.number_or("singularity_margin_m", spec.singularity_margin, NumberRule::positive("m"));
   if (std::isfinite(spec.singularity_margin) &&
       spec.singularity_margin >= (an.outer - an.inner) / 2) {
-    p->error("singularity_margin_m", "'placement.singularity_margin_m' is " +
-                                         format_number(spec.singularity_margin) +
-                                         " m; expected less than half the annulus width, " +
-                                         format_number((an.outer - an.inner) / 2) + " m");
+    p.error("singularity_margin_m", "'placement.singularity_margin_m' is " +
+                                        format_number(spec.singularity_margin) +
+                                        " m; expected less than half the annulus width, " +
+                                        format_number((an.outer - an.inner) / 2) + " m");
   }
-  if (const auto t = p->numbers("torque_limits_Nm", NumberRule::positive("N m"), 2))
+  if (const auto t = p.numbers("torque_limits_Nm", NumberRule::positive("N m"), 2))
     spec.torque_limit = std::array<double, 2>{(*t)[0], (*t)[1]};
-  if (const auto w = p->numbers("power_limits_W", NumberRule::positive("W"), 2))
+  if (const auto w = p.numbers("power_limits_W", NumberRule::positive("W"), 2))
     spec.power_limit = std::array<double, 2>{(*w)[0], (*w)[1]};
-  spec.refine = p->boolean_or("refine", spec.refine);
-  if (auto m = p->map("map")) {
+  spec.refine = p.boolean_or("refine", spec.refine);
+  if (auto m = p.map("map")) {
     spec.map_nx = m->integer_or("nx", spec.map_nx, 2, 1000);
     spec.map_ny = m->integer_or("ny", spec.map_ny, 2, 1000);
     m->finish();
   }
-  if (auto ev = p->seq("evaluate")) {
-    for (size_t i = 0; i < ev->size(); ++i) {
-      auto e = ev->map_at(i);
-      if (!e) continue;
-      pl::EvaluationSpec es;
-      es.label = e->string_or("label", "placement " + std::to_string(i + 1));
-      const bool line = e->has("x_s_m") || e->has("phi_deg"), rootxy = e->has("root_xy_m");
-      if (line && rootxy) {
-        e->error("root_xy_m", "'" + e->path_of("root_xy_m") +
-                                  "' and 'x_s_m'/'phi_deg' are both given; expected one placement");
-      } else if (rootxy) {
-        if (const auto r = e->numbers("root_xy_m", NumberRule::any("m"), 2)) {
-          const Eigen::Vector2d lp = pl::line_of_root({(*r)[0], (*r)[1]});
-          es.x_s = lp[0];
-          es.phi = lp[1];
-        }
-      } else if (line) {
-        es.x_s = e->required_number("x_s_m", NumberRule::positive("m"));
-        es.phi = e->required_number("phi_deg", NumberRule::range(-360.0, 360.0, "deg")) * kDeg;
-      } else {
-        e->error_here("'" + ev->path_at(i) +
-                      "' gives no placement; expected x_s_m and phi_deg, or root_xy_m");
+}
+
+// placement.evaluate: fixed placements, each by (x_s_m, phi_deg) or root_xy_m
+void load_evaluations(Map& p, pl::Spec& spec) {
+  auto ev = p.seq("evaluate");
+  if (!ev) return;
+  for (size_t i = 0; i < ev->size(); ++i) {
+    auto e = ev->map_at(i);
+    if (!e) continue;
+    pl::EvaluationSpec es;
+    es.label = e->string_or("label", "placement " + std::to_string(i + 1));
+    const bool line = e->has("x_s_m") || e->has("phi_deg"), rootxy = e->has("root_xy_m");
+    if (line && rootxy) {
+      e->error("root_xy_m", "'" + e->path_of("root_xy_m") +
+                                "' and 'x_s_m'/'phi_deg' are both given; expected one placement");
+    } else if (rootxy) {
+      if (const auto r = e->numbers("root_xy_m", NumberRule::any("m"), 2)) {
+        const Eigen::Vector2d lp = pl::line_of_root({(*r)[0], (*r)[1]});
+        es.x_s = lp[0];
+        es.phi = lp[1];
       }
-      e->finish();
-      spec.evaluations.push_back(es);
+    } else if (line) {
+      es.x_s = e->required_number("x_s_m", NumberRule::positive("m"));
+      es.phi = e->required_number("phi_deg", NumberRule::range(-360.0, 360.0, "deg")) * kDeg;
+    } else {
+      e->error_here("'" + ev->path_at(i) +
+                    "' gives no placement; expected x_s_m and phi_deg, or root_xy_m");
     }
+    e->finish();
+    spec.evaluations.push_back(es);
   }
+}
+}  // namespace
+
+studies::placement::Spec load_placement(Map& root) {
+  pl::Spec spec;  // its defaults are the defaults of the keys below (written once, in spec.hpp)
+  spec.chain = load_arm(root, placement_default_arm(), 2);
+  check_placement_arm(root, spec.chain);
+  const pl::Annulus an = pl::annulus(spec.chain.links[0].length, spec.chain.links[1].length);
+
+  auto p = root.map("placement");
+  if (!p) {
+    if (!root.has("placement"))
+      root.error_here(
+          "missing required key 'placement'; expected the placement task (length_fraction "
+          "or length_m, ...)");
+    return spec;
+  }
+  load_line_length(*p, an, spec);
+  spec.duration = p->number_or("duration_s", spec.duration, NumberRule::positive("s"));
+  load_programs(*p, spec);
+  load_sweep_settings(*p, an, spec);
+  load_evaluations(*p, spec);
   spec.threads = p->integer_or("threads", spec.threads, 0, 256);
   p->finish();
   if (p->diag().empty()) p->diag().demand(placement_demand(spec, p->node().Mark()));

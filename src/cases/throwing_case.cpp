@@ -13,6 +13,96 @@ void num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
   if (const auto v = m.number(key, rule)) value = *v;
 }
 
+// throwing.motors: the motors (eq. 5) and their limits
+void read_motors(Map& m, studies::ThrowingSpec& s) {
+  num(m, "kt_Nm_per_A", s.motor.kt, NumberRule::positive("N m/A"));
+  num(m, "kv_V_s_per_rad", s.motor.kv, NumberRule::positive("V s/rad"));
+  num(m, "resistance_ohm", s.motor.Ra, NumberRule::positive("ohm"));
+  num(m, "viscous_Nm_s_per_rad", s.motor.Dm, NumberRule::non_negative("N m s/rad"));
+  num(m, "coulomb_Nm", s.motor.tau_f, NumberRule::non_negative("N m"));
+  num(m, "rotor_inertia_kg_m2", s.arm.rotor_inertia, NumberRule::non_negative("kg m^2"));
+  if (const auto mount = m.choice("motor2", {"on_link1", "on_base"}))
+    s.arm.motor2 =
+        *mount == "on_base" ? studies::Motor2Mount::kOnBase : studies::Motor2Mount::kOnLink1;
+  num(m, "voltage_max_V", s.voltage_max, NumberRule::positive("V"));
+  num(m, "current_max_A", s.current_max, NumberRule::positive("A"));
+  num(m, "power_max_W", s.power_max, NumberRule::positive("W"));
+  s.count_regeneration = m.boolean_or("count_regeneration", s.count_regeneration);
+  m.finish();
+}
+
+// throwing.task: start and release angles, release rates, duration, landing height
+void read_task(Map& t, studies::ThrowingSpec& s) {
+  if (const auto v = t.numbers("start_deg", NumberRule::range(-360, 360, "deg"), 4)) {
+    s.start = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
+    s.theta3_start = (*v)[2] * core::kDeg;
+    s.theta4_start = (*v)[3] * core::kDeg;
+  }
+  if (const auto v = t.numbers("release_deg", NumberRule::range(-360, 360, "deg"), 3)) {
+    s.release = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
+    s.theta3_release = (*v)[2] * core::kDeg;
+  }
+  if (const auto v = t.numbers("release_rate_rad_s", NumberRule::range(-200, 200, "rad/s"), 2))
+    s.release_rate = {(*v)[0], (*v)[1]};
+  num(t, "duration_s", s.tf, NumberRule::range(0.01, 60.0, "s"));
+  num(t, "landing_height_m", s.landing_height, NumberRule::range(-100.0, 100.0, "m"));
+  t.finish();
+}
+
+// throwing.constraints: the contact, friction and release constraints
+void read_constraints(Map& c, studies::ThrowingSpec& s) {
+  num(c, "contact_margin_N", s.contact_margin, NumberRule::non_negative("N"));
+  num(c, "friction_coefficient", s.friction_coefficient, NumberRule::range(1e-3, 10.0, ""));
+  if (const auto v = c.number("release_tolerance_deg", NumberRule::positive("deg")))
+    s.release_tolerance = *v * core::kDeg;
+  num(c, "backoff", s.backoff, NumberRule::range(0.0, 0.2, ""));
+  c.finish();
+}
+
+// throwing.idp: iterative dynamic programming: stages, steps and its search
+void read_idp(Map& i, studies::ThrowingSpec& s) {
+  s.stages = i.integer_or("stages", s.stages, 2, 64);
+  s.steps_per_stage = i.integer_or("steps_per_stage", s.steps_per_stage, 1, 400);
+  s.idp.iterations = i.integer_or("iterations", s.idp.iterations, 1, 1000);
+  s.idp.max_passes = i.integer_or("max_passes", s.idp.max_passes, 1, 1000);
+  num(i, "tolerance", s.idp.tolerance, NumberRule::range(1e-9, 0.5, ""));
+  s.idp.quiet_passes = i.integer_or("quiet_passes", s.idp.quiet_passes, 1, 100);
+  num(i, "restore", s.idp.restore, NumberRule::range(1e-3, 1.0, ""));
+  s.idp.candidates = i.integer_or("candidates", s.idp.candidates, 1, 200);
+  num(i, "shrink", s.idp.shrink, NumberRule::range(1e-3, 0.999, ""));
+  if (const auto v = i.numbers("region_rad_s", NumberRule::positive("rad/s"), 2))
+    s.idp.region = {(*v)[0], (*v)[1]};
+  s.idp.seed =
+      static_cast<unsigned>(i.integer_or("seed", static_cast<int>(s.idp.seed), 0, 2147483647));
+  s.idp.seeds = i.integer_or("seeds", s.idp.seeds, 1, 64);
+  i.finish();
+}
+
+// throwing.nlopt: SLSQP (NLopt): its stopping rules, restarts and perturbed starts
+void read_nlopt(Map& n, studies::ThrowingSpec& s) {
+  s.run_nlopt = n.boolean_or("enabled", s.run_nlopt);
+  s.nlopt.max_evaluations = n.integer_or("max_evaluations", s.nlopt.max_evaluations, 1, 10000);
+  num(n, "max_time_s", s.nlopt.max_time, NumberRule::range(0.1, 3600.0, "s"));
+  num(n, "ftol_rel", s.nlopt.ftol_rel, NumberRule::range(1e-12, 0.1, ""));
+  num(n, "xtol_rel", s.nlopt.xtol_rel, NumberRule::range(1e-12, 0.1, ""));
+  num(n, "fd_step_rad_s", s.nlopt.fd_step, NumberRule::range(1e-9, 1e-1, "rad/s"));
+  num(n, "kkt_tolerance", s.nlopt.kkt_tolerance, NumberRule::range(1e-8, 1.0, ""));
+  num(n, "restart_gain", s.nlopt.restart_gain, NumberRule::range(1e-12, 0.1, ""));
+  s.nlopt.restarts = n.integer_or("restarts", s.nlopt.restarts, 0, 100);
+  s.nlopt.perturbed_starts = n.integer_or("perturbed_starts", s.nlopt.perturbed_starts, 0, 64);
+  num(n, "perturbation_rad_s", s.nlopt.perturbation, NumberRule::positive("rad/s"));
+  s.nlopt.hops = n.integer_or("hops", s.nlopt.hops, 0, 64);
+  num(n, "hop_size_rad_s", s.nlopt.hop_size, NumberRule::positive("rad/s"));
+  n.finish();
+}
+
+// throwing.checks: the checks on the answer
+void read_checks(Map& c, studies::ThrowingSpec& s) {
+  num(c, "replay_tolerance_rad", s.replay_tolerance, NumberRule::positive("rad"));
+  s.allow_not_converged = c.boolean_or("allow_not_converged", s.allow_not_converged);
+  s.check_refinement = c.integer_or("refinement", s.check_refinement, 2, 16);
+  c.finish();
+}
 }  // namespace
 
 studies::ThrowingSpec load_throwing_spec(Map& root) {
@@ -21,85 +111,12 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
   auto sec = root.map("throwing");
   if (!sec) return s;
   read_tray_arm(*sec, s.arm, &s.tray_width);
-  if (auto m = sec->map("motors")) {
-    num(*m, "kt_Nm_per_A", s.motor.kt, NumberRule::positive("N m/A"));
-    num(*m, "kv_V_s_per_rad", s.motor.kv, NumberRule::positive("V s/rad"));
-    num(*m, "resistance_ohm", s.motor.Ra, NumberRule::positive("ohm"));
-    num(*m, "viscous_Nm_s_per_rad", s.motor.Dm, NumberRule::non_negative("N m s/rad"));
-    num(*m, "coulomb_Nm", s.motor.tau_f, NumberRule::non_negative("N m"));
-    num(*m, "rotor_inertia_kg_m2", s.arm.rotor_inertia, NumberRule::non_negative("kg m^2"));
-    if (const auto mount = m->choice("motor2", {"on_link1", "on_base"}))
-      s.arm.motor2 =
-          *mount == "on_base" ? studies::Motor2Mount::kOnBase : studies::Motor2Mount::kOnLink1;
-    num(*m, "voltage_max_V", s.voltage_max, NumberRule::positive("V"));
-    num(*m, "current_max_A", s.current_max, NumberRule::positive("A"));
-    num(*m, "power_max_W", s.power_max, NumberRule::positive("W"));
-    s.count_regeneration = m->boolean_or("count_regeneration", s.count_regeneration);
-    m->finish();
-  }
-  if (auto t = sec->map("task")) {
-    if (const auto v = t->numbers("start_deg", NumberRule::range(-360, 360, "deg"), 4)) {
-      s.start = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
-      s.theta3_start = (*v)[2] * core::kDeg;
-      s.theta4_start = (*v)[3] * core::kDeg;
-    }
-    if (const auto v = t->numbers("release_deg", NumberRule::range(-360, 360, "deg"), 3)) {
-      s.release = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
-      s.theta3_release = (*v)[2] * core::kDeg;
-    }
-    if (const auto v = t->numbers("release_rate_rad_s", NumberRule::range(-200, 200, "rad/s"), 2))
-      s.release_rate = {(*v)[0], (*v)[1]};
-    num(*t, "duration_s", s.tf, NumberRule::range(0.01, 60.0, "s"));
-    num(*t, "landing_height_m", s.landing_height, NumberRule::range(-100.0, 100.0, "m"));
-    t->finish();
-  }
-  if (auto c = sec->map("constraints")) {
-    num(*c, "contact_margin_N", s.contact_margin, NumberRule::non_negative("N"));
-    num(*c, "friction_coefficient", s.friction_coefficient, NumberRule::range(1e-3, 10.0, ""));
-    if (const auto v = c->number("release_tolerance_deg", NumberRule::positive("deg")))
-      s.release_tolerance = *v * core::kDeg;
-    num(*c, "backoff", s.backoff, NumberRule::range(0.0, 0.2, ""));
-    c->finish();
-  }
-  if (auto i = sec->map("idp")) {
-    s.stages = i->integer_or("stages", s.stages, 2, 64);
-    s.steps_per_stage = i->integer_or("steps_per_stage", s.steps_per_stage, 1, 400);
-    s.idp.iterations = i->integer_or("iterations", s.idp.iterations, 1, 1000);
-    s.idp.max_passes = i->integer_or("max_passes", s.idp.max_passes, 1, 1000);
-    num(*i, "tolerance", s.idp.tolerance, NumberRule::range(1e-9, 0.5, ""));
-    s.idp.quiet_passes = i->integer_or("quiet_passes", s.idp.quiet_passes, 1, 100);
-    num(*i, "restore", s.idp.restore, NumberRule::range(1e-3, 1.0, ""));
-    s.idp.candidates = i->integer_or("candidates", s.idp.candidates, 1, 200);
-    num(*i, "shrink", s.idp.shrink, NumberRule::range(1e-3, 0.999, ""));
-    if (const auto v = i->numbers("region_rad_s", NumberRule::positive("rad/s"), 2))
-      s.idp.region = {(*v)[0], (*v)[1]};
-    s.idp.seed =
-        static_cast<unsigned>(i->integer_or("seed", static_cast<int>(s.idp.seed), 0, 2147483647));
-    s.idp.seeds = i->integer_or("seeds", s.idp.seeds, 1, 64);
-    i->finish();
-  }
-  if (auto n = sec->map("nlopt")) {
-    s.run_nlopt = n->boolean_or("enabled", s.run_nlopt);
-    s.nlopt.max_evaluations = n->integer_or("max_evaluations", s.nlopt.max_evaluations, 1, 10000);
-    num(*n, "max_time_s", s.nlopt.max_time, NumberRule::range(0.1, 3600.0, "s"));
-    num(*n, "ftol_rel", s.nlopt.ftol_rel, NumberRule::range(1e-12, 0.1, ""));
-    num(*n, "xtol_rel", s.nlopt.xtol_rel, NumberRule::range(1e-12, 0.1, ""));
-    num(*n, "fd_step_rad_s", s.nlopt.fd_step, NumberRule::range(1e-9, 1e-1, "rad/s"));
-    num(*n, "kkt_tolerance", s.nlopt.kkt_tolerance, NumberRule::range(1e-8, 1.0, ""));
-    num(*n, "restart_gain", s.nlopt.restart_gain, NumberRule::range(1e-12, 0.1, ""));
-    s.nlopt.restarts = n->integer_or("restarts", s.nlopt.restarts, 0, 100);
-    s.nlopt.perturbed_starts = n->integer_or("perturbed_starts", s.nlopt.perturbed_starts, 0, 64);
-    num(*n, "perturbation_rad_s", s.nlopt.perturbation, NumberRule::positive("rad/s"));
-    s.nlopt.hops = n->integer_or("hops", s.nlopt.hops, 0, 64);
-    num(*n, "hop_size_rad_s", s.nlopt.hop_size, NumberRule::positive("rad/s"));
-    n->finish();
-  }
-  if (auto c = sec->map("checks")) {
-    num(*c, "replay_tolerance_rad", s.replay_tolerance, NumberRule::positive("rad"));
-    s.allow_not_converged = c->boolean_or("allow_not_converged", s.allow_not_converged);
-    s.check_refinement = c->integer_or("refinement", s.check_refinement, 2, 16);
-    c->finish();
-  }
+  if (auto m = sec->map("motors")) read_motors(*m, s);
+  if (auto t = sec->map("task")) read_task(*t, s);
+  if (auto c = sec->map("constraints")) read_constraints(*c, s);
+  if (auto i = sec->map("idp")) read_idp(*i, s);
+  if (auto n = sec->map("nlopt")) read_nlopt(*n, s);
+  if (auto c = sec->map("checks")) read_checks(*c, s);
   s.threads = sec->integer_or("threads", s.threads, 1, 64);
   sec->finish();
   if (sec->diag().empty()) sec->diag().demand(throwing_demand(s, sec->node().Mark()));

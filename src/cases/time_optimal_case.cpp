@@ -33,6 +33,134 @@ std::string kind_text(to::PathKind k) {
   return k == to::PathKind::kLine ? "line" : k == to::PathKind::kPolyline ? "polyline" : "spline";
 }
 
+// the waypoints of `time_optimal.joint_path.points_rad`, each `joints` angles, distinct
+// consecutive ones; their YAML nodes in `nodes`. False when any could not be read.
+bool read_waypoints(Seq& pts, int joints, const std::string& want, to::Spec* spec,
+                    std::vector<YAML::Node>* nodes) {
+  bool all_read = true;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const YAML::Node n = pts.at(i);
+    if (!n.IsSequence() || n.size() != static_cast<size_t>(joints)) {
+      std::string what = "'";
+      what += pts.path_at(i);
+      what += "' ";
+      what += n.IsSequence() ? "has " + std::to_string(n.size()) + " angle(s)"
+                             : std::string("is not a list of angles");
+      pts.diag().error(n.Mark(), what + "; expected " + want);
+      all_read = false;
+      continue;
+    }
+    core::JointVector q(joints);
+    bool ok = true;
+    for (int j = 0; j < joints; ++j) {
+      const auto v =
+          read_number(n[j], pts.diag(), pts.path_at(i) + "[" + std::to_string(j + 1) + "]",
+                      NumberRule::range(-100.0, 100.0, "rad"));
+      if (v)
+        q[j] = *v;
+      else
+        ok = false;
+    }
+    if (!ok) {
+      all_read = false;
+      continue;
+    }
+    if (!spec->joint_path.points.empty() && (q - spec->joint_path.points.back()).norm() < 1e-9) {
+      pts.diag().error(n.Mark(), "'" + pts.path_at(i) +
+                                     "' repeats the waypoint before it; expected "
+                                     "distinct consecutive waypoints");
+      all_read = false;
+      continue;
+    }
+    spec->joint_path.points.push_back(q);
+    nodes->push_back(n);
+  }
+  return all_read;
+}
+
+// the number of waypoints for the path's kind: 2 for a line, at least 2 otherwise
+bool check_waypoint_count(Map& path, size_t count, to::PathKind kind) {
+  if (kind == to::PathKind::kLine && count != 2) {
+    path.error("points_rad",
+               "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
+                   " waypoints; expected exactly 2 for kind 'line' (polyline or spline for more)");
+    return false;
+  }
+  if (count < 2) {
+    path.error("points_rad", "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
+                                 " waypoint(s); expected at least 2 for kind '" + kind_text(kind) +
+                                 "'");
+    return false;
+  }
+  return true;
+}
+
+// `time_optimal.joint_path.range_rad`: one [lo, hi] per joint (none read when any is wrong)
+bool read_joint_ranges(Map& path, int joints, to::Spec* spec) {
+  bool range_ok = true;
+  auto rs = path.seq("range_rad");
+  if (!rs) return range_ok;
+  if (rs->size() != static_cast<size_t>(joints)) {
+    path.error("range_rad", "'time_optimal.joint_path.range_rad' has " +
+                                std::to_string(rs->size()) + " entries; expected " +
+                                std::to_string(joints) + " [lo, hi] pairs in rad, one per joint");
+    range_ok = false;
+  }
+  for (size_t i = 0; i < rs->size() && range_ok; ++i) {
+    const YAML::Node n = rs->at(i);
+    if (!n.IsSequence() || n.size() != 2) {
+      rs->diag().error(n.Mark(),
+                       "'" + rs->path_at(i) + "' is not a range; expected [lo, hi] in rad");
+      range_ok = false;
+      continue;
+    }
+    const auto lo = read_number(n[0], rs->diag(), rs->path_at(i) + "[1]",
+                                NumberRule::range(-100.0, 100.0, "rad"));
+    const auto hi = read_number(n[1], rs->diag(), rs->path_at(i) + "[2]",
+                                NumberRule::range(-100.0, 100.0, "rad"));
+    if (!lo || !hi) {
+      range_ok = false;
+      continue;
+    }
+    if (!(*lo < *hi)) {
+      rs->diag().error(n.Mark(), "'" + rs->path_at(i) + "' is [" + format_number(*lo) + ", " +
+                                     format_number(*hi) + "]; expected lo < hi");
+      range_ok = false;
+      continue;
+    }
+    spec->joint_path.range.emplace_back(*lo, *hi);
+  }
+  if (!range_ok) spec->joint_path.range.clear();
+  return range_ok;
+}
+
+// the whole path inside the ranges: a waypoint outside is named itself; a spline that
+// swings out between two waypoints is named at the first of them
+void check_path_in_ranges(Seq& pts, const std::vector<YAML::Node>& nodes, int joints,
+                          const to::Spec& spec) {
+  const to::JointPathGeometry geometry(spec.joint_path);
+  const auto e = to::range_excursion(geometry, spec.joint_path.range);
+  if (!e) return;
+  const to::JointPathSpec& jp = spec.joint_path;
+  for (size_t i = 0; i < jp.points.size(); ++i)
+    for (int j = 0; j < joints; ++j)
+      if (jp.points[i][j] < jp.range[j][0] || jp.points[i][j] > jp.range[j][1]) {
+        pts.diag().error(nodes[i][j].Mark(),
+                         "'" + pts.path_at(i) + "[" + std::to_string(j + 1) + "]' is " +
+                             format_number(jp.points[i][j]) + " rad, outside joint " +
+                             std::to_string(j + 1) + "'s range [" + format_number(jp.range[j][0]) +
+                             ", " + format_number(jp.range[j][1]) +
+                             "] rad ('time_optimal.joint_path.range_rad[" + std::to_string(j + 1) +
+                             "]'); expected a waypoint inside every joint's range");
+        return;
+      }
+  pts.diag().error(nodes[e->piece].Mark(), "'" + pts.path_at(e->piece) + "': " + e->text +
+                                               ", outside it although the waypoints are inside; "
+                                               "expected a path inside every joint's range (move "
+                                               "these waypoints, add one between them, or "
+                                               "use kind polyline)");
+}
+
 // `time_optimal.joint_path`: waypoints in joint space, one angle per joint, and the joints'
 // optional ranges (the whole path must stay inside them)
 void load_joint_path(Map& path, int joints, to::Spec* spec) {
@@ -62,116 +190,12 @@ void load_joint_path(Map& path, int joints, to::Spec* spec) {
     return;
   }
   std::vector<YAML::Node> nodes;  // the YAML node of each waypoint read
-  bool all_read = true;
-  for (size_t i = 0; i < pts->size(); ++i) {
-    const YAML::Node n = pts->at(i);
-    if (!n.IsSequence() || n.size() != static_cast<size_t>(joints)) {
-      pts->diag().error(n.Mark(),
-                        "'" + pts->path_at(i) + "' " +
-                            (n.IsSequence() ? "has " + std::to_string(n.size()) + " angle(s)"
-                                            : std::string("is not a list of angles")) +
-                            "; expected " + want);
-      all_read = false;
-      continue;
-    }
-    core::JointVector q(joints);
-    bool ok = true;
-    for (int j = 0; j < joints; ++j) {
-      const auto v =
-          read_number(n[j], pts->diag(), pts->path_at(i) + "[" + std::to_string(j + 1) + "]",
-                      NumberRule::range(-100.0, 100.0, "rad"));
-      if (v)
-        q[j] = *v;
-      else
-        ok = false;
-    }
-    if (!ok) {
-      all_read = false;
-      continue;
-    }
-    if (!spec->joint_path.points.empty() && (q - spec->joint_path.points.back()).norm() < 1e-9) {
-      pts->diag().error(n.Mark(), "'" + pts->path_at(i) +
-                                      "' repeats the waypoint before it; expected "
-                                      "distinct consecutive waypoints");
-      all_read = false;
-      continue;
-    }
-    spec->joint_path.points.push_back(q);
-    nodes.push_back(n);
-  }
-  const size_t count = pts->size();
-  bool count_ok = true;
-  if (spec->joint_path.kind == to::PathKind::kLine && count != 2) {
-    path.error("points_rad",
-               "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
-                   " waypoints; expected exactly 2 for kind 'line' (polyline or spline for more)");
-    count_ok = false;
-  } else if (count < 2) {
-    path.error("points_rad", "'time_optimal.joint_path.points_rad' has " + std::to_string(count) +
-                                 " waypoint(s); expected at least 2 for kind '" +
-                                 kind_text(spec->joint_path.kind) + "'");
-    count_ok = false;
-  }
-  // ranges: one [lo, hi] per joint
-  bool range_ok = true;
-  if (auto rs = path.seq("range_rad")) {
-    if (rs->size() != static_cast<size_t>(joints)) {
-      path.error("range_rad", "'time_optimal.joint_path.range_rad' has " +
-                                  std::to_string(rs->size()) + " entries; expected " +
-                                  std::to_string(joints) + " [lo, hi] pairs in rad, one per joint");
-      range_ok = false;
-    }
-    for (size_t i = 0; i < rs->size() && range_ok; ++i) {
-      const YAML::Node n = rs->at(i);
-      if (!n.IsSequence() || n.size() != 2) {
-        rs->diag().error(n.Mark(),
-                         "'" + rs->path_at(i) + "' is not a range; expected [lo, hi] in rad");
-        range_ok = false;
-        continue;
-      }
-      const auto lo = read_number(n[0], rs->diag(), rs->path_at(i) + "[1]",
-                                  NumberRule::range(-100.0, 100.0, "rad"));
-      const auto hi = read_number(n[1], rs->diag(), rs->path_at(i) + "[2]",
-                                  NumberRule::range(-100.0, 100.0, "rad"));
-      if (!lo || !hi) {
-        range_ok = false;
-        continue;
-      }
-      if (!(*lo < *hi)) {
-        rs->diag().error(n.Mark(), "'" + rs->path_at(i) + "' is [" + format_number(*lo) + ", " +
-                                       format_number(*hi) + "]; expected lo < hi");
-        range_ok = false;
-        continue;
-      }
-      spec->joint_path.range.emplace_back(*lo, *hi);
-    }
-    if (!range_ok) spec->joint_path.range.clear();
-  }
+  const bool all_read = read_waypoints(*pts, joints, want, spec, &nodes);
+  const bool count_ok = check_waypoint_count(path, pts->size(), spec->joint_path.kind);
+  const bool range_ok = read_joint_ranges(path, joints, spec);
   path.finish();
   if (!all_read || !count_ok || !range_ok || spec->joint_path.range.empty()) return;
-  // the whole path inside the ranges: a waypoint outside is named itself; a spline that
-  // swings out between two waypoints is named at the first of them
-  const to::JointPathGeometry geometry(spec->joint_path);
-  const auto e = to::range_excursion(geometry, spec->joint_path.range);
-  if (!e) return;
-  const to::JointPathSpec& jp = spec->joint_path;
-  for (size_t i = 0; i < jp.points.size(); ++i)
-    for (int j = 0; j < joints; ++j)
-      if (jp.points[i][j] < jp.range[j][0] || jp.points[i][j] > jp.range[j][1]) {
-        pts->diag().error(nodes[i][j].Mark(),
-                          "'" + pts->path_at(i) + "[" + std::to_string(j + 1) + "]' is " +
-                              format_number(jp.points[i][j]) + " rad, outside joint " +
-                              std::to_string(j + 1) + "'s range [" + format_number(jp.range[j][0]) +
-                              ", " + format_number(jp.range[j][1]) +
-                              "] rad ('time_optimal.joint_path.range_rad[" + std::to_string(j + 1) +
-                              "]'); expected a waypoint inside every joint's range");
-        return;
-      }
-  pts->diag().error(nodes[e->piece].Mark(), "'" + pts->path_at(e->piece) + "': " + e->text +
-                                                ", outside it although the waypoints are inside; "
-                                                "expected a path inside every joint's range (move "
-                                                "these waypoints, add one between them, or "
-                                                "use kind polyline)");
+  check_path_in_ranges(*pts, nodes, joints, *spec);
 }
 
 void load_path(Map& t, to::Spec* spec) {
@@ -273,22 +297,138 @@ void load_dp(Map& t, to::DpSettings* dp) {
 }
 }  // namespace
 
+namespace {
+// the arm: 2 to kMaxLinks links, every joint active
+void check_time_optimal_arm(Map& root, const core::PlanarChain& chain, bool arm_ok) {
+  const int joints = chain.num_links();
+  if (arm_ok && joints < 2)
+    root.error("arm", "'arm.links' has " + std::to_string(joints) + " link; expected 2 to " +
+                          std::to_string(core::kMaxLinks) + " links for a time-optimal study");
+  for (int i = 0; i < joints; ++i) {
+    if (!chain.links[i].active)
+      root.error(
+          "arm",
+          "'arm.links[" + std::to_string(i + 1) +
+              "]' has a passive joint; expected every joint active for a time-optimal study");
+  }
+}
+
+// exactly one of time_optimal.path (a tip path, 2 links) and time_optimal.joint_path
+void load_either_path(Map& t, bool arm_ok, int joints, to::Spec* spec) {
+  if (t.has("path") && t.has("joint_path")) {
+    t.error("joint_path",
+            "'time_optimal' has both 'path' (a tip path) and 'joint_path'; expected one of them");
+    t.get("path");
+  } else if (t.has("joint_path")) {
+    if (auto jp = t.map("joint_path")) load_joint_path(*jp, arm_ok ? joints : 0, spec);
+    spec->space = to::PathSpace::kJoint;
+    if (t.has("configuration"))
+      t.error(
+          "configuration",
+          "'time_optimal.configuration' chooses the elbow of a tip path's inverse "
+          "kinematics; expected no configuration with a joint_path (its joint angles are given)");
+  } else {
+    if (arm_ok && joints != 2 && t.has("path")) {
+      t.error("path",
+              "'time_optimal.path' is a tip path, but the arm has " + std::to_string(joints) +
+                  " links: " +
+                  (joints > 2 ? "a redundant arm follows a tip path with many joint motions, "
+                                "so the path does not fix one; "
+                              : "") +
+                  "expected a path in joint space, 'time_optimal.joint_path' with points_rad (one "
+                  "angle per joint in every waypoint), or an arm of 2 links");
+      t.get("path");
+    } else if (!t.has("path")) {
+      t.error_here(
+          "missing required key 'time_optimal.path'; expected the tip path (kind and points_m) "
+          "or 'time_optimal.joint_path' (kind and points_rad)");
+    } else {
+      load_path(t, spec);
+    }
+  }
+}
+
+// the per-joint limits, judged against a valid arm only (a refused arm is reported once)
+void load_limits(Map& t, bool arm_ok, int joints, to::Spec* spec) {
+  if (arm_ok) {
+    const int nl = std::clamp(joints, 1, core::kMaxLinks);
+    if (const auto v = joint_limits(t, "velocity_limit_rad_s", "rad/s", nl))
+      spec->velocity_limit = *v;
+    if (const auto v = joint_limits(t, "torque_limit_Nm", "N m", nl)) spec->torque_limit = *v;
+    if (const auto v = joint_limits(t, "acceleration_limit_rad_s2", "rad/s^2", nl))
+      spec->acceleration_limit = *v;
+  } else {
+    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm", "acceleration_limit_rad_s2"})
+      t.get(key);
+  }
+  // the default limits are the 2-link source's: a longer chain states its own
+  if (arm_ok && joints != 2) {
+    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm"})
+      if (!t.has(key))
+        t.error_here(std::string("missing required key 'time_optimal.") + key + "' for an arm of " +
+                     std::to_string(joints) + " links; expected " + std::to_string(joints) +
+                     " limits, one per joint (the defaults are a 2-link arm's)");
+  }
+}
+
+// time_optimal.complex and time_optimal.exact
+void load_complex_and_exact(Map& t, to::Spec* spec) {
+  if (auto c = t.map("complex")) {
+    spec->complex.enabled = c->boolean_or("enabled", true);
+    spec->complex.max_iterations =
+        c->integer_or("max_iterations", spec->complex.max_iterations, 1, 10000000);
+    spec->complex.tolerance =
+        c->number_or("tolerance", spec->complex.tolerance, NumberRule::positive(""));
+    spec->complex.seed = static_cast<unsigned>(c->integer_or("seed", 1, 0, 2147483647));
+    c->finish();
+  }
+  if (auto e = t.map("exact")) {
+    spec->exact.grid_points = e->integer_or("grid_points", spec->exact.grid_points, 3, 100000);
+    spec->exact.checks_per_interval =
+        e->integer_or("checks_per_interval", spec->exact.checks_per_interval, 1, 100);
+    spec->exact.grid_tolerance =
+        e->number_or("grid_tolerance", spec->exact.grid_tolerance, NumberRule::positive(""));
+    spec->exact.tolerance_rel =
+        e->number_or("tolerance_rel", spec->exact.tolerance_rel, NumberRule::non_negative(""));
+    spec->exact.max_grid_points =
+        e->integer_or("max_grid_points", spec->exact.max_grid_points, 3, 1000000);
+    e->finish();
+  }
+}
+
+// a polyline needs at least one segment per piece
+void check_polyline_segments(Map& root, const to::Spec& spec) {
+  const bool joint_space = spec.space == to::PathSpace::kJoint;
+  const to::PathKind kind = joint_space ? spec.joint_path.kind : spec.path.kind;
+  const size_t waypoints = joint_space ? spec.joint_path.points.size() : spec.path.points.size();
+  if (kind != to::PathKind::kPolyline || waypoints < 2) return;
+  const int pieces = static_cast<int>(waypoints) - 1;
+  if (spec.dp.segments < 2 * pieces)
+    root.error("time_optimal", "'time_optimal.dp.segments' is " + std::to_string(spec.dp.segments) +
+                                   "; expected at least two segments per polyline piece (" +
+                                   std::to_string(pieces) +
+                                   " pieces): the arm stops at both ends of each");
+  if (spec.exact.grid_points - 1 < 2 * pieces)
+    root.error("time_optimal", "'time_optimal.exact.grid_points' is " +
+                                   std::to_string(spec.exact.grid_points) + "; expected at least " +
+                                   std::to_string(2 * pieces + 1) +
+                                   " (two intervals per polyline piece)");
+  for (int n : spec.dp.convergence_segments)
+    if (n < 2 * pieces)
+      root.error("time_optimal", "'time_optimal.dp.convergence_segments' holds " +
+                                     std::to_string(n) +
+                                     "; expected at least two segments per polyline piece (" +
+                                     std::to_string(pieces) + " pieces)");
+}
+}  // namespace
+
 studies::time_optimal::Spec load_time_optimal(Map& root) {
   to::Spec spec;
   const size_t errors_before = root.diag().count();
   spec.chain = load_arm(root, to::default_arm(), 0);
   const bool arm_ok = root.diag().count() == errors_before;
   const int joints = spec.chain.num_links();
-  if (arm_ok && joints < 2)
-    root.error("arm", "'arm.links' has " + std::to_string(joints) + " link; expected 2 to " +
-                          std::to_string(core::kMaxLinks) + " links for a time-optimal study");
-  for (int i = 0; i < joints; ++i) {
-    if (!spec.chain.links[i].active)
-      root.error(
-          "arm",
-          "'arm.links[" + std::to_string(i + 1) +
-              "]' has a passive joint; expected every joint active for a time-optimal study");
-  }
+  check_time_optimal_arm(root, spec.chain, arm_ok);
   auto t = root.map("time_optimal");
   if (!t) {
     if (!root.has("time_optimal"))
@@ -296,105 +436,13 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
           "missing required key 'time_optimal'; expected the path and the joint limits");
     return spec;
   }
-  if (t->has("path") && t->has("joint_path")) {
-    t->error("joint_path",
-             "'time_optimal' has both 'path' (a tip path) and 'joint_path'; expected one of them");
-    t->get("path");
-  } else if (t->has("joint_path")) {
-    if (auto jp = t->map("joint_path")) load_joint_path(*jp, arm_ok ? joints : 0, &spec);
-    spec.space = to::PathSpace::kJoint;
-    if (t->has("configuration"))
-      t->error(
-          "configuration",
-          "'time_optimal.configuration' chooses the elbow of a tip path's inverse "
-          "kinematics; expected no configuration with a joint_path (its joint angles are given)");
-  } else {
-    if (arm_ok && joints != 2 && t->has("path")) {
-      t->error("path",
-               "'time_optimal.path' is a tip path, but the arm has " + std::to_string(joints) +
-                   " links: " +
-                   (joints > 2 ? "a redundant arm follows a tip path with many joint motions, "
-                                 "so the path does not fix one; "
-                               : "") +
-                   "expected a path in joint space, 'time_optimal.joint_path' with points_rad (one "
-                   "angle per joint in every waypoint), or an arm of 2 links");
-      t->get("path");
-    } else if (!t->has("path")) {
-      t->error_here(
-          "missing required key 'time_optimal.path'; expected the tip path (kind and points_m) "
-          "or 'time_optimal.joint_path' (kind and points_rad)");
-    } else {
-      load_path(*t, &spec);
-    }
-  }
+  load_either_path(*t, arm_ok, joints, &spec);
   spec.configuration = t->integer_or("configuration", 1, 1, 2);
-  // per-joint limits are judged against a valid arm only (a refused arm is reported once)
-  if (arm_ok) {
-    const int nl = std::clamp(joints, 1, core::kMaxLinks);
-    if (const auto v = joint_limits(*t, "velocity_limit_rad_s", "rad/s", nl))
-      spec.velocity_limit = *v;
-    if (const auto v = joint_limits(*t, "torque_limit_Nm", "N m", nl)) spec.torque_limit = *v;
-    if (const auto v = joint_limits(*t, "acceleration_limit_rad_s2", "rad/s^2", nl))
-      spec.acceleration_limit = *v;
-  } else {
-    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm", "acceleration_limit_rad_s2"})
-      t->get(key);
-  }
-  // the default limits are the 2-link source's: a longer chain states its own
-  if (arm_ok && joints != 2) {
-    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm"})
-      if (!t->has(key))
-        t->error_here(std::string("missing required key 'time_optimal.") + key +
-                      "' for an arm of " + std::to_string(joints) + " links; expected " +
-                      std::to_string(joints) +
-                      " limits, one per joint (the defaults are a 2-link arm's)");
-  }
+  load_limits(*t, arm_ok, joints, &spec);
   load_dp(*t, &spec.dp);
-  if (auto c = t->map("complex")) {
-    spec.complex.enabled = c->boolean_or("enabled", true);
-    spec.complex.max_iterations =
-        c->integer_or("max_iterations", spec.complex.max_iterations, 1, 10000000);
-    spec.complex.tolerance =
-        c->number_or("tolerance", spec.complex.tolerance, NumberRule::positive(""));
-    spec.complex.seed = static_cast<unsigned>(c->integer_or("seed", 1, 0, 2147483647));
-    c->finish();
-  }
-  if (auto e = t->map("exact")) {
-    spec.exact.grid_points = e->integer_or("grid_points", spec.exact.grid_points, 3, 100000);
-    spec.exact.checks_per_interval =
-        e->integer_or("checks_per_interval", spec.exact.checks_per_interval, 1, 100);
-    spec.exact.grid_tolerance =
-        e->number_or("grid_tolerance", spec.exact.grid_tolerance, NumberRule::positive(""));
-    spec.exact.tolerance_rel =
-        e->number_or("tolerance_rel", spec.exact.tolerance_rel, NumberRule::non_negative(""));
-    spec.exact.max_grid_points =
-        e->integer_or("max_grid_points", spec.exact.max_grid_points, 3, 1000000);
-    e->finish();
-  }
+  load_complex_and_exact(*t, &spec);
   spec.motion_steps = t->integer_or("motion_steps", spec.motion_steps, 1, 100000);
-  // a polyline needs at least one segment per piece
-  const bool joint_space = spec.space == to::PathSpace::kJoint;
-  const to::PathKind kind = joint_space ? spec.joint_path.kind : spec.path.kind;
-  const size_t waypoints = joint_space ? spec.joint_path.points.size() : spec.path.points.size();
-  if (kind == to::PathKind::kPolyline && waypoints >= 2) {
-    const int pieces = static_cast<int>(waypoints) - 1;
-    if (spec.dp.segments < 2 * pieces)
-      root.error("time_optimal",
-                 "'time_optimal.dp.segments' is " + std::to_string(spec.dp.segments) +
-                     "; expected at least two segments per polyline piece (" +
-                     std::to_string(pieces) + " pieces): the arm stops at both ends of each");
-    if (spec.exact.grid_points - 1 < 2 * pieces)
-      root.error("time_optimal", "'time_optimal.exact.grid_points' is " +
-                                     std::to_string(spec.exact.grid_points) +
-                                     "; expected at least " + std::to_string(2 * pieces + 1) +
-                                     " (two intervals per polyline piece)");
-    for (int n : spec.dp.convergence_segments)
-      if (n < 2 * pieces)
-        root.error("time_optimal", "'time_optimal.dp.convergence_segments' holds " +
-                                       std::to_string(n) +
-                                       "; expected at least two segments per polyline piece (" +
-                                       std::to_string(pieces) + " pieces)");
-  }
+  check_polyline_segments(root, spec);
   t->finish();
   if (t->diag().empty()) t->diag().demand(time_optimal_demand(spec, t->node().Mark()));
   return spec;

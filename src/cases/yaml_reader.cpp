@@ -105,6 +105,8 @@ std::string out_of_range(const std::string& s) {
 }
 }  // namespace
 
+// (over 60 lines, kept whole: the checks of one scalar in the order a reader meets them,
+// each with its own message)
 std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std::string_view what,
                                   const NumberRule& rule) {
   const std::string name(what);

@@ -14,6 +14,7 @@
 #include "report/results_fields.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
+#include "studies/placement/converge.hpp"
 #include "studies/placement/results_section.hpp"
 
 namespace armstudy::report {
@@ -351,9 +352,13 @@ std::string thesis_placement_note(const PS& pl, const std::string& label) {
   else if (no_peak(e))
     text += " (clearance " + format_sig(e.boundary_distance_m, 3) +
             " m): its energy is finite and converged (adaptive quadrature, with its error "
-            "estimate), but its peak torque is unbounded (a singular pose), so no peak torque "
-            "is given; its energies: " +
-            energies + ".";
+            "estimate), but " +
+            (e.note && *e.note == studies::placement::kFoldedElbowNote
+                 ? "the elbow folds on the inner circle, where both joint rates reverse at "
+                   "once: the energy holds that reversal (the limit of the lines just outside, "
+                   "docs/placement.md), the peak torque is an impulse, so none is given"
+                 : "its peak torque is unbounded (a singular pose), so no peak torque is given") +
+            "; its energies: " + energies + ".";
   else if (status == "singular")
     text += ": it comes within " + format_sig(e.boundary_distance_m, 3) +
             " m of a workspace boundary (smallest |sin q2| " + format_sig(e.min_abs_sin_elbow, 3) +

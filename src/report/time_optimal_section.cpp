@@ -226,7 +226,8 @@ Table dp_convergence_table(const Section_& to) {
   Table ct;
   ct.caption =
       "DP (path-speed state) as the number of segments N grows: its duration "
-      "approaches the exact solver's from above.";
+      "approaches the exact solver's from above (its excess is over the converged exact "
+      "duration where the grids were extrapolated, else over the exact solver's on its grid).";
   ct.header = {"N",
                "levels",
                "solved",

@@ -121,16 +121,17 @@ std::string grid_caption(double spacing_m) {
   return os.str();
 }
 
-ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor) {
-  ArmScene s;
-  s.chain = chain;
-  const double r = link_radius(chain);
-  const double R = reach(chain);
-  const Eigen::Vector2d b = chain.base;
-  // the task as a polyline from start (green) to end (red)
+namespace {
+// the task as a polyline from start (green) to end (red)
+std::vector<Eigen::Vector2d> task_polyline(const TableDecor& decor) {
   std::vector<Eigen::Vector2d> task = decor.task_path;
   if (decor.task_start && decor.task_end) task = {*decor.task_start, *decor.task_end};
-  // what to frame: the reach circle and the task
+  return task;
+}
+
+// what to frame: the reach circle about the base and the task
+ViewBox table_view(const Eigen::Vector2d& b, double R, double r,
+                   const std::vector<Eigen::Vector2d>& task) {
   ViewBox v{b.x() - R, b.x() + R, b.y() - R, b.y() + R};
   for (const Eigen::Vector2d& p : task) {
     v.x_min = std::min(v.x_min, p.x() - 2 * r);
@@ -138,46 +139,29 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
     v.y_min = std::min(v.y_min, p.y() - 2 * r);
     v.y_max = std::max(v.y_max, p.y() + 2 * r);
   }
-  s.view = v;
-  const double cx = 0.5 * (v.x_min + v.x_max), cy = 0.5 * (v.y_min + v.y_max);
-  const double half = 2.0 * std::max(v.x_max - v.x_min, v.y_max - v.y_min);
-  // a finely sampled task path (a thousand points) as the few segments that draw the same
-  // picture: every dropped point within a tenth of a pixel of the line drawn
-  {
-    std::vector<Eigen::Vector2d> drawn;
-    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min,
-                                          decor.offscreen.width, decor.offscreen.height);
-    for (const size_t k : simplify_polyline(task, tol)) drawn.push_back(task[k]);
-    task = std::move(drawn);
-  }
+  return v;
+}
 
-  MjcfOptions o;
-  o.model_name = "horizontal_arm";
-  o.fovy = kFovy;
-  o.top_extra = viewer_centre(cx, cy);
-  o.offscreen = decor.offscreen;
-  set_quality(&o, 2.2 * r, v.y_max - v.y_min,
-              decor.offscreen.height);  // the pedestal is the roundest
-  o.link_radius = r;
-  o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.45 0.35 0.65 1"};
-  o.visual_extra = kVisual;
-  {
-    const double rgb[3] = {0.96, 0.96, 0.94}, mark[3] = {0.80, 0.80, 0.78};
-    o.asset_extra = grid_asset("table", kTableGridM, v, decor.offscreen.width,
-                               decor.offscreen.height, rgb, mark);
-  }
-  std::ostringstream what;  // the case's own arm: its links and its gravity
+// the model's comment: the case's own arm (its links and its gravity) and the scene
+std::string table_comment(const core::PlanarChain& chain) {
+  std::ostringstream what;
   what.imbue(std::locale::classic());
   what << "    A " << chain.num_links() << "-link planar arm in the x-y plane, "
        << (chain.gravity == 0 ? "horizontal (gravity 0)" : "gravity ");
   if (chain.gravity != 0) what << chain.gravity << " m/s^2 along -y";
   what << ": the\n";
-  o.comment =
-      what.str() +
-      "    table is the x-y plane seen from above (camera looking down -z), the root is the\n"
-      "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.2 m grid.\n"
-      "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
-      "    centres of mass and inertias are the case's; geoms are visual only.\n";
+  return what.str() +
+         "    table is the x-y plane seen from above (camera looking down -z), the root is the\n"
+         "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.2 m "
+         "grid.\n"
+         "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
+         "    centres of mass and inertias are the case's; geoms are visual only.\n";
+}
+
+// the world's geoms: the table plane, the root's pedestal and cross, the task line and its
+// start and end marks
+std::string table_world(const Eigen::Vector2d& b, double r, double cx, double cy, double half,
+                        const std::vector<Eigen::Vector2d>& task) {
   auto w = xml();
   w << shadow_light(0.5 * half);
   w << "    <geom name=\"table\" type=\"plane\" pos=\"" << cx << " " << cy << " " << -3 * r
@@ -207,7 +191,48 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
       << -2.6 * r << "\" size=\"" << 0.9 * r << " " << 0.3 * r
       << "\" rgba=\"0.85 0.12 0.12 1\"/>\n";
   }
-  o.world_extra = w.str();
+  return w.str();
+}
+}  // namespace
+
+ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor) {
+  ArmScene s;
+  s.chain = chain;
+  const double r = link_radius(chain);
+  const double R = reach(chain);
+  const Eigen::Vector2d b = chain.base;
+  std::vector<Eigen::Vector2d> task = task_polyline(decor);
+  const ViewBox v = table_view(b, R, r, task);
+  s.view = v;
+  const double cx = 0.5 * (v.x_min + v.x_max), cy = 0.5 * (v.y_min + v.y_max);
+  const double half = 2.0 * std::max(v.x_max - v.x_min, v.y_max - v.y_min);
+  // a finely sampled task path (a thousand points) as the few segments that draw the same
+  // picture: every dropped point within a tenth of a pixel of the line drawn
+  {
+    std::vector<Eigen::Vector2d> drawn;
+    const double tol = subpixel_tolerance(v.x_max - v.x_min, v.y_max - v.y_min,
+                                          decor.offscreen.width, decor.offscreen.height);
+    for (const size_t k : simplify_polyline(task, tol)) drawn.push_back(task[k]);
+    task = std::move(drawn);
+  }
+
+  MjcfOptions o;
+  o.model_name = "horizontal_arm";
+  o.fovy = kFovy;
+  o.top_extra = viewer_centre(cx, cy);
+  o.offscreen = decor.offscreen;
+  set_quality(&o, 2.2 * r, v.y_max - v.y_min,
+              decor.offscreen.height);  // the pedestal is the roundest
+  o.link_radius = r;
+  o.link_rgba = {"0.18 0.38 0.75 1", "0.10 0.58 0.55 1", "0.45 0.35 0.65 1"};
+  o.visual_extra = kVisual;
+  {
+    const double rgb[3] = {0.96, 0.96, 0.94}, mark[3] = {0.80, 0.80, 0.78};
+    o.asset_extra = grid_asset("table", kTableGridM, v, decor.offscreen.width,
+                               decor.offscreen.height, rgb, mark);
+  }
+  o.comment = table_comment(chain);
+  o.world_extra = table_world(b, r, cx, cy, half, task);
   // joints as dark discs
   for (int i = 0; i < chain.num_links(); ++i) {
     auto j = xml();
@@ -223,6 +248,88 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   s.mjcf = write_mjcf(chain, o);
   return s;
 }
+
+namespace {
+const char* kTrayComment =
+    "    The arm with a passive tray of Sato et al. in a vertical plane: the\n"
+    "    x-y plane seen from +z (x right, y up), gravity along -y; a 0.1 m grid.\n"
+    "    Joints 1 and 2 are driven (motor actuators, gear 1), the tray's hinge is passive, and\n"
+    "    link N is a massless radius r4 about the cup's centre C carrying the ball's mass at\n"
+    "    its tip: the ball's centre moves on the circle of radius r4 about C.\n"
+    "    The rolling ball's SPIN is body spin1: the ball rolls without slip inside the cup,\n"
+    "    so its absolute rate is (theta1' + theta2' + theta3') - (r4/r_b) theta4' (a\n"
+    "    core::SpinningInertia with coefficients (1, 1, 1, -r4/r_b)). It couples several\n"
+    "    joints, so it cannot be armature (armature is diagonal) and no tree of rigid bodies\n"
+    "    with positive inertias reproduces I c c^T: spin1 hangs on link N with its own hinge\n"
+    "    spin1_joint, which must turn by psi = -(1 + r4/r_b) theta4, enforced by the joint\n"
+    "    equality spin1_rolls. Kinematic replay sets psi exactly; mj_inverse is exact after\n"
+    "    projecting onto the chain (tau_chain = J^T qfrc_inverse, q_mujoco = J q_chain);\n"
+    "    mj_step treats the stiff equality as MuJoCo's soft constraint (impedance 0.9999), "
+    "which\n"
+    "    conserves energy to ~1e-7 relative (tests/scene/pendulum_mujoco_test.cpp).\n";
+
+// the world's geoms: the wall plane, the pedestal under joint 1 and a floor line
+std::string tray_world(const Eigen::Vector2d& b, double r, double rb, double cx, double cy,
+                       double half) {
+  auto w = xml();
+  w << shadow_light(0.5 * half);
+  w << "    <geom name=\"wall\" type=\"plane\" pos=\"" << cx << " " << cy << " "
+    << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half << " " << plane_grid(half)
+    << "\" material=\"wall\"/>\n";
+  w << "    <geom name=\"pedestal\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 2.5 * r << " "
+    << -2 * r << "\" size=\"" << 2.2 * r << " " << 2.5 * r << " " << r
+    << "\" rgba=\"0.25 0.25 0.28 1\"/>\n"
+    << "    <geom name=\"floor\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 5.2 * r << " "
+    << -2 * r << "\" size=\"" << 8 * r << " " << 0.3 * r << " " << r
+    << "\" rgba=\"0.25 0.25 0.28 1\"/>\n";
+  return w.str();
+}
+
+// the tray's cup as an arc of radius rc about C = (d, 0) in the tray's frame, hung from the
+// tray's hinge by two struts to its rims
+std::string cup_xml(double d, double rc, double r, double cup_width) {
+  auto c = xml();
+  const int segments = 16;
+  for (int k = 0; k < segments; ++k) {
+    const double a0 = -cup_width / 2 + cup_width * k / segments;
+    const double a1 = -cup_width / 2 + cup_width * (k + 1) / segments;
+    c << "      <geom name=\"cup" << k << "\" type=\"capsule\" fromto=\"" << d + rc * std::cos(a0)
+      << " " << rc * std::sin(a0) << " 0 " << d + rc * std::cos(a1) << " " << rc * std::sin(a1)
+      << " 0\" size=\"" << 0.35 * r << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
+  }
+  for (double a : {-cup_width / 2, cup_width / 2})
+    c << "      <geom name=\"cup_strut" << (a < 0 ? 0 : 1) << "\" type=\"capsule\" fromto=\"0 0 0 "
+      << d + rc * std::cos(a) << " " << rc * std::sin(a) << " 0\" size=\"" << 0.22 * r
+      << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
+  return c.str();
+}
+
+// the ball: drawn on the spin body of the ball's spinner (the one turning with the ball
+// joint), which sits at the ball's centre (tip of link N); else at the tip
+void place_ball(const core::PlanarChain& chain, double r4, double rb, MjcfOptions& o) {
+  const int n = chain.num_links();
+  auto ball = xml();
+  ball << "      <geom name=\"ball\" type=\"sphere\" size=\"" << rb
+       << "\" rgba=\"0.86 0.14 0.14 1\"/>\n"
+       << "      <geom name=\"ball_stripe\" type=\"box\" pos=\"0 0 " << 0.85 * rb << "\" size=\""
+       << 0.75 * rb << " " << 0.13 * rb << " " << 0.2 * rb << "\" rgba=\"0.35 0.04 0.04 1\"/>\n";
+  bool ball_drawn = false;
+  o.spinner_pos.assign(chain.spinners.size(), Eigen::Vector2d::Zero());
+  o.spinner_extra.assign(chain.spinners.size(), "");
+  for (const SpinnerBody& sb : spinner_bodies(chain)) {
+    if (ball_drawn || sb.link != n - 1 || chain.spinners[sb.spinner].coeffs[n - 1] == 0.0) continue;
+    o.spinner_pos[sb.spinner] = Eigen::Vector2d(r4, 0);
+    o.spinner_extra[sb.spinner] = ball.str();
+    ball_drawn = true;
+  }
+  if (!ball_drawn) {
+    auto t = xml();
+    t << "      <body name=\"ball_visual\" pos=\"" << r4 << " 0 0\">\n"
+      << ball.str() << "      </body>\n";
+    o.tip_extra = t.str();
+  }
+}
+}  // namespace
 
 ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) {
   const int n = chain.num_links();
@@ -258,37 +365,9 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
     o.asset_extra =
         grid_asset("wall", kWallGridM, v, decor.offscreen.width, decor.offscreen.height, rgb, mark);
   }
-  o.comment =
-      "    The arm with a passive tray of Sato et al. in a vertical plane: the\n"
-      "    x-y plane seen from +z (x right, y up), gravity along -y; a 0.1 m grid.\n"
-      "    Joints 1 and 2 are driven (motor actuators, gear 1), the tray's hinge is passive, and\n"
-      "    link N is a massless radius r4 about the cup's centre C carrying the ball's mass at\n"
-      "    its tip: the ball's centre moves on the circle of radius r4 about C.\n"
-      "    The rolling ball's SPIN is body spin1: the ball rolls without slip inside the cup,\n"
-      "    so its absolute rate is (theta1' + theta2' + theta3') - (r4/r_b) theta4' (a\n"
-      "    core::SpinningInertia with coefficients (1, 1, 1, -r4/r_b)). It couples several\n"
-      "    joints, so it cannot be armature (armature is diagonal) and no tree of rigid bodies\n"
-      "    with positive inertias reproduces I c c^T: spin1 hangs on link N with its own hinge\n"
-      "    spin1_joint, which must turn by psi = -(1 + r4/r_b) theta4, enforced by the joint\n"
-      "    equality spin1_rolls. Kinematic replay sets psi exactly; mj_inverse is exact after\n"
-      "    projecting onto the chain (tau_chain = J^T qfrc_inverse, q_mujoco = J q_chain);\n"
-      "    mj_step treats the stiff equality as MuJoCo's soft constraint (impedance 0.9999), "
-      "which\n"
-      "    conserves energy to ~1e-7 relative (tests/scene/pendulum_mujoco_test.cpp).\n";
-  auto w = xml();
-  w << shadow_light(0.5 * half);
-  w << "    <geom name=\"wall\" type=\"plane\" pos=\"" << cx << " " << cy << " "
-    << -6 * std::max(r, rb) << "\" size=\"" << half << " " << half << " " << plane_grid(half)
-    << "\" material=\"wall\"/>\n";
-  // base: a pedestal under joint 1 and a floor line
-  w << "    <geom name=\"pedestal\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 2.5 * r << " "
-    << -2 * r << "\" size=\"" << 2.2 * r << " " << 2.5 * r << " " << r
-    << "\" rgba=\"0.25 0.25 0.28 1\"/>\n"
-    << "    <geom name=\"floor\" type=\"box\" pos=\"" << b.x() << " " << b.y() - 5.2 * r << " "
-    << -2 * r << "\" size=\"" << 8 * r << " " << 0.3 * r << " " << r
-    << "\" rgba=\"0.25 0.25 0.28 1\"/>\n";
-  o.world_extra = w.str();
-  // joints as discs; the tray's cup as an arc about C = (d, 0) in the tray's frame
+  o.comment = kTrayComment;
+  o.world_extra = tray_world(b, r, rb, cx, cy, half);
+  // joints as discs; the tray's cup about C = (d, 0) in the tray's frame
   o.link_extra.assign(n, "");
   for (int i = 0; i < n - 1; ++i) {
     auto j = xml();
@@ -296,46 +375,8 @@ ArmScene tray_arm_scene(const core::PlanarChain& chain, const TrayDecor& decor) 
       << 1.35 * r << " " << 1.1 * r << "\" rgba=\"0.25 0.25 0.28 1\"/>\n";
     o.link_extra[i] = j.str();
   }
-  {
-    auto c = xml();
-    const int segments = 16;
-    const double rc = r4 + rb + 0.35 * r;
-    for (int k = 0; k < segments; ++k) {
-      const double a0 = -decor.cup_width / 2 + decor.cup_width * k / segments;
-      const double a1 = -decor.cup_width / 2 + decor.cup_width * (k + 1) / segments;
-      c << "      <geom name=\"cup" << k << "\" type=\"capsule\" fromto=\"" << d + rc * std::cos(a0)
-        << " " << rc * std::sin(a0) << " 0 " << d + rc * std::cos(a1) << " " << rc * std::sin(a1)
-        << " 0\" size=\"" << 0.35 * r << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
-    }
-    // the cup hangs from the tray's hinge: two struts to its rims
-    for (double a : {-decor.cup_width / 2, decor.cup_width / 2})
-      c << "      <geom name=\"cup_strut" << (a < 0 ? 0 : 1)
-        << "\" type=\"capsule\" fromto=\"0 0 0 " << d + rc * std::cos(a) << " " << rc * std::sin(a)
-        << " 0\" size=\"" << 0.22 * r << "\" rgba=\"0.40 0.40 0.45 1\"/>\n";
-    o.link_extra[n - 2] += c.str();
-  }
-  // the ball: drawn on the spin body of the ball's spinner (the one turning with the ball
-  // joint), which sits at the ball's centre (tip of link N); else at the tip
-  auto ball = xml();
-  ball << "      <geom name=\"ball\" type=\"sphere\" size=\"" << rb
-       << "\" rgba=\"0.86 0.14 0.14 1\"/>\n"
-       << "      <geom name=\"ball_stripe\" type=\"box\" pos=\"0 0 " << 0.85 * rb << "\" size=\""
-       << 0.75 * rb << " " << 0.13 * rb << " " << 0.2 * rb << "\" rgba=\"0.35 0.04 0.04 1\"/>\n";
-  bool ball_drawn = false;
-  o.spinner_pos.assign(chain.spinners.size(), Eigen::Vector2d::Zero());
-  o.spinner_extra.assign(chain.spinners.size(), "");
-  for (const SpinnerBody& sb : spinner_bodies(chain)) {
-    if (ball_drawn || sb.link != n - 1 || chain.spinners[sb.spinner].coeffs[n - 1] == 0.0) continue;
-    o.spinner_pos[sb.spinner] = Eigen::Vector2d(r4, 0);
-    o.spinner_extra[sb.spinner] = ball.str();
-    ball_drawn = true;
-  }
-  if (!ball_drawn) {
-    auto t = xml();
-    t << "      <body name=\"ball_visual\" pos=\"" << r4 << " 0 0\">\n"
-      << ball.str() << "      </body>\n";
-    o.tip_extra = t.str();
-  }
+  o.link_extra[n - 2] += cup_xml(d, r4 + rb + 0.35 * r, r, decor.cup_width);
+  place_ball(chain, r4, rb, o);
   s.mjcf = write_mjcf(chain, o);
   return s;
 }

@@ -332,6 +332,8 @@ std::vector<Image> FrameWorker::draw(const std::vector<WorkerPose>& poses) {
   return out;
 }
 
+// (over 60 lines, kept whole: one loop over the requests of the frame protocol, each read
+// field by field in the order the parent's FrameWorker writes them)
 int run_frame_worker(int in_fd, int out_fd) {
   install_mujoco_handlers();
   std::unique_ptr<MujocoModel> model;

@@ -91,6 +91,8 @@ std::vector<Image> SceneRenderer::frames(std::span<const PoseSample> samples,
   return out;
 }
 
+// (over 60 lines, kept whole: this thread and its helpers' threads share the `next` counter
+// and the `taken` flags in its frame)
 void SceneRenderer::draw_frames(std::span<const PoseSample> samples,
                                 std::span<const FrameLabels> labels,
                                 const std::function<void(size_t, Image&&)>& take) {

@@ -94,6 +94,8 @@ Renderer::~Renderer() {
   if (context_) give_back_context(std::move(context_));
 }
 
+// (over 60 lines, kept whole: one frame's GL phases in order, update, draw, labels, finish
+// and readback, each timed by its PhaseScope)
 Image Renderer::render(mjData* data, const FrameLabels& labels, std::span<const mjvGeom> extra) {
   PhaseScope phase("gl");
   context_->make_current();

@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 #include <nlohmann/json.hpp>
 
+#include "app/pipeline.hpp"
 #include "app/run_case.hpp"
 #include "app/study_entry.hpp"
 #include "cases/yaml_reader.hpp"
@@ -163,6 +164,21 @@ TEST(AddedStudy, ARecordWithoutReportSectionsIsRefused) {
                std::invalid_argument);
   EXPECT_THROW(study_entry<TallySection>("tally", "counts", &load_tally, nullptr),
                std::invalid_argument);
+}
+
+// the fuzz build links the loaders without the solvers through a registry of its own
+// (tests/fuzz/fuzz_registry.cpp, step 6 of "Adding a study"): every study of this registry
+// has its record there too
+TEST(AddedStudy, EveryRegisteredStudyIsInTheFuzzRegistry) {
+  const std::string fuzz =
+      armstudy::testing::slurp(armstudy::testing::kSource / "tests/fuzz/fuzz_registry.cpp");
+  for (const StudyEntry& e : study_registry()) {
+    std::string quoted = "\"";
+    quoted += e.study;
+    quoted += '"';
+    EXPECT_NE(fuzz.find(quoted), std::string::npos)
+        << "study '" << e.study << "' has no record in tests/fuzz/fuzz_registry.cpp";
+  }
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/number_format.hpp"
+#include "report/text_escape.hpp"
 #include "testing/cli.hpp"
 #include "testing/files.hpp"
 
@@ -24,21 +25,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kRepo = ARMSTUDY_SOURCE_DIR;
-
-std::string html_escaped(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // the bundled cases that reproduce a source
 std::vector<fs::path> source_cases() {
@@ -102,7 +88,7 @@ TEST(SourceComparison, EachPrintedFigureIsInResultsJsonAndTheReport) {
       const YAML::Node item = printed[k];
       const json& row = rows[k];
       EXPECT_EQ(row["says"], item["says"].as<std::string>());
-      EXPECT_NE(html.find(html_escaped(item["says"].as<std::string>())), std::string::npos)
+      EXPECT_NE(html.find(report::xml_text(item["says"].as<std::string>())), std::string::npos)
           << item["says"];
       if (item["value"]) {
         const double v = item["value"].as<double>();

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "studies/placement/geometry.hpp"
+#include "studies/placement/printed_limits.hpp"
 #include "studies/placement/solve.hpp"
 #include "testing/arms.hpp"
 
@@ -48,6 +49,24 @@ TEST(PlacementActiveSet, AConfigurationAndItsMirrorImageNameTheSameActiveConstra
   EXPECT_NE(r.message.find("the power limit of joint 2 (12.0000 W) is active too"),
             std::string::npos)
       << r.message;
+  // every printed point (the optima and the margin-sweep points, each at the samples where
+  // its doubling converged) keeps the 12 W limit to the peaks' sampling tolerance, and the
+  // check says by how much the worst one reads above it
+  const PrintedLimitExcess e = printed_limit_excess(s, r);
+  std::printf("printed points %d, largest excess %.3g (%s)\n", e.points, e.relative,
+              e.where.c_str());
+  int found = 2;
+  for (const ProgramConfig* c : {&c1, &c2})
+    for (const MarginPoint& m : c->margin_sensitivity) found += m.found;
+  EXPECT_EQ(e.points, found);
+  const std::optional<Check> check = printed_limits_check(s, r);
+  ASSERT_TRUE(check.has_value());
+  EXPECT_TRUE(check->passed) << check->description;
+  EXPECT_LE(e.relative, 1e-3);
+  // a limit below a printed peak is caught
+  Spec tighter = s;
+  tighter.power_limit = std::array<double, 2>{1000.0, 11.0};
+  EXPECT_FALSE(printed_limits_check(tighter, r)->passed);
 }
 
 }  // namespace armstudy::studies::placement::active_set_test

@@ -208,5 +208,57 @@ TEST(PlacementQuadrature, OnASmoothLineItEqualsTheFineTrapezoidWithinItsEstimate
   }
 }
 
+// A line exactly tangent to the inner circle folds the elbow at t*, where both joint rates
+// reverse at once: its energy is the integral on both sides plus the reversal's jump term
+// (quadrature.hpp), the limit of the lines at d -> 0+ outside it. Checked on the example-3
+// family (L = 0.5 Lmax, x_s = 0.36 m, both configurations; configuration 2 is the sequence of
+// the test above) and
+// on example 1's line (L = Lmax, x_s = 0.6 m: both ends on the outer circle; its family
+// keeps both ends on it, L(d) = 2 sqrt(0.6^2 - (0.2 + d)^2)), in both configurations.
+// Measured (cycloidal): example 3 36.2091954576 +- 1.1e-6 J at d = 0 (jump 16.047), the
+// lines below it by 0.38, 0.066, 0.013, 0.0028 J at d = 1e-6, 1e-8, 1e-10, 1e-12 m; example 1
+// 146.5337959 J in both configurations, below it by 0.872, 0.0875, 0.00876, 0.00088 J
+// (sqrt(d), exactly). The sequences rise to the fold's energy: it is their limit.
+TEST(PlacementQuadrature, TheFoldedElbowsEnergyIsTheLimitOfNearbyLines) {
+  const Arm2 arm = make_arm2(testing::thesis_arm());
+  struct Family {
+    const char* name;
+    double x_s;
+    bool ends_on_outer;
+    int config;
+  };
+  for (const auto p : {MotionProgram::kCycloidal, MotionProgram::kPoly345}) {
+    double example1[3] = {0, 0, 0};
+    for (const Family fam :
+         {Family{"example 3", 0.36, false, 1}, Family{"example 3", 0.36, false, 2},
+          Family{"example 1", 0.6, true, 1}, Family{"example 1", 0.6, true, 2}}) {
+      const auto length = [&](double d) {
+        return fam.ends_on_outer ? 2.0 * std::sqrt(0.36 - (0.2 + d) * (0.2 + d)) : 0.5 * lmax();
+      };
+      const EnergyQuadrature fold =
+          energy_quadrature(arm, p, 1.0, length(0), near_tangent(fam.x_s, 0), fam.config);
+      std::printf("%s, configuration %d, %s: d = 0 %.10f +- %.2e (jump %.10f +- %.2e)\n", fam.name,
+                  fam.config, std::string(core::program_name(p)).c_str(), fold.energy, fold.error,
+                  fold.jump, fold.jump_error);
+      ASSERT_TRUE(fold.converged);
+      EXPECT_LT(fold.relative_error(), 1e-6);
+      EXPECT_GT(fold.jump, 0.3 * fold.energy);  // the reversal is a large part of it
+      if (fam.ends_on_outer) example1[fam.config] = fold.energy;
+      double gap_before = 0;
+      for (const double d : {1e-6, 1e-8, 1e-10, 1e-12}) {
+        const EnergyQuadrature q =
+            energy_quadrature(arm, p, 1.0, length(d), near_tangent(fam.x_s, d), fam.config);
+        const double gap = fold.energy - q.energy;
+        std::printf("   d = %.0e: %.10f +- %.2e, %.3e below the fold\n", d, q.energy, q.error, gap);
+        EXPECT_GT(gap, 10.0 * (fold.error + q.error)) << d;
+        if (gap_before > 0) EXPECT_LT(gap, 0.25 * gap_before) << d;
+        gap_before = gap;
+      }
+      EXPECT_LT(gap_before, 1e-4 * fold.energy);
+    }
+    // example 1's line is its own mirror image: both configurations need the same energy
+    EXPECT_NEAR(example1[1], example1[2], 1e-9 * example1[1]);
+  }
+}
 }  // namespace
 }  // namespace armstudy::studies::placement

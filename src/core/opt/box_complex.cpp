@@ -10,6 +10,8 @@
 
 namespace armstudy::core::opt {
 
+// (over 60 lines, kept whole: Box's (1965) iteration as one loop, reflect, contract and
+// check the spread, in the paper's order)
 ComplexResult box_complex(const std::function<double(const Eigen::VectorXd&)>& f,
                           const std::function<bool(const Eigen::VectorXd&)>& feasible,
                           const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,

@@ -36,6 +36,70 @@ PendulumSpec default_pendulum_spec() {
   return s;
 }
 
+namespace {
+// output times: the sample grid merged with the snapshot times (in `snapshot_t`)
+std::vector<double> output_times(const PendulumSpec& spec, std::vector<double>* snapshot_t) {
+  std::vector<double> times;
+  const int ns = static_cast<int>(std::floor(spec.duration / spec.sample_step + 1e-9));
+  for (int k = 0; k <= ns; ++k) times.push_back(k * spec.sample_step);
+  if (times.back() < spec.duration - 1e-12) times.push_back(spec.duration);
+  const int nsnap = static_cast<int>(std::floor(spec.duration / spec.snapshot_step + 1e-9));
+  for (int k = 0; k <= nsnap; ++k) snapshot_t->push_back(k * spec.snapshot_step);
+  times.insert(times.end(), snapshot_t->begin(), snapshot_t->end());
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end(),
+                          [](double a, double b) { return std::abs(a - b) < 1e-12; }),
+              times.end());
+  return times;
+}
+
+// energy and geometry along the motion (states xs at `times`), the snapshots' indices and
+// the energy drift
+void record_pendulum_motion(const PendulumSpec& spec, const core::PlanarChain& chain,
+                            const std::vector<double>& times, const std::vector<OdeState>& xs,
+                            PendulumResult& r) {
+  core::JointVector q(4), qd(4);
+  for (size_t k = 0; k < times.size(); ++k) {
+    q << spec.theta1, spec.theta2, xs[k][0], xs[k][1];
+    qd << 0.0, 0.0, xs[k][2], xs[k][3];
+    r.t.push_back(times[k]);
+    r.q.push_back(q);
+    r.qd.push_back(qd);
+    const double K = core::kinetic_energy(chain, q, qd);
+    const double U = core::potential_energy(chain, q);
+    r.kinetic.push_back(K);
+    r.potential.push_back(U);
+    r.total.push_back(K + U);
+    const core::ChainPose pose = core::forward_kinematics(chain, q);
+    r.ball.push_back(pose.p_WJ.col(4));
+    r.circle_centre.push_back(pose.p_WJ.col(3));
+  }
+  for (double ts : r.snapshot_t) {
+    const auto it = std::lower_bound(r.t.begin(), r.t.end(), ts - 1e-12);
+    r.snapshot_index.push_back(static_cast<int>(it - r.t.begin()));
+  }
+  r.energy_initial = r.total.front();
+  for (size_t k = 0; k < r.t.size(); ++k) {
+    r.energy_scale = std::max(r.energy_scale, r.kinetic[k]);
+    r.energy_drift = std::max(r.energy_drift, std::abs(r.total[k] - r.energy_initial));
+  }
+  // at rest everywhere (an equilibrium start) the drift is measured against the weight
+  if (r.energy_scale <= 0)
+    r.energy_scale = std::abs(r.energy_initial) > 0 ? std::abs(r.energy_initial) : 1.0;
+  r.energy_drift_rel = r.energy_drift / r.energy_scale;
+}
+
+// the summary sentence: the simulated time, the steps and the energy drift
+std::string pendulum_message(const PendulumSpec& spec, const PendulumResult& r) {
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os << "pendulum simulated for " << spec.duration << " s (" << r.steps_accepted
+     << " steps); energy drift " << std::setprecision(3) << r.energy_drift_rel << " of the "
+     << std::setprecision(4) << r.energy_scale << " J exchanged";
+  return os.str();
+}
+}  // namespace
+
 PendulumResult solve_pendulum(const PendulumSpec& spec, const ProgressFn& progress) {
   const auto t_start = std::chrono::steady_clock::now();
   PendulumResult r;
@@ -56,21 +120,9 @@ PendulumResult solve_pendulum(const PendulumSpec& spec, const ProgressFn& progre
     return r;
   }
 
-  // output times: the sample grid merged with the snapshot times
-  std::vector<double> times;
-  const int ns = static_cast<int>(std::floor(spec.duration / spec.sample_step + 1e-9));
-  for (int k = 0; k <= ns; ++k) times.push_back(k * spec.sample_step);
-  if (times.back() < spec.duration - 1e-12) times.push_back(spec.duration);
-  const int nsnap = static_cast<int>(std::floor(spec.duration / spec.snapshot_step + 1e-9));
-  for (int k = 0; k <= nsnap; ++k) r.snapshot_t.push_back(k * spec.snapshot_step);
-  times.insert(times.end(), r.snapshot_t.begin(), r.snapshot_t.end());
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end(),
-                          [](double a, double b) { return std::abs(a - b) < 1e-12; }),
-              times.end());
+  const std::vector<double> times = output_times(spec, &r.snapshot_t);
 
   // state (q3, q4, qd3, qd4); joints 1, 2 locked (zero rate and acceleration)
-  core::JointVector q(4), qd(4);
   const core::JointVector zero = core::JointVector::Zero(4);
   auto rhs = [&](double, const OdeState& x) {
     core::JointVector qq(4), qqd(4);
@@ -100,42 +152,9 @@ PendulumResult solve_pendulum(const PendulumSpec& spec, const ProgressFn& progre
   r.steps_rejected = stats.rejected;
   r.evaluations = stats.evaluations;
 
-  // energy and geometry along the motion
-  for (size_t k = 0; k < times.size(); ++k) {
-    q << spec.theta1, spec.theta2, xs[k][0], xs[k][1];
-    qd << 0.0, 0.0, xs[k][2], xs[k][3];
-    r.t.push_back(times[k]);
-    r.q.push_back(q);
-    r.qd.push_back(qd);
-    const double K = core::kinetic_energy(chain, q, qd);
-    const double U = core::potential_energy(chain, q);
-    r.kinetic.push_back(K);
-    r.potential.push_back(U);
-    r.total.push_back(K + U);
-    const core::ChainPose pose = core::forward_kinematics(chain, q);
-    r.ball.push_back(pose.p_WJ.col(4));
-    r.circle_centre.push_back(pose.p_WJ.col(3));
-  }
-  for (double ts : r.snapshot_t) {
-    const auto it = std::lower_bound(r.t.begin(), r.t.end(), ts - 1e-12);
-    r.snapshot_index.push_back(static_cast<int>(it - r.t.begin()));
-  }
-  r.energy_initial = r.total.front();
-  for (size_t k = 0; k < r.t.size(); ++k) {
-    r.energy_scale = std::max(r.energy_scale, r.kinetic[k]);
-    r.energy_drift = std::max(r.energy_drift, std::abs(r.total[k] - r.energy_initial));
-  }
-  // at rest everywhere (an equilibrium start) the drift is measured against the weight
-  if (r.energy_scale <= 0)
-    r.energy_scale = std::abs(r.energy_initial) > 0 ? std::abs(r.energy_initial) : 1.0;
-  r.energy_drift_rel = r.energy_drift / r.energy_scale;
+  record_pendulum_motion(spec, chain, times, xs, r);
   r.status = Status::kSolved;
-  std::ostringstream os;
-  os.imbue(std::locale::classic());
-  os << "pendulum simulated for " << spec.duration << " s (" << r.steps_accepted
-     << " steps); energy drift " << std::setprecision(3) << r.energy_drift_rel << " of the "
-     << std::setprecision(4) << r.energy_scale << " J exchanged";
-  r.message = os.str();
+  r.message = pendulum_message(spec, r);
   r.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   return r;
 }

@@ -37,12 +37,19 @@ EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, 
     c.rel_change = std::abs(next.energy - prev.energy) / std::abs(next.energy);
     const double pk_prev = std::max(prev.peak_torque[0], prev.peak_torque[1]);
     const double pk_next = std::max(next.peak_torque[0], next.peak_torque[1]);
+    const double peak_change_before = c.peak_rel_change;
     c.peak_rel_change = std::abs(pk_next - pk_prev) / pk_next;
-    c.peak_converged = c.peak_rel_change < peak_tol;
+    // a sampled peak has settled when its change is small and it shrank by half or more
+    // since the doubling before (the samples resolve the peak's width); a change that is
+    // small by chance, a sample landing near a peak narrower than the spacing, is not enough
+    c.peak_converged =
+        c.peak_rel_change < peak_tol &&
+        (c.peak_rel_change <= 1e-14 || c.peak_rel_change <= 0.5 * peak_change_before);
     if (c.rel_change < tol && c.peak_converged) {
+      // the finer of the pair is kept (the coarser one's error is the change itself)
       c.converged = true;
-      c.samples = n;
-      c.metrics = prev;
+      c.samples = m;
+      c.metrics = next;
       return c;
     }
     prev = next;
@@ -60,13 +67,13 @@ EnergyConvergence check_energy(const Arm2& arm, core::MotionProgram program, dou
   EnergyConvergence c = converge_energy(arm, program, duration, length, line, configuration,
                                         samples, touches, tol, peak_tol, max_samples);
   c.touches_inner = touches_inner;
-  if (touches_inner) return c;  // the tangent's limit energy is not its integral
   const EnergyQuadrature q =
       energy_quadrature(arm, program, duration, length, line, configuration, quad_tol);
   c.quadrature = true;
   c.energy = q.energy;
   c.energy_error = q.error;
   c.quadrature_tolerance = q.tolerance_rel;
+  c.energy_jump = q.jump;
   c.quadrature_intervals = q.intervals;
   c.quadrature_evaluations = q.evaluations;
   if (c.energy_converged()) c.metrics.energy = q.energy;

@@ -9,9 +9,10 @@
 /// ending on the outer circle at rest has a finite energy while its torque grows like
 /// (T - t)^-1/2 at that end, so the sampled peak grows like h^-1/2 without bound. So the
 /// energy is printed with its error and only the peak (and the peak power) is withheld.
-/// A line exactly tangent to the inner circle (within 1e-9 m) keeps no energy: as d -> 0+
-/// the elbow rate reverses in a vanishing time and the limit energy holds a jump term that
-/// the integral of the tangent line itself does not see.
+/// A line exactly tangent to the inner circle folds the elbow at its closest approach, where
+/// both joint rates reverse at once: its energy is the limit of the lines at d -> 0+, the
+/// integral on both sides plus the reversal's jump term (quadrature.hpp); its peak torque
+/// is unbounded (an impulse) and withheld.
 
 #include <cmath>
 #include <limits>
@@ -38,7 +39,8 @@ struct EnergyConvergence {
   /// the sampled peak torque changed by < peak_tol on the last doubling
   bool peak_converged = false;
   bool touches_boundary = false;  ///< the line is on a boundary (exact geometry, 1e-9 m)
-  /// touches the inner circle |L1 - L2| (an exact tangent, or an end on it): no energy
+  /// touches the inner circle |L1 - L2| (an exact tangent, or an end on it): the elbow
+  /// folds; its energy stands (with the jump term of a tangent), its peak torque is withheld
   bool touches_inner = false;
   /// the energy below comes from the adaptive quadrature (check_energy); false: the energy
   /// is the doubling's (converge_energy alone, the sweep)
@@ -46,11 +48,14 @@ struct EnergyConvergence {
   double energy = std::numeric_limits<double>::quiet_NaN();       ///< J, the quadrature's
   double energy_error = std::numeric_limits<double>::infinity();  ///< J, its estimate
   double quadrature_tolerance = 0;  ///< relative error the quadrature was asked for
+  /// J, the part of `energy` that is the folded elbow's reversal (a line exactly tangent to
+  /// the inner circle; 0 otherwise)
+  double energy_jump = 0;
   int quadrature_intervals = 0, quadrature_evaluations = 0;
   /// the energy may be printed: the quadrature's estimate within `tolerance` (or, without
-  /// the quadrature, the doubling converged), and the line not on the inner circle
+  /// the quadrature, the doubling converged, off the boundaries)
   bool energy_converged() const {
-    if (!checked || touches_inner) return false;
+    if (!checked) return false;
     if (quadrature) return std::isfinite(energy) && energy_error <= tolerance * std::abs(energy);
     return converged && !touches_boundary;
   }
@@ -61,7 +66,7 @@ struct EnergyConvergence {
   bool peak_withheld() const { return checked && (touches_boundary || !peak_converged); }
   /// every figure of the motion may be printed
   bool regular() const { return checked && !energy_withheld() && !peak_withheld(); }
-  int samples = 0;  ///< samples of `metrics`: the coarser of the converged pair
+  int samples = 0;  ///< samples of `metrics`: the finer of the converged pair
   double rel_change = std::numeric_limits<double>::quiet_NaN();  ///< energy, at the last doubling
   double peak_rel_change = std::numeric_limits<double>::quiet_NaN();  ///< peak torque, same
   double tolerance = 0;  ///< the relative tolerance asked for (energy error, doubling)
@@ -72,8 +77,10 @@ struct EnergyConvergence {
 
 /// Doubles the samples (n -> 2 n - 1, nested grids) from `samples` until the energy
 /// changes by less than `tol` and the sampled peak torque by less than `peak_tol`
-/// (relative), or `max_samples` is passed. `touches`: the exact line check puts the line
-/// on a boundary (|boundary distance| within 1e-9 m, so |sin q2| ~ 1e-4 or less on it).
+/// (relative) and by at most half its change on the doubling before (or is exactly still),
+/// or `max_samples` is passed; the finer of the last pair is kept. `touches`: the exact line check
+/// puts the line on a boundary (|boundary distance| within 1e-9 m, so |sin q2| ~ 1e-4 or less on
+/// it).
 EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, double duration,
                                   double length, const Line& line, int configuration, int samples,
                                   bool touches, double tol = 1e-4, double peak_tol = 1e-3,
@@ -81,7 +88,7 @@ EnergyConvergence converge_energy(const Arm2& arm, core::MotionProgram program, 
 
 /// converge_energy, then the energy by energy_quadrature (relative tolerance
 /// `quad_tol`): what the checked candidates get. `touches_inner`: the line is within 1e-9 m
-/// of the inner circle (its energy is not computed).
+/// of the inner circle (the elbow folds).
 EnergyConvergence check_energy(const Arm2& arm, core::MotionProgram program, double duration,
                                double length, const Line& line, int configuration, int samples,
                                bool touches, bool touches_inner, double tol = 1e-4,
@@ -89,11 +96,15 @@ EnergyConvergence check_energy(const Arm2& arm, core::MotionProgram program, dou
                                int max_samples = 409601);
 
 /// The sentence printed instead of the energy, peak and saving of a motion whose energy is
-/// withheld (a line tangent to the inner circle, or a quadrature that did not converge).
+/// withheld (a quadrature that did not converge).
 inline constexpr const char* kSingularNote =
     "singular: energy not converged, peak torque unbounded";
 /// The sentence printed instead of the peak torque (and peak power) of a motion whose energy
 /// is printed but whose sampled peak does not settle.
 inline constexpr const char* kPeakUnboundedNote = "peak torque unbounded (singular pose)";
+/// The same for a line on the inner circle: the trouble is the folded elbow, not the energy.
+inline constexpr const char* kFoldedElbowNote =
+    "the elbow folds on the inner circle, where the joint rates reverse at once: the energy "
+    "holds that reversal, the peak torque is an impulse (unbounded)";
 
 }  // namespace armstudy::studies::placement

@@ -93,6 +93,55 @@ bool gk15(const F& f, double a, double b, QuadSegment& out, int& evaluations) {
   return true;
 }
 
+// integral over l in [0, 1] of |a + l (b - a)|
+double mean_abs_on_segment(double a, double b) {
+  if ((a >= 0) == (b >= 0)) return 0.5 * std::abs(a + b);
+  return 0.5 * (a * a + b * b) / std::abs(b - a);
+}
+
+struct FoldJump {
+  double energy = 0, error = 0;
+};
+
+// The folded elbow's reversal term at t* (quadrature.hpp). The one-sided rates qd-, qd+ at t*
+// are limits (the formula is 0/0 there); each side is analytic in |t - t*|, so they are
+// extrapolated to t* by Neville's scheme from t* -+ h 2^-k, k = 0..4, h = 3e-4 T (quartic:
+// error ~ h^5; the rounding of the rates grows like 1/|t - t*| and stays near 1e-12 here).
+// The error is the change of the term between the last two orders. The mass matrix at the
+// fold: c2 = -1, s2 = 0.
+FoldJump fold_jump(const Arm2& arm, const LinePower& power) {
+  constexpr int kOrders = 5;
+  const double ts = power.t_closest(), h = 3e-4 * power.duration();
+  const auto rates = [&](double side, int orders) {
+    Eigen::Vector2d tab[kOrders];
+    double step[kOrders];
+    for (int k = 0; k < orders; ++k) {
+      step[k] = h * std::ldexp(1.0, -k);
+      const Arm2Sample o = power.sample(ts + side * step[k]);
+      tab[k] = Eigen::Vector2d(o.qd1, o.qd2);
+    }
+    for (int m = 1; m < orders; ++m)
+      for (int k = orders - 1; k >= m; --k)
+        tab[k] = (step[k - m] * tab[k] - step[k] * tab[k - 1]) / (step[k - m] - step[k]);
+    return tab[orders - 1];
+  };
+  const double g = -arm.A;  // A c2 - B s2 at c2 = -1, s2 = 0
+  Eigen::Matrix2d m;
+  m << arm.a11 + 2 * g, arm.a12 + g, arm.a12 + g, arm.a22;
+  const auto term = [&](int orders) {
+    const Eigen::Vector2d before = rates(-1, orders), after = rates(+1, orders);
+    const Eigen::Vector2d impulse = m * (after - before);
+    double e = 0;
+    for (int i = 0; i < 2; ++i)
+      e += std::abs(impulse[i]) * mean_abs_on_segment(before[i], after[i]);
+    return e;
+  };
+  FoldJump j;
+  j.energy = term(kOrders);
+  j.error = std::abs(term(kOrders - 1) - j.energy);
+  return j;
+}
+
 }  // namespace
 
 LinePower::LinePower(const Arm2& arm, core::MotionProgram program, double duration, double length,
@@ -129,6 +178,11 @@ LinePower::LinePower(const Arm2& arm, core::MotionProgram program, double durati
 }
 
 JointPowers LinePower::at(double t) const {
+  const Arm2Sample o = sample(t);
+  return {o.tau1 * o.qd1, o.tau2 * o.qd2};
+}
+
+Arm2Sample LinePower::sample(double t) const {
   // the half nearer to its end: s (or L - s, by the programs' symmetry) from that end
   const bool tail = t > 0.5 * T_;
   const double tau = tail ? T_ - t : t;
@@ -158,10 +212,100 @@ JointPowers LinePower::at(double t) const {
   const double two_l1l2 = 2.0 * arm_.L1 * arm_.L2;
   const double c2 = dout <= din ? 1.0 - dout / two_l1l2 : din / two_l1l2 - 1.0;
   const double s2 = sign_ * std::sqrt(din * dout) / two_l1l2;
-  const Arm2Sample o = arm2_sample_elbow(arm_, p.x(), p.y(), sd * line_.dir.x(), sd * line_.dir.y(),
-                                         sdd * line_.dir.x(), sdd * line_.dir.y(), c2, s2);
-  return {o.tau1 * o.qd1, o.tau2 * o.qd2};
+  return arm2_sample_elbow(arm_, p.x(), p.y(), sd * line_.dir.x(), sd * line_.dir.y(),
+                           sdd * line_.dir.x(), sdd * line_.dir.y(), c2, s2);
 }
+
+namespace {
+// the |.| kinks in [a, b]: sign changes of either joint's power on a scan of n points,
+// bisected to the last bit, appended to `kinks`; false when the power is not finite at a
+// scanned point
+bool power_kinks(const LinePower& power, double a, double b, int n, int& evaluations,
+                 std::vector<double>& kinks) {
+  double t_prev = 0;
+  JointPowers p_prev;
+  for (int k = 0; k < n; ++k) {
+    const double t = a + (b - a) * (k + 0.5) / n;
+    const JointPowers pk = power.at(t);
+    ++evaluations;
+    if (!std::isfinite(pk.p1) || !std::isfinite(pk.p2)) return false;
+    if (k > 0) {
+      for (int j = 0; j < 2; ++j) {
+        const double v0 = j == 0 ? p_prev.p1 : p_prev.p2, v1 = j == 0 ? pk.p1 : pk.p2;
+        if (!((v0 < 0 && v1 > 0) || (v0 > 0 && v1 < 0))) continue;
+        double lo = t_prev, hi = t;
+        for (int it = 0; it < 200; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          const JointPowers pm = power.at(mid);
+          ++evaluations;
+          const double vm = j == 0 ? pm.p1 : pm.p2;
+          if (!std::isfinite(vm)) break;
+          ((vm < 0) == (v0 < 0) ? lo : hi) = mid;
+        }
+        kinks.push_back(0.5 * (lo + hi));
+      }
+    }
+    t_prev = t;
+    p_prev = pk;
+  }
+  return true;
+}
+
+// the value and error summed afresh from the segments (no drift of running sums)
+void heap_totals(const std::priority_queue<QuadSegment>& heap, double& value, double& error) {
+  std::priority_queue<QuadSegment> copy = heap;
+  value = 0;
+  error = 0;
+  while (!copy.empty()) {
+    value += copy.top().value;
+    error += copy.top().error;
+    copy.pop();
+  }
+}
+
+// adaptive G7-K15 of f over the intervals between the breakpoints bp: the segment of the
+// largest error halved until the error is within tol_rel or max_intervals are used; fills
+// q's energy, error, intervals and converged (infinite energy when f is not finite)
+template <typename F>
+void adaptive_gk15(const F& f, const std::vector<double>& bp, double T, double tol_rel,
+                   int max_intervals, int& evaluations, EnergyQuadrature& q) {
+  std::priority_queue<QuadSegment> heap;
+  for (size_t i = 0; i + 1 < bp.size(); ++i) {
+    if (!(bp[i + 1] > bp[i])) continue;
+    QuadSegment s;
+    if (!gk15(f, bp[i], bp[i + 1], s, evaluations)) {
+      q.energy = std::numeric_limits<double>::infinity();
+      return;
+    }
+    heap.push(s);
+  }
+  double value = 0, error = 0;
+  heap_totals(heap, value, error);
+  while (int(heap.size()) < max_intervals && !(error <= tol_rel * std::abs(value))) {
+    const QuadSegment worst = heap.top();
+    const double mid = 0.5 * (worst.a + worst.b);
+    // an interval that cannot be halved any more: the estimate stays as it is
+    if (!(mid > worst.a && mid < worst.b) || worst.b - worst.a < 1e-15 * T) break;
+    QuadSegment left, right;
+    if (!gk15(f, worst.a, mid, left, evaluations) || !gk15(f, mid, worst.b, right, evaluations)) {
+      q.energy = std::numeric_limits<double>::infinity();
+      return;
+    }
+    heap.pop();
+    heap.push(left);
+    heap.push(right);
+    value += left.value + right.value - worst.value;
+    error += left.error + right.error - worst.error;
+    if (heap.size() % 256 == 0) heap_totals(heap, value, error);
+  }
+  heap_totals(heap, value, error);
+  q.energy = value;
+  q.error = error;
+  q.intervals = int(heap.size());
+  q.converged = std::isfinite(value) && error <= tol_rel * std::abs(value);
+}
+}  // namespace
 
 EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program, double duration,
                                    double length, const Line& line, int configuration,
@@ -180,44 +324,17 @@ EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program,
     bp.push_back(2.0 * T / 3.0);
   }
   std::sort(bp.begin(), bp.end());
-  // the |.| kinks: sign changes of either joint's power on a scan inside each interval,
-  // bisected to the last bit
+  // the |.| kinks: sign changes of either joint's power on a scan inside each interval
   std::vector<double> kinks;
   constexpr int kScan = 256;
   for (size_t i = 0; i + 1 < bp.size(); ++i) {
     const double a = bp[i], b = bp[i + 1];
     if (!(b > a)) continue;
     const int n = std::max(8, int(std::lround(kScan * (b - a) / T)));
-    double t_prev = 0;
-    JointPowers p_prev;
-    for (int k = 0; k < n; ++k) {
-      const double t = a + (b - a) * (k + 0.5) / n;
-      const JointPowers pk = power.at(t);
-      ++evaluations;
-      if (!std::isfinite(pk.p1) || !std::isfinite(pk.p2)) {
-        q.energy = std::numeric_limits<double>::infinity();
-        q.evaluations = evaluations;
-        return q;
-      }
-      if (k > 0) {
-        for (int j = 0; j < 2; ++j) {
-          const double v0 = j == 0 ? p_prev.p1 : p_prev.p2, v1 = j == 0 ? pk.p1 : pk.p2;
-          if (!((v0 < 0 && v1 > 0) || (v0 > 0 && v1 < 0))) continue;
-          double lo = t_prev, hi = t;
-          for (int it = 0; it < 200; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            const JointPowers pm = power.at(mid);
-            ++evaluations;
-            const double vm = j == 0 ? pm.p1 : pm.p2;
-            if (!std::isfinite(vm)) break;
-            ((vm < 0) == (v0 < 0) ? lo : hi) = mid;
-          }
-          kinks.push_back(0.5 * (lo + hi));
-        }
-      }
-      t_prev = t;
-      p_prev = pk;
+    if (!power_kinks(power, a, b, n, evaluations, kinks)) {
+      q.energy = std::numeric_limits<double>::infinity();
+      q.evaluations = evaluations;
+      return q;
     }
   }
   for (const double k : kinks) bp.push_back(k);
@@ -226,54 +343,16 @@ EnergyQuadrature energy_quadrature(const Arm2& arm, core::MotionProgram program,
   q.breakpoints = int(bp.size()) - 2;
 
   const auto f = [&](double t) { return power.at(t).abs_sum(); };
-  std::priority_queue<QuadSegment> heap;
-  for (size_t i = 0; i + 1 < bp.size(); ++i) {
-    if (!(bp[i + 1] > bp[i])) continue;
-    QuadSegment s;
-    if (!gk15(f, bp[i], bp[i + 1], s, evaluations)) {
-      q.energy = std::numeric_limits<double>::infinity();
-      q.evaluations = evaluations;
-      return q;
-    }
-    heap.push(s);
+  adaptive_gk15(f, bp, T, tol_rel, max_intervals, evaluations, q);
+  if (power.folds() && std::isfinite(q.energy)) {
+    const FoldJump j = fold_jump(arm, power);
+    q.jump = j.energy;
+    q.jump_error = j.error;
+    q.energy += j.energy;
+    q.error += j.error;
+    q.converged = std::isfinite(q.energy) && q.error <= tol_rel * std::abs(q.energy);
   }
-  const auto totals = [&](double& value, double& error) {
-    // summed afresh from the segments (no drift of running sums)
-    std::priority_queue<QuadSegment> copy = heap;
-    value = 0;
-    error = 0;
-    while (!copy.empty()) {
-      value += copy.top().value;
-      error += copy.top().error;
-      copy.pop();
-    }
-  };
-  double value = 0, error = 0;
-  totals(value, error);
-  while (int(heap.size()) < max_intervals && !(error <= tol_rel * std::abs(value))) {
-    const QuadSegment worst = heap.top();
-    const double mid = 0.5 * (worst.a + worst.b);
-    // an interval that cannot be halved any more: the estimate stays as it is
-    if (!(mid > worst.a && mid < worst.b) || worst.b - worst.a < 1e-15 * T) break;
-    QuadSegment left, right;
-    if (!gk15(f, worst.a, mid, left, evaluations) || !gk15(f, mid, worst.b, right, evaluations)) {
-      q.energy = std::numeric_limits<double>::infinity();
-      q.evaluations = evaluations;
-      return q;
-    }
-    heap.pop();
-    heap.push(left);
-    heap.push(right);
-    value += left.value + right.value - worst.value;
-    error += left.error + right.error - worst.error;
-    if (heap.size() % 256 == 0) totals(value, error);
-  }
-  totals(value, error);
-  q.energy = value;
-  q.error = error;
-  q.intervals = int(heap.size());
   q.evaluations = evaluations;
-  q.converged = std::isfinite(value) && error <= tol_rel * std::abs(value);
   return q;
 }
 

@@ -10,8 +10,12 @@
 ///   within a time ~ sqrt(d), torque and power peak like d^-1/2 over that width: the energy
 ///   is finite and tends to a finite limit as d -> 0+ (measured on the example-3 family:
 ///   each decade of d shrinks the change by 2.2-2.8 over d = 1e-4..1e-12 m). That limit
-///   holds a jump term, about m22 qd2^2 of the reversing elbow, that the integral of the
-///   exactly tangent line d = 0 does not see: an exact tangent is not integrated here;
+///   holds a jump term that the integral of the exactly tangent line d = 0 does not see.
+///   For that line (the elbow folded at t*, both rates reversing at once) the energy is the
+///   integral over both sides of t* plus the jump term: as d -> 0+ the torque in the window
+///   is M(q*) qdd (the rest stays bounded) and the rates move on a straight segment from
+///   qd- to qd+, so joint i adds |J_i| * integral_0^1 |qd-_i + l (qd+_i - qd-_i)| dl with
+///   the impulse J = M(q*) (qd+ - qd-) (docs/placement.md: "the folded elbow");
 /// - an end on the outer circle L1 + L2 (or on the inner one, the foot of the
 ///   perpendicular off the segment), at rest: q2 ~ t^{3/2} from that end, torque ~ t^-1/2,
 ///   power bounded (and not 0 at the end): the energy is finite and continuous in the line;
@@ -46,6 +50,9 @@ struct EnergyQuadrature {
   int evaluations = 0;     ///< integrand evaluations
   int breakpoints = 0;     ///< interior breakpoints (t*, corners, kinks)
   double t_closest = std::numeric_limits<double>::quiet_NaN();  ///< s, t* (NaN: foot off it)
+  /// J, the folded elbow's reversal term of a line exactly tangent to the inner circle
+  /// (included in `energy`; 0 for every other line), and its error (included in `error`)
+  double jump = 0, jump_error = 0;
   double relative_error() const { return error / energy; }
 };
 
@@ -62,6 +69,11 @@ class LinePower {
   LinePower(const Arm2& arm, core::MotionProgram program, double duration, double length,
             const Line& line, int configuration);
   JointPowers at(double t) const;
+  /// the joint state and torques at t (the elbow as above)
+  Arm2Sample sample(double t) const;
+  /// the line is exactly tangent to the inner circle (within 64 ulp) at t*: the elbow folds
+  /// there and both joint rates reverse at once
+  bool folds() const { return foot_on_segment_ && din_foot_ == 0.0; }
   /// s, the time when the tip is at the foot of the perpendicular from the root (NaN when
   /// that foot is off the segment)
   double t_closest() const { return t_closest_; }

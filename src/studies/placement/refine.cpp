@@ -8,8 +8,8 @@
 
 #include <nlopt.hpp>
 
+#include "studies/placement/candidate.hpp"
 #include "studies/placement/geometry.hpp"
-#include "studies/placement/solve.hpp"
 
 namespace armstudy::studies::placement {
 namespace {
@@ -341,6 +341,8 @@ Decision decide(const Spec& spec, const Candidate& c, double active_m, double ac
   return d;
 }
 
+// (over 60 lines, kept whole: the rounds of the stages of refine.hpp on one Problem, in the
+// order its header gives them)
 Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTable& table,
                               int configuration, const Candidate& start, double hx, double hphi,
                               double target_rel) {

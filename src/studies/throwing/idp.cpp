@@ -267,6 +267,8 @@ IdpResult run_idp(const ThrowSetup& setup, const VelocityProfile& initial,
   return run.finish();
 }
 
+// (over 60 lines, kept whole: the worker's fill, retire and step lambdas share its runs and
+// the seed counters)
 std::vector<IdpResult> run_idp_seeds(const ThrowSetup& setup, const VelocityProfile& initial,
                                      const Eigen::Vector2d& delta, const IdpSettings& s,
                                      const ProgressFn& progress) {

@@ -214,8 +214,56 @@ void finish_finite(const ThrowSetup& setup, const double* x, double backoff,
 
 namespace {
 
+// the per-stage extremes of P stages at their neutral values; with `from`, stage `first`'s
+// state and the stages before it copied from its evaluation. Returns the first stage to run.
+int start_stages(int P, const SimulationCheckpoints* from, int first, ProfileEvaluation& ev,
+                 OdeState& x) {
+  ev.stage_theta4.assign(P, 0.0);
+  ev.stage_voltage.assign(P, 0.0);
+  ev.stage_current.assign(P, 0.0);
+  ev.stage_power.assign(P, 0.0);
+  ev.stage_normal.assign(P, INFINITY);
+  ev.stage_friction.assign(P, -INFINITY);
+  ev.max_friction_ratio = 0.0;
+  if (!from) return 0;
+  const int k0 = first;
+  x = from->x[k0];
+  ev.max_friction_ratio = from->friction_ratio[k0];
+  const ProfileEvaluation& b = from->evaluation;
+  for (int k = 0; k < k0; ++k) {
+    ev.stage_theta4[k] = b.stage_theta4[k];
+    ev.stage_voltage[k] = b.stage_voltage[k];
+    ev.stage_current[k] = b.stage_current[k];
+    ev.stage_power[k] = b.stage_power[k];
+    ev.stage_normal[k] = b.stage_normal[k];
+    ev.stage_friction[k] = b.stage_friction[k];
+  }
+  return k0;
+}
+
+// the evaluation of a simulation that stopped (a constraint certainly violated), diverged
+// or ran to the end at state x
+void finish_simulation(const ThrowSetup& setup, OdeState& x, double backoff,
+                       ProfileEvaluation& ev) {
+  if (ev.stopped) {
+    ev.energy = std::numeric_limits<double>::max() / 4;
+    ev.violation = INFINITY;
+    ev.feasible = false;
+    return;
+  }
+  if (!ev.finite) {
+    ev.energy = std::numeric_limits<double>::max() / 4;
+    ev.max_friction_ratio = INFINITY;
+    classify(setup, ev, backoff);
+    return;
+  }
+  finish_finite(setup, &x[0], backoff, ev);
+}
+
 // simulate_profile; with `from`, resumes at stage `first` from its state (the stages before
 // copied from its evaluation); with `save`, stores the state at every stage start
+// (over 60 lines, kept whole: the classical rk4 loop over the stages with its tracking of
+// the limits, read as one integration)
 ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profile,
                            std::vector<ThrowSample>* samples, double backoff,
                            bool stop_when_infeasible, const SimulationCheckpoints* from, int first,
@@ -231,28 +279,7 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
   OdeState x(5);
   x << setup.theta3_0, setup.theta4_0, 0.0, 0.0, 0.0;
   PointEval k1, k2, k3, k4;
-  ev.stage_theta4.assign(P, 0.0);
-  ev.stage_voltage.assign(P, 0.0);
-  ev.stage_current.assign(P, 0.0);
-  ev.stage_power.assign(P, 0.0);
-  ev.stage_normal.assign(P, INFINITY);
-  ev.stage_friction.assign(P, -INFINITY);
-  ev.max_friction_ratio = 0.0;
-  int k0 = 0;
-  if (from) {
-    k0 = first;
-    x = from->x[k0];
-    ev.max_friction_ratio = from->friction_ratio[k0];
-    const ProfileEvaluation& b = from->evaluation;
-    for (int k = 0; k < k0; ++k) {
-      ev.stage_theta4[k] = b.stage_theta4[k];
-      ev.stage_voltage[k] = b.stage_voltage[k];
-      ev.stage_current[k] = b.stage_current[k];
-      ev.stage_power[k] = b.stage_power[k];
-      ev.stage_normal[k] = b.stage_normal[k];
-      ev.stage_friction[k] = b.stage_friction[k];
-    }
-  }
+  const int k0 = start_stages(P, from, first, ev, x);
   if (save) {
     save->profile = profile;
     save->x.clear();
@@ -316,19 +343,7 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
       break;
     }
   }
-  if (ev.stopped) {
-    ev.energy = std::numeric_limits<double>::max() / 4;
-    ev.violation = INFINITY;
-    ev.feasible = false;
-    return ev;
-  }
-  if (!ev.finite) {
-    ev.energy = std::numeric_limits<double>::max() / 4;
-    ev.max_friction_ratio = INFINITY;
-    classify(setup, ev, backoff);
-    return ev;
-  }
-  finish_finite(setup, &x[0], backoff, ev);
+  finish_simulation(setup, x, backoff, ev);
   return ev;
 }
 

@@ -192,6 +192,107 @@ Flight ballistic_flight(const Eigen::Vector2d& p, const Eigen::Vector2d& v, doub
   return f;
 }
 
+namespace {
+// IDP's feasible start (the reference): eq. 8 itself, or the first profile twice the
+// back-off inside every limit on the descent of the violation from eq. 8. That point moves
+// with the last digit of an input (a first feasible point, not an optimum), so no saving
+// is quoted against it: the saving is against eq. 8, the paper's comparison
+VelocityProfile feasible_start(const ThrowSetup& setup, const ThrowingSpec& spec,
+                               const VelocityProfile& initial, const Eigen::Vector2d& delta,
+                               const NloptSettings& ns, const ProgressFn& progress,
+                               ThrowingResult& r) {
+  VelocityProfile start = initial;
+  if (r.initial_feasible) {
+    r.reference_kind = "eq8";
+    r.reference = r.initial;
+  } else {
+    if (progress) progress(0.02, "repair of eq. 8 (IDP's feasible start)");
+    r.repair_run = run_nlopt(setup, initial, delta, ns, Objective::kViolation);
+    if (r.repair_run.feasible) {
+      r.reference_kind = "repaired";
+      start = r.repair_run.best;
+      r.reference = record_motion(setup, spec, start);
+    } else {
+      r.reference_kind = "none";
+      r.reference = r.initial;
+    }
+  }
+  return start;
+}
+
+// iterative dynamic programming from the reference, several seeds; the best seed's motion,
+// its re-check and its first-order optimality
+void solve_by_idp(const ThrowSetup& setup, const ThrowingSpec& spec, const VelocityProfile& start,
+                  const Eigen::Vector2d& delta, const NloptSettings& ns, const ProgressFn& progress,
+                  ThrowingResult& r) {
+  IdpSettings is = spec.idp;
+  is.threads = spec.threads;
+  is.backoff = spec.backoff;
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    r.idp_seeds = run_idp_seeds(setup, start, delta, is, [&](double f, std::string_view s) {
+      if (progress) progress(0.05 + 0.35 * f, s);
+    });
+    r.idp_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  for (size_t k = 0; k < r.idp_seeds.size(); ++k)
+    if (better_profile(r.idp_seeds[k].evaluation, r.idp_seeds[r.idp_best_seed].evaluation))
+      r.idp_best_seed = static_cast<int>(k);
+  r.idp_run = r.idp_seeds[r.idp_best_seed];
+  r.idp = record_motion(setup, spec, r.idp_run.best);
+  r.idp_check = verify_profile(setup, r.idp_run.best, spec.check_refinement);
+  r.idp_optimality = first_order_optimality(setup, r.idp_run.best, delta, ns);
+  // IDP converged: every seed stopped on its rule, and its answer is first-order stationary
+  r.idp_converged = r.idp_optimality.kkt_residual <= ns.kkt_tolerance;
+  for (const IdpResult& sd : r.idp_seeds) r.idp_converged &= sd.converged;
+}
+
+// the answer's voltages (sampled densely, from the 16x simulation) applied open loop to
+// the model with all four joints free, compared with the planned angles of that same
+// simulation (the rk4 error of the coarse plan is checked apart)
+void open_loop_replay(const ThrowSetup& setup, const ThrowingSpec& spec, const ThrowMotion& answer,
+                      const std::vector<ThrowSample>& fine_samples, ThrowingResult& r) {
+  const VoltageHistory vh = voltage_history(fine_samples);
+  std::vector<double> times;
+  for (const ThrowSample& x : fine_samples)
+    if (times.empty() || x.t > times.back()) times.push_back(x.t);
+  core::JointVector q0(4), qd0 = core::JointVector::Zero(4);
+  q0 << spec.start, spec.theta3_start, spec.theta4_start;
+  try {
+    const ReplayResult rr = replay_voltages(setup, vh, q0, qd0, times, 1e-10, 1e-12, 1e-4);
+    size_t j = 0;
+    for (const ThrowSample& x : fine_samples) {
+      while (j + 1 < rr.t.size() && rr.t[j] < x.t - 1e-12) ++j;
+      r.replay_error = std::max(r.replay_error, (rr.q[j] - x.q).cwiseAbs().maxCoeff());
+    }
+    // keep the replay at the coarse series' times for the report
+    j = 0;
+    for (double t : answer.series.t) {
+      while (j + 1 < rr.t.size() && rr.t[j] < t - 1e-12) ++j;
+      if (!r.replay_t.empty() && r.replay_t.back() == rr.t[j]) continue;
+      r.replay_t.push_back(rr.t[j]);
+      r.replay_q.push_back(rr.q[j]);
+    }
+  } catch (const std::runtime_error& e) {
+    r.replay_error = INFINITY;
+  }
+}
+
+// integration accuracy: the answer with 16 times the rk4 steps, and its open-loop replay
+void check_answer(const ThrowSetup& setup, const ThrowingSpec& spec, const ThrowMotion& answer,
+                  ThrowingResult& r) {
+  ThrowSetup fine = setup;
+  fine.steps_per_stage = 16 * setup.steps_per_stage;
+  std::vector<ThrowSample> fine_samples;
+  {
+    const ProfileEvaluation ef = simulate_profile(fine, answer.profile, &fine_samples);
+    r.rk4_energy_error = std::abs(ef.energy - answer.evaluation.energy) / std::abs(ef.energy);
+    r.rk4_theta3_error = std::abs(ef.theta3_final - answer.evaluation.theta3_final);
+  }
+  open_loop_replay(setup, spec, answer, fine_samples, r);
+}
+}  // namespace
+
 ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progress) {
   const auto t_start = std::chrono::steady_clock::now();
   ThrowingResult r;
@@ -214,52 +315,11 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   }
 
   r.initial_feasible = r.initial.evaluation.feasible;
-
-  // IDP's feasible start (the reference): eq. 8 itself, or the first profile twice the
-  // back-off inside every limit on the descent of the violation from eq. 8. That point moves
-  // with the last digit of an input (a first feasible point, not an optimum), so no saving
-  // is quoted against it: the saving is against eq. 8, the paper's comparison
   NloptSettings ns = spec.nlopt;
   ns.threads = spec.threads;
   ns.backoff = spec.backoff;
-  VelocityProfile start = initial;
-  if (r.initial_feasible) {
-    r.reference_kind = "eq8";
-    r.reference = r.initial;
-  } else {
-    if (progress) progress(0.02, "repair of eq. 8 (IDP's feasible start)");
-    r.repair_run = run_nlopt(setup, initial, delta, ns, Objective::kViolation);
-    if (r.repair_run.feasible) {
-      r.reference_kind = "repaired";
-      start = r.repair_run.best;
-      r.reference = record_motion(setup, spec, start);
-    } else {
-      r.reference_kind = "none";
-      r.reference = r.initial;
-    }
-  }
-
-  // iterative dynamic programming from the reference, several seeds
-  IdpSettings is = spec.idp;
-  is.threads = spec.threads;
-  is.backoff = spec.backoff;
-  {
-    const auto t0 = std::chrono::steady_clock::now();
-    r.idp_seeds = run_idp_seeds(setup, start, delta, is, [&](double f, std::string_view s) {
-      if (progress) progress(0.05 + 0.35 * f, s);
-    });
-    r.idp_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  }
-  for (size_t k = 0; k < r.idp_seeds.size(); ++k)
-    if (better_profile(r.idp_seeds[k].evaluation, r.idp_seeds[r.idp_best_seed].evaluation))
-      r.idp_best_seed = static_cast<int>(k);
-  r.idp_run = r.idp_seeds[r.idp_best_seed];
-  r.idp = record_motion(setup, spec, r.idp_run.best);
-  r.idp_check = verify_profile(setup, r.idp_run.best, spec.check_refinement);
-  r.idp_optimality = first_order_optimality(setup, r.idp_run.best, delta, ns);
-  // IDP converged: every seed stopped on its rule, and its answer is first-order stationary
-  r.idp_converged = r.idp_optimality.kkt_residual <= ns.kkt_tolerance;
-  for (const IdpResult& sd : r.idp_seeds) r.idp_converged &= sd.converged;
+  const VelocityProfile start = feasible_start(setup, spec, initial, delta, ns, progress, r);
+  solve_by_idp(setup, spec, start, delta, ns, progress, r);
 
   // the same constrained problem by SLSQP from several starts; the answer is the lowest
   // converged local optimum that the re-check finds feasible
@@ -274,46 +334,7 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   const bool slsqp_feasible = r.nlopt_ran && r.nlopt_run.feasible && r.nlopt_check.feasible;
   const bool idp_feasible = r.idp.evaluation.feasible && r.idp_check.feasible;
   r.answer = slsqp_feasible || (r.nlopt_ran && !idp_feasible) ? "slsqp" : "idp";
-  const ThrowMotion& answer = r.answer == "slsqp" ? r.nlopt : r.idp;
-
-  // integration accuracy: the answer with 16 times the rk4 steps
-  ThrowSetup fine = setup;
-  fine.steps_per_stage = 16 * setup.steps_per_stage;
-  std::vector<ThrowSample> fine_samples;
-  {
-    const ProfileEvaluation ef = simulate_profile(fine, answer.profile, &fine_samples);
-    r.rk4_energy_error = std::abs(ef.energy - answer.evaluation.energy) / std::abs(ef.energy);
-    r.rk4_theta3_error = std::abs(ef.theta3_final - answer.evaluation.theta3_final);
-  }
-  // the answer's voltages (sampled densely, from the 16x simulation) applied open loop to
-  // the model with all four joints free, compared with the planned angles of that same
-  // simulation (the rk4 error of the coarse plan is checked apart, above)
-  {
-    const VoltageHistory vh = voltage_history(fine_samples);
-    std::vector<double> times;
-    for (const ThrowSample& x : fine_samples)
-      if (times.empty() || x.t > times.back()) times.push_back(x.t);
-    core::JointVector q0(4), qd0 = core::JointVector::Zero(4);
-    q0 << spec.start, spec.theta3_start, spec.theta4_start;
-    try {
-      const ReplayResult rr = replay_voltages(setup, vh, q0, qd0, times, 1e-10, 1e-12, 1e-4);
-      size_t j = 0;
-      for (const ThrowSample& x : fine_samples) {
-        while (j + 1 < rr.t.size() && rr.t[j] < x.t - 1e-12) ++j;
-        r.replay_error = std::max(r.replay_error, (rr.q[j] - x.q).cwiseAbs().maxCoeff());
-      }
-      // keep the replay at the coarse series' times for the report
-      j = 0;
-      for (double t : answer.series.t) {
-        while (j + 1 < rr.t.size() && rr.t[j] < t - 1e-12) ++j;
-        if (!r.replay_t.empty() && r.replay_t.back() == rr.t[j]) continue;
-        r.replay_t.push_back(rr.t[j]);
-        r.replay_q.push_back(rr.q[j]);
-      }
-    } catch (const std::runtime_error& e) {
-      r.replay_error = INFINITY;
-    }
-  }
+  check_answer(setup, spec, r.answer == "slsqp" ? r.nlopt : r.idp, r);
 
   // ballistic flight of the ball after release
   auto flight_of = [&](const ThrowMotion& m) {

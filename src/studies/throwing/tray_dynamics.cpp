@@ -140,6 +140,8 @@ TrayDynamics::TrayDynamics(const core::PlanarChain& chain) : chain_(chain) {
     bodies_[n_bodies_++] = {p.link, p.x, p.y, p.mass, 0.0};
 }
 
+// (over 60 lines, kept whole: the hot mixed forward/inverse dynamics of every simulation
+// step, written as one pass through the equations; throwing_bench measures it)
 core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::JointVector& qd,
                                         const core::JointVector& qdd_active, double ball_mass,
                                         Eigen::Vector2d& force) const {

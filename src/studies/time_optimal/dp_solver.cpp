@@ -1,6 +1,7 @@
 // dynamic programming (Ozkipcak 1994) and Box's Complex on the same discretisation
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/opt/box_complex.hpp"
@@ -287,91 +288,94 @@ core::opt::DpSolution pruned_recursion(const std::vector<int>& levels, Time&& ti
 }  // namespace
 
 namespace {
-SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState state,
-                bool reference) {
+// the DP with the path speed s' as its state: s' levels on [0, MVC(s_k)] at each node
+// (over 60 lines, kept whole: the band, cost and limit lambdas share the state grid and
+// are passed to the recursion as they are)
+SolverOutput dp_path_speed(const Problem& pb, const Discretisation& d,
+                           const std::vector<int>& count, int segments, int levels, int checks,
+                           bool reference) {
   SolverOutput out;
-  const Discretisation d = discretise(pb, segments, checks);
   const int n = static_cast<int>(d.nodes.size());
-  std::vector<int> count(n);
-  for (int k = 0; k < n; ++k) count[k] = d.rest[k] ? 1 : levels;
-
-  if (state == DpState::kPathSpeed) {
-    // s' levels on [0, MVC(s_k)] (the state grid of the source's step 1, per node)
-    std::vector<std::vector<double>> sd(n), x(n);
-    for (int k = 0; k < n; ++k) {
-      for (int i = 0; i < count[k]; ++i) {
-        const double v = count[k] == 1 ? 0.0 : d.mvc[k] * i / (count[k] - 1);
-        sd[k].push_back(v);
-        x[k].push_back(v * v);
-      }
+  // the state grid of the source's step 1, per node
+  std::vector<std::vector<double>> sd(n), x(n);
+  for (int k = 0; k < n; ++k) {
+    for (int i = 0; i < count[k]; ++i) {
+      const double v = count[k] == 1 ? 0.0 : d.mvc[k] * i / (count[k] - 1);
+      sd[k].push_back(v);
+      x[k].push_back(v * v);
     }
-    // the limits at the check points of interval k as rows in (x_k, u): from x_k, only
-    // the u in u_range(rows, x_k) can meet them, i.e. x_k+1 = x_k + 2 ds u in a band
-    std::vector<std::vector<Row>> rows(n - 1);
-    for (int k = 0; k + 1 < n; ++k) {
-      const double ds = d.nodes[k + 1] - d.nodes[k];
-      for (int m = 0; m <= checks; ++m)
-        append_rows(d.pts[k][m], pb.limits, 2.0 * ds * m / checks, m, &rows[k]);
-    }
-    const auto band = [&](int k, int i) {
-      const double x0 = x[k][i], ds = d.nodes[k + 1] - d.nodes[k];
-      for (const Row& r : rows[k])
-        if (r.cu == 0.0 && (r.cx * x0 < r.lo || r.cx * x0 > r.hi)) return std::pair<int, int>(0, 0);
-      const URange ur = u_range(rows[k], x0);
-      if (ur.lo > ur.hi) return std::pair<int, int>(0, 0);
-      const std::vector<double>& next = x[k + 1];
-      // one level of slack on each side: the cost function decides exactly
-      const double lo = x0 + 2 * ds * ur.lo, hi = x0 + 2 * ds * ur.hi;
-      const int first =
-          static_cast<int>(std::lower_bound(next.begin(), next.end(), lo) - next.begin()) - 1;
-      const int last =
-          static_cast<int>(std::upper_bound(next.begin(), next.end(), hi) - next.begin()) + 1;
-      return std::pair<int, int>(first, last);
-    };
-    const core::opt::DpSolution sol =
-        reference
-            ? core::opt::solve_staged_dp(
-                  count,
-                  [&](int k, int i, int j) {
-                    return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
-                  },
-                  band)
-            : pruned_recursion(
-                  count,
-                  [&](int k, int i, int j) {
-                    const double v = sd[k][i] + sd[k + 1][j];
-                    return v <= 0 ? kInf : 2 * (d.nodes[k + 1] - d.nodes[k]) / v;
-                  },
-                  [&](int k, int i, int j) {
-                    return segment_within_limits(d.seg[k], pb.limits, x[k][i], x[k + 1][j]);
-                  },
-                  band, [](int) { return true; });
-    out.evaluations = sol.evaluations;
-    if (!sol.feasible()) {
-      out.message =
-          "no sequence of the " + std::to_string(levels) +
-          " velocity levels per node meets every limit on " + std::to_string(segments) +
-          " segments: " +
-          dp_failure(
-              pb, d, count,
-              [&](int k, int i, int j) {
-                return std::isfinite(
-                    path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]));
-              },
-              [&](int k, int i, int j) { return path_speed_use(pb, d, k, x[k][i], x[k + 1][j]); },
-              [&](int k, int i, int j) { return sd[k][i] + sd[k + 1][j] <= 0; }, band) +
-          "; more levels or segments may help";
-      return out;
-    }
-    out.profile.law = SegmentLaw::kPathAcceleration;
-    out.profile.s = d.nodes;
-    for (int k = 0; k < n; ++k) out.profile.sd.push_back(sd[k][sol.states[k]]);
-    out.duration = sol.cost;
-    out.solved = true;
+  }
+  // the limits at the check points of interval k as rows in (x_k, u): from x_k, only
+  // the u in u_range(rows, x_k) can meet them, i.e. x_k+1 = x_k + 2 ds u in a band
+  std::vector<std::vector<Row>> rows(n - 1);
+  for (int k = 0; k + 1 < n; ++k) {
+    const double ds = d.nodes[k + 1] - d.nodes[k];
+    for (int m = 0; m <= checks; ++m)
+      append_rows(d.pts[k][m], pb.limits, 2.0 * ds * m / checks, m, &rows[k]);
+  }
+  const auto band = [&](int k, int i) {
+    const double x0 = x[k][i], ds = d.nodes[k + 1] - d.nodes[k];
+    for (const Row& r : rows[k])
+      if (r.cu == 0.0 && (r.cx * x0 < r.lo || r.cx * x0 > r.hi)) return std::pair<int, int>(0, 0);
+    const URange ur = u_range(rows[k], x0);
+    if (ur.lo > ur.hi) return std::pair<int, int>(0, 0);
+    const std::vector<double>& next = x[k + 1];
+    // one level of slack on each side: the cost function decides exactly
+    const double lo = x0 + 2 * ds * ur.lo, hi = x0 + 2 * ds * ur.hi;
+    const int first =
+        static_cast<int>(std::lower_bound(next.begin(), next.end(), lo) - next.begin()) - 1;
+    const int last =
+        static_cast<int>(std::upper_bound(next.begin(), next.end(), hi) - next.begin()) + 1;
+    return std::pair<int, int>(first, last);
+  };
+  const core::opt::DpSolution sol =
+      reference
+          ? core::opt::solve_staged_dp(
+                count,
+                [&](int k, int i, int j) {
+                  return path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]);
+                },
+                band)
+          : pruned_recursion(
+                count,
+                [&](int k, int i, int j) {
+                  const double v = sd[k][i] + sd[k + 1][j];
+                  return v <= 0 ? kInf : 2 * (d.nodes[k + 1] - d.nodes[k]) / v;
+                },
+                [&](int k, int i, int j) {
+                  return segment_within_limits(d.seg[k], pb.limits, x[k][i], x[k + 1][j]);
+                },
+                band, [](int) { return true; });
+  out.evaluations = sol.evaluations;
+  if (!sol.feasible()) {
+    out.message =
+        "no sequence of the " + std::to_string(levels) +
+        " velocity levels per node meets every limit on " + std::to_string(segments) +
+        " segments: " +
+        dp_failure(
+            pb, d, count,
+            [&](int k, int i, int j) {
+              return std::isfinite(
+                  path_speed_cost(pb, d, k, x[k][i], x[k + 1][j], sd[k][i], sd[k + 1][j]));
+            },
+            [&](int k, int i, int j) { return path_speed_use(pb, d, k, x[k][i], x[k + 1][j]); },
+            [&](int k, int i, int j) { return sd[k][i] + sd[k + 1][j] <= 0; }, band) +
+        "; more levels or segments may help";
     return out;
   }
+  out.profile.law = SegmentLaw::kPathAcceleration;
+  out.profile.s = d.nodes;
+  for (int k = 0; k < n; ++k) out.profile.sd.push_back(sd[k][sol.states[k]]);
+  out.duration = sol.cost;
+  out.solved = true;
+  return out;
+}
 
-  // joint-1 velocity state: q1 must move one way along the whole path
+// the direction joint 1 moves in along the whole path (+1 or -1); none, with `message`
+// set, when it reverses or stops (dq1/ds = 0), where the joint-1 velocity state breaks down
+std::optional<double> joint1_direction(const Problem& pb, const Discretisation& d, int checks,
+                                       std::string* message) {
+  const int n = static_cast<int>(d.nodes.size());
   double sign = 0;
   for (int k = 0; k + 1 < n; ++k) {
     for (int m = 0; m <= checks; ++m) {
@@ -380,14 +384,28 @@ SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState
       const double sg = std::abs(v) < 1e-9 ? 0.0 : (v > 0 ? 1.0 : -1.0);
       if (k == 0 && m == 0) sign = sg;
       if (sg == 0 || sg != sign) {
-        out.message = "joint 1 reverses (dq1/ds = 0) near " + where(pb, jp.s) +
-                      ": the source's joint-1 velocity state cannot describe this path (its "
-                      "segment time 2 dq1 / (q1'(k) + q1'(k+1)) breaks down); the path-speed "
-                      "state s' can";
-        return out;
+        *message = "joint 1 reverses (dq1/ds = 0) near " + where(pb, jp.s) +
+                   ": the source's joint-1 velocity state cannot describe this path (its "
+                   "segment time 2 dq1 / (q1'(k) + q1'(k+1)) breaks down); the path-speed "
+                   "state s' can";
+        return std::nullopt;
       }
     }
   }
+  return sign;
+}
+
+// the DP with the joint-1 velocity q1' as its state (the source's): q1' levels on
+// [0, qd_max_1] in the direction of motion (over 60 lines, kept whole: the use, cost and
+// bound lambdas share the state grid and are passed to the recursion as they are)
+SolverOutput dp_joint1(const Problem& pb, const Discretisation& d, const std::vector<int>& count,
+                       int segments, int levels, int checks, bool reference) {
+  SolverOutput out;
+  const int n = static_cast<int>(d.nodes.size());
+  // q1 must move one way along the whole path
+  const std::optional<double> direction = joint1_direction(pb, d, checks, &out.message);
+  if (!direction) return out;
+  const double sign = *direction;
   std::vector<double> q1(n), dq1(n);
   for (int k = 0; k < n; ++k) {
     const JointPoint& jp = k + 1 < n ? d.pts[k][0] : d.pts[k - 1][checks];
@@ -468,6 +486,17 @@ SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState
   return out;
 }
 
+SolverOutput dp(const Problem& pb, int segments, int levels, int checks, DpState state,
+                bool reference) {
+  const Discretisation d = discretise(pb, segments, checks);
+  const int n = static_cast<int>(d.nodes.size());
+  std::vector<int> count(n);
+  for (int k = 0; k < n; ++k) count[k] = d.rest[k] ? 1 : levels;
+  return state == DpState::kPathSpeed
+             ? dp_path_speed(pb, d, count, segments, levels, checks, reference)
+             : dp_joint1(pb, d, count, segments, levels, checks, reference);
+}
+
 }  // namespace
 
 SolverOutput solve_dp(const Problem& pb, int segments, int levels, int checks, DpState state) {
@@ -478,6 +507,78 @@ SolverOutput solve_dp_reference(const Problem& pb, int segments, int levels, int
                                 DpState state) {
   return dp(pb, segments, levels, checks, state, true);
 }
+
+namespace {
+// why the Complex method has no start: the first segment the slowest crawl tried (speeds
+// sd, at most `top`, after `halvings` halvings) cannot cross, and its worst limit
+std::string no_crawl_message(const Problem& pb, const Discretisation& d,
+                             const std::vector<double>& sd, double top, int halvings) {
+  const int n = static_cast<int>(d.nodes.size());
+  std::ostringstream os;
+  os.precision(3);
+  os << "the Complex method found no feasible crawl to start from: even at " << top << " "
+     << pb.path.unit() << "/s at most (2^-" << std::min(halvings, 60) + 1
+     << " of the maximum velocity curve)";
+  for (int k = 0; k + 1 < n; ++k) {
+    if (std::isfinite(
+            path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1])))
+      continue;
+    if (sd[k] + sd[k + 1] <= 0) {
+      // the maximum velocity curve is 0 at both ends: no speed, not even rest, is allowed
+      const Use at_rest = path_speed_use(pb, d, k, 0.0, 0.0);
+      os << ", " << segment_text(pb, d, k) << " allows no speed";
+      if (at_rest.excess > 0)
+        os << ": even at rest it breaks " << use_text(at_rest, pb.limits, pb.path.unit());
+    } else {
+      os << ", " << segment_text(pb, d, k) << " breaks "
+         << use_text(path_speed_use(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1]), pb.limits,
+                     pb.path.unit());
+    }
+    break;
+  }
+  return os.str();
+}
+
+// Box's Complex method on the node speeds in [lo, hi] from z0, minimising `time` (infinite
+// where a limit breaks). A complex collapses onto the constraint boundary it first meets (Box
+// 1965 restarts it): restarted from the best point with fresh random points until a restart
+// gains nothing; the evaluations, iterations and restarts are added to out.
+template <typename Time>
+core::opt::ComplexResult restarted_complex(const Time& time, const Eigen::VectorXd& lo,
+                                           const Eigen::VectorXd& hi, Eigen::VectorXd z0,
+                                           const ComplexSettings& settings, SolverOutput& out) {
+  core::opt::ComplexOptions opt;
+  opt.max_iterations = settings.max_iterations;
+  opt.tolerance = settings.tolerance;
+  opt.seed = settings.seed;
+  core::opt::ComplexResult r;
+  for (int restart = 0; restart <= kComplexRestarts; ++restart) {
+    opt.seed = settings.seed + restart;
+    // (box_complex asks whether a point is feasible and then its time: the time of the last
+    // point asked is kept, the same number)
+    Eigen::VectorXd last_z;
+    double last_t = kInf;
+    const auto timed = [&](const Eigen::VectorXd& z) {
+      if (last_z.size() != z.size() || last_z != z) {
+        last_t = time(z);
+        last_z = z;
+      }
+      return last_t;
+    };
+    const core::opt::ComplexResult next = core::opt::box_complex(
+        [&](const Eigen::VectorXd& z) { return timed(z); },
+        [&](const Eigen::VectorXd& z) { return std::isfinite(timed(z)); }, lo, hi, z0, opt);
+    out.evaluations += next.evaluations;
+    out.iterations += next.iterations;
+    const bool gained = restart == 0 || next.f < r.f * (1 - kRestartGain);
+    if (restart == 0 || next.f < r.f) r = next;
+    out.restarts = restart;
+    if (!gained) break;
+    z0 = r.x;
+  }
+  return r;
+}
+}  // namespace
 
 SolverOutput solve_complex(const Problem& pb, int segments, int checks,
                            const ComplexSettings& settings) {
@@ -517,64 +618,11 @@ SolverOutput solve_complex(const Problem& pb, int segments, int checks,
   int halvings = 0;
   while (!std::isfinite(total_time(speeds(z0))) && halvings++ < 60) z0 *= 0.5;
   if (!std::isfinite(total_time(speeds(z0)))) {
-    // name the first segment the slowest crawl tried cannot cross, and its worst limit
-    const std::vector<double> sd = speeds(z0);
-    std::ostringstream os;
-    os.precision(3);
-    os << "the Complex method found no feasible crawl to start from: even at " << z0.maxCoeff()
-       << " " << pb.path.unit() << "/s at most (2^-" << std::min(halvings, 60) + 1
-       << " of the maximum velocity curve)";
-    for (int k = 0; k + 1 < n; ++k) {
-      if (std::isfinite(
-              path_speed_cost(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1], sd[k], sd[k + 1])))
-        continue;
-      if (sd[k] + sd[k + 1] <= 0) {
-        // the maximum velocity curve is 0 at both ends: no speed, not even rest, is allowed
-        const Use at_rest = path_speed_use(pb, d, k, 0.0, 0.0);
-        os << ", " << segment_text(pb, d, k) << " allows no speed";
-        if (at_rest.excess > 0)
-          os << ": even at rest it breaks " << use_text(at_rest, pb.limits, pb.path.unit());
-      } else {
-        os << ", " << segment_text(pb, d, k) << " breaks "
-           << use_text(path_speed_use(pb, d, k, sd[k] * sd[k], sd[k + 1] * sd[k + 1]), pb.limits,
-                       pb.path.unit());
-      }
-      break;
-    }
-    out.message = os.str();
+    out.message = no_crawl_message(pb, d, speeds(z0), z0.maxCoeff(), halvings);
     return out;
   }
-  core::opt::ComplexOptions opt;
-  opt.max_iterations = settings.max_iterations;
-  opt.tolerance = settings.tolerance;
-  opt.seed = settings.seed;
-  // a complex collapses onto the constraint boundary it first meets (Box 1965 restarts it):
-  // restart from the best point with fresh random points until a restart gains nothing
-  core::opt::ComplexResult r;
-  for (int restart = 0; restart <= kComplexRestarts; ++restart) {
-    opt.seed = settings.seed + restart;
-    // (box_complex asks whether a point is feasible and then its time: the time of the last
-    // point asked is kept, the same number)
-    Eigen::VectorXd last_z;
-    double last_t = kInf;
-    const auto timed = [&](const Eigen::VectorXd& z) {
-      if (last_z.size() != z.size() || last_z != z) {
-        last_t = total_time(speeds(z));
-        last_z = z;
-      }
-      return last_t;
-    };
-    const core::opt::ComplexResult next = core::opt::box_complex(
-        [&](const Eigen::VectorXd& z) { return timed(z); },
-        [&](const Eigen::VectorXd& z) { return std::isfinite(timed(z)); }, lo, hi, z0, opt);
-    out.evaluations += next.evaluations;
-    out.iterations += next.iterations;
-    const bool gained = restart == 0 || next.f < r.f * (1 - kRestartGain);
-    if (restart == 0 || next.f < r.f) r = next;
-    out.restarts = restart;
-    if (!gained) break;
-    z0 = r.x;
-  }
+  const core::opt::ComplexResult r = restarted_complex(
+      [&](const Eigen::VectorXd& z) { return total_time(speeds(z)); }, lo, hi, z0, settings, out);
   out.profile.law = SegmentLaw::kPathAcceleration;
   out.profile.s = d.nodes;
   out.profile.sd = speeds(r.x);

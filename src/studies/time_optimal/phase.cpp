@@ -58,6 +58,8 @@ void append_rows(const JointPoint& jp, const Limits& lim, double shift, int poin
   }
 }
 
+// (over 60 lines, kept whole: one pass over the rows of a two-variable LP, each case of a
+// row's signs beside the others)
 XInterval feasible_x(const std::vector<Row>& rows) {
   XInterval out;
   Line lower[64], upper[64];

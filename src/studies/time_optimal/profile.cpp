@@ -331,6 +331,8 @@ void scan_block(const TwoLinkDynamics& dyn, const TipRateArrays& ra, const doubl
 }
 }  // namespace
 
+// (over 60 lines, kept whole: the plain reference the fast two-link resample is tested
+// against, one loop over the points as the solvers' limits read)
 void resample_reference(const Problem& problem, const Profile& pr, int per_interval, int keep,
                         MotionSamples* out, Violation* viol, std::vector<double>* node_t,
                         std::vector<double>* interval_worst) {
@@ -423,41 +425,112 @@ void resample_reference(const Problem& problem, const Profile& pr, int per_inter
 }
 
 namespace {
+// the thread's scratch arrays of resample_two_link, kept from call to call
+struct TwoLinkBuffers {
+  TipRateArrays ra;
+  std::vector<double> arrays[3 + 3 * 2];  // xs, us, sds, then the values of each limit
+  std::vector<double> s_at;               // (one interval's arc lengths and path points)
+  std::vector<PathPoint> pp_at;
+  std::vector<double> peaks;
+};
+TwoLinkBuffers& two_link_buffers() {
+  thread_local TwoLinkBuffers b;
+  return b;
+}
+
 // resample of a constant-s'' profile on a 2-link tip path: the same samples and the same
 // largest uses as resample_reference. The scan over every point takes the joint rates
 // without trigonometric functions (TipRateEvaluator) and the closed-form inverse dynamics
 // (two_link_dynamics.hpp), both equal to the reference to rounding; every point within
 // 1e-12 of a limit's largest use is a candidate, and the candidates and the kept samples
-// are evaluated again as resample_reference does (joint_point, core's inverse dynamics)
-void resample_two_link(const Problem& problem, const Profile& pr, int per_interval, int keep,
-                       MotionSamples* out, Violation* viol, std::vector<double>* node_t,
-                       std::vector<double>* interval_worst) {
-  const int K = static_cast<int>(pr.s.size()) - 1;
-  const int total = K * per_interval + 1;
-  const int stride = std::max(1, total / std::max(1, keep));
-  *out = MotionSamples{};
-  constexpr int nj = 2;
-  std::vector<core::JointVector> q, qd, qdd, tau;
-  *viol = Violation{};
-  viol->worst = -1;
-  std::vector<double> nt(pr.s.size(), 0.0);
-  if (interval_worst) interval_worst->assign(K, -1.0);
-  const PointSource source(problem);
-  const TipRateEvaluator rates(problem.chain, problem.path.tip(), problem.configuration);
-  const TwoLinkDynamics dyn = make_two_link_dynamics(problem.chain);
-  const int kinds = problem.limits.acceleration ? 3 : 2;
-  double lim[3][nj];
-  for (int kind = 0; kind < kinds; ++kind)
-    for (int j = 0; j < nj; ++j) lim[kind][j] = problem.limits.of(static_cast<LimitKind>(kind), j);
-  constexpr double kRounding = 1e-12;
+// are evaluated again as resample_reference does (joint_point, core's inverse dynamics).
+// Stages: per block of intervals, the path points and local states, the rates, the scan,
+// the peaks and the kept samples; then the candidates and their re-check.
+struct TwoLinkResample {
+  static constexpr int nj = 2;
+  static constexpr double kRounding = 1e-12;
+  // the scan in structure-of-arrays form: point i = k per_interval + m (m = 1..per_interval,
+  // and m = 0 in the first interval), in blocks of intervals whose arrays stay in cache
+  static constexpr int kBlock = 32;
   struct Candidate {
     int k, m;
     double r;
   };
+  // the reference state at point m of interval k, as resample_reference computes it
+  struct Reference {
+    JointPoint jp;
+    double sd, u, dt;
+    core::JointVector qd, qdd;
+  };
+
+  const Problem& problem;
+  const Profile& pr;
+  const int per_interval;
+  const int K;
+  const int total;
+  const int stride;
+  MotionSamples* out;
+  Violation* viol;
+  std::vector<double>* interval_worst;
+  std::vector<core::JointVector> q, qd, qdd, tau;
+  std::vector<double> nt;
+  const PointSource source;
+  const TipRateEvaluator rates;
+  const TwoLinkDynamics dyn;
+  const int kinds;
+  double lim[3][nj];
   std::vector<Candidate> cand[3][nj];
+  // (plain references: one thread-local address computation per call)
+  TwoLinkBuffers& buf;
+  TipRateArrays& ra;
+  std::vector<double>& xs;
+  std::vector<double>& us;
+  std::vector<double>& sds;
+  // the values of the limits at every point of the profile, and their largest use in each
+  // interval (peak[(kind nj + j) K + k])
+  std::vector<double>* val[3];
+  std::vector<double>& peaks;
+  double t_node = 0;
+
+  TwoLinkResample(const Problem& problem_, const Profile& pr_, int per_interval_, int keep,
+                  MotionSamples* out_, Violation* viol_, std::vector<double>* interval_worst_)
+      : problem(problem_),
+        pr(pr_),
+        per_interval(per_interval_),
+        K(static_cast<int>(pr_.s.size()) - 1),
+        total(K * per_interval_ + 1),
+        stride(std::max(1, total / std::max(1, keep))),
+        out(out_),
+        viol(viol_),
+        interval_worst(interval_worst_),
+        nt(pr_.s.size(), 0.0),
+        source(problem_),
+        rates(problem_.chain, problem_.path.tip(), problem_.configuration),
+        dyn(make_two_link_dynamics(problem_.chain)),
+        kinds(problem_.limits.acceleration ? 3 : 2),
+        buf(two_link_buffers()),
+        ra(buf.ra),
+        xs(buf.arrays[0]),
+        us(buf.arrays[1]),
+        sds(buf.arrays[2]),
+        val{buf.arrays + 3, buf.arrays + 3 + nj, buf.arrays + 3 + 2 * nj},
+        peaks(buf.peaks) {
+    *out = MotionSamples{};
+    *viol = Violation{};
+    viol->worst = -1;
+    if (interval_worst) interval_worst->assign(K, -1.0);
+    for (int kind = 0; kind < kinds; ++kind)
+      for (int j = 0; j < nj; ++j)
+        lim[kind][j] = problem.limits.of(static_cast<LimitKind>(kind), j);
+    for (int kind = 0; kind < 3; ++kind)
+      for (int j = 0; j < nj; ++j) val[kind][j].resize(static_cast<size_t>(total));
+    peaks.assign(static_cast<size_t>(kinds) * nj * K, 0.0);
+  }
+
+  double& peak(int kind, int j, int k) { return peaks[static_cast<size_t>(kind * nj + j) * K + k]; }
 
   // where point m of interval k lies: s and the side (the interval's end from the left)
-  const auto where = [&](int k, int m, double* s) {
+  bool where(int k, int m, double* s) const {
     if (m == 0) {
       *s = pr.s[k];
       return false;
@@ -468,14 +541,9 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     }
     *s = pr.s[k] + static_cast<double>(m) / per_interval * (pr.s[k + 1] - pr.s[k]);
     return false;
-  };
-  // the reference state at point m of interval k, as resample_reference computes it
-  struct Reference {
-    JointPoint jp;
-    double sd, u, dt;
-    core::JointVector qd, qdd;
-  };
-  const auto reference = [&](int k, int m) {
+  }
+
+  Reference reference(int k, int m) const {
     Reference r;
     double s;
     const bool left = where(k, m, &s);
@@ -487,84 +555,57 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
     r.qd = r.jp.dq * r.sd;
     r.qdd = r.jp.dq * ls.u + r.jp.ddq * ls.x;
     return r;
-  };
+  }
 
-  // the scan in structure-of-arrays form: point i = k per_interval + m (m = 1..per_interval,
-  // and m = 0 in the first interval); the path points and local states point by point (the
-  // path may be a spline), then the rates, torques and uses in loops without branches
-  // (in blocks of intervals whose arrays stay in cache)
-  constexpr int kBlock = 32;
-  thread_local TipRateArrays ra_buffer;
-  thread_local std::vector<double> buffers[3 + 3 * nj];
-  // (plain references: one thread-local address computation per call)
-  TipRateArrays& ra = ra_buffer;
-  std::vector<double>& xs = buffers[0];
-  std::vector<double>& us = buffers[1];
-  std::vector<double>& sds = buffers[2];
-  // the values of the limits at every point of the profile, and their largest use in each
-  // interval (peak[(kind nj + j) K + k])
-  std::vector<double>* val[3] = {buffers + 3, buffers + 3 + nj, buffers + 3 + 2 * nj};
-  for (int kind = 0; kind < 3; ++kind)
-    for (int j = 0; j < nj; ++j) val[kind][j].resize(static_cast<size_t>(total));
-  thread_local std::vector<double> s_at;  // (one interval's arc lengths and path points)
-  thread_local std::vector<PathPoint> pp_at;
-  thread_local std::vector<double> peak_buffer;
-  std::vector<double>& peaks = peak_buffer;
-  peaks.assign(static_cast<size_t>(kinds) * nj * K, 0.0);
-  const auto peak = [&](int kind, int j, int k) -> double& {
-    return peaks[static_cast<size_t>(kind * nj + j) * K + k];
-  };
-  double t_node = 0;
-  for (int k0 = 0; k0 < K; k0 += kBlock) {
-    const int k1 = std::min(K, k0 + kBlock);
-    const size_t i0 = k0 == 0 ? 0 : static_cast<size_t>(k0) * per_interval + 1;
-    const size_t n = static_cast<size_t>(k1) * per_interval + 1 - i0;
-    ra.resize(n);
-    for (std::vector<double>* v : {&xs, &us, &sds}) v->resize(n);
-    {
-      const PathGeometry& path = problem.path.tip();
-      s_at.resize(static_cast<size_t>(per_interval + 1));
-      pp_at.resize(static_cast<size_t>(per_interval + 1));
-      for (int k = k0; k < k1; ++k) {
-        const int m0 = k == 0 ? 0 : 1;
-        // point m of interval k at index base + m of the block
-        const std::ptrdiff_t base =
-            static_cast<std::ptrdiff_t>(k) * per_interval - static_cast<std::ptrdiff_t>(i0);
-        // the points m < per_interval from the right, in increasing s; the last from the left
-        for (int m = m0; m < per_interval; ++m) where(k, m, &s_at[m]);
-        path.at_increasing(s_at.data() + m0, static_cast<size_t>(per_interval - m0),
-                           pp_at.data() + m0);
-        pp_at[per_interval] = path.at(pr.s[k + 1], true);
-        for (int m = m0; m <= per_interval; ++m) {
-          const size_t i = static_cast<size_t>(base + m);
-          const PathPoint& pp = pp_at[m];
-          ra.px[i] = pp.p.x();
-          ra.py[i] = pp.p.y();
-          ra.vx[i] = pp.dp.x();
-          ra.vy[i] = pp.dp.y();
-          ra.ax[i] = pp.ddp.x();
-          ra.ay[i] = pp.ddp.y();
-        }
-        // path_acceleration_state's operations, and s' = sqrt(max(0, x)) = sqrt(x) with
-        // x = max(0, ..), in a loop without branches
-        const double ds = pr.s[k + 1] - pr.s[k];
-        const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
-        const double u = (x1 - x0) / (2 * ds);
-        for (int m = m0; m <= per_interval; ++m) {
-          const size_t i = static_cast<size_t>(base + m);
-          const double theta = static_cast<double>(m) / per_interval;
-          const double x = std::max(0.0, x0 + theta * (x1 - x0));
-          const double root = std::sqrt(x);
-          xs[i] = x;
-          us[i] = u;
-          sds[i] = root;
-        }
+  // the path points and local states of intervals [k0, k1) point by point (the path may
+  // be a spline), from index i0
+  void path_points(int k0, int k1, size_t i0) {
+    const PathGeometry& path = problem.path.tip();
+    std::vector<double>& s_at = buf.s_at;
+    std::vector<PathPoint>& pp_at = buf.pp_at;
+    s_at.resize(static_cast<size_t>(per_interval + 1));
+    pp_at.resize(static_cast<size_t>(per_interval + 1));
+    for (int k = k0; k < k1; ++k) {
+      const int m0 = k == 0 ? 0 : 1;
+      // point m of interval k at index base + m of the block
+      const std::ptrdiff_t base =
+          static_cast<std::ptrdiff_t>(k) * per_interval - static_cast<std::ptrdiff_t>(i0);
+      // the points m < per_interval from the right, in increasing s; the last from the left
+      for (int m = m0; m < per_interval; ++m) where(k, m, &s_at[m]);
+      path.at_increasing(s_at.data() + m0, static_cast<size_t>(per_interval - m0),
+                         pp_at.data() + m0);
+      pp_at[per_interval] = path.at(pr.s[k + 1], true);
+      for (int m = m0; m <= per_interval; ++m) {
+        const size_t i = static_cast<size_t>(base + m);
+        const PathPoint& pp = pp_at[m];
+        ra.px[i] = pp.p.x();
+        ra.py[i] = pp.p.y();
+        ra.vx[i] = pp.dp.x();
+        ra.vy[i] = pp.dp.y();
+        ra.ax[i] = pp.ddp.x();
+        ra.ay[i] = pp.ddp.y();
+      }
+      // path_acceleration_state's operations, and s' = sqrt(max(0, x)) = sqrt(x) with
+      // x = max(0, ..), in a loop without branches
+      const double ds = pr.s[k + 1] - pr.s[k];
+      const double x0 = pr.sd[k] * pr.sd[k], x1 = pr.sd[k + 1] * pr.sd[k + 1];
+      const double u = (x1 - x0) / (2 * ds);
+      for (int m = m0; m <= per_interval; ++m) {
+        const size_t i = static_cast<size_t>(base + m);
+        const double theta = static_cast<double>(m) / per_interval;
+        const double x = std::max(0.0, x0 + theta * (x1 - x0));
+        const double root = std::sqrt(x);
+        xs[i] = x;
+        us[i] = u;
+        sds[i] = root;
       }
     }
-    rates.at_points(n, &ra);
+  }
+
+  // on the edge of the fast path: the reference point's rates
+  void edge_rates(size_t i0, size_t n) {
     for (size_t i = 0; i < n; ++i) {
       if (ra.ok[i]) continue;
-      // on the edge of the fast path: the reference point's rates
       const size_t gi = i0 + i;  // (the point's index in the whole profile)
       const int k = gi == 0 ? 0 : static_cast<int>((gi - 1) / per_interval);
       const int m = static_cast<int>(gi - static_cast<size_t>(k) * per_interval);
@@ -582,12 +623,12 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
       ra.c2[i] = std::cos(jp.q[1]);
       ra.s2[i] = std::sin(jp.q[1]);
     }
-    scan_block(dyn, ra, sds.data(), xs.data(), us.data(), n, val[0][0].data() + i0,
-               val[0][1].data() + i0, val[1][0].data() + i0, val[1][1].data() + i0,
-               val[2][0].data() + i0, val[2][1].data() + i0);
-    // the largest |value| of each limit in each interval of the block, over its points
-    // m = 1..per_interval (and m = 0 in the first); its use is the largest use, division
-    // by the limit being monotone (NaN is never the largest)
+  }
+
+  // the largest |value| of each limit in each interval of the block, over its points
+  // m = 1..per_interval (and m = 0 in the first); its use is the largest use, division
+  // by the limit being monotone (NaN is never the largest)
+  void block_peaks(int k0, int k1) {
     for (int kind = 0; kind < kinds; ++kind)
       for (int j = 0; j < nj; ++j) {
         const double* __restrict v = val[kind][j].data();
@@ -605,8 +646,11 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
         if (w > (*interval_worst)[k]) (*interval_worst)[k] = w;
       }
     }
-    // the times at the interval ends, and the kept samples (index % stride == 0, and the
-    // last point) evaluated as resample_reference does
+  }
+
+  // the times at the interval ends, and the kept samples (index % stride == 0, and the
+  // last point) evaluated as resample_reference does
+  void keep_samples(int k0, int k1) {
     for (int k = k0; k < k1; ++k) {
       const size_t first = k == 0 ? 0 : static_cast<size_t>(k) * per_interval + 1;
       const size_t last = static_cast<size_t>(k + 1) * per_interval;
@@ -630,6 +674,27 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
       nt[k + 1] = t_node;
     }
   }
+
+  // the scan over every point, block by block: rates, torques and uses in loops without
+  // branches
+  void scan() {
+    for (int k0 = 0; k0 < K; k0 += kBlock) {
+      const int k1 = std::min(K, k0 + kBlock);
+      const size_t i0 = k0 == 0 ? 0 : static_cast<size_t>(k0) * per_interval + 1;
+      const size_t n = static_cast<size_t>(k1) * per_interval + 1 - i0;
+      ra.resize(n);
+      for (std::vector<double>* v : {&xs, &us, &sds}) v->resize(n);
+      path_points(k0, k1, i0);
+      rates.at_points(n, &ra);
+      edge_rates(i0, n);
+      scan_block(dyn, ra, sds.data(), xs.data(), us.data(), n, val[0][0].data() + i0,
+                 val[0][1].data() + i0, val[1][0].data() + i0, val[1][1].data() + i0,
+                 val[2][0].data() + i0, val[2][1].data() + i0);
+      block_peaks(k0, k1);
+      keep_samples(k0, k1);
+    }
+  }
+
   // the candidates of each limit: the points a stream over them in order keeps, when it
   // keeps every point within kRounding of the largest use so far (and above 0) and drops
   // the ones below the largest use's floor when it rises. With a finite largest use B,
@@ -638,89 +703,103 @@ void resample_two_link(const Problem& problem, const Profile& pr, int per_interv
   // other point is below B's floor and was dropped or never kept. Only the intervals whose
   // largest use reaches B's floor are looked at. (An infinite use, of a zero limit, has no
   // floor: that limit is streamed point by point.)
-  for (int kind = 0; kind < kinds; ++kind) {
-    for (int j = 0; j < nj; ++j) {
-      const double* __restrict v = val[kind][j].data();
-      auto& c = cand[kind][j];
-      double B = 0;
-      for (int k = 0; k < K; ++k) B = std::max(B, peak(kind, j, k));
-      if (!(B > 0)) continue;
-      const auto point = [&](int k, int m) {
-        return use_ratio(v[static_cast<size_t>(k) * per_interval + m], lim[kind][j]);
-      };
-      if (std::isfinite(B)) {
-        const double floor = B - kRounding * std::max(1.0, B);
-        for (int k = 0; k < K; ++k) {
-          if (peak(kind, j, k) < floor) continue;
-          for (int m = k == 0 ? 0 : 1; m <= per_interval; ++m) {
-            const double r = point(k, m);
-            if (r >= floor && r > 0) c.push_back({k, m, r});
-          }
-        }
-        continue;
-      }
-      double b = 0;
+  void find_candidates(int kind, int j) {
+    const double* __restrict v = val[kind][j].data();
+    auto& c = cand[kind][j];
+    double B = 0;
+    for (int k = 0; k < K; ++k) B = std::max(B, peak(kind, j, k));
+    if (!(B > 0)) return;
+    const auto point = [&](int k, int m) {
+      return use_ratio(v[static_cast<size_t>(k) * per_interval + m], lim[kind][j]);
+    };
+    if (std::isfinite(B)) {
+      const double floor = B - kRounding * std::max(1.0, B);
       for (int k = 0; k < K; ++k) {
+        if (peak(kind, j, k) < floor) continue;
         for (int m = k == 0 ? 0 : 1; m <= per_interval; ++m) {
           const double r = point(k, m);
-          if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
-          if (r > b) {
-            const double floor = r - kRounding * std::max(1.0, r);
-            c.erase(
-                std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
-                c.end());
-            b = r;
-          }
-          c.push_back({k, m, r});
+          if (r >= floor && r > 0) c.push_back({k, m, r});
         }
+      }
+      return;
+    }
+    double b = 0;
+    for (int k = 0; k < K; ++k) {
+      for (int m = k == 0 ? 0 : 1; m <= per_interval; ++m) {
+        const double r = point(k, m);
+        if (r < b - kRounding * std::max(1.0, b) || !(r > 0)) continue;
+        if (r > b) {
+          const double floor = r - kRounding * std::max(1.0, r);
+          c.erase(
+              std::remove_if(c.begin(), c.end(), [&](const Candidate& e) { return e.r < floor; }),
+              c.end());
+          b = r;
+        }
+        c.push_back({k, m, r});
       }
     }
   }
+
   // every candidate again as resample_reference: the first point of each limit's largest
   // use; the overall worst is the first point (then kind, then joint) of the largest use
-  long worst_index = -1;
-  for (int kind = 0; kind < kinds; ++kind) {
-    for (int j = 0; j < nj; ++j) {
-      double r_best = 0;
-      int k_best = -1;
-      Reference at_best;
-      long i_best = -1;
-      for (const Candidate& c : cand[kind][j]) {
-        const Reference ref = reference(c.k, c.m);
-        double v;
-        if (kind == 0)
-          v = ref.qd[j];
-        else if (kind == 2)
-          v = ref.qdd[j];
-        else
-          v = core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd)[j];
-        const double r = use_ratio(v, lim[kind][j]);
-        if (r > r_best) {
-          r_best = r;
-          k_best = c.k;
-          at_best = ref;
-          i_best = static_cast<long>(c.k) * per_interval + c.m;
+  void recheck_candidates() {
+    long worst_index = -1;
+    for (int kind = 0; kind < kinds; ++kind) {
+      for (int j = 0; j < nj; ++j) {
+        double r_best = 0;
+        int k_best = -1;
+        Reference at_best;
+        long i_best = -1;
+        for (const Candidate& c : cand[kind][j]) {
+          const Reference ref = reference(c.k, c.m);
+          double v;
+          if (kind == 0)
+            v = ref.qd[j];
+          else if (kind == 2)
+            v = ref.qdd[j];
+          else
+            v = core::inverse_dynamics(problem.chain, ref.jp.q, ref.qd, ref.qdd)[j];
+          const double r = use_ratio(v, lim[kind][j]);
+          if (r > r_best) {
+            r_best = r;
+            k_best = c.k;
+            at_best = ref;
+            i_best = static_cast<long>(c.k) * per_interval + c.m;
+          }
         }
-      }
-      viol->ratio[kind][j] = r_best;
-      if (k_best < 0) continue;
-      if (r_best - 1 > viol->worst || (r_best - 1 == viol->worst && i_best < worst_index)) {
-        viol->worst = r_best - 1;
-        viol->joint = j;
-        viol->kind = static_cast<LimitKind>(kind);
-        viol->s = at_best.jp.s;
-        viol->t = nt[k_best] + at_best.dt;
-        viol->interval = k_best;
-        worst_index = i_best;
+        viol->ratio[kind][j] = r_best;
+        if (k_best < 0) continue;
+        if (r_best - 1 > viol->worst || (r_best - 1 == viol->worst && i_best < worst_index)) {
+          viol->worst = r_best - 1;
+          viol->joint = j;
+          viol->kind = static_cast<LimitKind>(kind);
+          viol->s = at_best.jp.s;
+          viol->t = nt[k_best] + at_best.dt;
+          viol->interval = k_best;
+          worst_index = i_best;
+        }
       }
     }
   }
-  if (node_t) *node_t = nt;
-  out->q = pack(nj, q);
-  out->qd = pack(nj, qd);
-  out->qdd = pack(nj, qdd);
-  out->tau = pack(nj, tau);
-  viol->text = violation_text(problem, *viol);
+
+  void run(std::vector<double>* node_t) {
+    scan();
+    for (int kind = 0; kind < kinds; ++kind)
+      for (int j = 0; j < nj; ++j) find_candidates(kind, j);
+    recheck_candidates();
+    if (node_t) *node_t = nt;
+    out->q = pack(nj, q);
+    out->qd = pack(nj, qd);
+    out->qdd = pack(nj, qdd);
+    out->tau = pack(nj, tau);
+    viol->text = violation_text(problem, *viol);
+  }
+};
+
+void resample_two_link(const Problem& problem, const Profile& pr, int per_interval, int keep,
+                       MotionSamples* out, Violation* viol, std::vector<double>* node_t,
+                       std::vector<double>* interval_worst) {
+  TwoLinkResample(problem, pr, per_interval, keep, out, viol, interval_worst).run(node_t);
 }
 }  // namespace
 

@@ -24,6 +24,8 @@ SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>&
   return solve_exact_reference(pb, nodes, std::vector<int>(nodes.size() - 1, checks));
 }
 
+// (over 60 lines, kept whole: the reference solve with tagged rows that words every failure,
+// the plain form the fast solve_exact is tested against)
 SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>& nodes,
                                    const std::vector<int>& checks_per) {
   SolverOutput out;
@@ -159,6 +161,8 @@ inline int add_rows(const double* p, int nj, const Limits& lim, double shift, Co
 struct XRange {
   double lo = 0, hi = kReachInf;
 };
+// (over 60 lines, kept whole: the exact solver's innermost loop over the rows of one
+// interval, per grid point of every solve)
 XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace& ws) {
   XRange out;
   const size_t most = 2 * static_cast<size_t>(n + 1);
@@ -391,14 +395,13 @@ void prefetch_points(const Problem& pb, const std::vector<double>& nodes,
   cache->merge();
 }
 
-SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
-                         const std::vector<int>& checks_per, ExactPointCache* cache) {
-  thread_local ExactWorkspace ws;
+namespace {
+// the workspace's row offsets (checks_per[k] + 1 points of nj kinds of limits per interval),
+// its arrays and the rest nodes (the ends and the path's stops)
+void size_workspace(const Problem& pb, const std::vector<double>& nodes,
+                    const std::vector<int>& checks_per, ExactWorkspace& ws) {
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
-  ARM_THROW_UNLESS(static_cast<int>(checks_per.size()) == N, "solve_exact: " << checks_per.size()
-                                                                             << " check counts for "
-                                                                             << N << " intervals");
   const int nj = pb.limits.joints();
   const int kinds = pb.limits.acceleration ? 3 : 2;
   ws.start.resize(N + 1);
@@ -419,9 +422,16 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
   for (double st : stops)
     for (int k = 0; k < n; ++k)
       if (nodes[k] == st) ws.rest[k] = 1;
+}
 
-  // rows of every interval in (x_i, u), limits at theta = m / checks (interval_points'
-  // points: the first point of an interval is the last of the one before, except at a stop)
+// rows of every interval in (x_i, u), limits at theta = m / checks (interval_points'
+// points: the first point of an interval is the last of the one before, except at a stop)
+void fill_rows(const Problem& pb, const std::vector<double>& nodes,
+               const std::vector<int>& checks_per, ExactPointCache* cache, ExactWorkspace& ws) {
+  const int N = static_cast<int>(nodes.size()) - 1;
+  const int nj = pb.limits.joints();
+  const int kinds = pb.limits.acceleration ? 3 : 2;
+  const auto& stops = pb.path.stops();
   const PointSource source(pb);
   if (cache) cache->reserve(ws.start[N] / (static_cast<size_t>(nj) * kinds));  // (every point)
   const JointPoint* prev = nullptr;    // the last point of the interval before, or its
@@ -460,29 +470,52 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
     ws.count[k] = c;
   }
   if (cache) cache->merge();
+}
 
-  // backward pass: controllable sets, K_N = {0}; on any failure the reference solver
-  // (the same numbers, with the rows' tags) words the message
+// backward pass: controllable sets, K_N = {0}; false on an empty set
+bool backward_pass(const std::vector<double>& nodes, ExactWorkspace& ws) {
+  const int N = static_cast<int>(nodes.size()) - 1;
   for (int k = N - 1; k >= 0; --k) {
     const double ds = nodes[k + 1] - nodes[k];
     const Coef reach{1.0, 2.0 * ds, ws.klo[k + 1], ws.khi[k + 1]};
     const XRange xi = feasible_x_fast(ws.rows.data() + ws.start[k], ws.count[k], reach, ws);
     const double tol = 1e-12 * std::max(1.0, std::abs(xi.hi));
-    if (xi.lo > xi.hi + tol || (ws.rest[k] && xi.lo > tol))
-      return solve_exact_reference(pb, nodes, checks_per);
+    if (xi.lo > xi.hi + tol || (ws.rest[k] && xi.lo > tol)) return false;
     ws.klo[k] = ws.rest[k] ? 0.0 : std::max(0.0, xi.lo);
     ws.khi[k] = ws.rest[k] ? 0.0 : std::max(ws.klo[k], xi.hi);
   }
+  return true;
+}
 
-  // forward pass: greedy largest u, x_0 = 0
+// forward pass: greedy largest u, x_0 = 0; false where the motion would stall
+bool forward_pass(const std::vector<double>& nodes, ExactWorkspace& ws) {
+  const int N = static_cast<int>(nodes.size()) - 1;
   for (int k = 0; k < N; ++k) {
     const double ds = nodes[k + 1] - nodes[k];
     const double uhi = u_hi_fast(ws.rows.data() + ws.start[k], ws.count[k], ws.x[k]);
     const double u = std::min(uhi, (ws.khi[k + 1] - ws.x[k]) / (2 * ds));
     const double x_next = std::clamp(ws.x[k] + 2 * ds * u, ws.klo[k + 1], ws.khi[k + 1]);
     ws.x[k + 1] = std::max(0.0, x_next);
-    if (ws.x[k] <= 0 && ws.x[k + 1] <= 0) return solve_exact_reference(pb, nodes, checks_per);
+    if (ws.x[k] <= 0 && ws.x[k + 1] <= 0) return false;
   }
+  return true;
+}
+}  // namespace
+
+SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
+                         const std::vector<int>& checks_per, ExactPointCache* cache) {
+  thread_local ExactWorkspace ws;
+  const int n = static_cast<int>(nodes.size());
+  const int N = n - 1;
+  ARM_THROW_UNLESS(static_cast<int>(checks_per.size()) == N, "solve_exact: " << checks_per.size()
+                                                                             << " check counts for "
+                                                                             << N << " intervals");
+  size_workspace(pb, nodes, checks_per, ws);
+  fill_rows(pb, nodes, checks_per, cache, ws);
+  // on any failure of the passes the reference solver (the same numbers, with the rows'
+  // tags) words the message
+  if (!backward_pass(nodes, ws) || !forward_pass(nodes, ws))
+    return solve_exact_reference(pb, nodes, checks_per);
   SolverOutput out;
   out.profile.law = SegmentLaw::kPathAcceleration;
   out.profile.s = nodes;

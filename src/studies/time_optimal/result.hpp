@@ -4,6 +4,7 @@
 /// violation found by dense resampling; the maximum velocity curve; the DP convergence
 /// table; the motion at equal time steps for the renderer. Plain data, SI units.
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -133,6 +134,11 @@ struct GridConvergence {
   double graded_tolerance = 0;
   int max_points = 0;
   bool capped = false;
+  /// the converged duration when the extrapolation ran, else `grid_duration` (the exact
+  /// solver's on its grid): what the other solvers' durations are compared with
+  double reference_duration(double grid_duration) const {
+    return extrapolation_computed && std::isfinite(extrapolated) ? extrapolated : grid_duration;
+  }
 };
 
 struct Result {

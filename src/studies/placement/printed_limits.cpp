@@ -1,0 +1,73 @@
+#include "studies/placement/printed_limits.hpp"
+
+#include <cstdio>
+
+#include "core/motion_program.hpp"
+
+namespace armstudy::studies::placement {
+namespace {
+
+// "12.001" with 6 significant digits
+std::string sig6(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+void check_point(const Spec& spec, const Candidate& c, const std::string& name,
+                 PrintedLimitExcess& out) {
+  if (c.status == CandidateStatus::kUnreachable) return;
+  const LineMetrics& m = c.reported_metrics();
+  if (!m.finite()) return;
+  ++out.points;
+  const char* joint[2] = {"root", "elbow"};
+  for (int j = 0; j < 2; ++j) {
+    if (spec.torque_limit) {
+      const double x = m.peak_torque[j] / (*spec.torque_limit)[size_t(j)] - 1;
+      if (x > out.relative) {
+        out.relative = x;
+        out.where = name + ": " + joint[j] + " torque " + sig6(m.peak_torque[j]) + " N m at " +
+                    std::to_string(c.convergence.checked ? c.convergence.samples : spec.samples) +
+                    " samples";
+      }
+    }
+    if (spec.power_limit) {
+      const double x = m.peak_power[j] / (*spec.power_limit)[size_t(j)] - 1;
+      if (x > out.relative) {
+        out.relative = x;
+        out.where = name + ": " + joint[j] + " power " + sig6(m.peak_power[j]) + " W at " +
+                    std::to_string(c.convergence.checked ? c.convergence.samples : spec.samples) +
+                    " samples";
+      }
+    }
+  }
+}
+
+}  // namespace
+
+PrintedLimitExcess printed_limit_excess(const Spec& spec, const Result& result) {
+  PrintedLimitExcess out;
+  for (const ProgramConfig& pc : result.cases) {
+    const std::string name =
+        std::string(core::program_name(pc.program)) + ", conf. " + std::to_string(pc.configuration);
+    if (pc.found) check_point(spec, pc.refined, name + " optimum", out);
+    for (const MarginPoint& mp : pc.margin_sensitivity)
+      if (mp.found) check_point(spec, mp.optimum, name + ", margin " + sig6(mp.margin) + " m", out);
+  }
+  return out;
+}
+
+std::optional<Check> printed_limits_check(const Spec& spec, const Result& result) {
+  if (!spec.torque_limit && !spec.power_limit) return std::nullopt;
+  const PrintedLimitExcess e = printed_limit_excess(spec, result);
+  std::string what =
+      "largest relative excess of a printed point's peak torque or power over "
+      "its limit, at the samples it is printed at (the refinement keeps the "
+      "limit at " +
+      std::to_string(spec.samples) + " samples), over " + std::to_string(e.points) +
+      " printed points";
+  if (e.relative > 0) what += "; largest: " + e.where;
+  return make_check("limits_at_printed_samples", what, e.relative, 1e-3);
+}
+
+}  // namespace armstudy::studies::placement
