@@ -251,7 +251,9 @@ TEST(PlacementQuadrature, TheFoldedElbowsEnergyIsTheLimitOfNearbyLines) {
         const double gap = fold.energy - q.energy;
         std::printf("   d = %.0e: %.10f +- %.2e, %.3e below the fold\n", d, q.energy, q.error, gap);
         EXPECT_GT(gap, 10.0 * (fold.error + q.error)) << d;
-        if (gap_before > 0) EXPECT_LT(gap, 0.25 * gap_before) << d;
+        if (gap_before > 0) {
+          EXPECT_LT(gap, 0.25 * gap_before) << d;
+        }
         gap_before = gap;
       }
       EXPECT_LT(gap_before, 1e-4 * fold.energy);
