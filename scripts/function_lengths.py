@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Lists the functions in src/ longer than a limit, longest first (issue 38: no function
-over 120 lines, none over 60 without a reason in its comment).
+"""Lists the functions in src/ longer than a limit, longest first (the house rule,
+docs/architecture.md: no function over 120 lines, none over 60 without a reason in its
+comment).
 
     scripts/function_lengths.py              every function over 60 lines, and a summary
     scripts/function_lengths.py --over 100   every function over 100 lines

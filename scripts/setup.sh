@@ -31,7 +31,8 @@ fi
 
 # --- build -----------------------------------------------------------------------------
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# ARMSTUDY_WERROR=ON (scripts/test.sh, the CI build): every compiler warning fails the build
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DARMSTUDY_WERROR="${ARMSTUDY_WERROR:-OFF}" >/dev/null
 cmake --build build -j"$jobs"
 echo "setup: built $root/build/armstudy"
 

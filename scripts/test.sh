@@ -5,7 +5,8 @@
 # (scripts/test_sanitizers.sh; ARMSTUDY_SANITIZERS=0 skips that part).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh --no-reports
+# warnings are errors here (-Wall -Wextra -Wshadow, CMakeLists.txt)
+ARMSTUDY_WERROR=ON scripts/setup.sh --no-reports
 export LP_NUM_THREADS=1
 jobs=$(nproc 2>/dev/null || echo 2)
 ctest --test-dir build --output-on-failure -j"$jobs" --timeout 900

@@ -24,18 +24,19 @@
 #include "cases/case_info.hpp"
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
-#include "report/scratch_dir.hpp"
 #include "report/source_comparison.hpp"
 #include "scene/animation.hpp"
 #include "scene/osmesa_context.hpp"
 #include "scene/phase_times.hpp"
+#include "sys/atomic_file.hpp"
+#include "sys/scratch_dir.hpp"
 #include "version.hpp"
 
 namespace armstudy::app {
 namespace fs = std::filesystem;
 
 void write_file_atomic(const fs::path& path, const std::string& text) {
-  report::write_file_atomic(path, text);
+  sys::write_file_atomic(path, text);
 }
 
 report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Status status,
@@ -65,9 +66,9 @@ report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Statu
   return r;
 }
 
-std::string process_tag() { return report::process_tag(); }
+std::string process_tag() { return sys::process_tag(); }
 
-report::StaleCleanup remove_stale_outputs(const fs::path& out_dir) {
+sys::StaleCleanup remove_stale_outputs(const fs::path& out_dir) {
   return report::remove_stale_scratch(out_dir);
 }
 
@@ -87,7 +88,7 @@ bool exchange_unsupported(int e) { return e == EINVAL || e == ENOSYS || e == EOP
 void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::path& old_slot,
                      const std::string& name) {
   std::error_code ec;
-  std::lock_guard<std::mutex> lock(report::swap_mutex());
+  std::lock_guard<std::mutex> lock(sys::swap_mutex());
   const auto refuse = [&](const std::string& why) {
     throw report::ForeignOutput(target.string() + ": " + why + "; armstudy leaves it as it is");
   };
@@ -108,17 +109,17 @@ void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::pa
       if (::rename(fresh.c_str(), target.c_str()) == 0) return;
       e = errno;
       if (e == EEXIST || e == ENOTEMPTY) continue;  // another run put one there meanwhile
-      throw std::runtime_error(report::system_error_text("move the new report to", target, e));
+      throw std::runtime_error(sys::system_error_text("move the new report to", target, e));
     }
     if (!exchange_unsupported(e))
-      throw std::runtime_error(report::system_error_text("move the new report to", target, e));
+      throw std::runtime_error(sys::system_error_text("move the new report to", target, e));
     fs::create_directories(old_slot.parent_path());
     fs::remove_all(old_slot);
     if (::rename(target.c_str(), old_slot.c_str()) != 0) {
       e = errno;
       if (e == ENOENT) continue;
       throw std::runtime_error(
-          report::system_error_text("move the earlier report aside from", target, e));
+          sys::system_error_text("move the earlier report aside from", target, e));
     }
     if (const std::string why = report::foreign_case_folder(old_slot, name); !why.empty()) {
       ::rename(old_slot.c_str(), target.c_str());  // put there since the check: back
@@ -128,7 +129,7 @@ void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::pa
       e = errno;
       ::rename(old_slot.c_str(), target.c_str());  // the earlier report back
       if (e == EEXIST || e == ENOTEMPTY) continue;
-      throw std::runtime_error(report::system_error_text("move the new report to", target, e));
+      throw std::runtime_error(sys::system_error_text("move the new report to", target, e));
     }
     fs::remove_all(old_slot, ec);
     return;
@@ -170,7 +171,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
   fs::path tmp_dir;
   try {
     fs::create_directories(options.out_dir);
-    const fs::path scratch = report::scratch_dir(options.out_dir);
+    const fs::path scratch = sys::scratch_dir(options.out_dir);
     tmp_dir = scratch / "new" / c.info.name;
     fs::remove_all(tmp_dir);
     fs::create_directories(tmp_dir);
@@ -259,8 +260,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
     if (options.printer) {
       // printed in the scratch folder, renamed into the case folder (a failure is printed
       // again, and reported, by finish_reports)
-      const fs::path printed =
-          report::scratch_dir(options.out_dir) / "pdf" / (c.info.name + ".pdf");
+      const fs::path printed = sys::scratch_dir(options.out_dir) / "pdf" / (c.info.name + ".pdf");
       fs::create_directories(printed.parent_path());
       options.printer->add({final_dir / "index.html", printed}, [printed, final_dir](
                                                                     const std::string& error) {
@@ -340,7 +340,7 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs,
     // (or its temporary file) beside the report
     std::vector<report::PdfJob> prints;
     for (const fs::path& d : todo) {
-      const fs::path dir = report::scratch_dir(options.out_dir) / "pdf";
+      const fs::path dir = sys::scratch_dir(options.out_dir) / "pdf";
       fs::create_directories(dir);
       prints.push_back({d / "index.html", dir / (d.filename().string() + ".pdf")});
     }
@@ -361,7 +361,7 @@ std::vector<std::string> finish_reports(const RunOptions& options, int jobs,
         std::error_code ec;
         fs::remove(prints[i].pdf, ec);
         problems.push_back(todo[i].filename().string() + ": no report.pdf: " +
-                           report::system_error_text("write", todo[i] / "report.pdf", e));
+                           sys::system_error_text("write", todo[i] / "report.pdf", e));
       } else if (!failed[i].empty()) {
         problems.push_back(todo[i].filename().string() + ": no report.pdf: " + failed[i]);
       }

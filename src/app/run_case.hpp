@@ -7,8 +7,8 @@
 
 #include "app/pipeline.hpp"
 #include "report/results_record.hpp"
-#include "report/scratch_dir.hpp"
 #include "studies/common.hpp"
+#include "sys/scratch_dir.hpp"
 
 namespace armstudy::report {
 class PdfPrinter;
@@ -57,15 +57,15 @@ report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Statu
 std::vector<std::string> finish_reports(const RunOptions& options, int jobs,
                                         const std::vector<std::string>& cases);
 
-/// "<host>-<pid>-<random>" of this process (report::process_tag): names its scratch folder.
+/// "<host>-<pid>-<random>" of this process (sys::process_tag): names its scratch folder.
 std::string process_tag();
 
 /// Before a run: removes what killed runs left in out_dir (scratch folders whose lock no
-/// live process holds, see report/scratch_dir.hpp), first putting back any earlier report
+/// live process holds, see sys/scratch_dir.hpp), first putting back any earlier report
 /// a kill left in one. Live runs' folders, on this host or any other, are left alone.
-report::StaleCleanup remove_stale_outputs(const std::filesystem::path& out_dir);
+sys::StaleCleanup remove_stale_outputs(const std::filesystem::path& out_dir);
 
-/// Writes `text` to `path` through a temporary file and a rename (report::write_file_atomic).
+/// Writes `text` to `path` through a temporary file and a rename (sys::write_file_atomic).
 void write_file_atomic(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace armstudy::app

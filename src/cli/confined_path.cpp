@@ -2,7 +2,7 @@
 
 #include <system_error>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace fs = std::filesystem;
 
 bool lies_inside(const fs::path& path, const fs::path& root) {
@@ -32,4 +32,4 @@ std::string confined_problem(const fs::path& folder, const std::string& rel) {
   return "";
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 /// True if `path` (made absolute, symlinks resolved as far as it exists) lies in `root`
 /// (resolved the same way) or is `root`.
@@ -16,4 +16,4 @@ bool lies_inside(const std::filesystem::path& path, const std::filesystem::path&
 /// symlink.
 std::string confined_problem(const std::filesystem::path& folder, const std::string& rel);
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

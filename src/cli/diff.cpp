@@ -14,7 +14,7 @@
 #include "report/text_escape.hpp"
 #include "scene/scene_error.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using report::CaseDiff;
@@ -100,25 +100,10 @@ std::string safe_name(const std::string& s) {
   return o.empty() || o[0] == '.' ? "_" + o : o;
 }
 
-CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolerances& tol,
-                      const FrameOptions& fo) {
-  CaseDiff d;
-  const report::ResultsRecord& any = (n ? n : b)->record;
-  d.name = any.case_info.name;
-  d.study = any.study;
-  d.presence = b && n ? CaseDiff::Presence::kBoth
-                      : (n ? CaseDiff::Presence::kAdded : CaseDiff::Presence::kRemoved);
-  if (b) {
-    d.base_status = b->record.status;
-    d.base_passed = case_passed(b->record);
-    d.base_message = b->record.message;
-  }
-  if (n) {
-    d.new_status = n->record.status;
-    d.new_passed = case_passed(n->record);
-    d.new_message = n->record.message;
-  }
-  // key figures: the base's order, then the new run's additions
+// key figures: the base's order, then the new run's additions; each beyond its tolerance
+// or not (an added or removed case counts once, as itself)
+void compare_figures(const CaseOutput* b, const CaseOutput* n, const DiffTolerances& tol,
+                     CaseDiff& d) {
   std::vector<std::pair<std::string, Figure>> bf, nf;
   if (b) bf = figures_of(b->record);
   if (n) nf = figures_of(n->record);
@@ -147,71 +132,110 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
     f.beyond = (b && n) ? beyond(f) : false;  // an added or removed case counts once, as itself
     d.figures.push_back(std::move(f));
   }
+}
+
+// checks whose verdict changed, and checks of one run only
+void compare_checks(const CaseOutput& base, const CaseOutput& now, CaseDiff& d) {
+  const CaseOutput* b = &base;
+  const CaseOutput* n = &now;
+  std::map<std::string, const report::CheckRecord*> bc, nc;
+  std::vector<std::string> names;
+  for (const auto& c : b->record.checks) {
+    if (!bc.count(c.name)) names.push_back(c.name);
+    bc[c.name] = &c;
+  }
+  for (const auto& c : n->record.checks) {
+    if (!bc.count(c.name) && !nc.count(c.name)) names.push_back(c.name);
+    nc[c.name] = &c;
+  }
+  auto num = [](const report::CheckRecord* c,
+                double report::CheckRecord::*field) -> std::optional<double> {
+    if (!c) return std::nullopt;
+    return c->*field;
+  };
+  for (const auto& k : names) {
+    const report::CheckRecord* x = bc.count(k) ? bc[k] : nullptr;
+    const report::CheckRecord* y = nc.count(k) ? nc[k] : nullptr;
+    report::CheckDiff c;
+    c.name = k;
+    if (x) c.base_passed = x->passed;
+    if (y) c.new_passed = y->passed;
+    if (c.base_passed == c.new_passed) continue;
+    c.base_value = num(x, &report::CheckRecord::value);
+    c.new_value = num(y, &report::CheckRecord::value);
+    c.base_tolerance = num(x, &report::CheckRecord::tolerance);
+    c.new_tolerance = num(y, &report::CheckRecord::tolerance);
+    d.checks.push_back(std::move(c));
+  }
+}
+
+// frames: every file of either run; a run rendered without frames (--no-render) has none
+void compare_frames(const CaseOutput& base, const CaseOutput& now, const FrameOptions& fo,
+                    CaseDiff& d) {
+  const CaseOutput* b = &base;
+  const CaseOutput* n = &now;
+  const auto& fb = b->record.frames;
+  const auto& fn = n->record.frames;
+  std::vector<std::string> files = fb;
+  for (const auto& f : fn)
+    if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+  for (const auto& f : files) {
+    const bool in_b = std::find(fb.begin(), fb.end(), f) != fb.end();
+    const bool in_n = std::find(fn.begin(), fn.end(), f) != fn.end();
+    if (in_b && in_n) {
+      d.frames.push_back(compare_frame(b->folder, n->folder, f, fo.channel_tolerance,
+                                       fo.pixels_allowed, fo.frames_root,
+                                       "diff-frames/" + safe_name(d.name)));
+    } else {
+      report::FrameDiff x;
+      x.file = f;
+      x.in_base = in_b;
+      x.in_new = in_n;
+      // a frame gone or new counts unless that run rendered no frames at all
+      x.beyond = !fb.empty() && !fn.empty();
+      d.frames.push_back(std::move(x));
+    }
+  }
+}
+
+// the provenance items that differ
+void compare_provenance(const CaseOutput& base, const CaseOutput& now, CaseDiff& d) {
+  const CaseOutput* b = &base;
+  const CaseOutput* n = &now;
+  const auto pb = provenance_of(b->record), pn = provenance_of(n->record);
+  std::set<std::string> keys;
+  for (const auto& [k, v] : pb) keys.insert(k);
+  for (const auto& [k, v] : pn) keys.insert(k);
+  for (const auto& k : provenance_keys(keys)) {
+    const std::string x = pb.count(k) ? pb.at(k) : "", y = pn.count(k) ? pn.at(k) : "";
+    if (x != y)
+      d.provenance.push_back({k, label_of(k), x.empty() ? "(none)" : x, y.empty() ? "(none)" : y});
+  }
+}
+
+CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolerances& tol,
+                      const FrameOptions& fo) {
+  CaseDiff d;
+  const report::ResultsRecord& any = (n ? n : b)->record;
+  d.name = any.case_info.name;
+  d.study = any.study;
+  d.presence = b && n ? CaseDiff::Presence::kBoth
+                      : (n ? CaseDiff::Presence::kAdded : CaseDiff::Presence::kRemoved);
+  if (b) {
+    d.base_status = b->record.status;
+    d.base_passed = case_passed(b->record);
+    d.base_message = b->record.message;
+  }
+  if (n) {
+    d.new_status = n->record.status;
+    d.new_passed = case_passed(n->record);
+    d.new_message = n->record.message;
+  }
+  compare_figures(b, n, tol, d);
   if (b && n) {
-    // checks whose verdict changed, and checks of one run only
-    std::map<std::string, const report::CheckRecord*> bc, nc;
-    std::vector<std::string> names;
-    for (const auto& c : b->record.checks) {
-      if (!bc.count(c.name)) names.push_back(c.name);
-      bc[c.name] = &c;
-    }
-    for (const auto& c : n->record.checks) {
-      if (!bc.count(c.name) && !nc.count(c.name)) names.push_back(c.name);
-      nc[c.name] = &c;
-    }
-    auto num = [](const report::CheckRecord* c,
-                  double report::CheckRecord::*field) -> std::optional<double> {
-      if (!c) return std::nullopt;
-      return c->*field;
-    };
-    for (const auto& k : names) {
-      const report::CheckRecord* x = bc.count(k) ? bc[k] : nullptr;
-      const report::CheckRecord* y = nc.count(k) ? nc[k] : nullptr;
-      report::CheckDiff c;
-      c.name = k;
-      if (x) c.base_passed = x->passed;
-      if (y) c.new_passed = y->passed;
-      if (c.base_passed == c.new_passed) continue;
-      c.base_value = num(x, &report::CheckRecord::value);
-      c.new_value = num(y, &report::CheckRecord::value);
-      c.base_tolerance = num(x, &report::CheckRecord::tolerance);
-      c.new_tolerance = num(y, &report::CheckRecord::tolerance);
-      d.checks.push_back(std::move(c));
-    }
-    // frames: every file of either run; a run rendered without frames (--no-render) has none
-    const auto& fb = b->record.frames;
-    const auto& fn = n->record.frames;
-    std::vector<std::string> files = fb;
-    for (const auto& f : fn)
-      if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
-    for (const auto& f : files) {
-      const bool in_b = std::find(fb.begin(), fb.end(), f) != fb.end();
-      const bool in_n = std::find(fn.begin(), fn.end(), f) != fn.end();
-      if (in_b && in_n) {
-        d.frames.push_back(compare_frame(b->folder, n->folder, f, fo.channel_tolerance,
-                                         fo.pixels_allowed, fo.frames_root,
-                                         "diff-frames/" + safe_name(d.name)));
-      } else {
-        report::FrameDiff x;
-        x.file = f;
-        x.in_base = in_b;
-        x.in_new = in_n;
-        // a frame gone or new counts unless that run rendered no frames at all
-        x.beyond = !fb.empty() && !fn.empty();
-        d.frames.push_back(std::move(x));
-      }
-    }
-    // provenance
-    const auto pb = provenance_of(b->record), pn = provenance_of(n->record);
-    std::set<std::string> keys;
-    for (const auto& [k, v] : pb) keys.insert(k);
-    for (const auto& [k, v] : pn) keys.insert(k);
-    for (const auto& k : provenance_keys(keys)) {
-      const std::string x = pb.count(k) ? pb.at(k) : "", y = pn.count(k) ? pn.at(k) : "";
-      if (x != y)
-        d.provenance.push_back(
-            {k, label_of(k), x.empty() ? "(none)" : x, y.empty() ? "(none)" : y});
-    }
+    compare_checks(*b, *n, d);
+    compare_frames(*b, *n, fo, d);
+    compare_provenance(*b, *n, d);
   }
   return d;
 }
@@ -321,7 +345,10 @@ std::vector<CaseOutput> read_run(const fs::path& dir) {
   // mistyped one is a problem named there), so the records below are whole
   if (!problems.empty()) {
     std::string msg;
-    for (const auto& p : problems) msg += (msg.empty() ? "" : "\n") + report::terminal_text(p);
+    for (const auto& p : problems) {
+      if (!msg.empty()) msg += '\n';
+      msg += report::terminal_text(p);
+    }
     throw DiffInputError(msg);
   }
   if (out.empty())
@@ -407,7 +434,7 @@ int run_diff(const DiffOptions& o) {
     // frame copies go to a hidden sibling first; the old diff's frames go only once the new
     // ones are complete
     fs::create_directories(o.out);
-    const fs::path tmp = o.out / (".diff.tmp-" + process_tag());
+    const fs::path tmp = o.out / (".diff.tmp-" + app::process_tag());
     fs::remove_all(tmp);
     fs::create_directories(tmp);
     fo.frames_root = tmp;
@@ -417,11 +444,11 @@ int run_diff(const DiffOptions& o) {
     fs::remove_all(o.out / "diff-frames");
     if (fs::exists(tmp / "diff-frames")) fs::rename(tmp / "diff-frames", o.out / "diff-frames");
     fs::remove_all(tmp);
-    write_file_atomic(o.out / "diff.md", report::diff_markdown(d));
+    app::write_file_atomic(o.out / "diff.md", report::diff_markdown(d));
     report::write_diff_page(o.out, d);
   } catch (const cases::InputFileError& e) {  // a frame that is a FIFO, a device, a link
     std::error_code ec;
-    fs::remove_all(o.out / (".diff.tmp-" + process_tag()), ec);
+    fs::remove_all(o.out / (".diff.tmp-" + app::process_tag()), ec);
     std::fprintf(stderr, "armstudy diff: %s\nnothing was written\n", e.what());
     return e.runtime() ? kRuntime : kBadInput;
   } catch (const std::exception& e) {
@@ -443,4 +470,4 @@ int run_diff(const DiffOptions& o) {
   return moved ? kMoved : kSame;
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -15,7 +15,7 @@
 #include "cli/merge.hpp"
 #include "report/diff_report.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 /// A folder that is not an output folder, or a results.json that cannot be read; the
 /// message names the folder or file and what was expected.
@@ -56,4 +56,4 @@ struct DiffOptions {
 /// unreadable results.json or tolerances file: named), 3 the output could not be written.
 int run_diff(const DiffOptions& options);
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -13,7 +13,7 @@
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace fs = std::filesystem;
 
 namespace {
@@ -163,4 +163,4 @@ report::FrameDiff compare_frame(const fs::path& base, const fs::path& now, const
   return d;
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -7,7 +7,7 @@
 
 #include "report/diff_report.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 /// The most pixels a frame may have to be decoded (the frame budget, docs/budgets.md); the
 /// PNG header's width and height are checked before decoding.
@@ -30,4 +30,4 @@ report::FrameDiff compare_frame(const std::filesystem::path& base, const std::fi
                                 std::size_t pixels_allowed, const std::filesystem::path& out_dir,
                                 const std::string& copy_prefix);
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

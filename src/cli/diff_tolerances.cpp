@@ -7,7 +7,7 @@
 #include "app/pipeline.hpp"
 #include "cases/yaml_reader.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace {
 
 using report::FigureTolerance;
@@ -99,7 +99,7 @@ DiffTolerances load_diff_tolerances(const std::string& path) {
     frames->finish();
   }
   std::vector<std::string> known;
-  for (const auto& e : study_registry()) known.emplace_back(e.study);
+  for (const auto& e : app::study_registry()) known.emplace_back(e.study);
   if (auto studies = root.map("studies")) {
     for (const auto& kv : studies->node()) {
       if (!kv.first.IsScalar()) continue;  // reported by Map
@@ -137,4 +137,4 @@ DiffTolerances load_diff_tolerances(const std::string& path) {
   return out;
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

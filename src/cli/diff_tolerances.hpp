@@ -26,7 +26,7 @@
 
 #include "report/diff_report.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 struct DiffTolerances {
   struct Entry {
@@ -51,4 +51,4 @@ struct DiffTolerances {
 /// Reads a tolerances file. @throws cases::CaseErrors with every problem (file:line:col).
 DiffTolerances load_diff_tolerances(const std::string& path);
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

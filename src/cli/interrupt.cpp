@@ -9,9 +9,9 @@
 #include <thread>
 
 #include "report/case_report.hpp"
-#include "report/scratch_dir.hpp"
+#include "sys/scratch_dir.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 void install_interrupt_cleanup() {
   static sigset_t set;
@@ -22,9 +22,9 @@ void install_interrupt_cleanup() {
     int sig = 0;
     while (::sigwait(&set, &sig) != 0) {
     }
-    report::stop_scratch();  // before the browsers die and let the threads that wait on them go
+    sys::stop_scratch();  // before the browsers die and let the threads that wait on them go
     report::kill_browsers();
-    report::remove_own_scratch();  // waits for a folder swap under way to finish
+    sys::remove_own_scratch();  // waits for a folder swap under way to finish
     std::fprintf(stderr,
                  "\narmstudy: stopped by %s; unfinished output removed, earlier reports kept\n",
                  sigabbrev_np(sig) ? (std::string("SIG") + sigabbrev_np(sig)).c_str() : "a signal");
@@ -33,4 +33,4 @@ void install_interrupt_cleanup() {
   }).detach();
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

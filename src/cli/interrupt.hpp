@@ -4,10 +4,10 @@
 /// output and exits 128 + the signal's number (130 for SIGINT), so that an interrupted run
 /// leaves only complete reports behind.
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 /// Blocks those signals in the calling thread (call it first in main, before any thread
 /// starts, so every thread inherits the mask) and starts the thread that waits for them.
 void install_interrupt_cleanup();
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -33,6 +33,7 @@
 #include "cases/case_error.hpp"
 #include "cases/case_info.hpp"
 #include "cases/input_file.hpp"
+#include "cli/command_line.hpp"
 #include "cli/confined_path.hpp"
 #include "cli/diff.hpp"
 #include "cli/interrupt.hpp"
@@ -79,7 +80,7 @@ bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* ou
         ok = false;
         continue;
       }
-      if (const char* clash = armstudy::app::run_level_file(c.info.name)) {
+      if (const char* clash = armstudy::cli::run_level_file(c.info.name)) {
         std::fprintf(stderr,
                      "%s: case name '%s' is the name of %s, which armstudy writes beside the "
                      "case folders; expected another name\n",
@@ -148,7 +149,7 @@ bool listed_files_intact(const std::filesystem::path& folder,
   constexpr long long kHashedBytes = 4ll << 20;
   std::vector<std::string> frames = r.frames;
   for (const auto& f : r.files) {
-    if (!armstudy::app::confined_problem(folder, f.path).empty()) return false;
+    if (!armstudy::cli::confined_problem(folder, f.path).empty()) return false;
     std::error_code ec;
     const fs::path p = folder / f.path;
     if (!fs::is_regular_file(p, ec) || static_cast<long long>(fs::file_size(p, ec)) != f.bytes ||
@@ -163,7 +164,7 @@ bool listed_files_intact(const std::filesystem::path& folder,
   }
   for (const auto& f : r.frames) {
     std::error_code ec;
-    if (!armstudy::app::confined_problem(folder, f).empty() || !fs::is_regular_file(folder / f, ec))
+    if (!armstudy::cli::confined_problem(folder, f).empty() || !fs::is_regular_file(folder / f, ec))
       return false;
   }
   return true;
@@ -191,7 +192,7 @@ bool already_done(const std::filesystem::path& out_dir, const LoadedCase& c,
            // its sensitivity part as this run would write it (none with --no-sensitivity)
            r.sensitivity.has_value() ==
                (options.sensitivity && !c.info.sensitivity.empty() && r.solved()) &&
-           armstudy::app::case_passed(r) && listed_files_intact(out_dir / c.info.name, r);
+           armstudy::cli::case_passed(r) && listed_files_intact(out_dir / c.info.name, r);
   } catch (const std::exception&) {
     return false;
   }
@@ -238,12 +239,12 @@ int copy_manifest(const std::vector<std::string>& run_paths, const std::filesyst
   for (const auto& p : run_paths) {
     if (!fs::is_directory(p)) continue;
     try {
-      const auto m = armstudy::app::read_manifest(fs::path(p) / armstudy::app::kManifestName);
+      const auto m = armstudy::cli::read_manifest(fs::path(p) / armstudy::cli::kManifestName);
       if (!m) continue;
-      const fs::path dst = out / armstudy::app::kManifestName;
-      armstudy::app::read_manifest(dst);  // throws for a file that is not a manifest
+      const fs::path dst = out / armstudy::cli::kManifestName;
+      armstudy::cli::read_manifest(dst);  // throws for a file that is not a manifest
       fs::create_directories(out);
-      armstudy::app::write_file_atomic(dst, armstudy::app::manifest_text(*m));
+      armstudy::app::write_file_atomic(dst, armstudy::cli::manifest_text(*m));
       return kExitDone;
     } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "armstudy: %s; nothing was written\n",
@@ -254,27 +255,17 @@ int copy_manifest(const std::vector<std::string>& run_paths, const std::filesyst
   return kExitDone;
 }
 
-int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
-            int jobs, const std::string& shard, bool force, bool allow_large,
-            const std::vector<std::string>& run_paths) {
-  std::vector<LoadedCase> cases;
-  if (!load_all(paths, &cases, allow_large)) {
-    std::fprintf(stderr, "nothing was written: fix the case files above\n");
-    return kExitBadInput;
-  }
-  if (options.pdf && armstudy::report::find_chromium().empty()) {
-    std::fprintf(stderr, "armstudy: %s; nothing was written\n",
-                 armstudy::report::missing_chromium_text().c_str());
-    return kExitRuntime;
-  }
-  // a stable subset: cases sorted by name, every N-th from I
+// sorts the cases by name and keeps the shard's stable subset, every N-th from I (--shard
+// I/N; all when empty); false, having said why, when the shard is not I/N
+bool take_shard(const std::string& shard, std::vector<LoadedCase>* all) {
+  std::vector<LoadedCase>& cases = *all;
   std::sort(cases.begin(), cases.end(),
             [](const LoadedCase& a, const LoadedCase& b) { return a.info.name < b.info.name; });
   if (!shard.empty()) {
     int index = 0, count = 1;
     if (!parse_shard(shard, &index, &count)) {
       std::fprintf(stderr, "--shard '%s': expected I/N with 0 <= I < N, e.g. 0/4\n", shard.c_str());
-      return kExitBadInput;
+      return false;
     }
     std::vector<LoadedCase> mine;
     for (size_t i = 0; i < cases.size(); ++i)
@@ -283,64 +274,103 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
                  cases.size());
     cases = std::move(mine);
   }
-  // never over a folder or file armstudy did not write: a user's folder of a case's name,
-  // a foreign index.html or summary.md (report/owned_output.hpp); nothing is written then
-  std::vector<std::string> names;
-  bool sweep_points = false;
-  for (const auto& c : cases) {
-    names.push_back(c.info.name);
-    sweep_points |= !c.info.sweep_name.empty();
-  }
-  if (refuse_foreign_outputs(options.out_dir, names, run_level_names(false, sweep_points)))
-    return kExitBadInput;
-  if (const int code = copy_manifest(run_paths, options.out_dir); code != kExitDone) return code;
-  // what killed runs on this host left behind (hidden temporary folders and files)
-  {
-    const auto stale = armstudy::app::remove_stale_outputs(options.out_dir);
-    for (const auto& folder : stale.restored)
-      std::fprintf(stderr, "put back %s, the earlier report a killed run had moved aside\n",
-                   folder.c_str());
-    if (stale.removed)
-      std::fprintf(stderr, "removed %zu temporary folder(s) or file(s) of killed runs in %s\n",
-                   stale.removed, options.out_dir.c_str());
-  }
-  if (!force) {
-    std::vector<LoadedCase> todo;
-    size_t skipped = 0;
-    for (auto& c : cases) {
-      try {
-        if (already_done(options.out_dir, c, options))
-          ++skipped;
-        else
-          todo.push_back(std::move(c));
-      } catch (const armstudy::cases::InputFileError& e) {
-        std::fprintf(stderr, "armstudy: %s\nnothing was run\n", e.what());
-        return e.runtime() ? kExitRuntime : kExitBadInput;
-      }
+  return true;
+}
+
+// removes what killed runs left in the output folder and says what it did
+void report_stale_outputs(const std::filesystem::path& out_dir) {
+  const auto stale = armstudy::app::remove_stale_outputs(out_dir);
+  for (const auto& folder : stale.restored)
+    std::fprintf(stderr, "put back %s, the earlier report a killed run had moved aside\n",
+                 folder.c_str());
+  if (stale.removed)
+    std::fprintf(stderr, "removed %zu temporary folder(s) or file(s) of killed runs in %s\n",
+                 stale.removed, out_dir.c_str());
+}
+
+// drops the cases whose output exists and passed for the same case file, version and
+// options; -1, or the exit code when a case file cannot be read
+int skip_done_cases(std::vector<LoadedCase>* all, const armstudy::app::RunOptions& options) {
+  std::vector<LoadedCase>& cases = *all;
+  std::vector<LoadedCase> todo;
+  size_t skipped = 0;
+  for (auto& c : cases) {
+    try {
+      if (already_done(options.out_dir, c, options))
+        ++skipped;
+      else
+        todo.push_back(std::move(c));
+    } catch (const armstudy::cases::InputFileError& e) {
+      std::fprintf(stderr, "armstudy: %s\nnothing was run\n", e.what());
+      return e.runtime() ? kExitRuntime : kExitBadInput;
     }
-    if (skipped)
-      std::fprintf(stderr,
-                   "skipped %zu case(s) whose output exists and passed for the same case "
-                   "file, armstudy version and options (--force redoes them)\n",
-                   skipped);
-    cases = std::move(todo);
   }
-  // with --pdf, one browser prints each case's page as soon as the case is in place
-  armstudy::app::RunOptions case_options = options;
-  std::unique_ptr<armstudy::report::PdfPrinter> printer;
-  if (options.pdf && !cases.empty()) {
-    printer = std::make_unique<armstudy::report::PdfPrinter>(std::max(1, jobs));
-    case_options.printer = printer.get();
+  if (skipped)
+    std::fprintf(stderr,
+                 "skipped %zu case(s) whose output exists and passed for the same case "
+                 "file, armstudy version and options (--force redoes them)\n",
+                 skipped);
+  cases = std::move(todo);
+  return -1;
+}
+
+// what one case's run ended with: its exit code, its line for the terminal and, when it
+// ended in an error, the error
+struct CaseEnd {
+  int code = kExitDone;
+  std::string line, error;
+};
+
+// runs one case, turning every error into its exit code and line; `need` is its memory
+// estimate (named in the out-of-memory error)
+CaseEnd run_one_case(LoadedCase& c, const armstudy::app::RunOptions& case_options,
+                     armstudy::cli::ProgressReporter& progress, double need) {
+  int code = kExitDone;
+  std::string line, error;
+  const std::string name = armstudy::report::terminal_text(c.info.name);
+  try {
+    const auto o = armstudy::app::run_case(c, case_options, progress.task(c.info.name));
+    code = o.exit_code;
+    char secs[32];
+    std::snprintf(secs, sizeof secs, "%.1f s", o.seconds);
+    line = (code == 0 ? "done: " : "FAILED: ") + name + " (" + c.info.study + ", " + secs +
+           ") -> " + o.folder.string() +
+           (o.message.empty() ? "" : "\n  " + armstudy::report::terminal_text(o.message));
+  } catch (const armstudy::report::ForeignOutput& e) {
+    code = kExitBadInput;  // a user's folder of the case's name appeared during the run
+    error = e.what();
+    line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
+  } catch (const armstudy::scene::ModelError& e) {
+    code = kExitBadInput;  // MuJoCo cannot load the arm the case describes
+    error = e.what();
+    line = "ERROR: " + name + " (" + c.info.path + "): " + armstudy::report::terminal_text(error);
+  } catch (const std::bad_alloc&) {
+    code = kExitRuntime;
+    error = "out of memory: the case's estimate is " + armstudy::cases::bytes_text(need) +
+            " and the run's memory budget of " +
+            armstudy::cases::bytes_text(armstudy::cases::kMemoryBudgetBytes) +
+            " covers all its jobs (docs/budgets.md); run it with fewer --jobs or on a "
+            "machine with more free memory";
+    line = "ERROR: " + name + ": " + error;
+  } catch (const std::exception& e) {
+    code = kExitRuntime;
+    error = e.what();
+    line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
   }
-  armstudy::app::ProgressReporter progress(stderr, armstudy::app::stderr_is_terminal());
+  return {code, line, error};
+}
+
+// runs the cases on `jobs` threads, the longest first, each starting when its memory estimate
+// fits the run's budget; the worst exit code; the cases that ended in an error in *errored
+int run_cases(std::vector<LoadedCase>& cases, const armstudy::app::RunOptions& options,
+              const armstudy::app::RunOptions& case_options, int jobs,
+              armstudy::cli::ProgressReporter& progress,
+              std::vector<armstudy::cli::CaseOutput>* errored) {
   // the longest cases first, so that each core ends on a short one
   const std::vector<size_t> order = armstudy::app::longest_first(cases, options.render);
   std::atomic<size_t> next{0};
   std::mutex mu;
   int worst = kExitDone;
-  // cases that ended in an error wrote no results.json: they are failed cases in summary.md
-  // and junit.xml all the same
-  std::vector<armstudy::app::CaseOutput> errored;
   // the run's memory budget covers all its jobs: a case starts when its estimate fits
   // beside the running ones' (a case beyond it alone, with --allow-large, runs alone)
   armstudy::app::MemoryGate memory(armstudy::cases::kMemoryBudgetBytes);
@@ -349,47 +379,15 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
       LoadedCase& c = cases[order[i]];
       const double need = armstudy::app::estimated_memory_bytes(c, options.render);
       memory.acquire(need);
-      int code = kExitDone;
-      std::string line, error;
-      const std::string name = armstudy::report::terminal_text(c.info.name);
-      try {
-        const auto o = armstudy::app::run_case(c, case_options, progress.task(c.info.name));
-        code = o.exit_code;
-        char secs[32];
-        std::snprintf(secs, sizeof secs, "%.1f s", o.seconds);
-        line = (code == 0 ? "done: " : "FAILED: ") + name + " (" + c.info.study + ", " + secs +
-               ") -> " + o.folder.string() +
-               (o.message.empty() ? "" : "\n  " + armstudy::report::terminal_text(o.message));
-      } catch (const armstudy::report::ForeignOutput& e) {
-        code = kExitBadInput;  // a user's folder of the case's name appeared during the run
-        error = e.what();
-        line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
-      } catch (const armstudy::scene::ModelError& e) {
-        code = kExitBadInput;  // MuJoCo cannot load the arm the case describes
-        error = e.what();
-        line =
-            "ERROR: " + name + " (" + c.info.path + "): " + armstudy::report::terminal_text(error);
-      } catch (const std::bad_alloc&) {
-        code = kExitRuntime;
-        error = "out of memory: the case's estimate is " + armstudy::cases::bytes_text(need) +
-                " and the run's memory budget of " +
-                armstudy::cases::bytes_text(armstudy::cases::kMemoryBudgetBytes) +
-                " covers all its jobs (docs/budgets.md); run it with fewer --jobs or on a "
-                "machine with more free memory";
-        line = "ERROR: " + name + ": " + error;
-      } catch (const std::exception& e) {
-        code = kExitRuntime;
-        error = e.what();
-        line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
-      }
+      const CaseEnd end = run_one_case(c, case_options, progress, need);
       memory.release(need);
-      progress.line(line);
+      progress.line(end.line);
       std::lock_guard<std::mutex> lock(mu);
-      worst = std::max(worst, code);
-      if (!error.empty())
-        errored.push_back(armstudy::app::failed_output(options.out_dir / c.info.name, c.info.name,
-                                                       c.info.study, "error",
-                                                       "the run ended in an error: " + error));
+      worst = std::max(worst, end.code);
+      if (!end.error.empty())
+        errored->push_back(armstudy::cli::failed_output(options.out_dir / c.info.name, c.info.name,
+                                                        c.info.study, "error",
+                                                        "the run ended in an error: " + end.error));
     }
   };
   const int n = std::clamp(jobs, 1, static_cast<int>(std::max<size_t>(1, cases.size())));
@@ -405,6 +403,94 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   for (int k = 1; k < n; ++k) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+  return worst;
+}
+
+// summary.md and junit.xml over every case in the output folder (not only this run's), an
+// errored case failed whatever an earlier run left in its folder; the worst exit code
+int write_summaries(const std::filesystem::path& out_dir,
+                    std::vector<armstudy::cli::CaseOutput> errored) {
+  int worst = kExitDone;
+  try {
+    std::vector<std::string> warnings;
+    auto outputs = armstudy::cli::collect_outputs({out_dir}, &warnings);
+    // an errored case is failed, whatever an earlier run left in its folder
+    for (auto& e : errored) {
+      const auto it = std::find_if(outputs.begin(), outputs.end(), [&](const auto& o) {
+        return o.record.case_info.name == e.record.case_info.name;
+      });
+      if (it != outputs.end())
+        *it = std::move(e);
+      else
+        outputs.push_back(std::move(e));
+    }
+    std::sort(outputs.begin(), outputs.end(), [](const auto& a, const auto& b) {
+      return a.record.case_info.name < b.record.case_info.name;
+    });
+    armstudy::cli::write_merged(outputs, out_dir);
+  } catch (const armstudy::report::ForeignOutput& e) {
+    std::fprintf(stderr, "armstudy: %s\n", armstudy::report::terminal_text(e.what()).c_str());
+    worst = std::max(worst, kExitBadInput);
+  } catch (const armstudy::cli::InputLimitError& e) {
+    std::fprintf(stderr, "armstudy: no summary.md/junit.xml written: %s\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    worst = std::max(worst, kExitBadInput);
+  } catch (const armstudy::cases::InputFileError& e) {
+    // a results.json in another folder of --out that is a FIFO, a device or a link
+    std::fprintf(stderr, "armstudy: no summary.md/junit.xml written: %s\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    worst = std::max(worst, e.runtime() ? kExitRuntime : kExitBadInput);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "armstudy: cannot write summary.md/junit.xml: %s\n", e.what());
+    worst = std::max(worst, kExitRuntime);
+  }
+  return worst;
+}
+
+// `armstudy run`: load, shard, refuse foreign outputs, skip done cases, run, print and
+// summarise (over 60 lines: the steps of a run in their order, each a call or a message)
+int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
+            int jobs, const std::string& shard, bool force, bool allow_large,
+            const std::vector<std::string>& run_paths) {
+  std::vector<LoadedCase> cases;
+  if (!load_all(paths, &cases, allow_large)) {
+    std::fprintf(stderr, "nothing was written: fix the case files above\n");
+    return kExitBadInput;
+  }
+  if (options.pdf && armstudy::report::find_chromium().empty()) {
+    std::fprintf(stderr, "armstudy: %s; nothing was written\n",
+                 armstudy::report::missing_chromium_text().c_str());
+    return kExitRuntime;
+  }
+  // a stable subset: cases sorted by name, every N-th from I
+  if (!take_shard(shard, &cases)) return kExitBadInput;
+  // never over a folder or file armstudy did not write: a user's folder of a case's name,
+  // a foreign index.html or summary.md (report/owned_output.hpp); nothing is written then
+  std::vector<std::string> names;
+  bool sweep_points = false;
+  for (const auto& c : cases) {
+    names.push_back(c.info.name);
+    sweep_points |= !c.info.sweep_name.empty();
+  }
+  if (refuse_foreign_outputs(options.out_dir, names, run_level_names(false, sweep_points)))
+    return kExitBadInput;
+  if (const int code = copy_manifest(run_paths, options.out_dir); code != kExitDone) return code;
+  // what killed runs on this host left behind (hidden temporary folders and files)
+  report_stale_outputs(options.out_dir);
+  if (!force)
+    if (const int code = skip_done_cases(&cases, options); code >= 0) return code;
+  // with --pdf, one browser prints each case's page as soon as the case is in place
+  armstudy::app::RunOptions case_options = options;
+  std::unique_ptr<armstudy::report::PdfPrinter> printer;
+  if (options.pdf && !cases.empty()) {
+    printer = std::make_unique<armstudy::report::PdfPrinter>(std::max(1, jobs));
+    case_options.printer = printer.get();
+  }
+  armstudy::cli::ProgressReporter progress(stderr, armstudy::cli::stderr_is_terminal());
+  // cases that ended in an error wrote no results.json: they are failed cases in summary.md
+  // and junit.xml all the same
+  std::vector<armstudy::cli::CaseOutput> errored;
+  int worst = run_cases(cases, options, case_options, jobs, progress, &errored);
   progress.finish();
   if (printer) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -419,39 +505,7 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     worst = std::max(worst, kExitRuntime);
   }
   // what CI reads, over every case in the output folder (not only this run's)
-  try {
-    std::vector<std::string> warnings;
-    auto outputs = armstudy::app::collect_outputs({options.out_dir}, &warnings);
-    // an errored case is failed, whatever an earlier run left in its folder
-    for (auto& e : errored) {
-      const auto it = std::find_if(outputs.begin(), outputs.end(), [&](const auto& o) {
-        return o.record.case_info.name == e.record.case_info.name;
-      });
-      if (it != outputs.end())
-        *it = std::move(e);
-      else
-        outputs.push_back(std::move(e));
-    }
-    std::sort(outputs.begin(), outputs.end(), [](const auto& a, const auto& b) {
-      return a.record.case_info.name < b.record.case_info.name;
-    });
-    armstudy::app::write_merged(outputs, options.out_dir);
-  } catch (const armstudy::report::ForeignOutput& e) {
-    std::fprintf(stderr, "armstudy: %s\n", armstudy::report::terminal_text(e.what()).c_str());
-    worst = std::max(worst, kExitBadInput);
-  } catch (const armstudy::app::InputLimitError& e) {
-    std::fprintf(stderr, "armstudy: no summary.md/junit.xml written: %s\n",
-                 armstudy::report::terminal_text(e.what()).c_str());
-    worst = std::max(worst, kExitBadInput);
-  } catch (const armstudy::cases::InputFileError& e) {
-    // a results.json in another folder of --out that is a FIFO, a device or a link
-    std::fprintf(stderr, "armstudy: no summary.md/junit.xml written: %s\n",
-                 armstudy::report::terminal_text(e.what()).c_str());
-    worst = std::max(worst, e.runtime() ? kExitRuntime : kExitBadInput);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "armstudy: cannot write summary.md/junit.xml: %s\n", e.what());
-    worst = std::max(worst, kExitRuntime);
-  }
+  worst = std::max(worst, write_summaries(options.out_dir, std::move(errored)));
   if (worst == kExitDone)
     std::fprintf(stderr, "all %zu case(s) done; output in %s\n", cases.size(),
                  options.out_dir.c_str());
@@ -461,11 +515,11 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
 int cmd_sweep_expand(const std::string& sweep_path, const std::string& out,
                      const std::vector<std::string>& base_dirs) {
   try {
-    const auto sw = armstudy::app::load_sweep(
+    const auto sw = armstudy::cli::load_sweep(
         sweep_path, std::vector<std::filesystem::path>(base_dirs.begin(), base_dirs.end()));
     std::fprintf(stderr, "sweep %s: %zu case(s); writing them to %s\n", sw.name.c_str(),
                  sw.points.size(), out.c_str());
-    const auto r = armstudy::app::expand_sweep(sw, out);
+    const auto r = armstudy::cli::expand_sweep(sw, out);
     for (const auto& id : r.removed)
       std::fprintf(stderr, "removed %s.yaml: no longer a point of the sweep\n", id.c_str());
     std::fprintf(stderr, "sweep %s: %zu case(s), %zu file(s) written to %s\n", sw.name.c_str(),
@@ -474,7 +528,7 @@ int cmd_sweep_expand(const std::string& sweep_path, const std::string& out,
   } catch (const armstudy::cases::CaseErrors& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitBadInput;
-  } catch (const armstudy::app::ExpandRefused& e) {
+  } catch (const armstudy::cli::ExpandRefused& e) {
     std::fprintf(stderr, "armstudy sweep expand: %s\n", e.what());
     return kExitBadInput;
   }
@@ -515,9 +569,8 @@ int cmd_list(const std::vector<std::string>& items, bool as_json) {
   return ok ? kExitDone : kExitBadInput;
 }
 
-int cmd_merge(const std::vector<std::string>& dirs, std::string out,
-              const std::string& manifest_file) {
-  std::vector<std::filesystem::path> ds(dirs.begin(), dirs.end());
+// says which of the folders to merge are missing or not folders; false when any is
+bool merge_folders_exist(const std::vector<std::filesystem::path>& ds) {
   bool missing = false;
   for (const auto& d : ds) {
     std::error_code ec;
@@ -527,77 +580,29 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out,
       missing = true;
     }
   }
-  if (missing) {
-    std::fprintf(stderr, "nothing was written\n");
-    return kExitBadInput;
-  }
-  if (out.empty()) out = dirs.front();
-  std::vector<std::string> warnings;
-  std::vector<armstudy::app::CaseOutput> outputs;
-  // the sweep the folders are the result of: --manifest, else one found in a folder
-  std::optional<armstudy::app::SweepManifest> manifest;
-  std::filesystem::path manifest_at = manifest_file;
+  return !missing;
+}
+
+// names the cases of the sweep without a result (the first ten)
+void report_missing_cases(const std::vector<armstudy::cli::CaseOutput>& outputs,
+                          size_t missing_cases, const armstudy::cli::SweepManifest& manifest,
+                          const std::filesystem::path& manifest_at) {
+  std::string names;
+  size_t listed = 0;
+  for (const auto& o : outputs)
+    if (o.record.status == "missing" && listed++ < 10) names += "\n  " + o.record.case_info.name;
+  if (missing_cases > 10) names += "\n  ... and " + std::to_string(missing_cases - 10) + " more";
+  std::fprintf(stderr, "armstudy merge: %zu case(s) of sweep '%s' (%s) have no result:%s\n",
+               missing_cases, armstudy::report::terminal_text(manifest.sweep).c_str(),
+               manifest_at.c_str(), armstudy::report::terminal_text(names).c_str());
+}
+
+// the merged pages: the sweep report (when the cases are a sweep's) and the index; the exit
+// code (kExitDone, or why not, said)
+int write_merged_pages(const std::vector<armstudy::cli::CaseOutput>& outputs,
+                       const std::string& out) {
   try {
-    outputs = armstudy::app::collect_outputs(ds, &warnings);
-    if (!manifest_file.empty()) {
-      manifest = armstudy::app::read_manifest(manifest_file);
-      if (!manifest)
-        throw armstudy::app::InputLimitError(manifest_file +
-                                             ": no such file; expected the sweep manifest that "
-                                             "'armstudy sweep expand' writes");
-    }
-    for (const auto& d : ds) {
-      if (manifest) break;
-      manifest_at = d / armstudy::app::kManifestName;
-      manifest = armstudy::app::read_manifest(manifest_at);
-    }
-  } catch (const armstudy::cases::InputFileError& e) {
-    std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n",
-                 armstudy::report::terminal_text(e.what()).c_str());
-    return e.runtime() ? kExitRuntime : kExitBadInput;
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n",
-                 armstudy::report::terminal_text(e.what()).c_str());
-    return kExitBadInput;
-  }
-  size_t missing_cases = 0;
-  if (manifest)
-    missing_cases = armstudy::app::apply_manifest(*manifest, manifest_at, &outputs, &warnings);
-  for (const auto& w : warnings)
-    std::fprintf(stderr, "warning: %s\n", armstudy::report::terminal_text(w).c_str());
-  if (outputs.empty()) {
-    std::fprintf(stderr,
-                 "armstudy merge: no case folder with a results.json in the folder(s) given; "
-                 "expected output folders of 'armstudy run'\nnothing was written\n");
-    return kExitBadInput;
-  }
-  const bool sweep_points = std::any_of(outputs.begin(), outputs.end(), [](const auto& o) {
-    return o.record.case_info.sweep.has_value();
-  });
-  if (refuse_foreign_outputs(out, {}, run_level_names(sweep_points, sweep_points)))
-    return kExitBadInput;
-  if (missing_cases) {
-    std::string names;
-    size_t listed = 0;
-    for (const auto& o : outputs)
-      if (o.record.status == "missing" && listed++ < 10) names += "\n  " + o.record.case_info.name;
-    if (missing_cases > 10) names += "\n  ... and " + std::to_string(missing_cases - 10) + " more";
-    std::fprintf(stderr, "armstudy merge: %zu case(s) of sweep '%s' (%s) have no result:%s\n",
-                 missing_cases, armstudy::report::terminal_text(manifest->sweep).c_str(),
-                 manifest_at.c_str(), armstudy::report::terminal_text(names).c_str());
-  }
-  size_t failed = 0;
-  try {
-    failed = armstudy::app::write_merged(outputs, out);
-  } catch (const armstudy::report::ForeignOutput& e) {
-    std::fprintf(stderr, "armstudy: %s\n", armstudy::report::terminal_text(e.what()).c_str());
-    return kExitBadInput;
-  }
-  std::fprintf(stderr, "merged %zu case(s) into %s (%zu failed)\n", outputs.size(), out.c_str(),
-               failed);
-  // the pages: every case folder inside `out`, and the sweep's plots over its axes
-  try {
-    const nlohmann::json table = armstudy::app::sweep_json(outputs);
+    const nlohmann::json table = armstudy::cli::sweep_json(outputs);
     if (!table["rows"].empty()) {
       std::string name = "sweep";
       for (const auto& o : outputs)
@@ -618,126 +623,133 @@ int cmd_merge(const std::vector<std::string>& dirs, std::string out,
     std::fprintf(stderr, "armstudy: cannot write the pages: %s\n", e.what());
     return kExitRuntime;
   }
+  return kExitDone;
+}
+
+int cmd_merge(const std::vector<std::string>& dirs, std::string out,
+              const std::string& manifest_file) {
+  std::vector<std::filesystem::path> ds(dirs.begin(), dirs.end());
+  if (!merge_folders_exist(ds)) {
+    std::fprintf(stderr, "nothing was written\n");
+    return kExitBadInput;
+  }
+  if (out.empty()) out = dirs.front();
+  std::vector<std::string> warnings;
+  std::vector<armstudy::cli::CaseOutput> outputs;
+  // the sweep the folders are the result of: --manifest, else one found in a folder
+  std::optional<armstudy::cli::SweepManifest> manifest;
+  std::filesystem::path manifest_at = manifest_file;
+  try {
+    outputs = armstudy::cli::collect_outputs(ds, &warnings);
+    if (!manifest_file.empty()) {
+      manifest = armstudy::cli::read_manifest(manifest_file);
+      if (!manifest)
+        throw armstudy::cli::InputLimitError(manifest_file +
+                                             ": no such file; expected the sweep manifest that "
+                                             "'armstudy sweep expand' writes");
+    }
+    for (const auto& d : ds) {
+      if (manifest) break;
+      manifest_at = d / armstudy::cli::kManifestName;
+      manifest = armstudy::cli::read_manifest(manifest_at);
+    }
+  } catch (const armstudy::cases::InputFileError& e) {
+    std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    return e.runtime() ? kExitRuntime : kExitBadInput;
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "armstudy merge: %s\nnothing was written\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    return kExitBadInput;
+  }
+  size_t missing_cases = 0;
+  if (manifest)
+    missing_cases = armstudy::cli::apply_manifest(*manifest, manifest_at, &outputs, &warnings);
+  for (const auto& w : warnings)
+    std::fprintf(stderr, "warning: %s\n", armstudy::report::terminal_text(w).c_str());
+  if (outputs.empty()) {
+    std::fprintf(stderr,
+                 "armstudy merge: no case folder with a results.json in the folder(s) given; "
+                 "expected output folders of 'armstudy run'\nnothing was written\n");
+    return kExitBadInput;
+  }
+  const bool sweep_points = std::any_of(outputs.begin(), outputs.end(), [](const auto& o) {
+    return o.record.case_info.sweep.has_value();
+  });
+  if (refuse_foreign_outputs(out, {}, run_level_names(sweep_points, sweep_points)))
+    return kExitBadInput;
+  if (missing_cases) report_missing_cases(outputs, missing_cases, *manifest, manifest_at);
+  size_t failed = 0;
+  try {
+    failed = armstudy::cli::write_merged(outputs, out);
+  } catch (const armstudy::report::ForeignOutput& e) {
+    std::fprintf(stderr, "armstudy: %s\n", armstudy::report::terminal_text(e.what()).c_str());
+    return kExitBadInput;
+  }
+  std::fprintf(stderr, "merged %zu case(s) into %s (%zu failed)\n", outputs.size(), out.c_str(),
+               failed);
+  // the pages: every case folder inside `out`, and the sweep's plots over its axes
+  if (const int code = write_merged_pages(outputs, out); code != kExitDone) return code;
   return failed ? kExitUnsolved : kExitDone;
+}
+
+// what the given command's output folder and open files allow: kExitDone, or the exit code
+// having said why not
+int check_before_running(const armstudy::cli::Commands& c, const armstudy::cli::Args& a) {
+  // the output folder: "" or a file is bad usage, refused before anything is done
+  const std::string* out_given = *c.run                             ? &a.out_dir
+                                 : *c.expand                        ? &a.sweep_out
+                                 : *c.diff                          ? &a.diff_out
+                                 : *c.merge && c.merge_out->count() ? &a.merge_out
+                                                                    : nullptr;
+  if (out_given) {
+    if (const std::string why = out_problem(*out_given); !why.empty()) {
+      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      return kExitBadInput;
+    }
+  }
+  if (*c.run || *c.merge || *c.diff) {
+    if (const std::string why = armstudy::cli::ensure_open_files(); !why.empty()) {
+      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      return kExitRuntime;
+    }
+  }
+  return kExitDone;
+}
+
+// runs the command given; its exit code
+int run_command(const armstudy::cli::Commands& c, armstudy::cli::Args& a) {
+  if (*c.validate) return cmd_validate(a.validate_paths, a.allow_large);
+  if (*c.expand) return cmd_sweep_expand(a.sweep_file, a.sweep_out, a.base_dirs);
+  if (*c.list) return cmd_list(a.list_items, a.list_json);
+  if (*c.merge) return cmd_merge(a.merge_dirs, a.merge_out, a.merge_manifest);
+  if (*c.diff) {
+    a.diff_options.base = a.diff_base;
+    a.diff_options.now = a.diff_new;
+    a.diff_options.out = a.diff_out;
+    return armstudy::cli::run_diff(a.diff_options);
+  }
+  a.options.out_dir = a.out_dir;
+  a.options.render = !a.no_render;
+  a.options.sensitivity = !a.no_sensitivity;
+  return cmd_run(case_files(a.run_paths), a.options, a.jobs, a.shard, a.force, a.allow_large,
+                 a.run_paths);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   armstudy::cli::keep_freed_memory();          // before any thread: see process_memory.hpp
-  armstudy::app::install_interrupt_cleanup();  // first: every thread inherits its signal mask
+  armstudy::cli::install_interrupt_cleanup();  // first: every thread inherits its signal mask
   // a write to a pipe or socket whose reader is gone (a helper that died, a closed `| head`)
   // fails with EPIPE and is reported, instead of killing armstudy without a word
   std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{
       "armstudy: energy-optimal placement, throwing and time-optimal studies of planar "
       "robot arms, from YAML case files to MuJoCo-rendered reports"};
-  app.set_version_flag(
-      "--version", [] { return armstudy::cli::version_text(); },
-      "Print armstudy's version and commit, the versions of the libraries it "
-      "runs with and the browser --pdf would use, and exit");
-  app.require_subcommand(1);
-  std::string studies;
-  for (const auto& e : armstudy::app::study_registry())
-    studies += "\n  " + std::string(e.study) + ": " + std::string(e.summary);
-  app.footer("Studies:" + studies +
-             "\nExit codes: 0 done, 1 a study could not be solved or failed a check, 2 bad input "
-             "or usage, 3 runtime failure (rendering, output, internal error).");
-
-  std::vector<std::string> run_paths, validate_paths;
-  armstudy::app::RunOptions options;
-  std::string out_dir = "reports/out";
-  bool no_render = false;
-  int jobs = 1;
-  auto* run = app.add_subcommand("run", "Solve, render and report case files");
-  run->add_option("cases", run_paths, "Case files (YAML), or folders of case files")
-      ->required()
-      ->check(CLI::ExistingPath);
-  run->add_option("--out", out_dir, "Output folder; each case goes to OUT/<case name>/")
-      ->capture_default_str();
-  run->add_flag("--no-render", no_render, "Skip MuJoCo frame rendering (everything else is made)");
-  bool no_sensitivity = false;
-  run->add_flag("--no-sensitivity", no_sensitivity,
-                "Skip the re-solves of each case's sensitivity: part (docs/sensitivity.md)");
-  run->add_flag("--pdf", options.pdf,
-                "Also print each report to report.pdf with headless Chromium");
-  run->add_option("--jobs,-j", jobs, "Cases run in parallel")
-      ->check(CLI::Range(1, 64))
-      ->capture_default_str();
-  std::string shard;
-  bool force = false;
-  run->add_option("--shard", shard,
-                  "Run only shard I of N (0 <= I < N) of the cases sorted by name, e.g. 0/4");
-  run->add_flag("--force", force,
-                "Redo cases whose output already exists for the same case file (default: skip)");
-  bool allow_large = false;
-  const char* allow_large_help =
-      "Run cases whose estimated work or memory is beyond the budget (docs/budgets.md)";
-  run->add_flag("--allow-large", allow_large, allow_large_help);
-
-  std::string sweep_file, sweep_out = "sweep-cases";
-  auto* sweep = app.add_subcommand("sweep", "Parameter sweeps over a base case");
-  sweep->require_subcommand(1);
-  auto* expand = sweep->add_subcommand("expand", "Write one case file per sweep point");
-  expand->add_option("sweep", sweep_file, "Sweep file (YAML)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  expand->add_option("--out", sweep_out, "Folder for the generated case files")
-      ->capture_default_str();
-  std::vector<std::string> base_dirs;
-  expand
-      ->add_option("--base-dir", base_dirs,
-                   "A folder the sweep's base case may also be in (default: only the sweep "
-                   "file's folder)")
-      ->check(CLI::ExistingDirectory);
-
-  std::vector<std::string> list_items;
-  bool list_json = false;
-  auto* list = app.add_subcommand("list", "Print the case ids of case files, in a stable order");
-  list->add_option("dirs", list_items, "Folders of case files (or case files)")->required();
-  list->add_flag("--json", list_json, "Print id, study, path and sha256 as JSON");
-
-  std::vector<std::string> merge_dirs;
-  std::string merge_out;
-  auto* merge =
-      app.add_subcommand("merge",
-                         "Build index.html, summary.md, junit.xml, sweep tables and the sweep "
-                         "report (sweep/index.html) from the results.json of output folders");
-  merge->add_option("dirs", merge_dirs, "Output folders (DIR/<case>/results.json)")->required();
-  auto* merge_out_option =
-      merge->add_option("--out", merge_out, "Where to write (default: the first folder)");
-  std::string merge_manifest;
-  merge->add_option("--manifest", merge_manifest,
-                    "The sweep's sweep-manifest.json (default: one in a merged folder); a case "
-                    "of the sweep without a result fails the merge");
-  armstudy::app::DiffOptions diff_options;
-  std::string diff_base, diff_new, diff_out = diff_options.out.string();
-  auto* diff = app.add_subcommand(
-      "diff",
-      "What changed between two output folders of run or merge (diff.html, diff.md); exit 0 "
-      "when nothing moved beyond its tolerance, 1 when something did, 2 on bad input");
-  diff->add_option("base", diff_base, "The base output folder (e.g. the main branch's reports)")
-      ->required();
-  diff->add_option("new", diff_new, "The new output folder (e.g. the pull request's reports)")
-      ->required();
-  diff->add_option("--out", diff_out, "Where to write diff.html and diff.md")
-      ->capture_default_str();
-  diff->add_option(
-      "--tolerances", diff_options.tolerances_file,
-      "YAML file of tolerances per study and key figure (default: exact, run times ignored)");
-  diff->add_option(
-          "--pixel-tolerance", diff_options.pixel_tolerance,
-          "A pixel differs when a channel differs by more than this (0-255; default 0 or the "
-          "tolerances file's frames.channel)")
-      ->check(CLI::Range(0, 255));
-  diff->add_option(
-      "--pixels", diff_options.pixels_allowed,
-      "Pixels beyond the pixel tolerance a frame may have and still match (default 0 or "
-      "frames.pixels)");
-  auto* validate = app.add_subcommand("validate", "Check case files without running them");
-  validate->add_option("cases", validate_paths, "Case files (YAML)")->required();
-  validate->add_flag("--allow-large", allow_large, allow_large_help);
-
+  armstudy::cli::describe_app(app);
+  armstudy::cli::Args a;
+  const armstudy::cli::Commands commands = armstudy::cli::add_commands(app, a);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -746,45 +758,10 @@ int main(int argc, char** argv) {
                ? 0
                : (code ? kExitBadInput : 0);
   }
-  // the output folder: "" or a file is bad usage, refused before anything is done
-  const std::string* out_given = *run                                  ? &out_dir
-                                 : *expand                             ? &sweep_out
-                                 : *diff                               ? &diff_out
-                                 : *merge && merge_out_option->count() ? &merge_out
-                                                                       : nullptr;
-  if (out_given) {
-    if (const std::string why = out_problem(*out_given); !why.empty()) {
-      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
-      return kExitBadInput;
-    }
-  }
-  if (*run || *merge || *diff) {
-    if (const std::string why = armstudy::cli::ensure_open_files(); !why.empty()) {
-      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
-      return kExitRuntime;
-    }
-  }
+  if (const int code = check_before_running(commands, a); code != kExitDone) return code;
   int code = kExitRuntime;
   try {
-    if (*validate)
-      code = cmd_validate(validate_paths, allow_large);
-    else if (*expand)
-      code = cmd_sweep_expand(sweep_file, sweep_out, base_dirs);
-    else if (*list)
-      code = cmd_list(list_items, list_json);
-    else if (*merge)
-      code = cmd_merge(merge_dirs, merge_out, merge_manifest);
-    else if (*diff) {
-      diff_options.base = diff_base;
-      diff_options.now = diff_new;
-      diff_options.out = diff_out;
-      code = armstudy::app::run_diff(diff_options);
-    } else {
-      options.out_dir = out_dir;
-      options.render = !no_render;
-      options.sensitivity = !no_sensitivity;
-      code = cmd_run(case_files(run_paths), options, jobs, shard, force, allow_large, run_paths);
-    }
+    code = run_command(commands, a);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "armstudy: internal error: %s\n", e.what());
     code = kExitRuntime;

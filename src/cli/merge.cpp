@@ -17,7 +17,7 @@
 #include "report/results_record.hpp"
 #include "report/text_escape.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -77,7 +77,7 @@ const char* run_level_file(const std::string& name) {
        {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"})
     if (name == f) return f;
   // each study's figure over all its cases on the index page (e.g. placement_root_loci.svg)
-  for (const StudyEntry& e : study_registry())
+  for (const app::StudyEntry& e : app::study_registry())
     if (!e.index_figure.file.empty() && name == e.index_figure.file)
       return e.index_figure.file.data();
   return nullptr;
@@ -88,7 +88,7 @@ std::string results_problem(const json& r) {
     // the shared record, typed and strict (schema_version first), then the study's own
     // section read into its typed result: a misspelt key is an error naming it
     const report::ResultsRecord record = report::read_record(r);
-    if (const StudyEntry* study = find_study(record.study)) study->check_section(r);
+    if (const app::StudyEntry* study = app::find_study(record.study)) study->check_section(r);
   } catch (const report::ResultsError& x) {
     if (x.path() == "/schema_version")
       return std::string(x.what()).substr(std::string("/schema_version: ").size());
@@ -417,15 +417,15 @@ size_t write_merged(const std::vector<CaseOutput>& cases, const fs::path& out_di
   for (const char* name : {"summary.md", "junit.xml", "sweep.csv", "sweep.json"})
     if (!csv.empty() || std::string(name).ends_with(".md") || std::string(name).ends_with(".xml"))
       report::check_run_level_output(out_dir, name);
-  write_file_atomic(out_dir / "summary.md", summary_markdown(cases));
-  write_file_atomic(out_dir / "junit.xml", junit_xml(cases));
+  app::write_file_atomic(out_dir / "summary.md", summary_markdown(cases));
+  app::write_file_atomic(out_dir / "junit.xml", junit_xml(cases));
   if (!csv.empty()) {
-    write_file_atomic(out_dir / "sweep.csv", csv);
-    write_file_atomic(out_dir / "sweep.json", sweep_json(cases).dump(2) + "\n");
+    app::write_file_atomic(out_dir / "sweep.csv", csv);
+    app::write_file_atomic(out_dir / "sweep.json", sweep_json(cases).dump(2) + "\n");
   }
   size_t failed = 0;
   for (const auto& c : cases) failed += !case_passed(c.record);
   return failed;
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

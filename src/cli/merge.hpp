@@ -14,7 +14,7 @@
 #include "cli/sweep_manifest.hpp"
 #include "report/results_record.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 /// One case output found on disk.
 struct CaseOutput {
@@ -96,4 +96,4 @@ nlohmann::json sweep_json(const std::vector<CaseOutput>& cases);
 /// sweep.json into out_dir, each atomically. Returns the number of failed cases.
 size_t write_merged(const std::vector<CaseOutput>& cases, const std::filesystem::path& out_dir);
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace {
 std::string clock_text(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "--:--";
@@ -169,4 +169,4 @@ void ProgressReporter::finish() {
   if (heartbeat_.joinable()) heartbeat_.join();
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -21,7 +21,7 @@
 
 #include "studies/common.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 class ProgressReporter {
  public:
@@ -82,4 +82,4 @@ class ProgressReporter {
 /// True when stderr is a terminal and TERM is not "dumb".
 bool stderr_is_terminal();
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -18,7 +18,7 @@
 #include "cli/confined_path.hpp"
 #include "cli/sweep_manifest.hpp"
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace fs = std::filesystem;
 
 namespace {
@@ -206,104 +206,80 @@ size_t sweep_point_count(const Sweep& sweep) {
   return count;
 }
 
-Sweep load_sweep(const std::string& path, const std::vector<fs::path>& base_dirs) {
-  cases::Diagnostics diag(path);
-  std::string text;
-  const auto root_node = cases::parse_file(path, diag, &text);
-  if (!root_node) diag.throw_if_any();
-  Sweep sw;
-  sw.path = path;
-  cases::Map root(*root_node, diag, "");
-  sw.name = root.required_string("sweep").value_or("");
-  const auto base_rel = root.required_string("base");
-  const auto mode = root.choice("mode", {"grid", "zip"});
-  sw.zip = mode && *mode == "zip";
-  auto axes = root.seq("axes");
-  if (!axes && !root.has("axes"))
-    root.error_here("missing required key 'axes'; expected a list of {path, values|range}");
-  if (axes && axes->size() == 0) root.error("axes", "'axes' is empty; expected at least one axis");
-  if (axes) {
-    for (size_t i = 0; i < axes->size(); ++i) {
-      auto a = axes->map_at(i);
-      if (!a) continue;
-      SweepAxis ax;
-      ax.mark = a->node().Mark();
-      ax.path = a->required_string("path").value_or("");
-      const bool has_values = a->has("values"), has_range = a->has("range");
-      if (has_values == has_range) {
-        a->get("values");
-        a->get("range");
-        a->error_here("axis " + std::to_string(i + 1) +
-                      " needs exactly one of 'values' or 'range'");
-      } else if (has_values) {
-        const YAML::Node v = a->get("values");
-        if (!v.IsSequence() || v.size() == 0)
-          a->error("values", "'" + a->path_of("values") +
-                                 "' is not a non-empty list; expected a list of values");
-        else
-          for (const auto& x : v) ax.values.push_back(x);
-      } else if (auto r = a->map("range")) {
-        const double from = r->required_number("from", cases::NumberRule::any(""));
-        const double to = r->required_number("to", cases::NumberRule::any(""));
-        const int steps = r->integer_or("steps", 2, 1, 100000);
-        r->finish();
-        if (std::isfinite(from) && std::isfinite(to)) {
-          for (int k = 0; k < steps; ++k) {
-            const double x = steps == 1 ? from : from + (to - from) * k / (steps - 1);
-            std::ostringstream os;
-            os.imbue(std::locale::classic());
-            os.precision(12);
-            os << (k == steps - 1 ? to : x);
-            ax.values.push_back(YAML::Load(os.str()));
-          }
-        }
-      }
-      a->finish();
-      if (const std::string bad = axis_problem(ax, sw.axes); !bad.empty()) diag.error(ax.mark, bad);
-      sw.axes.push_back(ax);
-    }
-  }
-  root.finish();
-  if (base_rel) {
-    std::string why;
-    sw.base_path = confined_base(path, *base_rel, base_dirs, &why);
-    if (!why.empty()) {
-      root.error("base", why);
-    } else {
-      // the file is named, never quoted: it may be anything the path reaches
-      cases::Diagnostics bd(sw.base_path);
-      std::error_code ec;
-      const auto b = fs::exists(sw.base_path, ec) ? cases::parse_file(sw.base_path, bd, nullptr)
-                                                  : std::nullopt;
-      if (!fs::exists(sw.base_path, ec)) {
-        root.error("base", "'base' names " + cases::brief(sw.base_path, 200) +
-                               ", which does not exist; expected a case file");
-      } else if (!b || !b->IsMap()) {
-        std::string where;
-        if (!bd.errors().empty() && bd.errors()[0].line > 0)
-          where = " (at line " + std::to_string(bd.errors()[0].line) + ")";
-        root.error("base", "'base' names " + cases::brief(sw.base_path, 200) +
-                               ", which is not a case file" + where +
-                               "; expected a YAML mapping with study: and name:");
-      } else {
-        sw.base = *b;
-      }
-    }
-  }
-  if (sw.zip && sw.axes.size() > 1) {
-    for (const auto& ax : sw.axes)
-      if (ax.values.size() != sw.axes[0].values.size())
-        diag.error(ax.mark, "zip axis '" + cases::brief(ax.path) + "' has " +
-                                std::to_string(ax.values.size()) + " values; expected " +
-                                std::to_string(sw.axes[0].values.size()) + " like the first axis");
-  }
-  for (const auto& ax : sw.axes)
-    if (ax.values.empty() && diag.empty())
-      diag.error(ax.mark,
-                 "axis '" + cases::brief(ax.path) + "' has no values; expected at least one");
-  diag.throw_if_any();
+namespace {
 
-  // the number of points, without overflow, and what generating them costs
+// one entry of `axes`: its path and its values, listed or a range
+SweepAxis read_axis(cases::Map& map, size_t i) {
+  cases::Map* a = &map;
+  SweepAxis ax;
+  ax.mark = a->node().Mark();
+  ax.path = a->required_string("path").value_or("");
+  const bool has_values = a->has("values"), has_range = a->has("range");
+  if (has_values == has_range) {
+    a->get("values");
+    a->get("range");
+    a->error_here("axis " + std::to_string(i + 1) + " needs exactly one of 'values' or 'range'");
+  } else if (has_values) {
+    const YAML::Node v = a->get("values");
+    if (!v.IsSequence() || v.size() == 0)
+      a->error("values",
+               "'" + a->path_of("values") + "' is not a non-empty list; expected a list of values");
+    else
+      for (const auto& x : v) ax.values.push_back(x);
+  } else if (auto r = a->map("range")) {
+    const double from = r->required_number("from", cases::NumberRule::any(""));
+    const double to = r->required_number("to", cases::NumberRule::any(""));
+    const int steps = r->integer_or("steps", 2, 1, 100000);
+    r->finish();
+    if (std::isfinite(from) && std::isfinite(to)) {
+      for (int k = 0; k < steps; ++k) {
+        const double x = steps == 1 ? from : from + (to - from) * k / (steps - 1);
+        std::ostringstream os;
+        os.imbue(std::locale::classic());
+        os.precision(12);
+        os << (k == steps - 1 ? to : x);
+        ax.values.push_back(YAML::Load(os.str()));
+      }
+    }
+  }
+  a->finish();
+  return ax;
+}
+
+// the sweep's base case, `base` relative to the sweep file (or one of `base_dirs`): its path
+// and its YAML, or an error at `base`
+void read_base(const std::string& path, const std::string& base_rel,
+               const std::vector<fs::path>& base_dirs, cases::Map& root, Sweep* out) {
+  Sweep& sw = *out;
+  std::string why;
+  sw.base_path = confined_base(path, base_rel, base_dirs, &why);
+  if (!why.empty()) {
+    root.error("base", why);
+  } else {
+    // the file is named, never quoted: it may be anything the path reaches
+    cases::Diagnostics bd(sw.base_path);
+    std::error_code ec;
+    const auto b =
+        fs::exists(sw.base_path, ec) ? cases::parse_file(sw.base_path, bd, nullptr) : std::nullopt;
+    if (!fs::exists(sw.base_path, ec)) {
+      root.error("base", "'base' names " + cases::brief(sw.base_path, 200) +
+                             ", which does not exist; expected a case file");
+    } else if (!b || !b->IsMap()) {
+      std::string where;
+      if (!bd.errors().empty() && bd.errors()[0].line > 0)
+        where = " (at line " + std::to_string(bd.errors()[0].line) + ")";
+      root.error("base", "'base' names " + cases::brief(sw.base_path, 200) +
+                             ", which is not a case file" + where +
+                             "; expected a YAML mapping with study: and name:");
+    } else {
+      sw.base = *b;
+    }
+  }
+}
+
+// the number of points, without overflow; an error when there are too many or generating
+// them would make too many YAML nodes
+size_t checked_point_count(const Sweep& sw, cases::Diagnostics& diag) {
   const size_t count = sweep_point_count(sw);
   const size_t base_nodes = count_nodes(sw.base);
   if (count > kMaxSweepPoints) {
@@ -327,63 +303,118 @@ Sweep load_sweep(const std::string& path, const std::vector<fs::path>& base_dirs
                    cases::format_number(double(count) * double(base_nodes)) +
                    " nodes; expected at most " + cases::format_number(kMaxSweepNodes));
   }
+  return count;
+}
+
+// point k of the sweep: a clone of the base with the axis values set, named by the base and
+// a hash of the values, checked to be a valid case; false (with an error) when it is not
+bool add_point(size_t k, const std::string& base_name, const std::string& base_sha,
+               cases::Diagnostics& diag, Sweep* out) {
+  Sweep& sw = *out;
+  YAML::Node doc = YAML::Clone(sw.base);
+  std::string ident = base_sha;
+  YAML::Node point(YAML::NodeType::Map);
+  size_t rest = k;
+  std::vector<size_t> idx(sw.axes.size());
+  for (size_t a = sw.axes.size(); a-- > 0;) {
+    idx[a] = sw.zip ? k : rest % sw.axes[a].values.size();
+    if (!sw.zip) rest /= sw.axes[a].values.size();
+  }
+  bool ok = true;
+  for (size_t a = 0; a < sw.axes.size(); ++a) {
+    const SweepAxis& ax = sw.axes[a];
+    const YAML::Node& v = ax.values[idx[a]];
+    const std::string bad = set_path(doc, ax.path, v);
+    if (!bad.empty()) {
+      diag.error(ax.mark, "axis path '" + cases::brief(ax.path) +
+                              "' names no parameter of the base case: " + bad);
+      ok = false;
+      continue;
+    }
+    point[ax.path] = YAML::Clone(v);
+    ident += "\n" + ax.path + "=" + scalar_text(v);
+  }
+  if (!ok) return false;
+  const std::string name = base_name + "-" + cases::sha256_hex(ident).substr(0, 10);
+  doc["name"] = name;
+  YAML::Node swn(YAML::NodeType::Map);
+  swn["name"] = sw.name;
+  swn["point"] = point;
+  doc["sweep"] = swn;
+  YAML::Emitter e;
+  e << doc;
+  SweepPoint p{name,
+               kGeneratedHeader + sw.path + "; do not edit\n" + std::string(e.c_str()) + "\n"};
+  // the generated case must be valid: an error names the axis and the point
+  try {
+    // the budget is judged by run and validate, where --allow-large can raise it
+    app::load_case_text(p.yaml, name + ".yaml", app::LoadOptions{true});
+  } catch (const cases::CaseErrors& errs) {
+    std::string what = errs.errors().empty() ? "" : errs.errors()[0].message;
+    std::string vals;
+    for (size_t a = 0; a < sw.axes.size(); ++a)
+      vals += (a ? ", " : "") + cases::brief(sw.axes[a].path) + " = " +
+              cases::brief(scalar_text(sw.axes[a].values[idx[a]]));
+    diag.error(sw.axes.empty() ? YAML::Mark() : sw.axes[0].mark,
+               "the point (" + vals + ") gives an invalid case: " + what);
+    return false;
+  }
+  sw.points.push_back(std::move(p));
+  return true;
+}
+
+}  // namespace
+
+Sweep load_sweep(const std::string& path, const std::vector<fs::path>& base_dirs) {
+  cases::Diagnostics diag(path);
+  std::string text;
+  const auto root_node = cases::parse_file(path, diag, &text);
+  if (!root_node) diag.throw_if_any();
+  Sweep sw;
+  sw.path = path;
+  cases::Map root(*root_node, diag, "");
+  sw.name = root.required_string("sweep").value_or("");
+  const auto base_rel = root.required_string("base");
+  const auto mode = root.choice("mode", {"grid", "zip"});
+  sw.zip = mode && *mode == "zip";
+  auto axes = root.seq("axes");
+  if (!axes && !root.has("axes"))
+    root.error_here("missing required key 'axes'; expected a list of {path, values|range}");
+  if (axes && axes->size() == 0) root.error("axes", "'axes' is empty; expected at least one axis");
+  if (axes) {
+    for (size_t i = 0; i < axes->size(); ++i) {
+      auto a = axes->map_at(i);
+      if (!a) continue;
+      SweepAxis ax = read_axis(*a, i);
+      if (const std::string bad = axis_problem(ax, sw.axes); !bad.empty()) diag.error(ax.mark, bad);
+      sw.axes.push_back(ax);
+    }
+  }
+  root.finish();
+  if (base_rel) read_base(path, *base_rel, base_dirs, root, &sw);
+  if (sw.zip && sw.axes.size() > 1) {
+    for (const auto& ax : sw.axes)
+      if (ax.values.size() != sw.axes[0].values.size())
+        diag.error(ax.mark, "zip axis '" + cases::brief(ax.path) + "' has " +
+                                std::to_string(ax.values.size()) + " values; expected " +
+                                std::to_string(sw.axes[0].values.size()) + " like the first axis");
+  }
+  for (const auto& ax : sw.axes)
+    if (ax.values.empty() && diag.empty())
+      diag.error(ax.mark,
+                 "axis '" + cases::brief(ax.path) + "' has no values; expected at least one");
+  diag.throw_if_any();
+
+  // the number of points, without overflow, and what generating them costs
+  const size_t count = checked_point_count(sw, diag);
   diag.throw_if_any();
 
   // every point: a clone of the base with the axis values set
   const std::string base_name =
       sw.base["name"] && sw.base["name"].IsScalar() ? sw.base["name"].Scalar() : "case";
   const std::string base_sha = cases::sha256_hex(YAML::Dump(sw.base));
-  for (size_t k = 0; k < count; ++k) {
-    YAML::Node doc = YAML::Clone(sw.base);
-    std::string ident = base_sha;
-    YAML::Node point(YAML::NodeType::Map);
-    size_t rest = k;
-    std::vector<size_t> idx(sw.axes.size());
-    for (size_t a = sw.axes.size(); a-- > 0;) {
-      idx[a] = sw.zip ? k : rest % sw.axes[a].values.size();
-      if (!sw.zip) rest /= sw.axes[a].values.size();
-    }
-    bool ok = true;
-    for (size_t a = 0; a < sw.axes.size(); ++a) {
-      const SweepAxis& ax = sw.axes[a];
-      const YAML::Node& v = ax.values[idx[a]];
-      const std::string bad = set_path(doc, ax.path, v);
-      if (!bad.empty()) {
-        diag.error(ax.mark, "axis path '" + cases::brief(ax.path) +
-                                "' names no parameter of the base case: " + bad);
-        ok = false;
-        continue;
-      }
-      point[ax.path] = YAML::Clone(v);
-      ident += "\n" + ax.path + "=" + scalar_text(v);
-    }
-    if (!ok) break;
-    const std::string name = base_name + "-" + cases::sha256_hex(ident).substr(0, 10);
-    doc["name"] = name;
-    YAML::Node swn(YAML::NodeType::Map);
-    swn["name"] = sw.name;
-    swn["point"] = point;
-    doc["sweep"] = swn;
-    YAML::Emitter e;
-    e << doc;
-    SweepPoint p{name,
-                 kGeneratedHeader + sw.path + "; do not edit\n" + std::string(e.c_str()) + "\n"};
-    // the generated case must be valid: an error names the axis and the point
-    try {
-      // the budget is judged by run and validate, where --allow-large can raise it
-      load_case_text(p.yaml, name + ".yaml", LoadOptions{true});
-    } catch (const cases::CaseErrors& errs) {
-      std::string what = errs.errors().empty() ? "" : errs.errors()[0].message;
-      std::string vals;
-      for (size_t a = 0; a < sw.axes.size(); ++a)
-        vals += (a ? ", " : "") + cases::brief(sw.axes[a].path) + " = " +
-                cases::brief(scalar_text(sw.axes[a].values[idx[a]]));
-      diag.error(sw.axes.empty() ? YAML::Mark() : sw.axes[0].mark,
-                 "the point (" + vals + ") gives an invalid case: " + what);
-      break;
-    }
-    sw.points.push_back(std::move(p));
-  }
+  for (size_t k = 0; k < count; ++k)
+    if (!add_point(k, base_name, base_sha, diag, &sw)) break;
   diag.throw_if_any();
   return sw;
 }
@@ -423,7 +454,7 @@ ExpandResult expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
                                &runtime) &&
         now == p.yaml)
       continue;
-    write_file_atomic(f, p.yaml);
+    app::write_file_atomic(f, p.yaml);
     ++r.written;
   }
   // points no longer in the sweep: only case files expansion wrote (their first line says so)
@@ -439,8 +470,8 @@ ExpandResult expand_sweep(const Sweep& sweep, const fs::path& out_dir) {
     r.removed.push_back(f.stem().string());
   }
   SweepManifest m{sweep.name, sweep.path, std::vector<std::string>(ids.begin(), ids.end())};
-  write_file_atomic(manifest_path, manifest_text(m));
+  app::write_file_atomic(manifest_path, manifest_text(m));
   return r;
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

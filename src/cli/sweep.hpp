@@ -22,7 +22,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 struct SweepAxis {
   std::string path;
@@ -87,4 +87,4 @@ ExpandResult expand_sweep(const Sweep& sweep, const std::filesystem::path& out_d
 /// Returns "" or a complaint ("'links[9]' is past the end of a list of 2").
 std::string set_path(YAML::Node root, const std::string& path, const YAML::Node& value);
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

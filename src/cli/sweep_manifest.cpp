@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -67,4 +67,4 @@ bool generated_by_expand(const fs::path& path) {
   return in.gcount() == static_cast<std::streamsize>(head.size()) && head == header;
 }
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 
 inline constexpr const char* kManifestName = "sweep-manifest.json";
 /// The first line of every case file `sweep expand` writes; expansion replaces or removes
@@ -37,4 +37,4 @@ std::optional<SweepManifest> read_manifest(const std::filesystem::path& path);
 /// True if `path` is a regular file (not a symlink) that begins with kGeneratedHeader.
 bool generated_by_expand(const std::filesystem::path& path);
 
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

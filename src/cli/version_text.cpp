@@ -5,7 +5,6 @@
 #include <nlopt.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,9 +16,8 @@
 
 #include "report/case_report.hpp"
 #include "scene/osmesa_context.hpp"
+#include "sys/process.hpp"
 #include "version.hpp"
-
-extern char** environ;
 
 namespace armstudy::cli {
 namespace {
@@ -51,31 +49,20 @@ std::string browser_text(int timeout_ms) {
 std::string program_version_line(const std::string& program, int timeout_ms) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) return "";
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_adddup2(&fa, fds[1], 1);
-  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
   // its own process group (killed whole on a timeout) and default signals (armstudy blocks
   // the termination signals in every thread)
-  sigset_t none, all;
-  sigemptyset(&none);
-  sigfillset(&all);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &all);
-  posix_spawnattr_setpgroup(&attr, 0);
-  posix_spawnattr_setflags(&attr,
-                           POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-  const std::string flag = "--version";
-  char* argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(flag.c_str()), nullptr};
-  pid_t pid = -1;
-  const int rc = ::posix_spawn(&pid, program.c_str(), &fa, &attr, argv, environ);
-  posix_spawn_file_actions_destroy(&fa);
-  posix_spawnattr_destroy(&attr);
+  sys::SpawnOptions o;
+  o.argv = {program, "--version"};
+  o.env = sys::current_environment();
+  o.fds = {{fds[1], 1}};
+  o.files = {{"/dev/null", O_RDONLY, 0, {0}}, {"/dev/null", O_WRONLY, 0, {2}}};
+  for (int s = 1; s < NSIG; ++s)
+    if (s != SIGKILL && s != SIGSTOP) o.default_signals.push_back(s);
+  o.own_group = true;
+  int error = 0;
+  const pid_t pid = sys::spawn(o, &error);
   ::close(fds[1]);
-  if (rc != 0) {
+  if (pid < 0) {
     ::close(fds[0]);
     return "";
   }

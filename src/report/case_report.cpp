@@ -1,6 +1,6 @@
 #include "report/case_report.hpp"
 
-#include "report/part_name.hpp"
+#include "sys/atomic_file.hpp"
 
 #include <yaml-cpp/yaml.h>
 #include <kainjow/mustache.hpp>
@@ -39,7 +39,7 @@ std::string read_text(const fs::path& p) {
 }
 
 // through a temporary file, removed on failure; the error says why (disk full, ...)
-void write_text(const fs::path& p, const std::string& text) { write_file_atomic(p, text); }
+void write_text(const fs::path& p, const std::string& text) { sys::write_file_atomic(p, text); }
 
 // renders a template of template_dir(); {{x}} escapes html (& < > " '), {{{x}}} is never used
 std::string render_template(const std::string& name, const mus::data& data) {
@@ -247,6 +247,94 @@ mus::data table_data(const Table& t) {
   return d;
 }
 
+// one block of a section: a paragraph, note, code, table, figure, movies or a strip
+mus::data block_data(const Block& b) {
+  mus::data bd;
+  switch (b.kind) {
+    case Block::Kind::kParagraph: bd.set("paragraph", b.text); break;
+    case Block::Kind::kNote: bd.set("note", b.text); break;
+    case Block::Kind::kCode: bd.set("code", b.text); break;
+    case Block::Kind::kTable: bd.set("table", table_data(b.table)); break;
+    case Block::Kind::kFigure: {
+      mus::data f;
+      f.set("src", b.figure.file);
+      f.set("caption", b.figure.caption);
+      f.set("half", b.figure.half);
+      bd.set("figure", f);
+      break;
+    }
+    case Block::Kind::kMovies: {
+      mus::data list{mus::data::type::list};
+      for (const Movie& m : b.movies) {
+        mus::data md;
+        md.set("css_class", m.css_class);
+        md.set("still", m.still);
+        md.set("video", m.video);
+        md.set("has_video", !m.video.empty());
+        md.set("title", m.title);
+        md.set("caption", m.caption);
+        list << md;
+      }
+      mus::data mv;
+      mv.set("list", list);
+      bd.set("movies", mv);
+      break;
+    }
+    case Block::Kind::kStrip: {
+      mus::data st;
+      st.set("caption", b.strip.caption);
+      mus::data imgs{mus::data::type::list};
+      for (size_t k = 0; k < b.strip.files.size(); ++k) {
+        mus::data im;
+        im.set("src", b.strip.files[k]);
+        im.set("label", k < b.strip.labels.size() ? b.strip.labels[k] : "");
+        im.set("wide", k < b.strip.wide.size() && b.strip.wide[k]);
+        imgs << im;
+      }
+      st.set("images", imgs);
+      bd.set("strip", st);
+      break;
+    }
+  }
+  return bd;
+}
+
+// the answer box on page 1
+mus::data answer_data(const AnswerBox& a) {
+  mus::data ad;
+  ad.set("sentence", a.sentence);
+  ad.set("has_picture", !a.picture.empty());
+  ad.set("picture", a.picture);
+  ad.set("picture_caption", a.picture_caption);
+  ad.set("picture_is_frame", a.picture.ends_with(".png"));
+  mus::data figs{mus::data::type::list};
+  for (const auto& [k, v] : a.figures) {
+    mus::data e;
+    e.set("label", k);
+    e.set("value", v);
+    figs << e;
+  }
+  ad.set("figures", figs);
+  ad.set("has_figures", !a.figures.empty());
+  ad.set("verdict", a.verdict);
+  ad.set("verdict_ok", a.verdict_ok);
+  auto list = [](const std::vector<std::string>& v) {
+    mus::data l{mus::data::type::list};
+    for (const auto& s : v) l << mus::data{"text", s};
+    return l;
+  };
+  ad.set("binding", list(a.binding));
+  ad.set("has_binding", !a.binding.empty());
+  ad.set("assumptions", list(a.assumptions));
+  ad.set("has_assumptions", !a.assumptions.empty());
+  ad.set("source", a.source);
+  ad.set("has_source", !a.source.empty());
+  ad.set("sensitivity_chart", a.sensitivity_chart);
+  ad.set("sensitivity_caption", a.sensitivity_caption);
+  ad.set("has_sensitivity", !a.sensitivity_chart.empty());
+  return ad;
+}
+
 mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   mus::data d;
   d.set("title", page.title);
@@ -282,54 +370,7 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
     sd.set("new_page", s.new_page);
     mus::data blocks{mus::data::type::list};
     for (const auto& b : s.blocks) {
-      mus::data bd;
-      switch (b.kind) {
-        case Block::Kind::kParagraph: bd.set("paragraph", b.text); break;
-        case Block::Kind::kNote: bd.set("note", b.text); break;
-        case Block::Kind::kCode: bd.set("code", b.text); break;
-        case Block::Kind::kTable: bd.set("table", table_data(b.table)); break;
-        case Block::Kind::kFigure: {
-          mus::data f;
-          f.set("src", b.figure.file);
-          f.set("caption", b.figure.caption);
-          f.set("half", b.figure.half);
-          bd.set("figure", f);
-          break;
-        }
-        case Block::Kind::kMovies: {
-          mus::data list{mus::data::type::list};
-          for (const Movie& m : b.movies) {
-            mus::data md;
-            md.set("css_class", m.css_class);
-            md.set("still", m.still);
-            md.set("video", m.video);
-            md.set("has_video", !m.video.empty());
-            md.set("title", m.title);
-            md.set("caption", m.caption);
-            list << md;
-          }
-          mus::data mv;
-          mv.set("list", list);
-          bd.set("movies", mv);
-          break;
-        }
-        case Block::Kind::kStrip: {
-          mus::data st;
-          st.set("caption", b.strip.caption);
-          mus::data imgs{mus::data::type::list};
-          for (size_t k = 0; k < b.strip.files.size(); ++k) {
-            mus::data im;
-            im.set("src", b.strip.files[k]);
-            im.set("label", k < b.strip.labels.size() ? b.strip.labels[k] : "");
-            im.set("wide", k < b.strip.wide.size() && b.strip.wide[k]);
-            imgs << im;
-          }
-          st.set("images", imgs);
-          bd.set("strip", st);
-          break;
-        }
-      }
-      blocks << bd;
+      blocks << block_data(b);
     }
     sd.set("blocks", blocks);
     sections << sd;
@@ -350,41 +391,7 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
   d.set("has_links", !page.links.empty());
   d.set("data_link", "results.json");
   d.set("has_answer", page.answer.has_value());
-  if (page.answer) {
-    const AnswerBox& a = *page.answer;
-    mus::data ad;
-    ad.set("sentence", a.sentence);
-    ad.set("has_picture", !a.picture.empty());
-    ad.set("picture", a.picture);
-    ad.set("picture_caption", a.picture_caption);
-    ad.set("picture_is_frame", a.picture.ends_with(".png"));
-    mus::data figs{mus::data::type::list};
-    for (const auto& [k, v] : a.figures) {
-      mus::data e;
-      e.set("label", k);
-      e.set("value", v);
-      figs << e;
-    }
-    ad.set("figures", figs);
-    ad.set("has_figures", !a.figures.empty());
-    ad.set("verdict", a.verdict);
-    ad.set("verdict_ok", a.verdict_ok);
-    auto list = [](const std::vector<std::string>& v) {
-      mus::data l{mus::data::type::list};
-      for (const auto& s : v) l << mus::data{"text", s};
-      return l;
-    };
-    ad.set("binding", list(a.binding));
-    ad.set("has_binding", !a.binding.empty());
-    ad.set("assumptions", list(a.assumptions));
-    ad.set("has_assumptions", !a.assumptions.empty());
-    ad.set("source", a.source);
-    ad.set("has_source", !a.source.empty());
-    ad.set("sensitivity_chart", a.sensitivity_chart);
-    ad.set("sensitivity_caption", a.sensitivity_caption);
-    ad.set("has_sensitivity", !a.sensitivity_chart.empty());
-    d.set("answer", ad);
-  }
+  if (page.answer) d.set("answer", answer_data(*page.answer));
   return d;
 }
 
@@ -499,19 +506,25 @@ void write_page(const fs::path& dir, const CasePage& page, const cases::CaseInfo
   write_text(dir / file_name, render_template("case.html", d));
 }
 
-int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies) {
+namespace {
+
+// one row of the index page: a case folder's results.json, read and typed
+struct IndexRow {
+  std::string name;
+  nlohmann::json results;
+  std::optional<ResultsRecord> record;  ///< empty: unreadable
+  AnswerBox answer;
+};
+
+// the rows of every case folder in out_dir that holds a results.json
+std::vector<IndexRow> read_index_rows(const fs::path& out_dir,
+                                      const std::vector<IndexStudy>& studies) {
   auto study_of = [&](const std::string& name) -> const IndexStudy* {
     for (const IndexStudy& st : studies)
       if (st.study == name) return &st;
     return nullptr;
   };
-  struct Row {
-    std::string name;
-    nlohmann::json results;
-    std::optional<ResultsRecord> record;  ///< empty: unreadable
-    AnswerBox answer;
-  };
-  std::vector<Row> rows;
+  std::vector<IndexRow> rows;
   if (fs::is_directory(out_dir))
     for (const auto& e : fs::directory_iterator(out_dir)) {
       const std::string name = e.path().filename().string();
@@ -520,7 +533,7 @@ int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies)
       std::error_code ec;
       const fs::file_status st = fs::symlink_status(rj, ec);
       if (!fs::exists(st)) continue;
-      Row row{name, {}, {}, {}};
+      IndexRow row{name, {}, {}, {}};
       // another folder's results.json is read only when it is a regular file of at most
       // kMaxIndexedResultsBytes: a FIFO, device or link is an unreadable row, never opened
       const bool readable = st.type() == fs::file_type::regular &&
@@ -529,8 +542,8 @@ int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies)
         if (!readable) throw ResultsError(rj.string(), "not a regular file of armstudy's");
         row.results = nlohmann::json::parse(read_text(rj));
         row.record = read_record(row.results);  // every shared key, typed (else: unreadable)
-        const IndexStudy* st = study_of(row.record->study);
-        row.answer = answer_box(row.results, CasePage{}, st ? st->answer : nullptr);
+        const IndexStudy* study = study_of(row.record->study);
+        row.answer = answer_box(row.results, CasePage{}, study ? study->answer : nullptr);
       } catch (const nlohmann::json::exception&) {
         row.record.reset();
       } catch (const ResultsError&) {
@@ -539,77 +552,69 @@ int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies)
       if (!row.record) row.answer = AnswerBox{};
       rows.push_back(std::move(row));
     }
-  // failures first (not solved when the case expects it, or a check failed), then by name
-  auto failed = [](const Row& r) {
-    if (!r.record) return true;
-    return r.record->status != r.record->expected_status() || !r.record->checks_passed();
-  };
-  std::sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) {
-    const bool fa = failed(a), fb = failed(b);
-    return fa != fb ? fa : a.name < b.name;
-  });
+  return rows;
+}
 
-  mus::data d;
-  mus::data list{mus::data::type::list};
-  for (const auto& r : rows) {
-    mus::data e;
-    e.set("name", r.name);
-    const std::string status = r.record ? r.record->status : "unreadable results.json";
-    const bool expected = r.record && r.record->case_info.expect == status;
-    e.set("study", r.record ? r.record->study : "");
-    e.set("status", expected ? status + " (as the case expects)" : status);
-    e.set("solved", status == "solved");
-    // the answer in one line: the message up to its first ';' (the case page has it all)
-    const std::string message = r.record ? r.record->message : "";
-    e.set("message", message.substr(0, message.find("; ")));
-    e.set("failed", failed(r));
-    // the check verdict and the key picture of the case's answer box
-    const AnswerBox& answer = r.answer;
-    e.set("verdict", r.record ? answer.verdict : "The study ran no checks on this case.");
-    e.set("verdict_ok", answer.verdict_ok);
-    // the first few key figures; the case page has them all
-    constexpr size_t kIndexFigures = 4;
-    mus::data kf{mus::data::type::list};
-    const auto figures =
-        r.record ? key_figures(*r.record) : std::vector<std::pair<std::string, std::string>>{};
-    for (size_t k = 0; k < figures.size() && k < kIndexFigures; ++k) {
-      mus::data x;
-      x.set("label", figures[k].first);
-      x.set("value", figures[k].second);
-      kf << x;
-    }
-    e.set("key_figures", kf);
-    e.set("more_figures", figures.size() > kIndexFigures
-                              ? "and " + std::to_string(figures.size() - kIndexFigures) + " more"
-                              : "");
-    e.set("has_more_figures", figures.size() > kIndexFigures);
-    // thumbnail: the answer's key picture, else the first figure of the page
-    std::string thumb = answer.picture;
-    if (thumb.empty()) {
-      std::vector<std::string> svgs;
-      for (const auto& f : fs::directory_iterator(out_dir / r.name))
-        if (f.path().extension() == ".svg") svgs.push_back(f.path().filename().string());
-      std::sort(svgs.begin(), svgs.end());
-      if (!svgs.empty()) thumb = svgs.front();
-    }
-    const bool has_thumb = !thumb.empty() && fs::exists(out_dir / r.name / thumb);
-    e.set("has_thumb", has_thumb);
-    e.set("thumb", has_thumb ? r.name + "/" + thumb : "");
-    e.set("has_report", fs::exists(out_dir / r.name / "index.html"));
-    e.set("has_pdf", fs::exists(out_dir / r.name / "report.pdf"));
-    list << e;
+// failed: not solved when the case expects it, or a check failed (or unreadable)
+bool row_failed(const IndexRow& r) {
+  if (!r.record) return true;
+  return r.record->status != r.record->expected_status() || !r.record->checks_passed();
+}
+
+// a case's line on the index page: status, answer, verdict, key figures, thumbnail, links
+mus::data index_row_data(const IndexRow& r, const fs::path& out_dir) {
+  mus::data e;
+  e.set("name", r.name);
+  const std::string status = r.record ? r.record->status : "unreadable results.json";
+  const bool expected = r.record && r.record->case_info.expect == status;
+  e.set("study", r.record ? r.record->study : "");
+  e.set("status", expected ? status + " (as the case expects)" : status);
+  e.set("solved", status == "solved");
+  // the answer in one line: the message up to its first ';' (the case page has it all)
+  const std::string message = r.record ? r.record->message : "";
+  e.set("message", message.substr(0, message.find("; ")));
+  e.set("failed", row_failed(r));
+  // the check verdict and the key picture of the case's answer box
+  const AnswerBox& answer = r.answer;
+  e.set("verdict", r.record ? answer.verdict : "The study ran no checks on this case.");
+  e.set("verdict_ok", answer.verdict_ok);
+  // the first few key figures; the case page has them all
+  constexpr size_t kIndexFigures = 4;
+  mus::data kf{mus::data::type::list};
+  const auto figures =
+      r.record ? key_figures(*r.record) : std::vector<std::pair<std::string, std::string>>{};
+  for (size_t k = 0; k < figures.size() && k < kIndexFigures; ++k) {
+    mus::data x;
+    x.set("label", figures[k].first);
+    x.set("value", figures[k].second);
+    kf << x;
   }
-  d.set("cases", list);
-  d.set("count", std::to_string(rows.size()));
-  d.set("has_sweep", fs::exists(out_dir / "sweep" / "index.html"));
-  fs::create_directories(out_dir);
-  // never over a file of these names that armstudy did not write (report/owned_output.hpp)
-  check_run_level_output(out_dir, "index.html");
-  check_run_level_output(out_dir, "report.css");
-  for (const IndexStudy& st : studies)
-    if (st.figure.draw) check_run_level_output(out_dir, std::string(st.figure.file));
-  // each study's figure over all of its cases (e.g. the thesis's figure 9.30 over the
-  // placement cases), drawn here where every case is
+  e.set("key_figures", kf);
+  e.set("more_figures", figures.size() > kIndexFigures
+                            ? "and " + std::to_string(figures.size() - kIndexFigures) + " more"
+                            : "");
+  e.set("has_more_figures", figures.size() > kIndexFigures);
+  // thumbnail: the answer's key picture, else the first figure of the page
+  std::string thumb = answer.picture;
+  if (thumb.empty()) {
+    std::vector<std::string> svgs;
+    for (const auto& f : fs::directory_iterator(out_dir / r.name))
+      if (f.path().extension() == ".svg") svgs.push_back(f.path().filename().string());
+    std::sort(svgs.begin(), svgs.end());
+    if (!svgs.empty()) thumb = svgs.front();
+  }
+  const bool has_thumb = !thumb.empty() && fs::exists(out_dir / r.name / thumb);
+  e.set("has_thumb", has_thumb);
+  e.set("thumb", has_thumb ? r.name + "/" + thumb : "");
+  e.set("has_report", fs::exists(out_dir / r.name / "index.html"));
+  e.set("has_pdf", fs::exists(out_dir / r.name / "report.pdf"));
+  return e;
+}
+
+// each study's figure over all of its cases (e.g. the thesis's figure 9.30 over the
+// placement cases), drawn here where every case is
+mus::data figures_across_cases(const fs::path& out_dir, const std::vector<IndexStudy>& studies,
+                               const std::vector<IndexRow>& rows) {
   mus::data across{mus::data::type::list};
   for (const IndexStudy& st : studies) {
     if (!st.figure.draw) continue;
@@ -628,7 +633,31 @@ int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies)
     f.set("caption", std::string(st.figure.caption));
     across << f;
   }
-  d.set("across_cases", across);
+  return across;
+}
+
+}  // namespace
+
+int write_index(const fs::path& out_dir, const std::vector<IndexStudy>& studies) {
+  std::vector<IndexRow> rows = read_index_rows(out_dir, studies);
+  // failures first, then by name
+  std::sort(rows.begin(), rows.end(), [&](const IndexRow& a, const IndexRow& b) {
+    const bool fa = row_failed(a), fb = row_failed(b);
+    return fa != fb ? fa : a.name < b.name;
+  });
+  mus::data d;
+  mus::data list{mus::data::type::list};
+  for (const auto& r : rows) list << index_row_data(r, out_dir);
+  d.set("cases", list);
+  d.set("count", std::to_string(rows.size()));
+  d.set("has_sweep", fs::exists(out_dir / "sweep" / "index.html"));
+  fs::create_directories(out_dir);
+  // never over a file of these names that armstudy did not write (report/owned_output.hpp)
+  check_run_level_output(out_dir, "index.html");
+  check_run_level_output(out_dir, "report.css");
+  for (const IndexStudy& st : studies)
+    if (st.figure.draw) check_run_level_output(out_dir, std::string(st.figure.file));
+  d.set("across_cases", figures_across_cases(out_dir, studies, rows));
   copy_stylesheet(out_dir);
   write_text(out_dir / "index.html", render_template("index.html", d));
   return static_cast<int>(rows.size());

@@ -342,6 +342,151 @@ std::string diff_markdown(const RunDiff& d, size_t max_bytes) {
   return truncate(md.str(), max_bytes);
 }
 
+namespace {
+
+// what moved: the rule, the tolerances and the cases beyond them
+Section moved_section(const RunDiff& d) {
+  Section about;
+  about.id = "summary";
+  about.heading = "What moved";
+  about.new_page = false;
+  about.paragraph(
+      "Cases are matched by name. A key figure moves when |new − base| exceeds max(abs, rel · "
+      "|base|) of its "
+      "tolerance; a status change, a check whose verdict changed, an added or removed case and a "
+      "frame "
+      "beyond its pixel tolerance move too. " +
+      tolerances_sentence(d) + ".");
+  Table moved_t;
+  moved_t.caption = "Cases that moved beyond tolerance";
+  moved_t.header = {"case", "study", "what moved"};
+  for (const CaseDiff* c : moved_cases(d))
+    moved_t.rows.push_back({c->name, c->study, what_moved(*c, d.pixel_tolerance, true)});
+  if (moved_t.rows.empty())
+    about.paragraph("Nothing moved beyond its tolerance.");
+  else
+    about.table(std::move(moved_t));
+  return about;
+}
+
+// a frame's base, new and difference images side by side, for each frame that has them
+void add_frame_strips(const CaseDiff& c, int pixel_tolerance, Section& s) {
+  for (const auto& f : c.frames) {
+    if (f.diff_image.empty() && f.base_copy.empty()) continue;
+    Strip st;
+    st.caption = f.file + ": " + frame_result(f, pixel_tolerance) +
+                 (f.diff_image.empty()
+                      ? ""
+                      : "; in the difference image the pixels beyond are red and boxed in magenta, "
+                        "the rest is the base in grey");
+    const bool wide = f.file.find("_strip") != std::string::npos;
+    for (const auto& [file, label] : std::vector<std::pair<std::string, std::string>>{
+             {f.base_copy, "base"}, {f.new_copy, "new"}, {f.diff_image, "difference"}}) {
+      if (file.empty()) continue;
+      st.files.push_back(file);
+      st.labels.push_back(label + ": " + f.file);
+      st.wide.push_back(wide);
+    }
+    s.strip(std::move(st));
+  }
+}
+
+// a case that moved (present in both runs): figures, checks, frames, provenance
+Section moved_case_section(const RunDiff& d, const CaseDiff& c) {
+  Section s;
+  s.id = "case-" + std::to_string(&c - d.cases.data());
+  s.heading = c.name + " (" + c.study + ")";
+  s.new_page = false;
+  if (c.status_changed())
+    s.paragraph("Status " + status_text(c.base_status, c.base_passed) + " → " +
+                status_text(c.new_status, c.new_passed) + ". Base: " + c.base_message +
+                " New: " + c.new_message);
+  Table ft = figure_table(c, true);
+  ft.caption = "Every key figure, side by side";
+  if (!ft.rows.empty()) s.table(std::move(ft));
+  if (!c.checks.empty()) s.table(check_table(c));
+  if (!c.frames.empty()) s.table(frame_table(c, d.pixel_tolerance));
+  if (const std::string note = renderer_note(c); !note.empty()) s.note(note);
+  add_frame_strips(c, d.pixel_tolerance, s);
+  if (!c.provenance.empty()) {
+    Table pt = provenance_table(c.provenance);
+    pt.caption = "Provenance that differs";
+    s.table(std::move(pt));
+  }
+  return s;
+}
+
+// the sweep table's rows by case id
+Section sweep_section(const RunDiff& d) {
+  Section s;
+  s.id = "sweep";
+  s.heading = "Sweep " + d.sweep_name + ": rows by case id";
+  s.new_page = false;
+  s.paragraph(std::to_string(d.sweep.size()) + " of " +
+              std::to_string(std::max(d.sweep_rows_base, d.sweep_rows_new)) +
+              " row(s) of the sweep table changed; those beyond tolerance first, then by the "
+              "largest relative "
+              "change of a key figure (added, removed and status changes count as infinite).");
+  Table t = sweep_table(d, d.sweep.size());
+  if (!t.rows.empty()) s.table(std::move(t));
+  return s;
+}
+
+// the cases that changed within their tolerances
+Section within_section(const RunDiff& d) {
+  Section s;
+  s.id = "within";
+  s.heading = "Changed within tolerance";
+  s.new_page = false;
+  Table t;
+  t.header = {"case", "study", "what changed"};
+  for (const auto& c : d.cases)
+    if (!c.beyond() && c.changed())
+      t.rows.push_back({c.name, c.study, what_moved(c, d.pixel_tolerance, false)});
+  s.table(std::move(t));
+  return s;
+}
+
+// the cases that did not change
+Section unchanged_section(const RunDiff& d, size_t same) {
+  Section un;
+  un.id = "unchanged";
+  un.heading = "Unchanged cases";
+  un.new_page = false;
+  std::string names;
+  for (const auto& c : d.cases)
+    if (!c.changed()) names += (names.empty() ? "" : ", ") + c.name;
+  un.paragraph(same == 0 ? "Every case changed."
+                         : std::to_string(same) +
+                               " case(s) have the same status, key figures, checks and frames: " +
+                               names + ".");
+  return un;
+}
+
+// the provenance that differs between the runs
+Section provenance_section(const RunDiff& d) {
+  Section prov;
+  prov.id = "provenance";
+  prov.heading = "Provenance";
+  prov.new_page = false;
+  if (d.provenance.empty()) {
+    prov.paragraph(
+        "Both runs have the same provenance (armstudy version and commit, MuJoCo, renderer, "
+        "compiler, CPU).");
+  } else {
+    prov.paragraph(
+        "Provenance items that differ between the runs (each item's distinct values over all "
+        "cases). A "
+        "different GL renderer or Mesa version explains frame differences; a different CPU can "
+        "explain "
+        "last-digit differences of the numbers.");
+    prov.table(provenance_table(d.provenance));
+  }
+  return prov;
+}
+
+}  // namespace
+
 void write_diff_page(const fs::path& dir, const RunDiff& d) {
   CasePage page;
   page.title = "armstudy diff";
@@ -365,133 +510,15 @@ void write_diff_page(const fs::path& dir, const RunDiff& d) {
                       {"added / removed", std::to_string(added) + " / " + std::to_string(removed)}};
   page.links = {{"diff.md (job summary)", "diff.md"}};
 
-  Section about;
-  about.id = "summary";
-  about.heading = "What moved";
-  about.new_page = false;
-  about.paragraph(
-      "Cases are matched by name. A key figure moves when |new − base| exceeds max(abs, rel · "
-      "|base|) of its "
-      "tolerance; a status change, a check whose verdict changed, an added or removed case and a "
-      "frame "
-      "beyond its pixel tolerance move too. " +
-      tolerances_sentence(d) + ".");
-  Table moved_t;
-  moved_t.caption = "Cases that moved beyond tolerance";
-  moved_t.header = {"case", "study", "what moved"};
-  for (const CaseDiff* c : moved_cases(d))
-    moved_t.rows.push_back({c->name, c->study, what_moved(*c, d.pixel_tolerance, true)});
-  if (moved_t.rows.empty())
-    about.paragraph("Nothing moved beyond its tolerance.");
-  else
-    about.table(std::move(moved_t));
-  page.sections.push_back(std::move(about));
-
+  page.sections.push_back(moved_section(d));
   // each case that moved (present in both runs): figures, checks, frames, provenance
-  for (const CaseDiff* cp : moved_cases(d)) {
-    const CaseDiff& c = *cp;
-    if (c.presence != CaseDiff::Presence::kBoth) continue;
-    Section s;
-    s.id = "case-" + std::to_string(&c - d.cases.data());
-    s.heading = c.name + " (" + c.study + ")";
-    s.new_page = false;
-    if (c.status_changed())
-      s.paragraph("Status " + status_text(c.base_status, c.base_passed) + " → " +
-                  status_text(c.new_status, c.new_passed) + ". Base: " + c.base_message +
-                  " New: " + c.new_message);
-    Table ft = figure_table(c, true);
-    ft.caption = "Every key figure, side by side";
-    if (!ft.rows.empty()) s.table(std::move(ft));
-    if (!c.checks.empty()) s.table(check_table(c));
-    if (!c.frames.empty()) s.table(frame_table(c, d.pixel_tolerance));
-    if (const std::string note = renderer_note(c); !note.empty()) s.note(note);
-    for (const auto& f : c.frames) {
-      if (f.diff_image.empty() && f.base_copy.empty()) continue;
-      Strip st;
-      st.caption =
-          f.file + ": " + frame_result(f, d.pixel_tolerance) +
-          (f.diff_image.empty()
-               ? ""
-               : "; in the difference image the pixels beyond are red and boxed in magenta, "
-                 "the rest is the base in grey");
-      const bool wide = f.file.find("_strip") != std::string::npos;
-      for (const auto& [file, label] : std::vector<std::pair<std::string, std::string>>{
-               {f.base_copy, "base"}, {f.new_copy, "new"}, {f.diff_image, "difference"}}) {
-        if (file.empty()) continue;
-        st.files.push_back(file);
-        st.labels.push_back(label + ": " + f.file);
-        st.wide.push_back(wide);
-      }
-      s.strip(std::move(st));
-    }
-    if (!c.provenance.empty()) {
-      Table pt = provenance_table(c.provenance);
-      pt.caption = "Provenance that differs";
-      s.table(std::move(pt));
-    }
-    page.sections.push_back(std::move(s));
-  }
-
-  if (!d.sweep_name.empty()) {
-    Section s;
-    s.id = "sweep";
-    s.heading = "Sweep " + d.sweep_name + ": rows by case id";
-    s.new_page = false;
-    s.paragraph(std::to_string(d.sweep.size()) + " of " +
-                std::to_string(std::max(d.sweep_rows_base, d.sweep_rows_new)) +
-                " row(s) of the sweep table changed; those beyond tolerance first, then by the "
-                "largest relative "
-                "change of a key figure (added, removed and status changes count as infinite).");
-    Table t = sweep_table(d, d.sweep.size());
-    if (!t.rows.empty()) s.table(std::move(t));
-    page.sections.push_back(std::move(s));
-  }
-
-  if (within) {
-    Section s;
-    s.id = "within";
-    s.heading = "Changed within tolerance";
-    s.new_page = false;
-    Table t;
-    t.header = {"case", "study", "what changed"};
-    for (const auto& c : d.cases)
-      if (!c.beyond() && c.changed())
-        t.rows.push_back({c.name, c.study, what_moved(c, d.pixel_tolerance, false)});
-    s.table(std::move(t));
-    page.sections.push_back(std::move(s));
-  }
-
-  Section un;
-  un.id = "unchanged";
-  un.heading = "Unchanged cases";
-  un.new_page = false;
-  std::string names;
-  for (const auto& c : d.cases)
-    if (!c.changed()) names += (names.empty() ? "" : ", ") + c.name;
-  un.paragraph(same == 0 ? "Every case changed."
-                         : std::to_string(same) +
-                               " case(s) have the same status, key figures, checks and frames: " +
-                               names + ".");
-  page.sections.push_back(std::move(un));
-
-  Section prov;
-  prov.id = "provenance";
-  prov.heading = "Provenance";
-  prov.new_page = false;
-  if (d.provenance.empty()) {
-    prov.paragraph(
-        "Both runs have the same provenance (armstudy version and commit, MuJoCo, renderer, "
-        "compiler, CPU).");
-  } else {
-    prov.paragraph(
-        "Provenance items that differ between the runs (each item's distinct values over all "
-        "cases). A "
-        "different GL renderer or Mesa version explains frame differences; a different CPU can "
-        "explain "
-        "last-digit differences of the numbers.");
-    prov.table(provenance_table(d.provenance));
-  }
-  page.sections.push_back(std::move(prov));
+  for (const CaseDiff* cp : moved_cases(d))
+    if (cp->presence == CaseDiff::Presence::kBoth)
+      page.sections.push_back(moved_case_section(d, *cp));
+  if (!d.sweep_name.empty()) page.sections.push_back(sweep_section(d));
+  if (within) page.sections.push_back(within_section(d));
+  page.sections.push_back(unchanged_section(d, same));
+  page.sections.push_back(provenance_section(d));
 
   cases::CaseInfo info;
   info.name = "diff";

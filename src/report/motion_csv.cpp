@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "report/scratch_dir.hpp"
+#include "sys/atomic_file.hpp"
 
 namespace armstudy::report {
 
@@ -77,7 +77,7 @@ std::string motion_csv_text(const MotionCsv& t) {
 }
 
 std::string write_motion_csv(const std::filesystem::path& dir, const MotionCsv& table) {
-  write_file_atomic(dir / table.file, motion_csv_text(table));
+  sys::write_file_atomic(dir / table.file, motion_csv_text(table));
   return table.file;
 }
 

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "sys/scratch_dir.hpp"
+
 namespace armstudy::report {
 
 /// Why `dir` (a case folder for the case `name`) is not armstudy's: "" when it is
@@ -40,6 +42,11 @@ std::vector<std::string> foreign_outputs(const std::filesystem::path& out_dir,
 /// Throws ForeignOutput when `out_dir`/`name` is a run-level output armstudy did not write
 /// (the last check before it is written, for a file that appeared during the run).
 void check_run_level_output(const std::filesystem::path& out_dir, const std::string& name);
+
+/// sys::remove_stale_scratch with armstudy's outputs: the sub-folders looked into are its
+/// case folders and the sweep report; directly in `dir` an old-style part file is removed
+/// only beside a run-level output or a figure (.svg). Defined in report/stale_scratch.cpp.
+sys::StaleCleanup remove_stale_scratch(const std::filesystem::path& dir);
 
 /// A file or folder of a name armstudy writes that armstudy did not write.
 struct ForeignOutput : std::runtime_error {

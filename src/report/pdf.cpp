@@ -6,7 +6,6 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/file.h>
-#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -32,21 +31,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "report/part_name.hpp"
-#include "report/safe_remove.hpp"
-#include "report/scratch_dir.hpp"
-
 #include "report/case_report.hpp"
+#include "sys/atomic_file.hpp"
+#include "sys/process.hpp"
+#include "sys/safe_remove.hpp"
 
 namespace armstudy::report {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool is_executable(const fs::path& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(p.c_str(), X_OK) == 0;
-}
 
 // file:// url of an absolute path, percent-encoding all but unreserved characters and '/'
 std::string file_url(const fs::path& p) {
@@ -163,20 +156,12 @@ bool stopping() { return g_stopping.load(); }
 
 std::string find_chromium() {
   if (const char* env = std::getenv("ARMSTUDY_CHROMIUM"); env && *env)
-    return is_executable(env) ? env : "";
-  const char* path = std::getenv("PATH");
-  std::stringstream dirs(path ? path : "/usr/local/bin:/usr/bin:/bin");
-  std::string dir;
-  std::vector<std::string> entries;
-  while (std::getline(dirs, dir, ':')) entries.push_back(dir.empty() ? "." : dir);
+    return sys::is_executable(env) ? env : "";
   // chromium-headless-shell first: Chromium's headless mode built on its own (Debian's
   // package of that name), which prints the same pages as the full browser and starts with
   // about a third of its CPU (an empty page: 1.3 against 3.7 CPU-s)
-  for (const char* name :
-       {"chromium-headless-shell", "chromium", "chromium-browser", "google-chrome"})
-    for (const auto& d : entries)
-      if (is_executable(fs::path(d) / name)) return (fs::path(d) / name).string();
-  return "";
+  return sys::find_on_path(
+      {"chromium-headless-shell", "chromium", "chromium-browser", "google-chrome"});
 }
 
 std::string missing_chromium_text() {
@@ -230,66 +215,44 @@ class PipeBrowser {
   explicit PipeBrowser(const std::string& chromium) {
     if (stopping()) throw PdfError("stopped by a signal");
     const fs::path log = profile_.path / "chromium.log";
-    std::vector<std::string> args = {chromium,
-                                     "--headless",
-                                     "--no-sandbox",
-                                     "--disable-gpu",
-                                     "--disable-quic",
-                                     "--no-first-run",
-                                     "--disable-background-networking",
-                                     "--disable-component-update",
-                                     "--disable-sync",
-                                     "--disable-extensions",
-                                     "--user-data-dir=" + profile_.path.string(),
-                                     "--remote-debugging-pipe",
-                                     "about:blank"};
+    sys::SpawnOptions o;
+    o.argv = {chromium,
+              "--headless",
+              "--no-sandbox",
+              "--disable-gpu",
+              "--disable-quic",
+              "--no-first-run",
+              "--disable-background-networking",
+              "--disable-component-update",
+              "--disable-sync",
+              "--disable-extensions",
+              "--user-data-dir=" + profile_.path.string(),
+              "--remote-debugging-pipe",
+              "about:blank"};
     const fs::path browser_tmp = profile_.path / "tmp";
     fs::create_directories(browser_tmp);
-    std::vector<std::string> env_text = {"TMPDIR=" + browser_tmp.string()};
-    for (char** e = environ; *e; ++e)
-      if (std::strncmp(*e, "TMPDIR=", 7) != 0) env_text.emplace_back(*e);
-    std::vector<char*> envp;
-    for (auto& e : env_text) envp.push_back(e.data());
-    envp.push_back(nullptr);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
+    o.env = {"TMPDIR=" + browser_tmp.string()};
+    for (std::string& e : sys::current_environment())
+      if (e.rfind("TMPDIR=", 0) != 0) o.env.push_back(std::move(e));
     int sv[2];
     if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
       throw PdfError(std::string("cannot start Chromium: socketpair: ") + std::strerror(errno));
-    const pid_t parent = ::getpid();
-    const pid_t pid = ::fork();
+    // its log as standard output and error, no input, and the browser's end of the socket
+    // as fd 3 and fd 4; its own process group (killed whole) and dead with this thread
+    o.files = {{log, O_WRONLY | O_CREAT | O_TRUNC, 0600, {1, 2}}, {"/dev/null", O_RDONLY, 0, {0}}};
+    o.fds = {{sv[1], 3}, {sv[1], 4}};
+    o.default_signals = {SIGPIPE};  // armstudy ignores it
+    o.own_group = true;
+    o.death_signal = SIGKILL;
+    int error = 0;
+    const pid_t pid = sys::spawn(o, &error);
     if (pid < 0) {
       ::close(sv[0]);
       ::close(sv[1]);
       throw PdfError("cannot start Chromium: fork failed");
     }
-    if (pid == 0) {
-      // only async-signal-safe calls between fork and exec
-      ::setpgid(0, 0);
-      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-      if (::getppid() != parent) ::_exit(127);
-      sigset_t none;
-      sigemptyset(&none);
-      ::sigprocmask(SIG_SETMASK, &none, nullptr);
-      ::signal(SIGPIPE, SIG_DFL);  // armstudy ignores it
-      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-      if (fd >= 0) {
-        ::dup2(fd, 1);
-        ::dup2(fd, 2);
-      }
-      const int null_in = ::open("/dev/null", O_RDONLY);
-      if (null_in >= 0) ::dup2(null_in, 0);
-      // the browser's end as fd 3 and fd 4 (dup2 clears close-on-exec; via a high fd so
-      // that it never is 3 or 4 itself)
-      const int high = ::fcntl(sv[1], F_DUPFD_CLOEXEC, 10);
-      if (high < 0 || ::dup2(high, 3) < 0 || ::dup2(high, 4) < 0) ::_exit(127);
-      ::execve(argv[0], argv.data(), envp.data());
-      ::_exit(127);
-    }
     ::close(sv[1]);
     fd_ = sv[0];
-    ::setpgid(pid, pid);
     group_.emplace(pid);
   }
   ~PipeBrowser() {
@@ -419,7 +382,7 @@ bool inside_folder(const std::string& url, const fs::path& folder) {
 // writes a printed page through its temporary sibling; "" or why not
 std::string write_printed(const std::string& bytes, const fs::path& pdf) {
   if (bytes.compare(0, 4, "%PDF") != 0) return "Chromium printed something that is not a PDF";
-  const fs::path part = part_path(pdf);
+  const fs::path part = sys::part_path(pdf);
   {
     std::ofstream out(part, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -428,14 +391,14 @@ std::string write_printed(const std::string& bytes, const fs::path& pdf) {
       const int e = errno;
       std::error_code ec;
       fs::remove(part, ec);
-      return system_error_text("write", pdf, e);
+      return sys::system_error_text("write", pdf, e);
     }
   }
   if (::rename(part.c_str(), pdf.c_str()) != 0) {
     const int e = errno;
     std::error_code ec;
     fs::remove(part, ec);
-    return system_error_text("write", pdf, e);
+    return sys::system_error_text("write", pdf, e);
   }
   return "";
 }
@@ -483,27 +446,26 @@ struct PrintQueue {
   }
 };
 
-// prints the queue's pages through one browser, as they come, until the queue is closed
-// and drained; every page printed or failed on its own is finished in the queue; throws
-// PdfError when the browser fails (the pages it took and did not finish are left undone)
-void print_through_one_browser(const std::string& chromium, PrintQueue& q, int parallel,
-                               double timeout_s) {
+// one browser printing the queue's pages, up to `tabs.size()` at a time: each tab steps
+// through its page's commands (Tab::Step) as the browser answers
+struct TabPrinter {
   using clock = std::chrono::steady_clock;
-  PipeBrowser browser(chromium);
-  std::vector<Tab> tabs(static_cast<size_t>(std::clamp(parallel, 1, 8)));
-  const auto limit =
-      std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(timeout_s));
-  const auto job_of = [&](const Tab& t) -> PdfJob {
+  PipeBrowser& browser;
+  PrintQueue& q;
+  std::vector<Tab> tabs;
+  clock::duration limit;
+
+  PdfJob job_of(const Tab& t) {
     std::lock_guard<std::mutex> lock(q.mu);
     return q.jobs[static_cast<size_t>(t.job)];
-  };
-  const auto fail = [&](Tab& t, const std::string& why) {
+  }
+  void fail(Tab& t, const std::string& why) {
     const size_t j = static_cast<size_t>(t.job);
     if (!t.target.empty()) browser.send("Target.closeTarget", {{"targetId", t.target}});
     t = Tab{};
     q.finish(j, why);
-  };
-  const auto start = [&](Tab& t) {
+  }
+  void start(Tab& t) {
     while (t.step == Tab::kIdle) {
       const std::optional<size_t> j = q.take();
       if (!j) return;
@@ -523,8 +485,8 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
       t.step = Tab::kCreate;
       t.pending = browser.send("Target.createTarget", {{"url", "about:blank"}});
     }
-  };
-  const auto print = [&](Tab& t) {
+  }
+  void print(Tab& t) {
     t.step = Tab::kPrint;
     // the options of headless Chromium's --print-to-pdf with --no-pdf-header-footer
     t.pending = browser.send("Page.printToPDF",
@@ -533,68 +495,30 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
                               {"preferCSSPageSize", true},
                               {"transferMode", "ReturnAsBase64"}},
                              t.session);
-  };
-  auto last_message = clock::now();
-  while (true) {
-    if (stopping()) throw PdfError("stopped by a signal");
-    bool busy = false;
-    for (Tab& t : tabs) {
-      if (t.step == Tab::kIdle) start(t);
-      busy |= t.step != Tab::kIdle;
-    }
-    if (!busy && q.drained()) return;
-    const std::optional<nlohmann::json> got = browser.receive(50);
-    const auto now = clock::now();
-    for (Tab& t : tabs)
-      if (t.step != Tab::kIdle && now > t.deadline)
-        fail(t, "Chromium did not print " + job_of(t).html.string() + " within " +
-                    std::to_string(static_cast<int>(timeout_s)) + " s");
-    if (!got) {
-      // a browser that answers nothing while it has pages to print is not printing (nor
-      // speaking the protocol)
-      if (!busy) last_message = now;
-      if (now - last_message > limit)
-        throw PdfError("Chromium did not answer on the DevTools pipe");
-      continue;
-    }
-    last_message = now;
-    const nlohmann::json& m = *got;
-    if (m.contains("method")) {
-      if (m["method"] == "Fetch.requestPaused" && m.contains("sessionId")) {
-        // a page reads only files of its own folder: anything else fails as if denied
-        const nlohmann::json& p = m["params"];
-        const std::string id = p.value("requestId", "");
-        bool allowed = false;
-        for (const Tab& t : tabs)
-          if (t.step != Tab::kIdle && t.session == m["sessionId"])
-            allowed = p.contains("request") && p["request"].is_object() &&
-                      inside_folder(p["request"].value("url", ""), t.folder);
-        if (allowed)
-          browser.send("Fetch.continueRequest", {{"requestId", id}}, m["sessionId"]);
-        else
-          browser.send("Fetch.failRequest", {{"requestId", id}, {"errorReason", "AccessDenied"}},
-                       m["sessionId"]);
-        continue;
-      }
-      if (m["method"] == "Page.loadEventFired" && m.contains("sessionId"))
-        for (Tab& t : tabs)
-          if (t.step == Tab::kNavigate && t.session == m["sessionId"]) {
-            t.loaded = true;
-            if (t.navigated) print(t);
-          }
-      continue;
-    }
-    if (!m.contains("id")) continue;
-    Tab* tab = nullptr;
-    for (Tab& t : tabs)
-      if (t.step != Tab::kIdle && t.pending == m["id"]) tab = &t;
-    if (!tab) continue;  // the answer to a close, or to a page given up
-    Tab& t = *tab;
+  }
+  // a page reads only files of its own folder: anything else fails as if denied
+  void on_request(const nlohmann::json& m) {
+    const nlohmann::json& p = m["params"];
+    const std::string id = p.value("requestId", "");
+    bool allowed = false;
+    for (const Tab& t : tabs)
+      if (t.step != Tab::kIdle && t.session == m["sessionId"])
+        allowed = p.contains("request") && p["request"].is_object() &&
+                  inside_folder(p["request"].value("url", ""), t.folder);
+    if (allowed)
+      browser.send("Fetch.continueRequest", {{"requestId", id}}, m["sessionId"]);
+    else
+      browser.send("Fetch.failRequest", {{"requestId", id}, {"errorReason", "AccessDenied"}},
+                   m["sessionId"]);
+  }
+  // the answer `m` to tab t's pending command: the tab's next step (over 60 lines: one case
+  // per step of the protocol, in their order)
+  void on_answer(Tab& t, const nlohmann::json& m) {
     const PdfJob job = job_of(t);
     if (m.contains("error")) {
       fail(t, "Chromium could not print " + job.html.string() + ": " +
                   m["error"].value("message", m["error"].dump()));
-      continue;
+      return;
     }
     const nlohmann::json& r = m.contains("result") ? m["result"] : nlohmann::json::object();
     switch (t.step) {
@@ -649,6 +573,67 @@ void print_through_one_browser(const std::string& chromium, PrintQueue& q, int p
       }
       default: break;
     }
+  }
+  // a message of the browser: an event (a paused request, a page loaded) or an answer
+  void on_message(const nlohmann::json& m) {
+    if (m.contains("method")) {
+      if (m["method"] == "Fetch.requestPaused" && m.contains("sessionId")) {
+        on_request(m);
+        return;
+      }
+      if (m["method"] == "Page.loadEventFired" && m.contains("sessionId"))
+        for (Tab& t : tabs)
+          if (t.step == Tab::kNavigate && t.session == m["sessionId"]) {
+            t.loaded = true;
+            if (t.navigated) print(t);
+          }
+      return;
+    }
+    if (!m.contains("id")) return;
+    Tab* tab = nullptr;
+    for (Tab& t : tabs)
+      if (t.step != Tab::kIdle && t.pending == m["id"]) tab = &t;
+    if (!tab) return;  // the answer to a close, or to a page given up
+    on_answer(*tab, m);
+  }
+};
+
+// prints the queue's pages through one browser, as they come, until the queue is closed
+// and drained; every page printed or failed on its own is finished in the queue; throws
+// PdfError when the browser fails (the pages it took and did not finish are left undone)
+void print_through_one_browser(const std::string& chromium, PrintQueue& q, int parallel,
+                               double timeout_s) {
+  using clock = std::chrono::steady_clock;
+  PipeBrowser browser(chromium);
+  TabPrinter tp{
+      browser, q, std::vector<Tab>(static_cast<size_t>(std::clamp(parallel, 1, 8))),
+      std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(timeout_s))};
+  const auto limit = tp.limit;
+  auto last_message = clock::now();
+  while (true) {
+    if (stopping()) throw PdfError("stopped by a signal");
+    bool busy = false;
+    for (Tab& t : tp.tabs) {
+      if (t.step == Tab::kIdle) tp.start(t);
+      busy |= t.step != Tab::kIdle;
+    }
+    if (!busy && q.drained()) return;
+    const std::optional<nlohmann::json> got = browser.receive(50);
+    const auto now = clock::now();
+    for (Tab& t : tp.tabs)
+      if (t.step != Tab::kIdle && now > t.deadline)
+        tp.fail(t, "Chromium did not print " + tp.job_of(t).html.string() + " within " +
+                       std::to_string(static_cast<int>(timeout_s)) + " s");
+    if (!got) {
+      // a browser that answers nothing while it has pages to print is not printing (nor
+      // speaking the protocol)
+      if (!busy) last_message = now;
+      if (now - last_message > limit)
+        throw PdfError("Chromium did not answer on the DevTools pipe");
+      continue;
+    }
+    last_message = now;
+    tp.on_message(*got);
   }
 }
 
@@ -768,12 +753,12 @@ size_t remove_stale_profiles() {
   // its profiles, removed through the open folder, never following a link
   const int tmp_fd = ::open(tmp.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (tmp_fd < 0) return 0;
-  for (const std::string& f : list_folder(tmp_fd)) {
+  for (const std::string& f : sys::list_folder(tmp_fd)) {
     struct stat st {};
-    if (f.rfind(kProfilePrefix, 0) != 0 || !stat_at(tmp_fd, f, &st) || !S_ISDIR(st.st_mode) ||
+    if (f.rfind(kProfilePrefix, 0) != 0 || !sys::stat_at(tmp_fd, f, &st) || !S_ISDIR(st.st_mode) ||
         st.st_uid != ::geteuid())
       continue;
-    const int dir = open_folder_at(tmp_fd, f);
+    const int dir = sys::open_folder_at(tmp_fd, f);
     if (dir < 0) continue;
     const int fd = ::openat(dir, kProfileLock, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
     ::close(dir);
@@ -786,7 +771,7 @@ size_t remove_stale_profiles() {
           std::chrono::system_clock::now() - std::chrono::system_clock::from_time_t(st.st_mtime) >
           std::chrono::minutes(10);
     }
-    if (stale) removed += remove_tree_at(tmp_fd, f) > 0;
+    if (stale) removed += sys::remove_tree_at(tmp_fd, f) > 0;
     if (fd >= 0) ::close(fd);
   }
   ::close(tmp_fd);

@@ -1,5 +1,6 @@
-// the placement study of Kopmaz (2016): optima, time series (figs. 9.1-9.5),
-// energy over direction angle (9.11), placement maps, root loci (9.30), pareto front
+// the placement study of Kopmaz (2016): optima, time series (figs. 9.1-9.5), the method and
+// the convergence; the maps, energy over direction angle (9.11), root loci (9.30) and pareto
+// front are in placement_maps.cpp
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -8,6 +9,7 @@
 
 #include "core/types.hpp"
 #include "report/number_format.hpp"
+#include "report/placement_page.hpp"
 #include "report/replay_section.hpp"
 #include "report/results_fields.hpp"
 #include "report/results_record.hpp"
@@ -20,25 +22,13 @@ namespace {
 
 using nlohmann::json;
 
-constexpr Rgb kUnreachable{215, 215, 215};
-constexpr Rgb kSingular{238, 120, 120};
-constexpr Rgb kOverLimit{250, 200, 120};
-constexpr int kMaxMapCells = 120;  // per axis, drawn (the data keeps every node)
+using namespace placement_page;  // PS and the helpers both files use
 
-using PS = studies::placement::ResultsSection;
-
-std::string id_label(const PS::Id& o) { return o.program + ", conf. " + as_text(o.configuration); }
-std::string id_key(const PS::Id& o) { return o.program + "/" + as_text(o.configuration); }
 std::string pair_str(const PS::Pair& p, int digits) {
   return "(" + format_sig(p[0], digits) + ", " + format_sig(p[1], digits) + ")";
 }
 std::string pair_str(const std::optional<PS::Pair>& p, int digits) {
   return p ? pair_str(*p, digits) : "n/a";
-}
-// a motion whose energy is withheld (on the inner circle, or not converged): no energy, peak
-// or saving is printed
-bool no_energy(const PS::Metrics& o) {
-  return o.singular_trajectory.value_or(false) && !std::isfinite(o.energy_J);
 }
 // a motion whose peak torque is withheld (unbounded at a singular pose); its energy may stand
 bool no_peak(const PS::Metrics& o) {
@@ -84,13 +74,6 @@ std::string binding_text(const PS::Optimum& o, const PS& pl) {
   std::vector<std::pair<std::string, std::optional<int>>> active;
   for (const auto& a : d.active) active.emplace_back(a.constraint, a.joint);
   return binding_first(o, pl) + placement_also_active(active);
-}
-// a candidate's status in words ("singular" in results.json is "inside the margin": the
-// word singular is kept for motions that are singular themselves)
-std::string status_text(const std::string& st) {
-  if (st == "singular") return "inside the margin";
-  if (st == "over_limit") return "over a limit";
-  return st;
 }
 bool set_by_margin(const PS::Optimum& o) { return o.decided_by.set_by_margin; }
 
@@ -151,22 +134,6 @@ LinePlot optima_plot(const std::string& title, const std::string& y_label,
     }
   }
   return plot;
-}
-
-// The thesis's figure of the same kind for its example at this line length (Kopmaz 2016,
-// Ch. 9: each example draws angles, velocities, accelerations, torques and powers, then the
-// energy over the direction angle), e.g. kind 0 at L = 0.5 Lmax -> "Figure 9.12"; a length
-// of no example: its figures in general.
-std::string thesis_figure(const PS& pl, int kind) {
-  struct Example {
-    double fraction;
-    int first;
-  };
-  static const Example examples[] = {{1.0, 1}, {0.8, 6}, {0.5, 12}, {0.4, 18}, {0.2, 24}};
-  for (const Example& e : examples)
-    if (std::abs(pl.length_fraction - e.fraction) < 1e-9 && !(e.first == 1 && kind == 5))
-      return "Figure 9." + std::to_string(e.first + kind);
-  return kind == 5 ? "Figures 9.11, 9.17, 9.23, 9.29" : "figures of Ch. 9";
 }
 
 Section task_section(const PS& pl) {
@@ -310,10 +277,8 @@ std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
           range + "). The case's margin is " + format_sig(pl.singularity_margin_m, 3) + " m.");
 }
 
-Section optima_section(const PS& pl, FigureWriter& figures) {
-  Section s;
-  s.id = "optima";
-  s.heading = "Optimal placements";
+// the refined optimum per program and configuration; `owners` gets each optimum's series
+Table optima_table(const PS& pl, std::vector<SeriesOwner>* owners) {
   Table t;
   t.caption =
       "Refined optimum per motion program and configuration (the grid optimum's "
@@ -329,7 +294,6 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
               "peak torque (N m)",
               "peak power (W)",
               "signed work (J)"};
-  std::vector<SeriesOwner> owners;
   for (const auto& o : pl.optima) {
     t.rows.push_back({id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6),
                       format_sig(o.x_s_m, 6), format_sig(o.phi_deg, 6), pair_str(o.root_xy_m, 5),
@@ -337,31 +301,77 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
                       no_peak(o) ? std::string("n/a") : pair_str(o.peak_power_W, 4),
                       format_sig(o.signed_work_J, 3)});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
-    owners.push_back({id_label(o), id_key(o), &o.series});
+    owners->push_back({id_label(o), id_key(o), &o.series});
   }
-  if (t.rows.empty()) {
-    s.paragraph("No program and configuration has an admissible placement.");
-  } else {
-    s.table(std::move(t));
-    s.table(decision_table(pl));
-    // one note per binding constraint, naming the optima it decides
-    std::map<std::string, std::string> by;
-    for (const auto& o : pl.optima)
-      if (set_by_margin(o))
-        by[binding_text(o, pl)] += (by[binding_text(o, pl)].empty() ? "" : ", ") + id_label(o);
-    for (const auto& [what, who] : by)
-      s.note("The optimum of " + who + " is set by " + what +
-             ", not by the physics: it lies on the margin and its energy keeps falling as the "
-             "margin shrinks (see the margin sensitivity below).");
-    if (auto fig = margin_figure(pl, figures)) s.figure(std::move(*fig));
-  }
-  Table u;
-  u.caption = "Programs and configurations without an admissible placement.";
-  u.header = {"program, configuration", "why"};
-  for (const auto& o : pl.unsolved) u.rows.push_back({id_label(o), o.reason});
-  if (!u.rows.empty()) s.table(std::move(u));
+  return t;
+}
 
-  // the source's own printed placements, when the case evaluates them: one note per placement
+// one note per binding constraint, naming the optima it decides
+void add_binding_notes(const PS& pl, Section& s) {
+  std::map<std::string, std::string> by;
+  for (const auto& o : pl.optima)
+    if (set_by_margin(o))
+      by[binding_text(o, pl)] += (by[binding_text(o, pl)].empty() ? "" : ", ") + id_label(o);
+  for (const auto& [what, who] : by)
+    s.note("The optimum of " + who + " is set by " + what +
+           ", not by the physics: it lies on the margin and its energy keeps falling as the "
+           "margin shrinks (see the margin sensitivity below).");
+}
+
+// the note on one of the thesis's own printed placements (`label`): what the exact check
+// finds there and its energies
+std::string thesis_placement_note(const PS& pl, const std::string& label) {
+  std::string energies, text;
+  const PS::Evaluation* first = nullptr;
+  for (const auto& e : pl.evaluations) {
+    if (e.label != label) continue;
+    if (!first) first = &e;
+    energies +=
+        (energies.empty() ? "" : "; ") + id_label(e) + " " +
+        (no_energy(e) ? std::string(kSingularText)
+                      : format_sig(e.energy_J, 5) + " J" +
+                            (e.energy_error_J ? " ± " + format_sig(*e.energy_error_J, 2) : "")) +
+        (std::isfinite(e.saving_percent)
+             ? " (the optimum saves " + format_sig(e.saving_percent, 3) + " %)"
+             : "");
+  }
+  const PS::Evaluation& e = *first;
+  const std::string& status = e.status;
+  text = "The thesis's printed placement '" + label + "' (x_S = " + format_sig(e.x_s_m, 5) +
+         " m, φ = " + format_sig(e.phi_deg, 5) + "°) is " +
+         (e.energy_convergence && e.energy_convergence->touches_boundary && status != "unreachable"
+              ? std::string("on a workspace boundary")
+              : status_text(e.status)) +
+         " by the exact check";
+  if (status == "unreachable")
+    text += ": with its printed digits part of the line lies outside the annulus (by " +
+            format_sig(-e.boundary_distance_m, 3) + " m), so no motion exists there.";
+  else if (no_energy(e))
+    text += " (clearance " + format_sig(e.boundary_distance_m, 3) + " m), so its motion is " +
+            kSingularText + "; no energy, peak torque or saving is given for it.";
+  else if (no_peak(e))
+    text += " (clearance " + format_sig(e.boundary_distance_m, 3) +
+            " m): its energy is finite and converged (adaptive quadrature, with its error "
+            "estimate), but " +
+            (e.note && *e.note == studies::placement::kFoldedElbowNote
+                 ? "the elbow folds on the inner circle, where both joint rates reverse at "
+                   "once: the energy holds that reversal (the limit of the lines just outside, "
+                   "docs/placement.md), the peak torque is an impulse, so none is given"
+                 : "its peak torque is unbounded (a singular pose), so no peak torque is given") +
+            "; its energies: " + energies + ".";
+  else if (status == "singular")
+    text += ": it comes within " + format_sig(e.boundary_distance_m, 3) +
+            " m of a workspace boundary (smallest |sin q2| " + format_sig(e.min_abs_sin_elbow, 3) +
+            "), so it is not admissible; its energies (adaptive quadrature, with their error "
+            "estimates): " +
+            energies + ".";
+  else
+    text += "; its energies here: " + energies + ".";
+  return text;
+}
+
+// the source's own printed placements, when the case evaluates them: one note per placement
+void add_thesis_placements(const PS& pl, Section& s) {
   std::vector<std::string> labels;
   for (const auto& e : pl.evaluations) {
     const std::string& label = e.label;
@@ -369,59 +379,12 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
         std::find(labels.begin(), labels.end(), label) == labels.end())
       labels.push_back(label);
   }
-  for (const std::string& label : labels) {
-    std::string energies, text;
-    const PS::Evaluation* first = nullptr;
-    for (const auto& e : pl.evaluations) {
-      if (e.label != label) continue;
-      if (!first) first = &e;
-      energies +=
-          (energies.empty() ? "" : "; ") + id_label(e) + " " +
-          (no_energy(e) ? std::string(kSingularText)
-                        : format_sig(e.energy_J, 5) + " J" +
-                              (e.energy_error_J ? " ± " + format_sig(*e.energy_error_J, 2) : "")) +
-          (std::isfinite(e.saving_percent)
-               ? " (the optimum saves " + format_sig(e.saving_percent, 3) + " %)"
-               : "");
-    }
-    const PS::Evaluation& e = *first;
-    const std::string& status = e.status;
-    text =
-        "The thesis's printed placement '" + label + "' (x_S = " + format_sig(e.x_s_m, 5) +
-        " m, φ = " + format_sig(e.phi_deg, 5) + "°) is " +
-        (e.energy_convergence && e.energy_convergence->touches_boundary && status != "unreachable"
-             ? std::string("on a workspace boundary")
-             : status_text(e.status)) +
-        " by the exact check";
-    if (status == "unreachable")
-      text += ": with its printed digits part of the line lies outside the annulus (by " +
-              format_sig(-e.boundary_distance_m, 3) + " m), so no motion exists there.";
-    else if (no_energy(e))
-      text += " (clearance " + format_sig(e.boundary_distance_m, 3) + " m), so its motion is " +
-              kSingularText + "; no energy, peak torque or saving is given for it.";
-    else if (no_peak(e))
-      text += " (clearance " + format_sig(e.boundary_distance_m, 3) +
-              " m): its energy is finite and converged (adaptive quadrature, with its error "
-              "estimate), but " +
-              (e.note && *e.note == studies::placement::kFoldedElbowNote
-                   ? "the elbow folds on the inner circle, where both joint rates reverse at "
-                     "once: the energy holds that reversal (the limit of the lines just outside, "
-                     "docs/placement.md), the peak torque is an impulse, so none is given"
-                   : "its peak torque is unbounded (a singular pose), so no peak torque is given") +
-              "; its energies: " + energies + ".";
-    else if (status == "singular")
-      text += ": it comes within " + format_sig(e.boundary_distance_m, 3) +
-              " m of a workspace boundary (smallest |sin q2| " +
-              format_sig(e.min_abs_sin_elbow, 3) +
-              "), so it is not admissible; its energies (adaptive quadrature, with their error "
-              "estimates): " +
-              energies + ".";
-    else
-      text += "; its energies here: " + energies + ".";
-    s.note(text);
-  }
+  for (const std::string& label : labels) s.note(thesis_placement_note(pl, label));
+}
 
-  if (owners.empty()) return s;
+// the motion of each optimum over time, two plots to a row
+void add_optima_plots(const PS& pl, const std::vector<SeriesOwner>& owners, FigureWriter& figures,
+                      Section& s) {
   struct Quantity {
     const char* name;
     const char* plural;
@@ -460,394 +423,31 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
     s.figure(half(figures.line("energy", half_size(energy),
                                "Actuator energy used up to each instant, ∫ |M1 dθ1| + "
                                "|M2 d(θ2 - θ1)|; the end value is the optimum's energy.")));
-  return s;
 }
 
-// energy over the direction angle at each optimum's x_S (the thesis's Fig. 9.11), into s
-void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
-  LinePlot plot;
-  plot.title = "energy over the direction angle φ";
-  plot.x_label = "direction angle φ (deg)";
-  plot.y_label = "energy (J)";
-  for (const auto& c : pl.curves) {
-    const auto& phi = c.phi_deg;
-    const auto& e = c.energy_J;
-    const std::string& status = c.status;
-    if (phi.size() != e.size() || phi.empty()) continue;
-    // admissible points solid, singular or over-limit ones dotted
-    Series ok, excluded;
-    ok.label = id_label(c) + " (x_S = " + format_sig(c.x_s_m, 4) + " m)";
-    excluded.label = "";
-    ok.colour = excluded.colour = colour_for(id_key(c));
-    excluded.style = LineStyle::kDotted;
-    for (size_t k = 0; k < phi.size(); ++k) {
-      const char st = k < status.size() ? status[k] : 'o';
-      ok.x.push_back(phi[k]);
-      excluded.x.push_back(phi[k]);
-      ok.y.push_back(st == 'o' ? e[k] : NAN);
-      excluded.y.push_back(st == 's' || st == 'x' ? e[k] : NAN);
-      // join the dotted part to its solid neighbours
-      if (k > 0 && (st == 'o') != (k - 1 < status.size() && status[k - 1] == 'o')) {
-        if (st == 'o')
-          excluded.y[k] = e[k];
-        else
-          excluded.y[k - 1] = e[k - 1];
-      }
-    }
-    plot.series.push_back(std::move(ok));
-    plot.series.push_back(std::move(excluded));
-    // the optimum itself, on its own curve (the curve is drawn at the optimum's x_S)
-    for (const auto& o : pl.optima) {
-      if (id_key(o) != id_key(c) || no_energy(o)) continue;
-      Series mark;
-      mark.label = "";
-      mark.colour = colour_for(id_key(c));
-      mark.markers = true;
-      mark.x = {o.phi_deg};
-      mark.y = {o.energy_J};
-      if (std::isfinite(mark.x[0]) && std::isfinite(mark.y[0]))
-        plot.series.push_back(std::move(mark));
-    }
-  }
-  bool any = false;
-  for (const auto& se : plot.series)
-    for (double y : se.y) any |= std::isfinite(y);
-  if (!any) {
-    s.paragraph("No energy-versus-direction curve has a reachable point.");
-    return;
-  }
-  // (each curve's x_S is in its legend entry)
-  s.figure(
-      half(figures.line("energy_vs_phi", half_size(plot),
-                        std::string("Energy of the motion over the direction angle φ at "
-                                    "each optimum's own ") +
-                            "start abscissa x_S, as the thesis's " + thesis_figure(pl, 5) +
-                            "; the marker is the optimum itself (an optimum on the margin sits "
-                            "where its curve turns dotted). Solid: admissible; dotted: inside "
-                            "the margin or over a limit (excluded); gaps: unreachable or the "
-                            "energy not converged.")));
-}
-
-// one placement map (rows of text in results.json) as a shaded map
-bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& s) {
-  const auto& xs = m.x_m;
-  const auto& ys = m.y_m;
-  const auto& er = m.energy_J_rows;
-  const auto& sr = m.status_rows;
-  if (xs.size() < 2 || ys.size() < 2 || er.size() != ys.size() || sr.size() != ys.size())
-    return false;
-  const size_t nx = xs.size(), ny = ys.size();
-  std::vector<double> z(nx * ny, NAN);
-  std::vector<char> st(nx * ny, '.');
-  for (size_t j = 0; j < ny; ++j) {
-    std::istringstream in(er[j]);
-    const std::string& status = sr[j];
-    std::string tok;
-    for (size_t i = 0; i < nx && (in >> tok); ++i) {
-      if (tok != "-") z[j * nx + i] = std::strtod(tok.c_str(), nullptr);
-      if (i < status.size()) st[j * nx + i] = status[i];
-    }
-  }
-  // drawn over the reachable part of the grid and the marked points (a few cells around
-  // them): the rest is unreachable, and a map of mostly grey told little at print size
-  size_t i0 = nx, i1 = 0, j0 = ny, j1 = 0;
-  auto include = [&](size_t i, size_t j) {
-    i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
-  };
-  for (size_t j = 0; j < ny; ++j)
-    for (size_t i = 0; i < nx; ++i)
-      if (st[j * nx + i] != '.') include(i, j);
-  auto nearest = [](const std::vector<double>& v, double x) {
-    const auto at = std::lower_bound(v.begin(), v.end(), x);
-    return static_cast<size_t>(
-        std::min<std::ptrdiff_t>(at - v.begin(), static_cast<std::ptrdiff_t>(v.size()) - 1));
-  };
-  auto include_point = [&](double x, double y) {
-    if (std::isfinite(x) && std::isfinite(y)) include(nearest(xs, x), nearest(ys, y));
-  };
-  if (m.optimum_xy_m) include_point((*m.optimum_xy_m)[0], (*m.optimum_xy_m)[1]);
-  for (const auto& th : pl.thesis_search)
-    if (id_key(th) == id_key(m)) include_point(th.root_xy_m[0], th.root_xy_m[1]);
-  bool cropped = false;
-  if (i0 > i1 || j0 > j1) {
-    i0 = j0 = 0, i1 = nx - 1, j1 = ny - 1;  // nothing reachable: the whole grid
+Section optima_section(const PS& pl, FigureWriter& figures) {
+  Section s;
+  s.id = "optima";
+  s.heading = "Optimal placements";
+  std::vector<SeriesOwner> owners;
+  Table t = optima_table(pl, &owners);
+  if (t.rows.empty()) {
+    s.paragraph("No program and configuration has an admissible placement.");
   } else {
-    const size_t pad_x = std::max<size_t>(2, (i1 - i0) / 12),
-                 pad_y = std::max<size_t>(2, (j1 - j0) / 12);
-    i0 = i0 > pad_x ? i0 - pad_x : 0, j0 = j0 > pad_y ? j0 - pad_y : 0;
-    i1 = std::min(nx - 1, i1 + pad_x), j1 = std::min(ny - 1, j1 + pad_y);
-    // at least a quarter of the grid along each axis: a thin reachable band stays readable
-    auto widen_to = [](size_t& lo, size_t& hi, size_t n) {
-      const size_t want = std::max<size_t>(2, n / 4);
-      while (hi - lo + 1 < want) {
-        if (lo > 0) --lo;
-        if (hi - lo + 1 < want && hi + 1 < n) ++hi;
-      }
-    };
-    widen_to(i0, i1, nx);
-    widen_to(j0, j1, ny);
-    cropped = i0 > 0 || j0 > 0 || i1 < nx - 1 || j1 < ny - 1;
+    s.table(std::move(t));
+    s.table(decision_table(pl));
+    add_binding_notes(pl, s);
+    if (auto fig = margin_figure(pl, figures)) s.figure(std::move(*fig));
   }
-  const size_t cx = i1 - i0 + 1, cy = j1 - j0 + 1;
-  // thinned grid for drawing; a drawn cell takes the most severe status of its block
-  const size_t kx = (cx + kMaxMapCells - 1) / kMaxMapCells,
-               ky = (cy + kMaxMapCells - 1) / kMaxMapCells;
-  const size_t mx = (cx - 1) / kx + 1, my = (cy - 1) / ky + 1;
-  ShadedMap map;
-  map.title = "energy over root locations, " + id_label(m);
-  map.x_label = "root X (m), along the line";
-  map.y_label = "root Y (m)";
-  map.z_label = "energy (J)";
-  map.nx = static_cast<int>(mx);
-  map.ny = static_cast<int>(my);
-  map.fit_height = true;
-  map.x_min = xs[i0];
-  map.x_max = xs[i0 + (mx - 1) * kx];
-  map.y_min = ys[j0];
-  map.y_max = ys[j0 + (my - 1) * ky];
-  // a grid far longer one way than the other is drawn with axes not to scale (to scale it
-  // was a sliver)
-  const double span_ratio = (map.y_max - map.y_min) / (map.x_max - map.x_min);
-  if (!(span_ratio < 2.5 && span_ratio > 0.4)) map.equal_aspect = false;
-  map.z.assign(mx * my, NAN);
-  MapRegion unreachable{"unreachable", kUnreachable, std::vector<std::uint8_t>(mx * my, 0)};
-  MapRegion singular{"inside the margin (inadmissible)", kSingular,
-                     std::vector<std::uint8_t>(mx * my, 0)};
-  MapRegion over{"over a torque/power limit", kOverLimit, std::vector<std::uint8_t>(mx * my, 0)};
-  std::vector<double> feasible;
-  for (size_t j = 0; j < my; ++j)
-    for (size_t i = 0; i < mx; ++i) {
-      int worst = 3;  // 0 unreachable, 1 singular, 2 over, 3 feasible
-      for (size_t b = j0 + j * ky; b < std::min(j1 + 1, j0 + (j + 1) * ky); ++b)
-        for (size_t a = i0 + i * kx; a < std::min(i1 + 1, i0 + (i + 1) * kx); ++a) {
-          const char c = st[b * nx + a];
-          worst = std::min(worst, c == '.' ? 0 : c == 's' ? 1 : c == 'x' ? 2 : 3);
-        }
-      const size_t k = j * mx + i;
-      if (worst == 0)
-        unreachable.mask[k] = 1;
-      else if (worst == 1)
-        singular.mask[k] = 1;
-      else if (worst == 2)
-        over.mask[k] = 1;
-      else {
-        map.z[k] = z[(j0 + j * ky) * nx + i0 + i * kx];
-        if (std::isfinite(map.z[k])) feasible.push_back(map.z[k]);
-      }
-    }
-  // colours saturate at the 95th percentile: near the margin the energy climbs steeply
-  std::string saturation;
-  if (feasible.size() > 20) {
-    std::vector<double> sorted = feasible;
-    std::sort(sorted.begin(), sorted.end());
-    const double cap = sorted[static_cast<size_t>(0.95 * (sorted.size() - 1))];
-    if (cap < sorted.back()) {
-      for (double& v : map.z)
-        if (std::isfinite(v)) v = std::min(v, cap);
-      saturation = " Colours saturate at " + format_sig(cap, 4) +
-                   " J (95th percentile; the "
-                   "largest admissible energy is " +
-                   format_sig(sorted.back(), 4) + " J).";
-    }
-  }
-  map.regions = {unreachable, singular, over};
-  Series line;
-  line.label = "task line";
-  line.colour = {0, 0, 0};
-  line.width = 2.5;
-  line.x = {0.0, pl.length_m};
-  line.y = {0.0, 0.0};
-  if (std::isfinite(line.x[1])) map.overlays.push_back(line);
-  if (m.optimum_xy_m)
-    map.markers.push_back(
-        {(*m.optimum_xy_m)[0], (*m.optimum_xy_m)[1], "optimum", colour_for(id_key(m))});
-  for (const auto& th : pl.thesis_search)
-    if (id_key(th) == id_key(m))
-      map.markers.push_back({th.root_xy_m[0],
-                             th.root_xy_m[1],
-                             "thesis-interval best (" + status_text(th.status) + ")",
-                             {0, 0, 0},
-                             false});
-  const std::string name = "map_" + m.program + "_" + as_text(m.configuration);
-  const std::string drawn =
-      cropped ? ", drawn where the line is reachable (X " + format_sig(map.x_min, 3) + " to " +
-                    format_sig(map.x_max, 3) + " m, Y " + format_sig(map.y_min, 3) + " to " +
-                    format_sig(map.y_max, 3) + " m; "
-              : " (";
-  Figure f =
-      figures.map(name, map,
-                  id_label(m) + ": a " + std::to_string(nx) + " × " + std::to_string(ny) + " grid" +
-                      drawn + std::to_string(mx) + " × " + std::to_string(my) + " cells drawn" +
-                      (map.equal_aspect ? "" : "; axes not to scale") + ")." + saturation);
-  f.half = true;  // the four maps print two by two
-  s.figure(std::move(f));
-  return true;
-}
+  Table u;
+  u.caption = "Programs and configurations without an admissible placement.";
+  u.header = {"program, configuration", "why"};
+  for (const auto& o : pl.unsolved) u.rows.push_back({id_label(o), o.reason});
+  if (!u.rows.empty()) s.table(std::move(u));
 
-Section maps_section(const PS& pl, FigureWriter& figures) {
-  Section s;
-  s.id = "maps";
-  s.heading = "Placement maps and optimal root locations";
-  int n = 0;
-  for (const auto& m : pl.maps) n += map_figure(pl, m, figures, s);
-  // the maps' common explanation after them: a heading followed by a paragraph was left at
-  // the foot of a page when the first row of maps did not fit under them
-  if (n == 0)
-    s.paragraph("The result holds no placement map.");
-  else
-    s.paragraph(
-        "The maps above: the energy of the task over root locations (X, Y) in the "
-        "frame fixed to the line (the line runs from the origin along X), one map per "
-        "program and configuration. Only admissible placements are shaded; unreachable, "
-        "inside-the-margin and over-limit regions are flat colours; the circled cross "
-        "is the optimum, the square the best of the thesis's own intervals. Y < 0 is "
-        "the mirror image with the configurations swapped.");
-  add_energy_vs_phi(pl, figures, s);
-  return s;
-}
-
-// the optimal root locations (the thesis's Fig. 9.30) into `maps`, the torque trade-off
-// (Pareto fronts) as a section of its own
-Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps) {
-  Section s;
-  s.id = "root-loci";
-  s.heading = "The torque trade-off";
-  const double length = pl.length_m;
-  const double r_in = pl.annulus_m[0], r_out = pl.annulus_m[1];
-  ShadedMap loci;
-  loci.title = "optimal root locations";
-  loci.x_label = "root X (m), along the line";
-  loci.y_label = "root Y (m)";
-  loci.nx = loci.ny = 2;
-  loci.z.assign(4, NAN);
-  double x_lo = std::min(0.0, length), x_hi = std::max(0.0, length), y_lo = 0, y_hi = 0;
-  auto grow = [&](double x, double y) {
-    if (!std::isfinite(x) || !std::isfinite(y)) return;
-    x_lo = std::min(x_lo, x);
-    x_hi = std::max(x_hi, x);
-    y_lo = std::min(y_lo, y);
-    y_hi = std::max(y_hi, y);
-  };
-  Series line;
-  line.label = "task line";
-  line.colour = {0, 0, 0};
-  line.width = 2.5;
-  line.x = {0.0, length};
-  line.y = {0.0, 0.0};
-  loci.overlays.push_back(line);
-  for (const auto& o : pl.optima) {
-    const double X = o.root_xy_m[0], Y = o.root_xy_m[1];
-    if (!std::isfinite(X) || !std::isfinite(Y)) continue;
-    loci.markers.push_back({X, Y, id_label(o), colour_for(id_key(o))});
-    grow(X, Y);
-    // the optimum's workspace: the line must lie inside the annulus
-    for (double r : {r_in, r_out}) {
-      if (!std::isfinite(r)) continue;
-      Series c;
-      c.colour = colour_for(id_key(o));
-      c.style = LineStyle::kDotted;
-      c.width = 1.0;
-      for (int k = 0; k <= 180; ++k) {
-        c.x.push_back(X + r * std::cos(k * M_PI / 90));
-        c.y.push_back(Y + r * std::sin(k * M_PI / 90));
-      }
-      loci.overlays.push_back(std::move(c));
-    }
-  }
-  for (const auto& p : pl.pareto) {
-    const auto& xs = p.x_s_m;
-    const auto& ph = p.phi_deg;
-    if (xs.size() != ph.size() || xs.size() < 2 || p.joint != 1) continue;
-    Series locus;
-    locus.label = id_label(p) + ", Pareto locus";
-    locus.colour = colour_for(id_key(p));
-    locus.width = 1.2;
-    for (size_t k = 0; k < xs.size(); ++k) {
-      // root location in the line frame, eq. 4.14
-      locus.x.push_back(-xs[k] * std::cos(ph[k] * armstudy::core::kDeg));
-      locus.y.push_back(xs[k] * std::sin(ph[k] * armstudy::core::kDeg));
-      grow(locus.x.back(), locus.y.back());
-    }
-    loci.overlays.push_back(std::move(locus));
-  }
-  if (!loci.markers.empty()) {
-    const double pad = std::max(0.1, std::isfinite(r_out) ? 0.0 : 0.1);
-    const double reach = std::isfinite(r_out) ? r_out : 0;
-    double x0 = x_lo - pad, x1 = x_hi + pad, y0 = y_lo - pad, y1 = y_hi + pad;
-    for (const auto& mk : loci.markers) {
-      x0 = std::min(x0, mk.x - reach);
-      x1 = std::max(x1, mk.x + reach);
-      y0 = std::min(y0, mk.y - reach);
-      y1 = std::max(y1, mk.y + reach);
-    }
-    loci.x_min = x0;
-    loci.x_max = x1;
-    loci.y_min = y0;
-    loci.y_max = y1;
-    loci.fit_height = true;
-    maps.figure(
-        half(figures.map("root_loci", loci,
-                         "Optimal root location of each program and configuration in the line's "
-                         "frame (the line starts at the origin), as the thesis's Figure 9.30, "
-                         "with each optimum's workspace annulus (dotted) and the locus of the "
-                         "least-energy root as the allowed peak torque of joint 1 grows (the "
-                         "trade-off below).")));
-  }
-  for (int joint = 1; joint <= 2; ++joint) {
-    LinePlot plot;
-    plot.title = "least energy for an allowed peak torque of joint " + std::to_string(joint);
-    plot.x_label = "peak torque of joint " + std::to_string(joint) + " (N m)";
-    plot.y_label = "least energy (J)";
-    bool excluded_labelled = false;
-    std::vector<Series> excluded_series;
-    for (const auto& p : pl.pareto) {
-      if (p.joint != joint) continue;
-      Series se;
-      se.label = id_label(p);
-      se.colour = colour_for(id_key(p));
-      se.markers = p.energy_J.size() <= 40;
-      for (size_t k = 0; k < p.energy_J.size(); ++k) {
-        const auto& pk = p.peak_torque_Nm;
-        if (k >= pk.size() || !std::isfinite(pk[k][joint - 1])) continue;
-        se.x.push_back(pk[k][joint - 1]);
-        se.y.push_back(p.energy_J[k]);
-      }
-      if (!se.x.empty()) plot.series.push_back(std::move(se));
-      // inadmissible candidates (inside the margin): grey, dotted, never part of the front
-      {
-        const auto& ex = p.excluded;
-        Series xs;
-        xs.label = excluded_labelled ? "" : "inside the margin (inadmissible, not a front)";
-        excluded_labelled = true;
-        xs.colour = {150, 150, 150};
-        xs.style = LineStyle::kDotted;
-        xs.width = 1.0;
-        const auto& pk = ex.peak_torque_Nm;
-        for (size_t k = 0; k < ex.energy_J.size() && k < pk.size(); ++k) {
-          if (!std::isfinite(pk[k][joint - 1])) continue;
-          xs.x.push_back(pk[k][joint - 1]);
-          xs.y.push_back(ex.energy_J[k]);
-        }
-        if (!xs.x.empty()) excluded_series.push_back(std::move(xs));
-      }
-    }
-    for (auto& xs : excluded_series) plot.series.push_back(std::move(xs));
-    bool any = false;
-    for (const auto& se : plot.series) any |= se.x.size() >= 1;
-    if (any)
-      s.figure(half(figures.line("pareto_joint" + std::to_string(joint), half_size(plot),
-                                 "Trade-off for joint " + std::to_string(joint) +
-                                     ": the least admissible energy whose peak torque of joint " +
-                                     std::to_string(joint) + " stays below the abscissa.")));
-  }
-  if (s.blocks.empty())
-    s.paragraph("No admissible placement, so no trade-off between peak torque and energy.");
-  else
-    s.paragraph(
-        "The trade-off plots show what a stronger motor buys: the least energy over the "
-        "admissible placements only (clear of the margin, within every limit, energy "
-        "converged) whose peak torque stays below the abscissa. Grey dotted: the same over "
-        "candidates inside the margin, which are inadmissible and never part of a front.");
+  add_thesis_placements(pl, s);
+  if (owners.empty()) return s;
+  add_optima_plots(pl, owners, figures, s);
   return s;
 }
 

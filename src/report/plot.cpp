@@ -1,7 +1,7 @@
 #include "report/plot.hpp"
 
-#include "report/part_name.hpp"
 #include "report/svg_compact.hpp"
+#include "sys/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <locale.h>
@@ -213,7 +213,7 @@ class Page {
     const std::string text = buf_ ? std::string(buf_, len_) : std::string();
     if (text.find("</svg>") == std::string::npos)
       throw std::runtime_error("plplot drew no complete SVG for " + svg.string());
-    write_file_atomic(svg, compact_svg(text));
+    sys::write_file_atomic(svg, compact_svg(text));
   }
 
   ~Page() {

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "report/number_format.hpp"
-#include "report/scratch_dir.hpp"
 #include "report/text_escape.hpp"
+#include "sys/atomic_file.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -117,7 +117,7 @@ std::string write_tornado(const std::filesystem::path& dir, const SensitivityRec
     << "\" stroke=\"#333\" stroke-width=\"1\"/>\n";
   o << "</svg>\n";
   const std::string file = "sensitivity_tornado.svg";
-  write_file_atomic(dir / file, o.str());
+  sys::write_file_atomic(dir / file, o.str());
   if (caption)
     *caption = "The change of the " + s.label + " (" + format_sig(s.nominal, 5) +
                (s.unit.empty() ? "" : " " + s.unit) +

@@ -29,14 +29,10 @@ std::string value_text(const json& v) { return v.is_string() ? v.get<std::string
 
 }  // namespace
 
-int write_sweep_report(const fs::path& dir, const json& table, const std::string& title) {
-  fs::create_directories(dir);
-  const json& rows = table.contains("rows") ? table["rows"] : json::array();
-  std::vector<std::string> params;
-  if (table.contains("parameters"))
-    for (const auto& p : table["parameters"]) params.push_back(p.get<std::string>());
+namespace {
 
-  // the x axis: the first parameter with a number in every row
+// the x axis: the first parameter with a number in every row; -1 when none has
+int x_axis_of(const json& rows, const std::vector<std::string>& params) {
   int x_axis = -1;
   for (size_t a = 0; a < params.size() && x_axis < 0; ++a) {
     bool numeric = !rows.empty();
@@ -45,11 +41,14 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
                 std::isfinite(as_number(r["parameters"][params[a]]));
     if (numeric) x_axis = static_cast<int>(a);
   }
+  return x_axis;
+}
 
-  CasePage page;
-  page.title = title;
-  page.study = "sweep";
-  int failed = 0;
+// the key figures with a number in a passing row, in the studies' own order of key figures
+// (the first is the headline), else by name; *failed counts the rows that did not pass
+std::vector<std::string> figure_names_of(const json& table, const json& rows, int* failed_rows) {
+  int& failed = *failed_rows;
+  failed = 0;
   std::set<std::string> numeric;
   for (const auto& r : rows) {
     if (r.value("status", "") != "ok") {
@@ -69,19 +68,11 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
   for (const auto& n : numeric)
     if (std::find(figure_names.begin(), figure_names.end(), n) == figure_names.end())
       figure_names.push_back(n);
-  page.status = failed == 0 ? "solved" : "failed";
-  page.message = std::to_string(rows.size()) + " case(s) over " + std::to_string(params.size()) +
-                 " parameter(s); " + std::to_string(failed) + " failed";
-  page.key_figures = {{"cases", std::to_string(rows.size())}, {"failed", std::to_string(failed)}};
+  return figure_names;
+}
 
-  Section about;
-  about.id = "sweep";
-  about.heading = "The sweep";
-  about.new_page = false;
-  about.paragraph(
-      "Each row of sweep.csv (and sweep.json) is one case: its parameter values and "
-      "the key figures of its results.json. The plots below draw every key figure "
-      "over the first numeric parameter, one curve per combination of the others.");
+// each parameter and its values (at most 14 named)
+Table axes_table(const json& rows, const std::vector<std::string>& params) {
   Table axes;
   axes.header = {"parameter", "values"};
   for (const auto& p : params) {
@@ -103,7 +94,85 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
     }
     axes.rows.push_back({p, list});
   }
-  about.table(std::move(axes));
+  return axes;
+}
+
+// the key figure `name` over the parameter x_axis, one curve per combination of the other
+// parameters (*curve_count of them), points sorted along x
+LinePlot key_figure_plot(const json& table, const json& rows,
+                         const std::vector<std::string>& params, int x_axis,
+                         const std::string& name, size_t* curve_count) {
+  const std::string& xp = params[x_axis];
+  std::map<std::string, std::vector<std::pair<double, double>>> curves;
+  for (const auto& r : rows) {
+    if (r.value("status", "") != "ok" || !r["key_figures"].contains(name)) continue;
+    std::string label;
+    for (size_t a = 0; a < params.size(); ++a) {
+      if (static_cast<int>(a) == x_axis || !r["parameters"].contains(params[a])) continue;
+      label +=
+          (label.empty() ? "" : ", ") + params[a] + " = " + value_text(r["parameters"][params[a]]);
+    }
+    const json& v = r["key_figures"][name];
+    curves[label].emplace_back(as_number(r["parameters"][xp]),
+                               v.is_number() ? v.get<double>() : NAN);
+  }
+  LinePlot plot;
+  plot.title = name;
+  plot.x_label = xp;
+  std::string unit;
+  if (table.contains("units") && table["units"].contains(name) && table["units"][name].is_string())
+    unit = table["units"][name].get<std::string>();
+  plot.y_label = unit.empty() ? name : name + " (" + unit + ")";
+  plot.height_pt = 360;
+  const std::vector<Rgb> palette = palette_colours();
+  for (auto& [l, pts] : curves) {  // the legend in the order of the labels' text
+    std::sort(pts.begin(), pts.end());
+    Series s;
+    s.label = l;
+    s.colour = palette[plot.series.size() % palette.size()];
+    s.markers = pts.size() <= 40;
+    for (const auto& [x, y] : pts) {
+      s.x.push_back(x);
+      s.y.push_back(y);
+    }
+    plot.series.push_back(std::move(s));
+  }
+  *curve_count = curves.size();
+  return plot;
+}
+
+}  // namespace
+
+// the sweep report: the sweep and its axes, then every key figure over the first numeric
+// parameter (over 60 lines: the page's two sections, in order)
+int write_sweep_report(const fs::path& dir, const json& table, const std::string& title) {
+  fs::create_directories(dir);
+  const json& rows = table.contains("rows") ? table["rows"] : json::array();
+  std::vector<std::string> params;
+  if (table.contains("parameters"))
+    for (const auto& p : table["parameters"]) params.push_back(p.get<std::string>());
+
+  const int x_axis = x_axis_of(rows, params);
+
+  CasePage page;
+  page.title = title;
+  page.study = "sweep";
+  int failed = 0;
+  const std::vector<std::string> figure_names = figure_names_of(table, rows, &failed);
+  page.status = failed == 0 ? "solved" : "failed";
+  page.message = std::to_string(rows.size()) + " case(s) over " + std::to_string(params.size()) +
+                 " parameter(s); " + std::to_string(failed) + " failed";
+  page.key_figures = {{"cases", std::to_string(rows.size())}, {"failed", std::to_string(failed)}};
+
+  Section about;
+  about.id = "sweep";
+  about.heading = "The sweep";
+  about.new_page = false;
+  about.paragraph(
+      "Each row of sweep.csv (and sweep.json) is one case: its parameter values and "
+      "the key figures of its results.json. The plots below draw every key figure "
+      "over the first numeric parameter, one curve per combination of the others.");
+  about.table(axes_table(rows, params));
   if (failed > 0)
     about.note(std::to_string(failed) +
                " case(s) did not pass (unsolvable or a failed check): "
@@ -126,46 +195,12 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
     const std::string& xp = params[x_axis];
     FigureWriter writer(dir);
     for (const std::string& name : figure_names) {
-      // one curve per combination of the other parameters, points sorted along x
-      std::map<std::string, std::vector<std::pair<double, double>>> curves;
-      for (const auto& r : rows) {
-        if (r.value("status", "") != "ok" || !r["key_figures"].contains(name)) continue;
-        std::string label;
-        for (size_t a = 0; a < params.size(); ++a) {
-          if (static_cast<int>(a) == x_axis || !r["parameters"].contains(params[a])) continue;
-          label += (label.empty() ? "" : ", ") + params[a] + " = " +
-                   value_text(r["parameters"][params[a]]);
-        }
-        const json& v = r["key_figures"][name];
-        curves[label].emplace_back(as_number(r["parameters"][xp]),
-                                   v.is_number() ? v.get<double>() : NAN);
-      }
-      LinePlot plot;
-      plot.title = name;
-      plot.x_label = xp;
-      std::string unit;
-      if (table.contains("units") && table["units"].contains(name) &&
-          table["units"][name].is_string())
-        unit = table["units"][name].get<std::string>();
-      plot.y_label = unit.empty() ? name : name + " (" + unit + ")";
-      plot.height_pt = 360;
-      const std::vector<Rgb> palette = palette_colours();
-      for (auto& [l, pts] : curves) {  // the legend in the order of the labels' text
-        std::sort(pts.begin(), pts.end());
-        Series s;
-        s.label = l;
-        s.colour = palette[plot.series.size() % palette.size()];
-        s.markers = pts.size() <= 40;
-        for (const auto& [x, y] : pts) {
-          s.x.push_back(x);
-          s.y.push_back(y);
-        }
-        plot.series.push_back(std::move(s));
-      }
+      size_t curves = 0;
+      const LinePlot plot = key_figure_plot(table, rows, params, x_axis, name, &curves);
       figs.figure(writer.line(
           "sweep_" + std::to_string(plots + 1), plot,
           "The key figure " + name + " of every passing case over " + xp +
-              (curves.size() > 1 ? ", one curve per combination of the other parameters" : "")));
+              (curves > 1 ? ", one curve per combination of the other parameters" : "")));
       ++plots;
     }
   }

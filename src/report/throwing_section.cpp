@@ -8,29 +8,12 @@
 #include "report/number_format.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
+#include "report/throwing_page.hpp"
 #include "studies/throwing/results_section.hpp"
 
 namespace armstudy::report {
-namespace {
 
-using nlohmann::json;
-
-using TS = studies::ThrowingResultsSection;
-
-struct Motion {
-  std::string label, colour_key;
-  const TS::Motion* m;
-};
-
-std::vector<Motion> motions(const TS::Optimised& th) {
-  std::vector<Motion> out;
-  out.push_back({"eq. 8 start", "initial", &th.initial});
-  if (th.reference_motion)
-    out.push_back({"IDP's repaired start", "reference", &*th.reference_motion});
-  out.push_back({"IDP optimum", "idp", &th.optimum});
-  if (th.nlopt.run) out.push_back({"SLSQP (gradient)", "gradient", &th.nlopt.run->motion});
-  return out;
-}
+namespace throwing_page {
 
 // one plot over time per motion: a scalar series, or column `col` of a series of rows (every
 // column when col < 0, named by column_names)
@@ -80,6 +63,24 @@ LinePlot motion_plot(const std::vector<Motion>& ms, const std::string& title,
   return motion_plot(ms, title, y_label, scalar, nullptr, -1, {});
 }
 
+}  // namespace throwing_page
+
+namespace {
+
+using nlohmann::json;
+
+using namespace throwing_page;  // TS, Motion, Page, motion_plot: throwing_page.hpp
+
+std::vector<Motion> motions(const TS::Optimised& th) {
+  std::vector<Motion> out;
+  out.push_back({"eq. 8 start", "initial", &th.initial});
+  if (th.reference_motion)
+    out.push_back({"IDP's repaired start", "reference", &*th.reference_motion});
+  out.push_back({"IDP optimum", "idp", &th.optimum});
+  if (th.nlopt.run) out.push_back({"SLSQP (gradient)", "gradient", &th.nlopt.run->motion});
+  return out;
+}
+
 // "[a, b, c]" at 3 significant digits
 std::string release_error(const std::vector<double>& v) {
   std::string s;
@@ -97,25 +98,12 @@ std::string names(const std::vector<std::string>& v) {
   return s.empty() ? "none" : s;
 }
 
-}  // namespace
-
-void throwing_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const auto section = read_section<TS>(results, "throwing");
-  static const TS::Optimised kNotRun{};
-  // the optimisers' part: empty when the study stopped before them (nothing below is drawn)
-  const bool ran = section.run.has_value();
-  const TS::Optimised& th = ran ? *section.run : kNotRun;
-  const auto& par = section.parameters;
-  const auto& lim = section.limits;
-  const auto& idp = th.idp;
-  const std::optional<TS::NloptRun>& nl = th.nlopt.run;
-  const auto& ref = th.reference;
-  const auto ms = ran ? motions(th) : std::vector<Motion>{};
-
-  Section method;
-  method.id = "method";
-  method.heading = "Method";
-  method.new_page = false;
+// the method: the problem, its constraints and both optimisers' settings
+void add_method_paragraph(const Page& p, Section& method) {
+  const bool ran = p.ran;
+  const auto& lim = p.section.limits;
+  const auto& idp = p.th.idp;
+  const std::optional<TS::NloptRun>& nl = p.th.nlopt.run;
   if (ran)
     method.paragraph(
         "A 4-coordinate arm in a vertical plane throws a ball from a tray: links 1 and 2 are "
@@ -163,6 +151,17 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
             : std::string(" The case runs IDP only.")) +
         " Both optimisers keep every normalised constraint " + format_sig(lim.backoff, 2) +
         " inside its limit.");
+}
+
+// the method, the model's sources, the assumptions and the parameters
+Section method_section(const Page& p) {
+  const TS& section = p.section;
+  const auto& par = p.section.parameters;
+  Section method;
+  method.id = "method";
+  method.heading = "Method";
+  method.new_page = false;
+  add_method_paragraph(p, method);
   method.note(
       "Several printed coefficients of the equations of motion of Sato et al. are inconsistent "
       "with its "
@@ -183,48 +182,54 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
     if (!at.rows.empty()) method.table(std::move(at));
   }
   method.table(json_table(to_json(par), "Parameters used (SI; _deg in degrees)."));
-  page.sections.push_back(std::move(method));
+  return method;
+}
 
-  Section res;
-  res.id = "results";
-  res.heading = "Saving, optimisers compared";
-  {
-    const std::string& kind = ref.kind;
-    const TS::Repair repair = ref.repair.value_or(TS::Repair{});
-    std::string text = "The saving is measured against the eq. 8 start (" +
-                       format_sig(section.energy_initial_J, 5) + " J), the paper's comparison";
-    if (kind == "eq8")
-      text += ", which meets every constraint.";
-    else if (!kind.empty())
-      text +=
-          ", which breaks the limits in the table below: a saving against it includes "
-          "what meeting them costs or saves.";
-    if (std::isfinite(section.saving_percent))
-      text += " The answer, " + format_sig(section.energy_optimised_J, 5) + " J, saves " +
-              format_sig(section.saving_percent, 3) + " %.";
-    else
-      text += " There is no feasible answer, so no saving is quoted.";
-    if (kind == "repaired")
-      text += " IDP starts from a feasible repair of eq. 8 (" + repair.method + "; " +
-              repair.return_code + " after " + as_text(repair.iterations) + " iterations), " +
-              format_sig(section.energy_reference_J, 5) +
-              " J: the first point of that descent, not an optimum, which moves with the last "
-              "digit of an input, so no saving is quoted against it.";
-    else if (kind == "none")
-      text += " The repair of eq. 8 found no feasible profile (" + repair.return_code +
-              "), so IDP starts from the infeasible eq. 8.";
-    res.paragraph(text);
-    Table br;
-    br.caption =
-        "How far the raw eq. 8 trajectory breaks each limit it breaks (margin < 0; "
-        "normalised: the excess as a fraction of the limit, for the contact and "
-        "friction of the ball's weight m4 g).";
-    br.header = {"constraint", "margin", "normalised excess"};
-    for (const auto& b : ref.raw_breaks)
-      br.rows.push_back({b.constraint, format_sig(b.margin, 4) + " " + b.unit,
-                         format_sig(b.worst_normalised, 3)});
-    if (!br.rows.empty()) res.table(std::move(br));
-  }
+// what the saving is measured against, and how far the raw eq. 8 start breaks the limits
+void add_saving(const Page& p, Section& res) {
+  const TS& section = p.section;
+  const auto& ref = p.th.reference;
+  const std::string& kind = ref.kind;
+  const TS::Repair repair = ref.repair.value_or(TS::Repair{});
+  std::string text = "The saving is measured against the eq. 8 start (" +
+                     format_sig(section.energy_initial_J, 5) + " J), the paper's comparison";
+  if (kind == "eq8")
+    text += ", which meets every constraint.";
+  else if (!kind.empty())
+    text +=
+        ", which breaks the limits in the table below: a saving against it includes "
+        "what meeting them costs or saves.";
+  if (std::isfinite(section.saving_percent))
+    text += " The answer, " + format_sig(section.energy_optimised_J, 5) + " J, saves " +
+            format_sig(section.saving_percent, 3) + " %.";
+  else
+    text += " There is no feasible answer, so no saving is quoted.";
+  if (kind == "repaired")
+    text += " IDP starts from a feasible repair of eq. 8 (" + repair.method + "; " +
+            repair.return_code + " after " + as_text(repair.iterations) + " iterations), " +
+            format_sig(section.energy_reference_J, 5) +
+            " J: the first point of that descent, not an optimum, which moves with the last "
+            "digit of an input, so no saving is quoted against it.";
+  else if (kind == "none")
+    text += " The repair of eq. 8 found no feasible profile (" + repair.return_code +
+            "), so IDP starts from the infeasible eq. 8.";
+  res.paragraph(text);
+  Table br;
+  br.caption =
+      "How far the raw eq. 8 trajectory breaks each limit it breaks (margin < 0; "
+      "normalised: the excess as a fraction of the limit, for the contact and "
+      "friction of the ball's weight m4 g).";
+  br.header = {"constraint", "margin", "normalised excess"};
+  for (const auto& b : ref.raw_breaks)
+    br.rows.push_back(
+        {b.constraint, format_sig(b.margin, 4) + " " + b.unit, format_sig(b.worst_normalised, 3)});
+  if (!br.rows.empty()) res.table(std::move(br));
+}
+
+// SLSQP's starts and the local optima they reach
+void add_starts(const Page& p, Section& res) {
+  const TS& section = p.section;
+  const std::optional<TS::NloptRun>& nl = p.th.nlopt.run;
   if (nl && nl->starts) {
     Table st;
     st.caption =
@@ -245,92 +250,110 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                          as_text(x.iterations)});
     res.table(std::move(st));
   }
-  {
-    Table ct;
-    ct.caption =
-        "The optimisers on equal terms: the same constrained problem, the same start. "
-        "Margins (> 0: met) come from re-simulating each optimum with " +
-        (ran ? as_text(th.verification.refinement) : std::string()) +
-        "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
-        "Binding: constraints within twice the back-off of their limit.";
-    // one column per optimiser (the rows are the quantities, so the table fits the page)
-    const auto& cmp = th.comparison;
-    ct.header = {"quantity"};
-    for (const auto& row : cmp) ct.header.push_back(row.optimiser);
-    auto add = [&](const std::string& label, auto value) {
-      std::vector<std::string> cells = {label};
-      for (const auto& row : cmp) cells.push_back(value(row));
-      ct.rows.push_back(std::move(cells));
-    };
-    auto field = [](double TS::Comparison::*key, int digits) {
-      return [key, digits](const TS::Comparison& row) { return format_sig(row.*key, digits); };
-    };
-    auto margin = [](double TS::Margins::*key) {
-      return [key](const TS::Comparison& row) { return format_sig(row.margins.*key, 3); };
-    };
-    if (!cmp.empty()) {
-      add("energy E = ∫ e i dt (J)", field(&TS::Comparison::energy_J, 5));
-      add("  mechanical work (J)", field(&TS::Comparison::mechanical_J, 4));
-      add("  copper loss Ra i² (J)", field(&TS::Comparison::copper_J, 4));
-      add("  motor friction (J)", field(&TS::Comparison::friction_J, 3));
-      add("converged", [](const TS::Comparison& row) { return yes_no(row.converged); });
-      add("simulations", [](const TS::Comparison& row) { return as_text(row.simulations); });
-      add("time (s)", field(&TS::Comparison::run_time_s, 3));
-      add("margin: contact N − margin (N)", margin(&TS::Margins::contact_N));
-      add("margin: μ − friction needed |F_t|/N", margin(&TS::Margins::friction));
-      add("margin: tray angle λ/2 − |θ4| (rad)", margin(&TS::Margins::tray_rad));
-      add("margin: release tolerance − |θ3 error| (rad)", margin(&TS::Margins::release_rad));
-      add("margin: voltage (V)", margin(&TS::Margins::voltage_V));
-      add("margin: current (A)", margin(&TS::Margins::current_A));
-      add("margin: power (W)", margin(&TS::Margins::power_W));
-      add("binding constraints", [](const TS::Comparison& row) { return names(row.binding); });
-      add("binding motor rating", [](const TS::Comparison& row) { return row.binding_rating; });
-    }
-    if (!ct.rows.empty()) res.table(std::move(ct));
-    const double idp_kkt = idp.first_order ? idp.first_order->kkt_residual : NAN;
-    const double kkt_tol = idp.first_order ? idp.first_order->kkt_tolerance : NAN;
-    std::string conv =
-        "IDP: " +
-        std::string(idp.converged ? "converged (every seed stopped on its tolerance, its optimum "
-                                    "first-order stationary)"
-                                  : "NOT converged: a stall, not an optimum") +
-        "; best seed " + as_text(idp.best_seed) + " ran " + as_text(idp.passes) +
-        " passes, last pass gain " + format_sig(idp.last_gain, 2) + ", first-order residual " +
-        format_sig(idp_kkt, 2) + " per rad/s (tolerance " + format_sig(kkt_tol, 2) + ").";
-    if (nl) {
-      conv += " SLSQP's answer: " + nl->return_code + ", first-order residual " +
-              (nl->first_order ? format_sig(nl->first_order->kkt_residual, 2) : std::string("?")) +
-              ", " + (nl->converged ? "converged." : "NOT converged: not an optimum.");
-      if (nl->first_order && !nl->first_order->binding.empty())
-        conv += " What bounds it: the " + names(nl->first_order->binding) +
-                " constraints (positive multipliers).";
-    }
-    if (ran) res.paragraph(conv);
-    // the optimisers on the same problem should agree; say so when they do not
-    const auto& cm = th.comparison;
-    if (cm.size() >= 2) {
-      const double ei = cm[0].energy_J, eg = cm[1].energy_J;
-      if (std::isfinite(ei) && std::isfinite(eg) && std::abs(ei - eg) > 0.01 * std::min(ei, eg)) {
-        const bool idp_higher = ei > eg;
-        res.note(std::string(idp_higher ? "IDP" : "SLSQP") + "'s answer is " +
-                 format_sig(100 * (std::max(ei, eg) / std::min(ei, eg) - 1), 3) + " % above " +
-                 (idp_higher ? "SLSQP" : "IDP") + "'s for the same constrained problem." +
-                 (idp_higher
-                      ? " IDP (the paper's method, Luus's random search with region "
-                        "restoration) stops when whole passes gain under its tolerance, but its "
-                        "first-order residual (" +
-                            format_sig(idp_kkt, 2) +
-                            ") shows a descent direction left: the optimum lies on several "
-                            "constraint boundaries at once (the binding constraints above), "
-                            "where nearly every random candidate of a shrinking region is "
-                            "infeasible. More seeds, passes or candidates "
-                            "per node move it little (docs/throwing.md has the measurements), "
-                            "and an IDP started at SLSQP's answer stays there. So SLSQP's "
-                            "answer is the study's; IDP's is reported as the paper's method."
-                      : " Neither is proven global."));
-      }
+}
+
+// the optimisers on equal terms: one column each
+Table comparison_table(const Page& p) {
+  const TS::Optimised& th = p.th;
+  const bool ran = p.ran;
+  Table ct;
+  ct.caption =
+      "The optimisers on equal terms: the same constrained problem, the same start. "
+      "Margins (> 0: met) come from re-simulating each optimum with " +
+      (ran ? as_text(th.verification.refinement) : std::string()) +
+      "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
+      "Binding: constraints within twice the back-off of their limit.";
+  // one column per optimiser (the rows are the quantities, so the table fits the page)
+  const auto& cmp = th.comparison;
+  ct.header = {"quantity"};
+  for (const auto& row : cmp) ct.header.push_back(row.optimiser);
+  auto add = [&](const std::string& label, auto value) {
+    std::vector<std::string> cells = {label};
+    for (const auto& row : cmp) cells.push_back(value(row));
+    ct.rows.push_back(std::move(cells));
+  };
+  auto field = [](double TS::Comparison::*key, int digits) {
+    return [key, digits](const TS::Comparison& row) { return format_sig(row.*key, digits); };
+  };
+  auto margin = [](double TS::Margins::*key) {
+    return [key](const TS::Comparison& row) { return format_sig(row.margins.*key, 3); };
+  };
+  if (!cmp.empty()) {
+    add("energy E = ∫ e i dt (J)", field(&TS::Comparison::energy_J, 5));
+    add("  mechanical work (J)", field(&TS::Comparison::mechanical_J, 4));
+    add("  copper loss Ra i² (J)", field(&TS::Comparison::copper_J, 4));
+    add("  motor friction (J)", field(&TS::Comparison::friction_J, 3));
+    add("converged", [](const TS::Comparison& row) { return yes_no(row.converged); });
+    add("simulations", [](const TS::Comparison& row) { return as_text(row.simulations); });
+    add("time (s)", field(&TS::Comparison::run_time_s, 3));
+    add("margin: contact N − margin (N)", margin(&TS::Margins::contact_N));
+    add("margin: μ − friction needed |F_t|/N", margin(&TS::Margins::friction));
+    add("margin: tray angle λ/2 − |θ4| (rad)", margin(&TS::Margins::tray_rad));
+    add("margin: release tolerance − |θ3 error| (rad)", margin(&TS::Margins::release_rad));
+    add("margin: voltage (V)", margin(&TS::Margins::voltage_V));
+    add("margin: current (A)", margin(&TS::Margins::current_A));
+    add("margin: power (W)", margin(&TS::Margins::power_W));
+    add("binding constraints", [](const TS::Comparison& row) { return names(row.binding); });
+    add("binding motor rating", [](const TS::Comparison& row) { return row.binding_rating; });
+  }
+  return ct;
+}
+
+// whether each optimiser converged, and a note when the two disagree
+void add_verdict(const Page& p, Section& res) {
+  const TS::Optimised& th = p.th;
+  const bool ran = p.ran;
+  const auto& idp = p.th.idp;
+  const std::optional<TS::NloptRun>& nl = p.th.nlopt.run;
+  const double idp_kkt = idp.first_order ? idp.first_order->kkt_residual : NAN;
+  const double kkt_tol = idp.first_order ? idp.first_order->kkt_tolerance : NAN;
+  std::string conv =
+      "IDP: " +
+      std::string(idp.converged ? "converged (every seed stopped on its tolerance, its optimum "
+                                  "first-order stationary)"
+                                : "NOT converged: a stall, not an optimum") +
+      "; best seed " + as_text(idp.best_seed) + " ran " + as_text(idp.passes) +
+      " passes, last pass gain " + format_sig(idp.last_gain, 2) + ", first-order residual " +
+      format_sig(idp_kkt, 2) + " per rad/s (tolerance " + format_sig(kkt_tol, 2) + ").";
+  if (nl) {
+    conv += " SLSQP's answer: " + nl->return_code + ", first-order residual " +
+            (nl->first_order ? format_sig(nl->first_order->kkt_residual, 2) : std::string("?")) +
+            ", " + (nl->converged ? "converged." : "NOT converged: not an optimum.");
+    if (nl->first_order && !nl->first_order->binding.empty())
+      conv += " What bounds it: the " + names(nl->first_order->binding) +
+              " constraints (positive multipliers).";
+  }
+  if (ran) res.paragraph(conv);
+  // the optimisers on the same problem should agree; say so when they do not
+  const auto& cm = th.comparison;
+  if (cm.size() >= 2) {
+    const double ei = cm[0].energy_J, eg = cm[1].energy_J;
+    if (std::isfinite(ei) && std::isfinite(eg) && std::abs(ei - eg) > 0.01 * std::min(ei, eg)) {
+      const bool idp_higher = ei > eg;
+      res.note(std::string(idp_higher ? "IDP" : "SLSQP") + "'s answer is " +
+               format_sig(100 * (std::max(ei, eg) / std::min(ei, eg) - 1), 3) + " % above " +
+               (idp_higher ? "SLSQP" : "IDP") + "'s for the same constrained problem." +
+               (idp_higher
+                    ? " IDP (the paper's method, Luus's random search with region "
+                      "restoration) stops when whole passes gain under its tolerance, but its "
+                      "first-order residual (" +
+                          format_sig(idp_kkt, 2) +
+                          ") shows a descent direction left: the optimum lies on several "
+                          "constraint boundaries at once (the binding constraints above), "
+                          "where nearly every random candidate of a shrinking region is "
+                          "infeasible. More seeds, passes or candidates "
+                          "per node move it little (docs/throwing.md has the measurements), "
+                          "and an IDP started at SLSQP's answer stays there. So SLSQP's "
+                          "answer is the study's; IDP's is reported as the paper's method."
+                    : " Neither is proven global."));
     }
   }
+}
+
+// each motion's energy and extremes
+Table motions_table(const Page& p) {
+  const std::vector<Motion>& ms = p.ms;
+  const auto& lim = p.section.limits;
   Table t;
   t.caption =
       "Each motion's energy and extremes (at the optimisers' own steps). Limits: " +
@@ -358,9 +381,26 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                       release_error(m.release_error.angle_rad)});
     t.swatches.push_back(css_colour(colour_for(mo.colour_key)));
   }
-  if (!t.rows.empty()) res.table(std::move(t));
-  page.sections.push_back(std::move(res));
+  return t;
+}
 
+// the saving and the optimisers compared
+Section results_section(const Page& p) {
+  Section res;
+  res.id = "results";
+  res.heading = "Saving, optimisers compared";
+  add_saving(p, res);
+  add_starts(p, res);
+  if (Table ct = comparison_table(p); !ct.rows.empty()) res.table(std::move(ct));
+  add_verdict(p, res);
+  if (Table t = motions_table(p); !t.rows.empty()) res.table(std::move(t));
+  return res;
+}
+
+// the IDP seeds' spread and each seed's run
+Section seeds_section(const Page& p) {
+  const bool ran = p.ran;
+  const auto& idp = p.th.idp;
   Section seeds;
   seeds.id = "idp-seeds";
   seeds.heading = "IDP seeds";
@@ -396,16 +436,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                          as_text(r.evaluations), format_sig(r.run_time_s, 3)});
     if (!st.rows.empty()) seeds.table(std::move(st));
   }
-  if (!seeds.blocks.empty()) page.sections.push_back(std::move(seeds));
+  return seeds;
+}
 
-  Section mot;
-  mot.id = "motors";
-  mot.heading = "Motors over time";
-  const double vmax = lim.voltage_max_V, imax = lim.current_max_A, pmax = lim.power_max_W;
-  const char* joints_note =
-      " Solid: motor 1; dashed: motor 2. Colours: grey the eq. 8 start, "
-      "blue the IDP optimum, vermillion the gradient optimum (IDP's repaired "
-      "start, if any, in its own colour).";
+// the paper's main output (Sato et al. Figs 5 and 9): the active joints' rate profiles, all
+// motions together, then each optimiser's alone beside the eq. 8 start
+void add_joint_velocities(const Page& p, FigureWriter& figures, Section& mot) {
+  const std::vector<Motion>& ms = p.ms;
   // the paper's main output (Sato et al. Figs 5 and 9): the active joints' rate profiles
   LinePlot jv = motion_plot(ms, "joint velocities", "rate (rad/s)", &TS::Series::qd_rad_s, -1,
                             {"θ1'", "θ2'"});
@@ -428,6 +465,21 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                                    mo.label + ": the joint-velocity profiles θ1' (solid) and "
                                               "θ2' (dashed) beside the eq. 8 start (grey).")));
   }
+}
+
+// the joint rates, voltages, currents, torques and powers over time
+Section motors_section(const Page& p, FigureWriter& figures) {
+  const std::vector<Motion>& ms = p.ms;
+  const auto& lim = p.section.limits;
+  Section mot;
+  mot.id = "motors";
+  mot.heading = "Motors over time";
+  const double vmax = lim.voltage_max_V, imax = lim.current_max_A, pmax = lim.power_max_W;
+  const char* joints_note =
+      " Solid: motor 1; dashed: motor 2. Colours: grey the eq. 8 start, "
+      "blue the IDP optimum, vermillion the gradient optimum (IDP's repaired "
+      "start, if any, in its own colour).";
+  add_joint_velocities(p, figures, mot);
   LinePlot v = motion_plot(ms, "motor voltages", "voltage (V)", &TS::Series::voltage_V, -1,
                            {"motor 1", "motor 2"});
   if (std::isfinite(vmax))
@@ -459,8 +511,13 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                             std::string("Electrical power e i drawn by the motors with the power "
                                         "rating; its integral is the energy in the table.") +
                                 joints_note));
-  page.sections.push_back(std::move(mot));
+  return mot;
+}
 
+// the tray's normal force on the ball and the friction rolling needs
+Section contact_section(const Page& p, FigureWriter& figures) {
+  const std::vector<Motion>& ms = p.ms;
+  const auto& lim = p.section.limits;
   Section contact;
   contact.id = "contact";
   contact.heading = "Contact of the ball with the tray";
@@ -491,198 +548,26 @@ void throwing_sections(const json& results, FigureWriter& figures, CasePage& pag
                        "(F_t = m4 (a − g)·t), with the assumed μ; values above 4μ and "
                        "where N ≤ 0 are left out of the plot (the table gives the maxima)."));
   }
-  page.sections.push_back(std::move(contact));
+  return contact;
+}
 
-  Section ball;
-  ball.id = "ball";
-  ball.heading = "The ball in the tray, release and flight";
-  LinePlot t4 = motion_plot(ms, "ball angle θ4 in the tray", "ball angle in the tray θ4 (rad)",
-                            &TS::Series::q_rad, 3, {});
-  const auto& tl = lim.theta4_limit_rad;
-  if (tl.size() == 2) t4.references = {{tl[1], "tray limits ±λ/2"}, {tl[0], ""}};
-  if (!t4.series.empty())
-    ball.figure(figures.line("theta4", t4,
-                             "The ball's angle relative to the tray with the tray's limits: "
-                             "outside them the ball leaves the tray (eq. 9's penalty)."));
-  LinePlot q3 =
-      motion_plot(ms, "tray angle θ3 (passive)", "tray angle θ3 (rad)", &TS::Series::q_rad, 2, {});
-  // the release target: θ3 at the end of the throw, within the release tolerance
-  const auto& rel_deg = par.task.release_deg;
-  const double rel_tol = lim.release_tolerance_rad;
-  std::string target_text;
-  if (rel_deg.size() == 3 && std::isfinite(rel_deg[2])) {
-    const double target = rel_deg[2] * 3.14159265358979 / 180;
-    const double tf = par.task.duration_s;
-    const double tol = std::isfinite(rel_tol) ? rel_tol : 0;
-    q3.references.push_back({target, ""});
-    if (std::isfinite(tf)) {
-      // a bar at the release time spanning the tolerance, with a dot on the target
-      q3.series.push_back({"release target θ3 = " + format_sig(rel_deg[2], 4) + "° ± " +
-                               format_sig(tol * 180 / 3.14159265358979, 2) + "° at release",
-                           {tf, tf, tf},
-                           {target - tol, target, target + tol},
-                           Rgb{0, 0, 0},
-                           LineStyle::kSolid,
-                           true,
-                           4.0});
-    }
-    target_text = " Black: the release target θ3 = " + format_sig(rel_deg[2], 4) +
-                  "° at the release time, the bar its tolerance (the dashed grey line the same "
-                  "angle over the whole throw).";
-  }
-  if (!q3.series.empty())
-    ball.figure(figures.line("theta3", q3,
-                             "The passive tray joint, moved only by the dynamics." + target_text));
-  const auto& rel = th.release;
-  const auto& fl = th.flight;
-  Table r;
-  r.caption = "Release and flight of the ball (IDP optimum).";
-  r.header = {"quantity", "value"};
-  auto pair = [](const std::vector<double>& v) {
-    return v.size() == 2 ? "(" + format_sig(v[0], 4) + ", " + format_sig(v[1], 4) + ")"
-                         : std::string("n/a");
-  };
-  r.rows = {{"release time", format_sig(rel.time_s, 4) + " s"},
-            {"ball at release (x, y)", pair(rel.ball_xy_m) + " m"},
-            {"ball velocity at release", pair(rel.ball_velocity_m_s) + " m/s"},
-            {"reaches the landing height", as_text(fl.reaches)},
-            {"landing height", format_sig(fl.landing_height_m, 4) + " m"},
-            {"landing point (x, y)", pair(fl.landing_xy_m) + " m"},
-            {"flight time", format_sig(fl.duration_s, 4) + " s"},
-            {"apex height", format_sig(fl.apex_m, 4) + " m"}};
-  if (ran) ball.table(std::move(r));
-  // the locus of the throw (003 figure 7) and the flight, in the vertical plane
-  {
-    ShadedMap locus;
-    locus.title = "ball path: throw and flight (cf. Figure 7 of Sato et al.)";
-    locus.x_label = "horizontal position x (m)";
-    locus.y_label = "height y (m)";
-    locus.nx = locus.ny = 2;
-    locus.z.assign(4, NAN);
-    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
-    auto add = [&](Series s) {
-      for (size_t k = 0; k < s.x.size() && k < s.y.size(); ++k)
-        if (std::isfinite(s.x[k]) && std::isfinite(s.y[k])) {
-          x0 = std::min(x0, s.x[k]);
-          x1 = std::max(x1, s.x[k]);
-          y0 = std::min(y0, s.y[k]);
-          y1 = std::max(y1, s.y[k]);
-        }
-      locus.overlays.push_back(std::move(s));
-    };
-    for (const Motion& mo : ms) {
-      const TS::Series& s = mo.m->series;
-      add({mo.label + ": ball in the tray", column(s.ball_xy_m, 0), column(s.ball_xy_m, 1),
-           colour_for(mo.colour_key)});
-    }
-    add({"flight after release", column(fl.path_xy_m, 0), column(fl.path_xy_m, 1),
-         colour_for("idp"), LineStyle::kDashed});
-    const auto& land = fl.landing_xy_m;
-    if (land.size() == 2) {
-      locus.markers.push_back({land[0], land[1], "landing point", colour_for("idp")});
-      x0 = std::min(x0, land[0]);
-      x1 = std::max(x1, land[0]);
-      y0 = std::min(y0, land[1]);
-      y1 = std::max(y1, land[1]);
-    }
-    if (x1 > x0 && y1 > y0) {
-      const double pad = 0.06 * std::max(x1 - x0, y1 - y0);
-      locus.x_min = x0 - pad;
-      locus.x_max = x1 + pad;
-      locus.y_min = y0 - pad;
-      locus.y_max = y1 + pad;
-      ball.figure(figures.map("throw_locus", locus,
-                              "The ball's centre in the vertical plane (the arm's base at the "
-                              "origin) during each motion, and its flight after the answer's "
-                              "release."));
-    }
-  }
-  page.sections.push_back(std::move(ball));
+}  // namespace
 
-  Section conv;
-  conv.id = "convergence";
-  conv.heading = "Convergence of the optimisers";
-  LinePlot cp;
-  cp.title = "IDP convergence";
-  cp.x_label = "iteration (all passes)";
-  cp.y_label = "energy of the best (J)";
-  Series en{"energy of the best (feasible)", {}, {}, colour_for("idp"), LineStyle::kSolid, true};
-  Table ct;
-  ct.caption =
-      "IDP (best seed): the best at the end of iterations (all of them when few; "
-      "else the last of each pass). Violation 0: feasible.";
-  ct.header = {"pass",           "iteration",    "energy (J)", "violation",
-               "region (rad/s)", "improvements", "simulations"};
-  int k = 0;
-  const auto& rows = idp.convergence;
-  // the start: pass 0 is IDP's feasible start
-  if (ran && std::isfinite(section.energy_reference_J)) {
-    en.x.push_back(0);
-    en.y.push_back(section.energy_reference_J);
-  }
-  for (size_t i = 0; i < rows.size(); ++i) {
-    const auto& row = rows[i];
-    ++k;
-    en.x.push_back(k);
-    en.y.push_back(row.violation > 0 ? NAN : row.energy_J);
-    // the table keeps each pass's first and last iteration and every fifth (the plot has all)
-    const bool last_of_pass = i + 1 == rows.size() || rows[i + 1].pass != row.pass;
-    // (many rows: each pass's last only; the plot has every iteration)
-    if (rows.size() > 25 && !last_of_pass) continue;
-    const auto& reg = row.region_rad_s;
-    ct.rows.push_back(
-        {as_text(row.pass), as_text(row.iteration), format_sig(row.energy_J, 6),
-         format_sig(row.violation, 3),
-         reg.size() == 2 ? format_sig(reg[0], 3) + ", " + format_sig(reg[1], 3) : "n/a",
-         as_text(row.improvements), as_text(row.evaluations)});
-  }
-  en.markers = k <= 80;
-  if (k > 0) {
-    cp.x_label = "iteration (all passes; 0: the reference start)";
-    cp.series = {en};
-    conv.figure(
-        figures.line("idp_convergence", cp,
-                     "Energy of the best feasible profile after each IDP iteration of the "
-                     "best seed, passes one after the other (the region is restored between "
-                     "passes)."));
-  }
-  const auto hist = nl ? nl->history_J : std::vector<double>{};
-  if (hist.size() >= 2) {
-    LinePlot hp;
-    hp.title = "gradient method history";
-    hp.x_label = "iteration";
-    hp.y_label = "energy (J)";
-    Series h{"SLSQP energy", {}, hist, colour_for("gradient")};
-    for (size_t i = 0; i < hist.size(); ++i) h.x.push_back(static_cast<double>(i + 1));
-    // from the start: the reference energy at evaluation 0
-    if (std::isfinite(section.energy_reference_J)) {
-      h.x.insert(h.x.begin(), 0.0);
-      h.y.insert(h.y.begin(), section.energy_reference_J);
-      hp.x_label = "iteration (0: the reference start)";
-    }
-    hp.series = {h};
-    conv.figure(figures.line(
-        "slsqp_history", hp,
-        "The gradient method's energy at each of its evaluations (points may be infeasible)."));
-  }
-  if (!ct.rows.empty()) conv.table(std::move(ct));
-  const auto& rep = th.replay;
-  const auto& integ = th.integration;
-  const std::string fine = as_text(integ.fine_steps_factor) + "x";
-  Table acc;
-  acc.caption = "Accuracy of the simulation behind every number above.";
-  acc.header = {"check", "value"};
-  acc.rows = {{"integration", integ.method},
-              {"step", format_sig(integ.step_s, 3) + " s"},
-              {"energy error against " + fine + " the steps",
-               format_sig(integ.energy_error_vs_fine_steps, 3)},
-              {"θ3 error against " + fine + " the steps",
-               format_sig(integ.theta3_error_vs_fine_steps_rad, 3) + " rad"},
-              {"open-loop voltage replay", rep.integrator},
-              {"largest replay error", format_sig(rep.max_error_rad, 3) + " rad (tolerance " +
-                                           format_sig(rep.tolerance_rad, 3) + " rad)"}};
-  if (ran) conv.table(std::move(acc));
-  page.sections.push_back(std::move(conv));
+void throwing_sections(const json& results, FigureWriter& figures, CasePage& page) {
+  const auto section = read_section<TS>(results, "throwing");
+  static const TS::Optimised kNotRun{};
+  // the optimisers' part: empty when the study stopped before them (nothing below is drawn)
+  const bool ran = section.run.has_value();
+  const TS::Optimised& th = ran ? *section.run : kNotRun;
+  const Page p{section, th, ran, ran ? motions(th) : std::vector<Motion>{}};
+  page.sections.push_back(method_section(p));
+  page.sections.push_back(results_section(p));
+  if (Section seeds = seeds_section(p); !seeds.blocks.empty())
+    page.sections.push_back(std::move(seeds));
+  page.sections.push_back(motors_section(p, figures));
+  page.sections.push_back(contact_section(p, figures));
+  page.sections.push_back(ball_section(p, figures));
+  page.sections.push_back(convergence_section(p, figures));
 }
 
 }  // namespace armstudy::report

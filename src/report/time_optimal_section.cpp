@@ -29,17 +29,20 @@ std::string solver_key(const std::string& name) {
   return name;
 }
 }  // namespace
+// the unit of the path position s: rad for a path given in joint space (its joint-space
+// chord length), else the tip path's
+std::string path_unit(const Section_& to) { return to.path.s_unit.empty() ? "m" : to.path.s_unit; }
 
-void time_optimal_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const auto to = read_section<Section_>(results, "time_optimal");
-  const auto& solvers = to.solvers;
+// joints: one limit per joint
+size_t joint_count(const Section_& to) {
+  return std::max<size_t>(2, to.limits.velocity_rad_s.size());
+}
+
+// the method: the path, the three solvers and the limits
+Section method_section(const Section_& to) {
   const auto& limits = to.limits;
-  // a path given in joint space: s in rad (joint-space chord length)
   const bool joint_space = to.path.space == "joint";
-  const std::string u = to.path.s_unit.empty() ? "m" : to.path.s_unit;
-  // joints: one limit per joint
-  const size_t joints = std::max<size_t>(2, limits.velocity_rad_s.size());
-
+  const size_t joints = joint_count(to);
   Section method;
   method.id = "method";
   method.heading = "Method";
@@ -72,11 +75,12 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
       "The comparison that matters is between the solvers: the exact solver is never slower "
       "than DP or Complex on the same problem.");
   method.table(json_table(to_json(limits), "Limits used (per joint)."));
-  page.sections.push_back(std::move(method));
+  return method;
+}
 
-  Section res;
-  res.id = "solvers";
-  res.heading = "Solvers side by side";
+// each solver's duration, run time and largest limit use
+Table solvers_table(const Section_& to) {
+  const auto& solvers = to.solvers;
   Table t;
   t.caption =
       "Duration of the motion found by each solver, its run time, and the largest use "
@@ -94,11 +98,13 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                       s.violation ? s.violation->text : s.message});
     t.swatches.push_back(css_colour(colour_for(solver_key(s.name))));
   }
-  if (!t.rows.empty()) res.table(std::move(t));
-  for (const auto& s : solvers)
-    res.paragraph(studies::time_optimal::solver_words(s.name) + ": " + s.method);
+  return t;
+}
 
-  // phase plane: s' over s, the maximum velocity curve and each solver's profile
+// the phase plane: s' over s, the maximum velocity curve and each solver's profile
+void add_phase_plane(const Section_& to, FigureWriter& figures, Section& res) {
+  const auto& solvers = to.solvers;
+  const std::string u = path_unit(to);
   LinePlot phase;
   phase.title = "phase plane: path speed over path position";
   phase.x_label = "path position s (" + u + ")";
@@ -133,7 +139,12 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                             "(above it some limit is broken whatever the acceleration). The "
                             "exact profile rides along it where it can; DP and Complex, with "
                             "fewer, coarser intervals, stay below."));
-  // s(t): where each solver's motion is on the path over time
+}
+
+// s(t): where each solver's motion is on the path over time
+void add_path_position(const Section_& to, FigureWriter& figures, Section& res) {
+  const auto& solvers = to.solvers;
+  const std::string u = path_unit(to);
   LinePlot st;
   st.title = "path position over time";
   st.x_label = "time t (s)";
@@ -150,8 +161,28 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
     res.figure(figures.line("path_position", st,
                             "Path position over time: each solver's motion starts and ends at "
                             "rest; the exact one arrives first."));
-  page.sections.push_back(std::move(res));
+}
 
+// the solvers side by side
+Section solvers_section(const Section_& to, FigureWriter& figures) {
+  const auto& solvers = to.solvers;
+  Section res;
+  res.id = "solvers";
+  res.heading = "Solvers side by side";
+  if (Table t = solvers_table(to); !t.rows.empty()) res.table(std::move(t));
+  for (const auto& s : solvers)
+    res.paragraph(studies::time_optimal::solver_words(s.name) + ": " + s.method);
+
+  add_phase_plane(to, figures, res);
+  add_path_position(to, figures, res);
+  return res;
+}
+
+// each joint's torque and velocity over time against its limit
+Section limits_section(const Section_& to, FigureWriter& figures) {
+  const auto& solvers = to.solvers;
+  const auto& limits = to.limits;
+  const size_t joints = joint_count(to);
   Section lim;
   lim.id = "limits";
   lim.heading = "Joint torques and velocities against their limits";
@@ -187,11 +218,11 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                                     " over time for each solver, with its limit."));
     }
   if (lim.blocks.empty()) lim.paragraph("The result holds no sampled motion.");
-  page.sections.push_back(std::move(lim));
+  return lim;
+}
 
-  Section conv;
-  conv.id = "convergence";
-  conv.heading = "Convergence: DP over its segments, the exact solver over its grid";
+// DP (path-speed state) as the number of segments N grows
+Table dp_convergence_table(const Section_& to) {
   Table ct;
   ct.caption =
       "DP (path-speed state) as the number of segments N grows: its duration "
@@ -213,75 +244,98 @@ void time_optimal_sections(const json& results, FigureWriter& figures, CasePage&
                        : r.message.empty()  ? "n/a"
                                             : r.message});
   }
+  return ct;
+}
+
+// how the exact solver graded its grid (a case whose uniform grid did not converge)
+std::string graded_grid_text(const Section_::GridConvergence& g) {
+  const auto& gr = *g.graded;
+  return "Graded grid: the case's " + as_text(gr.uniform_points) + " uniform points changed by " +
+         format_sig(gr.uniform_change, 3) +
+         " with every interval halved, more than exact.tolerance_rel = " +
+         format_sig(gr.tolerance_rel, 3) +
+         ", so the exact solver refined the grid where the "
+         "change arose (near a singular pose the maximum velocity curve falls over a stretch "
+         "far shorter than an interval, and a uniform grid converges only like N^-1/2): " +
+         as_text(gr.rounds) + " round(s) of bisecting the intervals holding half the change, to " +
+         as_text(g.grid_points) + " points" +
+         (gr.capped ? ", stopped by the node cap exact.max_grid_points = " +
+                          as_text(gr.max_grid_points) + " before reaching the tolerance."
+                    : ".") +
+         " The table's grid is the graded one, and the coarser grid of the extrapolation is "
+         "every other node of it.";
+}
+
+// the converged duration: Richardson-extrapolated, or the refined grid's
+std::string extrapolation_text(const Section_::GridConvergence& g) {
+  const auto& x = *g.extrapolation;
+  return "Converged duration: " + format_sig(x.duration_s, 8) + " s ± " + format_sig(x.error_s, 2) +
+         " s" +
+         (x.asymptotic
+              ? ", Richardson-extrapolated from a coarser grid of " + as_text(x.coarse_points) +
+                    " points (" + format_sig(x.coarse_duration_s, 8) +
+                    " s), the case's grid and the refined one; observed order " +
+                    format_sig(x.order, 3) + ", the error estimate is the extrapolation's size."
+              : ": the refined grid's duration, because the coarser grid of " +
+                    as_text(x.coarse_points) + " points (" + format_sig(x.coarse_duration_s, 8) +
+                    " s) and the two finer ones are not in the asymptotic range; the error is "
+                    "the larger change between them.") +
+         " The page's headline is this duration; the case's grid value is a detail.";
+}
+
+// the exact solver's own grid convergence
+void add_grid_convergence(const Section_& to, Section& conv) {
+  if (!to.grid_convergence) return;
+  const auto& g = *to.grid_convergence;
+  const bool passed = g.passed;
+  Table gt;
+  gt.caption =
+      "The exact solver's own grid convergence: the same problem with every grid "
+      "interval halved. Its error is first order in the interval, so the change "
+      "estimates the refined duration's error; beyond the tolerance "
+      "(exact.grid_tolerance) the case fails its check exact_grid_converged.";
+  gt.header = {"grid points",
+               "duration (s)",
+               "refined grid points",
+               "refined duration (s)",
+               "relative change",
+               "tolerance",
+               "check"};
+  gt.rows.push_back({as_text(g.grid_points), format_sig(g.duration_s, 7), as_text(g.refined_points),
+                     format_sig(g.refined_duration_s, 7), format_sig(g.change, 3),
+                     format_sig(g.tolerance, 3), passed ? "passed" : "FAILED"});
+  conv.table(std::move(gt));
+  if (g.graded) conv.paragraph(graded_grid_text(g));
+  if (g.extrapolation) conv.paragraph(extrapolation_text(g));
+  if (passed)
+    conv.paragraph("Exact solver grid: " + g.text + ".");
+  else
+    conv.note(
+        "The exact duration is NOT converged in its grid, so it is no ordinary "
+        "optimum and every comparison with it inherits the error: " +
+        g.text + ".");
+}
+
+// DP over its segments, the exact solver over its grid
+Section convergence_section(const Section_& to) {
+  Section conv;
+  conv.id = "convergence";
+  conv.heading = "Convergence: DP over its segments, the exact solver over its grid";
+  Table ct = dp_convergence_table(to);
   if (ct.rows.empty())
     conv.paragraph("The case asked for no convergence table.");
   else
     conv.table(std::move(ct));
-  // the exact solver's own grid convergence
-  if (to.grid_convergence) {
-    const auto& g = *to.grid_convergence;
-    const bool passed = g.passed;
-    Table gt;
-    gt.caption =
-        "The exact solver's own grid convergence: the same problem with every grid "
-        "interval halved. Its error is first order in the interval, so the change "
-        "estimates the refined duration's error; beyond the tolerance "
-        "(exact.grid_tolerance) the case fails its check exact_grid_converged.";
-    gt.header = {"grid points",
-                 "duration (s)",
-                 "refined grid points",
-                 "refined duration (s)",
-                 "relative change",
-                 "tolerance",
-                 "check"};
-    gt.rows.push_back({as_text(g.grid_points), format_sig(g.duration_s, 7),
-                       as_text(g.refined_points), format_sig(g.refined_duration_s, 7),
-                       format_sig(g.change, 3), format_sig(g.tolerance, 3),
-                       passed ? "passed" : "FAILED"});
-    conv.table(std::move(gt));
-    if (g.graded) {
-      const auto& gr = *g.graded;
-      conv.paragraph(
-          "Graded grid: the case's " + as_text(gr.uniform_points) + " uniform points changed by " +
-          format_sig(gr.uniform_change, 3) +
-          " with every interval halved, more than exact.tolerance_rel = " +
-          format_sig(gr.tolerance_rel, 3) +
-          ", so the exact solver refined the grid where the "
-          "change arose (near a singular pose the maximum velocity curve falls over a stretch "
-          "far shorter than an interval, and a uniform grid converges only like N^-1/2): " +
-          as_text(gr.rounds) + " round(s) of bisecting the intervals holding half the change, to " +
-          as_text(g.grid_points) + " points" +
-          (gr.capped ? ", stopped by the node cap exact.max_grid_points = " +
-                           as_text(gr.max_grid_points) + " before reaching the tolerance."
-                     : ".") +
-          " The table's grid is the graded one, and the coarser grid of the extrapolation is "
-          "every other node of it.");
-    }
-    if (g.extrapolation) {
-      const auto& x = *g.extrapolation;
-      conv.paragraph(
-          "Converged duration: " + format_sig(x.duration_s, 8) + " s ± " +
-          format_sig(x.error_s, 2) + " s" +
-          (x.asymptotic
-               ? ", Richardson-extrapolated from a coarser grid of " + as_text(x.coarse_points) +
-                     " points (" + format_sig(x.coarse_duration_s, 8) +
-                     " s), the case's grid and the refined one; observed order " +
-                     format_sig(x.order, 3) + ", the error estimate is the extrapolation's size."
-               : ": the refined grid's duration, because the coarser grid of " +
-                     as_text(x.coarse_points) + " points (" + format_sig(x.coarse_duration_s, 8) +
-                     " s) and the two finer ones are not in the asymptotic range; the error is "
-                     "the larger change between them.") +
-          " The page's headline is this duration; the case's grid value is a detail.");
-    }
-    if (passed)
-      conv.paragraph("Exact solver grid: " + g.text + ".");
-    else
-      conv.note(
-          "The exact duration is NOT converged in its grid, so it is no ordinary "
-          "optimum and every comparison with it inherits the error: " +
-          g.text + ".");
-  }
-  page.sections.push_back(std::move(conv));
+  add_grid_convergence(to, conv);
+  return conv;
+}
+
+void time_optimal_sections(const json& results, FigureWriter& figures, CasePage& page) {
+  const auto to = read_section<Section_>(results, "time_optimal");
+  page.sections.push_back(method_section(to));
+  page.sections.push_back(solvers_section(to, figures));
+  page.sections.push_back(limits_section(to, figures));
+  page.sections.push_back(convergence_section(to));
   std::vector<ReplayOf> replays;
   if (to.mujoco_replay) replays.push_back({"", 0, &*to.mujoco_replay});
   mujoco_replay_section(replays, read_record(results).frames, figures, page);

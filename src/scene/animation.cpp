@@ -19,6 +19,7 @@
 #include "scene/png_writer.hpp"
 #include "scene/replay.hpp"
 #include "scene/scene_error.hpp"
+#include "sys/process.hpp"
 
 namespace armstudy::scene {
 namespace fs = std::filesystem;
@@ -102,15 +103,7 @@ std::vector<std::future<void>>& pending_animations() {
 
 std::string find_ffmpeg() {
   if (const char* env = std::getenv("ARMSTUDY_FFMPEG"); env && *env) return env;
-  if (const char* path = std::getenv("PATH"))
-    for (std::string dirs = path; !dirs.empty();) {
-      const size_t colon = dirs.find(':');
-      const std::string d = dirs.substr(0, colon);
-      dirs = colon == std::string::npos ? "" : dirs.substr(colon + 1);
-      if (!d.empty() && ::access((fs::path(d) / "ffmpeg").c_str(), X_OK) == 0)
-        return (fs::path(d) / "ffmpeg").string();
-    }
-  return "";
+  return sys::find_on_path({"ffmpeg"});
 }
 
 int animation_frames(double duration) {

@@ -51,8 +51,8 @@ void write_animation(SceneRenderer& sr, const SampledMotion& motion, const std::
 /// manifest could not be written (the first such error; every video is waited for).
 void finish_animations();
 
-/// The ffmpeg executable: $ARMSTUDY_FFMPEG if set, else "ffmpeg" when it is on PATH; empty
-/// when none is found.
+/// The ffmpeg executable: $ARMSTUDY_FFMPEG if set, else "ffmpeg" when it is on PATH
+/// (sys::find_on_path); empty when none is found.
 std::string find_ffmpeg();
 
 }  // namespace armstudy::scene

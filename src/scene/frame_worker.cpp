@@ -2,9 +2,7 @@
 
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/socket.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,8 +16,7 @@
 
 #include "scene/mujoco_model.hpp"
 #include "scene/scene_error.hpp"
-
-extern char** environ;
+#include "sys/process.hpp"
 
 namespace armstudy::scene {
 namespace fs = std::filesystem;
@@ -117,27 +114,23 @@ struct In {
   }
 };
 
-bool is_executable(const fs::path& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(p.c_str(), X_OK) == 0;
-}
-
 }  // namespace
 
 std::string frame_worker_program() {
   if (const char* env = std::getenv("ARMSTUDY_FRAME_WORKER")) {
     const std::string p = env;
-    return p.empty() || p == "none" || !is_executable(p) ? "" : p;
+    return p.empty() || p == "none" || !sys::is_executable(p) ? "" : p;
   }
   std::error_code ec;
   const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec && is_executable(self.parent_path() / "armstudy-frames"))
+  if (!ec && sys::is_executable(self.parent_path() / "armstudy-frames"))
     return (self.parent_path() / "armstudy-frames").string();
 #if defined(ARMSTUDY_FRAME_WORKER_BUILT) && defined(ARMSTUDY_BUILD_TREE)
   // the build's helper, for the build tree's programs only (the tests in build/tests); an
   // installed armstudy never looks into the build tree
   const bool in_build = !ec && self.string().rfind(ARMSTUDY_BUILD_TREE "/", 0) == 0;
-  if (in_build && is_executable(ARMSTUDY_FRAME_WORKER_BUILT)) return ARMSTUDY_FRAME_WORKER_BUILT;
+  if (in_build && sys::is_executable(ARMSTUDY_FRAME_WORKER_BUILT))
+    return ARMSTUDY_FRAME_WORKER_BUILT;
 #endif
   return "";
 }
@@ -155,39 +148,22 @@ std::unique_ptr<FrameWorker> FrameWorker::spawn(std::string* why) {
   // the helper's end as its standard input and output (dup2 clears close-on-exec); its
   // signals as new (armstudy blocks the termination signals in every thread); one
   // rasteriser thread unless the environment says otherwise (it draws beside this process)
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_adddup2(&fa, sv[1], 0);
-  posix_spawn_file_actions_adddup2(&fa, sv[1], 1);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t none, defaults;
-  sigemptyset(&none);
-  sigemptyset(&defaults);
-  for (int s : {SIGPIPE, SIGINT, SIGTERM, SIGHUP}) sigaddset(&defaults, s);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-  std::vector<std::string> env_text;
+  sys::SpawnOptions o;
+  o.fds = {{sv[1], 0}, {sv[1], 1}};
+  o.default_signals = {SIGPIPE, SIGINT, SIGTERM, SIGHUP};
   bool lp_set = false;
-  for (char** e = environ; *e; ++e) {
-    env_text.emplace_back(*e);
-    lp_set |= std::strncmp(*e, "LP_NUM_THREADS=", 15) == 0;
+  for (std::string& e : sys::current_environment()) {
+    lp_set |= e.rfind("LP_NUM_THREADS=", 0) == 0;
+    o.env.push_back(std::move(e));
   }
-  if (!lp_set) env_text.emplace_back("LP_NUM_THREADS=1");
-  std::vector<char*> envp;
-  for (auto& e : env_text) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  std::string arg0 = program, parent = std::to_string(::getpid());
-  char* argv[] = {arg0.data(), parent.data(), nullptr};
-  pid_t pid = -1;
-  const int rc = ::posix_spawn(&pid, program.c_str(), &fa, &attr, argv, envp.data());
-  posix_spawn_file_actions_destroy(&fa);
-  posix_spawnattr_destroy(&attr);
+  if (!lp_set) o.env.emplace_back("LP_NUM_THREADS=1");
+  o.argv = {program, std::to_string(::getpid())};
+  int error = 0;
+  const pid_t pid = sys::spawn(o, &error);
   ::close(sv[1]);
-  if (rc != 0) {
+  if (pid < 0) {
     ::close(sv[0]);
-    return fail("cannot start " + program + ": " + std::strerror(rc));
+    return fail("cannot start " + program + ": " + std::strerror(error));
   }
   return std::unique_ptr<FrameWorker>(new FrameWorker(sv[0], pid));
 }

@@ -171,7 +171,11 @@ TEST(YamlReader, KeyChecksAreLinearAndErrorsCapped) {
   // 90 000 keys in one mapping, every one unknown and a tenth duplicated: quadratic checks
   // took minutes for this; errors stop at kMaxErrors and are counted
   std::string text;
-  for (int i = 0; i < 90000; ++i) text += "k" + std::to_string(i % 81000) + ": 1\n";
+  for (int i = 0; i < 90000; ++i) {
+    text += 'k';
+    text += std::to_string(i % 81000);
+    text += ": 1\n";
+  }
   Diagnostics d("f.yaml");
   const auto root_node = parse_text(text, d);
   ASSERT_TRUE(root_node);

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace {
 using namespace std::chrono_literals;
 
@@ -79,4 +79,4 @@ TEST(Progress, HeartbeatPrintsEveryPeriodWithoutReportsAndStopsWhenTheTaskEnds) 
 }
 
 }  // namespace
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

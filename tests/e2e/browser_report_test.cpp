@@ -362,9 +362,10 @@ TEST_F(BrowserReport, PageOneHoldsTheAnswerTheKeyPictureAndTheCheckVerdict) {
     ASSERT_TRUE(std::regex_search(answer, m, std::regex(R"re(<img src="([^"]+)")re"))) << name;
     const std::string picture = m[1];
     EXPECT_TRUE(fs::exists(out_ / name / picture)) << name << ": " << picture;
-    if (!j["frames"].empty())
+    if (!j["frames"].empty()) {
       EXPECT_TRUE(picture.ends_with(".png"))
           << name << ": a rendered motion answers with its frame";
+    }
     // the verdict counts the checks
     const size_t checks = j["checks"].size();
     size_t failed = 0;
@@ -441,7 +442,9 @@ TEST_F(BrowserReport, EveryMotionHasAnAnimationAndAVideoThatDecodes) {
     const std::string html = slurp(dir / "index.html"), css = slurp(dir / "report.css");
     EXPECT_NE(html.find(kCsp), std::string::npos) << name << ": the CSP changed";
     EXPECT_EQ(html.find("<script"), std::string::npos) << name;
-    if (j["status"] == "solved") EXPECT_FALSE(j["animations"].empty()) << name << ": no animation";
+    if (j["status"] == "solved") {
+      EXPECT_FALSE(j["animations"].empty()) << name << ": no animation";
+    }
     std::map<std::string, std::string> listed;  // files with their sha256
     for (const auto& f : j["files"]) listed[f["path"]] = f["sha256"];
     for (const auto& a : j["animations"]) {

@@ -379,7 +379,7 @@ TEST(DiffCli, HelpAndUsageErrors) {
 
 // ---- on results data directly ----
 
-using armstudy::app::CaseOutput;
+using armstudy::cli::CaseOutput;
 
 CaseOutput sweep_case(const std::string& name, double l2, double energy,
                       const std::string& status = "solved") {
@@ -410,9 +410,9 @@ TEST(DiffRuns, SweepRowsAreComparedByCaseIdLargestChangeFirst) {
     if (i == 19) continue;   // removed
     now.push_back(sweep_case(n, 0.1 + 0.01 * i, e, i == 15 ? "unsolvable" : "solved"));
   }
-  armstudy::app::DiffTolerances tol;
+  armstudy::cli::DiffTolerances tol;
   tol.studies.push_back({"placement", {}, {{"min_energy_J", {0, 0.03, false, "test"}}}});
-  const auto d = armstudy::app::diff_runs(base, now, tol, {});
+  const auto d = armstudy::cli::diff_runs(base, now, tol, {});
   EXPECT_EQ(d.sweep_name, "ratio");
   EXPECT_EQ(d.sweep_rows_base, 20u);
   EXPECT_EQ(d.sweep_rows_new, 19u);
@@ -448,9 +448,9 @@ TEST(DiffRuns, MarkdownStaysUnderItsLimitWithFailuresFirst) {
     base.push_back(sweep_case("case-" + std::to_string(i), 0.1, 1.0));
     now.push_back(sweep_case("case-" + std::to_string(i), 0.1, i % 2 ? 1.0 + 1e-9 : 2.0));
   }
-  armstudy::app::DiffTolerances tol;
+  armstudy::cli::DiffTolerances tol;
   tol.fallback = armstudy::report::FigureTolerance{0, 1e-6, false, "test"};
-  const auto d = armstudy::app::diff_runs(base, now, tol, {});
+  const auto d = armstudy::cli::diff_runs(base, now, tol, {});
   EXPECT_EQ(d.beyond_count(), 1500u);
   const std::string md = armstudy::report::diff_markdown(d, 64 * 1024);
   EXPECT_LE(md.size(), 64u * 1024);
@@ -465,7 +465,7 @@ TEST(DiffTolerances, LookupOrderPatternsAndRunTimes) {
              "    default: {abs: 0.5}\n    figures:\n      \"root_*_m[*]\": {abs: 0.001}\n"
              "      \"root_x_m[cycloidal,1]\": {abs: 0.002}\n  throwing:\n    figures:\n"
              "      idp_run_time_s: {rel: 0.5}\n");
-  const auto t = armstudy::app::load_diff_tolerances(f.string());
+  const auto t = armstudy::cli::load_diff_tolerances(f.string());
   EXPECT_EQ(t.pixel_channel, 3);
   EXPECT_EQ(t.pixels, 10u);
   EXPECT_EQ(t.lookup("placement", "root_x_m[cycloidal,1]").abs,
@@ -477,10 +477,10 @@ TEST(DiffTolerances, LookupOrderPatternsAndRunTimes) {
   EXPECT_TRUE(t.lookup("time_optimal", "run_time_s[exact]").ignore);
   EXPECT_FALSE(t.lookup("throwing", "idp_run_time_s").ignore);  // named: held to its tolerance
   EXPECT_EQ(t.lookup("throwing", "idp_run_time_s").rel, 0.5);
-  EXPECT_THROW(armstudy::app::load_diff_tolerances((f.parent_path() / "none.yaml").string()),
+  EXPECT_THROW(armstudy::cli::load_diff_tolerances((f.parent_path() / "none.yaml").string()),
                armstudy::cases::CaseErrors);
   // the CI example's file reads
-  const auto ci = armstudy::app::load_diff_tolerances(
+  const auto ci = armstudy::cli::load_diff_tolerances(
       (fs::path(ARMSTUDY_SOURCE_DIR) / "examples/ci/diff-tolerances.yaml").string());
   EXPECT_EQ(ci.pixel_channel, 8);
   EXPECT_TRUE(ci.lookup("throwing", "idp_run_time_s").ignore);

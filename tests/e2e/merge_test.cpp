@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <random>
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace {
 using nlohmann::json;
 
@@ -82,9 +82,9 @@ TEST(Merge, SweepTablesDoNotDependOnCaseOrder) {
 }
 
 }  // namespace
-}  // namespace armstudy::app
+}  // namespace armstudy::cli
 
-namespace armstudy::app {
+namespace armstudy::cli {
 namespace {
 
 // every character of s is one XML 1.0 allows (a newline, or printable and valid UTF-8)
@@ -122,4 +122,4 @@ TEST(Merge, JunitAndSummaryCarryNoRawControlOrForeignBytesFromNamesAndMessages) 
 }
 
 }  // namespace
-}  // namespace armstudy::app
+}  // namespace armstudy::cli

@@ -66,19 +66,19 @@ std::string case_and_sweep_loaders(const std::string& input) {
   // the input as a sweep over the fixed base
   write(d / "fuzz-base.yaml", kBase);
   write(sweep, input);
-  problem = only_case_errors("as a sweep", [&] { app::load_sweep(sweep); });
+  problem = only_case_errors("as a sweep", [&] { cli::load_sweep(sweep); });
   if (!problem.empty()) return problem;
   // the input as the base of the fixed sweep
   write(d / "fuzz-base.yaml", input);
   write(sweep, kSweep);
-  return only_case_errors("as a sweep's base", [&] { app::load_sweep(sweep); });
+  return only_case_errors("as a sweep's base", [&] { cli::load_sweep(sweep); });
 }
 
 std::string results_and_tolerances_readers(const std::string& input) {
   const fs::path& d = work_dir();
   write(d / "run" / "case-a" / "results.json", input);
   std::vector<std::string> warnings;
-  const std::vector<app::CaseOutput> outputs = app::collect_outputs({d / "run"}, &warnings);
+  const std::vector<cli::CaseOutput> outputs = cli::collect_outputs({d / "run"}, &warnings);
   if (outputs.size() != 1)
     return "as results.json: " + std::to_string(outputs.size()) + " cases read";
   const report::ResultsRecord& r = outputs[0].record;
@@ -88,15 +88,15 @@ std::string results_and_tolerances_readers(const std::string& input) {
                             warnings[0].find("results.json") == std::string::npos))
     return "as results.json: refused without a failed case naming the file";
   // what merge writes from it
-  (void)app::summary_markdown(outputs);
-  (void)app::junit_xml(outputs);
-  (void)app::sweep_csv(outputs);
-  (void)app::sweep_json(outputs).dump();
+  (void)cli::summary_markdown(outputs);
+  (void)cli::junit_xml(outputs);
+  (void)cli::sweep_csv(outputs);
+  (void)cli::sweep_json(outputs).dump();
 
   const std::string tolerances = (d / "tolerances.yaml").string();
   write(tolerances, input);
   return only_case_errors("as --tolerances", [&] {
-    const app::DiffTolerances t = app::load_diff_tolerances(tolerances);
+    const cli::DiffTolerances t = cli::load_diff_tolerances(tolerances);
     (void)t.lookup("placement", "min_energy_J");
     (void)t.lookup("throwing", "idp_run_time_s");
   });

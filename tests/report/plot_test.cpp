@@ -63,7 +63,9 @@ TEST(Plot, EachConfigurationAndSolverKeepsOneDistinctColour) {
   const char* keys[] = {"cycloidal/1", "cycloidal/2", "poly345/1", "poly345/2"};
   for (const char* a : keys)
     for (const char* b : keys)
-      if (std::string(a) != b) EXPECT_FALSE(colour_for(a) == colour_for(b)) << a << " " << b;
+      if (std::string(a) != b) {
+        EXPECT_FALSE(colour_for(a) == colour_for(b)) << a << " " << b;
+      }
   EXPECT_FALSE(colour_for("dp") == colour_for("reachability"));
   EXPECT_FALSE(colour_for("dp") == colour_for("complex"));
   EXPECT_FALSE(colour_for("idp") == colour_for("gradient"));

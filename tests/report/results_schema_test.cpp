@@ -107,7 +107,7 @@ TEST(ResultsSchema, AnotherSchemaVersionIsAClearError) {
   json j = write_record(r);
   EXPECT_EQ(j["schema_version"], kSchemaVersion);
   EXPECT_NO_THROW(read_record(j));
-  for (const json v :
+  for (const json& v :
        {json(kSchemaVersion - 1), json(kSchemaVersion + 1), json("2"), json(nullptr)}) {
     j["schema_version"] = v;
     try {

@@ -123,7 +123,9 @@ TEST(PlacementQuadrature, TheTouchingLineIsTheLimitOfLinesInside) {
                                                  thesis_line(0.6 - delta, 138.96 * kDeg), 1);
     std::printf("delta %.0e: %.10f +- %.1e (touching %.10f)\n", delta, q.energy, q.error, e0);
     const double gap = std::abs(q.energy - e0);
-    if (prev > 0) EXPECT_LT(gap, 0.2 * prev) << delta;
+    if (prev > 0) {
+      EXPECT_LT(gap, 0.2 * prev) << delta;
+    }
     prev = gap;
   }
   EXPECT_LT(prev, 1e-6 * e0);
@@ -152,7 +154,9 @@ TEST(PlacementQuadrature, NearTangentLinesApproachAFiniteLimit) {
     // (a geometric bound: the sequence converges), every step far above the error estimates
     for (int i = 0; i + 1 < 4; ++i) {
       EXPECT_GT(e[i + 1] - e[i], 1000.0 * (err[i] + err[i + 1])) << ds[i + 1];
-      if (i > 0) EXPECT_LT(e[i + 1] - e[i], 0.25 * (e[i] - e[i - 1])) << ds[i + 1];
+      if (i > 0) {
+        EXPECT_LT(e[i + 1] - e[i], 0.25 * (e[i] - e[i - 1])) << ds[i + 1];
+      }
     }
     // and the limit lies within the geometric tail of the last step (ratio <= 1/4)
     std::printf("%s: the limit d -> 0+ lies below %.6f J\n",
@@ -247,7 +251,9 @@ TEST(PlacementQuadrature, TheFoldedElbowsEnergyIsTheLimitOfNearbyLines) {
         const double gap = fold.energy - q.energy;
         std::printf("   d = %.0e: %.10f +- %.2e, %.3e below the fold\n", d, q.energy, q.error, gap);
         EXPECT_GT(gap, 10.0 * (fold.error + q.error)) << d;
-        if (gap_before > 0) EXPECT_LT(gap, 0.25 * gap_before) << d;
+        if (gap_before > 0) {
+          EXPECT_LT(gap, 0.25 * gap_before) << d;
+        }
         gap_before = gap;
       }
       EXPECT_LT(gap_before, 1e-4 * fold.energy);

@@ -84,8 +84,9 @@ TEST(ThrowingStudy, OptimaMeetEveryConstraintAt4xStepsAndBeatAFeasibleReference)
   EXPECT_LE(r.nlopt.evaluation.energy, r.idp.evaluation.energy * (1 + 1e-9));
   ASSERT_GE(r.slsqp_starts.size(), 4u);
   for (const auto& st : r.slsqp_starts)
-    if (st.run.converged && st.check.feasible)
+    if (st.run.converged && st.check.feasible) {
       EXPECT_GE(st.run.evaluation.energy, r.nlopt.evaluation.energy) << st.name;
+    }
   EXPECT_LE(r.nlopt_run.kkt_residual, s.nlopt.kkt_tolerance);
   EXPECT_TRUE(r.flight.reaches);
   EXPECT_EQ(r.flight.landing.x(), r.nlopt_flight.landing.x());  // the flight is the answer's

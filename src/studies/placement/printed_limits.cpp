@@ -1,6 +1,6 @@
 #include "studies/placement/printed_limits.hpp"
 
-#include <cstdio>
+#include <sstream>
 
 #include "core/motion_program.hpp"
 
@@ -9,9 +9,10 @@ namespace {
 
 // "12.001" with 6 significant digits
 std::string sig6(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
 }
 
 void check_point(const Spec& spec, const Candidate& c, const std::string& name,

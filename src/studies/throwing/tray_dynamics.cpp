@@ -218,8 +218,8 @@ core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::
     double Mpp[kN][kN], rhs[kN];
     for (int r = 0; r < np; ++r) {
       rhs[r] = 0.0 - h[ip[r]];
-      for (int k = 0; k < na; ++k) rhs[r] -= M[ip[r]][ia[k]] * qdd_active[ia[k]];
-      for (int k = 0; k < np; ++k) Mpp[r][k] = M[ip[r]][ip[k]];
+      for (int ka = 0; ka < na; ++ka) rhs[r] -= M[ip[r]][ia[ka]] * qdd_active[ia[ka]];
+      for (int kp = 0; kp < np; ++kp) Mpp[r][kp] = M[ip[r]][ip[kp]];
     }
     solve_spd(Mpp, np, rhs);
     for (int r = 0; r < np; ++r) qdd[ip[r]] = rhs[r];
@@ -228,8 +228,8 @@ core::MixedDynamics TrayDynamics::mixed(const core::JointVector& q, const core::
   out.qdd.resize(kN);
   out.tau = core::JointVector::Zero(kN);
   for (int i = 0; i < kN; ++i) out.qdd[i] = qdd[i];
-  for (int k = 0; k < na; ++k) {
-    const int i = ia[k];
+  for (int ka = 0; ka < na; ++ka) {
+    const int i = ia[ka];
     double sum = M[i][0] * qdd[0];
     for (int j = 1; j < kN; ++j) sum += M[i][j] * qdd[j];
     out.tau[i] = sum + h[i];

@@ -494,8 +494,8 @@ bool forward_pass(const std::vector<double>& nodes, ExactWorkspace& ws) {
     const double ds = nodes[k + 1] - nodes[k];
     const double uhi = u_hi_fast(ws.rows.data() + ws.start[k], ws.count[k], ws.x[k]);
     const double u = std::min(uhi, (ws.khi[k + 1] - ws.x[k]) / (2 * ds));
-    const double next = std::clamp(ws.x[k] + 2 * ds * u, ws.klo[k + 1], ws.khi[k + 1]);
-    ws.x[k + 1] = std::max(0.0, next);
+    const double x_next = std::clamp(ws.x[k] + 2 * ds * u, ws.klo[k + 1], ws.khi[k + 1]);
+    ws.x[k + 1] = std::max(0.0, x_next);
     if (ws.x[k] <= 0 && ws.x[k + 1] <= 0) return false;
   }
   return true;

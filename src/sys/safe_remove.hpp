@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace armstudy::report {
+namespace armstudy::sys {
 
 /// The entry `name` of the open folder `dir_fd`, and everything under it when it is a real
 /// folder; a symbolic link is removed, never followed. Returns the entries removed (0 when
@@ -31,4 +31,4 @@ int open_folder_at(int dir_fd, const std::string& name);
 /// The entry `name` of `dir_fd` as lstat sees it; false when it is missing.
 bool stat_at(int dir_fd, const std::string& name, struct stat* st);
 
-}  // namespace armstudy::report
+}  // namespace armstudy::sys

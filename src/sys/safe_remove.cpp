@@ -1,4 +1,4 @@
-#include "report/safe_remove.hpp"
+#include "sys/safe_remove.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace armstudy::report {
+namespace armstudy::sys {
 
 bool stat_at(int dir_fd, const std::string& name, struct stat* st) {
   return ::fstatat(dir_fd, name.c_str(), st, AT_SYMLINK_NOFOLLOW) == 0;
@@ -59,4 +59,4 @@ size_t remove_tree_at(int dir_fd, const std::string& name) {
   return removed;
 }
 
-}  // namespace armstudy::report
+}  // namespace armstudy::sys

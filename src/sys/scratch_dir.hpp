@@ -10,11 +10,12 @@
 /// renaming it to `.armstudy-<tag>.removing`, which anyone may remove.
 
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
 
-namespace armstudy::report {
+namespace armstudy::sys {
 
 /// "<host>-<pid>-<8 hex digits>", the same for the whole life of this process.
 const std::string& process_tag();
@@ -41,28 +42,30 @@ struct StaleCleanup {
   std::vector<std::string> restored;  ///< case folders put back from a killed run's `old/`
 };
 
-/// In `dir` and each of its sub-folders that armstudy wrote (a case folder, the sweep
-/// report: report/owned_output.hpp): removes the scratch folders whose lock no process
-/// holds (after moving each report of their `old/` back into `dir` when `dir` has none of
-/// that name). Also handles what earlier armstudy versions left: hidden
+/// What of an output folder remove_stale_scratch() may look into: the caller's knowledge
+/// of which entries it wrote (this layer knows none).
+struct StaleRules {
+  /// true when `dir`/`name` is a sub-folder the caller wrote (its scratch folders and part
+  /// files are cleaned too)
+  std::function<bool(const std::filesystem::path& dir, const std::string& name)> own_sub_folder;
+  /// true when `base` (a file name directly in `dir`) is one of the caller's files, so that an
+  /// old-style part file `<base>.part-<pid>-<n>` beside it may be removed
+  std::function<bool(const std::string& base)> run_level_file;
+};
+
+/// In `dir` and each of its sub-folders that the caller wrote (`rules.own_sub_folder`;
+/// armstudy's: report::remove_stale_scratch, report/owned_output.hpp): removes the scratch folders
+/// whose lock no process holds (after moving each report of their `old/` back into `dir` when `dir`
+/// has none of that name). Also handles what earlier armstudy versions left: hidden
 /// `.<name>.old-<host>-<pid>` folders are put back the same way, and
 /// `.<name>.tmp-<host>-<pid>` entries and `<file>.part-<pid>-<n>` files older than ten
-/// minutes are removed (directly in `dir` only those of a run-level file). Only entries of
-/// those names that are real folders or files are touched, each through its open folder
-/// (report/safe_remove.hpp): a link is never followed nor removed, a user's folder never
+/// minutes are removed (directly in `dir` only those of a file `rules.run_level_file` names). Only
+/// entries of those names that are real folders or files are touched, each through its open folder
+/// (sys/safe_remove.hpp): a link is never followed nor removed, a user's folder never
 /// entered.
-StaleCleanup remove_stale_scratch(const std::filesystem::path& dir);
+StaleCleanup remove_stale_scratch(const std::filesystem::path& dir, const StaleRules& rules);
 
 /// Held while a case folder is swapped into place and while a signal's clean-up runs.
 std::mutex& swap_mutex();
 
-/// Writes `text` to `path` through its temporary sibling (part_path) and a rename. On any
-/// failure the temporary file is removed and the error says why ("No space left on
-/// device", "Permission denied").
-/// @throws std::runtime_error "cannot write <path>: <reason>"
-void write_file_atomic(const std::filesystem::path& path, const std::string& text);
-
-/// "cannot <what> <path>: <strerror(err)>"
-std::string system_error_text(const std::string& what, const std::filesystem::path& path, int err);
-
-}  // namespace armstudy::report
+}  // namespace armstudy::sys

@@ -1,4 +1,4 @@
-#include "report/scratch_dir.hpp"
+#include "sys/scratch_dir.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -20,11 +20,10 @@
 #include <system_error>
 #include <thread>
 
-#include "report/owned_output.hpp"
-#include "report/part_name.hpp"
-#include "report/safe_remove.hpp"
+#include "sys/atomic_file.hpp"
+#include "sys/safe_remove.hpp"
 
-namespace armstudy::report {
+namespace armstudy::sys {
 namespace fs = std::filesystem;
 
 namespace {
@@ -168,7 +167,8 @@ bool legacy_part(const std::string& f) {
 // `dir_fd` (`dir`): only entries armstudy names itself, each a real folder or file (a link
 // of such a name is left alone), never anything through a link. In the output folder
 // itself (`top`) a part file is one of a run-level file's; in a case folder any.
-void clean_folder(int dir_fd, const fs::path& dir, bool top, StaleCleanup* out) {
+void clean_folder(int dir_fd, const fs::path& dir, bool top, const StaleRules& rules,
+                  StaleCleanup* out) {
   const std::string mine = std::string(kPrefix) + process_tag();
   for (const std::string& f : list_folder(dir_fd)) {
     struct stat st {};
@@ -189,19 +189,9 @@ void clean_folder(int dir_fd, const fs::path& dir, bool top, StaleCleanup* out) 
       clean_legacy(dir_fd, dir, f, st, out);
     } else if (S_ISREG(st.st_mode) && legacy_part(f) && older_than(st, kLegacyAge)) {
       const std::string base = f.substr(0, f.rfind(".part-"));
-      const auto run_level = run_level_outputs({});
-      if (!top || base.ends_with(".svg") ||
-          std::find(run_level.begin(), run_level.end(), base) != run_level.end())
-        out->removed += ::unlinkat(dir_fd, f.c_str(), 0) == 0;
+      if (!top || rules.run_level_file(base)) out->removed += ::unlinkat(dir_fd, f.c_str(), 0) == 0;
     }
   }
-}
-
-// a sub-folder of the output folder that armstudy wrote, where runs leave scratch folders
-// and part files: a case folder or the sweep report (report/owned_output.hpp)
-bool own_sub_folder(const fs::path& dir, const std::string& name) {
-  return name == "sweep" ? foreign_run_level_output(dir, name).empty()
-                         : foreign_case_folder(dir / name, name).empty();
 }
 
 void remove_own_scratch_locked() {
@@ -236,11 +226,6 @@ bool inside_own_scratch(const fs::path& p) {
 }
 
 }  // namespace
-
-std::string system_error_text(const std::string& what, const fs::path& path, int err) {
-  return "cannot " + what + " " + path.string() + ": " +
-         std::error_code(err, std::generic_category()).message();
-}
 
 const std::string& process_tag() {
   static const std::string tag = [] {
@@ -315,13 +300,13 @@ void remove_own_scratch() {
   remove_own_scratch_locked();
 }
 
-StaleCleanup remove_stale_scratch(const fs::path& dir) {
+StaleCleanup remove_stale_scratch(const fs::path& dir, const StaleRules& rules) {
   StaleCleanup out;
   // the output folder as the user named it (a link given as --out is followed: it is the
   // user's choice); below it, nothing through a link
   const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd < 0) return out;
-  clean_folder(dir_fd, dir, true, &out);
+  clean_folder(dir_fd, dir, true, rules, &out);
   for (const std::string& name : list_folder(dir_fd)) {
     if (name[0] == '.') continue;
     const int sub = open_folder_at(dir_fd, name);
@@ -331,7 +316,8 @@ StaleCleanup remove_stale_scratch(const fs::path& dir) {
     const bool candidates = std::any_of(names.begin(), names.end(), [](const std::string& f) {
       return f.rfind(kPrefix, 0) == 0 || legacy_part(f);
     });
-    if (candidates && own_sub_folder(dir, name)) clean_folder(sub, dir / name, false, &out);
+    if (candidates && rules.own_sub_folder(dir, name))
+      clean_folder(sub, dir / name, false, rules, &out);
     ::close(sub);
   }
   ::close(dir_fd);
@@ -346,29 +332,4 @@ fs::path part_path(const fs::path& path) {
   return scratch_dir(parent) / name;
 }
 
-void write_file_atomic(const fs::path& path, const std::string& text) {
-  const fs::path part = part_path(path);
-  const int fd = ::open(part.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw std::runtime_error(system_error_text("write", path, errno));
-  const char* p = text.data();
-  size_t left = text.size();
-  int err = 0;
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      err = n < 0 ? errno : EIO;
-      break;
-    }
-    p += n;
-    left -= static_cast<size_t>(n);
-  }
-  if (::close(fd) != 0 && !err) err = errno;
-  if (!err && ::rename(part.c_str(), path.c_str()) != 0) err = errno;
-  if (err) {
-    ::unlink(part.c_str());
-    throw std::runtime_error(system_error_text("write", path, err));
-  }
-}
-
-}  // namespace armstudy::report
+}  // namespace armstudy::sys

@@ -1,0 +1,50 @@
+#pragma once
+/// armstudy's command line: every command, its options and what the parse fills in
+/// (cli/main.cpp runs the command given).
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "app/run_case.hpp"
+#include "cli/diff.hpp"
+
+namespace armstudy::cli {
+
+/// Every option of every command, filled in by the parse.
+struct Args {
+  std::vector<std::string> run_paths, validate_paths;
+  app::RunOptions options;
+  std::string out_dir = "reports/out";
+  bool no_render = false;
+  bool no_sensitivity = false;
+  int jobs = 1;
+  std::string shard;
+  bool force = false;
+  bool allow_large = false;
+  std::string sweep_file, sweep_out = "sweep-cases";
+  std::vector<std::string> base_dirs;
+  std::vector<std::string> list_items;
+  bool list_json = false;
+  std::vector<std::string> merge_dirs;
+  std::string merge_out;
+  std::string merge_manifest;
+  DiffOptions diff_options;
+  std::string diff_base, diff_new, diff_out = diff_options.out.string();
+};
+
+/// The commands, to tell which one was given.
+struct Commands {
+  CLI::App *run = nullptr, *expand = nullptr, *list = nullptr, *merge = nullptr, *diff = nullptr,
+           *validate = nullptr;
+  CLI::Option* merge_out = nullptr;
+};
+
+/// armstudy itself: --version and the footer naming the studies and the exit codes.
+void describe_app(CLI::App& app);
+
+/// Every command and its options, in the order --help lists them, bound to `a`.
+Commands add_commands(CLI::App& app, Args& a);
+
+}  // namespace armstudy::cli

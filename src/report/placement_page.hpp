@@ -1,0 +1,57 @@
+#pragma once
+// The placement page's helpers and parts shared by report/placement_section.cpp (the page)
+// and report/placement_maps.cpp (its maps, energy over direction, root loci and trade-off).
+
+#include <cmath>
+#include <string>
+
+#include "report/number_format.hpp"
+#include "report/results_fields.hpp"
+#include "report/study_sections.hpp"
+#include "studies/placement/results_section.hpp"
+
+namespace armstudy::report::placement_page {
+
+using PS = studies::placement::ResultsSection;
+
+inline std::string id_label(const PS::Id& o) {
+  return o.program + ", conf. " + as_text(o.configuration);
+}
+inline std::string id_key(const PS::Id& o) { return o.program + "/" + as_text(o.configuration); }
+// a motion whose energy is withheld (on the inner circle, or not converged): no energy, peak
+// or saving is printed
+inline bool no_energy(const PS::Metrics& o) {
+  return o.singular_trajectory.value_or(false) && !std::isfinite(o.energy_J);
+}
+// a candidate's status in words ("singular" in results.json is "inside the margin": the
+// word singular is kept for motions that are singular themselves)
+inline std::string status_text(const std::string& st) {
+  if (st == "singular") return "inside the margin";
+  if (st == "over_limit") return "over a limit";
+  return st;
+}
+// The thesis's figure of the same kind for its example at this line length (Kopmaz 2016,
+// Ch. 9: each example draws angles, velocities, accelerations, torques and powers, then the
+// energy over the direction angle), e.g. kind 0 at L = 0.5 Lmax -> "Figure 9.12"; a length
+// of no example: its figures in general.
+inline std::string thesis_figure(const PS& pl, int kind) {
+  struct Example {
+    double fraction;
+    int first;
+  };
+  static const Example examples[] = {{1.0, 1}, {0.8, 6}, {0.5, 12}, {0.4, 18}, {0.2, 24}};
+  for (const Example& e : examples)
+    if (std::abs(pl.length_fraction - e.fraction) < 1e-9 && !(e.first == 1 && kind == 5))
+      return "Figure 9." + std::to_string(e.first + kind);
+  return kind == 5 ? "Figures 9.11, 9.17, 9.23, 9.29" : "figures of Ch. 9";
+}
+
+/// The placement maps (one per program and configuration) and the energy over the direction
+/// angle.
+Section maps_section(const PS& pl, FigureWriter& figures);
+
+/// The optimal root locations (the thesis's Fig. 9.30) into `maps`; the torque trade-off
+/// (Pareto fronts) as a section of its own.
+Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps);
+
+}  // namespace armstudy::report::placement_page
