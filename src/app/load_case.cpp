@@ -53,6 +53,8 @@ void check_budget(cases::Map& root, const cases::RenderOptions& render) {
   }
 }
 
+// (over 60 lines, kept whole: the case's top-level keys read in the order of their errors
+// (file:line:col))
 LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnostics& diag,
                      LoadedCase out, const LoadOptions& options) {
   if (!root_node) diag.throw_if_any();

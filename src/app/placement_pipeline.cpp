@@ -294,6 +294,177 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
   }
 };
 
+// the optimum of one program and configuration, with its margin sweep
+Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& pc,
+                                 const Section::Id& id) {
+  const pl::Candidate& c = pc.refined;
+  Section::Optimum o;
+  static_cast<Section::Id&>(o) = id;
+  set_metrics(o, c);
+  o.x_s_m = c.x_s;
+  o.phi_deg = c.phi / kDeg;
+  o.root_xy_m = pair(c.root);
+  o.grid_energy_J = pc.grid.metrics.energy;
+  o.grid_x_s_m = pc.grid.x_s;
+  o.grid_phi_deg = pc.grid.phi / kDeg;
+  o.min_abs_sin_elbow = c.min_abs_sin;
+  o.boundary_distance_m = c.boundary_distance;
+  o.peak_power_W = {c.metrics.peak_power[0], c.metrics.peak_power[1]};
+  o.signed_work_J = c.metrics.signed_work;
+  o.singular = c.status != pl::CandidateStatus::kFeasible || !c.convergence.regular();
+  o.refine_evaluations = pc.refine_evaluations;
+  o.decided_by = decision_section(spec, pc.decision);
+  if (!pc.refine_method.empty()) o.refinement.method = pc.refine_method;
+  o.refinement.final_tolerance_rel = pc.refine_method.empty() ? NAN : pc.refine_tolerance_rel;
+  o.refinement.target_rel = 1e-7;
+  o.refinement.converged = pc.refine_converged;
+  o.refinement.evaluations = pc.refine_evaluations;
+  for (const pl::MarginPoint& m : pc.margin_sensitivity) {
+    Section::MarginPoint mp;
+    mp.margin_m = m.margin;
+    mp.found = m.found;
+    if (m.found) {
+      Section::MarginOptimum mo;
+      set_metrics(mo, m.optimum);
+      mo.x_s_m = m.optimum.x_s;
+      mo.phi_deg = m.optimum.phi / kDeg;
+      mo.root_xy_m = pair(m.optimum.root);
+      mo.binding = pl::binding_name(m.decision.binding);
+      mo.refine_converged = m.refine_converged;
+      mo.refine_tolerance_rel = m.refine_tolerance_rel;
+      mp.optimum = std::move(mo);
+    }
+    o.margin_sensitivity.push_back(std::move(mp));
+  }
+  o.line_start_m = pair(pc.placement.start);
+  o.line_end_m = pair(pc.placement.end);
+  o.counts = counts_section(pc.counts);
+  o.series = series_section(pc.series);
+  return o;
+}
+
+// the least energy among the thesis's own candidates
+Section::ThesisBest thesis_best_section(const pl::ProgramConfig& pc, const Section::Id& id) {
+  const pl::Candidate& c = pc.thesis_best;
+  Section::ThesisBest t;
+  static_cast<Section::Id&>(t) = id;
+  set_metrics(t, c);
+  t.x_s_m = c.x_s;
+  t.phi_deg = c.phi / kDeg;
+  t.root_xy_m = pair(c.root);
+  t.status = pl::status_name(c.status);
+  t.singular = c.status == pl::CandidateStatus::kSingular;
+  t.boundary_distance_m = c.boundary_distance;
+  t.min_abs_sin_elbow = c.min_abs_sin;
+  return t;
+}
+
+// energy over phi through the optimum's x_S
+Section::Curve curve_section(const pl::ProgramConfig& pc, const Section::Id& id) {
+  Section::Curve cv;
+  static_cast<Section::Id&>(cv) = id;
+  cv.x_s_m = pc.curve.x_s;
+  for (size_t k = 0; k < pc.curve.phi.size(); ++k) {
+    cv.phi_deg.push_back(pc.curve.phi[k] / kDeg);
+    cv.energy_J.push_back(pc.curve.energy[k]);
+    cv.status += pl::status_char(pc.curve.status[k]);
+  }
+  return cv;
+}
+
+// the Pareto front of (peak torque of `joint`, energy), thinned, and the excluded candidates
+Section::Pareto pareto_section(const pl::ProgramConfig& pc, const Section::Id& id, int joint) {
+  Section::Pareto pj;
+  static_cast<Section::Id&>(pj) = id;
+  pj.joint = joint + 1;
+  const auto& front = pc.pareto[joint];
+  double last = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < front.size(); ++k) {
+    // thin: keep the first, the last, and steps of >= 0.2 % in energy
+    if (k != 0 && k + 1 != front.size() && front[k].energy > last * (1 - 2e-3)) continue;
+    last = front[k].energy;
+    pj.peak_torque_Nm.push_back({front[k].peak_torque[0], front[k].peak_torque[1]});
+    pj.energy_J.push_back(front[k].energy);
+    pj.x_s_m.push_back(front[k].x_s);
+    pj.phi_deg.push_back(front[k].phi / kDeg);
+    pj.singular.push_back(front[k].singular);
+  }
+  // the inadmissible candidates inside the margin: drawn distinctly, never the front
+  pj.excluded.what = "candidates inside the clearance margin (inadmissible), energy converged";
+  last = std::numeric_limits<double>::infinity();
+  const auto& ex = pc.pareto_excluded[joint];
+  for (size_t k = 0; k < ex.size(); ++k) {
+    if (k != 0 && k + 1 != ex.size() && ex[k].energy > last * (1 - 2e-3)) continue;
+    last = ex[k].energy;
+    pj.excluded.peak_torque_Nm.push_back({ex[k].peak_torque[0], ex[k].peak_torque[1]});
+    pj.excluded.energy_J.push_back(ex[k].energy);
+  }
+  return pj;
+}
+
+// the energy map over root locations, as rows of text
+Section::Map map_section(const pl::ProgramConfig& pc, const Section::Id& id) {
+  const pl::EnergyMap& m = pc.map;
+  Section::Map mj;
+  static_cast<Section::Id&>(mj) = id;
+  mj.x_m = m.x;
+  mj.y_m = m.y;
+  const size_t nx = m.x.size();
+  for (size_t row = 0; row < m.y.size(); ++row) {
+    std::string e, st;
+    for (size_t i = 0; i < nx; ++i) {
+      const float v = m.energy[row * nx + i];
+      if (i) e += ' ';
+      if (std::isfinite(v)) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.4g", double(v));
+        e += buf;
+      } else {
+        e += '-';
+      }
+      st += pl::status_char(m.status[row * nx + i]);
+    }
+    mj.energy_J_rows.push_back(std::move(e));
+    mj.status_rows.push_back(std::move(st));
+  }
+  if (pc.found) mj.optimum_xy_m = pair(pc.refined.root);
+  mj.encoding =
+      "row j is y_m[j]; energy_J_rows: space-separated energies in J at 4 significant digits, "
+      "'-' where unreachable or the sampled energy is not converged to 1e-4; status_rows: '.' "
+      "unreachable, 's' singular, 'x' over a limit, "
+      "'o' feasible; Y < 0 is the mirror image with the configurations swapped";
+  return mj;
+}
+
+// one placement the case asked to evaluate
+Section::Evaluation evaluation_section(const pl::Evaluation& e) {
+  Section::Evaluation ej;
+  static_cast<Section::Id&>(ej) = id_of(e.program, e.configuration);
+  ej.label = e.label;
+  const pl::Candidate& c = e.candidate;
+  ej.x_s_m = c.x_s;
+  ej.phi_deg = c.phi / kDeg;
+  ej.root_xy_m = pair(c.root);
+  const bool reachable = c.status != pl::CandidateStatus::kUnreachable;
+  if (reachable) {
+    set_metrics(ej, c);
+  } else {
+    ej.energy_J = NAN;  // peak_torque_Nm null
+  }
+  ej.status = pl::status_name(c.status);
+  ej.singular = c.status == pl::CandidateStatus::kSingular;
+  ej.boundary_distance_m = c.boundary_distance;
+  ej.min_abs_sin_elbow = c.min_abs_sin;
+  ej.saving_J = e.has_saving ? e.saving : NAN;
+  ej.saving_percent = e.has_saving ? e.saving_percent : NAN;
+  ej.line_start_m = pair(e.placement.start);
+  ej.line_end_m = pair(e.placement.end);
+  if (!e.series.t.empty()) ej.series = series_section(e.series);
+  return ej;
+}
+
+// (over 60 lines, kept whole: a flat list of the typed section's fields, in their fields() order;
+// each part has its own function)
 Section PlacementRun::section() const {
   const pl::Result& r = result_;
   Section j;
@@ -323,50 +494,7 @@ Section PlacementRun::section() const {
   for (const pl::ProgramConfig& pc : r.cases) {
     const Section::Id id = id_of(pc.program, pc.configuration);
     if (pc.found) {
-      const pl::Candidate& c = pc.refined;
-      Section::Optimum o;
-      static_cast<Section::Id&>(o) = id;
-      set_metrics(o, c);
-      o.x_s_m = c.x_s;
-      o.phi_deg = c.phi / kDeg;
-      o.root_xy_m = pair(c.root);
-      o.grid_energy_J = pc.grid.metrics.energy;
-      o.grid_x_s_m = pc.grid.x_s;
-      o.grid_phi_deg = pc.grid.phi / kDeg;
-      o.min_abs_sin_elbow = c.min_abs_sin;
-      o.boundary_distance_m = c.boundary_distance;
-      o.peak_power_W = {c.metrics.peak_power[0], c.metrics.peak_power[1]};
-      o.signed_work_J = c.metrics.signed_work;
-      o.singular = c.status != pl::CandidateStatus::kFeasible || !c.convergence.regular();
-      o.refine_evaluations = pc.refine_evaluations;
-      o.decided_by = decision_section(spec_, pc.decision);
-      if (!pc.refine_method.empty()) o.refinement.method = pc.refine_method;
-      o.refinement.final_tolerance_rel = pc.refine_method.empty() ? NAN : pc.refine_tolerance_rel;
-      o.refinement.target_rel = 1e-7;
-      o.refinement.converged = pc.refine_converged;
-      o.refinement.evaluations = pc.refine_evaluations;
-      for (const pl::MarginPoint& m : pc.margin_sensitivity) {
-        Section::MarginPoint mp;
-        mp.margin_m = m.margin;
-        mp.found = m.found;
-        if (m.found) {
-          Section::MarginOptimum mo;
-          set_metrics(mo, m.optimum);
-          mo.x_s_m = m.optimum.x_s;
-          mo.phi_deg = m.optimum.phi / kDeg;
-          mo.root_xy_m = pair(m.optimum.root);
-          mo.binding = pl::binding_name(m.decision.binding);
-          mo.refine_converged = m.refine_converged;
-          mo.refine_tolerance_rel = m.refine_tolerance_rel;
-          mp.optimum = std::move(mo);
-        }
-        o.margin_sensitivity.push_back(std::move(mp));
-      }
-      o.line_start_m = pair(pc.placement.start);
-      o.line_end_m = pair(pc.placement.end);
-      o.counts = counts_section(pc.counts);
-      o.series = series_section(pc.series);
-      j.optima.push_back(std::move(o));
+      j.optima.push_back(optimum_section(spec_, pc, id));
     } else {
       Section::Unsolved u;
       static_cast<Section::Id&>(u) = id;
@@ -375,115 +503,16 @@ Section PlacementRun::section() const {
       j.unsolved.push_back(std::move(u));
     }
     if (pc.thesis_found) {
-      const pl::Candidate& c = pc.thesis_best;
-      Section::ThesisBest t;
-      static_cast<Section::Id&>(t) = id;
-      set_metrics(t, c);
-      t.x_s_m = c.x_s;
-      t.phi_deg = c.phi / kDeg;
-      t.root_xy_m = pair(c.root);
-      t.status = pl::status_name(c.status);
-      t.singular = c.status == pl::CandidateStatus::kSingular;
-      t.boundary_distance_m = c.boundary_distance;
-      t.min_abs_sin_elbow = c.min_abs_sin;
-      j.thesis_search.push_back(std::move(t));
+      j.thesis_search.push_back(thesis_best_section(pc, id));
     }
-    {
-      Section::Curve cv;
-      static_cast<Section::Id&>(cv) = id;
-      cv.x_s_m = pc.curve.x_s;
-      for (size_t k = 0; k < pc.curve.phi.size(); ++k) {
-        cv.phi_deg.push_back(pc.curve.phi[k] / kDeg);
-        cv.energy_J.push_back(pc.curve.energy[k]);
-        cv.status += pl::status_char(pc.curve.status[k]);
-      }
-      j.curves.push_back(std::move(cv));
-    }
+    j.curves.push_back(curve_section(pc, id));
     for (int joint = 0; joint < 2; ++joint) {
-      Section::Pareto pj;
-      static_cast<Section::Id&>(pj) = id;
-      pj.joint = joint + 1;
-      const auto& front = pc.pareto[joint];
-      double last = std::numeric_limits<double>::infinity();
-      for (size_t k = 0; k < front.size(); ++k) {
-        // thin: keep the first, the last, and steps of >= 0.2 % in energy
-        if (k != 0 && k + 1 != front.size() && front[k].energy > last * (1 - 2e-3)) continue;
-        last = front[k].energy;
-        pj.peak_torque_Nm.push_back({front[k].peak_torque[0], front[k].peak_torque[1]});
-        pj.energy_J.push_back(front[k].energy);
-        pj.x_s_m.push_back(front[k].x_s);
-        pj.phi_deg.push_back(front[k].phi / kDeg);
-        pj.singular.push_back(front[k].singular);
-      }
-      // the inadmissible candidates inside the margin: drawn distinctly, never the front
-      pj.excluded.what = "candidates inside the clearance margin (inadmissible), energy converged";
-      last = std::numeric_limits<double>::infinity();
-      const auto& ex = pc.pareto_excluded[joint];
-      for (size_t k = 0; k < ex.size(); ++k) {
-        if (k != 0 && k + 1 != ex.size() && ex[k].energy > last * (1 - 2e-3)) continue;
-        last = ex[k].energy;
-        pj.excluded.peak_torque_Nm.push_back({ex[k].peak_torque[0], ex[k].peak_torque[1]});
-        pj.excluded.energy_J.push_back(ex[k].energy);
-      }
-      j.pareto.push_back(std::move(pj));
+      j.pareto.push_back(pareto_section(pc, id, joint));
     }
-    {
-      const pl::EnergyMap& m = pc.map;
-      Section::Map mj;
-      static_cast<Section::Id&>(mj) = id;
-      mj.x_m = m.x;
-      mj.y_m = m.y;
-      const size_t nx = m.x.size();
-      for (size_t row = 0; row < m.y.size(); ++row) {
-        std::string e, st;
-        for (size_t i = 0; i < nx; ++i) {
-          const float v = m.energy[row * nx + i];
-          if (i) e += ' ';
-          if (std::isfinite(v)) {
-            char buf[32];
-            std::snprintf(buf, sizeof buf, "%.4g", double(v));
-            e += buf;
-          } else {
-            e += '-';
-          }
-          st += pl::status_char(m.status[row * nx + i]);
-        }
-        mj.energy_J_rows.push_back(std::move(e));
-        mj.status_rows.push_back(std::move(st));
-      }
-      if (pc.found) mj.optimum_xy_m = pair(pc.refined.root);
-      mj.encoding =
-          "row j is y_m[j]; energy_J_rows: space-separated energies in J at 4 significant digits, "
-          "'-' where unreachable or the sampled energy is not converged to 1e-4; status_rows: '.' "
-          "unreachable, 's' singular, 'x' over a limit, "
-          "'o' feasible; Y < 0 is the mirror image with the configurations swapped";
-      j.maps.push_back(std::move(mj));
-    }
+    j.maps.push_back(map_section(pc, id));
   }
   for (const pl::Evaluation& e : r.evaluations) {
-    Section::Evaluation ej;
-    static_cast<Section::Id&>(ej) = id_of(e.program, e.configuration);
-    ej.label = e.label;
-    const pl::Candidate& c = e.candidate;
-    ej.x_s_m = c.x_s;
-    ej.phi_deg = c.phi / kDeg;
-    ej.root_xy_m = pair(c.root);
-    const bool reachable = c.status != pl::CandidateStatus::kUnreachable;
-    if (reachable) {
-      set_metrics(ej, c);
-    } else {
-      ej.energy_J = NAN;  // peak_torque_Nm null
-    }
-    ej.status = pl::status_name(c.status);
-    ej.singular = c.status == pl::CandidateStatus::kSingular;
-    ej.boundary_distance_m = c.boundary_distance;
-    ej.min_abs_sin_elbow = c.min_abs_sin;
-    ej.saving_J = e.has_saving ? e.saving : NAN;
-    ej.saving_percent = e.has_saving ? e.saving_percent : NAN;
-    ej.line_start_m = pair(e.placement.start);
-    ej.line_end_m = pair(e.placement.end);
-    if (!e.series.t.empty()) ej.series = series_section(e.series);
-    j.evaluations.push_back(std::move(ej));
+    j.evaluations.push_back(evaluation_section(e));
   }
   for (const auto& pc : r.cases) {
     if (!pc.found) continue;

@@ -160,8 +160,60 @@ std::vector<report::AnimationRecord> collect_animations(const fs::path& dir) {
   return out;
 }
 
+// the names of the failed checks, comma-separated (empty: every check passed)
+std::string failed_checks(const std::vector<report::CheckRecord>& checks) {
+  std::string failed;
+  for (const auto& ch : checks)
+    if (!ch.passed) failed += (failed.empty() ? "" : ", ") + ch.name;
+  return failed;
+}
+
+// the renderer and Mesa version the frames were made with
+void set_gl_provenance(report::ResultsRecord& r) {
+  const scene::GlInfo gl = scene::gl_info();
+  r.provenance.gl_renderer = gl.renderer;
+  r.provenance.gl_version = gl.version;
+  if (const size_t at = gl.version.find("Mesa "); at != std::string::npos)
+    r.provenance.mesa_version = gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
+}
+
+// the case's page printed in the scratch folder, renamed into the case folder (a failure is
+// printed again, and reported, by finish_reports)
+void queue_pdf(report::PdfPrinter& printer, const fs::path& out_dir, const fs::path& final_dir,
+               const std::string& name) {
+  const fs::path printed = sys::scratch_dir(out_dir) / "pdf" / (name + ".pdf");
+  fs::create_directories(printed.parent_path());
+  printer.add({final_dir / "index.html", printed}, [printed, final_dir](const std::string& error) {
+    std::error_code ec;
+    if (!error.empty() || ::rename(printed.c_str(), (final_dir / "report.pdf").c_str()) != 0)
+      fs::remove(printed, ec);
+  });
+}
+
+// the case's exit code and one-line message: solved or not, as it expects, checks passed
+void set_verdict(const LoadedCase& c, studies::Status status, const std::string& failed,
+                 CaseOutcome& outcome) {
+  if (status != studies::Status::kSolved && c.info.expect_unsolvable) {
+    outcome.message = "could not be solved, as the case expects: " + c.run->message();
+  } else if (status != studies::Status::kSolved) {
+    outcome.exit_code = 1;
+    outcome.message = "could not be solved: " + c.run->message();
+  } else if (c.info.expect_unsolvable) {
+    outcome.exit_code = 1;
+    outcome.message = "solved, but the case expects it to be unsolvable ('expect: unsolvable'): " +
+                      c.run->message();
+  } else if (!failed.empty()) {
+    outcome.exit_code = 1;
+    outcome.message = "failed its checks: " + failed;
+  } else {
+    outcome.message = c.run->message();
+  }
+}
+
 }  // namespace
 
+// (over 60 lines, kept whole: the stages of one case in order (solve, sensitivity, render, exports,
+// report, results.json, swap), under one try that removes the scratch folder)
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
                      const studies::ProgressFn& progress) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -189,14 +241,6 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
         r.key_figures.push_back({k.name, k.value, k.unit, k.label.empty() ? k.name : k.label});
     // what decides whether a later run may keep this output (main.cpp, already_done)
     r.run_options.render = options.render;
-    bool checks_ok = true;
-    std::string failed;
-    for (const auto& ch : checks) {
-      if (!ch.passed) {
-        checks_ok = false;
-        failed += (failed.empty() ? "" : ", ") + ch.name;
-      }
-    }
     // every video of this case encoded (or failed) before its folder is used or removed,
     // on every path out of here (scene/animation.hpp)
     struct WaitForVideos {
@@ -226,24 +270,13 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
     exports_phase.reset();
     scene::finish_animations();  // the videos encoded while the case went on
     r.animations = collect_animations(tmp_dir);
-    if (!r.frames.empty()) {
-      const scene::GlInfo gl = scene::gl_info();
-      r.provenance.gl_renderer = gl.renderer;
-      r.provenance.gl_version = gl.version;
-      if (const size_t at = gl.version.find("Mesa "); at != std::string::npos)
-        r.provenance.mesa_version =
-            gl.version.substr(at + 5, gl.version.find(' ', at + 5) - at - 5);
-    }
+    if (!r.frames.empty()) set_gl_provenance(r);
     nlohmann::json j = report::write_record(r);
     j[c.info.study] = section;
     if (!c.info.source.empty()) {
       // the source's printed figures beside armstudy's, read from this very results.json
       r.source = report::compare_with_source(c.info.source, j);
       r.checks.push_back(report::source_explained_check(*r.source));
-      if (!r.checks.back().passed) {
-        checks_ok = false;
-        failed += (failed.empty() ? "" : ", ") + r.checks.back().name;
-      }
       j = report::write_record(r);
       j[c.info.study] = section;
     }
@@ -257,34 +290,9 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
 
     swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name,
                     c.info.name);
-    if (options.printer) {
-      // printed in the scratch folder, renamed into the case folder (a failure is printed
-      // again, and reported, by finish_reports)
-      const fs::path printed = sys::scratch_dir(options.out_dir) / "pdf" / (c.info.name + ".pdf");
-      fs::create_directories(printed.parent_path());
-      options.printer->add({final_dir / "index.html", printed}, [printed, final_dir](
-                                                                    const std::string& error) {
-        std::error_code ec;
-        if (!error.empty() || ::rename(printed.c_str(), (final_dir / "report.pdf").c_str()) != 0)
-          fs::remove(printed, ec);
-      });
-    }
-    if (status != studies::Status::kSolved && c.info.expect_unsolvable) {
-      outcome.message = "could not be solved, as the case expects: " + c.run->message();
-    } else if (status != studies::Status::kSolved) {
-      outcome.exit_code = 1;
-      outcome.message = "could not be solved: " + c.run->message();
-    } else if (c.info.expect_unsolvable) {
-      outcome.exit_code = 1;
-      outcome.message =
-          "solved, but the case expects it to be unsolvable ('expect: unsolvable'): " +
-          c.run->message();
-    } else if (!checks_ok) {
-      outcome.exit_code = 1;
-      outcome.message = "failed its checks: " + failed;
-    } else {
-      outcome.message = c.run->message();
-    }
+    if (options.printer) queue_pdf(*options.printer, options.out_dir, final_dir, c.info.name);
+    // the verdict over every check, the study's and the source comparison's
+    set_verdict(c, status, failed_checks(r.checks), outcome);
   } catch (...) {
     std::error_code ec;
     if (!tmp_dir.empty()) fs::remove_all(tmp_dir, ec);

@@ -127,6 +127,7 @@ std::string case_text_with(const std::string& yaml, const std::string& key,
   return std::string(e.c_str()) + "\n";
 }
 
+// (over 60 lines, kept whole: the keys' steps in order, each re-solved and recorded)
 std::optional<report::SensitivityRecord> run_sensitivity(const LoadedCase& nominal,
                                                          const studies::ProgressFn& progress,
                                                          double from, double to) {

@@ -134,6 +134,250 @@ std::string short_number(double v) {
   return b;
 }
 
+// the arm, motors and task of the case, and the modelling choices
+void set_parameters(const st::ThrowingSpec& spec, Section& j) {
+  const auto& a = spec.arm;
+  auto& p = j.parameters;
+  p.gravity_m_s2 = a.gravity;
+  p.link1 = {a.l1, a.m1, a.r1, a.I1};
+  p.link2 = {a.l2, a.m2, a.r2, a.I2};
+  p.tray = {a.circle_offset, a.m3, a.r3, a.r3_lateral, a.I3, spec.tray_width / kDeg};
+  p.ball = {a.m4, a.r4, a.rb, a.Ib};
+  p.motors = {spec.motor.kt,
+              spec.motor.kv,
+              spec.motor.Ra,
+              spec.motor.Dm,
+              spec.motor.tau_f,
+              a.rotor_inertia,
+              a.motor2 == st::Motor2Mount::kOnBase ? "on_base" : "on_link1",
+              spec.count_regeneration};
+  p.task = {{spec.start[0] / kDeg, spec.start[1] / kDeg, spec.theta3_start / kDeg,
+             spec.theta4_start / kDeg},
+            {spec.release[0] / kDeg, spec.release[1] / kDeg, spec.theta3_release / kDeg},
+            {spec.release_rate[0], spec.release_rate[1]},
+            spec.tf,
+            spec.landing_height};
+  p.choices = {
+      "model derived from first principles (docs/derivations/throwing.md): ball spin = "
+      "tray rate - (r4/r_b) "
+      "theta4'; eq. 3's spin term and a5 as printed are wrong",
+      "the centre of the ball's circle lies at the tray's circle offset from its hinge (Table "
+      "1's l3 "
+      "by default)",
+      "ball inertia 2/5 m r_b^2 unless given (equals Table 1's 4.8e-7 kg m^2)",
+      "motor 2 drives theta2 (on_link1, eq. 5 as printed) unless motor2: on_base",
+      "rotor inertia (missing from Table 1) as the case's motors give it",
+      "tray width lambda (eq. 9) and the current limit as the case gives them",
+      "energy = eq. 7 (signed e i: regeneration counted) unless the case counts only e i > 0",
+      "theta3 at release is a constraint (within the release tolerance), reached through the "
+      "passive dynamics"};
+}
+
+// what the case assumes where the paper is silent, and the limits
+void set_assumptions(const st::ThrowingSpec& spec, Section& j) {
+  const auto& a = spec.arm;
+  j.assumptions = {{"tray's angular width lambda (eq. 9): the ball stays within +-lambda/2",
+                    spec.tray_width / kDeg, "deg", "tray.width_deg"},
+                   {"friction coefficient between ball and tray (rolling needs |F_t| <= mu N)",
+                    spec.friction_coefficient, "", "constraints.friction_coefficient"},
+                   {"contact margin: the tray's normal force on the ball stays above it",
+                    spec.contact_margin, "N", "constraints.contact_margin_N"},
+                   {"current limit of each motor (not in Table 1)", spec.current_max, "A",
+                    "motors.current_max_A"},
+                   {"Table 1's 60 W rating read as a limit on |e i| of each motor", spec.power_max,
+                    "W", "motors.power_max_W"},
+                   {"Table 1's 24 V rating read as a limit on |e|", spec.voltage_max, "V",
+                    "motors.voltage_max_V"},
+                   {"release tolerance of the passive tray angle theta3",
+                    spec.release_tolerance / kDeg, "deg", "constraints.release_tolerance_deg"},
+                   {"constraint back-off of both optimisers (normalised)", spec.backoff, "",
+                    "constraints.backoff"},
+                   {"rotor inertia of each motor (not in Table 1)", a.rotor_inertia, "kg m^2",
+                    "motors.rotor_inertia_kg_m2"},
+                   {"centre of the ball's circle from the tray hinge", a.circle_offset, "m",
+                    "tray.circle_offset_m"}};
+  j.limits = {spec.voltage_max,       spec.current_max,
+              spec.power_max,         {-spec.tray_width / 2, spec.tray_width / 2},
+              spec.contact_margin,    spec.friction_coefficient,
+              spec.release_tolerance, spec.backoff};
+}
+
+// the eq. 8 reference: the constraints it breaks and how it was repaired
+void set_reference(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
+                   Section::Optimised& o) {
+  {
+    const Section::Margins mg = margins_of(spec, r.initial.evaluation);
+    const char* units[st::kConstraintKinds] = {"N", "", "rad", "V", "A", "W", "rad"};
+    const double margins[st::kConstraintKinds] = {mg.contact_N,  mg.friction,  mg.tray_rad,
+                                                  mg.voltage_V,  mg.current_A, mg.power_W,
+                                                  mg.release_rad};
+    for (int c = 0; c < st::kConstraintKinds; ++c)
+      if (r.initial.worst[c] > 0)
+        o.reference.raw_breaks.push_back({st::constraint_name(static_cast<st::ConstraintKind>(c)),
+                                          r.initial.worst[c], margins[c], units[c]});
+    o.reference.kind = r.reference_kind;
+    o.reference.initial_feasible = r.initial_feasible;
+    if (r.reference_kind != "eq8")
+      o.reference.repair = Section::Repair{
+          "SLSQP from eq. 8 descending the squared constraint violation "
+          "(aimed at twice the back-off inside every limit) until it is 0 "
+          "or stops on its tolerance; the reference must then meet every "
+          "constraint with the back-off",
+          r.repair_run.return_code,
+          r.repair_run.converged,
+          r.repair_run.feasible,
+          r.repair_run.iterations,
+          r.repair_run.simulations,
+          r.repair_run.run_time,
+          r.repair_run.rate_change};
+  }
+}
+
+// the IDP run (the paper's method): its seeds, settings and first-order residual; returns
+// the simulations of all seeds
+long set_idp(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Section::Optimised& o) {
+  Section::Idp& idp = o.idp;
+  for (const auto& h : r.idp_run.history)
+    idp.convergence.push_back(
+        {h.iteration, h.pass, h.energy, h.violation, arr(h.region), h.evaluations, h.improvements});
+  const auto& is = spec.idp;
+  std::vector<double> es;
+  long evaluations = 0;
+  for (const auto& sd : r.idp_seeds) {
+    idp.seed_runs.push_back({sd.seed, sd.evaluation.energy, sd.evaluation.feasible, sd.converged,
+                             sd.passes, sd.last_gain, sd.evaluations, sd.run_time});
+    es.push_back(sd.evaluation.energy);
+    evaluations += sd.evaluations;
+  }
+  std::sort(es.begin(), es.end());
+  const double median = es.empty()      ? NAN
+                        : es.size() % 2 ? es[es.size() / 2]
+                                        : 0.5 * (es[es.size() / 2 - 1] + es[es.size() / 2]);
+  idp.stages = spec.stages;
+  idp.steps_per_stage = spec.steps_per_stage;
+  idp.iterations = is.iterations;
+  idp.max_passes = is.max_passes;
+  idp.tolerance = is.tolerance;
+  idp.quiet_passes = is.quiet_passes;
+  idp.candidates = is.candidates;
+  idp.shrink = is.shrink;
+  idp.restore = is.restore;
+  idp.region_rad_s = arr(is.region);
+  idp.seed = is.seed;
+  idp.seeds = is.seeds;
+  idp.backoff = spec.backoff;
+  idp.threads = r.idp_run.threads;
+  idp.converged = r.idp_converged;
+  idp.best_seed = r.idp_run.seed;
+  idp.passes = r.idp_run.passes;
+  idp.last_gain = r.idp_run.last_gain;
+  idp.evaluations = evaluations;
+  idp.run_time_s = r.idp_time;
+  idp.spread = {es.empty() ? NAN : es.front(), median, es.empty() ? NAN : es.back()};
+  idp.first_order =
+      Section::FirstOrder{r.idp_optimality.kkt_residual, spec.nlopt.kkt_tolerance,
+                          r.idp_optimality.active_constraints, r.idp_optimality.binding};
+  return evaluations;
+}
+
+// the SLSQP run from several starts
+void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Section::Optimised& o) {
+  o.nlopt.ran = r.nlopt_ran;
+  if (r.nlopt_ran) {
+    Section::NloptRun& nl = o.nlopt.run.emplace();
+    nl.history_J = r.nlopt_run.history;
+    nl.algorithm =
+        "NLopt LD_SLSQP, central-difference gradients, same parameterisation and constraints";
+    nl.return_code = r.nlopt_run.return_code;
+    nl.converged = r.nlopt_run.converged;
+    nl.feasible = r.nlopt_run.feasible;
+    nl.last_gain = r.nlopt_run.last_gain;
+    nl.iterations = r.nlopt_run.iterations;
+    nl.simulations = r.nlopt_run.simulations;
+    nl.run_time_s = r.nlopt_run.run_time;
+    nl.max_evaluations = spec.nlopt.max_evaluations;
+    nl.max_time_s = spec.nlopt.max_time;
+    nl.ftol_rel = spec.nlopt.ftol_rel;
+    nl.xtol_rel = spec.nlopt.xtol_rel;
+    nl.motion = motion_of(spec, r.nlopt);
+    nl.first_order = Section::FirstOrder{r.nlopt_run.kkt_residual, spec.nlopt.kkt_tolerance,
+                                         r.nlopt_run.active_constraints, r.nlopt_run.binding};
+    auto& starts = nl.starts.emplace();
+    for (const auto& sr : r.slsqp_starts)
+      starts.push_back({sr.name, sr.run.evaluation.energy, sr.run.feasible && sr.check.feasible,
+                        sr.run.converged && sr.check.feasible, sr.run.kkt_residual,
+                        sr.run.iterations, sr.run.restarts, sr.run.return_code});
+    nl.best_start = r.slsqp_starts[r.slsqp_best_start].name;
+  }
+}
+
+// one table of the optimisers on equal terms, and the finer re-simulation's verdicts
+void set_comparison(const st::ThrowingSpec& spec, const st::ThrowingResult& r, long evaluations,
+                    Section::Optimised& o) {
+  // one table of the optimisers on equal terms (margins from the finer re-simulation)
+  auto row = [&](const std::string& name, const st::ThrowMotion& m, const st::Verification& v,
+                 bool conv, long sims, double time) {
+    return Section::Comparison{name,
+                               m.evaluation.energy,
+                               m.split.mechanical,
+                               m.split.copper,
+                               m.split.friction,
+                               conv,
+                               sims,
+                               time,
+                               v.feasible,
+                               margins_of(spec, v.evaluation),
+                               binding_of(v.worst, spec.backoff),
+                               binding_rating(v.worst, spec.backoff)};
+  };
+  o.comparison.push_back(row("IDP (best of " + std::to_string(r.idp_seeds.size()) + " seeds)" +
+                                 (r.idp_converged ? "" : ", a stall"),
+                             r.idp, r.idp_check, r.idp_converged, evaluations, r.idp_time));
+  if (r.nlopt_ran)
+    o.comparison.push_back(
+        row("SLSQP (best of " + std::to_string(r.slsqp_starts.size()) + " starts)", r.nlopt,
+            r.nlopt_check, r.nlopt_run.converged, slsqp_simulations(r), r.nlopt_run.run_time));
+  o.verification.refinement = spec.check_refinement;
+  o.verification.idp = {r.idp_check.feasible, margins_of(spec, r.idp_check.evaluation),
+                        worst_of(r.idp_check.worst)};
+  if (r.nlopt_ran)
+    o.verification.nlopt =
+        Section::Verified{r.nlopt_check.feasible, margins_of(spec, r.nlopt_check.evaluation),
+                          worst_of(r.nlopt_check.worst)};
+}
+
+// the release, the ball's flight, the open-loop replay and the integration
+void set_flight_and_replay(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
+                           Section::Optimised& o) {
+  o.release = {spec.tf, arr(r.flight.release_position), arr(r.flight.release_velocity)};
+  Section::Flight& fl = o.flight;
+  for (size_t k = 0; k < r.flight.path.size(); ++k) {
+    fl.path_xy_m.push_back(arr(r.flight.path[k]));
+    fl.t_s.push_back(r.flight.path_t[k]);
+  }
+  fl.reaches = r.flight.reaches;
+  fl.landing_height_m = spec.landing_height;
+  fl.duration_s = r.flight.duration;
+  fl.landing_xy_m = arr(r.flight.landing);
+  fl.apex_m = r.flight.apex;
+  for (size_t k = 0; k < r.replay_t.size(); ++k) {
+    o.replay.t_s.push_back(r.replay_t[k]);
+    o.replay.q_rad.push_back(arr(r.replay_q[k]));
+  }
+  o.replay.max_error_rad = r.replay_error;
+  o.replay.tolerance_rad = spec.replay_tolerance;
+  o.replay.integrator =
+      "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
+      "with 16x the RK4 steps, linear between its samples within a stage; "
+      "error against that plan; coulomb sign smoothed by tanh(qd / 1e-4 rad/s)";
+  o.integration = {"classical RK4, fixed step, steps aligned with the stages",
+                   spec.steps_per_stage,
+                   spec.tf / spec.stages / spec.steps_per_stage,
+                   16,
+                   r.rk4_energy_error,
+                   r.rk4_theta3_error};
+}
+
 class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingResult, Section> {
  public:
   using TypedStudyRun::TypedStudyRun;
@@ -164,6 +408,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     return b;
   }
 
+  // (over 60 lines, kept whole: one check a block, in the order the report lists them)
   std::vector<st::Check> checks() const override {
     const auto& r = result_;
     const auto& sp = spec_;
@@ -277,67 +522,10 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
   }
 
   Section section() const override {
-    const auto& a = spec_.arm;
     const auto& r = result_;
     Section j;
-    auto& p = j.parameters;
-    p.gravity_m_s2 = a.gravity;
-    p.link1 = {a.l1, a.m1, a.r1, a.I1};
-    p.link2 = {a.l2, a.m2, a.r2, a.I2};
-    p.tray = {a.circle_offset, a.m3, a.r3, a.r3_lateral, a.I3, spec_.tray_width / kDeg};
-    p.ball = {a.m4, a.r4, a.rb, a.Ib};
-    p.motors = {spec_.motor.kt,
-                spec_.motor.kv,
-                spec_.motor.Ra,
-                spec_.motor.Dm,
-                spec_.motor.tau_f,
-                a.rotor_inertia,
-                a.motor2 == st::Motor2Mount::kOnBase ? "on_base" : "on_link1",
-                spec_.count_regeneration};
-    p.task = {{spec_.start[0] / kDeg, spec_.start[1] / kDeg, spec_.theta3_start / kDeg,
-               spec_.theta4_start / kDeg},
-              {spec_.release[0] / kDeg, spec_.release[1] / kDeg, spec_.theta3_release / kDeg},
-              {spec_.release_rate[0], spec_.release_rate[1]},
-              spec_.tf,
-              spec_.landing_height};
-    p.choices = {
-        "model derived from first principles (docs/derivations/throwing.md): ball spin = "
-        "tray rate - (r4/r_b) "
-        "theta4'; eq. 3's spin term and a5 as printed are wrong",
-        "the centre of the ball's circle lies at the tray's circle offset from its hinge (Table "
-        "1's l3 "
-        "by default)",
-        "ball inertia 2/5 m r_b^2 unless given (equals Table 1's 4.8e-7 kg m^2)",
-        "motor 2 drives theta2 (on_link1, eq. 5 as printed) unless motor2: on_base",
-        "rotor inertia (missing from Table 1) as the case's motors give it",
-        "tray width lambda (eq. 9) and the current limit as the case gives them",
-        "energy = eq. 7 (signed e i: regeneration counted) unless the case counts only e i > 0",
-        "theta3 at release is a constraint (within the release tolerance), reached through the "
-        "passive dynamics"};
-    j.assumptions = {{"tray's angular width lambda (eq. 9): the ball stays within +-lambda/2",
-                      spec_.tray_width / kDeg, "deg", "tray.width_deg"},
-                     {"friction coefficient between ball and tray (rolling needs |F_t| <= mu N)",
-                      spec_.friction_coefficient, "", "constraints.friction_coefficient"},
-                     {"contact margin: the tray's normal force on the ball stays above it",
-                      spec_.contact_margin, "N", "constraints.contact_margin_N"},
-                     {"current limit of each motor (not in Table 1)", spec_.current_max, "A",
-                      "motors.current_max_A"},
-                     {"Table 1's 60 W rating read as a limit on |e i| of each motor",
-                      spec_.power_max, "W", "motors.power_max_W"},
-                     {"Table 1's 24 V rating read as a limit on |e|", spec_.voltage_max, "V",
-                      "motors.voltage_max_V"},
-                     {"release tolerance of the passive tray angle theta3",
-                      spec_.release_tolerance / kDeg, "deg", "constraints.release_tolerance_deg"},
-                     {"constraint back-off of both optimisers (normalised)", spec_.backoff, "",
-                      "constraints.backoff"},
-                     {"rotor inertia of each motor (not in Table 1)", a.rotor_inertia, "kg m^2",
-                      "motors.rotor_inertia_kg_m2"},
-                     {"centre of the ball's circle from the tray hinge", a.circle_offset, "m",
-                      "tray.circle_offset_m"}};
-    j.limits = {spec_.voltage_max,       spec_.current_max,
-                spec_.power_max,         {-spec_.tray_width / 2, spec_.tray_width / 2},
-                spec_.contact_margin,    spec_.friction_coefficient,
-                spec_.release_tolerance, spec_.backoff};
+    set_parameters(spec_, j);
+    set_assumptions(spec_, j);
     j.energy_initial_J = r.initial.evaluation.energy;
     j.energy_reference_J = r.reference.evaluation.energy;
     j.energy_optimised_J =
@@ -346,160 +534,14 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     if (r.idp.series.t.empty()) return j;
     Section::Optimised& o = j.run.emplace();
     o.answer = r.answer;
-    {
-      const Section::Margins mg = margins_of(spec_, r.initial.evaluation);
-      const char* units[st::kConstraintKinds] = {"N", "", "rad", "V", "A", "W", "rad"};
-      const double margins[st::kConstraintKinds] = {mg.contact_N,  mg.friction,  mg.tray_rad,
-                                                    mg.voltage_V,  mg.current_A, mg.power_W,
-                                                    mg.release_rad};
-      for (int c = 0; c < st::kConstraintKinds; ++c)
-        if (r.initial.worst[c] > 0)
-          o.reference.raw_breaks.push_back({st::constraint_name(static_cast<st::ConstraintKind>(c)),
-                                            r.initial.worst[c], margins[c], units[c]});
-      o.reference.kind = r.reference_kind;
-      o.reference.initial_feasible = r.initial_feasible;
-      if (r.reference_kind != "eq8")
-        o.reference.repair = Section::Repair{
-            "SLSQP from eq. 8 descending the squared constraint violation "
-            "(aimed at twice the back-off inside every limit) until it is 0 "
-            "or stops on its tolerance; the reference must then meet every "
-            "constraint with the back-off",
-            r.repair_run.return_code,
-            r.repair_run.converged,
-            r.repair_run.feasible,
-            r.repair_run.iterations,
-            r.repair_run.simulations,
-            r.repair_run.run_time,
-            r.repair_run.rate_change};
-    }
+    set_reference(spec_, r, o);
     o.initial = motion_of(spec_, r.initial);
     if (r.reference_kind == "repaired") o.reference_motion = motion_of(spec_, r.reference);
     o.optimum = motion_of(spec_, r.idp);
-    Section::Idp& idp = o.idp;
-    for (const auto& h : r.idp_run.history)
-      idp.convergence.push_back({h.iteration, h.pass, h.energy, h.violation, arr(h.region),
-                                 h.evaluations, h.improvements});
-    const auto& is = spec_.idp;
-    std::vector<double> es;
-    long evaluations = 0;
-    for (const auto& sd : r.idp_seeds) {
-      idp.seed_runs.push_back({sd.seed, sd.evaluation.energy, sd.evaluation.feasible, sd.converged,
-                               sd.passes, sd.last_gain, sd.evaluations, sd.run_time});
-      es.push_back(sd.evaluation.energy);
-      evaluations += sd.evaluations;
-    }
-    std::sort(es.begin(), es.end());
-    const double median = es.empty()      ? NAN
-                          : es.size() % 2 ? es[es.size() / 2]
-                                          : 0.5 * (es[es.size() / 2 - 1] + es[es.size() / 2]);
-    idp.stages = spec_.stages;
-    idp.steps_per_stage = spec_.steps_per_stage;
-    idp.iterations = is.iterations;
-    idp.max_passes = is.max_passes;
-    idp.tolerance = is.tolerance;
-    idp.quiet_passes = is.quiet_passes;
-    idp.candidates = is.candidates;
-    idp.shrink = is.shrink;
-    idp.restore = is.restore;
-    idp.region_rad_s = arr(is.region);
-    idp.seed = is.seed;
-    idp.seeds = is.seeds;
-    idp.backoff = spec_.backoff;
-    idp.threads = r.idp_run.threads;
-    idp.converged = r.idp_converged;
-    idp.best_seed = r.idp_run.seed;
-    idp.passes = r.idp_run.passes;
-    idp.last_gain = r.idp_run.last_gain;
-    idp.evaluations = evaluations;
-    idp.run_time_s = r.idp_time;
-    idp.spread = {es.empty() ? NAN : es.front(), median, es.empty() ? NAN : es.back()};
-    idp.first_order =
-        Section::FirstOrder{r.idp_optimality.kkt_residual, spec_.nlopt.kkt_tolerance,
-                            r.idp_optimality.active_constraints, r.idp_optimality.binding};
-    o.nlopt.ran = r.nlopt_ran;
-    if (r.nlopt_ran) {
-      Section::NloptRun& nl = o.nlopt.run.emplace();
-      nl.history_J = r.nlopt_run.history;
-      nl.algorithm =
-          "NLopt LD_SLSQP, central-difference gradients, same parameterisation and constraints";
-      nl.return_code = r.nlopt_run.return_code;
-      nl.converged = r.nlopt_run.converged;
-      nl.feasible = r.nlopt_run.feasible;
-      nl.last_gain = r.nlopt_run.last_gain;
-      nl.iterations = r.nlopt_run.iterations;
-      nl.simulations = r.nlopt_run.simulations;
-      nl.run_time_s = r.nlopt_run.run_time;
-      nl.max_evaluations = spec_.nlopt.max_evaluations;
-      nl.max_time_s = spec_.nlopt.max_time;
-      nl.ftol_rel = spec_.nlopt.ftol_rel;
-      nl.xtol_rel = spec_.nlopt.xtol_rel;
-      nl.motion = motion_of(spec_, r.nlopt);
-      nl.first_order = Section::FirstOrder{r.nlopt_run.kkt_residual, spec_.nlopt.kkt_tolerance,
-                                           r.nlopt_run.active_constraints, r.nlopt_run.binding};
-      auto& starts = nl.starts.emplace();
-      for (const auto& sr : r.slsqp_starts)
-        starts.push_back({sr.name, sr.run.evaluation.energy, sr.run.feasible && sr.check.feasible,
-                          sr.run.converged && sr.check.feasible, sr.run.kkt_residual,
-                          sr.run.iterations, sr.run.restarts, sr.run.return_code});
-      nl.best_start = r.slsqp_starts[r.slsqp_best_start].name;
-    }
-    // one table of the optimisers on equal terms (margins from the finer re-simulation)
-    auto row = [&](const std::string& name, const st::ThrowMotion& m, const st::Verification& v,
-                   bool conv, long sims, double time) {
-      return Section::Comparison{name,
-                                 m.evaluation.energy,
-                                 m.split.mechanical,
-                                 m.split.copper,
-                                 m.split.friction,
-                                 conv,
-                                 sims,
-                                 time,
-                                 v.feasible,
-                                 margins_of(spec_, v.evaluation),
-                                 binding_of(v.worst, spec_.backoff),
-                                 binding_rating(v.worst, spec_.backoff)};
-    };
-    o.comparison.push_back(row("IDP (best of " + std::to_string(r.idp_seeds.size()) + " seeds)" +
-                                   (r.idp_converged ? "" : ", a stall"),
-                               r.idp, r.idp_check, r.idp_converged, evaluations, r.idp_time));
-    if (r.nlopt_ran)
-      o.comparison.push_back(
-          row("SLSQP (best of " + std::to_string(r.slsqp_starts.size()) + " starts)", r.nlopt,
-              r.nlopt_check, r.nlopt_run.converged, slsqp_simulations(r), r.nlopt_run.run_time));
-    o.verification.refinement = spec_.check_refinement;
-    o.verification.idp = {r.idp_check.feasible, margins_of(spec_, r.idp_check.evaluation),
-                          worst_of(r.idp_check.worst)};
-    if (r.nlopt_ran)
-      o.verification.nlopt =
-          Section::Verified{r.nlopt_check.feasible, margins_of(spec_, r.nlopt_check.evaluation),
-                            worst_of(r.nlopt_check.worst)};
-    o.release = {spec_.tf, arr(r.flight.release_position), arr(r.flight.release_velocity)};
-    Section::Flight& fl = o.flight;
-    for (size_t k = 0; k < r.flight.path.size(); ++k) {
-      fl.path_xy_m.push_back(arr(r.flight.path[k]));
-      fl.t_s.push_back(r.flight.path_t[k]);
-    }
-    fl.reaches = r.flight.reaches;
-    fl.landing_height_m = spec_.landing_height;
-    fl.duration_s = r.flight.duration;
-    fl.landing_xy_m = arr(r.flight.landing);
-    fl.apex_m = r.flight.apex;
-    for (size_t k = 0; k < r.replay_t.size(); ++k) {
-      o.replay.t_s.push_back(r.replay_t[k]);
-      o.replay.q_rad.push_back(arr(r.replay_q[k]));
-    }
-    o.replay.max_error_rad = r.replay_error;
-    o.replay.tolerance_rad = spec_.replay_tolerance;
-    o.replay.integrator =
-        "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
-        "with 16x the RK4 steps, linear between its samples within a stage; "
-        "error against that plan; coulomb sign smoothed by tanh(qd / 1e-4 rad/s)";
-    o.integration = {"classical RK4, fixed step, steps aligned with the stages",
-                     spec_.steps_per_stage,
-                     spec_.tf / spec_.stages / spec_.steps_per_stage,
-                     16,
-                     r.rk4_energy_error,
-                     r.rk4_theta3_error};
+    const long evaluations = set_idp(spec_, r, o);
+    set_nlopt(spec_, r, o);
+    set_comparison(spec_, r, evaluations, o);
+    set_flight_and_replay(spec_, r, o);
     o.run_time_s = r.run_time;
     return j;
   }

@@ -85,6 +85,7 @@ std::string resolve(const YAML::Node& root, SensitivityItem& it) {
 
 }  // namespace
 
+// (over 60 lines, kept whole: one entry's keys read in the order of their errors (file:line:col))
 SensitivitySpec read_sensitivity(Map& root) {
   SensitivitySpec out;
   if (!root.has("sensitivity")) return out;

@@ -249,6 +249,7 @@ std::string point_text(const json& row) {
 }
 
 // the sweep tables (app::sweep_json of each run) row by row by case id
+// (over 60 lines, kept whole: the sweep tables' rows matched and compared in one pass)
 void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutput>& now,
                  report::RunDiff* out) {
   const json tb = sweep_json(base), tn = sweep_json(now);
@@ -398,6 +399,8 @@ report::RunDiff diff_runs(const std::vector<CaseOutput>& base, const std::vector
   return d;
 }
 
+// (over 60 lines, kept whole: the steps of a diff in order: read both runs, compare, write, exit
+// code)
 int run_diff(const DiffOptions& o) {
   constexpr int kSame = 0, kMoved = 1, kBadInput = 2, kRuntime = 3;
   std::vector<CaseOutput> base, now;

@@ -69,6 +69,8 @@ std::string png_header_problem(const fs::path& p) {
 
 }  // namespace
 
+// (over 60 lines, kept whole: the steps of one frame comparison (read, size check, pixel
+// statistics, verdict) share their images)
 report::FrameDiff compare_frame(const fs::path& base, const fs::path& now, const std::string& file,
                                 int channel_tolerance, std::size_t pixels_allowed,
                                 const fs::path& out_dir, const std::string& copy_prefix) {

@@ -626,6 +626,8 @@ int write_merged_pages(const std::vector<armstudy::cli::CaseOutput>& outputs,
   return kExitDone;
 }
 
+// (over 60 lines, kept whole: the steps of a merge in order: collect, check, write the run-level
+// files)
 int cmd_merge(const std::vector<std::string>& dirs, std::string out,
               const std::string& manifest_file) {
   std::vector<std::filesystem::path> ds(dirs.begin(), dirs.end());

@@ -127,6 +127,7 @@ void check_limits(const fs::path& rj, const ResultsRecord& r, std::set<std::stri
 
 }  // namespace
 
+// (over 60 lines, kept whole: one pass over the folders' entries, each kind of entry a branch)
 std::vector<CaseOutput> collect_outputs(const std::vector<fs::path>& dirs,
                                         std::vector<std::string>* warnings) {
   std::map<std::string, CaseOutput> by_name;

@@ -420,6 +420,7 @@ std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord
   return out;
 }
 
+// (over 60 lines, kept whole: the page's parts in page order, then the atomic write)
 void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
                        const nlohmann::json& results, StudySections sections, StudyAnswer answer) {
   if (!sections) throw std::invalid_argument("study '" + info.study + "' has no report sections");

@@ -22,6 +22,7 @@ constexpr Rgb kOverLimit{250, 200, 120};
 constexpr int kMaxMapCells = 120;  // per axis, drawn (the data keeps every node)
 
 // energy over the direction angle at each optimum's x_S (the thesis's Fig. 9.11), into s
+// (over 60 lines, kept whole: one figure's series gathered and drawn in order)
 void add_energy_vs_phi(const PS& pl, FigureWriter& figures, Section& s) {
   LinePlot plot;
   plot.title = "energy over the direction angle φ";

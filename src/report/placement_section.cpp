@@ -451,6 +451,7 @@ Section optima_section(const PS& pl, FigureWriter& figures) {
   return s;
 }
 
+// (over 60 lines, kept whole: the section's two tables in page order)
 Section convergence_and_evaluations(const PS& pl) {
   Section s;
   s.id = "convergence";
@@ -580,6 +581,7 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   mujoco_replay_section(replays, read_record(results).frames, figures, page);
 }
 
+// (over 60 lines, kept whole: one figure's series gathered and drawn in order)
 bool placement_loci_across_cases(const std::vector<std::pair<std::string, const json*>>& cases,
                                  const std::filesystem::path& svg) {
   // (length, root) per program and configuration, over the placement cases

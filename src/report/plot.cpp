@@ -493,6 +493,8 @@ std::string css_colour(const Rgb& c) {
   return buf;
 }
 
+// (over 60 lines, kept whole: one PLplot page drawn in order: the stream's viewport, window and
+// colours carry from step to step)
 void write_line_plot(const LinePlot& input, const fs::path& svg) {
   // values far from 1 are drawn scaled, the power of ten written into the axis label
   LinePlot plot = input;
@@ -605,7 +607,10 @@ void write_line_plot(const LinePlot& input, const fs::path& svg) {
   page.finish(svg);
 }
 
-void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
+namespace {
+
+// @throws std::invalid_argument unless the grid, the masks and the overlays fit together
+void check_shaded_map(const ShadedMap& map) {
   const size_t n = static_cast<size_t>(map.nx) * static_cast<size_t>(map.ny);
   if (map.nx < 2 || map.ny < 2 || map.z.size() != n)
     throw std::invalid_argument("map '" + map.title + "' needs nx, ny >= 2 and nx*ny z values");
@@ -613,6 +618,48 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     if (r.mask.size() != n)
       throw std::invalid_argument("map region '" + r.label + "' needs nx*ny mask values");
   for (const auto& s : map.overlays) check_series(s);
+}
+
+// the map's markers, secondary ones first and the primary ones (optima) on top
+void draw_map_markers(const ShadedMap& map, Page& page, LegendEntries& legend) {
+  plstream& p = page.p;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& m : map.markers) {
+      if (m.primary != (pass == 1)) continue;
+      const PLINT c = page.slot(m.colour);
+      PLFLT x = m.x, y = m.y;
+      const char* glyph = m.primary ? "⊗" : "□";
+      p.schr(0, m.primary ? 2.2 : 1.2);
+      p.col0(c);
+      p.string(1, &x, &y, glyph);
+      p.schr(0, 1.0);
+      if (!m.label.empty()) legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, glyph);
+    }
+}
+
+// the colour bar of the value field, at its shading levels
+void draw_map_colorbar(const ShadedMap& map, plstream& p, const std::vector<PLFLT>& levels) {
+  PLINT label_opts[] = {PL_COLORBAR_LABEL_RIGHT};
+  const std::string z_label = pl_text(map.z_label);
+  const char* labels[] = {z_label.c_str()};
+  const char* axis_opts[] = {"bcvtm"};
+  PLFLT ticks[] = {0.0};
+  PLINT sub_ticks[] = {0};
+  PLINT n_values[] = {static_cast<PLINT>(levels.size())};
+  const PLFLT* values[] = {levels.data()};
+  PLFLT w = 0, h = 0;
+  p.colorbar(&w, &h, PL_COLORBAR_SHADE | PL_COLORBAR_SHADE_LABEL, 0, 0.015, 0.0, 0.04, 1.0,
+             kSlotBackground, kSlotInk, 1, 0.0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
+             ticks, sub_ticks, n_values, values);
+}
+
+}  // namespace
+
+// (over 60 lines, kept whole: one PLplot page drawn in order: the stream's viewport, window and
+// colours carry from step to step)
+void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
+  check_shaded_map(map);
+  const size_t n = static_cast<size_t>(map.nx) * static_cast<size_t>(map.ny);
 
   double z_lo = INFINITY, z_hi = -INFINITY;
   for (double z : map.z)
@@ -711,38 +758,13 @@ void write_shaded_map(const ShadedMap& map, const fs::path& svg) {
     if (!s.label.empty()) legend.add(s.label, c, PL_LEGEND_LINE, style_code(s.style), s.width, "");
   }
   p.lsty(1);
-  // secondary markers first, the primary ones (optima) on top
-  for (int pass = 0; pass < 2; ++pass)
-    for (const auto& m : map.markers) {
-      if (m.primary != (pass == 1)) continue;
-      const PLINT c = page.slot(m.colour);
-      PLFLT x = m.x, y = m.y;
-      const char* glyph = m.primary ? "⊗" : "□";
-      p.schr(0, m.primary ? 2.2 : 1.2);
-      p.col0(c);
-      p.string(1, &x, &y, glyph);
-      p.schr(0, 1.0);
-      if (!m.label.empty()) legend.add(m.label, c, PL_LEGEND_SYMBOL, 1, 1, glyph);
-    }
+  draw_map_markers(map, page, legend);
   p.col0(kSlotInk);
   p.width(0.8);
   draw_box(p, map.width_pt, height_pt, wx1 - wx0, wy1 - wy0, false);
   draw_labels(p, map.x_label, map.y_label, map.title, y_offset);
 
-  if (has_values) {
-    PLINT label_opts[] = {PL_COLORBAR_LABEL_RIGHT};
-    const std::string z_label = pl_text(map.z_label);
-    const char* labels[] = {z_label.c_str()};
-    const char* axis_opts[] = {"bcvtm"};
-    PLFLT ticks[] = {0.0};
-    PLINT sub_ticks[] = {0};
-    PLINT n_values[] = {static_cast<PLINT>(levels.size())};
-    const PLFLT* values[] = {levels.data()};
-    PLFLT w = 0, h = 0;
-    p.colorbar(&w, &h, PL_COLORBAR_SHADE | PL_COLORBAR_SHADE_LABEL, 0, 0.015, 0.0, 0.04, 1.0,
-               kSlotBackground, kSlotInk, 1, 0.0, 0.0, 0, 0.0, 1, label_opts, labels, 1, axis_opts,
-               ticks, sub_ticks, n_values, values);
-  }
+  if (has_values) draw_map_colorbar(map, p, levels);
   {
     PLFLT vx0, vx1, vy0, vy1;
     p.gvpd(vx0, vx1, vy0, vy1);

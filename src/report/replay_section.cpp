@@ -25,6 +25,7 @@ std::vector<double> joint_row(const std::vector<std::vector<double>>& rows, size
 }
 }  // namespace
 
+// (over 60 lines, kept whole: the section's paragraphs, table and figures in page order)
 void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<std::string>& frames,
                            FigureWriter& figures, CasePage& page) {
   if (rs.empty()) return;

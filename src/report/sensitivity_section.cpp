@@ -52,6 +52,7 @@ std::vector<const SensitivityKeyRecord*> by_influence(const SensitivityRecord& s
   return out;
 }
 
+// (over 60 lines, kept whole: one SVG written top to bottom, bar by bar)
 std::string write_tornado(const std::filesystem::path& dir, const SensitivityRecord& s,
                           std::string* caption) {
   const auto keys = by_influence(s);

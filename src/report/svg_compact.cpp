@@ -153,6 +153,7 @@ std::optional<std::string> counter_clockwise(std::string_view d) {
 }
 
 // the class styles of the first pass, then every run of mergeable paths merged
+// (over 60 lines, kept whole: one pass over the SVG's elements)
 std::string merge_paths(const std::string& body, const std::map<std::string, std::string>& css) {
   std::map<std::string, Merge, std::less<>> kind;
   for (const auto& [style, name] : css) kind[name] = merge_kind(style);

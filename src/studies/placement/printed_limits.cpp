@@ -22,25 +22,19 @@ void check_point(const Spec& spec, const Candidate& c, const std::string& name,
   if (!m.finite()) return;
   ++out.points;
   const char* joint[2] = {"root", "elbow"};
+  const int samples = c.convergence.checked ? c.convergence.samples : spec.samples;
+  // one peak against its limit: the largest excess so far, and where
+  const auto against = [&](double peak, double limit, const char* what, const char* unit, int j) {
+    const double x = peak / limit - 1;
+    if (!(x > out.relative)) return;
+    out.relative = x;
+    out.where = name + ": " + joint[j] + " " + what + " " + sig6(peak) + " " + unit + " at " +
+                std::to_string(samples) + " samples";
+  };
   for (int j = 0; j < 2; ++j) {
-    if (spec.torque_limit) {
-      const double x = m.peak_torque[j] / (*spec.torque_limit)[size_t(j)] - 1;
-      if (x > out.relative) {
-        out.relative = x;
-        out.where = name + ": " + joint[j] + " torque " + sig6(m.peak_torque[j]) + " N m at " +
-                    std::to_string(c.convergence.checked ? c.convergence.samples : spec.samples) +
-                    " samples";
-      }
-    }
-    if (spec.power_limit) {
-      const double x = m.peak_power[j] / (*spec.power_limit)[size_t(j)] - 1;
-      if (x > out.relative) {
-        out.relative = x;
-        out.where = name + ": " + joint[j] + " power " + sig6(m.peak_power[j]) + " W at " +
-                    std::to_string(c.convergence.checked ? c.convergence.samples : spec.samples) +
-                    " samples";
-      }
-    }
+    if (spec.torque_limit)
+      against(m.peak_torque[j], (*spec.torque_limit)[size_t(j)], "torque", "N m", j);
+    if (spec.power_limit) against(m.peak_power[j], (*spec.power_limit)[size_t(j)], "power", "W", j);
   }
 }
 

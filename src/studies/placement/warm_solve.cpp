@@ -13,6 +13,7 @@
 
 namespace armstudy::studies::placement {
 
+// (over 60 lines, kept whole: the warm re-solve's steps in order, as solve's)
 std::optional<Result> solve_warm(const Spec& spec, const Result& nominal) {
   const auto t0 = std::chrono::steady_clock::now();
   // as solve.cpp: a line this close to a boundary touches it; printed energies to 1e-4,

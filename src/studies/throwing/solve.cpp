@@ -293,20 +293,26 @@ void check_answer(const ThrowSetup& setup, const ThrowingSpec& spec, const Throw
 }
 }  // namespace
 
-ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progress) {
-  const auto t_start = std::chrono::steady_clock::now();
-  ThrowingResult r;
-  ThrowSetup setup;
-  VelocityProfile initial;
-  const Eigen::Vector2d delta = spec.release - spec.start;
+bool prepare_throw(const ThrowingSpec& spec, ThrowSetup& setup, VelocityProfile& initial,
+                   ThrowingResult& r) {
   try {
     setup = make_throw_setup(spec);
     initial = eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release, spec.release_rate,
                           spec.tf, spec.stages);
   } catch (const std::invalid_argument& e) {
     r.message = std::string("invalid throwing set-up: ") + e.what();
-    return r;
+    return false;
   }
+  return true;
+}
+
+ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progress) {
+  const auto t_start = std::chrono::steady_clock::now();
+  ThrowingResult r;
+  ThrowSetup setup;
+  VelocityProfile initial;
+  const Eigen::Vector2d delta = spec.release - spec.start;
+  if (!prepare_throw(spec, setup, initial, r)) return r;
   if (progress) progress(0.0, "eq. 8 trajectory");
   r.initial = record_motion(setup, spec, initial);
   if (!r.initial.evaluation.finite) {

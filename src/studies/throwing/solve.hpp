@@ -12,6 +12,11 @@ namespace armstudy::studies {
 /// Builds the simulation setup of a spec. @throws std::invalid_argument on bad parameters.
 ThrowSetup make_throw_setup(const ThrowingSpec& spec);
 
+/// The throw's set-up and its eq. 8 start profile; false, with r.message saying why, when the
+/// spec cannot be set up. (The first step of solve_throwing and of solve_throwing_warm.)
+bool prepare_throw(const ThrowingSpec& spec, ThrowSetup& setup, VelocityProfile& initial,
+                   ThrowingResult& r);
+
 /// Simulates one profile and records its series, split and release errors.
 ThrowMotion record_motion(const ThrowSetup& setup, const ThrowingSpec& spec,
                           const VelocityProfile& profile);

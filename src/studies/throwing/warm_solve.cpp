@@ -9,20 +9,15 @@
 
 namespace armstudy::studies {
 
+// (over 60 lines, kept whole: the warm re-solve's steps in order (set-up, repair, SLSQP, re-check),
+// as solve_throwing's)
 ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfile& start) {
   const auto t0 = std::chrono::steady_clock::now();
   ThrowingResult r;
   ThrowSetup setup;
   VelocityProfile initial;
   const Eigen::Vector2d delta = spec.release - spec.start;
-  try {
-    setup = make_throw_setup(spec);
-    initial = eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release, spec.release_rate,
-                          spec.tf, spec.stages);
-  } catch (const std::invalid_argument& e) {
-    r.message = std::string("invalid throwing set-up: ") + e.what();
-    return r;
-  }
+  if (!prepare_throw(spec, setup, initial, r)) return r;
   if (start.stages() != spec.stages) {
     r.message = "the warm start has another number of stages";
     return r;
