@@ -294,6 +294,14 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
   }
 };
 
+// the placement of a candidate: x_S, phi and the root in the line's frame
+template <class T>
+void set_place(T& o, const pl::Candidate& c) {
+  o.x_s_m = c.x_s;
+  o.phi_deg = c.phi / kDeg;
+  o.root_xy_m = pair(c.root);
+}
+
 // the optimum of one program and configuration, with its margin sweep
 Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& pc,
                                  const Section::Id& id) {
@@ -301,9 +309,7 @@ Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& 
   Section::Optimum o;
   static_cast<Section::Id&>(o) = id;
   set_metrics(o, c);
-  o.x_s_m = c.x_s;
-  o.phi_deg = c.phi / kDeg;
-  o.root_xy_m = pair(c.root);
+  set_place(o, c);
   o.grid_energy_J = pc.grid.metrics.energy;
   o.grid_x_s_m = pc.grid.x_s;
   o.grid_phi_deg = pc.grid.phi / kDeg;
@@ -326,9 +332,7 @@ Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& 
     if (m.found) {
       Section::MarginOptimum mo;
       set_metrics(mo, m.optimum);
-      mo.x_s_m = m.optimum.x_s;
-      mo.phi_deg = m.optimum.phi / kDeg;
-      mo.root_xy_m = pair(m.optimum.root);
+      set_place(mo, m.optimum);
       mo.binding = pl::binding_name(m.decision.binding);
       mo.refine_converged = m.refine_converged;
       mo.refine_tolerance_rel = m.refine_tolerance_rel;
@@ -349,9 +353,7 @@ Section::ThesisBest thesis_best_section(const pl::ProgramConfig& pc, const Secti
   Section::ThesisBest t;
   static_cast<Section::Id&>(t) = id;
   set_metrics(t, c);
-  t.x_s_m = c.x_s;
-  t.phi_deg = c.phi / kDeg;
-  t.root_xy_m = pair(c.root);
+  set_place(t, c);
   t.status = pl::status_name(c.status);
   t.singular = c.status == pl::CandidateStatus::kSingular;
   t.boundary_distance_m = c.boundary_distance;
@@ -442,9 +444,7 @@ Section::Evaluation evaluation_section(const pl::Evaluation& e) {
   static_cast<Section::Id&>(ej) = id_of(e.program, e.configuration);
   ej.label = e.label;
   const pl::Candidate& c = e.candidate;
-  ej.x_s_m = c.x_s;
-  ej.phi_deg = c.phi / kDeg;
-  ej.root_xy_m = pair(c.root);
+  set_place(ej, c);
   const bool reachable = c.status != pl::CandidateStatus::kUnreachable;
   if (reachable) {
     set_metrics(ej, c);

@@ -5,13 +5,14 @@
 
 namespace armstudy::app {
 
-double estimated_seconds(const LoadedCase& c, bool render) {
-  double seconds = 0;
+double estimated_seconds(const LoadedCase& c, bool render, bool sensitivity) {
+  double solve = 0, frames = 0;
   for (const cases::Demand& d : c.demands) {
-    if (d.work_per_second > 0) seconds += d.work / d.work_per_second;
-    if (render) seconds += d.frames_rendered / kFramesPerSecond;
+    if (d.work_per_second > 0) solve += d.work / d.work_per_second;
+    if (render) frames += d.frames_rendered / kFramesPerSecond;
   }
-  return seconds;
+  const double resolves = sensitivity ? 2.0 * double(c.info.sensitivity.items.size()) : 0.0;
+  return solve * (1.0 + resolves * kSensitivityResolveFraction) + frames;
 }
 
 double estimated_memory_bytes(const LoadedCase& c, bool render) {
@@ -49,9 +50,11 @@ double MemoryGate::in_use() const {
   return in_use_;
 }
 
-std::vector<size_t> longest_first(const std::vector<LoadedCase>& cases, bool render) {
+std::vector<size_t> longest_first(const std::vector<LoadedCase>& cases, bool render,
+                                  bool sensitivity) {
   std::vector<double> seconds(cases.size());
-  for (size_t i = 0; i < cases.size(); ++i) seconds[i] = estimated_seconds(cases[i], render);
+  for (size_t i = 0; i < cases.size(); ++i)
+    seconds[i] = estimated_seconds(cases[i], render, sensitivity);
   std::vector<size_t> order(cases.size());
   std::iota(order.begin(), order.end(), size_t{0});
   std::stable_sort(order.begin(), order.end(),

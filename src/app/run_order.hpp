@@ -15,10 +15,16 @@ namespace armstudy::app {
 /// Frames a core renders per second, about (the bundled cases, 640 x 480 px, no shadows).
 inline constexpr double kFramesPerSecond = 40.0;
 
+/// What one re-solve of a case's sensitivity part (two a key, warm-started from the answer,
+/// not rendered) costs, as a fraction of the case's own solve: measured on the bundled cases
+/// 0.05-0.11 (placement and time-optimal about 0.05, throwing 0.11), rounded up.
+inline constexpr double kSensitivityResolveFraction = 0.15;
+
 /// The case's time on one core estimated from its loader's demands: the work divided by
-/// the work a core does per second, plus, when `render`, the frames it renders at
-/// kFramesPerSecond. 0 when no demand says.
-double estimated_seconds(const LoadedCase& c, bool render);
+/// the work a core does per second, plus, when `sensitivity`, its sensitivity part's
+/// re-solves (2 a key, kSensitivityResolveFraction of the solve each), plus, when `render`,
+/// the frames it renders at kFramesPerSecond. 0 when no demand says.
+double estimated_seconds(const LoadedCase& c, bool render, bool sensitivity = true);
 
 /// The memory the case holds at once, estimated from its loader's demands as the budget
 /// judges it (the solve's arrays, plus its strip's pixels when `render`).
@@ -44,6 +50,7 @@ class MemoryGate {
 
 /// Indices into `cases`, the longest estimate first; cases of equal estimate keep their
 /// order.
-std::vector<size_t> longest_first(const std::vector<LoadedCase>& cases, bool render);
+std::vector<size_t> longest_first(const std::vector<LoadedCase>& cases, bool render,
+                                  bool sensitivity = true);
 
 }  // namespace armstudy::app

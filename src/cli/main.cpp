@@ -367,7 +367,8 @@ int run_cases(std::vector<LoadedCase>& cases, const armstudy::app::RunOptions& o
               armstudy::cli::ProgressReporter& progress,
               std::vector<armstudy::cli::CaseOutput>* errored) {
   // the longest cases first, so that each core ends on a short one
-  const std::vector<size_t> order = armstudy::app::longest_first(cases, options.render);
+  const std::vector<size_t> order =
+      armstudy::app::longest_first(cases, options.render, options.sensitivity);
   std::atomic<size_t> next{0};
   std::mutex mu;
   int worst = kExitDone;

@@ -133,4 +133,18 @@ TEST(RunOrder, TheMemoryBudgetCoversAllJobs) {
   gate.release(8.0 * (1ull << 30));
 }
 
+// the sensitivity part's re-solves are in the estimate: the bundled throwing case lists 4 keys,
+// 8 re-solves at kSensitivityResolveFraction of its solve each (the run's --no-sensitivity
+// leaves them out)
+TEST(RunOrder, TheEstimateCoversTheSensitivityResolves) {
+  const std::string path = std::string(ARMSTUDY_SOURCE_DIR) + "/reports/cases/throwing.yaml";
+  const LoadedCase c = armstudy::app::load_case(path);
+  const size_t keys = c.info.sensitivity.items.size();
+  ASSERT_GT(keys, 0u);
+  const double without = armstudy::app::estimated_seconds(c, false, false);
+  const double with = armstudy::app::estimated_seconds(c, false, true);
+  ASSERT_GT(without, 0);
+  EXPECT_NEAR(with / without, 1.0 + 2.0 * keys * armstudy::app::kSensitivityResolveFraction, 1e-12);
+}
+
 }  // namespace
