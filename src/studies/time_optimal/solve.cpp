@@ -200,6 +200,7 @@ struct RefinedGrid {
 struct SideResults {
   RefinedGrid refined;
   std::vector<double> mvc_sd, mvc_velocity_sd;
+  std::optional<SolverOutput> coarse;  // (on a graded grid: solve_coarse_graded's)
 };
 // the grid with every interval halved, and its check points (interval k's in both halves)
 std::vector<double> halved(const std::vector<double>& grid) {
@@ -620,6 +621,20 @@ std::string exact_method(const Spec& spec, const std::vector<double>& grid,
   return method;
 }
 
+// The extrapolation's coarser grid on a graded grid (every other node, the case's check
+// points), solved on the side thread while the answer is re-checked: it depends on neither.
+// Nothing when it has under 4 intervals or its solve raises (the study solves it again then).
+std::optional<SolverOutput> solve_coarse_graded(const Problem& pb, const std::vector<double>& grid,
+                                                int checks, ExactPointCache* points) {
+  const std::vector<double> coarse = every_other(grid, pb.path.stops());
+  if (coarse.size() < 5) return std::nullopt;
+  try {
+    return solve_exact(pb, coarse, std::vector<int>(coarse.size() - 1, checks), points);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 // the intervals whose check points the re-check `round` doubles: those over the tolerance
 // in the first round, then every interval with any overshoot and its neighbours (a re-solve
 // can move the overshoot next door); false when it marks none
@@ -670,8 +685,10 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
           SideResults out{known ? RefinedGrid{checks, *known, MinSinQ2(pb, halved(grid))}
                                 : solve_refined_grid(pb, grid, checks, &points),
                           {},
-                          {}};
+                          {},
+                          std::nullopt};
           max_velocity_curve(pb, grid, &out.mvc_sd, &out.mvc_velocity_sd, &points);
+          if (known) out.coarse = solve_coarse_graded(pb, grid, checks.front(), &points);
           return out;
         });
   finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
@@ -707,8 +724,10 @@ std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
                                         SideTask<SideResults>& speculative, Result& res) {
   std::optional<RefinedGrid> refined;
   SolverOutput stale;  // (the side thread's halved grid with check points since doubled)
+  std::optional<SolverOutput> coarse_side;
   if (speculative.valid()) {
     SideResults side = speculative.get();
+    coarse_side = std::move(side.coarse);
     if (side.refined.checks == exact_checks)
       refined.emplace(std::move(side.refined));
     else
@@ -737,8 +756,12 @@ std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
     report(progress, 0.12, "exact solver on a coarser grid (extrapolation)");
     const std::vector<double> coarse =
         graded ? coarse_graded : make_nodes(pb.path, coarse_intervals);
-    const SolverOutput oc = solve_exact(
-        pb, coarse, std::vector<int>(coarse.size() - 1, spec.exact.checks_per_interval), &points);
+    const SolverOutput oc =
+        coarse_side
+            ? std::move(*coarse_side)
+            : solve_exact(pb, coarse,
+                          std::vector<int>(coarse.size() - 1, spec.exact.checks_per_interval),
+                          &points);
     res.grid.coarse_points = static_cast<int>(coarse.size());
     res.grid.coarse_duration = oc.solved ? oc.duration : NAN;
     extrapolate(res.grid, coarse_intervals, intervals);
