@@ -13,8 +13,12 @@
 //     resampling, the doubled check points where it fails, the halved grid), DP and Complex off;
 //     the path check, the maximum velocity curve and the sampled motion are in it too. The
 //     1000 uniform intervals change by 1.9e-4 when halved, over exact.tolerance_rel (1e-4), so
-//     the study grades the grid (1422 points, 2 rounds) and runs again on it: 6.6-6.9 ms of
-//     process CPU per solve against 2.5 ms before grading (load 6.6 on 2 cores)
+//     the study grades the grid (1424 points, 2 rounds) and runs again on it: 7 exact solves
+//     (1001, 2001, 1126, 2251, 1424, 2847 and 713 points) and two dense re-checks against 3
+//     solves and one before grading. Process CPU per solve, medians of 12 runs alternating
+//     the three builds in one session (load 6.4-6.9 on 2 cores): 014b1b7 (before grading)
+//     2.58 ms, 019da2c (grading) 7.13 ms = 2.76x, 045dd85 (the graded study reusing the
+//     grading's solves and sets) 5.68 ms = 2.20x; wall 5.15 / 14.2 / 10.6 ms
 #include <benchmark/benchmark.h>
 
 #include <time.h>

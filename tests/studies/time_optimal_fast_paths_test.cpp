@@ -224,6 +224,37 @@ TEST(TimeOptimalFastPaths, SolveExactWithThePointsOfEarlierSolvesGivesTheSameNum
   }
 }
 
+// solve_exact's `previous`: a grid with some intervals bisected (as a grading round makes) or
+// with more check points in some, solved taking the controllable sets of an earlier solve
+// where its intervals are the same, gives the numbers of its solve without it bitwise (0.08 s
+// at load 7 on 2 cores)
+TEST(TimeOptimalFastPaths, SolveExactWithAnEarlierSolvesSetsGivesTheSameNumbers) {
+  for (const Problem& pb : problems()) {
+    const std::vector<double> nodes = make_nodes(pb.path, 80);
+    const SolverOutput before = solve_exact(pb, nodes, std::vector<int>(80, 2));
+    ASSERT_TRUE(before.solved);
+    ASSERT_EQ(before.reach_hi.size(), nodes.size());
+    std::vector<double> graded;
+    for (size_t k = 0; k < nodes.size(); ++k) {
+      if (k > 0 && ((k >= 30 && k < 40) || k == 61))
+        graded.push_back(0.5 * (nodes[k - 1] + nodes[k]));
+      graded.push_back(nodes[k]);
+    }
+    const std::vector<int> graded_checks(graded.size() - 1, 2);
+    std::vector<int> more(80, 2);
+    for (int k = 50; k < 55; ++k) more[k] = 4;
+    for (const auto& [grid, checks] : {std::pair{graded, graded_checks}, std::pair{nodes, more}}) {
+      const SolverOutput plain = solve_exact(pb, grid, checks);
+      const SolverOutput taken = solve_exact(pb, grid, checks, nullptr, &before);
+      ASSERT_TRUE(plain.solved);
+      EXPECT_EQ(taken.profile.sd, plain.profile.sd);
+      EXPECT_EQ(taken.reach_lo, plain.reach_lo);
+      EXPECT_EQ(taken.reach_hi, plain.reach_hi);
+      EXPECT_EQ(taken.duration, plain.duration);
+    }
+  }
+}
+
 TEST(TimeOptimalFastPaths, PrefetchedPointsOfTheHalvedGridGiveItsSolveWithoutNewPoints) {
   // the study's order: the halved grid's own points prefetched into a second cache while the
   // grid is solved, then taken into the solve's cache before the halved grid is solved

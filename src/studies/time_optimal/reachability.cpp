@@ -161,8 +161,41 @@ inline int add_rows(const double* p, int nj, const Limits& lim, double shift, Co
 struct XRange {
   double lo = 0, hi = kReachInf;
 };
-// (over 60 lines, kept whole: the exact solver's innermost loop over the rows of one
-// interval, per grid point of every solve)
+// true when g - bound d > 0 in exact arithmetic, shown without the division g / d: then the
+// quotient g / d lies beyond `bound` (above it for d > 0, below it for d < 0), and so does its
+// rounding, which can tighten neither bound. fl(g - fl(bound d)) over 2^-50 of |fl(bound d)|
+// (plus a floor for underflow) exceeds the rounding of both operations (2^-53 each), so the
+// exact difference is positive; otherwise (near ties, an infinite bound, NaN) it is false and
+// the quotient is computed as before: the bounds are the same numbers.
+inline bool beyond(double g, double d, double bound) {
+  const double p = bound * d;
+  return g - p > 0x1p-50 * std::abs(p) + 1e-300;
+}
+
+// the bounds on x where each lower bound on u meets each upper one (into out); false when
+// two parallel ones leave no u
+bool pair_bounds(const Ln* L, int nl, const Ln* U, int nu, XRange& out) {
+  for (int a = 0; a < nl; ++a) {
+    for (int b = 0; b < nu; ++b) {
+      const double d = L[a].r - U[b].r, g = U[b].p - L[a].p;
+      if (d > 0) {
+        if (beyond(g, d, out.hi)) continue;  // (g / d > out.hi: no new bound)
+        const double v = g / d;
+        if (v < out.hi) out.hi = v;
+      } else if (d < 0) {
+        if (beyond(g, d, out.lo)) continue;  // (g / d < out.lo: no new bound)
+        const double v = g / d;
+        if (v > out.lo) out.lo = v;
+      } else if (g < -1e-12 * std::max({1.0, std::abs(L[a].p), std::abs(U[b].p)})) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// (the exact solver's innermost loop over the rows of one interval, per grid point of every
+// solve)
 XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace& ws) {
   XRange out;
   const size_t most = 2 * static_cast<size_t>(n + 1);
@@ -212,20 +245,7 @@ XRange feasible_x_fast(const Coef* rows, int n, const Coef& last, ExactWorkspace
   for (int i = 0; i < n; ++i)
     if (!take(rows[i])) return XRange{1, 0};
   if (!take(last)) return XRange{1, 0};
-  for (int a = 0; a < nl; ++a) {
-    for (int b = 0; b < nu; ++b) {
-      const double d = L[a].r - U[b].r, g = U[b].p - L[a].p;
-      if (d > 0) {
-        const double v = g / d;
-        if (v < out.hi) out.hi = v;
-      } else if (d < 0) {
-        const double v = g / d;
-        if (v > out.lo) out.lo = v;
-      } else if (g < -1e-12 * std::max({1.0, std::abs(L[a].p), std::abs(U[b].p)})) {
-        return XRange{1, 0};
-      }
-    }
-  }
+  if (!pair_bounds(L, nl, U, nu, out)) return XRange{1, 0};
   return out;
 }
 
@@ -472,10 +492,32 @@ void fill_rows(const Problem& pb, const std::vector<double>& nodes,
   if (cache) cache->merge();
 }
 
-// backward pass: controllable sets, K_N = {0}; false on an empty set
-bool backward_pass(const std::vector<double>& nodes, ExactWorkspace& ws) {
+// Whether interval k of `nodes` is interval j - 1 of `prev`'s grid (the same ends and check
+// points) with the same set at its end, found in the walk down prev's nodes (j, the index of
+// the prev node at or below nodes[k + 1], decreases with k)
+bool same_as_before(const std::vector<double>& nodes, const std::vector<int>& checks_per, int k,
+                    const SolverOutput& prev, size_t& j, const ExactWorkspace& ws) {
+  const std::vector<double>& ps = prev.profile.s;
+  while (j > 0 && ps[j] > nodes[k + 1]) --j;
+  return j > 0 && ps[j] == nodes[k + 1] && ps[j - 1] == nodes[k] &&
+         prev.reach_checks[j - 1] == checks_per[k] && prev.reach_lo[j] == ws.klo[k + 1] &&
+         prev.reach_hi[j] == ws.khi[k + 1];
+}
+
+// backward pass: controllable sets, K_N = {0}; false on an empty set. An interval that
+// `prev` solved with the same set at its end takes its set from it.
+bool backward_pass(const std::vector<double>& nodes, const std::vector<int>& checks_per,
+                   const SolverOutput* prev, ExactWorkspace& ws) {
   const int N = static_cast<int>(nodes.size()) - 1;
+  const bool memo = prev && prev->solved && prev->reach_hi.size() == prev->profile.s.size() &&
+                    prev->profile.s.size() >= 2;
+  size_t j = memo ? prev->profile.s.size() - 1 : 0;
   for (int k = N - 1; k >= 0; --k) {
+    if (memo && same_as_before(nodes, checks_per, k, *prev, j, ws)) {
+      ws.klo[k] = prev->reach_lo[j - 1];
+      ws.khi[k] = prev->reach_hi[j - 1];
+      continue;
+    }
     const double ds = nodes[k + 1] - nodes[k];
     const Coef reach{1.0, 2.0 * ds, ws.klo[k + 1], ws.khi[k + 1]};
     const XRange xi = feasible_x_fast(ws.rows.data() + ws.start[k], ws.count[k], reach, ws);
@@ -503,7 +545,8 @@ bool forward_pass(const std::vector<double>& nodes, ExactWorkspace& ws) {
 }  // namespace
 
 SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
-                         const std::vector<int>& checks_per, ExactPointCache* cache) {
+                         const std::vector<int>& checks_per, ExactPointCache* cache,
+                         const SolverOutput* previous) {
   thread_local ExactWorkspace ws;
   const int n = static_cast<int>(nodes.size());
   const int N = n - 1;
@@ -514,9 +557,12 @@ SolverOutput solve_exact(const Problem& pb, const std::vector<double>& nodes,
   fill_rows(pb, nodes, checks_per, cache, ws);
   // on any failure of the passes the reference solver (the same numbers, with the rows'
   // tags) words the message
-  if (!backward_pass(nodes, ws) || !forward_pass(nodes, ws))
+  if (!backward_pass(nodes, checks_per, previous, ws) || !forward_pass(nodes, ws))
     return solve_exact_reference(pb, nodes, checks_per);
   SolverOutput out;
+  out.reach_lo.assign(ws.klo.begin(), ws.klo.begin() + n);
+  out.reach_hi.assign(ws.khi.begin(), ws.khi.begin() + n);
+  out.reach_checks = checks_per;
   out.profile.law = SegmentLaw::kPathAcceleration;
   out.profile.s = nodes;
   out.profile.sd.resize(n);

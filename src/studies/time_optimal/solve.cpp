@@ -200,6 +200,7 @@ struct RefinedGrid {
 struct SideResults {
   RefinedGrid refined;
   std::vector<double> mvc_sd, mvc_velocity_sd;
+  std::optional<SolverOutput> coarse;  // (on a graded grid: solve_coarse_graded's)
 };
 // the grid with every interval halved, and its check points (interval k's in both halves)
 std::vector<double> halved(const std::vector<double>& grid) {
@@ -218,9 +219,10 @@ std::vector<int> halved_checks(const std::vector<int>& checks) {
   return fine;
 }
 RefinedGrid solve_refined_grid(const Problem& pb, const std::vector<double>& grid,
-                               const std::vector<int>& checks, ExactPointCache* points) {
+                               const std::vector<int>& checks, ExactPointCache* points,
+                               const SolverOutput* previous = nullptr) {
   std::vector<double> fine = halved(grid);
-  SolverOutput o = solve_exact(pb, fine, halved_checks(checks), points);
+  SolverOutput o = solve_exact(pb, fine, halved_checks(checks), points, previous);
   return RefinedGrid{checks, std::move(o), MinSinQ2(pb, std::move(fine))};
 }
 
@@ -235,6 +237,10 @@ struct GradedGrid {
   double uniform_change = NAN;
   int rounds = 0;
   bool capped = false;
+  /// the exact solutions on nodes and on halved(nodes) with the case's check points in every
+  /// interval, when the grading's last round solved them (it stopped converged): the study
+  /// on the graded grid starts from them instead of solving them again (the same numbers)
+  std::optional<SolverOutput> solution, halved_solution;
 };
 
 // per interval k of `grid`: |its time on grid - the time of its two halves on halved(grid)|
@@ -258,30 +264,31 @@ std::vector<double> interval_changes(const std::vector<double>& grid, const std:
 // first), until the relative change of the duration is within ex.tolerance_rel, the grid
 // holds ex.max_grid_points nodes (capped) or a solve fails (the study's own solves say why).
 // Near a singular pose this grades the grid geometrically towards it.
-// The first round takes the uniform grid's solutions the study already has (grid_sd on
-// `grid`, fine_sd on its halved grid).
+// The first round takes the uniform grid's solutions the study already has (on `grid` and
+// on its halved grid); each round's solves take the sets of the last round's where their
+// intervals are the same (solve_exact's `previous`).
 GradedGrid grade_grid(const Problem& pb, std::vector<double> grid, int checks,
                       const ExactSettings& ex, double uniform_change, ExactPointCache* cache,
-                      const std::vector<double>& grid_sd, const std::vector<double>& fine_sd) {
+                      const SolverOutput& grid_solution, const SolverOutput& fine_solution) {
   GradedGrid out;
   out.uniform_points = static_cast<int>(grid.size());
   out.uniform_change = uniform_change;
   out.points = cache;
   constexpr int kMaxRounds = 200;
+  SolverOutput og = grid_solution, oh = fine_solution;
   for (int round = 0; round < kMaxRounds; ++round) {
     const std::vector<double> fine = halved(grid);
-    SolverOutput og, oh;
-    if (round == 0) {
-      og.solved = oh.solved = true;
-      og.profile.sd = grid_sd;
-      oh.profile.sd = fine_sd;
-      og.duration = oh.duration = 0;  // (the study found the change over the tolerance)
-    } else {
-      og = solve_exact(pb, grid, std::vector<int>(grid.size() - 1, checks), cache);
+    // (round 0: the study found the change over the tolerance)
+    if (round > 0) {
+      og = solve_exact(pb, grid, std::vector<int>(grid.size() - 1, checks), cache, &og);
       if (!og.solved) break;
-      oh = solve_exact(pb, fine, std::vector<int>(fine.size() - 1, checks), cache);
+      oh = solve_exact(pb, fine, std::vector<int>(fine.size() - 1, checks), cache, &oh);
       if (!oh.solved) break;
-      if (std::abs(og.duration / oh.duration - 1) <= ex.tolerance_rel) break;
+      if (std::abs(og.duration / oh.duration - 1) <= ex.tolerance_rel) {
+        out.solution = std::move(og);
+        out.halved_solution = std::move(oh);
+        break;
+      }
     }
     const int room = ex.max_grid_points - static_cast<int>(grid.size());
     if (room <= 0) {
@@ -614,6 +621,20 @@ std::string exact_method(const Spec& spec, const std::vector<double>& grid,
   return method;
 }
 
+// The extrapolation's coarser grid on a graded grid (every other node, the case's check
+// points), solved on the side thread while the answer is re-checked: it depends on neither.
+// Nothing when it has under 4 intervals or its solve raises (the study solves it again then).
+std::optional<SolverOutput> solve_coarse_graded(const Problem& pb, const std::vector<double>& grid,
+                                                int checks, ExactPointCache* points) {
+  const std::vector<double> coarse = every_other(grid, pb.path.stops());
+  if (coarse.size() < 5) return std::nullopt;
+  try {
+    return solve_exact(pb, coarse, std::vector<int>(coarse.size() - 1, checks), points);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 // the intervals whose check points the re-check `round` doubles: those over the tolerance
 // in the first round, then every interval with any overshoot and its neighbours (a re-solve
 // can move the overshoot next door); false when it marks none
@@ -635,38 +656,47 @@ bool double_checks(int round, const std::vector<double>& interval_worst,
   return refined;
 }
 
-// The exact solver's answer `first` re-checked densely: limits hold at the check points of
+// The exact solver's answer `o` re-checked densely: limits hold at the check points of
 // each interval; between them a limit may be overshot by O(h^2). While the dense resampling
 // of the whole answer finds a limit overshot by more than kExactTolerance (at most
 // kMaxRefinements times), the check points are doubled where it fails and the grid solved
 // again; run time includes it. Starts the halved grid's solve on the side thread
-// (`speculative`) meanwhile. Adds the exact solver to res; false when it is unsolvable.
+// (`speculative`) meanwhile. Adds the exact solver to res and leaves its last solve in `o`;
+// false when it is unsolvable.
 bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>& grid,
                   std::vector<int>& exact_checks, ExactPointCache& points,
-                  ExactPointCache& fine_points, SolverOutput first,
+                  ExactPointCache& fine_points, SolverOutput& o,
                   std::chrono::steady_clock::time_point t_exact, const GradedGrid* graded,
                   SideTask<SideResults>& speculative, Result& res) {
   SolverResult r;
   r.name = "exact";
   r.intervals = static_cast<int>(grid.size()) - 1;
   std::vector<double> interval_worst;
-  SolverOutput o = std::move(first);
   // the halved grid on a second thread meanwhile, with these check points (solved again
   // below if the re-check doubles any); it owns the point cache until it is waited for
+  // (the grading's last round solved the graded grid's halved grid with these check points)
+  const SolverOutput* known =
+      graded && graded->halved_solution ? &*graded->halved_solution : nullptr;
   if (o.solved)
-    speculative = SideTask<SideResults>([&pb, &grid, &points, &fine_points, checks = exact_checks] {
-      points.absorb(fine_points);  // (after the prefetch: the side thread runs tasks in turn)
-      points.merge();
-      SideResults out{solve_refined_grid(pb, grid, checks, &points), {}, {}};
-      max_velocity_curve(pb, grid, &out.mvc_sd, &out.mvc_velocity_sd, &points);
-      return out;
-    });
+    speculative =
+        SideTask<SideResults>([&pb, &grid, &points, &fine_points, known, checks = exact_checks] {
+          points.absorb(fine_points);  // (after the prefetch: the side thread runs tasks in turn)
+          points.merge();
+          SideResults out{known ? RefinedGrid{checks, *known, MinSinQ2(pb, halved(grid))}
+                                : solve_refined_grid(pb, grid, checks, &points),
+                          {},
+                          {},
+                          std::nullopt};
+          max_velocity_curve(pb, grid, &out.mvc_sd, &out.mvc_velocity_sd, &points);
+          if (known) out.coarse = solve_coarse_graded(pb, grid, checks.front(), &points);
+          return out;
+        });
   finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
   for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance; ++k) {
     if (speculative.valid()) speculative.wait();  // (the cache is this thread's again)
     if (!double_checks(k, interval_worst, exact_checks))
       exact_checks[r.violation.interval] *= 2;  // (its excess by the closed form rounds below)
-    o = solve_exact(pb, grid, exact_checks, &points);
+    o = solve_exact(pb, grid, exact_checks, &points, &o);
     finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
   }
   r.run_time = seconds_since(t_exact);
@@ -689,25 +719,32 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
 std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
                                         const ProgressFn& progress, const std::vector<double>& grid,
                                         const std::vector<int>& exact_checks,
-                                        ExactPointCache& points, const GradedGrid* graded,
+                                        const SolverOutput& exact, ExactPointCache& points,
+                                        const GradedGrid* graded,
                                         SideTask<SideResults>& speculative, Result& res) {
   std::optional<RefinedGrid> refined;
+  SolverOutput stale;  // (the side thread's halved grid with check points since doubled)
+  std::optional<SolverOutput> coarse_side;
   if (speculative.valid()) {
     SideResults side = speculative.get();
-    if (side.refined.checks == exact_checks) refined.emplace(std::move(side.refined));
+    coarse_side = std::move(side.coarse);
+    if (side.refined.checks == exact_checks)
+      refined.emplace(std::move(side.refined));
+    else
+      stale = std::move(side.refined.solution);
     res.mvc_sd = std::move(side.mvc_sd);
     res.mvc_velocity_sd = std::move(side.mvc_velocity_sd);
   } else {
     max_velocity_curve(pb, grid, &res.mvc_sd, &res.mvc_velocity_sd, &points);
   }
-  if (!refined) refined.emplace(solve_refined_grid(pb, grid, exact_checks, &points));
+  if (!refined) refined.emplace(solve_refined_grid(pb, grid, exact_checks, &points, &stale));
   res.grid = grid_convergence(pb, res.solvers.front(), *refined, spec.exact, graded);
   if (!graded && spec.exact.tolerance_rel > 0 && res.grid.refined_solved &&
       res.grid.change > spec.exact.tolerance_rel &&
       static_cast<int>(grid.size()) < spec.exact.max_grid_points) {
     report(progress, 0.11, "grading the exact solver's grid");
     return grade_grid(pb, grid, spec.exact.checks_per_interval, spec.exact, res.grid.change,
-                      &points, res.solvers.front().node_sd, refined->solution.profile.sd);
+                      &points, exact, refined->solution);
   }
   // a third, coarser grid (about half the intervals) for the observed order
   // (on a graded grid, every other node of it: the same nesting)
@@ -719,8 +756,12 @@ std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
     report(progress, 0.12, "exact solver on a coarser grid (extrapolation)");
     const std::vector<double> coarse =
         graded ? coarse_graded : make_nodes(pb.path, coarse_intervals);
-    const SolverOutput oc = solve_exact(
-        pb, coarse, std::vector<int>(coarse.size() - 1, spec.exact.checks_per_interval), &points);
+    const SolverOutput oc =
+        coarse_side
+            ? std::move(*coarse_side)
+            : solve_exact(pb, coarse,
+                          std::vector<int>(coarse.size() - 1, spec.exact.checks_per_interval),
+                          &points);
     res.grid.coarse_points = static_cast<int>(coarse.size());
     res.grid.coarse_duration = oc.solved ? oc.duration : NAN;
     extrapolate(res.grid, coarse_intervals, intervals);
@@ -864,6 +905,23 @@ std::string summary_message(const Problem& pb, const Result& res, double exact_d
   return os.str();
 }
 
+// The halved uniform grid's points that the case's grid has not, into fine_points on the
+// side thread while the exact solver runs (the halved grid's solve takes them; a point that
+// fails is left to it, as is any error the case's grid raises here). None on a graded grid:
+// the grading solved both grids' points already, and no task wakes the side thread.
+SideTask<void> prefetch_halved(const Problem& pb, const ExactSettings& ex, const GradedGrid* graded,
+                               ExactPointCache& fine_points) {
+  if (graded) return {};
+  return SideTask<void>([&pb, &fine_points, n = ex.grid_points, c = ex.checks_per_interval] {
+    try {
+      const std::vector<double> grid = make_nodes(pb.path, n - 1);
+      const std::vector<int> checks(grid.size() - 1, c);
+      prefetch_points(pb, halved(grid), halved_checks(checks), grid, checks, &fine_points);
+    } catch (const std::exception&) {
+    }
+  });
+}
+
 // The study on the case's uniform grid, or (graded given) on the graded grid it asked for:
 // path check, exact solver with its dense re-check, grid convergence, DP and Complex, the
 // DP convergence table. The side thread checks the path and solves the halved grid while
@@ -898,20 +956,9 @@ Result solve_grid(const Spec& spec, const ProgressFn& progress, const GradedGrid
     return false;
   };
 
-  // the halved grid's points that the case's grid has not, on the side thread while the
-  // exact solver runs (the halved grid's solve below takes them; a point that fails is left
-  // to it, as is any error the case's grid raises here)
+  // the halved grid's new points on the side thread while the exact solver runs
   ExactPointCache fine_points(pb);
-  SideTask<void> prefetch(
-      [&pb, &fine_points, n = spec.exact.grid_points, c = spec.exact.checks_per_interval, graded] {
-        if (graded) return;  // (the grading solved both grids' points already)
-        try {
-          const std::vector<double> grid = make_nodes(pb.path, n - 1);
-          const std::vector<int> checks(grid.size() - 1, c);
-          prefetch_points(pb, halved(grid), halved_checks(checks), grid, checks, &fine_points);
-        } catch (const std::exception&) {
-        }
-      });
+  SideTask<void> prefetch = prefetch_halved(pb, spec.exact, graded, fine_points);
 
   // exact solver
   report(progress, 0.05, "exact solver (reachability)");
@@ -924,18 +971,18 @@ Result solve_grid(const Spec& spec, const ProgressFn& progress, const GradedGrid
   try {
     grid = graded ? graded->nodes : make_nodes(pb.path, spec.exact.grid_points - 1);
     exact_checks.assign(grid.size() - 1, spec.exact.checks_per_interval);
-    first = solve_exact(pb, grid, exact_checks, &points);
+    first = graded && graded->solution ? *graded->solution  // (solved by the grading)
+                                       : solve_exact(pb, grid, exact_checks, &points);
   } catch (...) {
     if (!path_passed()) return res;  // (the solver met the path's trouble first)
     throw;
   }
   if (!path_passed()) return res;
   SideTask<SideResults> speculative;  // (waited for by its destructor on every way out)
-  if (!refine_exact(pb, spec, grid, exact_checks, points, fine_points, std::move(first), t_exact,
-                    graded, speculative, res))
+  if (!refine_exact(pb, spec, grid, exact_checks, points, fine_points, first, t_exact, graded,
+                    speculative, res))
     return res;
-  // (no reference into res.solvers: it grows below)
-  const double exact_duration = res.solvers.front().duration;
+  const double exact_duration = res.solvers.front().duration;  // (a copy: res.solvers grows)
   // the exact motion and the path's points, while the side thread solves the halved grid
   report(progress, 0.08, "sampling the exact motion");
   sample_exact_motion(pb, res.solvers.front(), std::max(1, spec.motion_steps), &res);
@@ -943,8 +990,8 @@ Result solve_grid(const Spec& spec, const ProgressFn& progress, const GradedGrid
   for (size_t k = 0; k < grid.size(); ++k)
     res.path_p.col(k) = pb.tip(grid[k], k + 1 == grid.size());
   report(progress, 0.1, "exact solver on the refined grid");
-  if (const std::optional<GradedGrid> gg =
-          converge_grid(pb, spec, progress, grid, exact_checks, points, graded, speculative, res))
+  if (const std::optional<GradedGrid> gg = converge_grid(pb, spec, progress, grid, exact_checks,
+                                                         first, points, graded, speculative, res))
     return solve_grid(spec, progress, &*gg);
   res.mvc_s = grid;
 

@@ -18,6 +18,11 @@ struct SolverOutput {
   long evaluations = 0;  ///< DP transitions, Complex objective calls
   int iterations = 0;    ///< Complex reflections (over every restart)
   int restarts = 0;      ///< Complex restarts from its best point
+  /// the exact solver's controllable sets [reach_lo, reach_hi] of s'^2 at its nodes and its
+  /// check points per interval: a later solve on a grid sharing nodes and intervals with it
+  /// takes a set from it instead of computing it again (solve_exact's `previous`)
+  std::vector<double> reach_lo, reach_hi;
+  std::vector<int> reach_checks;
 };
 
 /// Joint points of earlier exact solves of one problem, by s and side, so that a re-solve
@@ -77,8 +82,13 @@ void prefetch_points(const Problem& problem, const std::vector<double>& nodes,
 SolverOutput solve_exact(const Problem& problem, const std::vector<double>& nodes, int checks);
 /// The same with `checks[k]` + 1 points in interval k (one entry per interval, each >= 1):
 /// more of them only where the dense re-check finds a limit overshot.
+/// `previous`, an earlier solve_exact of the same problem: where an interval of `nodes` is one
+/// of its grid's (the same ends and check points) and the set at its end is the one it found
+/// there, the backward pass takes the set at its start from it (the same numbers: the same
+/// rows and the same set give the same set; a grading round's grid is mostly its last one's).
 SolverOutput solve_exact(const Problem& problem, const std::vector<double>& nodes,
-                         const std::vector<int>& checks, ExactPointCache* cache = nullptr);
+                         const std::vector<int>& checks, ExactPointCache* cache = nullptr,
+                         const SolverOutput* previous = nullptr);
 
 /// solve_exact's plain implementation: every row with the tag of its limit, the arrays
 /// allocated per solve, every point from Problem::at. solve_exact gives the same numbers to
