@@ -467,6 +467,9 @@ Located located_on_boundary(Problem& pr, int k, double d) {
   const double s1 = -g1 / c1, s2 = -g2 / c2, s0 = (4 * s1 - s2) / 3;
   // the distance of the best point from the boundary point at f0 (its bisection) counts too
   const double along = std::abs(s0) + std::abs(s1 - s0) + dg / c1;
+  // the Newton step along the boundary (the caller locates again when it gains)
+  ob.restart();
+  ob.energy(f0 + s0);
   const Eigen::Vector2d tangent = (pts[3] - pts[1]) / (2 * d);
   out.u = std::abs(tangent.x()) * along + std::abs(pts[2].x() - b.u);
   out.v = std::abs(tangent.y()) * along + std::abs(pts[2].y() - b.v);
@@ -611,9 +614,13 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
       if (pr.best().u == at.u && pr.best().v == at.v) break;
     }
     if (!std::isfinite(loc.u)) {
+      // on a boundary: the same, along it
       const int k = nearest_constraint(pr, hx);
-      at = pr.best();
-      if (k >= 0) loc = located_on_boundary(pr, k, kStencil);
+      for (int it = 0; it < 4 && k >= 0; ++it) {
+        at = pr.best();
+        loc = located_on_boundary(pr, k, kStencil);
+        if (pr.best().u == at.u && pr.best().v == at.v) break;
+      }
     }
     out.x_s_error = (loc.u + std::abs(pr.best().u - at.u)) * hx;
     out.phi_error = (loc.v + std::abs(pr.best().v - at.v)) * hphi;
