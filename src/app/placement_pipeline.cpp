@@ -325,6 +325,9 @@ Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& 
   o.refinement.target_rel = 1e-7;
   o.refinement.converged = pc.refine_converged;
   o.refinement.evaluations = pc.refine_evaluations;
+  o.refinement.x_s_error_m = pc.x_s_error;
+  o.refinement.phi_error_deg = pc.phi_error / kDeg;
+  o.refinement.energy_error_J = pc.energy_error();
   for (const pl::MarginPoint& m : pc.margin_sensitivity) {
     Section::MarginPoint mp;
     mp.margin_m = m.margin;
@@ -336,6 +339,8 @@ Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& 
       mo.binding = pl::binding_name(m.decision.binding);
       mo.refine_converged = m.refine_converged;
       mo.refine_tolerance_rel = m.refine_tolerance_rel;
+      mo.x_s_error_m = m.x_s_error;
+      mo.phi_error_deg = m.phi_error / kDeg;
       mp.optimum = std::move(mo);
     }
     o.margin_sensitivity.push_back(std::move(mp));

@@ -277,12 +277,24 @@ std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
           range + "). The case's margin is " + format_sig(pl.singularity_margin_m, 3) + " m.");
 }
 
+// a located coordinate with its error, to the digits the error leaves, e.g. "0.4613520 ± 3e-08";
+// `digits` significant digits when the error is not known
+std::string located_text(double value, double error, int digits) {
+  if (!(error > 0) || !std::isfinite(error) || !std::isfinite(value) || value == 0)
+    return format_sig(value, digits);
+  const int known = int(std::ceil(std::log10(std::abs(value) / error))) + 1;
+  return format_sig(value, std::clamp(known, 2, 12)) + " ± " + format_sig(error, 1);
+}
+
 // the refined optimum per program and configuration; `owners` gets each optimum's series
 Table optima_table(const PS& pl, std::vector<SeriesOwner>* owners) {
   Table t;
   t.caption =
       "Refined optimum per motion program and configuration (the grid optimum's "
-      "energy beside it). Root (X, Y) in the frame fixed to the line (4.14); peaks "
+      "energy beside it). The energy's ± is its quadrature's error estimate; x_S's and φ's "
+      "are their distance from the minimum of that converged energy, which the refinement "
+      "minimises (a quadratic fitted around the optimum, with its truncation and the "
+      "quadrature's error). Root (X, Y) in the frame fixed to the line (4.14); peaks "
       "are [joint 1, joint 2].";
   t.header = {"program, configuration",
               "energy (J)",
@@ -296,8 +308,9 @@ Table optima_table(const PS& pl, std::vector<SeriesOwner>* owners) {
               "signed work (J)"};
   for (const auto& o : pl.optima) {
     t.rows.push_back({id_label(o), energy_text(o, 7), format_sig(o.grid_energy_J, 6),
-                      format_sig(o.x_s_m, 6), format_sig(o.phi_deg, 6), pair_str(o.root_xy_m, 5),
-                      format_sig(o.min_abs_sin_elbow, 3), peak_text(o, 4),
+                      located_text(o.x_s_m, o.refinement.x_s_error_m, 6),
+                      located_text(o.phi_deg, o.refinement.phi_error_deg, 6),
+                      pair_str(o.root_xy_m, 5), format_sig(o.min_abs_sin_elbow, 3), peak_text(o, 4),
                       no_peak(o) ? std::string("n/a") : pair_str(o.peak_power_W, 4),
                       format_sig(o.signed_work_J, 3)});
     t.swatches.push_back(css_colour(colour_for(id_key(o))));
@@ -549,7 +562,9 @@ void placement_sections(const PS& pl, const ResultsRecord& record, FigureWriter&
       "excluded from the optimum; the grid optimum is then refined with the constraints as "
       "constraints (NLopt COBYLA with the clearances and limits as inequalities, Nelder-Mead "
       "inside the admissible set, a golden-section search along a nearly active constraint) "
-      "until a restart gains less than 1e-7 relative in energy, and each optimum says which "
+      "first on the sampled energy, then from there on the converged (quadrature) energy, "
+      "until a restart gains less than 1e-7 relative in it; x_S and φ are printed with their "
+      "distance from that energy's minimum, and each optimum says which "
       "constraint decides it. Every printed energy of an optimum or an evaluated placement is "
       "computed by adaptive Gauss-Kronrod quadrature (breakpoints at the closest approach "
       "to the inner circle and at the sign changes of the joint powers) and printed with its "

@@ -218,7 +218,7 @@ Arm2Sample LinePower::sample(double t) const {
 
 namespace {
 // the |.| kinks in [a, b]: sign changes of either joint's power on a scan of n points,
-// bisected to the last bit, appended to `kinks`; false when the power is not finite at a
+// found to 1e-12 of the scan interval, appended to `kinks`; false when the power is not finite at a
 // scanned point
 bool power_kinks(const LinePower& power, double a, double b, int n, int& evaluations,
                  std::vector<double>& kinks) {
@@ -233,15 +233,35 @@ bool power_kinks(const LinePower& power, double a, double b, int n, int& evaluat
       for (int j = 0; j < 2; ++j) {
         const double v0 = j == 0 ? p_prev.p1 : p_prev.p2, v1 = j == 0 ? pk.p1 : pk.p2;
         if (!((v0 < 0 && v1 > 0) || (v0 > 0 && v1 < 0))) continue;
-        double lo = t_prev, hi = t;
-        for (int it = 0; it < 200; ++it) {
-          const double mid = 0.5 * (lo + hi);
+        // the Illinois variant of regula falsi (superlinear, the bracket kept) to 1e-12 of
+        // the interval: a kink misplaced by dt changes the integral by ~ |p'| dt^2
+        double lo = t_prev, hi = t, flo = v0, fhi = v1;
+        int side = 0;
+        for (int it = 0; it < 200 && hi - lo > 1e-12 * (b - a); ++it) {
+          const double secant = (lo * fhi - hi * flo) / (fhi - flo);
+          // every fourth step a bisection: the bracket shrinks however the secant stalls
+          const double mid =
+              it % 4 == 3 || !(secant > lo && secant < hi) ? 0.5 * (lo + hi) : secant;
           if (mid <= lo || mid >= hi) break;
           const JointPowers pm = power.at(mid);
           ++evaluations;
           const double vm = j == 0 ? pm.p1 : pm.p2;
           if (!std::isfinite(vm)) break;
-          ((vm < 0) == (v0 < 0) ? lo : hi) = mid;
+          if (vm == 0) {
+            lo = hi = mid;
+            break;
+          }
+          if ((vm < 0) == (flo < 0)) {
+            lo = mid;
+            flo = vm;
+            if (side == -1) fhi *= 0.5;
+            side = -1;
+          } else {
+            hi = mid;
+            fhi = vm;
+            if (side == 1) flo *= 0.5;
+            side = 1;
+          }
         }
         kinks.push_back(0.5 * (lo + hi));
       }

@@ -15,6 +15,24 @@
 /// The recorded final tolerance is the larger of the relative energy the restart still
 /// gains and the decrease the last fitted quadratic still predicts (interior); the stages
 /// repeat (at most 3 rounds) until it is below 1e-7.
+///
+/// The stages run twice: first on the energy of the sampled motion (the trapezoid on the
+/// table's samples: cheap, but its |power| kinks crossing samples leave a ripple with local
+/// minima ~5e-6 relative apart, and its own O(h^2) error moves the optimum by up to 1e-5
+/// relative), then from the point found on the converged energy, the adaptive quadrature of
+/// quadrature.hpp asked for 1e-11: Nelder-Mead (at an interior point), the quadratic polish,
+/// the boundary search (+-0.1 scaled, to 1e-10) and the COBYLA restart; the limits stay the
+/// sampled peaks at the table's samples. The final tolerance is the second pass's.
+///
+/// The optimum's location error (x_s_error, phi_error) is its distance from the minimum of
+/// the converged energy: at an interior optimum, the Newton step to the minimum of the
+/// quadratic fitted on a 3 x 3 stencil, extrapolated from spacings d = 3e-4 and 2 d (scaled)
+/// to d -> 0, plus its truncation (the spacing-d step's change from the extrapolated one),
+/// plus the objective's noise e moved through the fit (gradient error e / d times the
+/// inverse curvature); e is twice the quadrature's change when asked for 100 times less
+/// error, plus 1e-15 of the energy. On a boundary the same along it (5 points on g = 0),
+/// carried to (x_s, phi) by the boundary's tangent; at a corner of the admissible set the
+/// constraints fix the point (1e-12 scaled).
 
 #include <cstdint>
 #include <limits>
@@ -42,7 +60,13 @@ struct Refinement {
   double target_rel = 1e-7;  ///< converged when tolerance_rel <= target_rel
   bool converged = false;
   int evaluations = 0;  ///< energy evaluations (table.size() samples each)
+  int quadratures = 0;  ///< of those, by the adaptive quadrature (the second pass)
   int rounds = 0;
+  /// m and rad: the distance of `best` from the minimum of the converged energy (see above;
+  /// NaN when no quadratic could be fitted)
+  double x_s_error = std::numeric_limits<double>::quiet_NaN();
+  double phi_error = std::numeric_limits<double>::quiet_NaN();
+  double objective_error = std::numeric_limits<double>::quiet_NaN();  ///< J, at best
 };
 
 /// Refines `start` (an admissible candidate of the sweep) in a box of +-4 (hx, hphi) around

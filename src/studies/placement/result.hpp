@@ -102,6 +102,10 @@ struct MarginPoint {
   Decision decision;
   bool refine_converged = false;
   double refine_tolerance_rel = 0;
+  /// m, rad: the optimum's distance from the minimum of the converged energy at this margin
+  /// (refine.hpp; NaN: not refined)
+  double x_s_error = std::numeric_limits<double>::quiet_NaN();
+  double phi_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Where the arm and the line are, for a renderer: everything in the arm's frame A.
@@ -164,7 +168,19 @@ struct ProgramConfig {
   std::string refine_method;        ///< the refinement's stages ("" when not refined)
   double refine_tolerance_rel = 0;  ///< relative energy a final restart still gained
   bool refine_converged = false;    ///< refine_tolerance_rel <= 1e-7
-  Decision decision;                ///< what decides the refined optimum
+  /// m, rad: the refined optimum's distance from the minimum of the converged energy
+  /// (refine.hpp; NaN: not refined, or no quadratic could be fitted)
+  double x_s_error = std::numeric_limits<double>::quiet_NaN();
+  double phi_error = std::numeric_limits<double>::quiet_NaN();
+  /// J: how far the printed energy may lie from the least converged energy, the refined
+  /// optimum's quadrature error plus refine_tolerance_rel times its energy (NaN: not refined,
+  /// or its energy withheld)
+  double energy_error() const {
+    if (refine_method.empty() || refined.convergence.energy_withheld())
+      return std::numeric_limits<double>::quiet_NaN();
+    return refined.convergence.energy_error + refine_tolerance_rel * refined.convergence.energy;
+  }
+  Decision decision;  ///< what decides the refined optimum
   /// the optimum re-solved at a range of margins (when a clearance binds), by margin
   std::vector<MarginPoint> margin_sensitivity;
   Placement placement;  ///< of the refined optimum

@@ -96,6 +96,7 @@ struct ResultsSection {
     double final_tolerance_rel = 0, target_rel = 0;
     bool converged = false;
     int evaluations = 0;
+    double x_s_error_m = 0, phi_error_deg = 0, energy_error_J = 0;
   };
   struct MarginOptimum : Metrics {
     double x_s_m = 0, phi_deg = 0;
@@ -103,6 +104,7 @@ struct ResultsSection {
     std::string binding;
     bool refine_converged = false;
     double refine_tolerance_rel = 0;
+    double x_s_error_m = 0, phi_error_deg = 0;
   };
   struct MarginPoint {
     double margin_m = 0;
@@ -332,6 +334,13 @@ void fields(V& v, ResultsSection::Refinement& x) {
   v("target_rel", x.target_rel, "the relative gain below which the refinement is converged");
   v("converged", x.converged, "final_tolerance_rel <= target_rel");
   v("evaluations", x.evaluations, "energy evaluations of the refinement");
+  v("x_s_error_m", x.x_s_error_m,
+    "error of x_s_m: its distance from the minimum of the converged energy (quadratic fit "
+    "with its truncation and the quadrature's error; null: not refined or no fit)");
+  v("phi_error_deg", x.phi_error_deg, "error of phi_deg, the same");
+  v("energy_error_J", x.energy_error_J,
+    "how far energy_J may lie from the least converged energy: its quadrature error plus "
+    "final_tolerance_rel times the energy (null: not refined)");
 }
 template <class V>
 void fields(V& v, ResultsSection::MarginOptimum& x) {
@@ -343,6 +352,10 @@ void fields(V& v, ResultsSection::MarginOptimum& x) {
   v("refine_converged", x.refine_converged, "the refinement converged (when found)");
   v("refine_tolerance_rel", x.refine_tolerance_rel,
     "relative gain of the last restart (when found)");
+  v("x_s_error_m", x.x_s_error_m,
+    "error of x_s_m: its distance from the minimum of the converged energy at this margin "
+    "(when found; null: not refined)");
+  v("phi_error_deg", x.phi_error_deg, "error of phi_deg, the same (when found)");
 }
 template <class V>
 void fields(V& v, ResultsSection::MarginPoint& x) {
