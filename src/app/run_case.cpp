@@ -142,20 +142,27 @@ void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::pa
 
 namespace {
 
-// the manifests the animations left beside their files (scene/animation.hpp), sorted by
-// name, into results.json "animations"; the manifests themselves go
-std::vector<report::AnimationRecord> collect_animations(const fs::path& dir) {
-  std::vector<fs::path> found;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().ends_with(".anim.json")) found.push_back(e.path());
-  std::sort(found.begin(), found.end());
+// the render step's animations (scene/rendered.hpp) as results.json "animations", sorted by
+// name
+std::vector<report::AnimationRecord> animation_records(std::vector<scene::Animation> animations) {
+  std::sort(animations.begin(), animations.end(),
+            [](const scene::Animation& a, const scene::Animation& b) { return a.name < b.name; });
   std::vector<report::AnimationRecord> out;
-  for (const fs::path& p : found) {
-    std::ifstream in(p);
-    out.push_back(report::from_json<report::AnimationRecord>(
-        nlohmann::json::parse(in), "/animations/" + std::to_string(out.size())));
-    in.close();
-    fs::remove(p);
+  for (const scene::Animation& a : animations) {
+    report::AnimationRecord& r = out.emplace_back();
+    r.name = a.name;
+    r.title = a.title;
+    r.sprite = a.sprite;
+    r.still = a.still;
+    if (!a.video.empty()) r.video = a.video;
+    r.frames = a.frames;
+    r.columns = a.columns;
+    r.frame_width_px = a.frame_width;
+    r.frame_height_px = a.frame_height;
+    r.fps = a.fps;
+    r.duration_s = a.duration_s;
+    r.video_duration_s = a.frames / a.fps;
+    if (!a.note.empty()) r.note = a.note;
   }
   return out;
 }
@@ -241,35 +248,26 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
         r.key_figures.push_back({k.name, k.value, k.unit, k.label.empty() ? k.name : k.label});
     // what decides whether a later run may keep this output (main.cpp, already_done)
     r.run_options.render = options.render;
-    // every video of this case encoded (or failed) before its folder is used or removed,
-    // on every path out of here (scene/animation.hpp)
-    struct WaitForVideos {
-      ~WaitForVideos() {
-        try {
-          scene::finish_animations();
-        } catch (...) {  // (the error path: the case fails for its own reason)
-        }
-      }
-    } wait_for_videos;
     // the sensitivity part: the case re-solved at each key's steps (no rendering)
     if (status == studies::Status::kSolved && options.sensitivity && !c.info.sensitivity.empty()) {
       scene::PhaseScope phase("sensitivity");
       r.sensitivity = run_sensitivity(c, progress, 0.975, 0.99);  // after the studies' 0.97
     }
-    // render and report only what was solved
+    // render and report only what was solved; the animations' videos encode while the case
+    // goes on, and every one is done before the folder is used or removed, on every path out
+    // of here (a pending animation waits for its video when it goes: scene/rendered.hpp)
+    scene::Rendered rendered;
     if (status == studies::Status::kSolved && options.render) {
       if (progress) progress(0.99, "rendering");
       scene::PhaseScope phase("render");
-      r.frames = c.run->render(tmp_dir, c.info);
+      rendered = c.run->render(tmp_dir, c.info);
+      r.frames = std::move(rendered.frames);
     }
     // files other tools open (model.xml, motion CSVs), listed under "files" as well
     std::optional<scene::PhaseScope> exports_phase(std::in_place, "exports");
-    if (status == studies::Status::kSolved)
-      r.exports = report::from_json<std::vector<report::ExportRecord>>(
-          c.run->write_exports(tmp_dir, c.info), "/exports");
+    if (status == studies::Status::kSolved) r.exports = c.run->write_exports(tmp_dir, c.info);
     exports_phase.reset();
-    scene::finish_animations();  // the videos encoded while the case went on
-    r.animations = collect_animations(tmp_dir);
+    r.animations = animation_records(scene::finish_animations(rendered.animations));
     if (!r.frames.empty()) set_gl_provenance(r);
     nlohmann::json j = report::write_record(r);
     j[c.info.study] = section;
