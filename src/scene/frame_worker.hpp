@@ -19,6 +19,9 @@
 #include "scene/renderer.hpp"
 
 namespace armstudy::scene {
+namespace frame_wire {
+struct Packed;  // scene/frame_messages.hpp
+}  // namespace frame_wire
 
 /// One frame asked of a worker: the model's state and the labels.
 struct WorkerPose {
@@ -70,7 +73,7 @@ class FrameWorker {
   void load(const ArmScene& scene, const std::string& source, const RenderSettings& settings,
             bool warm);
   bool read_loads(bool* timed_out);
-  void send_bytes(const std::string& bytes);
+  void send_message(const frame_wire::Packed& message);
   int fd_ = -1;
   int pid_ = -1;
   int loads_pending_ = 0;   // answers to load() not read yet
