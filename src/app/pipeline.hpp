@@ -15,7 +15,7 @@
 #include "cases/yaml_reader.hpp"
 #include "report/case_report.hpp"
 #include "report/results_record.hpp"
-#include "scene/animation.hpp"
+#include "scene/rendered.hpp"
 #include "studies/common.hpp"
 
 namespace armstudy::report {

@@ -5,7 +5,8 @@
 /// process has a rasteriser of its own. The helper is the program armstudy-frames
 /// (src/cli/frame_worker_main.cpp), spoken to over a socket: the scene once, then poses
 /// (MuJoCo's qpos and qvel, already mapped from the chain) and their labels; it answers
-/// each with the frame's pixels. A frame is a function of its pose alone, so the helper's
+/// each with the frame's pixels (the messages, each one typed struct and one field list:
+/// scene/frame_messages.hpp). A frame is a function of its pose alone, so the helper's
 /// frames are the parent's byte for byte on one machine (tests/scene/frame_worker_test.cpp).
 
 #include <memory>
