@@ -4,6 +4,7 @@
 /// CLI, the report and merge know nothing else about studies.
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -86,8 +87,7 @@ class StudyRun {
 
 /// A study's sections of its case page, built from the whole results.json (the study's
 /// typed section read back from results[study]; report/study_sections.hpp).
-using ReportSections = void (*)(const nlohmann::json& results, report::FigureWriter& figures,
-                                report::CasePage& page);
+using ReportSections = report::StudySections;
 
 /// One study kind, the one record of it the registry holds (nothing else dispatches on the
 /// study name): its name, its loader (which returns the StudyRun: solver, checks, key
@@ -99,7 +99,7 @@ using ReportSections = void (*)(const nlohmann::json& results, report::FigureWri
 struct StudyEntry {
   using Loader = std::unique_ptr<StudyRun> (*)(cases::Map& root, const cases::CaseInfo& info);
   using SectionSchema = nlohmann::json (*)();
-  using SectionCheck = void (*)(const nlohmann::json& results);
+  using SectionCheck = std::function<void(const nlohmann::json& results)>;
 
   /// @throws std::invalid_argument when a required part is missing.
   StudyEntry(std::string_view study, std::string_view summary, Loader load, SectionSchema schema,

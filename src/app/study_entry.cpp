@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace armstudy::app {
 
@@ -12,9 +13,9 @@ StudyEntry::StudyEntry(std::string_view study_, std::string_view summary_, Loade
       summary(summary_),
       load(load_),
       section_schema(schema_),
-      check_section(check_),
-      report(report_),
-      answer(answer_),
+      check_section(std::move(check_)),
+      report(std::move(report_)),
+      answer(std::move(answer_)),
       index_figure(index_figure_) {
   const char* missing = !load             ? "a loader"
                         : !section_schema ? "a results.json schema"

@@ -4,6 +4,7 @@
 
 #include "app/pipeline.hpp"
 #include "report/results_fields.hpp"
+#include "report/results_record.hpp"
 
 namespace armstudy::app {
 
@@ -24,17 +25,41 @@ class TypedStudyRun : public StudyRun {
   Result result_;
 };
 
+/// A study's own sections of its case page, from its typed results.json section (read once
+/// from results[study] by study_entry) and the shared record (frames, checks).
+template <class Section>
+using TypedSections = void (*)(const Section& section, const report::ResultsRecord& record,
+                               report::FigureWriter& figures, report::CasePage& page);
+/// A study's lines of its answer box, from its typed section and the shared record.
+template <class Section>
+using TypedAnswer = void (*)(const Section& section, const report::ResultsRecord& record,
+                             report::AnswerBox& box);
+
 /// The record of `study`, whose results.json section is `Section` (its answer-box lines and
-/// index figure optional).
+/// index figure optional). The study name is spelled here once: the section's schema, its
+/// strict reader and the report parts' typed section all read results[study].
 template <class Section>
 StudyEntry study_entry(std::string_view study, std::string_view summary, StudyEntry::Loader load,
-                       ReportSections report, report::StudyAnswer answer = nullptr,
+                       TypedSections<Section> sections, TypedAnswer<Section> answer = nullptr,
                        report::IndexFigure index_figure = {}) {
-  static const std::string name(study);
+  const std::string name(study);
+  ReportSections report;
+  if (sections)
+    report = [name, sections](const nlohmann::json& results, report::FigureWriter& figures,
+                              report::CasePage& page) {
+      sections(report::read_section<Section>(results, name), report::read_record(results), figures,
+               page);
+    };
+  report::StudyAnswer lines;
+  if (answer)
+    lines = [name, answer](const nlohmann::json& results, const report::ResultsRecord& record,
+                           report::AnswerBox& box) {
+      answer(report::read_section<Section>(results, name), record, box);
+    };
   return StudyEntry(
       study, summary, load, [] { return report::json_schema<Section>(); },
-      [](const nlohmann::json& results) { (void)report::read_section<Section>(results, name); },
-      report, answer, index_figure);
+      [name](const nlohmann::json& results) { (void)report::read_section<Section>(results, name); },
+      std::move(report), std::move(lines), index_figure);
 }
 
 }  // namespace armstudy::app

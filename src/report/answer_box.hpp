@@ -5,6 +5,7 @@
 /// is silent. Everything is read from results.json; nothing is computed anew but counts
 /// and shares of samples.
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,8 +37,9 @@ struct AnswerBox {
 /// from its typed section of `results`; it may name its key picture (one of record.frames),
 /// else the box takes the first locus, else the first strip.
 /// @throws ResultsError when results[study] is not the study's section.
-using StudyAnswer = void (*)(const nlohmann::json& results, const ResultsRecord& record,
-                             AnswerBox& box);
+/// (app::study_entry reads the section once and hands it to the study's typed function.)
+using StudyAnswer =
+    std::function<void(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box)>;
 
 /// The answer box of a case from its results.json (read_record, report/results_record.hpp),
 /// with the lines of `study` (none when null); `page` supplies the key figures and, when no

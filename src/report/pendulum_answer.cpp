@@ -8,8 +8,8 @@
 
 namespace armstudy::report {
 
-void pendulum_answer(const nlohmann::json& results, const ResultsRecord&, AnswerBox& a) {
-  const auto pe = read_section<studies::PendulumResultsSection>(results, "pendulum");
+void pendulum_answer(const studies::PendulumResultsSection& pe, const ResultsRecord&,
+                     AnswerBox& a) {
   a.binding.push_back(
       "no optimum: a free swing of the passive tray and ball, checked by the "
       "conservation of its mechanical energy (drift " +

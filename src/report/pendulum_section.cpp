@@ -192,8 +192,7 @@ Section motion_section(const PR& p, FigureWriter& figures) {
 
 }  // namespace
 
-void pendulum_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const auto p = read_section<PR>(results, "pendulum");
+void pendulum_sections(const PR& p, const ResultsRecord&, FigureWriter& figures, CasePage& page) {
   page.sections.push_back(method_section(p));
   page.sections.push_back(energy_section(p, figures));
   page.sections.push_back(motion_section(p, figures));

@@ -72,8 +72,7 @@ std::string placement_also_active(
   return out.empty() ? "" : "; also active: " + out;
 }
 
-void placement_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& a) {
-  const auto pl = read_section<PS>(results, "placement");
+void placement_answer(const PS& pl, const ResultsRecord& record, AnswerBox& a) {
   // optima decided alike share one line: "cycloidal 1, poly345 1: ..."
   GroupedLines decided;
   for (const auto& o : pl.optima)

@@ -530,9 +530,8 @@ Section convergence_and_evaluations(const PS& pl) {
 
 }  // namespace
 
-void placement_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const auto pl = read_section<PS>(results, "placement");
-
+void placement_sections(const PS& pl, const ResultsRecord& record, FigureWriter& figures,
+                        CasePage& page) {
   Section method;
   method.id = "method";
   method.heading = "Method";
@@ -578,7 +577,7 @@ void placement_sections(const json& results, FigureWriter& figures, CasePage& pa
   // MuJoCo's open-loop replay of every optimum (report/replay_section.hpp)
   std::vector<ReplayOf> replays;
   for (const auto& r : pl.mujoco_replay) replays.push_back({r.program, r.configuration, &r});
-  mujoco_replay_section(replays, read_record(results).frames, figures, page);
+  mujoco_replay_section(replays, record.frames, figures, page);
 }
 
 // (over 60 lines, kept whole: one figure's series gathered and drawn in order)

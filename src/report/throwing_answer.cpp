@@ -21,8 +21,8 @@ std::string constraint_words(const std::string& c) {
 
 }  // namespace
 
-void throwing_answer(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& a) {
-  const auto th = read_section<studies::ThrowingResultsSection>(results, "throwing");
+void throwing_answer(const studies::ThrowingResultsSection& th, const ResultsRecord& record,
+                     AnswerBox& a) {
   if (th.run)
     for (const auto& row : th.run->comparison) {
       std::string b;

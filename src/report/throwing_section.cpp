@@ -553,8 +553,8 @@ Section contact_section(const Page& p, FigureWriter& figures) {
 
 }  // namespace
 
-void throwing_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const auto section = read_section<TS>(results, "throwing");
+void throwing_sections(const TS& section, const ResultsRecord&, FigureWriter& figures,
+                       CasePage& page) {
   static const TS::Optimised kNotRun{};
   // the optimisers' part: empty when the study stopped before them (nothing below is drawn)
   const bool ran = section.run.has_value();

@@ -13,9 +13,9 @@
 
 namespace armstudy::report {
 
-void time_optimal_answer(const nlohmann::json& results, const ResultsRecord&, AnswerBox& a) {
+void time_optimal_answer(const studies::time_optimal::ResultsSection& to, const ResultsRecord&,
+                         AnswerBox& a) {
   using TO = studies::time_optimal::ResultsSection;
-  const auto to = read_section<TO>(results, "time_optimal");
   if (!to.solvers.empty()) {
     static const TO::Samples none;
     const TO::Samples& s = to.solvers[0].samples ? *to.solvers[0].samples : none;

@@ -330,15 +330,15 @@ Section convergence_section(const Section_& to) {
   return conv;
 }
 
-void time_optimal_sections(const json& results, FigureWriter& figures, CasePage& page) {
-  const auto to = read_section<Section_>(results, "time_optimal");
+void time_optimal_sections(const Section_& to, const ResultsRecord& record, FigureWriter& figures,
+                           CasePage& page) {
   page.sections.push_back(method_section(to));
   page.sections.push_back(solvers_section(to, figures));
   page.sections.push_back(limits_section(to, figures));
   page.sections.push_back(convergence_section(to));
   std::vector<ReplayOf> replays;
   if (to.mujoco_replay) replays.push_back({"", 0, &*to.mujoco_replay});
-  mujoco_replay_section(replays, read_record(results).frames, figures, page);
+  mujoco_replay_section(replays, record.frames, figures, page);
 }
 
 }  // namespace armstudy::report

@@ -81,8 +81,8 @@ std::unique_ptr<StudyRun> load_tally(cases::Map& root, const cases::CaseInfo&) {
 }
 
 // src/report/<study>_section.cpp: the study's sections, from its typed section
-void tally_sections(const json& results, report::FigureWriter&, report::CasePage& page) {
-  const auto s = report::read_section<TallySection>(results, "tally");
+void tally_sections(const TallySection& s, const report::ResultsRecord&, report::FigureWriter&,
+                    report::CasePage& page) {
   report::Section sec;
   sec.id = "tally";
   sec.heading = "The tally";
@@ -91,9 +91,8 @@ void tally_sections(const json& results, report::FigureWriter&, report::CasePage
 }
 
 // src/report/<study>_answer.cpp (optional): its lines of the answer box on page 1
-void tally_answer(const json& results, const report::ResultsRecord&, report::AnswerBox& a) {
-  a.binding.push_back("nothing binds a count to " +
-                      std::to_string(report::read_section<TallySection>(results, "tally").n));
+void tally_answer(const TallySection& s, const report::ResultsRecord&, report::AnswerBox& a) {
+  a.binding.push_back("nothing binds a count to " + std::to_string(s.n));
 }
 
 // src/app/study_registry.cpp: its one line (the answer lines and the index figure optional)

@@ -6,7 +6,7 @@
 #    expected-unsolvable placement-example-1, is valid against junit.xsd (xmllint), and a
 #    junit.xml with a misnamed element is not;
 #  - every motion CSV reads with Python's csv module: the header is results.json's
-#    `columns`, each column `name [unit]` with the unit its quantity has (docs/running.md),
+#    `columns`, each column `name [unit]` with the unit its quantity has (docs/cli.md),
 #    as many rows as `rows`, every field a finite number, time from 0 increasing;
 #  - every model.xml passes MuJoCo's own tools (Debian's libmujoco-samples): testxml (load,
 #    save, reload, compare: the saved copy reloads and differs by less than 1e-4, or only
@@ -151,7 +151,7 @@ python3 - "$work/out" "$work" <<'PY'
 import csv, json, math, os, re, sys
 
 out, work = sys.argv[1], sys.argv[2]
-# the unit of each quantity a motion CSV may hold (docs/running.md: time, q, q', q'',
+# the unit of each quantity a motion CSV may hold (docs/cli.md: time, q, q', q'',
 # torques, motor voltages and currents, powers, energy, tip and ball positions, forces; the
 # path parameter s is a length along a tip path, an angle along a joint-space path)
 UNITS = [(r"t", "s"), (r"s", ("m", "rad")), (r"sd", ("m/s", "rad/s")),

@@ -42,7 +42,7 @@ dpkg-deb -x "$deb" "$root"
 for f in bin/armstudy bin/armstudy-frames share/armstudy/templates/case.html \
   share/armstudy/templates/index.html share/armstudy/templates/report.css \
   share/armstudy/results.schema.json share/armstudy/junit.xsd share/doc/armstudy/README.md \
-  share/doc/armstudy/docs/running.md share/doc/armstudy/docs/install.md \
+  share/doc/armstudy/docs/cli.md share/doc/armstudy/docs/install.md \
   share/doc/armstudy/examples/cases/placement-example-2.yaml \
   share/bash-completion/completions/armstudy share/man/man1/armstudy.1; do
   [ -f "$root/usr/$f" ] || fail "the package has no /usr/$f"

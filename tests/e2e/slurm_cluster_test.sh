@@ -2,13 +2,13 @@
 # A real one-node Slurm cluster (Debian's slurm-wlm and munge) started by this test, with
 # every file it writes in one temporary folder: a throw-away munge key and munged, a
 # generated slurm.conf for this host (2 CPUs, so an array of 6 tasks queues), slurmctld and
-# slurmd. The commands of docs/ci.md submit examples/slurm/sweep.sbatch as a job array over the
+# slurmd. The commands of docs/scale-out.md submit examples/slurm/sweep.sbatch as a job array over the
 # tests' 24-case sweep and examples/slurm/merge.sbatch with --dependency=afterok:
 #  1. as they are: the merge waits for the whole array; its tables equal an unsharded run;
 #  2. one task is re-queued while it runs (scontrol requeue, as a pre-emption does): the
 #     merge still waits for it, the re-run skips the cases it had finished; tables equal;
 #  3. one task is cancelled (scancel) while it runs and then re-queued: Slurm 22.05 then
-#     never fulfils afterok on the array (DependencyNeverSatisfied, as docs/ci.md says), so
+#     never fulfils afterok on the array (DependencyNeverSatisfied, as docs/scale-out.md says), so
 #     the merge is pointed at the re-queued task (scontrol update), and the tables equal.
 # The daemons are stopped and the folder removed on every exit path; a check fails the
 # test if a Slurm or munge file appeared outside it. Prints the overhead against a local run.
@@ -189,7 +189,7 @@ check_rerun() {
   echo "  its second run skipped the $skipped case(s) the first had finished and ran the rest"
 }
 
-submit() {  # submit OUT TASKS: the two sbatch lines of docs/ci.md; sets jid and mid
+submit() {  # submit OUT TASKS: the two sbatch lines of docs/scale-out.md; sets jid and mid
   jid=$(sbatch --parsable --array=0-$(($2 - 1)) --cpus-per-task=1 \
     "$src/examples/slurm/sweep.sbatch" sweep-cases "$1")
   mid=$(sbatch --parsable --dependency=afterok:"$jid" "$src/examples/slurm/merge.sbatch" "$1")
@@ -198,7 +198,7 @@ submit() {  # submit OUT TASKS: the two sbatch lines of docs/ci.md; sets jid and
 cd "$work"
 export ARMSTUDY=$armstudy
 
-# --- 1. docs/ci.md's commands as they are ---------------------------------------------
+# --- 1. docs/scale-out.md's commands as they are ---------------------------------------------
 t0=$(now)
 submit out-1 "$tasks"
 [ "$(state "$mid")" = PENDING ] || fail "the merge job did not wait: $(state "$mid")"

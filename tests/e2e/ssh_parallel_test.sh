@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# GNU Parallel over ssh, as docs/ci.md tells a lab to run a sweep on its machines: an sshd
+# GNU Parallel over ssh, as docs/scale-out.md tells a lab to run a sweep on its machines: an sshd
 # started by this test on a loopback port (openssh-server; throw-away host and user keys
 # made here; config, keys and logs in one temporary folder) stands for a lab machine that
-# shares the output folder at the same path (as over NFS). The line of docs/ci.md
+# shares the output folder at the same path (as over NFS). The line of docs/scale-out.md
 #   parallel --sshlogin 2/NODE --workdir "$PWD" armstudy run sweep-cases ... --shard {}/4 ::: 0 1 2 3
 # runs the tests' 24-case sweep through it; every shard must have gone over ssh, and
 # the merged tables must equal an unsharded local run byte for byte. The daemon is stopped

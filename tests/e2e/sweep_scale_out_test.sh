@@ -75,7 +75,7 @@ left=$(find "$work/sharded" -maxdepth 1 -name ".armstudy-*" | wc -l)
 [ "$left" -eq 0 ] || fail "$left scratch folder(s) of the killed shard remain after the re-run"
 echo "killed shard left $leftovers scratch folder(s) and finished $skipped case(s); the re-run cleaned them and ran the rest"
 
-# (c) GNU Parallel, 2 jobs on this machine (the one-liner of docs/ci.md)
+# (c) GNU Parallel, 2 jobs on this machine (the one-liner of docs/scale-out.md)
 parallel -j2 "$armstudy" run "$work/cases" --no-render --out "$work/par" --shard {}/2 ::: 0 1 2>"$work/par.log" ||
   { grep -v '^done:\|^  ' "$work/par.log" | tail -20; fail "GNU Parallel run"; }
 "$armstudy" merge "$work/par" 2>"$work/par-merge.log" || { cat "$work/par-merge.log"; fail "merge of the GNU Parallel run"; }

@@ -7,6 +7,7 @@
 
 #include <regex>
 
+#include "app/pipeline.hpp"
 #include "report/animation_view.hpp"
 #include "report/page.hpp"
 #include "report/results_record.hpp"
@@ -17,6 +18,9 @@
 namespace armstudy::report {
 namespace {
 using nlohmann::json;
+
+// a study's answer-box lines as its registry record holds them (the typed section read once)
+StudyAnswer registered_answer(const std::string& study) { return app::find_study(study)->answer; }
 
 // a results.json as run_case writes it: the shared record and the study's typed section
 json results_of(const std::string& study, const json& section, std::vector<CheckRecord> checks,
@@ -62,16 +66,19 @@ json placement_results(bool failed_check) {
 }
 
 TEST(AnswerBox, VerdictCountsTheChecksAndNamesTheFailedOnesInWords) {
-  const AnswerBox ok = answer_box(placement_results(false), CasePage{}, &placement_answer);
+  const AnswerBox ok =
+      answer_box(placement_results(false), CasePage{}, registered_answer("placement"));
   EXPECT_TRUE(ok.verdict_ok);
   EXPECT_EQ(ok.verdict, "All 2 checks passed.");
-  const AnswerBox bad = answer_box(placement_results(true), CasePage{}, &placement_answer);
+  const AnswerBox bad =
+      answer_box(placement_results(true), CasePage{}, registered_answer("placement"));
   EXPECT_FALSE(bad.verdict_ok);
   EXPECT_EQ(bad.verdict, "1 of 2 checks FAILED: MuJoCo dynamic replay, poly345, 1.");
 }
 
 TEST(AnswerBox, KeyPictureIsTheLocusOfTheOptimumOfLeastEnergyAndBindingFollowsTheStudy) {
-  const AnswerBox a = answer_box(placement_results(false), CasePage{}, &placement_answer);
+  const AnswerBox a =
+      answer_box(placement_results(false), CasePage{}, registered_answer("placement"));
   EXPECT_EQ(a.picture, "placement_poly345_c1_locus.png");
   EXPECT_EQ(a.sentence, "least energy 3.5 J (poly345, configuration 1)");
   ASSERT_EQ(a.binding.size(), 2u);
@@ -92,7 +99,7 @@ TEST(AnswerBox, WithoutFramesThePageFirstFigureIsThePicture) {
   Section s;
   s.figure({"fig01_map.svg", "the energy map"});
   page.sections.push_back(s);
-  const AnswerBox a = answer_box(r, page, &placement_answer);
+  const AnswerBox a = answer_box(r, page, registered_answer("placement"));
   EXPECT_EQ(a.picture, "fig01_map.svg");
   EXPECT_EQ(a.picture_caption, page.sections[0].blocks[0].figure.caption);
 }
@@ -102,7 +109,7 @@ TEST(AnswerBox, AMisspeltKeyIsAnErrorNamingItNotAnEmptyBox) {
   r["checks"][0]["pased"] = r["checks"][0]["passed"];
   r["checks"][0].erase("passed");
   try {
-    answer_box(r, CasePage{}, &placement_answer);
+    answer_box(r, CasePage{}, registered_answer("placement"));
     FAIL() << "expected a ResultsError";
   } catch (const ResultsError& e) {
     EXPECT_EQ(e.path(), "/checks/0/pased");
@@ -110,7 +117,7 @@ TEST(AnswerBox, AMisspeltKeyIsAnErrorNamingItNotAnEmptyBox) {
   }
   json s = placement_results(false);
   s["placement"]["optima"][0]["decided_by"]["bindng"] = "interior";
-  EXPECT_THROW(answer_box(s, CasePage{}, &placement_answer), ResultsError);
+  EXPECT_THROW(answer_box(s, CasePage{}, registered_answer("placement")), ResultsError);
 }
 
 TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
@@ -125,8 +132,8 @@ TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
   exact.samples->qd_rad_s = {{0.5, 1.0, 1.0, 0.2}, {0, 0, 0, 2.0}};  // one row per joint
   exact.samples->tau_Nm = {{10, 1, 1, 1}, {0, 0, 0, 0}};
   to.solvers = {exact};
-  const AnswerBox a =
-      answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{}, &time_optimal_answer);
+  const AnswerBox a = answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{},
+                                 registered_answer("time_optimal"));
   ASSERT_EQ(a.binding.size(), 3u);
   EXPECT_NE(a.binding[0].find("velocity of joint 1 limit binds at 50 %"), std::string::npos)
       << a.binding[0];
