@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/exports_json.hpp"
+#include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "app/study_entry.hpp"
@@ -99,8 +99,9 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
   }
 
   // model.xml (the frames' scene, keyframes at the snapshots) and the motion as CSV
-  json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
-    json out = json::array();
+  std::vector<report::ExportRecord> write_exports(const std::filesystem::path& dir,
+                                                  const cases::CaseInfo& info) override {
+    std::vector<report::ExportRecord> out;
     if (result_.status != studies::Status::kSolved || result_.t.empty()) return out;
     const core::PlanarChain chain = studies::make_tray_arm(spec_.arm);
     const scene::ArmScene sc = scene::pendulum_scene(spec_, result_, info.render);
@@ -134,8 +135,7 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
   }
 
   // frames: snapshots every snapshot_step, strip and locus (src/scene)
-  std::vector<std::string> render(const std::filesystem::path& dir,
-                                  const cases::CaseInfo& info) override {
+  scene::Rendered render(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
     return scene::render_pendulum_frames(spec_, result_, info.render, dir);
   }
 };

@@ -15,6 +15,8 @@
 #include "cases/case_info.hpp"
 #include "cases/yaml_reader.hpp"
 #include "report/case_report.hpp"
+#include "report/results_record.hpp"
+#include "scene/rendered.hpp"
 #include "studies/common.hpp"
 
 namespace armstudy::report {
@@ -48,18 +50,19 @@ class StudyRun {
   /// The few numbers a reader compares across cases (summary tables, sweep tables),
   /// e.g. {"energy_J[cycloidal,1]", 12.3, "J"}. Written to results.json "key_figures".
   virtual std::vector<KeyFigure> key_figures() const { return {}; }
-  /// Renders frames into `dir`; returns the file names written (relative to dir).
+  /// Renders frames and animations into `dir`; returns the frames' file names (relative to
+  /// dir) and the animations, whose videos may still be encoding (scene/animation.hpp).
   /// @throws scene::SceneError when MuJoCo or OSMesa fails.
-  virtual std::vector<std::string> render(const std::filesystem::path& dir,
-                                          const cases::CaseInfo& info) {
+  virtual scene::Rendered render(const std::filesystem::path& dir, const cases::CaseInfo& info) {
     return {};
   }
   /// Writes the files other tools open into `dir` (model.xml, one motion CSV per solver or
-  /// optimiser) and returns results.json's "exports" entry: one object per file naming what
-  /// it holds. Called when the study is solved, with or without rendering, before the report.
-  virtual nlohmann::json write_exports(const std::filesystem::path& dir,
-                                       const cases::CaseInfo& info) {
-    return nlohmann::json::array();
+  /// optimiser) and returns their records, results.json's "exports": one per file naming
+  /// what it holds. Called when the study is solved, with or without rendering, before the
+  /// report.
+  virtual std::vector<report::ExportRecord> write_exports(const std::filesystem::path& dir,
+                                                          const cases::CaseInfo& info) {
+    return {};
   }
 
   // what a sensitivity part (app/sensitivity.hpp) asks of a solved study

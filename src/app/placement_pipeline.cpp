@@ -8,7 +8,7 @@
 #include <limits>
 #include <optional>
 
-#include "app/exports_json.hpp"
+#include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "app/replay_json.hpp"
@@ -188,9 +188,9 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
 
   // model.xml (the least-energy optimum's scene, keyframes at its strip's times) and one
   // CSV per optimum
-  nlohmann::json write_exports(const std::filesystem::path& dir,
-                               const cases::CaseInfo& info) override {
-    json out = json::array();
+  std::vector<report::ExportRecord> write_exports(const std::filesystem::path& dir,
+                                                  const cases::CaseInfo& info) override {
+    std::vector<report::ExportRecord> out;
     const pl::ProgramConfig* best = nullptr;
     for (const pl::ProgramConfig& pc : result_.cases) {
       if (!pc.found || pc.series.t.size() < 2) continue;
@@ -246,13 +246,11 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
   }
 
   // frames: the optimum of every program and configuration (src/scene)
-  std::vector<std::string> render(const std::filesystem::path& dir,
-                                  const cases::CaseInfo& info) override {
-    std::vector<std::string> files =
-        scene::render_placement_frames(spec_, result_, info.render, dir);
+  scene::Rendered render(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
+    scene::Rendered out = scene::render_placement_frames(spec_, result_, info.render, dir);
     for (auto& f : scene::render_placement_replay(spec_, result_, replays_, info.render, dir))
-      files.push_back(std::move(f));
-    return files;
+      out.frames.push_back(std::move(f));
+    return out;
   }
 
  private:

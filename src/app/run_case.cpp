@@ -25,9 +25,9 @@
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
 #include "report/source_comparison.hpp"
-#include "scene/animation.hpp"
 #include "scene/osmesa_context.hpp"
 #include "scene/phase_times.hpp"
+#include "scene/rendered.hpp"
 #include "sys/atomic_file.hpp"
 #include "sys/scratch_dir.hpp"
 #include "version.hpp"
@@ -142,22 +142,64 @@ void swap_into_place(const fs::path& fresh, const fs::path& target, const fs::pa
 
 namespace {
 
-// the manifests the animations left beside their files (scene/animation.hpp), sorted by
-// name, into results.json "animations"; the manifests themselves go
-std::vector<report::AnimationRecord> collect_animations(const fs::path& dir) {
-  std::vector<fs::path> found;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().ends_with(".anim.json")) found.push_back(e.path());
-  std::sort(found.begin(), found.end());
+// the render step's animations (scene/rendered.hpp) as results.json "animations", sorted by
+// name
+std::vector<report::AnimationRecord> animation_records(std::vector<scene::Animation> animations) {
+  std::sort(animations.begin(), animations.end(),
+            [](const scene::Animation& a, const scene::Animation& b) { return a.name < b.name; });
   std::vector<report::AnimationRecord> out;
-  for (const fs::path& p : found) {
-    std::ifstream in(p);
-    out.push_back(report::from_json<report::AnimationRecord>(
-        nlohmann::json::parse(in), "/animations/" + std::to_string(out.size())));
-    in.close();
-    fs::remove(p);
+  for (const scene::Animation& a : animations) {
+    report::AnimationRecord& r = out.emplace_back();
+    r.name = a.name;
+    r.title = a.title;
+    r.sprite = a.sprite;
+    r.still = a.still;
+    if (!a.video.empty()) r.video = a.video;
+    r.frames = a.frames;
+    r.columns = a.columns;
+    r.frame_width_px = a.frame_width;
+    r.frame_height_px = a.frame_height;
+    r.fps = a.fps;
+    r.duration_s = a.duration_s;
+    r.video_duration_s = a.frames / a.fps;
+    if (!a.note.empty()) r.note = a.note;
   }
   return out;
+}
+
+// a solved case's frames (unless --no-render), exports and animations into `r`, their files
+// into `dir`; the videos encode while the exports are written, and every one is done when
+// this returns or throws (a pending animation waits for its video when it goes)
+void render_and_export(LoadedCase& c, const RunOptions& options, const fs::path& dir,
+                       const studies::ProgressFn& progress, report::ResultsRecord& r) {
+  scene::Rendered rendered;
+  if (options.render) {
+    if (progress) progress(0.99, "rendering");
+    scene::PhaseScope phase("render");
+    rendered = c.run->render(dir, c.info);
+    r.frames = std::move(rendered.frames);
+  }
+  {
+    // files other tools open (model.xml, motion CSVs), listed under "files" as well
+    scene::PhaseScope phase("exports");
+    r.exports = c.run->write_exports(dir, c.info);
+  }
+  r.animations = animation_records(scene::finish_animations(rendered.animations));
+}
+
+// results.json but its "files": the shared record and the study's section; for a case with a
+// source, the source's printed figures beside armstudy's (read from this very JSON) and
+// their check added to `r` first
+nlohmann::json results_json(const LoadedCase& c, const nlohmann::json& section,
+                            report::ResultsRecord& r) {
+  nlohmann::json j = report::write_record(r);
+  j[c.info.study] = section;
+  if (c.info.source.empty()) return j;
+  r.source = report::compare_with_source(c.info.source, j);
+  r.checks.push_back(report::source_explained_check(*r.source));
+  j = report::write_record(r);
+  j[c.info.study] = section;
+  return j;
 }
 
 // the names of the failed checks, comma-separated (empty: every check passed)
@@ -212,8 +254,8 @@ void set_verdict(const LoadedCase& c, studies::Status status, const std::string&
 
 }  // namespace
 
-// (over 60 lines, kept whole: the stages of one case in order (solve, sensitivity, render, exports,
-// report, results.json, swap), under one try that removes the scratch folder)
+// the stages of one case in order (solve, sensitivity, render and exports, report,
+// results.json, swap), under one try that removes the scratch folder
 CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
                      const studies::ProgressFn& progress) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -223,8 +265,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
   fs::path tmp_dir;
   try {
     fs::create_directories(options.out_dir);
-    const fs::path scratch = sys::scratch_dir(options.out_dir);
-    tmp_dir = scratch / "new" / c.info.name;
+    tmp_dir = sys::scratch_dir(options.out_dir) / "new" / c.info.name;
     fs::remove_all(tmp_dir);
     fs::create_directories(tmp_dir);
 
@@ -241,45 +282,15 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
         r.key_figures.push_back({k.name, k.value, k.unit, k.label.empty() ? k.name : k.label});
     // what decides whether a later run may keep this output (main.cpp, already_done)
     r.run_options.render = options.render;
-    // every video of this case encoded (or failed) before its folder is used or removed,
-    // on every path out of here (scene/animation.hpp)
-    struct WaitForVideos {
-      ~WaitForVideos() {
-        try {
-          scene::finish_animations();
-        } catch (...) {  // (the error path: the case fails for its own reason)
-        }
-      }
-    } wait_for_videos;
     // the sensitivity part: the case re-solved at each key's steps (no rendering)
     if (status == studies::Status::kSolved && options.sensitivity && !c.info.sensitivity.empty()) {
       scene::PhaseScope phase("sensitivity");
       r.sensitivity = run_sensitivity(c, progress, 0.975, 0.99);  // after the studies' 0.97
     }
-    // render and report only what was solved
-    if (status == studies::Status::kSolved && options.render) {
-      if (progress) progress(0.99, "rendering");
-      scene::PhaseScope phase("render");
-      r.frames = c.run->render(tmp_dir, c.info);
-    }
-    // files other tools open (model.xml, motion CSVs), listed under "files" as well
-    std::optional<scene::PhaseScope> exports_phase(std::in_place, "exports");
-    if (status == studies::Status::kSolved)
-      r.exports = report::from_json<std::vector<report::ExportRecord>>(
-          c.run->write_exports(tmp_dir, c.info), "/exports");
-    exports_phase.reset();
-    scene::finish_animations();  // the videos encoded while the case went on
-    r.animations = collect_animations(tmp_dir);
+    // render and export only what was solved
+    if (status == studies::Status::kSolved) render_and_export(c, options, tmp_dir, progress, r);
     if (!r.frames.empty()) set_gl_provenance(r);
-    nlohmann::json j = report::write_record(r);
-    j[c.info.study] = section;
-    if (!c.info.source.empty()) {
-      // the source's printed figures beside armstudy's, read from this very results.json
-      r.source = report::compare_with_source(c.info.source, j);
-      r.checks.push_back(report::source_explained_check(*r.source));
-      j = report::write_record(r);
-      j[c.info.study] = section;
-    }
+    nlohmann::json j = results_json(c, section, r);
     {
       scene::PhaseScope phase("report");
       report::write_case_report(tmp_dir, c.info, j, c.entry->report, c.entry->answer);

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "app/exports_json.hpp"
+#include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "app/study_entry.hpp"
@@ -547,8 +547,9 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
   }
 
   // model.xml (the IDP motion's scene, keyframes at its strip's times) and one CSV per motion
-  json write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
-    json out = json::array();
+  std::vector<report::ExportRecord> write_exports(const std::filesystem::path& dir,
+                                                  const cases::CaseInfo& info) override {
+    std::vector<report::ExportRecord> out;
     if (result_.status != st::Status::kSolved || result_.idp.series.t.size() < 2) return out;
     const scene::ArmScene sc = scene::throwing_scene(spec_, result_, info.render);
     const auto keys =
@@ -601,8 +602,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
   }
 
   // frames: the IDP optimum's strip and locus (Fig. 7) and the flight (src/scene)
-  std::vector<std::string> render(const std::filesystem::path& dir,
-                                  const cases::CaseInfo& info) override {
+  scene::Rendered render(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
     return scene::render_throwing_frames(spec_, result_, info.render, dir);
   }
 

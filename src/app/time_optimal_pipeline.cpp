@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-#include "app/exports_json.hpp"
+#include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "app/replay_json.hpp"
@@ -163,18 +163,16 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
     return k;
   }
 
-  std::vector<std::string> render(const std::filesystem::path& dir,
-                                  const cases::CaseInfo& info) override {
-    std::vector<std::string> files =
-        scene::render_time_optimal_frames(spec_, result_, info.render, dir);
+  scene::Rendered render(const std::filesystem::path& dir, const cases::CaseInfo& info) override {
+    scene::Rendered out = scene::render_time_optimal_frames(spec_, result_, info.render, dir);
     if (replay_)
       for (auto& f : scene::render_time_optimal_replay(spec_, result_, *replay_, info.render, dir))
-        files.push_back(std::move(f));
-    return files;
+        out.frames.push_back(std::move(f));
+    return out;
   }
 
-  nlohmann::json write_exports(const std::filesystem::path& dir,
-                               const cases::CaseInfo& info) override;
+  std::vector<report::ExportRecord> write_exports(const std::filesystem::path& dir,
+                                                  const cases::CaseInfo& info) override;
 
   // a sensitivity step: the exact solver alone (it needs no start: it is fast), without the
   // DP, the Complex method and MuJoCo's replay
@@ -275,8 +273,9 @@ Section TimeOptimalRun::section() const {
 }
 
 // model.xml (the frames' scene, keyframes at the strip's times) and one CSV per solver
-json TimeOptimalRun::write_exports(const std::filesystem::path& dir, const cases::CaseInfo& info) {
-  json out = json::array();
+std::vector<report::ExportRecord> TimeOptimalRun::write_exports(const std::filesystem::path& dir,
+                                                                const cases::CaseInfo& info) {
+  std::vector<report::ExportRecord> out;
   if (result_.status != studies::Status::kSolved) return out;
   const scene::ArmScene sc = scene::time_optimal_scene(spec_, result_, info.render);
   const auto keys = scene::strip_keyframes(scene::time_optimal_motion(result_), info.render.frames);

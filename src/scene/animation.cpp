@@ -5,15 +5,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
 #include <future>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include <unistd.h>
-
-#include <nlohmann/json.hpp>
 
 #include "scene/phase_times.hpp"
 #include "scene/png_writer.hpp"
@@ -71,34 +68,6 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
   return true;
 }
 
-// the manifest beside the animation's files
-void write_manifest(const Animation& a, const fs::path& dir) {
-  nlohmann::json j = {
-      {"name", a.name},
-      {"title", a.title},
-      {"sprite", a.sprite},
-      {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
-      {"still", a.still},
-      {"frames", a.frames},
-      {"columns", a.columns},
-      {"frame_width_px", a.frame_width},
-      {"frame_height_px", a.frame_height},
-      {"fps", a.fps},
-      {"duration_s", a.duration_s},
-      {"video_duration_s", a.frames / a.fps}};
-  if (!a.note.empty()) j["note"] = a.note;
-  std::ofstream out(dir / (a.name + ".anim.json"));
-  out << j.dump(1) << "\n";
-  if (!out) throw std::runtime_error("cannot write " + (dir / (a.name + ".anim.json")).string());
-}
-
-// this thread's videos still being encoded (each future waits for its task when destroyed:
-// none outlives the thread)
-std::vector<std::future<void>>& pending_animations() {
-  thread_local std::vector<std::future<void>> pending;
-  return pending;
-}
-
 }  // namespace
 
 std::string find_ffmpeg() {
@@ -112,8 +81,9 @@ int animation_frames(double duration) {
   return std::clamp(n, kAnimationMinFrames, kAnimationMaxFrames);
 }
 
-void write_animation(SceneRenderer& sr, const SampledMotion& m, const std::string& title,
-                     const fs::path& dir, const std::string& name) {
+PendingAnimation write_animation(SceneRenderer& sr, const SampledMotion& m,
+                                 const std::string& title, const fs::path& dir,
+                                 const std::string& name) {
   Animation a;
   a.name = name;
   a.title = title;
@@ -143,37 +113,37 @@ void write_animation(SceneRenderer& sr, const SampledMotion& m, const std::strin
   write_png(dir / a.sprite, sheet, sr.strip_threads());
   a.still = name + "_still.png";
   write_png(dir / a.still, frames.back());
-  // the video and the manifest on a thread of their own: ffmpeg encodes while this thread
-  // draws on (finish_animations waits for them)
-  pending_animations().push_back(
-      std::async(std::launch::async, [a, dir, frames = std::move(frames)]() mutable {
-        const std::string ffmpeg = find_ffmpeg();
-        if (ffmpeg.empty()) {
-          a.note = "no video: ffmpeg was not found (apt-get install ffmpeg)";
-        } else {
-          std::string why;
-          if (write_video(ffmpeg, frames, a.fps, dir / (a.name + ".mp4"), &why))
-            a.video = a.name + ".mp4";
-          else
-            a.note = "no video: " + why;
-        }
-        write_manifest(a, dir);
-      }));
+  // the video on a thread of its own: ffmpeg encodes while this thread draws on (the
+  // animation's get() waits for it)
+  return std::async(std::launch::async, [a, dir, frames = std::move(frames)]() mutable {
+    const std::string ffmpeg = find_ffmpeg();
+    if (ffmpeg.empty()) {
+      a.note = "no video: ffmpeg was not found (apt-get install ffmpeg)";
+    } else {
+      std::string why;
+      if (write_video(ffmpeg, frames, a.fps, dir / (a.name + ".mp4"), &why))
+        a.video = a.name + ".mp4";
+      else
+        a.note = "no video: " + why;
+    }
+    return a;
+  });
 }
 
-void finish_animations() {
+std::vector<Animation> finish_animations(std::vector<PendingAnimation>& pending) {
   PhaseScope phase("video_wait");
-  auto& pending = pending_animations();
+  std::vector<Animation> out;
   std::exception_ptr first;
   for (auto& f : pending) {
     try {
-      f.get();
+      out.push_back(f.get());
     } catch (...) {
       if (!first) first = std::current_exception();
     }
   }
   pending.clear();
   if (first) std::rethrow_exception(first);
+  return out;
 }
 
 }  // namespace armstudy::scene

@@ -5,7 +5,8 @@
 /// process has a rasteriser of its own. The helper is the program armstudy-frames
 /// (src/cli/frame_worker_main.cpp), spoken to over a socket: the scene once, then poses
 /// (MuJoCo's qpos and qvel, already mapped from the chain) and their labels; it answers
-/// each with the frame's pixels. A frame is a function of its pose alone, so the helper's
+/// each with the frame's pixels (the messages, each one typed struct and one field list:
+/// scene/frame_messages.hpp). A frame is a function of its pose alone, so the helper's
 /// frames are the parent's byte for byte on one machine (tests/scene/frame_worker_test.cpp).
 
 #include <memory>
@@ -19,6 +20,9 @@
 #include "scene/renderer.hpp"
 
 namespace armstudy::scene {
+namespace frame_wire {
+struct Packed;  // scene/frame_messages.hpp
+}  // namespace frame_wire
 
 /// One frame asked of a worker: the model's state and the labels.
 struct WorkerPose {
@@ -70,7 +74,7 @@ class FrameWorker {
   void load(const ArmScene& scene, const std::string& source, const RenderSettings& settings,
             bool warm);
   bool read_loads(bool* timed_out);
-  void send_bytes(const std::string& bytes);
+  void send_message(const frame_wire::Packed& message);
   int fd_ = -1;
   int pid_ = -1;
   int loads_pending_ = 0;   // answers to load() not read yet

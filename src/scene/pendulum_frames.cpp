@@ -46,16 +46,17 @@ ArmScene pendulum_scene(const studies::PendulumSpec& spec, const studies::Pendul
   return tray_arm_scene(chain, decor);
 }
 
-std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spec,
-                                                const studies::PendulumResult& result,
-                                                const cases::RenderOptions& options,
-                                                const std::filesystem::path& dir) {
+Rendered render_pendulum_frames(const studies::PendulumSpec& spec,
+                                const studies::PendulumResult& result,
+                                const cases::RenderOptions& options,
+                                const std::filesystem::path& dir) {
   if (result.snapshot_index.empty()) return {};
   const std::vector<PoseSample> snaps = pendulum_snapshots(result);
   SceneRenderer sr(pendulum_scene(spec, result, options), "pendulum scene",
                    render_settings(options));
 
-  std::vector<std::string> files;
+  Rendered out;
+  std::vector<std::string>& files = out.frames;
   char title[160];
   std::snprintf(title, sizeof title,
                 "pendulum (Sato et al. Sec. 3), joints 1, 2 locked; every %.2f s",
@@ -77,9 +78,10 @@ std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spe
       m.q.push_back(result.q[i]);
       m.qd.push_back(result.qd[i]);
     }
-    if (m.t.size() >= 2) write_animation(sr, m, "pendulum, free swing", dir, "pendulum");
+    if (m.t.size() >= 2)
+      out.animations.push_back(write_animation(sr, m, "pendulum, free swing", dir, "pendulum"));
   }
-  return files;
+  return out;
 }
 
 }  // namespace armstudy::scene

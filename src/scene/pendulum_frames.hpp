@@ -9,6 +9,7 @@
 
 #include "cases/case_info.hpp"
 #include "scene/arm_scene.hpp"
+#include "scene/rendered.hpp"
 #include "scene/replay.hpp"
 #include "studies/pendulum/solve.hpp"
 
@@ -22,10 +23,10 @@ ArmScene pendulum_scene(const studies::PendulumSpec& spec, const studies::Pendul
                         const cases::RenderOptions& options);
 
 /// Writes pendulum_snapshots_strip.png and pendulum_snapshots_locus.png into `dir`; returns
-/// the file names. @throws SceneError.
-std::vector<std::string> render_pendulum_frames(const studies::PendulumSpec& spec,
-                                                const studies::PendulumResult& result,
-                                                const cases::RenderOptions& options,
-                                                const std::filesystem::path& dir);
+/// the file names and its animation (pendulum). @throws SceneError.
+Rendered render_pendulum_frames(const studies::PendulumSpec& spec,
+                                const studies::PendulumResult& result,
+                                const cases::RenderOptions& options,
+                                const std::filesystem::path& dir);
 
 }  // namespace armstudy::scene

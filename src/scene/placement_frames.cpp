@@ -36,10 +36,11 @@ SampledMotion placement_motion(const pl::ProgramConfig& pc) {
   return m;
 }
 
-std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl::Result& result,
-                                                 const cases::RenderOptions& options,
-                                                 const std::filesystem::path& dir) {
-  std::vector<std::string> files;
+Rendered render_placement_frames(const pl::Spec& spec, const pl::Result& result,
+                                 const cases::RenderOptions& options,
+                                 const std::filesystem::path& dir) {
+  Rendered out;
+  std::vector<std::string>& files = out.frames;
   for (const pl::ProgramConfig& pc : result.cases) {
     if (!pc.found || pc.series.t.size() < 2) continue;
     const Eigen::Vector2d S = pc.placement.start, F = pc.placement.end;
@@ -75,12 +76,13 @@ std::vector<std::string> render_placement_frames(const pl::Spec& spec, const pl:
     SceneRenderer::LocusStyle style;
     style.path_radius = 0.12;
     files.push_back(write_locus(sr, m, 9, path, {}, labels, dir, name, style));
-    write_animation(sr, m,
-                    std::string(core::program_label(pc.program)) + ", configuration " +
-                        std::to_string(pc.configuration),
-                    dir, name);
+    out.animations.push_back(write_animation(sr, m,
+                                             std::string(core::program_label(pc.program)) +
+                                                 ", configuration " +
+                                                 std::to_string(pc.configuration),
+                                             dir, name));
   }
-  return files;
+  return out;
 }
 
 }  // namespace armstudy::scene

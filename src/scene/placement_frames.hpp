@@ -9,6 +9,7 @@
 
 #include "cases/case_info.hpp"
 #include "scene/arm_scene.hpp"
+#include "scene/rendered.hpp"
 #include "scene/study_frames.hpp"
 #include "studies/placement/result.hpp"
 #include "studies/placement/spec.hpp"
@@ -24,10 +25,11 @@ ArmScene placement_scene(const studies::placement::Spec& spec,
 SampledMotion placement_motion(const studies::placement::ProgramConfig& pc);
 
 /// Writes placement_<program>_c<configuration>_{strip,locus}.png into `dir` and returns
-/// the file names. @throws SceneError (ModelError for an unloadable model).
-std::vector<std::string> render_placement_frames(const studies::placement::Spec& spec,
-                                                 const studies::placement::Result& result,
-                                                 const cases::RenderOptions& options,
-                                                 const std::filesystem::path& dir);
+/// the file names and the animation of each optimum. @throws SceneError (ModelError for an
+/// unloadable model).
+Rendered render_placement_frames(const studies::placement::Spec& spec,
+                                 const studies::placement::Result& result,
+                                 const cases::RenderOptions& options,
+                                 const std::filesystem::path& dir);
 
 }  // namespace armstudy::scene

@@ -110,10 +110,10 @@ void render_flight(const studies::ThrowingSpec& spec, const core::PlanarChain& c
 }
 }  // namespace
 
-std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
-                                                const studies::ThrowingResult& result,
-                                                const cases::RenderOptions& options,
-                                                const std::filesystem::path& dir) {
+Rendered render_throwing_frames(const studies::ThrowingSpec& spec,
+                                const studies::ThrowingResult& result,
+                                const cases::RenderOptions& options,
+                                const std::filesystem::path& dir) {
   if (result.idp.series.t.size() < 2) return {};
   const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
   // both optimisers: IDP (the files keep their names) and SLSQP when it ran
@@ -122,7 +122,8 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
   if (result.nlopt_ran && result.nlopt.series.t.size() >= 2)
     thrown.push_back({&result.nlopt, "SLSQP optimum", "throwing_slsqp", "throwing_slsqp_flight",
                       result.nlopt_flight, false});
-  std::vector<std::string> files;
+  Rendered out;
+  std::vector<std::string>& files = out.frames;
   for (const Thrown& th : thrown) {
     const studies::ThrowSeries& s = th.motion->series;
     const SampledMotion m = throwing_motion(s);
@@ -137,12 +138,12 @@ std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spe
       labels.top_left = std::string(title) + "\nlocus of the throw (Fig. 7); ball path traced";
       labels.bottom_left = "side view, gravity down; " + grid_caption(kWallGridM);
       files.push_back(write_locus(sr, m, 11, s.ball, {}, labels, dir, th.stem));
-      write_animation(sr, m, "throwing, " + th.who, dir, th.stem);
+      out.animations.push_back(write_animation(sr, m, "throwing, " + th.who, dir, th.stem));
     }
     render_release_closeup(spec, chain, options, dir, th, m, decor, files);
     render_flight(spec, chain, options, dir, th, m, title, decor, files);
   }
-  return files;
+  return out;
 }
 
 }  // namespace armstudy::scene

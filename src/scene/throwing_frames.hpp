@@ -9,6 +9,7 @@
 
 #include "cases/case_info.hpp"
 #include "scene/arm_scene.hpp"
+#include "scene/rendered.hpp"
 #include "scene/study_frames.hpp"
 #include "studies/throwing/solve.hpp"
 
@@ -23,10 +24,11 @@ ArmScene throwing_scene(const studies::ThrowingSpec& spec, const studies::Throwi
                         const cases::RenderOptions& options);
 
 /// Writes throwing_idp_{strip,locus}.png and throwing_flight_locus.png (when the flight
-/// has a path) into `dir`; returns the file names. @throws SceneError.
-std::vector<std::string> render_throwing_frames(const studies::ThrowingSpec& spec,
-                                                const studies::ThrowingResult& result,
-                                                const cases::RenderOptions& options,
-                                                const std::filesystem::path& dir);
+/// has a path) into `dir`; returns the file names and the animation of each motion.
+/// @throws SceneError.
+Rendered render_throwing_frames(const studies::ThrowingSpec& spec,
+                                const studies::ThrowingResult& result,
+                                const cases::RenderOptions& options,
+                                const std::filesystem::path& dir);
 
 }  // namespace armstudy::scene

@@ -28,9 +28,9 @@ SampledMotion time_optimal_motion(const to::Result& result) {
   return m;
 }
 
-std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const to::Result& result,
-                                                    const cases::RenderOptions& options,
-                                                    const std::filesystem::path& dir) {
+Rendered render_time_optimal_frames(const to::Spec& spec, const to::Result& result,
+                                    const cases::RenderOptions& options,
+                                    const std::filesystem::path& dir) {
   const int n = static_cast<int>(result.motion_t.size());
   if (n < 2 || result.motion_q.cols() != n) return {};
   SceneRenderer sr(time_optimal_scene(spec, result, options), "time-optimal scene",
@@ -41,7 +41,8 @@ std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const 
   char title[160];
   std::snprintf(title, sizeof title, "time-optimal (exact): %.4f s",
                 result.motion_t.back() - result.motion_t.front());
-  std::vector<std::string> files;
+  Rendered out;
+  std::vector<std::string>& files = out.frames;
   files.push_back(write_strip(sr, m, options.frames, title, dir, "time_optimal"));
   FrameLabels labels;
   labels.top_left = std::string(title) + "\nequal time steps: dense where slow";
@@ -49,8 +50,8 @@ std::vector<std::string> render_time_optimal_frames(const to::Spec& spec, const 
       (spec.chain.gravity != 0.0 ? "vertical plane, gravity down the image; " : "top view; ") +
       grid_caption(kTableGridM);
   files.push_back(write_locus(sr, m, 15, path, {}, labels, dir, "time_optimal"));
-  write_animation(sr, m, "time-optimal (exact)", dir, "time_optimal");
-  return files;
+  out.animations.push_back(write_animation(sr, m, "time-optimal (exact)", dir, "time_optimal"));
+  return out;
 }
 
 }  // namespace armstudy::scene

@@ -8,6 +8,7 @@
 
 #include "cases/case_info.hpp"
 #include "scene/arm_scene.hpp"
+#include "scene/rendered.hpp"
 #include "scene/study_frames.hpp"
 #include "studies/time_optimal/result.hpp"
 #include "studies/time_optimal/spec.hpp"
@@ -22,11 +23,11 @@ ArmScene time_optimal_scene(const studies::time_optimal::Spec& spec,
 /// The exact solution at equal time steps, as the strip and locus show it.
 SampledMotion time_optimal_motion(const studies::time_optimal::Result& result);
 
-/// Writes time_optimal_{strip,locus}.png into `dir`; returns the file names.
-/// @throws SceneError.
-std::vector<std::string> render_time_optimal_frames(const studies::time_optimal::Spec& spec,
-                                                    const studies::time_optimal::Result& result,
-                                                    const cases::RenderOptions& options,
-                                                    const std::filesystem::path& dir);
+/// Writes time_optimal_{strip,locus}.png into `dir`; returns the file names and its
+/// animation (time_optimal). @throws SceneError.
+Rendered render_time_optimal_frames(const studies::time_optimal::Spec& spec,
+                                    const studies::time_optimal::Result& result,
+                                    const cases::RenderOptions& options,
+                                    const std::filesystem::path& dir);
 
 }  // namespace armstudy::scene

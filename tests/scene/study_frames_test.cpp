@@ -5,10 +5,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "core/ik2.hpp"
 #include "core/kinematics.hpp"
 #include "core/motion_program.hpp"
+#include "scene/animation.hpp"
 #include "scene/arm_scene.hpp"
 #include "scene/frames.hpp"
 #include "scene/pendulum_frames.hpp"
@@ -52,9 +54,28 @@ TEST(StudyFrames, PendulumSnapshotsShowTheBallWhereKinematicsPutsIt) {
   ASSERT_EQ(r.status, studies::Status::kSolved) << r.message;
   const fs::path dir = out_dir("pendulum");
   cases::RenderOptions o;
-  const auto files = render_pendulum_frames(spec, r, o, dir);
-  expect_images(dir, files, 2);
+  Rendered rendered = render_pendulum_frames(spec, r, o, dir);
+  expect_images(dir, rendered.frames, 2);
   EXPECT_GE(r.snapshot_index.size(), 15u);  // 2 s every 0.13 s
+
+  // its animation comes back as a value (the run lists it in results.json from that): the
+  // folder holds the frames and the animation's sprite, still and video, nothing else
+  const std::vector<Animation> anims = finish_animations(rendered.animations);
+  ASSERT_EQ(anims.size(), 1u);
+  const Animation& a = anims[0];
+  EXPECT_EQ(a.name, "pendulum");
+  EXPECT_EQ(a.sprite, "pendulum_anim.png");
+  EXPECT_EQ(a.still, "pendulum_still.png");
+  EXPECT_EQ(a.frames, animation_frames(a.duration_s));
+  EXPECT_NEAR(a.duration_s, r.t.back() - r.t.front(), 1e-12);
+  EXPECT_NE(a.video.empty(), a.note.empty());  // a video, or a note saying why there is none
+  std::set<std::string> expected(rendered.frames.begin(), rendered.frames.end());
+  expected.insert({a.sprite, a.still});
+  if (!a.video.empty()) expected.insert(a.video);
+  std::set<std::string> found;
+  for (const auto& e : fs::directory_iterator(dir)) found.insert(e.path().filename().string());
+  EXPECT_EQ(found, expected);
+  EXPECT_EQ(read_png(dir / a.sprite).width, a.columns * a.frame_width);
 
   // the ball is red at its projected centre in a frame of the same scene
   const core::PlanarChain chain = studies::make_tray_arm(spec.arm);
@@ -93,7 +114,7 @@ TEST(StudyFrames, PlacementOptimaOfBothConfigurations) {
   for (const auto& pc : r.cases) found += pc.found;
   ASSERT_EQ(found, 2);
   const fs::path dir = out_dir("placement");
-  expect_images(dir, render_placement_frames(spec, r, cases::RenderOptions{}, dir), 4);
+  expect_images(dir, render_placement_frames(spec, r, cases::RenderOptions{}, dir).frames, 4);
 }
 
 TEST(StudyFrames, ThrowingLocusWithTheFlightAfterRelease) {
@@ -112,7 +133,7 @@ TEST(StudyFrames, ThrowingLocusWithTheFlightAfterRelease) {
                                            spec.landing_height);
   const fs::path dir = out_dir("throwing");
   expect_images(
-      dir, render_throwing_frames(spec, r, cases::RenderOptions{}, dir),
+      dir, render_throwing_frames(spec, r, cases::RenderOptions{}, dir).frames,
       r.idp_flight.path.size() >= 2 ? 4 : 3);  // strip, locus, close-up at release, flight
 }
 
@@ -141,7 +162,7 @@ TEST(StudyFrames, TimeOptimalMotionAtEqualTimeSteps) {
     r.motion_p.col(k) = x;
   }
   const fs::path dir = out_dir("time_optimal");
-  const auto files = render_time_optimal_frames(spec, r, cases::RenderOptions{}, dir);
+  const auto files = render_time_optimal_frames(spec, r, cases::RenderOptions{}, dir).frames;
   expect_images(dir, files, 2);
   // six frames, three per row
   const Image strip = read_png(dir / files[0]);
