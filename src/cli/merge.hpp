@@ -13,6 +13,7 @@
 
 #include "cli/sweep_manifest.hpp"
 #include "report/results_record.hpp"
+#include "report/sweep_table.hpp"
 
 namespace armstudy::cli {
 
@@ -86,9 +87,10 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
 /// JUnit XML: one testsuite per study, a testcase "solve" per case and one per check.
 std::string junit_xml(const std::vector<CaseOutput>& cases);
 
-/// Sweep tables (CSV and JSON) of the cases that carry a sweep point; empty if none. The
-/// JSON: {"parameters": [path...], "figures": [key figure...], "units": {figure: unit},
-/// "rows": [{case, status ("ok"/"failed"), parameters{path: value}, key_figures{name: x}}]}.
+/// The sweep table of the cases that carry a sweep point (no rows if none): one row per
+/// case, sorted by case id (report/sweep_table.hpp).
+report::SweepTable sweep_table(const std::vector<CaseOutput>& cases);
+/// The sweep table as sweep.csv ("" when no case carries a sweep point) and as sweep.json.
 std::string sweep_csv(const std::vector<CaseOutput>& cases);
 nlohmann::json sweep_json(const std::vector<CaseOutput>& cases);
 

@@ -393,6 +393,16 @@ T from_json(const nlohmann::json& j, const std::string& path = "") {
   return x;
 }
 
+/// Every key a T's JSON object may hold (its optional and inline keys included).
+template <class T>
+std::set<std::string> field_keys() {
+  std::set<std::string> keys;
+  fields_detail::KeyCollector c{&keys};
+  T probe{};
+  fields(c, probe);
+  return keys;
+}
+
 /// The JSON Schema (2020-12) of T's JSON form: every key required unless optional, no
 /// other key allowed (additionalProperties false), each key's unit in its description.
 template <class T>
