@@ -73,13 +73,16 @@ std::optional<double> figure(const ResultsRecord& r, const std::string& name) {
 }  // namespace
 
 const char* run_level_file(const std::string& name) {
-  for (const char* f :
-       {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"})
-    if (name == f) return f;
-  // each study's figure over all its cases on the index page (e.g. placement_root_loci.svg)
-  for (const app::StudyEntry& e : app::study_registry())
-    if (!e.index_figure.file.empty() && name == e.index_figure.file)
-      return e.index_figure.file.data();
+  // every run-level output (report::run_level_outputs), each study's figure over all its
+  // cases on the index page included (e.g. placement_root_loci.svg)
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> figures;
+    for (const app::StudyEntry& e : app::study_registry())
+      if (!e.index_figure.file.empty()) figures.emplace_back(e.index_figure.file);
+    return report::run_level_outputs(figures);
+  }();
+  for (const std::string& f : names)
+    if (name == f) return f.c_str();
   return nullptr;
 }
 

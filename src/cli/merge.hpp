@@ -71,9 +71,9 @@ size_t apply_manifest(const SweepManifest& manifest, const std::filesystem::path
 std::string results_problem(const nlohmann::json& results);
 
 /// The run-level file or folder that an output folder's entry `name` would collide with
-/// (index.html, summary.md, junit.xml, report.css, sweep, sweep.csv, sweep.json, and each
-/// study's index-page figure, e.g. placement_root_loci.svg), or nullptr: no case may have
-/// such a name.
+/// (report::run_level_outputs: index.html, summary.md, junit.xml, report.css, sweep,
+/// sweep.csv, sweep.json, and each registered study's index-page figure, e.g.
+/// placement_root_loci.svg), or nullptr: no case may have such a name.
 const char* run_level_file(const std::string& name);
 
 /// True if the case ended as its file expects (solved, unless it says `expect: unsolvable`)

@@ -215,14 +215,17 @@ struct Reader {
       x.reset();
       return;
     }
-    x.emplace();
+    // T{} rather than emplace(): clang 14 takes a nested struct with default member
+    // initializers for not default-constructible in emplace's constraint, and the fuzz
+    // build (clang) reads every study's section
+    x = T{};
     read(*it, path + "/" + key, *x);
   }
   template <class T>
   void inline_if(bool present, std::optional<T>& x) {
     x.reset();
     if (!present) return;
-    x.emplace();
+    x = T{};
     fields(*this, *x);
   }
   template <class T>
