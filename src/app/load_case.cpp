@@ -110,7 +110,7 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
     out.info.study = *study;
     const auto it = std::find_if(study_registry().begin(), study_registry().end(),
                                  [&](const StudyEntry& e) { return e.study == *study; });
-    out.run = it->load(root, out.info);
+    out.run = it->load(root);
     out.entry = &*it;
   }
   if (study) root.finish();  // with no known study, its keys cannot be judged

@@ -140,16 +140,12 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
   }
 };
 
-std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
-  return std::make_unique<PendulumRun>(cases::load_pendulum_spec(root));
-}
-
 }  // namespace
 
-StudyEntry pendulum_entry() {
-  return study_entry<studies::PendulumResultsSection>(
-      "pendulum", "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
-      &load, &report::pendulum_sections, &report::pendulum_answer);
+StudyParts pendulum_parts() {
+  return study_parts<PendulumRun>(
+      "tray and rolling ball swinging freely (Sato et al. Sec. 3): energy conservation",
+      &report::pendulum_sections, &report::pendulum_answer);
 }
 
 }  // namespace armstudy::app

@@ -1,17 +1,21 @@
 #pragma once
 /// The pipeline of one case: case -> study -> result -> scene/report. Each study plugs in
-/// one StudyRun implementation and one registry record (StudyEntry, study_registry.cpp); the
-/// CLI, the report and merge know nothing else about studies.
+/// one loader record (StudyLoader, app/study_loaders.cpp), one StudyRun implementation and
+/// its parts (StudyParts, app/study_registry.cpp); the CLI, the report and merge know
+/// nothing else about studies.
 
+#include <any>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <typeindex>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "app/study_loaders.hpp"
 #include "cases/case_info.hpp"
 #include "cases/yaml_reader.hpp"
 #include "report/case_report.hpp"
@@ -89,39 +93,74 @@ class StudyRun {
 /// typed section read back from results[study]; report/study_sections.hpp).
 using ReportSections = report::StudySections;
 
-/// One study kind, the one record of it the registry holds (nothing else dispatches on the
-/// study name): its name, its loader (which returns the StudyRun: solver, checks, key
-/// figures, frames, results()), its results.json section's schema and strict reader (from
-/// its typed result, studies/<study>/results_section.hpp), its report sections, its lines of
-/// the answer box and its figure over all its cases on the index page. The first five are
-/// required (a null one is an error at registration); the answer lines and the index figure
-/// default to none. Build one with study_entry<Section>() (app/study_entry.hpp).
-struct StudyEntry {
-  using Loader = std::unique_ptr<StudyRun> (*)(cases::Map& root, const cases::CaseInfo& info);
-  using SectionSchema = nlohmann::json (*)();
-  using SectionCheck = std::function<void(const nlohmann::json& results)>;
+/// What the program adds to a study's StudyLoader (app/study_loaders.hpp): the StudyRun it
+/// solves a loaded spec with (solver, checks, key figures, frames, results()), its line of
+/// --help, its report sections, its lines of the answer box and its figure over all its
+/// cases on the index page (the last two optional). Build one with study_parts<Run>()
+/// (app/study_entry.hpp); it is paired with the loader whose spec its run takes.
+struct StudyParts {
+  /// The run of a loaded spec (the std::any holds a spec of `spec_type`).
+  using MakeRun = std::unique_ptr<StudyRun> (*)(std::any spec);
+  /// The report parts, given the study's name (its typed section is results[study]): the
+  /// registry passes it when it joins the parts to their loader.
+  using NamedSections = std::function<void(const std::string& study, const nlohmann::json& results,
+                                           report::FigureWriter& figures, report::CasePage& page)>;
+  using NamedAnswer =
+      std::function<void(const std::string& study, const nlohmann::json& results,
+                         const report::ResultsRecord& record, report::AnswerBox& box)>;
 
-  /// @throws std::invalid_argument when a required part is missing.
-  StudyEntry(std::string_view study, std::string_view summary, Loader load, SectionSchema schema,
-             SectionCheck check, ReportSections report, report::StudyAnswer answer = nullptr,
-             report::IndexFigure index_figure = {});
+  std::type_index spec_type;  ///< the spec its run takes
+  std::string_view summary;   ///< one line for --help
+  MakeRun make_run = nullptr;
+  /// The study's sections of its case page.
+  NamedSections report;
+  /// What binds its answer and what the case assumes, on page 1 (and its key picture);
+  /// empty: none.
+  NamedAnswer answer;
+  /// Its figure over all its cases on the index page (none when `draw` is null).
+  report::IndexFigure index_figure;
+};
+
+/// One study kind, the one record of it the registry holds (nothing else dispatches on the
+/// study name): its loader record (name, case loader, results.json section's schema and
+/// strict reader: app/study_loaders.cpp, the one list of studies) and its parts (the
+/// StudyRun a loaded case is solved by, the report sections, the answer lines and the index
+/// figure: app/<study>_pipeline.cpp). Every part but the answer lines and the index figure
+/// is required (a null one is an error at registration).
+struct StudyEntry {
+  /// @throws std::invalid_argument when a required part is missing or the parts' run takes
+  /// another spec than the loader reads.
+  StudyEntry(const StudyLoader& loader, const StudyParts& parts);
+
+  /// Reads the study's keys from the root mapping (every error into root.diag()) and
+  /// returns the run of the case; nullptr when root.diag() holds an error.
+  std::unique_ptr<StudyRun> load(cases::Map& root) const;
 
   std::string_view study;    ///< "placement", "pendulum", "throwing", "time_optimal"
   std::string_view summary;  ///< one line for --help
-  /// Reads the study's keys from the root mapping (every error into root.diag()).
-  Loader load;
   /// The JSON Schema of results[study] (results.schema.json holds it).
-  SectionSchema section_schema;
+  StudyLoader::SectionSchema section_schema;
   /// Reads results[study] of a whole results.json strictly into the typed section.
   /// @throws report::ResultsError naming the JSON pointer of the first problem.
-  SectionCheck check_section;
+  StudyLoader::SectionCheck check_section;
   /// The study's sections of its case page.
   ReportSections report;
   /// What binds its answer and what the case assumes, on page 1 (and its key picture).
   report::StudyAnswer answer = nullptr;
   /// Its figure over all its cases on the index page (none when `draw` is null).
   report::IndexFigure index_figure;
+
+ private:
+  StudyLoader::Load load_spec_;
+  StudyParts::MakeRun make_run_;
 };
+
+/// The registry's records: each loader of `loaders` with the one of `parts` whose run takes
+/// its spec, in the order of `loaders`.
+/// @throws std::logic_error naming the study when a loader has no parts or parts have no
+/// loader.
+std::vector<StudyEntry> with_parts(const std::vector<StudyLoader>& loaders,
+                                   const std::vector<StudyParts>& parts);
 
 /// Every study armstudy knows.
 const std::vector<StudyEntry>& study_registry();

@@ -536,17 +536,11 @@ Section PlacementRun::section() const {
   return j;
 }
 
-std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
-  pl::Spec spec = cases::load_placement(root);
-  if (!root.diag().empty()) return nullptr;
-  return std::make_unique<PlacementRun>(std::move(spec));
-}
-
 }  // namespace
 
-StudyEntry placement_entry() {
-  return study_entry<pl::ResultsSection>(
-      "placement", "energy-optimal root location of a 2-link arm for a straight-line task", &load,
+StudyParts placement_parts() {
+  return study_parts<PlacementRun>(
+      "energy-optimal root location of a 2-link arm for a straight-line task",
       &report::placement_sections, &report::placement_answer,
       {"placement_root_loci.svg", "Optimal root locations across the placement cases",
        "optimal root locations of every placement case",

@@ -1,6 +1,6 @@
 #pragma once
-/// Builds a study's registry record from its typed results.json section: the section's
-/// schema and strict reader come from the Section's `fields` (report/results_fields.hpp).
+/// What a study's pipeline (app/<study>_pipeline.cpp) builds its StudyRun and its registry
+/// parts with.
 
 #include "app/pipeline.hpp"
 #include "report/results_fields.hpp"
@@ -14,6 +14,8 @@ namespace armstudy::app {
 template <class Spec, class Result, class Section>
 class TypedStudyRun : public StudyRun {
  public:
+  using SpecType = Spec;
+  using SectionType = Section;
   explicit TypedStudyRun(Spec spec) : spec_(std::move(spec)) {}
   std::string message() const override { return result_.message; }
   nlohmann::json results() const final { return report::to_json(section()); }
@@ -26,7 +28,7 @@ class TypedStudyRun : public StudyRun {
 };
 
 /// A study's own sections of its case page, from its typed results.json section (read once
-/// from results[study] by study_entry) and the shared record (frames, checks).
+/// from results[study] by the registry) and the shared record (frames, checks).
 template <class Section>
 using TypedSections = void (*)(const Section& section, const report::ResultsRecord& record,
                                report::FigureWriter& figures, report::CasePage& page);
@@ -35,31 +37,36 @@ template <class Section>
 using TypedAnswer = void (*)(const Section& section, const report::ResultsRecord& record,
                              report::AnswerBox& box);
 
-/// The record of `study`, whose results.json section is `Section` (its answer-box lines and
-/// index figure optional). The study name is spelled here once: the section's schema, its
-/// strict reader and the report parts' typed section all read results[study].
-template <class Section>
-StudyEntry study_entry(std::string_view study, std::string_view summary, StudyEntry::Loader load,
-                       TypedSections<Section> sections, TypedAnswer<Section> answer = nullptr,
+/// A study's parts (app/pipeline.hpp): its cases are solved by `Run` (a StudyRun made from
+/// the study's spec, e.g. a TypedStudyRun, whose results.json section is Run::SectionType);
+/// its report parts receive that section, read once from results[study]; its answer-box
+/// lines and index figure optional.
+template <class Run>
+StudyParts study_parts(std::string_view summary, TypedSections<typename Run::SectionType> sections,
+                       TypedAnswer<typename Run::SectionType> answer = nullptr,
                        report::IndexFigure index_figure = {}) {
-  const std::string name(study);
-  ReportSections report;
+  using Spec = typename Run::SpecType;
+  using Section = typename Run::SectionType;
+  StudyParts parts{typeid(Spec),
+                   summary,
+                   [](std::any spec) -> std::unique_ptr<StudyRun> {
+                     return std::make_unique<Run>(std::any_cast<Spec>(std::move(spec)));
+                   },
+                   {},
+                   {},
+                   index_figure};
   if (sections)
-    report = [name, sections](const nlohmann::json& results, report::FigureWriter& figures,
-                              report::CasePage& page) {
-      sections(report::read_section<Section>(results, name), report::read_record(results), figures,
+    parts.report = [sections](const std::string& study, const nlohmann::json& results,
+                              report::FigureWriter& figures, report::CasePage& page) {
+      sections(report::read_section<Section>(results, study), report::read_record(results), figures,
                page);
     };
-  report::StudyAnswer lines;
   if (answer)
-    lines = [name, answer](const nlohmann::json& results, const report::ResultsRecord& record,
-                           report::AnswerBox& box) {
-      answer(report::read_section<Section>(results, name), record, box);
+    parts.answer = [answer](const std::string& study, const nlohmann::json& results,
+                            const report::ResultsRecord& record, report::AnswerBox& box) {
+      answer(report::read_section<Section>(results, study), record, box);
     };
-  return StudyEntry(
-      study, summary, load, [] { return report::json_schema<Section>(); },
-      [name](const nlohmann::json& results) { (void)report::read_section<Section>(results, name); },
-      std::move(report), std::move(lines), index_figure);
+  return parts;
 }
 
 }  // namespace armstudy::app

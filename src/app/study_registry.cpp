@@ -1,27 +1,20 @@
+// The program's study registry: the one list of studies (app/study_loaders.cpp), each
+// extended with its run and report parts from its pipeline file.
 #include "app/pipeline.hpp"
 
 namespace armstudy::app {
 
-// each study's pipeline file (src/app/<study>_pipeline.cpp) defines its entry
-StudyEntry placement_entry();
-StudyEntry pendulum_entry();
-StudyEntry throwing_entry();
-StudyEntry time_optimal_entry();
+// each study's pipeline file (src/app/<study>_pipeline.cpp) defines its parts
+StudyParts placement_parts();
+StudyParts pendulum_parts();
+StudyParts throwing_parts();
+StudyParts time_optimal_parts();
 
 const std::vector<StudyEntry>& study_registry() {
-  static const std::vector<StudyEntry> registry = {
-      placement_entry(),
-      pendulum_entry(),
-      throwing_entry(),
-      time_optimal_entry(),
-  };
+  static const std::vector<StudyEntry> registry =
+      with_parts(study_loaders(),
+                 {placement_parts(), pendulum_parts(), throwing_parts(), time_optimal_parts()});
   return registry;
-}
-
-const StudyEntry* find_study(std::string_view study) {
-  for (const StudyEntry& e : study_registry())
-    if (e.study == study) return &e;
-  return nullptr;
 }
 
 std::vector<report::IndexStudy> index_studies() {

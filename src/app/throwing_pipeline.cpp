@@ -610,17 +610,12 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
   std::optional<st::VelocityProfile> warm_;  ///< a sensitivity step's start (warm_start)
 };
 
-std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
-  return std::make_unique<ThrowingRun>(cases::load_throwing_spec(root));
-}
-
 }  // namespace
 
-StudyEntry throwing_entry() {
-  return study_entry<st::ThrowingResultsSection>(
-      "throwing",
+StudyParts throwing_parts() {
+  return study_parts<ThrowingRun>(
       "tray arm with a passive joint: energy-saving throw by IDP and SLSQP (Sato et al. Sec. 4)",
-      &load, &report::throwing_sections, &report::throwing_answer);
+      &report::throwing_sections, &report::throwing_answer);
 }
 
 }  // namespace armstudy::app

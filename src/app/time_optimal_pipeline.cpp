@@ -306,19 +306,12 @@ std::vector<report::ExportRecord> TimeOptimalRun::write_exports(const std::files
   return out;
 }
 
-std::unique_ptr<StudyRun> load(cases::Map& root, const cases::CaseInfo&) {
-  to::Spec spec = cases::load_time_optimal(root);
-  if (!root.diag().empty()) return nullptr;
-  return std::make_unique<TimeOptimalRun>(std::move(spec));
-}
-
 }  // namespace
 
-StudyEntry time_optimal_entry() {
-  return study_entry<to::ResultsSection>(
-      "time_optimal",
+StudyParts time_optimal_parts() {
+  return study_parts<TimeOptimalRun>(
       "fastest motion along a given tip path under joint velocity, torque and acceleration limits",
-      &load, &report::time_optimal_sections, &report::time_optimal_answer);
+      &report::time_optimal_sections, &report::time_optimal_answer);
 }
 
 }  // namespace armstudy::app

@@ -240,46 +240,81 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
   return d;
 }
 
-std::string point_text(const json& row) {
+std::string point_text(const report::SweepRow& row) {
   std::string s;
-  if (row.contains("parameters"))
-    for (const auto& [k, v] : row["parameters"].items())
-      s += (s.empty() ? "" : ", ") + k + " = " + (v.is_string() ? v.get<std::string>() : v.dump());
+  for (const auto& [k, v] : row.parameters)
+    s += (s.empty() ? "" : ", ") + k + " = " + v.value_or("null");
   return s;
 }
 
-// the sweep tables (app::sweep_json of each run) row by row by case id
-// (over 60 lines, kept whole: the sweep tables' rows matched and compared in one pass)
+// the unit of figure `f` in table `t` ("" when it has none)
+std::string unit_in(const report::SweepTable& t, const std::string& f) {
+  const auto it = t.units.find(f);
+  return it == t.units.end() ? std::string() : it->second;
+}
+
+// figure `f` of `row` (NaN when the row has no number for it); none when the row has no
+// such column or is none
+std::optional<double> figure_in(const report::SweepRow* row, const std::string& f) {
+  if (!row || !row->key_figures.count(f)) return std::nullopt;
+  return row->key_figures.at(f).value_or(NAN);
+}
+
+// the key figures of one case's rows in the two tables (x: base, y: new; both there) into
+// `row`: how many changed and the one that changed most (its relative change is the score)
+void compare_row_figures(const report::SweepTable& tb, const report::SweepTable& tn,
+                         const report::SweepRow& x, const report::SweepRow& y,
+                         const std::set<std::string>& ignored, report::SweepRowDiff* row) {
+  std::set<std::string> figs;
+  for (const auto* r : {&x, &y})
+    for (const auto& [k, v] : r->key_figures) figs.insert(k);
+  double best = -1;
+  for (const auto& f : figs) {
+    if (ignored.count(f)) continue;
+    const std::optional<double> a = figure_in(&x, f), b = figure_in(&y, f);
+    if (a && b && same_number(*a, *b)) continue;
+    ++row->figures_changed;
+    double rel = INFINITY;
+    if (a && b && std::isfinite(*a) && std::isfinite(*b) && *a != 0)
+      rel = std::abs(*b - *a) / std::abs(*a);
+    if (rel > best) {
+      best = rel;
+      row->figure = f;
+      row->unit = unit_in(b ? tn : tb, f);
+      row->base = a;
+      row->now = b;
+    }
+  }
+  if (best >= 0) row->score = std::max(row->score, best);
+}
+
+// the sweep tables (cli::sweep_table of each run) row by row by case id
 void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutput>& now,
                  report::RunDiff* out) {
-  const json tb = sweep_json(base), tn = sweep_json(now);
-  out->sweep_rows_base = tb["rows"].size();
-  out->sweep_rows_new = tn["rows"].size();
-  if (tb["rows"].empty() && tn["rows"].empty()) return;
+  const report::SweepTable tb = sweep_table(base), tn = sweep_table(now);
+  out->sweep_rows_base = tb.rows.size();
+  out->sweep_rows_new = tn.rows.size();
+  if (tb.rows.empty() && tn.rows.empty()) return;
   for (const auto* run : {&now, &base})
     for (const auto& c : *run)
       if (out->sweep_name.empty() && c.record.case_info.sweep)
         out->sweep_name = c.record.case_info.sweep->name;
-  std::map<std::string, const json*> rb, rn;
-  for (const auto& r : tb["rows"]) rb[r["case"].get<std::string>()] = &r;
-  for (const auto& r : tn["rows"]) rn[r["case"].get<std::string>()] = &r;
+  std::map<std::string, const report::SweepRow*> rb, rn;
+  for (const auto& r : tb.rows) rb[r.case_name] = &r;
+  for (const auto& r : tn.rows) rn[r.case_name] = &r;
   std::set<std::string> names;
   for (const auto& [k, v] : rb) names.insert(k);
   for (const auto& [k, v] : rn) names.insert(k);
   std::map<std::string, const CaseDiff*> cases;
   for (const auto& c : out->cases) cases[c.name] = &c;
-  auto units_of = [](const json& t, const std::string& f) {
-    return t.contains("units") && t["units"].contains(f) ? t["units"][f].get<std::string>()
-                                                         : std::string();
-  };
   for (const auto& name : names) {
-    const json* x = rb.count(name) ? rb[name] : nullptr;
-    const json* y = rn.count(name) ? rn[name] : nullptr;
+    const report::SweepRow* x = rb.count(name) ? rb[name] : nullptr;
+    const report::SweepRow* y = rn.count(name) ? rn[name] : nullptr;
     report::SweepRowDiff row;
     row.case_name = name;
     row.point = point_text(y ? *y : *x);
-    row.base_status = x ? (*x)["status"].get<std::string>() : "";
-    row.new_status = y ? (*y)["status"].get<std::string>() : "";
+    row.base_status = x ? x->status : "";
+    row.new_status = y ? y->status : "";
     row.beyond = cases.count(name) && cases[name]->beyond();
     if (!x || !y || row.base_status != row.new_status) row.score = INFINITY;
     // figures the tolerances ignore (wall-clock run times) rank nothing
@@ -287,33 +322,8 @@ void diff_sweeps(const std::vector<CaseOutput>& base, const std::vector<CaseOutp
     if (cases.count(name))
       for (const auto& f : cases[name]->figures)
         if (f.tolerance.ignore) ignored.insert(f.name);
-    std::set<std::string> figs;  // a row of one run only ranks as infinite, with no figure
-    if (x && y)
-      for (const auto& [k, v] : (*x)["key_figures"].items()) figs.insert(k);
-    if (x && y)
-      for (const auto& [k, v] : (*y)["key_figures"].items()) figs.insert(k);
-    double best = -1;
-    for (const auto& f : figs) {
-      if (ignored.count(f)) continue;
-      std::optional<double> a, b;
-      if (x && (*x)["key_figures"].contains(f))
-        a = (*x)["key_figures"][f].is_number() ? (*x)["key_figures"][f].get<double>() : NAN;
-      if (y && (*y)["key_figures"].contains(f))
-        b = (*y)["key_figures"][f].is_number() ? (*y)["key_figures"][f].get<double>() : NAN;
-      if (a && b && same_number(*a, *b)) continue;
-      ++row.figures_changed;
-      double rel = INFINITY;
-      if (a && b && std::isfinite(*a) && std::isfinite(*b) && *a != 0)
-        rel = std::abs(*b - *a) / std::abs(*a);
-      if (rel > best) {
-        best = rel;
-        row.figure = f;
-        row.unit = units_of(y && b ? tn : tb, f);
-        row.base = a;
-        row.now = b;
-      }
-    }
-    if (best >= 0) row.score = std::max(row.score, best);
+    // a row of one run only ranks as infinite, with no figure
+    if (x && y) compare_row_figures(tb, tn, *x, *y, ignored, &row);
     if (row.figures_changed == 0 && row.score == 0 && row.base_status == row.new_status) continue;
     out->sweep.push_back(std::move(row));
   }

@@ -603,8 +603,8 @@ void report_missing_cases(const std::vector<armstudy::cli::CaseOutput>& outputs,
 int write_merged_pages(const std::vector<armstudy::cli::CaseOutput>& outputs,
                        const std::string& out) {
   try {
-    const nlohmann::json table = armstudy::cli::sweep_json(outputs);
-    if (!table["rows"].empty()) {
+    const armstudy::report::SweepTable table = armstudy::cli::sweep_table(outputs);
+    if (!table.rows.empty()) {
       std::string name = "sweep";
       for (const auto& o : outputs)
         if (o.record.case_info.sweep) {

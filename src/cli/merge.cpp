@@ -73,13 +73,16 @@ std::optional<double> figure(const ResultsRecord& r, const std::string& name) {
 }  // namespace
 
 const char* run_level_file(const std::string& name) {
-  for (const char* f :
-       {"index.html", "summary.md", "junit.xml", "report.css", "sweep", "sweep.csv", "sweep.json"})
-    if (name == f) return f;
-  // each study's figure over all its cases on the index page (e.g. placement_root_loci.svg)
-  for (const app::StudyEntry& e : app::study_registry())
-    if (!e.index_figure.file.empty() && name == e.index_figure.file)
-      return e.index_figure.file.data();
+  // every run-level output (report::run_level_outputs), each study's figure over all its
+  // cases on the index page included (e.g. placement_root_loci.svg)
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> figures;
+    for (const app::StudyEntry& e : app::study_registry())
+      if (!e.index_figure.file.empty()) figures.emplace_back(e.index_figure.file);
+    return report::run_level_outputs(figures);
+  }();
+  for (const std::string& f : names)
+    if (name == f) return f.c_str();
   return nullptr;
 }
 
@@ -341,14 +344,15 @@ std::string junit_xml(const std::vector<CaseOutput>& cases) {
 }
 
 namespace {
-struct SweepTable {
+// the sweep's cases (sorted by case id), its parameters (sorted) and its key figures' columns
+struct SweepColumns {
   std::vector<std::string> params;
   std::vector<std::pair<std::string, std::string>> figures;
   std::vector<const CaseOutput*> rows;
 };
 
-SweepTable sweep_table(const std::vector<CaseOutput>& cases) {
-  SweepTable t;
+SweepColumns sweep_columns(const std::vector<CaseOutput>& cases) {
+  SweepColumns t;
   for (const auto& c : cases) {
     if (!c.record.case_info.sweep) continue;
     t.rows.push_back(&c);
@@ -362,21 +366,44 @@ SweepTable sweep_table(const std::vector<CaseOutput>& cases) {
 }
 }  // namespace
 
+report::SweepTable sweep_table(const std::vector<CaseOutput>& cases) {
+  const SweepColumns t = sweep_columns(cases);
+  report::SweepTable table;
+  table.parameters = t.params;
+  for (const auto& [n, u] : t.figures) {
+    table.figures.push_back(n);
+    table.units[n] = u;
+  }
+  for (const auto* c : t.rows) {
+    const auto& r = c->record;
+    report::SweepRow row;
+    row.case_name = r.case_info.name;
+    row.status = case_passed(r) ? "ok" : "failed";
+    const auto& point = r.case_info.sweep->point;
+    for (const auto& p : t.params)
+      row.parameters[p] = point.count(p) ? std::optional(point.at(p)) : std::nullopt;
+    for (const auto& [n, u] : t.figures) row.key_figures[n] = figure(r, n);
+    table.rows.push_back(std::move(row));
+  }
+  return table;
+}
+
 std::string sweep_csv(const std::vector<CaseOutput>& cases) {
-  const SweepTable t = sweep_table(cases);
+  const report::SweepTable t = sweep_table(cases);
   if (t.rows.empty()) return "";
   std::ostringstream csv;
   csv << "case,status";
-  for (const auto& p : t.params) csv << "," << csv_cell(p);
-  for (const auto& [n, u] : t.figures) csv << "," << csv_cell(u.empty() ? n : n + " (" + u + ")");
+  for (const auto& p : t.parameters) csv << "," << csv_cell(p);
+  for (const auto& n : t.figures) {
+    const std::string& u = t.units.at(n);
+    csv << "," << csv_cell(u.empty() ? n : n + " (" + u + ")");
+  }
   csv << "\n";
-  for (const auto* c : t.rows) {
-    const auto& r = c->record;
-    csv << csv_cell(r.case_info.name) << "," << (case_passed(r) ? "ok" : "failed");
-    const auto& point = r.case_info.sweep->point;
-    for (const auto& p : t.params) csv << "," << csv_cell(point.count(p) ? point.at(p) : "");
-    for (const auto& [n, u] : t.figures) {
-      const auto v = figure(r, n);
+  for (const auto& row : t.rows) {
+    csv << csv_cell(row.case_name) << "," << row.status;
+    for (const auto& p : t.parameters) csv << "," << csv_cell(row.parameters.at(p).value_or(""));
+    for (const auto& n : t.figures) {
+      const auto& v = row.key_figures.at(n);
       csv << "," << (v ? report::format_sig(*v, 10) : "");
     }
     csv << "\n";
@@ -385,30 +412,7 @@ std::string sweep_csv(const std::vector<CaseOutput>& cases) {
 }
 
 json sweep_json(const std::vector<CaseOutput>& cases) {
-  const SweepTable t = sweep_table(cases);
-  json rows = json::array();
-  for (const auto* c : t.rows) {
-    const auto& r = c->record;
-    json row = {{"case", r.case_info.name}, {"status", case_passed(r) ? "ok" : "failed"}};
-    json params = json::object();
-    const auto& point = r.case_info.sweep->point;
-    for (const auto& p : t.params) params[p] = point.count(p) ? json(point.at(p)) : json();
-    row["parameters"] = params;
-    json figs = json::object();
-    for (const auto& [n, u] : t.figures) {
-      const auto v = figure(r, n);
-      figs[n] = v ? json(*v) : json();
-    }
-    row["key_figures"] = figs;
-    rows.push_back(row);
-  }
-  json units = json::object();
-  json order = json::array();
-  for (const auto& [n, u] : t.figures) {
-    units[n] = u;
-    order.push_back(n);
-  }
-  return {{"parameters", t.params}, {"figures", order}, {"units", units}, {"rows", rows}};
+  return report::to_json(sweep_table(cases));
 }
 
 size_t write_merged(const std::vector<CaseOutput>& cases, const fs::path& out_dir) {

@@ -13,6 +13,7 @@
 
 #include "cli/sweep_manifest.hpp"
 #include "report/results_record.hpp"
+#include "report/sweep_table.hpp"
 
 namespace armstudy::cli {
 
@@ -70,9 +71,9 @@ size_t apply_manifest(const SweepManifest& manifest, const std::filesystem::path
 std::string results_problem(const nlohmann::json& results);
 
 /// The run-level file or folder that an output folder's entry `name` would collide with
-/// (index.html, summary.md, junit.xml, report.css, sweep, sweep.csv, sweep.json, and each
-/// study's index-page figure, e.g. placement_root_loci.svg), or nullptr: no case may have
-/// such a name.
+/// (report::run_level_outputs: index.html, summary.md, junit.xml, report.css, sweep,
+/// sweep.csv, sweep.json, and each registered study's index-page figure, e.g.
+/// placement_root_loci.svg), or nullptr: no case may have such a name.
 const char* run_level_file(const std::string& name);
 
 /// True if the case ended as its file expects (solved, unless it says `expect: unsolvable`)
@@ -86,9 +87,10 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
 /// JUnit XML: one testsuite per study, a testcase "solve" per case and one per check.
 std::string junit_xml(const std::vector<CaseOutput>& cases);
 
-/// Sweep tables (CSV and JSON) of the cases that carry a sweep point; empty if none. The
-/// JSON: {"parameters": [path...], "figures": [key figure...], "units": {figure: unit},
-/// "rows": [{case, status ("ok"/"failed"), parameters{path: value}, key_figures{name: x}}]}.
+/// The sweep table of the cases that carry a sweep point (no rows if none): one row per
+/// case, sorted by case id (report/sweep_table.hpp).
+report::SweepTable sweep_table(const std::vector<CaseOutput>& cases);
+/// The sweep table as sweep.csv ("" when no case carries a sweep point) and as sweep.json.
 std::string sweep_csv(const std::vector<CaseOutput>& cases);
 nlohmann::json sweep_json(const std::vector<CaseOutput>& cases);
 

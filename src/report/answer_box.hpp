@@ -37,7 +37,7 @@ struct AnswerBox {
 /// from its typed section of `results`; it may name its key picture (one of record.frames),
 /// else the box takes the first locus, else the first strip.
 /// @throws ResultsError when results[study] is not the study's section.
-/// (app::study_entry reads the section once and hands it to the study's typed function.)
+/// (app::study_parts reads the section once and hands it to the study's typed function.)
 using StudyAnswer =
     std::function<void(const nlohmann::json& results, const ResultsRecord& record, AnswerBox& box)>;
 

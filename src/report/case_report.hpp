@@ -23,7 +23,7 @@ class FigureWriter;
 struct ResultsRecord;
 
 /// A study's own sections of its page, from the whole results.json (its registry record,
-/// app::StudyEntry::report; report/study_sections.hpp; app::study_entry reads the typed
+/// app::StudyEntry::report; report/study_sections.hpp; app::study_parts reads the typed
 /// section once and hands it to the study's function).
 using StudySections =
     std::function<void(const nlohmann::json& results, FigureWriter& figures, CasePage& page)>;

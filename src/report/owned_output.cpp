@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/sweep_table.hpp"
+
 namespace armstudy::report {
 namespace fs = std::filesystem;
 
@@ -80,8 +82,7 @@ bool sweep_json_is_ours(const fs::path& p) {
   std::string text;
   if (!read_head(p, kResultsCap + 1, &text) || text.size() > kResultsCap) return false;
   const auto j = nlohmann::json::parse(text, nullptr, false);
-  return j.is_object() && j.size() == 4 && j.contains("parameters") && j.contains("figures") &&
-         j.contains("units") && j.contains("rows");
+  return has_sweep_table_keys(j);
 }
 
 // an SVG figure of armstudy's plots: cairo's header, as report/plot.cpp writes it (and

@@ -215,14 +215,17 @@ struct Reader {
       x.reset();
       return;
     }
-    x.emplace();
+    // T{} rather than emplace(): clang 14 takes a nested struct with default member
+    // initializers for not default-constructible in emplace's constraint, and the fuzz
+    // build (clang) reads every study's section
+    x = T{};
     read(*it, path + "/" + key, *x);
   }
   template <class T>
   void inline_if(bool present, std::optional<T>& x) {
     x.reset();
     if (!present) return;
-    x.emplace();
+    x = T{};
     fields(*this, *x);
   }
   template <class T>
@@ -391,6 +394,16 @@ T from_json(const nlohmann::json& j, const std::string& path = "") {
   T x{};
   fields_detail::read(j, path, x);
   return x;
+}
+
+/// Every key a T's JSON object may hold (its optional and inline keys included).
+template <class T>
+std::set<std::string> field_keys() {
+  std::set<std::string> keys;
+  fields_detail::KeyCollector c{&keys};
+  T probe{};
+  fields(c, probe);
+  return keys;
 }
 
 /// The JSON Schema (2020-12) of T's JSON form: every key required unless optional, no

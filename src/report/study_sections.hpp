@@ -1,6 +1,6 @@
 #pragma once
 /// Per-study parts of a case page: each gets its study's section of results.json as the
-/// study's typed result (read once by app::study_entry through report::read_section,
+/// study's typed result (read once by app::study_parts through report::read_section,
 /// studies/<study>/results_section.hpp; a section that is not the study's is a ResultsError
 /// naming the key) and adds sections
 /// (method, results tables, plots, notes on the source document) to the page. A value that
@@ -36,7 +36,7 @@ void throwing_sections(const studies::ThrowingResultsSection& th, const ResultsR
 /// A time-optimal case's typed section -> page sections.
 void time_optimal_sections(const studies::time_optimal::ResultsSection& to,
                            const ResultsRecord& record, FigureWriter& figures, CasePage& page);
-/// Each study's lines of its answer box (app::study_entry hands them the typed section).
+/// Each study's lines of its answer box (app::study_parts hands them the typed section).
 void placement_answer(const studies::placement::ResultsSection& pl, const ResultsRecord& record,
                       AnswerBox& box);
 void pendulum_answer(const studies::PendulumResultsSection& pe, const ResultsRecord& record,

@@ -13,32 +13,32 @@
 namespace armstudy::report {
 namespace {
 namespace fs = std::filesystem;
-using nlohmann::json;
+
+using Value = std::optional<std::string>;
 
 // a parameter value as a number, NaN when it is not one
-double as_number(const json& v) {
-  if (v.is_number()) return v.get<double>();
-  if (!v.is_string()) return NAN;
-  const std::string s = v.get<std::string>();
+double as_number(const Value& v) {
+  if (!v) return NAN;
+  const std::string& s = *v;
   char* end = nullptr;
   const double x = std::strtod(s.c_str(), &end);
   return (!s.empty() && end == s.c_str() + s.size()) ? x : NAN;
 }
 
-std::string value_text(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+std::string value_text(const Value& v) { return v.value_or("null"); }
 
 }  // namespace
 
 namespace {
 
 // the x axis: the first parameter with a number in every row; -1 when none has
-int x_axis_of(const json& rows, const std::vector<std::string>& params) {
+int x_axis_of(const std::vector<SweepRow>& rows, const std::vector<std::string>& params) {
   int x_axis = -1;
   for (size_t a = 0; a < params.size() && x_axis < 0; ++a) {
     bool numeric = !rows.empty();
     for (const auto& r : rows)
-      numeric = numeric && r["parameters"].contains(params[a]) &&
-                std::isfinite(as_number(r["parameters"][params[a]]));
+      numeric = numeric && r.parameters.count(params[a]) &&
+                std::isfinite(as_number(r.parameters.at(params[a])));
     if (numeric) x_axis = static_cast<int>(a);
   }
   return x_axis;
@@ -46,25 +46,22 @@ int x_axis_of(const json& rows, const std::vector<std::string>& params) {
 
 // the key figures with a number in a passing row, in the studies' own order of key figures
 // (the first is the headline), else by name; *failed counts the rows that did not pass
-std::vector<std::string> figure_names_of(const json& table, const json& rows, int* failed_rows) {
+std::vector<std::string> figure_names_of(const SweepTable& table, int* failed_rows) {
   int& failed = *failed_rows;
   failed = 0;
   std::set<std::string> numeric;
-  for (const auto& r : rows) {
-    if (r.value("status", "") != "ok") {
+  for (const auto& r : table.rows) {
+    if (r.status != "ok") {
       ++failed;
       continue;
     }
-    if (r.contains("key_figures"))
-      for (const auto& [k, v] : r["key_figures"].items())
-        if (v.is_number()) numeric.insert(k);
+    for (const auto& [k, v] : r.key_figures)
+      if (v) numeric.insert(k);
   }
   // in the studies' own order of key figures (the first is the headline), else by name
   std::vector<std::string> figure_names;
-  if (table.contains("figures"))
-    for (const auto& n : table["figures"])
-      if (n.is_string() && numeric.count(n.get<std::string>()))
-        figure_names.push_back(n.get<std::string>());
+  for (const auto& n : table.figures)
+    if (numeric.count(n)) figure_names.push_back(n);
   for (const auto& n : numeric)
     if (std::find(figure_names.begin(), figure_names.end(), n) == figure_names.end())
       figure_names.push_back(n);
@@ -72,16 +69,17 @@ std::vector<std::string> figure_names_of(const json& table, const json& rows, in
 }
 
 // each parameter and its values (at most 14 named)
-Table axes_table(const json& rows, const std::vector<std::string>& params) {
+Table axes_table(const std::vector<SweepRow>& rows, const std::vector<std::string>& params) {
   Table axes;
   axes.header = {"parameter", "values"};
   for (const auto& p : params) {
     std::set<std::string> seen;
     std::vector<std::pair<double, std::string>> values;
     for (const auto& r : rows) {
-      if (!r["parameters"].contains(p)) continue;
-      const std::string t = value_text(r["parameters"][p]);
-      if (seen.insert(t).second) values.emplace_back(as_number(r["parameters"][p]), t);
+      const auto it = r.parameters.find(p);
+      if (it == r.parameters.end()) continue;
+      const std::string t = value_text(it->second);
+      if (seen.insert(t).second) values.emplace_back(as_number(it->second), t);
     }
     std::sort(values.begin(), values.end());
     std::string list;
@@ -99,29 +97,28 @@ Table axes_table(const json& rows, const std::vector<std::string>& params) {
 
 // the key figure `name` over the parameter x_axis, one curve per combination of the other
 // parameters (*curve_count of them), points sorted along x
-LinePlot key_figure_plot(const json& table, const json& rows,
-                         const std::vector<std::string>& params, int x_axis,
-                         const std::string& name, size_t* curve_count) {
+LinePlot key_figure_plot(const SweepTable& table, int x_axis, const std::string& name,
+                         size_t* curve_count) {
+  const std::vector<std::string>& params = table.parameters;
   const std::string& xp = params[x_axis];
   std::map<std::string, std::vector<std::pair<double, double>>> curves;
-  for (const auto& r : rows) {
-    if (r.value("status", "") != "ok" || !r["key_figures"].contains(name)) continue;
+  for (const auto& r : table.rows) {
+    if (r.status != "ok" || !r.key_figures.count(name)) continue;
     std::string label;
     for (size_t a = 0; a < params.size(); ++a) {
-      if (static_cast<int>(a) == x_axis || !r["parameters"].contains(params[a])) continue;
+      if (static_cast<int>(a) == x_axis || !r.parameters.count(params[a])) continue;
       label +=
-          (label.empty() ? "" : ", ") + params[a] + " = " + value_text(r["parameters"][params[a]]);
+          (label.empty() ? "" : ", ") + params[a] + " = " + value_text(r.parameters.at(params[a]));
     }
-    const json& v = r["key_figures"][name];
-    curves[label].emplace_back(as_number(r["parameters"][xp]),
-                               v.is_number() ? v.get<double>() : NAN);
+    const auto x = r.parameters.find(xp);
+    curves[label].emplace_back(as_number(x == r.parameters.end() ? Value() : x->second),
+                               r.key_figures.at(name).value_or(NAN));
   }
   LinePlot plot;
   plot.title = name;
   plot.x_label = xp;
-  std::string unit;
-  if (table.contains("units") && table["units"].contains(name) && table["units"][name].is_string())
-    unit = table["units"][name].get<std::string>();
+  const auto u = table.units.find(name);
+  const std::string unit = u == table.units.end() ? std::string() : u->second;
   plot.y_label = unit.empty() ? name : name + " (" + unit + ")";
   plot.height_pt = 360;
   const std::vector<Rgb> palette = palette_colours();
@@ -141,29 +138,9 @@ LinePlot key_figure_plot(const json& table, const json& rows,
   return plot;
 }
 
-}  // namespace
-
-// the sweep report: the sweep and its axes, then every key figure over the first numeric
-// parameter (over 60 lines: the page's two sections, in order)
-int write_sweep_report(const fs::path& dir, const json& table, const std::string& title) {
-  fs::create_directories(dir);
-  const json& rows = table.contains("rows") ? table["rows"] : json::array();
-  std::vector<std::string> params;
-  if (table.contains("parameters"))
-    for (const auto& p : table["parameters"]) params.push_back(p.get<std::string>());
-
-  const int x_axis = x_axis_of(rows, params);
-
-  CasePage page;
-  page.title = title;
-  page.study = "sweep";
-  int failed = 0;
-  const std::vector<std::string> figure_names = figure_names_of(table, rows, &failed);
-  page.status = failed == 0 ? "solved" : "failed";
-  page.message = std::to_string(rows.size()) + " case(s) over " + std::to_string(params.size()) +
-                 " parameter(s); " + std::to_string(failed) + " failed";
-  page.key_figures = {{"cases", std::to_string(rows.size())}, {"failed", std::to_string(failed)}};
-
+// the page's first section: what the sweep table holds, the parameters and their values,
+// and how many cases did not pass
+Section about_section(const SweepTable& table, int failed) {
   Section about;
   about.id = "sweep";
   about.heading = "The sweep";
@@ -172,12 +149,36 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
       "Each row of sweep.csv (and sweep.json) is one case: its parameter values and "
       "the key figures of its results.json. The plots below draw every key figure "
       "over the first numeric parameter, one curve per combination of the others.");
-  about.table(axes_table(rows, params));
+  about.table(axes_table(table.rows, table.parameters));
   if (failed > 0)
     about.note(std::to_string(failed) +
                " case(s) did not pass (unsolvable or a failed check): "
                "summary.md names them; the plots leave them out.");
-  page.sections.push_back(std::move(about));
+  return about;
+}
+
+}  // namespace
+
+// the sweep report: the sweep and its axes, then every key figure over the first numeric
+// parameter
+int write_sweep_report(const fs::path& dir, const SweepTable& table, const std::string& title) {
+  fs::create_directories(dir);
+  const std::vector<SweepRow>& rows = table.rows;
+  const std::vector<std::string>& params = table.parameters;
+
+  const int x_axis = x_axis_of(rows, params);
+
+  CasePage page;
+  page.title = title;
+  page.study = "sweep";
+  int failed = 0;
+  const std::vector<std::string> figure_names = figure_names_of(table, &failed);
+  page.status = failed == 0 ? "solved" : "failed";
+  page.message = std::to_string(rows.size()) + " case(s) over " + std::to_string(params.size()) +
+                 " parameter(s); " + std::to_string(failed) + " failed";
+  page.key_figures = {{"cases", std::to_string(rows.size())}, {"failed", std::to_string(failed)}};
+
+  page.sections.push_back(about_section(table, failed));
 
   int plots = 0;
   Section figs;
@@ -196,7 +197,7 @@ int write_sweep_report(const fs::path& dir, const json& table, const std::string
     FigureWriter writer(dir);
     for (const std::string& name : figure_names) {
       size_t curves = 0;
-      const LinePlot plot = key_figure_plot(table, rows, params, x_axis, name, &curves);
+      const LinePlot plot = key_figure_plot(table, x_axis, name, &curves);
       figs.figure(writer.line(
           "sweep_" + std::to_string(plots + 1), plot,
           "The key figure " + name + " of every passing case over " + xp +

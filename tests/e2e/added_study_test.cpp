@@ -1,7 +1,9 @@
-// Adding a study is its folder and one registry record (docs/development.md, "Adding a study"): a
-// trivial study defined here, with its typed results.json section, loader, solver, checks, key
-// figures and report sections, runs through run_case like the bundled studies and gets its
-// results.json (written from and read back into its typed section) and its index.html.
+// Adding a study is its folder, one line in the list of studies and its parts in the registry
+// (docs/development.md, "Adding a study"): a trivial study defined here, with its typed
+// results.json section, loader, solver, checks, key figures and report sections, runs through
+// run_case like the bundled studies and gets its results.json (written from and read back into
+// its typed section) and its index.html. The last test checks that every registered study has
+// each step's place, and that the steps name them.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,6 +17,7 @@
 #include "app/run_case.hpp"
 #include "app/study_entry.hpp"
 #include "cases/yaml_reader.hpp"
+#include "cli/merge.hpp"
 #include "report/answer_box.hpp"
 #include "report/case_report.hpp"
 #include "report/page.hpp"
@@ -43,9 +46,21 @@ void fields(V& v, TallySection& x) {
   v("squares_m2", x.squares_m2, "k^2 for k = 1..n");
 }
 
+// src/cases/<study>_case.cpp: the case file's `tally:` keys -> the spec
+TallySpec load_tally_spec(cases::Map& root) {
+  TallySpec spec;
+  if (auto m = root.map("tally")) {
+    spec.n = m->integer_or("n", 3, 1, 1000);
+    m->finish();
+  }
+  return spec;
+}
+
 // src/app/<study>_pipeline.cpp: the study in the pipeline
 class TallyRun final : public StudyRun {
  public:
+  using SpecType = TallySpec;        // the spec it is made from (TypedStudyRun names both)
+  using SectionType = TallySection;  // its results.json section
   explicit TallyRun(TallySpec spec) : spec_(spec) {}
   studies::Status solve(const studies::ProgressFn&) override {
     section_.n = spec_.n;
@@ -71,15 +86,6 @@ class TallyRun final : public StudyRun {
   TallySection section_;
 };
 
-std::unique_ptr<StudyRun> load_tally(cases::Map& root, const cases::CaseInfo&) {
-  TallySpec spec;
-  if (auto m = root.map("tally")) {
-    spec.n = m->integer_or("n", 3, 1, 1000);
-    m->finish();
-  }
-  return std::make_unique<TallyRun>(spec);
-}
-
 // src/report/<study>_section.cpp: the study's sections, from its typed section
 void tally_sections(const TallySection& s, const report::ResultsRecord&, report::FigureWriter&,
                     report::CasePage& page) {
@@ -95,11 +101,13 @@ void tally_answer(const TallySection& s, const report::ResultsRecord&, report::A
   a.binding.push_back("nothing binds a count to " + std::to_string(s.n));
 }
 
-// src/app/study_registry.cpp: its one line (the answer lines and the index figure optional)
-const StudyEntry kTally =
-    study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections);
-const StudyEntry kTallyAnswered =
-    study_entry<TallySection>("tally", "counts", &load_tally, &tally_sections, &tally_answer);
+// src/app/study_loaders.cpp: its line in the one list of studies (the fuzz build's too)
+const StudyLoader kTallyLoader = study_loader<TallySection, &load_tally_spec>("tally");
+// src/app/<study>_pipeline.cpp: its parts (the answer lines and the index figure optional),
+// joined to its loader in src/app/study_registry.cpp by the spec its run takes
+const StudyEntry kTally(kTallyLoader, study_parts<TallyRun>("counts", &tally_sections));
+const StudyEntry kTallyAnswered(kTallyLoader,
+                                study_parts<TallyRun>("counts", &tally_sections, &tally_answer));
 
 CaseOutcome run_tally(const StudyEntry& entry, const fs::path& out) {
   const std::string yaml = "study: tally\nname: tally-case\ntally: {n: 4}\n";
@@ -113,7 +121,7 @@ CaseOutcome run_tally(const StudyEntry& entry, const fs::path& out) {
   cases::Map root(YAML::Load(yaml), diag, "");
   root.get("study");
   root.get("name");
-  c.run = entry.load(root, c.info);
+  c.run = entry.load(root);
   root.finish();
   EXPECT_TRUE(diag.empty());
   c.entry = &entry;
@@ -156,28 +164,78 @@ TEST(AddedStudy, ItsAnswerLinesComeFromItsRecord) {
   fs::remove_all(out);
 }
 
-// a study cannot be registered without its report (or any other part)
-TEST(AddedStudy, ARecordWithoutReportSectionsIsRefused) {
-  EXPECT_THROW(StudyEntry("tally", "counts", &load_tally, kTally.section_schema,
-                          kTally.check_section, nullptr),
+// a study cannot be registered without its report (or any other part), nor without the parts
+// of its spec
+TEST(AddedStudy, ARecordWithoutAPartIsRefused) {
+  EXPECT_THROW(StudyEntry(kTallyLoader, study_parts<TallyRun>("counts", nullptr)),
                std::invalid_argument);
-  EXPECT_THROW(study_entry<TallySection>("tally", "counts", &load_tally, nullptr),
+  StudyLoader no_reader = kTallyLoader;
+  no_reader.check_section = nullptr;
+  EXPECT_THROW(StudyEntry(no_reader, study_parts<TallyRun>("counts", &tally_sections)),
                std::invalid_argument);
+  StudyParts other_spec = study_parts<TallyRun>("counts", &tally_sections);
+  other_spec.spec_type = typeid(int);
+  EXPECT_THROW(StudyEntry(kTallyLoader, other_spec), std::invalid_argument);
+  // a study in the list without its parts in the registry, and parts without a study
+  EXPECT_THROW(with_parts({kTallyLoader}, {}), std::logic_error);
+  EXPECT_THROW(with_parts({}, {study_parts<TallyRun>("counts", &tally_sections)}),
+               std::logic_error);
+  EXPECT_EQ(
+      with_parts({kTallyLoader}, {study_parts<TallyRun>("counts", &tally_sections)}).at(0).study,
+      "tally");
 }
 
-// the fuzz build links the loaders without the solvers through a registry of its own
-// (tests/fuzz/fuzz_registry.cpp, step 6 of "Adding a study"): every study of this registry
-// has its record there too
-TEST(AddedStudy, EveryRegisteredStudyIsInTheFuzzRegistry) {
-  const std::string fuzz =
-      armstudy::testing::slurp(armstudy::testing::kSource / "tests/fuzz/fuzz_registry.cpp");
+// a case with an error in its study's keys loads no run (load_case then reports the error)
+TEST(AddedStudy, ACaseWithAnErrorLoadsNoRun) {
+  cases::Diagnostics diag("tally.yaml");
+  cases::Map root(YAML::Load("study: tally\nname: t\ntally: {n: 0}\n"), diag, "");
+  EXPECT_EQ(kTally.load(root), nullptr);
+  EXPECT_FALSE(diag.empty());
+}
+
+bool has_file(const std::string& path) { return fs::exists(armstudy::testing::kSource / path); }
+bool file_has(const std::string& path, const std::string& text) {
+  return armstudy::testing::slurp(armstudy::testing::kSource / path).find(text) !=
+         std::string::npos;
+}
+
+// every registered study has the place of each step of "Adding a study" (docs/development.md)
+// that a test can see, and the steps name every place a study needs
+TEST(AddedStudy, EveryStudyHasEachStepsPlace) {
   for (const StudyEntry& e : study_registry()) {
-    std::string quoted = "\"";
-    quoted += e.study;
-    quoted += '"';
-    EXPECT_NE(fuzz.find(quoted), std::string::npos)
-        << "study '" << e.study << "' has no record in tests/fuzz/fuzz_registry.cpp";
+    const std::string s(e.study);
+    EXPECT_TRUE(has_file("src/studies/" + s + "/results_section.hpp")) << s << ": step 1";
+    EXPECT_TRUE(has_file("src/cases/" + s + "_case.cpp")) << s << ": step 2";
+    EXPECT_TRUE(file_has("src/app/study_loaders.cpp", '"' + s + '"')) << s << ": step 3";
+    EXPECT_TRUE(file_has("src/app/" + s + "_pipeline.cpp", s + "_parts()")) << s << ": step 4";
+    EXPECT_TRUE(file_has("src/app/study_registry.cpp", s + "_parts()")) << s << ": step 4";
+    EXPECT_TRUE(has_file("src/report/" + s + "_section.cpp")) << s << ": step 5";
+    EXPECT_TRUE(file_has("src/report/study_sections.hpp", s + "_sections(")) << s << ": step 5";
+    // step 7: its index figure's file is a reserved run-level name (cli::run_level_file)
+    if (!e.index_figure.file.empty()) {
+      EXPECT_NE(cli::run_level_file(std::string(e.index_figure.file)), nullptr) << s;
+    }
+    EXPECT_TRUE(file_has("results.schema.json", '"' + s + "\": {")) << s << ": step 8";
+    bool bundled = false;
+    for (const auto& f : fs::directory_iterator(armstudy::testing::kSource / "reports/cases"))
+      bundled = bundled ||
+                armstudy::testing::slurp(f.path()).find("study: " + s + "\n") != std::string::npos;
+    EXPECT_TRUE(bundled) << s << ": step 9 (a bundled case in reports/cases/)";
   }
+  // the fuzz build compiles the one list and builds its registry from it, naming no study
+  EXPECT_TRUE(file_has("tests/fuzz/CMakeLists.txt", "${ROOT}/src/app/study_loaders.cpp"));
+  EXPECT_TRUE(file_has("tests/fuzz/fuzz_registry.cpp", "with_parts(study_loaders()"));
+  for (const StudyEntry& e : study_registry())
+    EXPECT_FALSE(file_has("tests/fuzz/fuzz_registry.cpp", '"' + std::string(e.study) + '"'))
+        << "tests/fuzz/fuzz_registry.cpp names study '" << e.study << "': it takes them all from "
+        << "src/app/study_loaders.cpp";
+  for (const char* place : {"src/studies/foo/", "src/cases/foo_case.", "src/app/study_loaders.cpp",
+                            "src/app/foo_pipeline.cpp", "src/app/study_registry.cpp",
+                            "src/report/foo_section.cpp", "report/study_sections.hpp",
+                            "src/scene/foo_frames.", "run_level_file", "report::run_level_outputs",
+                            "tests/fuzz/CMakeLists.txt", "results.schema.json", "reports/cases/"})
+    EXPECT_TRUE(file_has("docs/development.md", place))
+        << "docs/development.md, \"Adding a study\", does not name " << place;
 }
 
 }  // namespace

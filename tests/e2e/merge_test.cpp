@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace armstudy::cli {
@@ -79,6 +80,33 @@ TEST(Merge, SweepTablesDoNotDependOnCaseOrder) {
   EXPECT_EQ(sweep_json(cases).dump(), js);
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "case,status,arm.links[2].length,min_energy_J (J)");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 21);
+}
+
+// sweep.json is the typed sweep table's JSON (report/sweep_table.hpp): it reads back strictly
+// into the table, which writes the same text; a case with no number for a figure, or without
+// a parameter, has null there
+TEST(Merge, SweepJsonReadsBackIntoTheTypedTable) {
+  std::vector<CaseOutput> cases = {make_case("p-1", "placement", true, {}, 2.5, "0.2"),
+                                   make_case("p-2", "placement", false, {}, NAN, "0.3"),
+                                   make_case("q", "placement", true, {}, 1.0)};
+  cases[1].record.case_info.sweep->point.clear();
+  const json j = sweep_json(cases);
+  const report::SweepTable t = report::from_json<report::SweepTable>(j);
+  ASSERT_EQ(t.rows.size(), 2u) << "the case without a sweep point is no row";
+  EXPECT_EQ(t.rows[0].case_name, "p-1");
+  EXPECT_EQ(t.rows[0].parameters.at("arm.links[2].length"), "0.2");
+  EXPECT_EQ(t.rows[0].key_figures.at("min_energy_J"), 2.5);
+  EXPECT_EQ(t.rows[1].status, "failed");
+  EXPECT_EQ(t.rows[1].parameters.at("arm.links[2].length"), std::nullopt);
+  EXPECT_EQ(t.rows[1].key_figures.at("min_energy_J"), std::nullopt);
+  EXPECT_EQ(j["rows"][1]["key_figures"]["min_energy_J"], nullptr);
+  EXPECT_EQ(t.units.at("min_energy_J"), "J");
+  EXPECT_EQ(report::to_json(t).dump(2), j.dump(2));
+  EXPECT_TRUE(report::has_sweep_table_keys(j));
+  json more = j;
+  more["note"] = "x";
+  EXPECT_FALSE(report::has_sweep_table_keys(more));
+  EXPECT_FALSE(report::has_sweep_table_keys(json::array()));
 }
 
 }  // namespace

@@ -14,7 +14,6 @@
 namespace armstudy::report {
 namespace {
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 using armstudy::testing::slurp;
 
@@ -23,22 +22,25 @@ fs::path sweep_dir(const std::string& name) {
 }
 
 // ratio in {0.2, 0.4, 0.6} x fraction in {0.5, 0.8}; one case failed
-json table() {
-  json rows = json::array();
+SweepTable table() {
+  SweepTable t;
+  t.parameters = {"arm.ratio", "task.fraction"};
+  t.figures = {"root_x_m", "energy_J"};
+  t.units = {{"energy_J", "J"}, {"root_x_m", "m"}};
   int k = 0;
   for (const char* ratio : {"0.2", "0.4", "0.6"})
     for (const char* fraction : {"0.5", "0.8"}) {
       const double r = std::stod(ratio), f = std::stod(fraction);
-      rows.push_back({{"case", "c" + std::to_string(k)},
-                      {"status", k == 3 ? "failed" : "ok"},
-                      {"parameters", {{"arm.ratio", ratio}, {"task.fraction", fraction}}},
-                      {"key_figures", {{"energy_J", r * f}, {"root_x_m", r - f}}}});
+      SweepRow row;
+      row.case_name = "c";
+      row.case_name += std::to_string(k);
+      row.status = k == 3 ? "failed" : "ok";
+      row.parameters = {{"arm.ratio", ratio}, {"task.fraction", fraction}};
+      row.key_figures = {{"energy_J", r * f}, {"root_x_m", r - f}};
+      t.rows.push_back(row);
       ++k;
     }
-  return {{"parameters", {"arm.ratio", "task.fraction"}},
-          {"figures", {"root_x_m", "energy_J"}},
-          {"units", {{"energy_J", "J"}, {"root_x_m", "m"}}},
-          {"rows", rows}};
+  return t;
 }
 
 TEST(SweepReport, DrawsEveryKeyFigureOverTheNumericAxisInTheStudysOrder) {
@@ -69,10 +71,9 @@ TEST(SweepReport, DrawsEveryKeyFigureOverTheNumericAxisInTheStudysOrder) {
 }
 
 TEST(SweepReport, WithoutANumericParameterSaysSoAndDrawsNothing) {
-  json t = table();
-  for (auto& r : t["rows"])
-    r["parameters"]["arm.ratio"] = "a" + r["parameters"]["arm.ratio"].get<std::string>();
-  for (auto& r : t["rows"]) r["parameters"]["task.fraction"] = json::array({1, 2});
+  SweepTable t = table();
+  for (auto& r : t.rows) r.parameters["arm.ratio"] = "a" + *r.parameters["arm.ratio"];
+  for (auto& r : t.rows) r.parameters["task.fraction"] = "[1, 2]";
   const fs::path dir = sweep_dir("none");
   EXPECT_EQ(write_sweep_report(dir, t, "no-axis"), 0);
   EXPECT_NE(slurp(dir / "index.html").find("no axis to plot over"), std::string::npos);
