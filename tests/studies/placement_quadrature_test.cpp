@@ -262,5 +262,21 @@ TEST(PlacementQuadrature, TheFoldedElbowsEnergyIsTheLimitOfNearbyLines) {
     EXPECT_NEAR(example1[1], example1[2], 1e-9 * example1[1]);
   }
 }
+
+TEST(PlacementQuadrature, APairOfSignChangesBetweenTwoScanPointsIsFound) {
+  // placement-example-3's 3-4-5 optimum as the earlier refinement printed it: the root's
+  // power changes sign at t ~ 0.279 and 0.283 s, 3.9 ms apart, both between two points
+  // of the 256-point scan. Unseen, the quadrature's nodes straddle the lobe too and the
+  // energy came out 9.7e-6 J low with an error estimate of 4.6e-10 J. The reference is the
+  // independent script's (scripts/check_placement_energy.py: its own model, tanh-sinh
+  // between breakpoints from a 400-point scan per interval), 3.539067781291 +- 1e-15 J.
+  const Arm2 arm = make_arm2(testing::thesis_arm());
+  const Line line = thesis_line(0.21221785777461047, 98.29072422034677 * kDeg);
+  const EnergyQuadrature q =
+      energy_quadrature(arm, MotionProgram::kPoly345, 1.0, 0.5 * lmax(), line, 1);
+  EXPECT_TRUE(q.converged);
+  EXPECT_NEAR(q.energy, 3.539067781291, q.error + 1e-11);
+  EXPECT_LT(q.error, 1e-9);
+}
 }  // namespace
 }  // namespace armstudy::studies::placement
