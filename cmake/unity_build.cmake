@@ -3,7 +3,7 @@
 # (nlohmann-json, GoogleTest, the results mapping of report/results_fields.hpp, the records'
 # destructors) are instantiated and optimised once per batch instead of once per file: with
 # the precompiled headers most of the build was code generation at -O3
-# (results_sections_test.cpp: 19 of its 21 CPU-s), and 6.7 of the 15.6 MB of code the
+# (study_results_test.cpp: 19 of its 21 CPU-s), and 6.7 of the 15.6 MB of code the
 # objects held were the same inline functions again. The Release build from scratch (tests
 # and benchmarks too) compiled for 556 CPU-s against about 1130 file by file (batches of 8,
 # with the shared precompiled headers); on two cores 542 s at load 3.4-5 (the machine shared)

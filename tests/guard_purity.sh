@@ -2,7 +2,7 @@
 # core and studies are pure: no file or console I/O, no YAML, no MuJoCo, no system plumbing
 # (src/sys: processes, files, locks) (docs/development.md, Layout).
 # MuJoCo is its headers and calls (mujoco/..., mj_*): a results.json key such as
-# "mujoco_replay" in a study's typed section (results_section.hpp) is data, not a use of it.
+# "mujoco_replay" in a study's typed results (study_results.hpp) is data, not a use of it.
 cd "$1" || exit 2
 hits=$(grep -rnE '#include <(fstream|iostream)>|yaml-cpp|mujoco/|mujoco\.h|mj[A-Za-z]*_[a-z]|std::cout|std::cerr|printf\(|#include "sys/' src/core src/studies)
 if [ -n "$hits" ]; then

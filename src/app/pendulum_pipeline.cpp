@@ -1,6 +1,6 @@
 // The pendulum study in the pipeline: case -> studies::solve_pendulum -> results.json.
 //
-// results.json "pendulum" section: studies/pendulum/results_section.hpp (every key, typed;
+// results.json "pendulum" section: studies/pendulum/study_results.hpp (every key, typed;
 // written from it here, read back from it by the report and merge).
 #include <cmath>
 #include <cstdio>
@@ -15,7 +15,7 @@
 #include "report/study_sections.hpp"
 #include "scene/model_export.hpp"
 #include "scene/pendulum_frames.hpp"
-#include "studies/pendulum/results_section.hpp"
+#include "studies/pendulum/study_results.hpp"
 
 namespace armstudy::app {
 namespace {
@@ -26,7 +26,7 @@ std::array<double, 2> xy(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
 std::vector<double> vec(const core::JointVector& v) { return {v.data(), v.data() + v.size()}; }
 
 class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::PendulumResult,
-                                               studies::PendulumResultsSection> {
+                                               studies::PendulumStudyResults> {
  public:
   using TypedStudyRun::TypedStudyRun;
 
@@ -55,10 +55,10 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
         {"integrator_steps", static_cast<double>(result_.steps_accepted), "", "integrator steps"}};
   }
 
-  studies::PendulumResultsSection section() const override {
+  studies::PendulumStudyResults study_results() const override {
     const auto& a = spec_.arm;
     const auto& r = result_;
-    studies::PendulumResultsSection s;
+    studies::PendulumStudyResults s;
     auto& p = s.parameters;
     p.gravity_m_s2 = a.gravity;
     p.locked_deg = {spec_.theta1 / kDeg, spec_.theta2 / kDeg};

@@ -49,7 +49,7 @@ class StudyRun {
   virtual std::string message() const = 0;
   /// The checks the study ran on its own answer.
   virtual std::vector<studies::Check> checks() const { return {}; }
-  /// The study's own section of results.json (SI; keys ending in _deg are degrees).
+  /// The study's own part of results.json (SI; keys ending in _deg are degrees).
   virtual nlohmann::json results() const = 0;
   /// The few numbers a reader compares across cases (summary tables, sweep tables),
   /// e.g. {"energy_J[cycloidal,1]", 12.3, "J"}. Written to results.json "key_figures".
@@ -90,7 +90,7 @@ class StudyRun {
 };
 
 /// A study's sections of its case page, built from the whole results.json (the study's
-/// typed section read back from results[study]; report/study_sections.hpp).
+/// typed results read back from results[study]; report/study_sections.hpp).
 using ReportSections = report::StudySections;
 
 /// What the program adds to a study's StudyLoader (app/study_loaders.hpp): the StudyRun it
@@ -101,7 +101,7 @@ using ReportSections = report::StudySections;
 struct StudyParts {
   /// The run of a loaded spec (the std::any holds a spec of `spec_type`).
   using MakeRun = std::unique_ptr<StudyRun> (*)(std::any spec);
-  /// The report parts, given the study's name (its typed section is results[study]): the
+  /// The report parts, given the study's name (its typed results is results[study]): the
   /// registry passes it when it joins the parts to their loader.
   using NamedSections = std::function<void(const std::string& study, const nlohmann::json& results,
                                            report::FigureWriter& figures, report::CasePage& page)>;
@@ -122,7 +122,7 @@ struct StudyParts {
 };
 
 /// One study kind, the one record of it the registry holds (nothing else dispatches on the
-/// study name): its loader record (name, case loader, results.json section's schema and
+/// study name): its loader record (name, case loader, results.json part's schema and
 /// strict reader: app/study_loaders.cpp, the one list of studies) and its parts (the
 /// StudyRun a loaded case is solved by, the report sections, the answer lines and the index
 /// figure: app/<study>_pipeline.cpp). Every part but the answer lines and the index figure
@@ -139,10 +139,10 @@ struct StudyEntry {
   std::string_view study;    ///< "placement", "pendulum", "throwing", "time_optimal"
   std::string_view summary;  ///< one line for --help
   /// The JSON Schema of results[study] (results.schema.json holds it).
-  StudyLoader::SectionSchema section_schema;
-  /// Reads results[study] of a whole results.json strictly into the typed section.
+  StudyLoader::StudyResultsSchema results_schema;
+  /// Reads results[study] of a whole results.json strictly into the typed results.
   /// @throws report::ResultsError naming the JSON pointer of the first problem.
-  StudyLoader::SectionCheck check_section;
+  StudyLoader::StudyResultsCheck check_results;
   /// The study's sections of its case page.
   ReportSections report;
   /// What binds its answer and what the case assumes, on page 1 (and its key picture).

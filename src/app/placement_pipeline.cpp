@@ -1,6 +1,6 @@
 // The placement study in the pipeline: case -> studies::placement::solve -> results.json.
 //
-// results.json "placement" section: studies/placement/results_section.hpp (every key, typed;
+// results.json "placement" section: studies/placement/study_results.hpp (every key, typed;
 // written from it here, read back from it by the report and merge).
 #include <algorithm>
 #include <cmath>
@@ -23,8 +23,8 @@
 #include "scene/replay_frames.hpp"
 #include "scene/study_replays.hpp"
 #include "studies/placement/refine.hpp"
-#include "studies/placement/results_section.hpp"
 #include "studies/placement/solve.hpp"
+#include "studies/placement/study_results.hpp"
 #include "studies/placement/warm_solve.hpp"
 
 namespace armstudy::app {
@@ -33,12 +33,12 @@ namespace pl = studies::placement;
 using core::kDeg;
 using nlohmann::json;
 
-using Section = pl::ResultsSection;
+using Results = pl::StudyResults;
 
-Section::Pair pair(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
+Results::Pair pair(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
 
-Section::Series series_section(const pl::TimeSeries& s) {
-  Section::Series o;
+Results::Series series_section(const pl::TimeSeries& s) {
+  Results::Series o;
   const size_t n = s.t.size();
   const size_t stride = n > 101 ? (n - 1 + 99) / 100 : 1;
   o.stride = static_cast<int>(stride);
@@ -60,18 +60,18 @@ Section::Series series_section(const pl::TimeSeries& s) {
   return o;
 }
 
-Section::SweepCounts counts_section(const pl::Counts& c) {
+Results::SweepCounts counts_section(const pl::Counts& c) {
   return {c.total,    c.unreachable,  c.singular,        c.over_limit,
           c.feasible, c.thesis_total, c.thesis_rejected, c.exact_outside_thesis};
 }
 
 std::string prog(core::MotionProgram p) { return std::string(core::program_name(p)); }
 
-Section::Id id_of(core::MotionProgram p, int configuration) { return {prog(p), configuration}; }
+Results::Id id_of(core::MotionProgram p, int configuration) { return {prog(p), configuration}; }
 
 // the doubling of one motion's samples (converge.hpp)
-Section::EnergyConvergence convergence_section(const pl::EnergyConvergence& c) {
-  Section::EnergyConvergence o;
+Results::EnergyConvergence convergence_section(const pl::EnergyConvergence& c) {
+  Results::EnergyConvergence o;
   for (const auto& r : c.rows) o.rows.push_back({r.samples, r.energy, r.peak_torque});
   o.converged = c.converged;
   o.touches_boundary = c.touches_boundary;
@@ -82,7 +82,7 @@ Section::EnergyConvergence convergence_section(const pl::EnergyConvergence& c) {
   o.tolerance_rel = c.tolerance;
   o.peak_converged = c.peak_converged;
   if (c.quadrature) {
-    Section::Quadrature q;
+    Results::Quadrature q;
     q.energy_J = c.energy;
     q.error_J = c.energy_error;
     q.tolerance_rel = c.quadrature_tolerance;
@@ -95,13 +95,13 @@ Section::EnergyConvergence convergence_section(const pl::EnergyConvergence& c) {
 }
 
 // energy (with its error), peak torque of a candidate: null (and a note) where withheld
-void set_metrics(Section::Metrics& o, const pl::Candidate& c) {
+void set_metrics(Results::Metrics& o, const pl::Candidate& c) {
   const pl::EnergyConvergence& conv = c.convergence;
   const bool no_energy = conv.energy_withheld(), no_peak = conv.peak_withheld();
   const pl::LineMetrics& m = c.reported_metrics();
   o.energy_J = no_energy ? NAN : m.energy;
   if (!no_energy && conv.quadrature) o.energy_error_J = conv.energy_error;
-  if (!no_energy && !no_peak) o.peak_torque_Nm = Section::Pair{m.peak_torque[0], m.peak_torque[1]};
+  if (!no_energy && !no_peak) o.peak_torque_Nm = Results::Pair{m.peak_torque[0], m.peak_torque[1]};
   if (conv.checked) o.energy_samples = conv.samples;
   o.singular_trajectory = no_energy || no_peak;
   if (no_energy)
@@ -112,8 +112,8 @@ void set_metrics(Section::Metrics& o, const pl::Candidate& c) {
 }
 
 // what decides an optimum (refine.hpp)
-Section::Decision decision_section(const pl::Spec& spec, const pl::Decision& d) {
-  Section::Decision o;
+Results::Decision decision_section(const pl::Spec& spec, const pl::Decision& d) {
+  Results::Decision o;
   o.binding = pl::binding_name(d.binding);
   o.inner_slack_m = d.inner_slack;
   o.outer_slack_m = d.outer_slack;
@@ -122,7 +122,7 @@ Section::Decision decision_section(const pl::Spec& spec, const pl::Decision& d) 
   o.torque_slack_Nm = {d.torque_slack[0], d.torque_slack[1]};
   o.power_slack_W = {d.power_slack[0], d.power_slack[1]};
   for (const pl::ActiveConstraint& a : d.active) {
-    Section::Active s;
+    Results::Active s;
     s.constraint = pl::binding_name(a.kind);
     if (a.joint >= 0) s.joint = a.joint + 1;
     s.slack = a.slack;
@@ -132,7 +132,7 @@ Section::Decision decision_section(const pl::Spec& spec, const pl::Decision& d) 
   return o;
 }
 
-class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
+class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Results> {
  public:
   using TypedStudyRun::TypedStudyRun;
 
@@ -159,7 +159,7 @@ class PlacementRun final : public TypedStudyRun<pl::Spec, pl::Result, Section> {
     }
     return c;
   }
-  Section section() const override;
+  Results study_results() const override;
 
   // per program and configuration: the refined optimum's energy and root location
   std::vector<KeyFigure> key_figures() const override {
@@ -301,11 +301,11 @@ void set_place(T& o, const pl::Candidate& c) {
 }
 
 // the optimum of one program and configuration, with its margin sweep
-Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& pc,
-                                 const Section::Id& id) {
+Results::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& pc,
+                                 const Results::Id& id) {
   const pl::Candidate& c = pc.refined;
-  Section::Optimum o;
-  static_cast<Section::Id&>(o) = id;
+  Results::Optimum o;
+  static_cast<Results::Id&>(o) = id;
   set_metrics(o, c);
   set_place(o, c);
   o.grid_energy_J = pc.grid.metrics.energy;
@@ -327,11 +327,11 @@ Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& 
   o.refinement.phi_error_deg = pc.phi_error / kDeg;
   o.refinement.energy_error_J = pc.energy_error();
   for (const pl::MarginPoint& m : pc.margin_sensitivity) {
-    Section::MarginPoint mp;
+    Results::MarginPoint mp;
     mp.margin_m = m.margin;
     mp.found = m.found;
     if (m.found) {
-      Section::MarginOptimum mo;
+      Results::MarginOptimum mo;
       set_metrics(mo, m.optimum);
       set_place(mo, m.optimum);
       mo.binding = pl::binding_name(m.decision.binding);
@@ -351,10 +351,10 @@ Section::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& 
 }
 
 // the least energy among the thesis's own candidates
-Section::ThesisBest thesis_best_section(const pl::ProgramConfig& pc, const Section::Id& id) {
+Results::ThesisBest thesis_best_section(const pl::ProgramConfig& pc, const Results::Id& id) {
   const pl::Candidate& c = pc.thesis_best;
-  Section::ThesisBest t;
-  static_cast<Section::Id&>(t) = id;
+  Results::ThesisBest t;
+  static_cast<Results::Id&>(t) = id;
   set_metrics(t, c);
   set_place(t, c);
   t.status = pl::status_name(c.status);
@@ -365,9 +365,9 @@ Section::ThesisBest thesis_best_section(const pl::ProgramConfig& pc, const Secti
 }
 
 // energy over phi through the optimum's x_S
-Section::Curve curve_section(const pl::ProgramConfig& pc, const Section::Id& id) {
-  Section::Curve cv;
-  static_cast<Section::Id&>(cv) = id;
+Results::Curve curve_section(const pl::ProgramConfig& pc, const Results::Id& id) {
+  Results::Curve cv;
+  static_cast<Results::Id&>(cv) = id;
   cv.x_s_m = pc.curve.x_s;
   for (size_t k = 0; k < pc.curve.phi.size(); ++k) {
     cv.phi_deg.push_back(pc.curve.phi[k] / kDeg);
@@ -378,9 +378,9 @@ Section::Curve curve_section(const pl::ProgramConfig& pc, const Section::Id& id)
 }
 
 // the Pareto front of (peak torque of `joint`, energy), thinned, and the excluded candidates
-Section::Pareto pareto_section(const pl::ProgramConfig& pc, const Section::Id& id, int joint) {
-  Section::Pareto pj;
-  static_cast<Section::Id&>(pj) = id;
+Results::Pareto pareto_section(const pl::ProgramConfig& pc, const Results::Id& id, int joint) {
+  Results::Pareto pj;
+  static_cast<Results::Id&>(pj) = id;
   pj.joint = joint + 1;
   const auto& front = pc.pareto[joint];
   double last = std::numeric_limits<double>::infinity();
@@ -408,10 +408,10 @@ Section::Pareto pareto_section(const pl::ProgramConfig& pc, const Section::Id& i
 }
 
 // the energy map over root locations, as rows of text
-Section::Map map_section(const pl::ProgramConfig& pc, const Section::Id& id) {
+Results::Map map_section(const pl::ProgramConfig& pc, const Results::Id& id) {
   const pl::EnergyMap& m = pc.map;
-  Section::Map mj;
-  static_cast<Section::Id&>(mj) = id;
+  Results::Map mj;
+  static_cast<Results::Id&>(mj) = id;
   mj.x_m = m.x;
   mj.y_m = m.y;
   const size_t nx = m.x.size();
@@ -442,9 +442,9 @@ Section::Map map_section(const pl::ProgramConfig& pc, const Section::Id& id) {
 }
 
 // one placement the case asked to evaluate
-Section::Evaluation evaluation_section(const pl::Evaluation& e) {
-  Section::Evaluation ej;
-  static_cast<Section::Id&>(ej) = id_of(e.program, e.configuration);
+Results::Evaluation evaluation_section(const pl::Evaluation& e) {
+  Results::Evaluation ej;
+  static_cast<Results::Id&>(ej) = id_of(e.program, e.configuration);
   ej.label = e.label;
   const pl::Candidate& c = e.candidate;
   set_place(ej, c);
@@ -466,11 +466,11 @@ Section::Evaluation evaluation_section(const pl::Evaluation& e) {
   return ej;
 }
 
-// (over 60 lines, kept whole: a flat list of the typed section's fields, in their fields() order;
+// (over 60 lines, kept whole: a flat list of the typed results's fields, in their fields() order;
 // each part has its own function)
-Section PlacementRun::section() const {
+Results PlacementRun::study_results() const {
   const pl::Result& r = result_;
-  Section j;
+  Results j;
   j.lmax_m = r.lmax;
   j.length_m = r.length;
   j.length_fraction = r.lmax > 0 ? r.length / r.lmax : 0.0;
@@ -480,13 +480,13 @@ Section PlacementRun::section() const {
   j.thesis_divisions = spec_.thesis_divisions;
   j.annulus_m = {r.inner, r.outer};
   if (spec_.torque_limit)
-    j.torque_limits_Nm = Section::Pair{(*spec_.torque_limit)[0], (*spec_.torque_limit)[1]};
+    j.torque_limits_Nm = Results::Pair{(*spec_.torque_limit)[0], (*spec_.torque_limit)[1]};
   if (spec_.power_limit)
-    j.power_limits_W = Section::Pair{(*spec_.power_limit)[0], (*spec_.power_limit)[1]};
+    j.power_limits_W = Results::Pair{(*spec_.power_limit)[0], (*spec_.power_limit)[1]};
   j.thesis_intervals = {r.thesis_xs_case, r.xs_init, r.xs_fin};
   if (!r.cases.empty()) {
     const pl::Counts& c = r.cases.front().counts;
-    j.geometry_counts = Section::GeometryCounts{c.total,
+    j.geometry_counts = Results::GeometryCounts{c.total,
                                                 c.unreachable,
                                                 c.singular,
                                                 c.feasible + c.over_limit,
@@ -495,12 +495,12 @@ Section PlacementRun::section() const {
                                                 c.exact_outside_thesis};
   }
   for (const pl::ProgramConfig& pc : r.cases) {
-    const Section::Id id = id_of(pc.program, pc.configuration);
+    const Results::Id id = id_of(pc.program, pc.configuration);
     if (pc.found) {
       j.optima.push_back(optimum_section(spec_, pc, id));
     } else {
-      Section::Unsolved u;
-      static_cast<Section::Id&>(u) = id;
+      Results::Unsolved u;
+      static_cast<Results::Id&>(u) = id;
       u.reason = pc.reason;
       u.counts = counts_section(pc.counts);
       j.unsolved.push_back(std::move(u));
@@ -519,16 +519,16 @@ Section PlacementRun::section() const {
   }
   for (const auto& pc : r.cases) {
     if (!pc.found) continue;
-    Section::Convergence conv;
-    static_cast<Section::Id&>(conv) = id_of(pc.program, pc.configuration);
+    Results::Convergence conv;
+    static_cast<Results::Id&>(conv) = id_of(pc.program, pc.configuration);
     for (const auto& row : r.convergence) conv.rows.push_back({row.samples, row.energy});
     j.convergence = std::move(conv);
     break;
   }
   for (const scene::PlacementReplay& rp : replays_) {
-    Section::Replay rj;
-    static_cast<Section::Id&>(rj) = id_of(rp.program, rp.configuration);
-    static_cast<studies::ReplaySection&>(rj) = replay_section(rp.replay);
+    Results::Replay rj;
+    static_cast<Results::Id&>(rj) = id_of(rp.program, rp.configuration);
+    static_cast<studies::ReplayResults&>(rj) = replay_results(rp.replay);
     j.mujoco_replay.push_back(std::move(rj));
   }
   j.solve_seconds = r.seconds;

@@ -4,7 +4,7 @@
 
 namespace armstudy::app {
 
-studies::ReplaySection replay_section(const scene::DynamicReplay& r) {
+studies::ReplayResults replay_results(const scene::DynamicReplay& r) {
   const auto rows = [&](auto&& value) {
     std::vector<std::vector<double>> out;
     const int n = r.q_plan.empty() ? 0 : static_cast<int>(r.q_plan.front().size());
@@ -15,7 +15,7 @@ studies::ReplaySection replay_section(const scene::DynamicReplay& r) {
     }
     return out;
   };
-  studies::ReplaySection s;
+  studies::ReplayResults s;
   s.series.t_s = r.t;
   s.series.deviation_rad =
       rows([&](size_t k, int j) { return std::abs(r.q_sim[k][j] - r.q_plan[k][j]); });

@@ -1,14 +1,14 @@
 #pragma once
 /// MuJoCo's dynamic replay (scene/dynamic_replay.hpp) as its typed results.json part
-/// (studies/replay_section.hpp), shared by the placement and time-optimal sections.
+/// (studies/replay_results.hpp), shared by the placement and time-optimal sections.
 
 #include <nlohmann/json.hpp>
 
 #include "scene/dynamic_replay.hpp"
-#include "studies/replay_section.hpp"
+#include "studies/replay_results.hpp"
 
 namespace armstudy::app {
 
-studies::ReplaySection replay_section(const scene::DynamicReplay& replay);
+studies::ReplayResults replay_results(const scene::DynamicReplay& replay);
 
 }  // namespace armstudy::app

@@ -9,8 +9,8 @@ namespace armstudy::app {
 StudyEntry::StudyEntry(const StudyLoader& loader, const StudyParts& parts)
     : study(loader.study),
       summary(parts.summary),
-      section_schema(loader.section_schema),
-      check_section(loader.check_section),
+      results_schema(loader.results_schema),
+      check_results(loader.check_results),
       index_figure(parts.index_figure),
       load_spec_(loader.load),
       make_run_(parts.make_run) {
@@ -24,8 +24,8 @@ StudyEntry::StudyEntry(const StudyLoader& loader, const StudyParts& parts)
                                       const report::ResultsRecord& record,
                                       report::AnswerBox& box) { f(name, results, record, box); };
   const char* missing = !load_spec_       ? "a loader"
-                        : !section_schema ? "a results.json schema"
-                        : !check_section  ? "a results.json reader"
+                        : !results_schema ? "a results.json schema"
+                        : !check_results  ? "a results.json reader"
                         : !make_run_      ? "a run"
                         : !report         ? "report sections"
                                           : nullptr;

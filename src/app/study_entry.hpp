@@ -9,44 +9,44 @@
 namespace armstudy::app {
 
 /// What every study's StudyRun has the same way: its spec, its result (with the message) and
-/// results() written from its typed results.json section. A study derives from it and
-/// writes solve(), section() and what it adds (checks, key figures, frames).
-template <class Spec, class Result, class Section>
+/// results() written from its typed results.json part. A study derives from it and
+/// writes solve(), study_results() and what it adds (checks, key figures, frames).
+template <class Spec, class Result, class Results>
 class TypedStudyRun : public StudyRun {
  public:
   using SpecType = Spec;
-  using SectionType = Section;
+  using ResultsType = Results;
   explicit TypedStudyRun(Spec spec) : spec_(std::move(spec)) {}
   std::string message() const override { return result_.message; }
-  nlohmann::json results() const final { return report::to_json(section()); }
-  /// The study's section of results.json, typed (studies/<study>/results_section.hpp).
-  virtual Section section() const = 0;
+  nlohmann::json results() const final { return report::to_json(study_results()); }
+  /// The study's part of results.json, typed (studies/<study>/study_results.hpp).
+  virtual Results study_results() const = 0;
 
  protected:
   Spec spec_;
   Result result_;
 };
 
-/// A study's own sections of its case page, from its typed results.json section (read once
+/// A study's own sections of its case page, from its typed results.json part (read once
 /// from results[study] by the registry) and the shared record (frames, checks).
-template <class Section>
-using TypedSections = void (*)(const Section& section, const report::ResultsRecord& record,
+template <class Results>
+using TypedSections = void (*)(const Results& section, const report::ResultsRecord& record,
                                report::FigureWriter& figures, report::CasePage& page);
-/// A study's lines of its answer box, from its typed section and the shared record.
-template <class Section>
-using TypedAnswer = void (*)(const Section& section, const report::ResultsRecord& record,
+/// A study's lines of its answer box, from its typed results and the shared record.
+template <class Results>
+using TypedAnswer = void (*)(const Results& section, const report::ResultsRecord& record,
                              report::AnswerBox& box);
 
 /// A study's parts (app/pipeline.hpp): its cases are solved by `Run` (a StudyRun made from
-/// the study's spec, e.g. a TypedStudyRun, whose results.json section is Run::SectionType);
+/// the study's spec, e.g. a TypedStudyRun, whose results.json part is Run::ResultsType);
 /// its report parts receive that section, read once from results[study]; its answer-box
 /// lines and index figure optional.
 template <class Run>
-StudyParts study_parts(std::string_view summary, TypedSections<typename Run::SectionType> sections,
-                       TypedAnswer<typename Run::SectionType> answer = nullptr,
+StudyParts study_parts(std::string_view summary, TypedSections<typename Run::ResultsType> sections,
+                       TypedAnswer<typename Run::ResultsType> answer = nullptr,
                        report::IndexFigure index_figure = {}) {
   using Spec = typename Run::SpecType;
-  using Section = typename Run::SectionType;
+  using Results = typename Run::ResultsType;
   StudyParts parts{typeid(Spec),
                    summary,
                    [](std::any spec) -> std::unique_ptr<StudyRun> {
@@ -58,13 +58,13 @@ StudyParts study_parts(std::string_view summary, TypedSections<typename Run::Sec
   if (sections)
     parts.report = [sections](const std::string& study, const nlohmann::json& results,
                               report::FigureWriter& figures, report::CasePage& page) {
-      sections(report::read_section<Section>(results, study), report::read_record(results), figures,
-               page);
+      sections(report::read_study_results<Results>(results, study), report::read_record(results),
+               figures, page);
     };
   if (answer)
     parts.answer = [answer](const std::string& study, const nlohmann::json& results,
                             const report::ResultsRecord& record, report::AnswerBox& box) {
-      answer(report::read_section<Section>(results, study), record, box);
+      answer(report::read_study_results<Results>(results, study), record, box);
     };
   return parts;
 }

@@ -1,6 +1,6 @@
 // The throwing study in the pipeline: case -> studies::solve_throwing -> results.json.
 //
-// results.json "throwing" section: studies/throwing/results_section.hpp (every key, typed;
+// results.json "throwing" section: studies/throwing/study_results.hpp (every key, typed;
 // written from it here, read back from it by the report and merge).
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include "report/study_sections.hpp"
 #include "scene/model_export.hpp"
 #include "scene/throwing_frames.hpp"
-#include "studies/throwing/results_section.hpp"
+#include "studies/throwing/study_results.hpp"
 #include "studies/throwing/warm_solve.hpp"
 
 namespace armstudy::app {
@@ -26,7 +26,7 @@ using nlohmann::json;
 namespace st = studies;
 using core::kDeg;
 
-using Section = st::ThrowingResultsSection;
+using Results = st::ThrowingStudyResults;
 
 template <typename V>
 std::vector<double> arr(const V& v) {
@@ -36,8 +36,8 @@ std::vector<double> arr(const V& v) {
 }
 
 // margins (> 0 met) in physical units of an evaluation
-Section::Margins margins_of(const st::ThrowingSpec& sp, const st::ProfileEvaluation& e) {
-  Section::Margins m;
+Results::Margins margins_of(const st::ThrowingSpec& sp, const st::ProfileEvaluation& e) {
+  Results::Margins m;
   m.contact_N = e.min_normal_force - sp.contact_margin;
   m.friction = sp.friction_coefficient - e.max_friction_ratio;
   m.tray_rad = sp.tray_width / 2 - e.max_abs_theta4;
@@ -49,7 +49,7 @@ Section::Margins margins_of(const st::ThrowingSpec& sp, const st::ProfileEvaluat
 }
 
 // in the order of st::ConstraintKind
-Section::Worst worst_of(const std::array<double, st::kConstraintKinds>& w) {
+Results::Worst worst_of(const std::array<double, st::kConstraintKinds>& w) {
   return {w[0], w[1], w[2], w[3], w[4], w[5], w[6]};
 }
 
@@ -73,9 +73,9 @@ std::string binding_rating(const std::array<double, st::kConstraintKinds>& w, do
          (w[best] >= -2 * backoff - 1e-9 ? "" : " (nearest; not binding)");
 }
 
-Section::Motion motion_of(const st::ThrowingSpec& sp, const st::ThrowMotion& m) {
+Results::Motion motion_of(const st::ThrowingSpec& sp, const st::ThrowMotion& m) {
   const auto& e = m.evaluation;
-  Section::Motion j;
+  Results::Motion j;
   j.energy_J = e.energy;
   j.max_abs_theta4_rad = e.max_abs_theta4;
   j.max_voltage_V = e.max_voltage;
@@ -94,7 +94,7 @@ Section::Motion motion_of(const st::ThrowingSpec& sp, const st::ThrowMotion& m) 
     j.profile.rate_rad_s.push_back(arr(Eigen::Vector2d(m.profile.v.col(k))));
   }
   const auto& s = m.series;
-  Section::Series& o = j.series;
+  Results::Series& o = j.series;
   for (size_t k = 0; k < s.t.size(); ++k) {
     o.t_s.push_back(s.t[k]);
     o.q_rad.push_back(arr(s.q[k]));
@@ -135,7 +135,7 @@ std::string short_number(double v) {
 }
 
 // the arm, motors and task of the case, and the modelling choices
-void set_parameters(const st::ThrowingSpec& spec, Section& j) {
+void set_parameters(const st::ThrowingSpec& spec, Results& j) {
   const auto& a = spec.arm;
   auto& p = j.parameters;
   p.gravity_m_s2 = a.gravity;
@@ -174,7 +174,7 @@ void set_parameters(const st::ThrowingSpec& spec, Section& j) {
 }
 
 // what the case assumes where the paper is silent, and the limits
-void set_assumptions(const st::ThrowingSpec& spec, Section& j) {
+void set_assumptions(const st::ThrowingSpec& spec, Results& j) {
   const auto& a = spec.arm;
   j.assumptions = {{"tray's angular width lambda (eq. 9): the ball stays within +-lambda/2",
                     spec.tray_width / kDeg, "deg", "tray.width_deg"},
@@ -204,9 +204,9 @@ void set_assumptions(const st::ThrowingSpec& spec, Section& j) {
 
 // the eq. 8 reference: the constraints it breaks and how it was repaired
 void set_reference(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
-                   Section::Optimised& o) {
+                   Results::Optimised& o) {
   {
-    const Section::Margins mg = margins_of(spec, r.initial.evaluation);
+    const Results::Margins mg = margins_of(spec, r.initial.evaluation);
     const char* units[st::kConstraintKinds] = {"N", "", "rad", "V", "A", "W", "rad"};
     const double margins[st::kConstraintKinds] = {mg.contact_N,  mg.friction,  mg.tray_rad,
                                                   mg.voltage_V,  mg.current_A, mg.power_W,
@@ -218,7 +218,7 @@ void set_reference(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
     o.reference.kind = r.reference_kind;
     o.reference.initial_feasible = r.initial_feasible;
     if (r.reference_kind != "eq8")
-      o.reference.repair = Section::Repair{
+      o.reference.repair = Results::Repair{
           "SLSQP from eq. 8 descending the squared constraint violation "
           "(aimed at twice the back-off inside every limit) until it is 0 "
           "or stops on its tolerance; the reference must then meet every "
@@ -235,8 +235,8 @@ void set_reference(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
 
 // the IDP run (the paper's method): its seeds, settings and first-order residual; returns
 // the simulations of all seeds
-long set_idp(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Section::Optimised& o) {
-  Section::Idp& idp = o.idp;
+long set_idp(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Results::Optimised& o) {
+  Results::Idp& idp = o.idp;
   for (const auto& h : r.idp_run.history)
     idp.convergence.push_back(
         {h.iteration, h.pass, h.energy, h.violation, arr(h.region), h.evaluations, h.improvements});
@@ -275,16 +275,16 @@ long set_idp(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Section:
   idp.run_time_s = r.idp_time;
   idp.spread = {es.empty() ? NAN : es.front(), median, es.empty() ? NAN : es.back()};
   idp.first_order =
-      Section::FirstOrder{r.idp_optimality.kkt_residual, spec.nlopt.kkt_tolerance,
+      Results::FirstOrder{r.idp_optimality.kkt_residual, spec.nlopt.kkt_tolerance,
                           r.idp_optimality.active_constraints, r.idp_optimality.binding};
   return evaluations;
 }
 
 // the SLSQP run from several starts
-void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Section::Optimised& o) {
+void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Results::Optimised& o) {
   o.nlopt.ran = r.nlopt_ran;
   if (r.nlopt_ran) {
-    Section::NloptRun& nl = o.nlopt.run.emplace();
+    Results::NloptRun& nl = o.nlopt.run.emplace();
     nl.history_J = r.nlopt_run.history;
     nl.algorithm =
         "NLopt LD_SLSQP, central-difference gradients, same parameterisation and constraints";
@@ -300,7 +300,7 @@ void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Sectio
     nl.ftol_rel = spec.nlopt.ftol_rel;
     nl.xtol_rel = spec.nlopt.xtol_rel;
     nl.motion = motion_of(spec, r.nlopt);
-    nl.first_order = Section::FirstOrder{r.nlopt_run.kkt_residual, spec.nlopt.kkt_tolerance,
+    nl.first_order = Results::FirstOrder{r.nlopt_run.kkt_residual, spec.nlopt.kkt_tolerance,
                                          r.nlopt_run.active_constraints, r.nlopt_run.binding};
     auto& starts = nl.starts.emplace();
     for (const auto& sr : r.slsqp_starts)
@@ -313,11 +313,11 @@ void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Sectio
 
 // one table of the optimisers on equal terms, and the finer re-simulation's verdicts
 void set_comparison(const st::ThrowingSpec& spec, const st::ThrowingResult& r, long evaluations,
-                    Section::Optimised& o) {
+                    Results::Optimised& o) {
   // one table of the optimisers on equal terms (margins from the finer re-simulation)
   auto row = [&](const std::string& name, const st::ThrowMotion& m, const st::Verification& v,
                  bool conv, long sims, double time) {
-    return Section::Comparison{name,
+    return Results::Comparison{name,
                                m.evaluation.energy,
                                m.split.mechanical,
                                m.split.copper,
@@ -342,15 +342,15 @@ void set_comparison(const st::ThrowingSpec& spec, const st::ThrowingResult& r, l
                         worst_of(r.idp_check.worst)};
   if (r.nlopt_ran)
     o.verification.nlopt =
-        Section::Verified{r.nlopt_check.feasible, margins_of(spec, r.nlopt_check.evaluation),
+        Results::Verified{r.nlopt_check.feasible, margins_of(spec, r.nlopt_check.evaluation),
                           worst_of(r.nlopt_check.worst)};
 }
 
 // the release, the ball's flight, the open-loop replay and the integration
 void set_flight_and_replay(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
-                           Section::Optimised& o) {
+                           Results::Optimised& o) {
   o.release = {spec.tf, arr(r.flight.release_position), arr(r.flight.release_velocity)};
-  Section::Flight& fl = o.flight;
+  Results::Flight& fl = o.flight;
   for (size_t k = 0; k < r.flight.path.size(); ++k) {
     fl.path_xy_m.push_back(arr(r.flight.path[k]));
     fl.t_s.push_back(r.flight.path_t[k]);
@@ -378,7 +378,7 @@ void set_flight_and_replay(const st::ThrowingSpec& spec, const st::ThrowingResul
                    r.rk4_theta3_error};
 }
 
-class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingResult, Section> {
+class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingResult, Results> {
  public:
   using TypedStudyRun::TypedStudyRun;
 
@@ -521,9 +521,9 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     return k;
   }
 
-  Section section() const override {
+  Results study_results() const override {
     const auto& r = result_;
-    Section j;
+    Results j;
     set_parameters(spec_, j);
     set_assumptions(spec_, j);
     j.energy_initial_J = r.initial.evaluation.energy;
@@ -532,7 +532,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
         r.answer == "slsqp" ? r.nlopt.evaluation.energy : r.idp.evaluation.energy;
     j.saving_percent = r.saving_percent;
     if (r.idp.series.t.empty()) return j;
-    Section::Optimised& o = j.run.emplace();
+    Results::Optimised& o = j.run.emplace();
     o.answer = r.answer;
     set_reference(spec_, r, o);
     o.initial = motion_of(spec_, r.initial);

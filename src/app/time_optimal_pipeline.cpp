@@ -1,6 +1,6 @@
 // The time-optimal study in the pipeline: case -> studies::time_optimal::solve -> results.json.
 //
-// results.json "time_optimal" section: studies/time_optimal/results_section.hpp (every key,
+// results.json "time_optimal" section: studies/time_optimal/study_results.hpp (every key,
 // typed; written from it here, read back from it by the report and merge).
 #include <cmath>
 #include <limits>
@@ -20,15 +20,15 @@
 #include "scene/replay_frames.hpp"
 #include "scene/study_replays.hpp"
 #include "scene/time_optimal_frames.hpp"
-#include "studies/time_optimal/results_section.hpp"
 #include "studies/time_optimal/solve.hpp"
+#include "studies/time_optimal/study_results.hpp"
 
 namespace armstudy::app {
 namespace {
 namespace to = studies::time_optimal;
 using nlohmann::json;
 
-using Section = to::ResultsSection;
+using Results = to::StudyResults;
 
 std::vector<double> pair(const Eigen::Vector2d& v) { return {v[0], v[1]}; }
 
@@ -36,8 +36,8 @@ std::vector<double> pair(const Eigen::Vector2d& v) { return {v[0], v[1]}; }
 std::vector<double> joints(const core::JointVector& v) { return {v.data(), v.data() + v.size()}; }
 
 // a joints x N matrix as per-joint rows
-Section::Rows rows(const Eigen::MatrixXd& m) {
-  Section::Rows out;
+Results::Rows rows(const Eigen::MatrixXd& m) {
+  Results::Rows out;
   for (int j = 0; j < m.rows(); ++j) {
     std::vector<double> r;
     for (int k = 0; k < m.cols(); ++k) r.push_back(m(j, k));
@@ -55,8 +55,8 @@ const char* path_kind(to::PathKind k) {
   return "line";
 }
 
-Section::Violation violation_section(const to::Violation& v, int nj) {
-  Section::Violation o;
+Results::Violation violation_section(const to::Violation& v, int nj) {
+  Results::Violation o;
   o.worst = v.worst;
   o.text = v.text;
   o.kind = to::limit_name(v.kind);
@@ -70,8 +70,8 @@ Section::Violation violation_section(const to::Violation& v, int nj) {
   return o;
 }
 
-Section::Solver solver_section(const to::SolverResult& r, int nj) {
-  Section::Solver o;
+Results::Solver solver_section(const to::SolverResult& r, int nj) {
+  Results::Solver o;
   o.name = r.name;
   o.method = r.method;
   o.solved = r.solved;
@@ -89,11 +89,11 @@ Section::Solver solver_section(const to::SolverResult& r, int nj) {
   o.node_t_s = r.node_t;
   const to::MotionSamples& s = r.samples;
   o.samples =
-      Section::Samples{s.t, s.s, s.sd, s.sdd, rows(s.q), rows(s.qd), rows(s.qdd), rows(s.tau)};
+      Results::Samples{s.t, s.s, s.sd, s.sdd, rows(s.q), rows(s.qd), rows(s.qdd), rows(s.tau)};
   return o;
 }
 
-class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section> {
+class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Results> {
  public:
   using TypedStudyRun::TypedStudyRun;
 
@@ -127,7 +127,7 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
     return c;
   }
 
-  Section section() const override;
+  Results study_results() const override;
 
   std::vector<KeyFigure> key_figures() const override {
     std::vector<KeyFigure> k;
@@ -201,12 +201,12 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Section>
   bool lean_ = false;  ///< a sensitivity step: no replay
 };
 
-// (over 60 lines, kept whole: a flat list of the typed section's fields, in their fields() order)
-Section TimeOptimalRun::section() const {
+// (over 60 lines, kept whole: a flat list of the typed results's fields, in their fields() order)
+Results TimeOptimalRun::study_results() const {
   const to::Result& r = result_;
   const bool joint_space = spec_.space == to::PathSpace::kJoint;
   const int nj = spec_.chain.num_links();
-  Section o;
+  Results o;
   o.path.space = joint_space ? "joint" : "tip";
   o.path.s_unit = r.s_unit();
   if (joint_space) {
@@ -242,7 +242,7 @@ Section TimeOptimalRun::section() const {
   }
   if (r.grid.computed) {
     const to::GridConvergence& g = r.grid;
-    o.grid_convergence = Section::GridConvergence{g.grid_points,
+    o.grid_convergence = Results::GridConvergence{g.grid_points,
                                                   g.refined_points,
                                                   g.refined_solved,
                                                   g.duration,
@@ -261,14 +261,14 @@ Section TimeOptimalRun::section() const {
                                                   std::nullopt};
     if (g.extrapolation_computed)
       o.grid_convergence->extrapolation =
-          Section::Extrapolation{g.coarse_points, g.coarse_duration, g.order,
+          Results::Extrapolation{g.coarse_points, g.coarse_duration, g.order,
                                  g.asymptotic,    g.extrapolated,    g.extrapolation_error};
     if (g.graded)
       o.grid_convergence->graded =
-          Section::Graded{g.uniform_points,   g.uniform_change, g.graded_rounds,
+          Results::Graded{g.uniform_points,   g.uniform_change, g.graded_rounds,
                           g.graded_tolerance, g.max_points,     g.capped};
   }
-  if (replay_) o.mujoco_replay = replay_section(*replay_);
+  if (replay_) o.mujoco_replay = replay_results(*replay_);
   return o;
 }
 

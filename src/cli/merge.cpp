@@ -91,7 +91,7 @@ std::string results_problem(const json& r) {
     // the shared record, typed and strict (schema_version first), then the study's own
     // section read into its typed result: a misspelt key is an error naming it
     const report::ResultsRecord record = report::read_record(r);
-    if (const app::StudyEntry* study = app::find_study(record.study)) study->check_section(r);
+    if (const app::StudyEntry* study = app::find_study(record.study)) study->check_results(r);
   } catch (const report::ResultsError& x) {
     if (x.path() == "/schema_version")
       return std::string(x.what()).substr(std::string("/schema_version: ").size());

@@ -34,7 +34,7 @@ struct AnswerBox {
 
 /// A study's own lines of its answer box (its registry record, app::StudyEntry::answer): what
 /// binds or decides its answer and what the case assumes (`binding`, `assumptions`), read
-/// from its typed section of `results`; it may name its key picture (one of record.frames),
+/// from its typed results of `results`; it may name its key picture (one of record.frames),
 /// else the box takes the first locus, else the first strip.
 /// @throws ResultsError when results[study] is not the study's section.
 /// (app::study_parts reads the section once and hands it to the study's typed function.)

@@ -4,12 +4,11 @@
 #include "report/number_format.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
-#include "studies/pendulum/results_section.hpp"
+#include "studies/pendulum/study_results.hpp"
 
 namespace armstudy::report {
 
-void pendulum_answer(const studies::PendulumResultsSection& pe, const ResultsRecord&,
-                     AnswerBox& a) {
+void pendulum_answer(const studies::PendulumStudyResults& pe, const ResultsRecord&, AnswerBox& a) {
   a.binding.push_back(
       "no optimum: a free swing of the passive tray and ball, checked by the "
       "conservation of its mechanical energy (drift " +

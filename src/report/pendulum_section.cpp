@@ -5,7 +5,7 @@
 #include "report/number_format.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
-#include "studies/pendulum/results_section.hpp"
+#include "studies/pendulum/study_results.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -20,7 +20,7 @@ std::vector<double> minus_first(std::vector<double> v) {
   return v;
 }
 
-using PR = studies::PendulumResultsSection;
+using PR = studies::PendulumStudyResults;
 
 // the model, the integrator and the parameters
 Section method_section(const PR& p) {

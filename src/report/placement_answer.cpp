@@ -10,12 +10,12 @@
 #include "report/number_format.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
-#include "studies/placement/results_section.hpp"
+#include "studies/placement/study_results.hpp"
 
 namespace armstudy::report {
 namespace {
 
-using PS = studies::placement::ResultsSection;
+using PS = studies::placement::StudyResults;
 
 std::string binding_words(const PS::Decision& d) {
   const std::string& b = d.binding;

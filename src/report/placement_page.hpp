@@ -8,11 +8,11 @@
 #include "report/number_format.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
-#include "studies/placement/results_section.hpp"
+#include "studies/placement/study_results.hpp"
 
 namespace armstudy::report::placement_page {
 
-using PS = studies::placement::ResultsSection;
+using PS = studies::placement::StudyResults;
 
 inline std::string id_label(const PS::Id& o) {
   return o.program + ", conf. " + as_text(o.configuration);

@@ -15,7 +15,7 @@
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
 #include "studies/placement/converge.hpp"
-#include "studies/placement/results_section.hpp"
+#include "studies/placement/study_results.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -610,7 +610,7 @@ bool placement_loci_across_cases(const std::vector<std::pair<std::string, const 
   for (const auto& [name, results] : cases) {
     PS pl;
     try {
-      pl = read_section<PS>(*results, "placement");
+      pl = read_study_results<PS>(*results, "placement");
     } catch (const ResultsError&) {
       continue;  // written by another armstudy: left out of the plot
     }

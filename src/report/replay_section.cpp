@@ -33,7 +33,7 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<st
   Section s;
   s.id = "mujoco-replay";
   s.heading = "MuJoCo dynamic replay";
-  const studies::ReplaySection& first = *rs.front().replay;
+  const studies::ReplayResults& first = *rs.front().replay;
   s.paragraph(
       "The frames elsewhere on this page are kinematic: the planned joint angles are set and "
       "MuJoCo only draws them. Here MuJoCo's own physics runs the plan: the planned joint "
@@ -57,7 +57,7 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<st
               "at t (s)", "joint",      "tolerance (rad)", "at 2h (rad)",
               "order",    "check"};
   for (const ReplayOf& ro : rs) {
-    const studies::ReplaySection& r = *ro.replay;
+    const studies::ReplayResults& r = *ro.replay;
     t.rows.push_back({motion_label(ro), format_sig(r.timestep_s, 3), as_text(r.steps),
                       format_sig(r.max_deviation_rad, 3), format_sig(r.max_deviation_t_s, 4),
                       as_text(r.max_deviation_joint), format_sig(r.tolerance_rad, 3),
@@ -75,7 +75,7 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<st
   p.log_y = true;
   double tol = 0;
   for (const ReplayOf& ro : rs) {
-    const studies::ReplaySection& r = *ro.replay;
+    const studies::ReplayResults& r = *ro.replay;
     const std::vector<double>& ts = r.series.t_s;
     tol = std::max(tol, r.tolerance_rad);
     if (ts.size() < 2) continue;

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/page.hpp"
-#include "studies/replay_section.hpp"
+#include "studies/replay_results.hpp"
 
 namespace armstudy::report {
 
@@ -18,7 +18,7 @@ namespace armstudy::report {
 struct ReplayOf {
   std::string program;
   int configuration = 0;
-  const studies::ReplaySection* replay = nullptr;
+  const studies::ReplayResults* replay = nullptr;
 };
 
 /// `replays` are a study's "mujoco_replay"; `frames` is results.json "frames" (the files

@@ -1,5 +1,5 @@
 #pragma once
-/// The JSON mapping of the typed study results (src/studies/<study>/results_section.hpp),
+/// The JSON mapping of the typed study results (src/studies/<study>/study_results.hpp),
 /// written once per type as a `fields` function that names every key:
 ///
 ///   template <class V> void fields(V& v, Energy& e) {
@@ -413,10 +413,10 @@ nlohmann::json json_schema() {
   return fields_detail::schema<T>();
 }
 
-/// results[study] (a whole results.json) read strictly into the study's typed section.
+/// results[study] (a whole results.json) read strictly into the study's typed results.
 /// @throws ResultsError naming the JSON pointer of the first problem ("/<study>": missing).
 template <class T>
-T read_section(const nlohmann::json& results, const std::string& study) {
+T read_study_results(const nlohmann::json& results, const std::string& study) {
   const auto it = results.find(study);
   if (it == results.end()) throw ResultsError("/" + study, "missing");
   return from_json<T>(*it, "/" + study);

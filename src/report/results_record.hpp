@@ -1,6 +1,6 @@
 #pragma once
 /// The parts of results.json every study shares, typed: the record around the study's own
-/// section (results[study], studies/<study>/results_section.hpp). `run_case` writes it from
+/// section (results[study], studies/<study>/study_results.hpp). `run_case` writes it from
 /// this record, the report, the index page and `armstudy merge` read it back with
 /// read_record(): every key required unless optional, an unknown or misspelt key an error
 /// naming its JSON pointer. results.schema.json holds its schema (report/results_fields.hpp
@@ -285,7 +285,7 @@ void fields(V& v, ResultsRecord& x) {
 }
 
 /// The shared record of a whole results.json (results[record.study] is left to the study's
-/// reader, StudyEntry::check_section). A schema_version other than kSchemaVersion is an
+/// reader, StudyEntry::check_results). A schema_version other than kSchemaVersion is an
 /// error before anything else is read.
 /// @throws ResultsError naming the JSON pointer of the first problem.
 ResultsRecord read_record(const nlohmann::json& results);

@@ -1,7 +1,7 @@
 #pragma once
-/// Per-study parts of a case page: each gets its study's section of results.json as the
-/// study's typed result (read once by app::study_parts through report::read_section,
-/// studies/<study>/results_section.hpp; a section that is not the study's is a ResultsError
+/// Per-study parts of a case page: each gets its study's part of results.json as the
+/// study's typed result (read once by app::study_parts through report::read_study_results,
+/// studies/<study>/study_results.hpp; a section that is not the study's is a ResultsError
 /// naming the key) and adds sections
 /// (method, results tables, plots, notes on the source document) to the page. A value that
 /// is null in the file (not finite) is shown as "n/a", never invented.
@@ -15,36 +15,36 @@
 
 #include "report/answer_box.hpp"
 #include "report/page.hpp"
-#include "studies/pendulum/results_section.hpp"
-#include "studies/placement/results_section.hpp"
-#include "studies/throwing/results_section.hpp"
-#include "studies/time_optimal/results_section.hpp"
+#include "studies/pendulum/study_results.hpp"
+#include "studies/placement/study_results.hpp"
+#include "studies/throwing/study_results.hpp"
+#include "studies/time_optimal/study_results.hpp"
 
 namespace armstudy::report {
 
 struct ResultsRecord;
 
-/// A placement case's typed section -> page sections. @throws what the plot writers throw.
-void placement_sections(const studies::placement::ResultsSection& pl, const ResultsRecord& record,
+/// A placement case's typed results -> page sections. @throws what the plot writers throw.
+void placement_sections(const studies::placement::StudyResults& pl, const ResultsRecord& record,
                         FigureWriter& figures, CasePage& page);
-/// A pendulum case's typed section -> page sections.
-void pendulum_sections(const studies::PendulumResultsSection& pe, const ResultsRecord& record,
+/// A pendulum case's typed results -> page sections.
+void pendulum_sections(const studies::PendulumStudyResults& pe, const ResultsRecord& record,
                        FigureWriter& figures, CasePage& page);
-/// A throwing case's typed section -> page sections.
-void throwing_sections(const studies::ThrowingResultsSection& th, const ResultsRecord& record,
+/// A throwing case's typed results -> page sections.
+void throwing_sections(const studies::ThrowingStudyResults& th, const ResultsRecord& record,
                        FigureWriter& figures, CasePage& page);
-/// A time-optimal case's typed section -> page sections.
-void time_optimal_sections(const studies::time_optimal::ResultsSection& to,
+/// A time-optimal case's typed results -> page sections.
+void time_optimal_sections(const studies::time_optimal::StudyResults& to,
                            const ResultsRecord& record, FigureWriter& figures, CasePage& page);
-/// Each study's lines of its answer box (app::study_parts hands them the typed section).
-void placement_answer(const studies::placement::ResultsSection& pl, const ResultsRecord& record,
+/// Each study's lines of its answer box (app::study_parts hands them the typed results).
+void placement_answer(const studies::placement::StudyResults& pl, const ResultsRecord& record,
                       AnswerBox& box);
-void pendulum_answer(const studies::PendulumResultsSection& pe, const ResultsRecord& record,
+void pendulum_answer(const studies::PendulumStudyResults& pe, const ResultsRecord& record,
                      AnswerBox& box);
-void throwing_answer(const studies::ThrowingResultsSection& th, const ResultsRecord& record,
+void throwing_answer(const studies::ThrowingStudyResults& th, const ResultsRecord& record,
                      AnswerBox& box);
-void time_optimal_answer(const studies::time_optimal::ResultsSection& to,
-                         const ResultsRecord& record, AnswerBox& box);
+void time_optimal_answer(const studies::time_optimal::StudyResults& to, const ResultsRecord& record,
+                         AnswerBox& box);
 
 /// The optimal root locations of several placement cases in one plot (the thesis's
 /// Figure 9.30): per program and configuration, the locus of its optimum as the line length

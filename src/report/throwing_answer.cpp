@@ -6,7 +6,7 @@
 #include "report/number_format.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
-#include "studies/throwing/results_section.hpp"
+#include "studies/throwing/study_results.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -21,7 +21,7 @@ std::string constraint_words(const std::string& c) {
 
 }  // namespace
 
-void throwing_answer(const studies::ThrowingResultsSection& th, const ResultsRecord& record,
+void throwing_answer(const studies::ThrowingStudyResults& th, const ResultsRecord& record,
                      AnswerBox& a) {
   if (th.run)
     for (const auto& row : th.run->comparison) {

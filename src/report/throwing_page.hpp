@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "report/study_sections.hpp"
-#include "studies/throwing/results_section.hpp"
+#include "studies/throwing/study_results.hpp"
 
 namespace armstudy::report::throwing_page {
 
-using TS = studies::ThrowingResultsSection;
+using TS = studies::ThrowingStudyResults;
 
 /// A motion drawn: its label, its colour's key and its typed record.
 struct Motion {
@@ -19,7 +19,7 @@ struct Motion {
   const TS::Motion* m;
 };
 
-// what every part of the page reads: the typed section, the optimisers' part (empty when
+// what every part of the page reads: the typed results, the optimisers' part (empty when
 // the study stopped before them: nothing of it is drawn) and the motions drawn
 struct Page {
   const TS& section;

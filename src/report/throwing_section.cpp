@@ -9,7 +9,7 @@
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
 #include "report/throwing_page.hpp"
-#include "studies/throwing/results_section.hpp"
+#include "studies/throwing/study_results.hpp"
 
 namespace armstudy::report {
 

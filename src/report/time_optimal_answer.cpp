@@ -9,13 +9,13 @@
 #include "report/number_format.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
-#include "studies/time_optimal/results_section.hpp"
+#include "studies/time_optimal/study_results.hpp"
 
 namespace armstudy::report {
 
-void time_optimal_answer(const studies::time_optimal::ResultsSection& to, const ResultsRecord&,
+void time_optimal_answer(const studies::time_optimal::StudyResults& to, const ResultsRecord&,
                          AnswerBox& a) {
-  using TO = studies::time_optimal::ResultsSection;
+  using TO = studies::time_optimal::StudyResults;
   if (!to.solvers.empty()) {
     static const TO::Samples none;
     const TO::Samples& s = to.solvers[0].samples ? *to.solvers[0].samples : none;

@@ -10,16 +10,16 @@
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
 #include "studies/time_optimal/result.hpp"
-#include "studies/time_optimal/results_section.hpp"
+#include "studies/time_optimal/study_results.hpp"
 
 namespace armstudy::report {
 namespace {
 
 using nlohmann::json;
-using Section_ = studies::time_optimal::ResultsSection;
+using Results_ = studies::time_optimal::StudyResults;
 
 // row j of per-joint rows, empty when there is none
-std::vector<double> row(const Section_::Rows& rows, size_t j) {
+std::vector<double> row(const Results_::Rows& rows, size_t j) {
   return j < rows.size() ? rows[j] : std::vector<double>{};
 }
 double at(const std::vector<double>& v, size_t j) { return j < v.size() ? v[j] : NAN; }
@@ -31,15 +31,15 @@ std::string solver_key(const std::string& name) {
 }  // namespace
 // the unit of the path position s: rad for a path given in joint space (its joint-space
 // chord length), else the tip path's
-std::string path_unit(const Section_& to) { return to.path.s_unit.empty() ? "m" : to.path.s_unit; }
+std::string path_unit(const Results_& to) { return to.path.s_unit.empty() ? "m" : to.path.s_unit; }
 
 // joints: one limit per joint
-size_t joint_count(const Section_& to) {
+size_t joint_count(const Results_& to) {
   return std::max<size_t>(2, to.limits.velocity_rad_s.size());
 }
 
 // the method: the path, the three solvers and the limits
-Section method_section(const Section_& to) {
+Section method_section(const Results_& to) {
   const auto& limits = to.limits;
   const bool joint_space = to.path.space == "joint";
   const size_t joints = joint_count(to);
@@ -79,7 +79,7 @@ Section method_section(const Section_& to) {
 }
 
 // each solver's duration, run time and largest limit use
-Table solvers_table(const Section_& to) {
+Table solvers_table(const Results_& to) {
   const auto& solvers = to.solvers;
   Table t;
   t.caption =
@@ -102,7 +102,7 @@ Table solvers_table(const Section_& to) {
 }
 
 // the phase plane: s' over s, the maximum velocity curve and each solver's profile
-void add_phase_plane(const Section_& to, FigureWriter& figures, Section& res) {
+void add_phase_plane(const Results_& to, FigureWriter& figures, Section& res) {
   const auto& solvers = to.solvers;
   const std::string u = path_unit(to);
   LinePlot phase;
@@ -142,7 +142,7 @@ void add_phase_plane(const Section_& to, FigureWriter& figures, Section& res) {
 }
 
 // s(t): where each solver's motion is on the path over time
-void add_path_position(const Section_& to, FigureWriter& figures, Section& res) {
+void add_path_position(const Results_& to, FigureWriter& figures, Section& res) {
   const auto& solvers = to.solvers;
   const std::string u = path_unit(to);
   LinePlot st;
@@ -164,7 +164,7 @@ void add_path_position(const Section_& to, FigureWriter& figures, Section& res) 
 }
 
 // the solvers side by side
-Section solvers_section(const Section_& to, FigureWriter& figures) {
+Section solvers_section(const Results_& to, FigureWriter& figures) {
   const auto& solvers = to.solvers;
   Section res;
   res.id = "solvers";
@@ -179,7 +179,7 @@ Section solvers_section(const Section_& to, FigureWriter& figures) {
 }
 
 // each joint's torque and velocity over time against its limit
-Section limits_section(const Section_& to, FigureWriter& figures) {
+Section limits_section(const Results_& to, FigureWriter& figures) {
   const auto& solvers = to.solvers;
   const auto& limits = to.limits;
   const size_t joints = joint_count(to);
@@ -188,14 +188,14 @@ Section limits_section(const Section_& to, FigureWriter& figures) {
   lim.heading = "Joint torques and velocities against their limits";
   struct Kind {
     const char* key;  ///< the figure's name
-    Section_::Rows Section_::Samples::*rows;
+    Results_::Rows Results_::Samples::*rows;
     const std::vector<double>* limit;
     const char* what;
     const char* unit;
   };
   const Kind kinds[] = {
-      {"tau_Nm", &Section_::Samples::tau_Nm, &limits.torque_Nm, "torque", "N m"},
-      {"qd_rad_s", &Section_::Samples::qd_rad_s, &limits.velocity_rad_s, "velocity", "rad/s"}};
+      {"tau_Nm", &Results_::Samples::tau_Nm, &limits.torque_Nm, "torque", "N m"},
+      {"qd_rad_s", &Results_::Samples::qd_rad_s, &limits.velocity_rad_s, "velocity", "rad/s"}};
   for (const Kind& k : kinds)
     for (size_t j = 0; j < joints; ++j) {
       LinePlot p;
@@ -222,7 +222,7 @@ Section limits_section(const Section_& to, FigureWriter& figures) {
 }
 
 // DP (path-speed state) as the number of segments N grows
-Table dp_convergence_table(const Section_& to) {
+Table dp_convergence_table(const Results_& to) {
   Table ct;
   ct.caption =
       "DP (path-speed state) as the number of segments N grows: its duration "
@@ -248,7 +248,7 @@ Table dp_convergence_table(const Section_& to) {
 }
 
 // how the exact solver graded its grid (a case whose uniform grid did not converge)
-std::string graded_grid_text(const Section_::GridConvergence& g) {
+std::string graded_grid_text(const Results_::GridConvergence& g) {
   const auto& gr = *g.graded;
   return "Graded grid: the case's " + as_text(gr.uniform_points) + " uniform points changed by " +
          format_sig(gr.uniform_change, 3) +
@@ -267,7 +267,7 @@ std::string graded_grid_text(const Section_::GridConvergence& g) {
 }
 
 // the converged duration: Richardson-extrapolated, or the refined grid's
-std::string extrapolation_text(const Section_::GridConvergence& g) {
+std::string extrapolation_text(const Results_::GridConvergence& g) {
   const auto& x = *g.extrapolation;
   return "Converged duration: " + format_sig(x.duration_s, 8) + " s ± " + format_sig(x.error_s, 2) +
          " s" +
@@ -284,7 +284,7 @@ std::string extrapolation_text(const Section_::GridConvergence& g) {
 }
 
 // the exact solver's own grid convergence
-void add_grid_convergence(const Section_& to, Section& conv) {
+void add_grid_convergence(const Results_& to, Section& conv) {
   if (!to.grid_convergence) return;
   const auto& g = *to.grid_convergence;
   const bool passed = g.passed;
@@ -317,7 +317,7 @@ void add_grid_convergence(const Section_& to, Section& conv) {
 }
 
 // DP over its segments, the exact solver over its grid
-Section convergence_section(const Section_& to) {
+Section convergence_section(const Results_& to) {
   Section conv;
   conv.id = "convergence";
   conv.heading = "Convergence: DP over its segments, the exact solver over its grid";
@@ -330,7 +330,7 @@ Section convergence_section(const Section_& to) {
   return conv;
 }
 
-void time_optimal_sections(const Section_& to, const ResultsRecord& record, FigureWriter& figures,
+void time_optimal_sections(const Results_& to, const ResultsRecord& record, FigureWriter& figures,
                            CasePage& page) {
   page.sections.push_back(method_section(to));
   page.sections.push_back(solvers_section(to, figures));

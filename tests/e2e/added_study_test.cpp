@@ -1,8 +1,8 @@
 // Adding a study is its folder, one line in the list of studies and its parts in the registry
 // (docs/development.md, "Adding a study"): a trivial study defined here, with its typed
-// results.json section, loader, solver, checks, key figures and report sections, runs through
+// results.json part, loader, solver, checks, key figures and report sections, runs through
 // run_case like the bundled studies and gets its results.json (written from and read back into
-// its typed section) and its index.html. The last test checks that every registered study has
+// its typed results) and its index.html. The last test checks that every registered study has
 // each step's place, and that the steps name them.
 #include <gtest/gtest.h>
 
@@ -30,17 +30,17 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// src/studies/<study>/: the spec, the answer and the typed section (here: sums of 1..n)
+// src/studies/<study>/: the spec, the answer and the typed results (here: sums of 1..n)
 struct TallySpec {
   int n = 3;
 };
-struct TallySection {
+struct TallyResults {
   int n = 0;
   long long sum = 0;
   std::vector<double> squares_m2;
 };
 template <class V>
-void fields(V& v, TallySection& x) {
+void fields(V& v, TallyResults& x) {
   v("n", x.n, "how far to count");
   v("sum", x.sum, "1 + 2 + ... + n");
   v("squares_m2", x.squares_m2, "k^2 for k = 1..n");
@@ -60,7 +60,7 @@ TallySpec load_tally_spec(cases::Map& root) {
 class TallyRun final : public StudyRun {
  public:
   using SpecType = TallySpec;        // the spec it is made from (TypedStudyRun names both)
-  using SectionType = TallySection;  // its results.json section
+  using ResultsType = TallyResults;  // its results.json part
   explicit TallyRun(TallySpec spec) : spec_(spec) {}
   studies::Status solve(const studies::ProgressFn&) override {
     section_.n = spec_.n;
@@ -83,11 +83,11 @@ class TallyRun final : public StudyRun {
 
  private:
   TallySpec spec_;
-  TallySection section_;
+  TallyResults section_;
 };
 
-// src/report/<study>_section.cpp: the study's sections, from its typed section
-void tally_sections(const TallySection& s, const report::ResultsRecord&, report::FigureWriter&,
+// src/report/<study>_section.cpp: the study's sections, from its typed results
+void tally_sections(const TallyResults& s, const report::ResultsRecord&, report::FigureWriter&,
                     report::CasePage& page) {
   report::Section sec;
   sec.id = "tally";
@@ -97,12 +97,12 @@ void tally_sections(const TallySection& s, const report::ResultsRecord&, report:
 }
 
 // src/report/<study>_answer.cpp (optional): its lines of the answer box on page 1
-void tally_answer(const TallySection& s, const report::ResultsRecord&, report::AnswerBox& a) {
+void tally_answer(const TallyResults& s, const report::ResultsRecord&, report::AnswerBox& a) {
   a.binding.push_back("nothing binds a count to " + std::to_string(s.n));
 }
 
 // src/app/study_loaders.cpp: its line in the one list of studies (the fuzz build's too)
-const StudyLoader kTallyLoader = study_loader<TallySection, &load_tally_spec>("tally");
+const StudyLoader kTallyLoader = study_loader<TallyResults, &load_tally_spec>("tally");
 // src/app/<study>_pipeline.cpp: its parts (the answer lines and the index figure optional),
 // joined to its loader in src/app/study_registry.cpp by the spec its run takes
 const StudyEntry kTally(kTallyLoader, study_parts<TallyRun>("counts", &tally_sections));
@@ -141,8 +141,8 @@ TEST(AddedStudy, RunsThroughRunCaseIntoResultsJsonAndIndexHtml) {
   EXPECT_EQ(r["tally"]["sum"], 10);
   EXPECT_EQ(r["key_figures"][0]["name"], "sum");
   EXPECT_TRUE(r["checks"][0]["passed"].get<bool>());
-  EXPECT_NO_THROW(kTally.check_section(r));
-  EXPECT_EQ(kTally.section_schema()["properties"]["sum"]["type"], "integer");
+  EXPECT_NO_THROW(kTally.check_results(r));
+  EXPECT_EQ(kTally.results_schema()["properties"]["sum"]["type"], "integer");
   const std::string html = armstudy::testing::slurp(out / "tally-case" / "index.html");
   EXPECT_NE(html.find("1 + ... + 4 = 10"), std::string::npos);
   // the shared record reads back typed; the parts a study may leave out default to none
@@ -170,7 +170,7 @@ TEST(AddedStudy, ARecordWithoutAPartIsRefused) {
   EXPECT_THROW(StudyEntry(kTallyLoader, study_parts<TallyRun>("counts", nullptr)),
                std::invalid_argument);
   StudyLoader no_reader = kTallyLoader;
-  no_reader.check_section = nullptr;
+  no_reader.check_results = nullptr;
   EXPECT_THROW(StudyEntry(no_reader, study_parts<TallyRun>("counts", &tally_sections)),
                std::invalid_argument);
   StudyParts other_spec = study_parts<TallyRun>("counts", &tally_sections);
@@ -204,7 +204,7 @@ bool file_has(const std::string& path, const std::string& text) {
 TEST(AddedStudy, EveryStudyHasEachStepsPlace) {
   for (const StudyEntry& e : study_registry()) {
     const std::string s(e.study);
-    EXPECT_TRUE(has_file("src/studies/" + s + "/results_section.hpp")) << s << ": step 1";
+    EXPECT_TRUE(has_file("src/studies/" + s + "/study_results.hpp")) << s << ": step 1";
     EXPECT_TRUE(has_file("src/cases/" + s + "_case.cpp")) << s << ": step 2";
     EXPECT_TRUE(file_has("src/app/study_loaders.cpp", '"' + s + '"')) << s << ": step 3";
     EXPECT_TRUE(file_has("src/app/" + s + "_pipeline.cpp", s + "_parts()")) << s << ": step 4";

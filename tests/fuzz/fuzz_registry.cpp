@@ -1,5 +1,5 @@
 // The fuzz build's study registry: the one list of studies (src/app/study_loaders.cpp: each
-// study's case loader and results.json section's strict reader, compiled here as in the
+// study's case loader and results.json part's strict reader, compiled here as in the
 // program), each extended with stand-ins for the parts the fuzz targets never call (the run
 // and the report), so that the fuzz targets link only the loading and reading code and build
 // in a minute with the sanitizers. Nothing here names a study: a study added to that list is

@@ -12,17 +12,17 @@
 #include "report/page.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
-#include "studies/placement/results_section.hpp"
-#include "studies/time_optimal/results_section.hpp"
+#include "studies/placement/study_results.hpp"
+#include "studies/time_optimal/study_results.hpp"
 
 namespace armstudy::report {
 namespace {
 using nlohmann::json;
 
-// a study's answer-box lines as its registry record holds them (the typed section read once)
+// a study's answer-box lines as its registry record holds them (the typed results read once)
 StudyAnswer registered_answer(const std::string& study) { return app::find_study(study)->answer; }
 
-// a results.json as run_case writes it: the shared record and the study's typed section
+// a results.json as run_case writes it: the shared record and the study's typed results
 json results_of(const std::string& study, const json& section, std::vector<CheckRecord> checks,
                 std::vector<std::string> frames, const std::string& message = "") {
   ResultsRecord r;
@@ -42,7 +42,7 @@ json results_of(const std::string& study, const json& section, std::vector<Check
 }
 
 json placement_results(bool failed_check) {
-  using PS = studies::placement::ResultsSection;
+  using PS = studies::placement::StudyResults;
   PS pl;
   pl.samples = 401;
   pl.singularity_margin_m = 0.01;
@@ -121,7 +121,7 @@ TEST(AnswerBox, AMisspeltKeyIsAnErrorNamingItNotAnEmptyBox) {
 }
 
 TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
-  using TO = studies::time_optimal::ResultsSection;
+  using TO = studies::time_optimal::StudyResults;
   TO to;
   to.limits.velocity_rad_s = {1.0, 2.0};
   to.limits.torque_Nm = {10.0, 10.0};

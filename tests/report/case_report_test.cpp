@@ -17,10 +17,10 @@
 #include "report/results_fields.hpp"
 #include "report/results_record.hpp"
 #include "report/study_sections.hpp"
-#include "studies/pendulum/results_section.hpp"
-#include "studies/placement/results_section.hpp"
-#include "studies/throwing/results_section.hpp"
-#include "studies/time_optimal/results_section.hpp"
+#include "studies/pendulum/study_results.hpp"
+#include "studies/placement/study_results.hpp"
+#include "studies/throwing/study_results.hpp"
+#include "studies/time_optimal/study_results.hpp"
 
 namespace armstudy::report {
 namespace {
@@ -52,8 +52,8 @@ cases::CaseInfo hostile_info(const std::string& study) {
   return info;
 }
 
-// the study's section as its pipeline writes it: the typed section
-// (src/studies/<study>/results_section.hpp), partly filled
+// the study's section as its pipeline writes it: the typed results
+// (src/studies/<study>/study_results.hpp), partly filled
 json study_section(const std::string& study) {
   std::vector<double> ts;
   for (int i = 0; i <= 40; ++i) ts.push_back(i / 40.0);
@@ -76,35 +76,35 @@ json study_section(const std::string& study) {
     return v;
   };
   if (study == "placement") {
-    studies::placement::ResultsSection s;
+    studies::placement::StudyResults s;
     s.length_m = 0.5;
     s.annulus_m = {0.2, 0.6};
     for (int conf = 1; conf <= 2; ++conf) {
-      const studies::placement::ResultsSection::Id id{"cycloidal", conf};
-      studies::placement::ResultsSection::Optimum o;
-      static_cast<studies::placement::ResultsSection::Id&>(o) = id;
+      const studies::placement::StudyResults::Id id{"cycloidal", conf};
+      studies::placement::StudyResults::Optimum o;
+      static_cast<studies::placement::StudyResults::Id&>(o) = id;
       o.energy_J = 10.0 + conf;
       o.root_xy_m = {0.25, 0.3};
       o.series = {1,     ts,    s1(conf), s1(2), s1(3),  s1(4), s1(5),
                   s1(6), s1(7), s1(8),    s1(9), s1(10), s1(1)};
       s.optima.push_back(o);
-      studies::placement::ResultsSection::Curve c;
-      static_cast<studies::placement::ResultsSection::Id&>(c) = id;
+      studies::placement::StudyResults::Curve c;
+      static_cast<studies::placement::StudyResults::Id&>(c) = id;
       c.x_s_m = 0.5;
       c.phi_deg = {100, 110, 120, 130};
       c.energy_J = {12.0, 11.0, NAN, 13.0};
       c.status = "os.o";
       s.curves.push_back(c);
-      studies::placement::ResultsSection::Map m;
-      static_cast<studies::placement::ResultsSection::Id&>(m) = id;
+      studies::placement::StudyResults::Map m;
+      static_cast<studies::placement::StudyResults::Id&>(m) = id;
       m.x_m = {0.0, 0.1, 0.2, 0.3, 0.4};
       m.y_m = {0.0, 0.1, 0.2};
       m.energy_J_rows = {"- - - - -", "3 2.5 2 2.5 3", "4 3 2.2 3 4"};
       m.status_rows = {".....", "soooo", "ooxoo"};
       m.optimum_xy_m = std::array<double, 2>{0.2, 0.1};
       s.maps.push_back(m);
-      studies::placement::ResultsSection::Pareto pr;
-      static_cast<studies::placement::ResultsSection::Id&>(pr) = id;
+      studies::placement::StudyResults::Pareto pr;
+      static_cast<studies::placement::StudyResults::Id&>(pr) = id;
       pr.joint = 1;
       pr.peak_torque_Nm = {{5, 1}, {7, 1.5}, {9, 2}};
       pr.energy_J = {14, 12, 11};
@@ -116,7 +116,7 @@ json study_section(const std::string& study) {
     return to_json(s);
   }
   if (study == "pendulum") {
-    studies::PendulumResultsSection s;
+    studies::PendulumStudyResults s;
     s.series = {ts, s4(3), s4(4), s1(2), s1(3), s1(0), s2(1), s2(2)};
     s.snapshots.push_back({0.0, 0, {0, 0, -1.5, -0.6}, {0.1, -0.1}});
     s.energy.initial_J = -0.2;
@@ -124,7 +124,7 @@ json study_section(const std::string& study) {
     return to_json(s);
   }
   if (study == "throwing") {
-    using TS = studies::ThrowingResultsSection;
+    using TS = studies::ThrowingStudyResults;
     TS s;
     auto rows = [](const std::vector<std::array<double, 2>>& v) {
       TS::Rows r;
@@ -148,13 +148,13 @@ json study_section(const std::string& study) {
     o.idp.convergence = {{1, 1, 21, 0, {}, 0, 0}, {2, 1, 20, 0, {}, 0, 0}};
     return to_json(s);
   }
-  studies::time_optimal::ResultsSection s;
+  studies::time_optimal::StudyResults s;
   for (const char* name : {"exact", "dp", "complex"}) {
-    studies::time_optimal::ResultsSection::Solver v;
+    studies::time_optimal::StudyResults::Solver v;
     v.name = name;
     v.solved = true;
     v.duration_s = 1.5;
-    v.samples = studies::time_optimal::ResultsSection::Samples{};
+    v.samples = studies::time_optimal::StudyResults::Samples{};
     v.samples->t_s = ts;
     v.samples->s = ts;
     v.samples->sd = s1(1);

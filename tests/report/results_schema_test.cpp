@@ -1,5 +1,5 @@
 // results.schema.json describes every study's section completely: its study sections are the
-// JSON Schemas of the typed results (src/studies/<study>/results_section.hpp), so the file,
+// JSON Schemas of the typed results (src/studies/<study>/study_results.hpp), so the file,
 // the writer and the reader cannot drift apart.
 #include <gtest/gtest.h>
 
@@ -158,7 +158,7 @@ TEST(ResultsSchema, EveryStudySectionIsItsTypedResultsSchema) {
   const bool write = std::getenv("ARMSTUDY_WRITE_SCHEMA") != nullptr;
   for (const app::StudyEntry& e : app::study_registry()) {
     const std::string study(e.study);
-    const json want = e.section_schema();
+    const json want = e.results_schema();
     if (write) {
       text = with_section(text, study, want);
       continue;
@@ -197,7 +197,7 @@ TEST(ResultsSchema, StudySectionsAdmitNoOtherKeyAndNameEveryUnit) {
       if (s.contains("anyOf"))
         for (const auto& a : s["anyOf"]) walk(a, path);
     };
-    walk(e.section_schema(), "");
+    walk(e.results_schema(), "");
     EXPECT_GT(objects, 3) << e.study;
     EXPECT_GT(units, 5) << e.study;
   }

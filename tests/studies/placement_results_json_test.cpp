@@ -1,4 +1,4 @@
-// The "placement" section of results.json as placement_pipeline.cpp documents it, produced by the
+// The "placement" part of results.json as placement_pipeline.cpp documents it, produced by the
 // pipeline from a case file (what the report and CI read).
 #include <gtest/gtest.h>
 #include <unistd.h>

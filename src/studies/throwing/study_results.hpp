@@ -1,5 +1,5 @@
 #pragma once
-/// The throwing study's section of results.json as a typed value: what the pipeline writes
+/// The throwing study's part of results.json as a typed value: what the pipeline writes
 /// (app/throwing_pipeline.cpp fills it from the ThrowingResult) and what the report and
 /// `armstudy merge` read back. `fields` names every key once: report/results_fields.hpp
 /// turns it into the writer, the strict reader and the schema (results.schema.json). SI;
@@ -12,7 +12,7 @@
 
 namespace armstudy::studies {
 
-struct ThrowingResultsSection {
+struct ThrowingStudyResults {
   using Rows = std::vector<std::vector<double>>;
   struct Link {
     double length_m = 0, mass_kg = 0, com_m = 0, inertia_kg_m2 = 0;
@@ -255,14 +255,14 @@ struct ThrowingResultsSection {
 };
 
 template <class V>
-void fields(V& v, ThrowingResultsSection::Link& x) {
+void fields(V& v, ThrowingStudyResults::Link& x) {
   v("length_m", x.length_m, "link length");
   v("mass_kg", x.mass_kg, "link mass");
   v("com_m", x.com_m, "centre of mass from the joint");
   v("inertia_kg_m2", x.inertia_kg_m2, "inertia about the centre of mass");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Tray& x) {
+void fields(V& v, ThrowingStudyResults::Tray& x) {
   v("circle_offset_m", x.circle_offset_m, "centre of the ball's circle from the tray hinge");
   v("mass_kg", x.mass_kg, "tray mass");
   v("com_m", x.com_m, "tray centre of mass along the tray");
@@ -271,14 +271,14 @@ void fields(V& v, ThrowingResultsSection::Tray& x) {
   v("width_deg", x.width_deg, "tray angular width lambda");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Ball& x) {
+void fields(V& v, ThrowingStudyResults::Ball& x) {
   v("mass_kg", x.mass_kg, "ball mass");
   v("circle_radius_m", x.circle_radius_m, "radius r4 of the ball's circle");
   v("radius_m", x.radius_m, "ball radius r_b");
   v("inertia_kg_m2", x.inertia_kg_m2, "ball inertia about its centre");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Motors& x) {
+void fields(V& v, ThrowingStudyResults::Motors& x) {
   v("kt_Nm_per_A", x.kt_Nm_per_A, "torque constant");
   v("kv_V_s_per_rad", x.kv_V_s_per_rad, "back-emf constant");
   v("resistance_ohm", x.resistance_ohm, "armature resistance");
@@ -289,7 +289,7 @@ void fields(V& v, ThrowingResultsSection::Motors& x) {
   v("count_regeneration", x.count_regeneration, "the energy counts regeneration (signed e i)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Task& x) {
+void fields(V& v, ThrowingStudyResults::Task& x) {
   v("start_deg", x.start_deg, "[theta1, theta2, theta3, theta4] at the start");
   v("release_deg", x.release_deg, "[theta1, theta2, theta3] at release");
   v("release_rate_rad_s", x.release_rate_rad_s, "[theta1', theta2'] at release");
@@ -297,7 +297,7 @@ void fields(V& v, ThrowingResultsSection::Task& x) {
   v("landing_height_m", x.landing_height_m, "height where the flight ends");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Parameters& x) {
+void fields(V& v, ThrowingStudyResults::Parameters& x) {
   v("gravity_m_s2", x.gravity_m_s2, "gravitational acceleration");
   v("link1", x.link1, "link 1");
   v("link2", x.link2, "link 2");
@@ -308,14 +308,14 @@ void fields(V& v, ThrowingResultsSection::Parameters& x) {
   v("choices", x.choices, "modelling choices (sentences)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Assumption& x) {
+void fields(V& v, ThrowingStudyResults::Assumption& x) {
   v("name", x.name, "what the source leaves open");
   v("value", x.value, "the value used, in unit");
   v("unit", x.unit, "unit of value");
   v("key", x.key, "the case key that sets it");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Limits& x) {
+void fields(V& v, ThrowingStudyResults::Limits& x) {
   v("voltage_max_V", x.voltage_max_V, "motor voltage limit |e|");
   v("current_max_A", x.current_max_A, "motor current limit");
   v("power_max_W", x.power_max_W, "motor power limit |e i|");
@@ -326,7 +326,7 @@ void fields(V& v, ThrowingResultsSection::Limits& x) {
   v("backoff", x.backoff, "normalised constraint back-off of both optimisers");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Worst& x) {
+void fields(V& v, ThrowingStudyResults::Worst& x) {
   v("contact", x.contact, "normalised worst contact constraint (> 0 broken)");
   v("friction", x.friction, "normalised worst friction constraint (> 0 broken)");
   v("tray", x.tray, "normalised worst tray constraint (> 0 broken)");
@@ -336,7 +336,7 @@ void fields(V& v, ThrowingResultsSection::Worst& x) {
   v("release", x.release, "normalised release constraint (> 0 broken)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Margins& x) {
+void fields(V& v, ThrowingStudyResults::Margins& x) {
   v("contact_N", x.contact_N, "smallest normal force minus the contact margin (> 0 met)");
   v("friction", x.friction, "mu minus the largest |F_t| / N (> 0 met)");
   v("tray_rad", x.tray_rad, "lambda/2 minus the largest |theta4| (> 0 met)");
@@ -346,14 +346,14 @@ void fields(V& v, ThrowingResultsSection::Margins& x) {
   v("power_W", x.power_W, "power limit minus the largest |e i| (> 0 met)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Break& x) {
+void fields(V& v, ThrowingStudyResults::Break& x) {
   v("constraint", x.constraint, "the constraint eq. 8 breaks");
   v("worst_normalised", x.worst_normalised, "its normalised worst value");
   v("margin", x.margin, "its margin, in unit (< 0 broken)");
   v("unit", x.unit, "unit of margin");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Repair& x) {
+void fields(V& v, ThrowingStudyResults::Repair& x) {
   v("method", x.method, "how the reference is repaired");
   v("return_code", x.return_code, "NLopt's return code");
   v("converged", x.converged, "the repair stopped on its tolerance");
@@ -364,19 +364,19 @@ void fields(V& v, ThrowingResultsSection::Repair& x) {
   v("max_rate_change_rad_s", x.max_rate_change_rad_s, "largest change of a node rate");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Reference& x) {
+void fields(V& v, ThrowingStudyResults::Reference& x) {
   v("kind", x.kind, "eq8, repaired or none");
   v("initial_feasible", x.initial_feasible, "eq. 8 meets every constraint");
   v("raw_breaks", x.raw_breaks, "the constraints eq. 8 breaks");
   v.optional("repair", x.repair, "the repair (when eq. 8 is not feasible)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::ReleaseError& x) {
+void fields(V& v, ThrowingStudyResults::ReleaseError& x) {
   v("angle_rad", x.angle_rad, "[theta1, theta2, theta3] at tf minus the release angles");
   v("rate_rad_s", x.rate_rad_s, "[theta1', theta2'] at tf minus the release rates");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::EnergySplit& x) {
+void fields(V& v, ThrowingStudyResults::EnergySplit& x) {
   v("electrical_J", x.electrical_J, "electrical energy");
   v("mechanical_J", x.mechanical_J, "mechanical work of the motors");
   v("copper_J", x.copper_J, "copper losses");
@@ -384,12 +384,12 @@ void fields(V& v, ThrowingResultsSection::EnergySplit& x) {
   v("rest_J", x.rest_J, "the remainder");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Profile& x) {
+void fields(V& v, ThrowingStudyResults::Profile& x) {
   v("t_s", x.t_s, "stage node times");
   v("rate_rad_s", x.rate_rad_s, "[theta1', theta2'] per node");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Series& x) {
+void fields(V& v, ThrowingStudyResults::Series& x) {
   v("t_s", x.t_s, "every RK4 step start (two samples share each stage boundary)");
   v("stage", x.stage, "stage of each sample");
   v("q_rad", x.q_rad, "[theta1..theta4] per sample");
@@ -405,7 +405,7 @@ void fields(V& v, ThrowingResultsSection::Series& x) {
   v("friction_needed", x.friction_needed, "|F_t| / N (null where the tray does not push)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Motion& x) {
+void fields(V& v, ThrowingStudyResults::Motion& x) {
   v("energy_J", x.energy_J, "energy of the throw");
   v("max_abs_theta4_rad", x.max_abs_theta4_rad, "largest |theta4|");
   v("max_voltage_V", x.max_voltage_V, "largest |motor voltage|");
@@ -422,7 +422,7 @@ void fields(V& v, ThrowingResultsSection::Motion& x) {
   v("series", x.series, "the motion");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::SeedRun& x) {
+void fields(V& v, ThrowingStudyResults::SeedRun& x) {
   v("seed", x.seed, "random seed");
   v("energy_J", x.energy_J, "energy found");
   v("feasible", x.feasible, "meets every constraint");
@@ -434,13 +434,13 @@ void fields(V& v, ThrowingResultsSection::SeedRun& x) {
     "wall time from its start to its end (the seeds of one thread run side by side)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Spread& x) {
+void fields(V& v, ThrowingStudyResults::Spread& x) {
   v("best_J", x.best_J, "best seed's energy");
   v("median_J", x.median_J, "median seed energy");
   v("worst_J", x.worst_J, "worst seed's energy");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::IdpStep& x) {
+void fields(V& v, ThrowingStudyResults::IdpStep& x) {
   v("iteration", x.iteration, "iteration, counted over all passes");
   v("pass", x.pass, "pass");
   v("energy_J", x.energy_J, "energy after the iteration");
@@ -450,7 +450,7 @@ void fields(V& v, ThrowingResultsSection::IdpStep& x) {
   v("improvements", x.improvements, "stage nodes improved");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Idp& x) {
+void fields(V& v, ThrowingStudyResults::Idp& x) {
   v("stages", x.stages, "stages P");
   v("steps_per_stage", x.steps_per_stage, "RK4 steps per stage");
   v("iterations", x.iterations, "iterations per pass");
@@ -477,7 +477,7 @@ void fields(V& v, ThrowingResultsSection::Idp& x) {
   v.optional("first_order", x.first_order, "first-order optimality of the best seed's optimum");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Start& x) {
+void fields(V& v, ThrowingStudyResults::Start& x) {
   v("name", x.name, "where SLSQP started: reference, idp, eq8, or a hop from the best so far");
   v("energy_J", x.energy_J, "energy of the local optimum it reached");
   v("feasible", x.feasible, "meets every constraint");
@@ -488,7 +488,7 @@ void fields(V& v, ThrowingResultsSection::Start& x) {
   v("return_code", x.return_code, "NLopt's return code of the last run");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::FirstOrder& x) {
+void fields(V& v, ThrowingStudyResults::FirstOrder& x) {
   v("kkt_residual", x.kkt_residual,
     "|grad E + sum lambda_i grad g_i| / E per rad/s of node rate, multipliers >= 0 of the "
     "displacement equalities and the active inequalities");
@@ -497,7 +497,7 @@ void fields(V& v, ThrowingResultsSection::FirstOrder& x) {
   v("binding", x.binding, "constraint kinds with a positive multiplier");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::NloptRun& x) {
+void fields(V& v, ThrowingStudyResults::NloptRun& x) {
   v("algorithm", x.algorithm, "the gradient method (when it ran)");
   v("return_code", x.return_code, "NLopt's return code (when it ran)");
   v("converged", x.converged,
@@ -518,12 +518,12 @@ void fields(V& v, ThrowingResultsSection::NloptRun& x) {
   v.optional("best_start", x.best_start, "the start whose local optimum is the answer");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Nlopt& x) {
+void fields(V& v, ThrowingStudyResults::Nlopt& x) {
   v("ran", x.ran, "the gradient optimiser ran");
   v.inline_if(x.ran, x.run);
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Comparison& x) {
+void fields(V& v, ThrowingStudyResults::Comparison& x) {
   v("optimiser", x.optimiser, "the optimiser");
   v("energy_J", x.energy_J, "energy of its optimum");
   v("mechanical_J", x.mechanical_J, "mechanical work");
@@ -538,25 +538,25 @@ void fields(V& v, ThrowingResultsSection::Comparison& x) {
   v("binding_rating", x.binding_rating, "the motor rating nearest its limit");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Verified& x) {
+void fields(V& v, ThrowingStudyResults::Verified& x) {
   v("feasible", x.feasible, "meets every constraint at the finer re-simulation");
   v("margins", x.margins, "margins at the finer re-simulation");
   v("worst_normalised", x.worst_normalised, "normalised worst values at the finer re-simulation");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Verification& x) {
+void fields(V& v, ThrowingStudyResults::Verification& x) {
   v("refinement", x.refinement, "the re-simulation's steps as a multiple of the plan's");
   v("idp", x.idp, "the IDP optimum re-simulated");
   v.optional("nlopt", x.nlopt, "the SLSQP optimum re-simulated (when it ran)");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Release& x) {
+void fields(V& v, ThrowingStudyResults::Release& x) {
   v("time_s", x.time_s, "release time");
   v("ball_xy_m", x.ball_xy_m, "ball centre at release");
   v("ball_velocity_m_s", x.ball_velocity_m_s, "ball velocity at release");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Flight& x) {
+void fields(V& v, ThrowingStudyResults::Flight& x) {
   v("reaches", x.reaches, "the ball reaches the landing height");
   v("landing_height_m", x.landing_height_m, "landing height");
   v("duration_s", x.duration_s, "flight time");
@@ -566,7 +566,7 @@ void fields(V& v, ThrowingResultsSection::Flight& x) {
   v("path_xy_m", x.path_xy_m, "ball centre [x, y] per sample");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Replay& x) {
+void fields(V& v, ThrowingStudyResults::Replay& x) {
   v("max_error_rad", x.max_error_rad, "largest angle error of the open-loop replay");
   v("tolerance_rad", x.tolerance_rad, "allowed error (check open_loop_replay)");
   v("integrator", x.integrator, "how the replay integrates");
@@ -574,7 +574,7 @@ void fields(V& v, ThrowingResultsSection::Replay& x) {
   v("q_rad", x.q_rad, "replayed [theta1..theta4] per sample");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Integration& x) {
+void fields(V& v, ThrowingStudyResults::Integration& x) {
   v("method", x.method, "the plan's integrator");
   v("steps_per_stage", x.steps_per_stage, "RK4 steps per stage");
   v("step_s", x.step_s, "RK4 step");
@@ -585,7 +585,7 @@ void fields(V& v, ThrowingResultsSection::Integration& x) {
     "theta3(tf) change with the finer steps");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection::Optimised& x) {
+void fields(V& v, ThrowingStudyResults::Optimised& x) {
   v("reference", x.reference, "the reference the saving is measured from");
   v("initial", x.initial, "the eq. 8 start");
   v.optional("reference_motion", x.reference_motion, "the repaired reference (when repaired)");
@@ -604,7 +604,7 @@ void fields(V& v, ThrowingResultsSection::Optimised& x) {
   v("run_time_s", x.run_time_s, "wall time of the study");
 }
 template <class V>
-void fields(V& v, ThrowingResultsSection& x) {
+void fields(V& v, ThrowingStudyResults& x) {
   v("parameters", x.parameters, "the model and the task");
   v("assumptions", x.assumptions, "what the source leaves open, with the values used");
   v("limits", x.limits, "the constraints");

@@ -1,5 +1,5 @@
 #pragma once
-/// The pendulum study's section of results.json as a typed value: what the pipeline writes
+/// The pendulum study's part of results.json as a typed value: what the pipeline writes
 /// (app/pendulum_pipeline.cpp fills it from the PendulumResult) and what the report and
 /// `armstudy merge` read back. `fields` names every key once: report/results_fields.hpp
 /// turns it into the writer, the strict reader and the schema (results.schema.json). SI;
@@ -11,7 +11,7 @@
 
 namespace armstudy::studies {
 
-struct PendulumResultsSection {
+struct PendulumStudyResults {
   struct Tray {
     double circle_offset_m = 0, mass_kg = 0, com_m = 0, com_lateral_m = 0, inertia_kg_m2 = 0;
   };
@@ -55,7 +55,7 @@ struct PendulumResultsSection {
 };
 
 template <class V>
-void fields(V& v, PendulumResultsSection::Tray& x) {
+void fields(V& v, PendulumStudyResults::Tray& x) {
   v("circle_offset_m", x.circle_offset_m, "centre of the ball's circle from the tray hinge");
   v("mass_kg", x.mass_kg, "tray mass");
   v("com_m", x.com_m, "tray centre of mass along the tray from the hinge");
@@ -63,14 +63,14 @@ void fields(V& v, PendulumResultsSection::Tray& x) {
   v("inertia_kg_m2", x.inertia_kg_m2, "tray inertia about its centre of mass");
 }
 template <class V>
-void fields(V& v, PendulumResultsSection::Ball& x) {
+void fields(V& v, PendulumStudyResults::Ball& x) {
   v("mass_kg", x.mass_kg, "ball mass");
   v("circle_radius_m", x.circle_radius_m, "radius r4 of the circle the ball's centre moves on");
   v("radius_m", x.radius_m, "ball radius r_b");
   v("inertia_kg_m2", x.inertia_kg_m2, "ball inertia about its centre");
 }
 template <class V>
-void fields(V& v, PendulumResultsSection::Parameters& x) {
+void fields(V& v, PendulumStudyResults::Parameters& x) {
   v("gravity_m_s2", x.gravity_m_s2, "gravitational acceleration");
   v("locked_deg", x.locked_deg, "locked joint angles [theta1, theta2]");
   v("start_deg", x.start_deg, "initial [theta3, theta4]");
@@ -81,7 +81,7 @@ void fields(V& v, PendulumResultsSection::Parameters& x) {
   v("choices", x.choices, "what the source leaves open and the value used (sentences)");
 }
 template <class V>
-void fields(V& v, PendulumResultsSection::Integrator& x) {
+void fields(V& v, PendulumStudyResults::Integrator& x) {
   v("name", x.name, "integrator");
   v("rtol", x.rtol, "relative tolerance");
   v("atol", x.atol, "absolute tolerance (rad, rad/s)");
@@ -90,7 +90,7 @@ void fields(V& v, PendulumResultsSection::Integrator& x) {
   v("evaluations", x.evaluations, "right-hand-side evaluations");
 }
 template <class V>
-void fields(V& v, PendulumResultsSection::Series& x) {
+void fields(V& v, PendulumStudyResults::Series& x) {
   v("t_s", x.t_s, "sample times");
   v("q_rad", x.q_rad, "[theta1..theta4] per sample");
   v("qd_rad_s", x.qd_rad_s, "[theta1'..theta4'] per sample");
@@ -101,14 +101,14 @@ void fields(V& v, PendulumResultsSection::Series& x) {
   v("circle_centre_xy_m", x.circle_centre_xy_m, "centre of the ball's circle [x, y] per sample");
 }
 template <class V>
-void fields(V& v, PendulumResultsSection::Snapshot& x) {
+void fields(V& v, PendulumStudyResults::Snapshot& x) {
   v("t_s", x.t_s, "snapshot time");
   v("index", x.index, "index of the sample in series");
   v("q_rad", x.q_rad, "[theta1..theta4]");
   v("ball_xy_m", x.ball_xy_m, "ball centre [x, y]");
 }
 template <class V>
-void fields(V& v, PendulumResultsSection::Energy& x) {
+void fields(V& v, PendulumStudyResults::Energy& x) {
   v("initial_J", x.initial_J, "mechanical energy at t = 0");
   v("scale_J", x.scale_J, "largest kinetic energy (the energy exchanged)");
   v("drift_J", x.drift_J, "max |E(t) - E(0)|");
@@ -117,7 +117,7 @@ void fields(V& v, PendulumResultsSection::Energy& x) {
     "allowed drift_relative (check pendulum_energy_drift)");
 }
 template <class V>
-void fields(V& v, PendulumResultsSection& x) {
+void fields(V& v, PendulumStudyResults& x) {
   v("parameters", x.parameters, "the model and the start as simulated");
   v("integrator", x.integrator, "the integrator and its effort");
   v("series", x.series, "the motion at every sample");

@@ -1,6 +1,6 @@
 // Each study's typed result and its JSON mapping agree with what a real run writes: a small
 // case of every study is run into results.json; the study's section read back into its typed
-// result (studies/<study>/results_section.hpp) and written again gives the same text, and
+// result (studies/<study>/study_results.hpp) and written again gives the same text, and
 // the whole file validates against results.schema.json.
 #include <gtest/gtest.h>
 
@@ -14,10 +14,10 @@
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
 #include "report/results_fields.hpp"
-#include "studies/pendulum/results_section.hpp"
-#include "studies/placement/results_section.hpp"
-#include "studies/throwing/results_section.hpp"
-#include "studies/time_optimal/results_section.hpp"
+#include "studies/pendulum/study_results.hpp"
+#include "studies/placement/study_results.hpp"
+#include "studies/throwing/study_results.hpp"
+#include "studies/time_optimal/study_results.hpp"
 #include "testing/files.hpp"
 
 namespace armstudy::app {
@@ -58,7 +58,7 @@ void expect_round_trip(const std::string& yaml, const std::string& study) {
   const fs::path out = armstudy::testing::fresh_dir("results_sections_" + study);
   const json results = run(yaml, out);
   ASSERT_TRUE(results.contains(study));
-  const Section typed = report::read_section<Section>(results, study);
+  const Section typed = report::read_study_results<Section>(results, study);
   // to_json(from_json(section)) is the section, number for number and type for type
   EXPECT_EQ(results_text(report::to_json(typed)), results_text(results[study])) << study;
   // and the whole file is what results.schema.json describes
@@ -70,29 +70,29 @@ void expect_round_trip(const std::string& yaml, const std::string& study) {
   fs::remove_all(out);
 }
 
-TEST(ResultsSections, PendulumRoundTripsAndValidates) {
-  expect_round_trip<studies::PendulumResultsSection>(kPendulum, "pendulum");
+TEST(StudyResults, PendulumRoundTripsAndValidates) {
+  expect_round_trip<studies::PendulumStudyResults>(kPendulum, "pendulum");
 }
-TEST(ResultsSections, PlacementRoundTripsAndValidates) {
-  expect_round_trip<studies::placement::ResultsSection>(kPlacement, "placement");
+TEST(StudyResults, PlacementRoundTripsAndValidates) {
+  expect_round_trip<studies::placement::StudyResults>(kPlacement, "placement");
 }
-TEST(ResultsSections, ThrowingRoundTripsAndValidates) {
-  expect_round_trip<studies::ThrowingResultsSection>(kThrowing, "throwing");
+TEST(StudyResults, ThrowingRoundTripsAndValidates) {
+  expect_round_trip<studies::ThrowingStudyResults>(kThrowing, "throwing");
 }
-TEST(ResultsSections, TimeOptimalRoundTripsAndValidates) {
-  expect_round_trip<studies::time_optimal::ResultsSection>(kTimeOptimal, "time_optimal");
+TEST(StudyResults, TimeOptimalRoundTripsAndValidates) {
+  expect_round_trip<studies::time_optimal::StudyResults>(kTimeOptimal, "time_optimal");
 }
 
 // the strict reader: every problem names its JSON pointer
-TEST(ResultsSections, AMisspeltOrMistypedKeyIsAnErrorNamingIt) {
-  const json good = report::to_json(studies::PendulumResultsSection{});
+TEST(StudyResults, AMisspeltOrMistypedKeyIsAnErrorNamingIt) {
+  const json good = report::to_json(studies::PendulumStudyResults{});
   const json whole = {{"pendulum", good}};
-  EXPECT_NO_THROW(report::read_section<studies::PendulumResultsSection>(whole, "pendulum"));
+  EXPECT_NO_THROW(report::read_study_results<studies::PendulumStudyResults>(whole, "pendulum"));
   auto message = [&](const std::function<void(json&)>& edit) {
     json j = whole;
     edit(j);
     try {
-      report::read_section<studies::PendulumResultsSection>(j, "pendulum");
+      report::read_study_results<studies::PendulumStudyResults>(j, "pendulum");
     } catch (const report::ResultsError& e) {
       return std::string(e.what());
     }
@@ -114,7 +114,7 @@ TEST(ResultsSections, AMisspeltOrMistypedKeyIsAnErrorNamingIt) {
   json j = whole;
   j["pendulum"]["energy"]["drift_J"] = nullptr;
   EXPECT_TRUE(std::isnan(
-      report::read_section<studies::PendulumResultsSection>(j, "pendulum").energy.drift_J));
+      report::read_study_results<studies::PendulumStudyResults>(j, "pendulum").energy.drift_J));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-/// The time-optimal study's section of results.json as a typed value: what the pipeline
+/// The time-optimal study's part of results.json as a typed value: what the pipeline
 /// writes (app/time_optimal_pipeline.cpp fills it from the Result) and what the report and
 /// `armstudy merge` read back. `fields` names every key once: report/results_fields.hpp
 /// turns it into the writer, the strict reader and the schema (results.schema.json). SI
@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "studies/replay_section.hpp"
+#include "studies/replay_results.hpp"
 
 namespace armstudy::studies::time_optimal {
 
-struct ResultsSection {
+struct StudyResults {
   using Rows = std::vector<std::vector<double>>;
   struct Path {
     std::string space, kind, s_unit;
@@ -102,11 +102,11 @@ struct ResultsSection {
   std::vector<ConvergenceRow> convergence;
   Motion motion;
   std::optional<GridConvergence> grid_convergence;
-  std::optional<ReplaySection> mujoco_replay;
+  std::optional<ReplayResults> mujoco_replay;
 };
 
 template <class V>
-void fields(V& v, ResultsSection::Path& x) {
+void fields(V& v, StudyResults::Path& x) {
   v("space", x.space, "tip (a tip path of a 2-link arm) or joint (a path in joint space)");
   v("kind", x.kind, "line, polyline or spline");
   v("s_unit", x.s_unit,
@@ -118,20 +118,20 @@ void fields(V& v, ResultsSection::Path& x) {
     "joint ranges [lo, hi] in rad the path must stay in (null: none given)");
 }
 template <class V>
-void fields(V& v, ResultsSection::Limits& x) {
+void fields(V& v, StudyResults::Limits& x) {
   v("velocity_rad_s", x.velocity_rad_s, "joint velocity limits, per joint");
   v("torque_Nm", x.torque_Nm, "joint torque limits, per joint");
   v("acceleration_rad_s2", x.acceleration_rad_s2,
     "joint acceleration limits, per joint (null: none)");
 }
 template <class V>
-void fields(V& v, ResultsSection::Ratio& x) {
+void fields(V& v, StudyResults::Ratio& x) {
   v("velocity", x.velocity, "largest |qd| / limit, per joint");
   v("torque", x.torque, "largest |tau| / limit, per joint");
   v("acceleration", x.acceleration, "largest |qdd| / limit, per joint");
 }
 template <class V>
-void fields(V& v, ResultsSection::Violation& x) {
+void fields(V& v, StudyResults::Violation& x) {
   v("worst", x.worst, "largest limit use - 1 over the dense resampling (<= 0: every limit met)");
   v("text", x.text, "names the grid point, binding limit and margin");
   v("kind", x.kind, "the limit of the worst use: velocity, torque or acceleration");
@@ -142,7 +142,7 @@ void fields(V& v, ResultsSection::Violation& x) {
   v("ratio", x.ratio, "largest use of each limit");
 }
 template <class V>
-void fields(V& v, ResultsSection::Samples& x) {
+void fields(V& v, StudyResults::Samples& x) {
   v("t_s", x.t_s, "sample times");
   v("s", x.s, "path position (path.s_unit)");
   v("sd", x.sd, "path speed s' (path.s_unit per s)");
@@ -153,7 +153,7 @@ void fields(V& v, ResultsSection::Samples& x) {
   v("tau_Nm", x.tau_Nm, "joint torques (inverse dynamics), one row per joint");
 }
 template <class V>
-void fields(V& v, ResultsSection::Solver& x) {
+void fields(V& v, StudyResults::Solver& x) {
   v("name", x.name, "exact, dp, dp_joint1 or complex");
   v("method", x.method, "the method as a sentence");
   v("solved", x.solved, "whether the solver found a motion");
@@ -172,14 +172,14 @@ void fields(V& v, ResultsSection::Solver& x) {
   v.optional("samples", x.samples, "dense samples for plots (when solved)");
 }
 template <class V>
-void fields(V& v, ResultsSection::Mvc& x) {
+void fields(V& v, StudyResults::Mvc& x) {
   v("s", x.s, "path position on the exact grid (path.s_unit)");
   v("sd", x.sd, "maximum velocity curve, every limit (path.s_unit per s)");
   v("velocity_sd", x.velocity_sd,
     "maximum velocity curve of the velocity limits alone (path.s_unit per s)");
 }
 template <class V>
-void fields(V& v, ResultsSection::ConvergenceRow& x) {
+void fields(V& v, StudyResults::ConvergenceRow& x) {
   v("segments", x.segments, "DP path segments");
   v("levels", x.levels, "DP velocity levels");
   v("solved", x.solved, "whether the DP found a motion");
@@ -190,14 +190,14 @@ void fields(V& v, ResultsSection::ConvergenceRow& x) {
   v("message", x.message, "why not, when not solved");
 }
 template <class V>
-void fields(V& v, ResultsSection::Motion& x) {
+void fields(V& v, StudyResults::Motion& x) {
   v("t_s", x.t_s, "equal time steps");
   v("s", x.s, "path position (path.s_unit)");
   v("tip_m", x.tip_m, "tip [x, y] per sample (m)");
   v("q_rad", x.q_rad, "joint angles per sample");
 }
 template <class V>
-void fields(V& v, ResultsSection::Extrapolation& x) {
+void fields(V& v, StudyResults::Extrapolation& x) {
   v("coarse_points", x.coarse_points, "grid points of the third, coarser grid");
   v("coarse_duration_s", x.coarse_duration_s, "duration on it (null when not solved)");
   v("order", x.order,
@@ -208,7 +208,7 @@ void fields(V& v, ResultsSection::Extrapolation& x) {
   v("error_s", x.error_s, "its error estimate");
 }
 template <class V>
-void fields(V& v, ResultsSection::Graded& x) {
+void fields(V& v, StudyResults::Graded& x) {
   v("uniform_points", x.uniform_points, "points of the case's uniform grid it was graded from");
   v("uniform_change", x.uniform_change,
     "relative change of the uniform grid's duration with every interval halved");
@@ -219,7 +219,7 @@ void fields(V& v, ResultsSection::Graded& x) {
   v("capped", x.capped, "the grading stopped at the node cap before reaching tolerance_rel");
 }
 template <class V>
-void fields(V& v, ResultsSection::GridConvergence& x) {
+void fields(V& v, StudyResults::GridConvergence& x) {
   v("grid_points", x.grid_points,
     "grid points the exact solver used: the case's uniform grid, or the graded grid");
   v("refined_points", x.refined_points, "2 grid_points - 1");
@@ -245,7 +245,7 @@ void fields(V& v, ResultsSection::GridConvergence& x) {
   v("text", x.text, "the sentence for the check and the page");
 }
 template <class V>
-void fields(V& v, ResultsSection& x) {
+void fields(V& v, StudyResults& x) {
   v("path", x.path, "the path: a tip path (2 links) or a path in joint space");
   v("path_length", x.path_length, "length of the path (path.s_unit)");
   v("joints", x.joints, "number of joints of the chain");

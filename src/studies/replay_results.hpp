@@ -8,7 +8,7 @@
 
 namespace armstudy::studies {
 
-struct ReplaySection {
+struct ReplayResults {
   struct Series {
     std::vector<double> t_s;
     std::vector<std::vector<double>> deviation_rad, q_plan_rad, q_sim_rad;  ///< per joint rows
@@ -31,7 +31,7 @@ struct ReplaySection {
 };
 
 template <class V>
-void fields(V& v, ReplaySection::Series& x) {
+void fields(V& v, ReplayResults::Series& x) {
   v("t_s", x.t_s, "recorded times");
   v("deviation_rad", x.deviation_rad, "|q_sim - q_plan|, one row per joint");
   v("q_plan_rad", x.q_plan_rad, "planned joint angles, one row per joint");
@@ -39,7 +39,7 @@ void fields(V& v, ReplaySection::Series& x) {
 }
 
 template <class V>
-void fields(V& v, ReplaySection& x) {
+void fields(V& v, ReplayResults& x) {
   v("integrator", x.integrator, "MuJoCo integrator");
   v("timestep_s", x.timestep_s, "MuJoCo step h");
   v("steps", x.steps, "MuJoCo steps over the motion");

@@ -1,5 +1,5 @@
 #pragma once
-/// The placement study's section of results.json as a typed value: what the pipeline
+/// The placement study's part of results.json as a typed value: what the pipeline
 /// writes (app/placement_pipeline.cpp fills it from the Result) and what the report and
 /// `armstudy merge` read back. `fields` names every key once: report/results_fields.hpp
 /// turns it into the writer, the strict reader and the schema (results.schema.json). SI;
@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "studies/replay_section.hpp"
+#include "studies/replay_results.hpp"
 
 namespace armstudy::studies::placement {
 
-struct ResultsSection {
+struct StudyResults {
   using Pair = std::array<double, 2>;
   /// which motion program and elbow configuration an entry belongs to
   struct Id {
@@ -178,7 +178,7 @@ struct ResultsSection {
   struct Convergence : Id {
     std::vector<SampleRow> rows;
   };
-  struct Replay : Id, ReplaySection {};
+  struct Replay : Id, ReplayResults {};
 
   double lmax_m = 0, length_m = 0, length_fraction = 0, duration_s = 0;
   int samples = 0;
@@ -202,18 +202,18 @@ struct ResultsSection {
 };
 
 template <class V>
-void fields(V& v, ResultsSection::Id& x) {
+void fields(V& v, StudyResults::Id& x) {
   v("program", x.program, "motion program (core/motion_program.hpp)");
   v("configuration", x.configuration, "elbow configuration (1 or 2)");
 }
 template <class V>
-void fields(V& v, ResultsSection::ConvergenceRow& x) {
+void fields(V& v, StudyResults::ConvergenceRow& x) {
   v("samples", x.samples, "samples of the motion");
   v("energy_J", x.energy_J, "energy at these samples");
   v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| over both joints at these samples");
 }
 template <class V>
-void fields(V& v, ResultsSection::Quadrature& x) {
+void fields(V& v, StudyResults::Quadrature& x) {
   v("energy_J", x.energy_J, "energy by adaptive Gauss-Kronrod (G7-K15) quadrature");
   v("error_J", x.error_J, "its error estimate (sum over the intervals of |K15 - G7|)");
   v("tolerance_rel", x.tolerance_rel, "the relative error asked for");
@@ -222,7 +222,7 @@ void fields(V& v, ResultsSection::Quadrature& x) {
   v("evaluations", x.evaluations, "integrand evaluations");
 }
 template <class V>
-void fields(V& v, ResultsSection::EnergyConvergence& x) {
+void fields(V& v, StudyResults::EnergyConvergence& x) {
   v("converged", x.converged,
     "the sampled energy changed by < tolerance_rel and the sampled peak torque by < 1e-3 on "
     "one doubling");
@@ -240,7 +240,7 @@ void fields(V& v, ResultsSection::EnergyConvergence& x) {
              "the energy by adaptive quadrature (absent: the line is on the inner circle)");
 }
 template <class V>
-void fields(V& v, ResultsSection::Metrics& x) {
+void fields(V& v, StudyResults::Metrics& x) {
   v("energy_J", x.energy_J, "energy of the motion (null: withheld or unreachable)");
   v.optional("energy_error_J", x.energy_error_J,
              "error estimate of energy_J (its adaptive quadrature; when checked and printed)");
@@ -255,7 +255,7 @@ void fields(V& v, ResultsSection::Metrics& x) {
              "the doubling of the samples (when checked)");
 }
 template <class V>
-void fields(V& v, ResultsSection::SweepCounts& x) {
+void fields(V& v, StudyResults::SweepCounts& x) {
   v("total", x.total, "candidates of the full sweep (x_s grid x phi in [0, 180] deg)");
   v("unreachable", x.unreachable, "candidates partly outside the annulus");
   v("singular", x.singular, "candidates closer to a boundary than the margin");
@@ -269,7 +269,7 @@ void fields(V& v, ResultsSection::SweepCounts& x) {
     "candidates the exact check accepts outside the thesis's phi interval");
 }
 template <class V>
-void fields(V& v, ResultsSection::GeometryCounts& x) {
+void fields(V& v, StudyResults::GeometryCounts& x) {
   v("total", x.total, "candidates of the full sweep (x_s grid x phi in [0, 180] deg)");
   v("unreachable", x.unreachable, "candidates partly outside the annulus");
   v("singular", x.singular, "candidates closer to a boundary than the margin");
@@ -282,13 +282,13 @@ void fields(V& v, ResultsSection::GeometryCounts& x) {
     "candidates the exact check accepts outside the thesis's phi interval");
 }
 template <class V>
-void fields(V& v, ResultsSection::ThesisIntervals& x) {
+void fields(V& v, StudyResults::ThesisIntervals& x) {
   v("x_s_case", x.x_s_case, "the thesis's case of the start-point interval");
   v("x_s_init_m", x.x_s_init_m, "start of the thesis's start-point interval");
   v("x_s_fin_m", x.x_s_fin_m, "end of the thesis's start-point interval");
 }
 template <class V>
-void fields(V& v, ResultsSection::Series& x) {
+void fields(V& v, StudyResults::Series& x) {
   v("stride", x.stride, "every stride-th sample of the motion (<= 101 points, the last included)");
   v("t_s", x.t_s, "time");
   v("q1_rad", x.q1_rad, "joint 1 angle");
@@ -304,13 +304,13 @@ void fields(V& v, ResultsSection::Series& x) {
   v("energy_J", x.energy_J, "cumulative |power1| + |power2|");
 }
 template <class V>
-void fields(V& v, ResultsSection::Active& x) {
+void fields(V& v, StudyResults::Active& x) {
   v("constraint", x.constraint, "inner_clearance, outer_clearance, torque_limit or power_limit");
   v("joint", x.joint, "the joint of a limit (1-based; null for a clearance)");
   v("slack", x.slack, "bound minus value (m for a clearance, N m or W for a limit)");
 }
 template <class V>
-void fields(V& v, ResultsSection::Decision& x) {
+void fields(V& v, StudyResults::Decision& x) {
   v("binding", x.binding,
     "the first active constraint in the fixed order of `active` (interior: none)");
   v("active", x.active,
@@ -327,7 +327,7 @@ void fields(V& v, ResultsSection::Decision& x) {
     "a clearance margin is active: the optimum is set by the margin");
 }
 template <class V>
-void fields(V& v, ResultsSection::Refinement& x) {
+void fields(V& v, StudyResults::Refinement& x) {
   v("method", x.method, "the refinement's stages (null: not refined)");
   v("final_tolerance_rel", x.final_tolerance_rel,
     "relative energy a final restart still gained (null: not refined)");
@@ -343,8 +343,8 @@ void fields(V& v, ResultsSection::Refinement& x) {
     "final_tolerance_rel times the energy (null: not refined)");
 }
 template <class V>
-void fields(V& v, ResultsSection::MarginOptimum& x) {
-  fields(v, static_cast<ResultsSection::Metrics&>(x));
+void fields(V& v, StudyResults::MarginOptimum& x) {
+  fields(v, static_cast<StudyResults::Metrics&>(x));
   v("x_s_m", x.x_s_m, "the optimum's line start abscissa (when found)");
   v("phi_deg", x.phi_deg, "the optimum's line direction (when found)");
   v("root_xy_m", x.root_xy_m, "the optimum's root in the line frame (when found)");
@@ -358,15 +358,15 @@ void fields(V& v, ResultsSection::MarginOptimum& x) {
   v("phi_error_deg", x.phi_error_deg, "error of phi_deg, the same (when found)");
 }
 template <class V>
-void fields(V& v, ResultsSection::MarginPoint& x) {
+void fields(V& v, StudyResults::MarginPoint& x) {
   v("margin_m", x.margin_m, "the clearance margin");
   v("found", x.found, "an admissible optimum exists at this margin");
   v.inline_if(x.found, x.optimum);
 }
 template <class V>
-void fields(V& v, ResultsSection::Optimum& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
-  fields(v, static_cast<ResultsSection::Metrics&>(x));
+void fields(V& v, StudyResults::Optimum& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
+  fields(v, static_cast<StudyResults::Metrics&>(x));
   v("x_s_m", x.x_s_m, "line start abscissa");
   v("phi_deg", x.phi_deg, "line direction");
   v("root_xy_m", x.root_xy_m, "root (X, Y) in the line frame");
@@ -389,15 +389,15 @@ void fields(V& v, ResultsSection::Optimum& x) {
   v("series", x.series, "the optimum's motion");
 }
 template <class V>
-void fields(V& v, ResultsSection::Unsolved& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
+void fields(V& v, StudyResults::Unsolved& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
   v("reason", x.reason, "why no admissible placement exists");
   v("counts", x.counts, "the sweep's counts of this program and configuration");
 }
 template <class V>
-void fields(V& v, ResultsSection::ThesisBest& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
-  fields(v, static_cast<ResultsSection::Metrics&>(x));
+void fields(V& v, StudyResults::ThesisBest& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
+  fields(v, static_cast<StudyResults::Metrics&>(x));
   v("x_s_m", x.x_s_m, "line start abscissa");
   v("phi_deg", x.phi_deg, "line direction");
   v("root_xy_m", x.root_xy_m, "root (X, Y) in the line frame");
@@ -407,9 +407,9 @@ void fields(V& v, ResultsSection::ThesisBest& x) {
   v("min_abs_sin_elbow", x.min_abs_sin_elbow, "smallest |sin q2| along the line");
 }
 template <class V>
-void fields(V& v, ResultsSection::Evaluation& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
-  fields(v, static_cast<ResultsSection::Metrics&>(x));
+void fields(V& v, StudyResults::Evaluation& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
+  fields(v, static_cast<StudyResults::Metrics&>(x));
   v("label", x.label, "the case's name for the placement");
   v("x_s_m", x.x_s_m, "line start abscissa");
   v("phi_deg", x.phi_deg, "line direction");
@@ -426,8 +426,8 @@ void fields(V& v, ResultsSection::Evaluation& x) {
   v.optional("series", x.series, "the motion (when reachable)");
 }
 template <class V>
-void fields(V& v, ResultsSection::Curve& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
+void fields(V& v, StudyResults::Curve& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
   v("x_s_m", x.x_s_m, "the start abscissa of the curve");
   v("phi_deg", x.phi_deg, "line directions");
   v("energy_J", x.energy_J, "energy per direction (null: unreachable)");
@@ -436,14 +436,14 @@ void fields(V& v, ResultsSection::Curve& x) {
     "feasible");
 }
 template <class V>
-void fields(V& v, ResultsSection::Excluded& x) {
+void fields(V& v, StudyResults::Excluded& x) {
   v("what", x.what, "what the excluded points are");
   v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| [j1, j2] per point");
   v("energy_J", x.energy_J, "energy per point");
 }
 template <class V>
-void fields(V& v, ResultsSection::Pareto& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
+void fields(V& v, StudyResults::Pareto& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
   v("joint", x.joint, "the joint whose peak torque the front trades (1 or 2)");
   v("peak_torque_Nm", x.peak_torque_Nm, "peak |torque| [j1, j2] per point");
   v("energy_J", x.energy_J, "energy per point");
@@ -453,8 +453,8 @@ void fields(V& v, ResultsSection::Pareto& x) {
   v("excluded", x.excluded, "the same front over the candidates inside the margin");
 }
 template <class V>
-void fields(V& v, ResultsSection::Map& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
+void fields(V& v, StudyResults::Map& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
   v("x_m", x.x_m, "node abscissae X in the line frame");
   v("y_m", x.y_m, "node ordinates Y in the line frame");
   v("optimum_xy_m", x.optimum_xy_m, "the optimum's root (null: none)");
@@ -464,22 +464,22 @@ void fields(V& v, ResultsSection::Map& x) {
   v("status_rows", x.status_rows, "row j is y_m[j]: one status character per node");
 }
 template <class V>
-void fields(V& v, ResultsSection::SampleRow& x) {
+void fields(V& v, StudyResults::SampleRow& x) {
   v("samples", x.samples, "samples of the motion");
   v("energy_J", x.energy_J, "energy at these samples");
 }
 template <class V>
-void fields(V& v, ResultsSection::Convergence& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
+void fields(V& v, StudyResults::Convergence& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
   v("rows", x.rows, "the first optimum's energy as the samples double");
 }
 template <class V>
-void fields(V& v, ResultsSection::Replay& x) {
-  fields(v, static_cast<ResultsSection::Id&>(x));
-  fields(v, static_cast<ReplaySection&>(x));
+void fields(V& v, StudyResults::Replay& x) {
+  fields(v, static_cast<StudyResults::Id&>(x));
+  fields(v, static_cast<ReplayResults&>(x));
 }
 template <class V>
-void fields(V& v, ResultsSection& x) {
+void fields(V& v, StudyResults& x) {
   v("lmax_m", x.lmax_m, "4 sqrt(L1 L2) (4.6)");
   v("length_m", x.length_m, "line length L");
   v("length_fraction", x.length_fraction, "L / Lmax");
