@@ -554,7 +554,10 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
       pr.at(b.u, b.v);
     }
     const int maxeval = converged_objective ? 100 : 2000;
-    for (int round = 0; round < 3 && pr.has_best(); ++round) {
+    // the converged pass's rounds are short (100 evaluations): a start far from the converged
+    // optimum (a coarse sweep) may need more of them to reach the target
+    const int rounds = converged_objective ? 8 : 3;
+    for (int round = 0; round < rounds && pr.has_best(); ++round) {
       out.rounds += 1;
       const Problem::Eval b = pr.best();
       // inside the admissible set, and along every nearly active constraint
