@@ -104,6 +104,7 @@ struct StudyParts {
   /// The report parts, given the study's name (its typed results is results[study]): the
   /// registry passes it when it joins the parts to their loader.
   using NamedSections = std::function<void(const std::string& study, const nlohmann::json& results,
+                                           const report::ResultsRecord& record,
                                            report::FigureWriter& figures, report::CasePage& page)>;
   using NamedAnswer =
       std::function<void(const std::string& study, const nlohmann::json& results,

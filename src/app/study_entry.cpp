@@ -17,8 +17,11 @@ StudyEntry::StudyEntry(const StudyLoader& loader, const StudyParts& parts)
   // the report parts read the study's section from results[study]: its name, from the list
   const std::string name(study);
   if (parts.report)
-    report = [name, f = parts.report](const nlohmann::json& results, report::FigureWriter& figures,
-                                      report::CasePage& page) { f(name, results, figures, page); };
+    report = [name, f = parts.report](const nlohmann::json& results,
+                                      const report::ResultsRecord& record,
+                                      report::FigureWriter& figures, report::CasePage& page) {
+      f(name, results, record, figures, page);
+    };
   if (parts.answer)
     answer = [name, f = parts.answer](const nlohmann::json& results,
                                       const report::ResultsRecord& record,

@@ -57,9 +57,9 @@ StudyParts study_parts(std::string_view summary, TypedSections<typename Run::Res
                    index_figure};
   if (sections)
     parts.report = [sections](const std::string& study, const nlohmann::json& results,
-                              report::FigureWriter& figures, report::CasePage& page) {
-      sections(report::read_study_results<Results>(results, study), report::read_record(results),
-               figures, page);
+                              const report::ResultsRecord& record, report::FigureWriter& figures,
+                              report::CasePage& page) {
+      sections(report::read_study_results<Results>(results, study), record, figures, page);
     };
   if (answer)
     parts.answer = [answer](const std::string& study, const nlohmann::json& results,

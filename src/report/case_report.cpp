@@ -443,7 +443,7 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
     s.paragraph(page.message.empty() ? "The study could not be solved." : page.message);
     page.sections.push_back(std::move(s));
   }
-  sections(results, figures, page);  // the study's own (its registry record)
+  sections(results, record, figures, page);  // the study's own (its registry record)
   if (record.sensitivity) page.sections.push_back(sensitivity_section(*record.sensitivity));
   // page 2 opens with the source beside armstudy, for a case that reproduces one
   if (record.source) page.sections.insert(page.sections.begin(), source_section(*record.source));

@@ -24,9 +24,10 @@ struct ResultsRecord;
 
 /// A study's own sections of its page, from the whole results.json (its registry record,
 /// app::StudyEntry::report; report/study_sections.hpp; app::study_parts reads the typed
-/// section once and hands it to the study's function).
-using StudySections =
-    std::function<void(const nlohmann::json& results, FigureWriter& figures, CasePage& page)>;
+/// section once and hands it to the study's function, with the shared record the page writer
+/// has read already).
+using StudySections = std::function<void(const nlohmann::json& results, const ResultsRecord& record,
+                                         FigureWriter& figures, CasePage& page)>;
 
 /// Writes the report of one case into `dir` (the case folder, which already holds
 /// results.json and the frames listed in results["frames"]): index.html, report.css and

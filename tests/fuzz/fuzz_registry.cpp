@@ -31,8 +31,8 @@ std::unique_ptr<StudyRun> loaded(std::any spec) {
 }
 
 // the fuzz build writes no report: this part is never called
-void no_report(const std::string&, const nlohmann::json&, report::FigureWriter&,
-               report::CasePage&) {
+void no_report(const std::string&, const nlohmann::json&, const report::ResultsRecord&,
+               report::FigureWriter&, report::CasePage&) {
   throw std::logic_error("the fuzz build loads cases; it does not report them");
 }
 
