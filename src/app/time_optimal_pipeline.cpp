@@ -259,10 +259,15 @@ Results TimeOptimalRun::study_results() const {
                                                   g.text,
                                                   std::nullopt,
                                                   std::nullopt};
-    if (g.extrapolation_computed)
+    if (g.extrapolation_computed) {
       o.grid_convergence->extrapolation =
-          Results::Extrapolation{g.coarse_points, g.coarse_duration, g.order,
-                                 g.asymptotic,    g.extrapolated,    g.extrapolation_error};
+          Results::Extrapolation{g.coarse_points, g.coarse_duration,     g.order,     g.asymptotic,
+                                 g.extrapolated,  g.extrapolation_error, std::nullopt};
+      if (g.quarter_points > 0)
+        o.grid_convergence->extrapolation->check =
+            Results::ExtrapolationCheck{g.quarter_points, g.quarter_duration, g.quarter_order,
+                                        g.quarter_extrapolated, g.checked};
+    }
     if (g.graded)
       o.grid_convergence->graded =
           Results::Graded{g.uniform_points,   g.uniform_change, g.graded_rounds,

@@ -250,11 +250,11 @@ Table dp_convergence_table(const Results_& to) {
 // how the exact solver graded its grid (a case whose uniform grid did not converge)
 std::string graded_grid_text(const Results_::GridConvergence& g) {
   const auto& gr = *g.graded;
-  return "Graded grid: the case's " + as_text(gr.uniform_points) + " uniform points changed by " +
-         format_sig(gr.uniform_change, 3) +
-         " with every interval halved, more than exact.tolerance_rel = " +
-         format_sig(gr.tolerance_rel, 3) +
-         ", so the exact solver refined the grid where the "
+  return "Graded grid: the case's " + as_text(gr.uniform_points) +
+         " uniform points did not show the converged duration within exact.tolerance_rel = " +
+         format_sig(gr.tolerance_rel, 3) + " (they changed by " + format_sig(gr.uniform_change, 3) +
+         " with every interval halved, and their extrapolation was not confirmed one grid down "
+         "at a regular order within that), so the exact solver refined the grid where the "
          "change arose (near a singular pose the maximum velocity curve falls over a stretch "
          "far shorter than an interval, and a uniform grid converges only like N^-1/2): " +
          as_text(gr.rounds) + " round(s) of bisecting the intervals holding half the change, to " +
@@ -266,6 +266,24 @@ std::string graded_grid_text(const Results_::GridConvergence& g) {
          "every other node of it.";
 }
 
+// how the extrapolation's error was estimated: from the extrapolation one grid down when
+// the two orders agree, else the extrapolation's size
+std::string extrapolation_error_words(const Results_::Extrapolation& x) {
+  if (!x.check) return "the error estimate is the extrapolation's size.";
+  const auto& c = *x.check;
+  const std::string down = "the same over a fourth grid of " + as_text(c.quarter_points) +
+                           " points (" + format_sig(c.quarter_duration_s, 8) +
+                           " s), the coarser grid and the case's";
+  if (c.used)
+    return down + " gives " + format_sig(c.duration_s, 8) + " s (order " + format_sig(c.order, 3) +
+           "); the error estimate is 3 times the difference.";
+  return down +
+         (std::isfinite(c.order) ? " gives order " + format_sig(c.order, 3) +
+                                       ", too far from it to check the extrapolation"
+                                 : " is not in the asymptotic range") +
+         "; the error estimate is the extrapolation's size.";
+}
+
 // the converged duration: Richardson-extrapolated, or the refined grid's
 std::string extrapolation_text(const Results_::GridConvergence& g) {
   const auto& x = *g.extrapolation;
@@ -275,7 +293,7 @@ std::string extrapolation_text(const Results_::GridConvergence& g) {
               ? ", Richardson-extrapolated from a coarser grid of " + as_text(x.coarse_points) +
                     " points (" + format_sig(x.coarse_duration_s, 8) +
                     " s), the case's grid and the refined one; observed order " +
-                    format_sig(x.order, 3) + ", the error estimate is the extrapolation's size."
+                    format_sig(x.order, 3) + ", " + extrapolation_error_words(x)
               : ": the refined grid's duration, because the coarser grid of " +
                     as_text(x.coarse_points) + " points (" + format_sig(x.coarse_duration_s, 8) +
                     " s) and the two finer ones are not in the asymptotic range; the error is "

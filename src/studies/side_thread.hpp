@@ -13,8 +13,13 @@
 
 namespace armstudy::studies {
 
+/// What the side thread does once a task has run: wait awake for the next one for up to
+/// kSpinMicroseconds (a study about to post another), or sleep at once (its last task: a
+/// wait awake would only burn a core until the next study).
+enum class AfterTask { kStayAwake, kSleep };
+
 /// Runs `task` on the calling thread's helper, after the tasks posted before it.
-void post_to_side_thread(std::function<void()> task);
+void post_to_side_thread(std::function<void()> task, AfterTask after = AfterTask::kStayAwake);
 
 /// How long a thread waiting for the other stays awake, checking, before it sleeps.
 inline constexpr int kSpinMicroseconds = 200;
@@ -29,13 +34,16 @@ class SideTask {
  public:
   SideTask() = default;
   template <class F>
-  explicit SideTask(F f) : done_(std::make_shared<std::atomic<bool>>(false)) {
+  explicit SideTask(F f, AfterTask after = AfterTask::kStayAwake)
+      : done_(std::make_shared<std::atomic<bool>>(false)) {
     auto task = std::make_shared<std::packaged_task<T()>>(std::move(f));
     result_ = task->get_future();
-    post_to_side_thread([task, done = done_] {
-      (*task)();
-      done->store(true, std::memory_order_release);
-    });
+    post_to_side_thread(
+        [task, done = done_] {
+          (*task)();
+          done->store(true, std::memory_order_release);
+        },
+        after);
   }
   SideTask(SideTask&&) noexcept = default;
   SideTask& operator=(SideTask&& other) noexcept {

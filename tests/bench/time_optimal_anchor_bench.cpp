@@ -12,13 +12,13 @@
 //   BM_TimeOptimalAnchorStudy: the study's default exact solve with its re-checks (dense
 //     resampling, the doubled check points where it fails, the halved grid), DP and Complex off;
 //     the path check, the maximum velocity curve and the sampled motion are in it too. The
-//     1000 uniform intervals change by 1.9e-4 when halved, over exact.tolerance_rel (1e-4), so
-//     the study grades the grid (1424 points, 2 rounds) and runs again on it: 7 exact solves
-//     (1001, 2001, 1126, 2251, 1424, 2847 and 713 points) and two dense re-checks against 3
-//     solves and one before grading. Process CPU per solve, medians of 12 runs alternating
-//     the three builds in one session (load 6.4-6.9 on 2 cores): 014b1b7 (before grading)
-//     2.58 ms, 019da2c (grading) 7.13 ms = 2.76x, 045dd85 (the graded study reusing the
-//     grading's solves and sets) 5.68 ms = 2.20x; wall 5.15 / 14.2 / 10.6 ms
+//     1000 uniform intervals change by 1.9e-4 when halved, over exact.tolerance_rel (1e-4),
+//     but their extrapolation (500, 1000 and 2000 intervals), checked one grid down (250),
+//     is within it: 4 exact solves (1001, 2001, 501 and 251 points) and one dense re-check.
+//     Process CPU per solve, medians of 16 runs alternating with a build of 014b1b7 (before
+//     grading) in one session (load 1.3-1.6 on 2 cores): 2.20 ms before, 2.27 ms now (1.03x);
+//     wall 1.12 / 1.27 ms (1.13x). While the anchor was graded (7 solves, two re-checks):
+//     2.76x, then 2.20x with the grading's solves reused.
 #include <benchmark/benchmark.h>
 
 #include <time.h>

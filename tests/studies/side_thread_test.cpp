@@ -1,7 +1,7 @@
 // The study's side thread: a task runs on another thread, the same one for every task of a
 // caller (its thread_local buffers stay warm), a task runs whether the side thread is awake
-// or asleep when it comes, its exception reaches get(), and a task is finished before its
-// SideTask goes out of scope.
+// or asleep when it comes, after a study's last task it sleeps at once, its exception
+// reaches get(), and a task is finished before its SideTask goes out of scope.
 #include "studies/side_thread.hpp"
 
 #include <gtest/gtest.h>
@@ -10,6 +10,8 @@
 #include <chrono>
 #include <stdexcept>
 #include <thread>
+
+#include <time.h>
 
 namespace armstudy::studies {
 namespace {
@@ -32,6 +34,25 @@ TEST(SideThread, ATaskPostedAfterTheSideThreadHasGoneToSleepRuns) {
   std::this_thread::sleep_for(std::chrono::microseconds(20 * kSpinMicroseconds));
   SideTask<int> c([] { return 3; });
   EXPECT_EQ(c.get(), 3);
+}
+
+// the side thread's own CPU time (s)
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+TEST(SideThread, AfterALastTaskTheSideThreadSleepsInsteadOfWaitingAwake) {
+  // after a task posted with AfterTask::kSleep the side thread does not spin for the next
+  // one (kSpinMicroseconds of a core otherwise): between the end of that task and the next
+  // task, 10 spins' time later, it spends well under one spin's CPU time; the next task runs
+  SideTask<double> last(thread_cpu_seconds, AfterTask::kSleep);
+  const double at_end = last.get();
+  std::this_thread::sleep_for(std::chrono::microseconds(10 * kSpinMicroseconds));
+  SideTask<double> next(thread_cpu_seconds);
+  const double at_next = next.get();
+  EXPECT_LT(at_next - at_end, 0.5e-6 * kSpinMicroseconds);
 }
 
 TEST(SideThread, TheTasksExceptionReachesGet) {

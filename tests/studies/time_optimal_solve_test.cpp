@@ -70,7 +70,7 @@ TEST(TimeOptimal, VelocityLimitedDurationConvergesToTheIntegralOfTheSlowestJoint
   spec.torque_limit = joint_pair(1e7, 1e7);
   spec.complex.enabled = false;
   spec.dp.states = {};
-  // the uniform grids of 1000 and 4000 points (a graded grid would refine the first one
+  // the uniform grids of 1000 and 4000 points (a graded grid could refine the first one
   // at the rest-to-rest ends, where the change arises)
   spec.exact.tolerance_rel = 0;
   const PathGeometry path(spec.path);

@@ -89,6 +89,18 @@ struct ConvergenceRow {
   std::string message;  ///< why not, when not solved (segment, place and binding limit)
 };
 
+/// The two extrapolations of GridConvergence check each other when their observed orders
+/// differ by at most this.
+inline constexpr double kOrderAgreement = 0.3;
+/// The extrapolated duration's error estimate is this many times its difference from the
+/// extrapolation one grid down: that difference is (2^q - 1) times the finer one's error
+/// when the next term of the error falls like I^-q, so 3 covers any q >= 0.42 (measured
+/// q = 0.7-1.7 on regular paths).
+inline constexpr double kExtrapolationSafety = 3.0;
+/// Below this observed order the grids show a singular pose's N^-1/2 (regular paths: ~1):
+/// the extrapolation is not trusted to decide the grid is converged.
+inline constexpr double kRegularOrder = 0.75;
+
 /// The exact solver's own grid convergence: the same problem on the grid with every
 /// interval halved (2 N - 1 points), and where the duration changed.
 struct GridConvergence {
@@ -111,17 +123,26 @@ struct GridConvergence {
   std::string text;  ///< the sentence for the check and the page
   /// Richardson extrapolation over three grids: a coarser one (about half the case's
   /// intervals), the case's and the refined one, T(I) = T_inf + C I^-p with the order p
-  /// solved from the three; the error estimate is |T_inf - refined duration|. When the three
-  /// are not in the asymptotic range (the changes differ in sign, or p outside [0.5, 4]),
-  /// the extrapolation is not used: extrapolated is the refined duration and the error the
-  /// larger of the two changes.
+  /// solved from the three. When the three are not in the asymptotic range (the changes
+  /// differ in sign, or p outside [0.5, 4]), the extrapolation is not used: extrapolated is
+  /// the refined duration and the error the larger of the two changes.
+  /// On a uniform grid a fourth, quarter grid (about half the coarser one's intervals)
+  /// extrapolates once more, one grid down (quarter, coarse, case): when it is asymptotic
+  /// too and its order within kOrderAgreement of p, the error estimate is
+  /// kExtrapolationSafety |T_inf - that extrapolation| (`checked`); otherwise (and on a
+  /// graded grid) it is the correction's size |T_inf - refined duration|.
   bool extrapolation_computed = false;
   int coarse_points = 0;
   double coarse_duration = NAN;  ///< s
   double order = NAN;            ///< observed p (NaN when not in the asymptotic range)
   bool asymptotic = false;
-  double extrapolated = NAN;         ///< s, the headline duration
-  double extrapolation_error = NAN;  ///< s
+  double extrapolated = NAN;          ///< s, the headline duration
+  double extrapolation_error = NAN;   ///< s
+  int quarter_points = 0;             ///< 0: no fourth grid
+  double quarter_duration = NAN;      ///< s
+  double quarter_order = NAN;         ///< p over (quarter, coarse, case); NaN: not asymptotic
+  double quarter_extrapolated = NAN;  ///< s, T_inf over (quarter, coarse, case)
+  bool checked = false;               ///< the error is from the two extrapolations
   /// The graded grid (ExactSettings::tolerance_rel): whether the case's uniform grid was
   /// refined where its halving change arose, the uniform grid's points and change, the
   /// bisection rounds, the target and whether the node cap (max_grid_points) stopped it.

@@ -486,38 +486,66 @@ std::string significant(double v, double error) {
   return os.str();
 }
 
-// Richardson over the coarse, case and refined grids (intervals Ic, I, 2 I): the order p
-// solves (Tc - T) / (T - Tf) = ((I / Ic)^p - 1) / (1 - 2^-p) (its right side grows with p,
-// so bisection), then T_inf = Tf - (T - Tf) / (2^p - 1)
-void extrapolate(GridConvergence& g, int coarse_intervals, int intervals) {
-  const double tc = g.coarse_duration, t = g.duration, tf = g.refined_duration;
-  const double d1 = tc - t, d2 = t - tf;
-  g.extrapolation_computed = true;
-  auto fallback = [&] {
-    g.asymptotic = false;
-    g.order = NAN;
-    g.extrapolated = tf;
-    g.extrapolation_error = std::max(std::abs(d1), std::abs(d2));
-  };
-  if (!(std::isfinite(tc) && std::isfinite(t) && std::isfinite(tf)) || d2 == 0 || d1 * d2 <= 0) {
-    fallback();
-    return;
-  }
-  const double ratio = d1 / d2, q = static_cast<double>(intervals) / coarse_intervals;
-  auto f = [&](double p) { return (std::pow(q, p) - 1) / (1 - std::pow(2.0, -p)) - ratio; };
+// T(I) = T_inf + C I^-p through the durations of three grids of i1 < i2 < i3 intervals:
+// the order p solves (t1 - t2) / (t2 - t3) = ((i2 / i1)^p - 1) / (1 - (i2 / i3)^p) (its right
+// side grows with p, so bisection on [0.5, 4]), then T_inf = t3 - (t2 - t3) / ((i3 / i2)^p - 1)
+// (Richardson). Nothing when the changes differ in sign or p falls outside [0.5, 4].
+struct Richardson {
+  double order = NAN, limit = NAN;
+};
+std::optional<Richardson> richardson(int i1, double t1, int i2, double t2, int i3, double t3) {
+  const double d1 = t1 - t2, d2 = t2 - t3;
+  if (!(std::isfinite(t1) && std::isfinite(t2) && std::isfinite(t3)) || d2 == 0 || d1 * d2 <= 0)
+    return std::nullopt;
+  const double ratio = d1 / d2, a = static_cast<double>(i2) / i1, b = static_cast<double>(i2) / i3;
+  auto f = [&](double p) { return (std::pow(a, p) - 1) / (1 - std::pow(b, p)) - ratio; };
   double lo = 0.5, hi = 4.0;
-  if (f(lo) > 0 || f(hi) < 0) {
-    fallback();
-    return;
-  }
+  if (f(lo) > 0 || f(hi) < 0) return std::nullopt;
   for (int i = 0; i < 100; ++i) {
     const double mid = 0.5 * (lo + hi);
     (f(mid) < 0 ? lo : hi) = mid;
   }
-  g.order = 0.5 * (lo + hi);
+  const double p = 0.5 * (lo + hi);
+  return Richardson{p, t3 - d2 / (std::pow(1 / b, p) - 1)};
+}
+
+// Richardson over the coarse, case and refined grids (intervals Ic, I, 2 I) for the
+// headline; over the quarter, coarse and case grids (Iq, Ic, I; quarter_intervals 0: none)
+// for its error (GridConvergence says how)
+void extrapolate(GridConvergence& g, int quarter_intervals, int coarse_intervals, int intervals) {
+  const double tc = g.coarse_duration, t = g.duration, tf = g.refined_duration;
+  g.extrapolation_computed = true;
+  const std::optional<Richardson> r =
+      richardson(coarse_intervals, tc, intervals, t, 2 * intervals, tf);
+  if (!r) {
+    g.asymptotic = false;
+    g.order = NAN;
+    g.extrapolated = tf;
+    g.extrapolation_error = std::max(std::abs(tc - t), std::abs(t - tf));
+    return;
+  }
+  g.order = r->order;
   g.asymptotic = true;
-  g.extrapolated = tf - d2 / (std::pow(2.0, g.order) - 1);
+  g.extrapolated = r->limit;
   g.extrapolation_error = std::abs(g.extrapolated - tf);
+  if (quarter_intervals <= 0) return;
+  const std::optional<Richardson> down =
+      richardson(quarter_intervals, g.quarter_duration, coarse_intervals, tc, intervals, t);
+  if (!down) return;
+  g.quarter_order = down->order;
+  g.quarter_extrapolated = down->limit;
+  if (std::abs(down->order - r->order) > kOrderAgreement) return;
+  g.checked = true;
+  g.extrapolation_error = kExtrapolationSafety * std::abs(r->limit - down->limit);
+}
+
+// The headline's relative error is within exact.tolerance_rel: the extrapolation's where the
+// uniform grids converge regularly (order >= kRegularOrder, its error checked one grid
+// down), else the grid's halving change
+bool headline_converged(const GridConvergence& g, double tolerance_rel) {
+  if (g.checked && g.order >= kRegularOrder)
+    return g.extrapolation_error <= tolerance_rel * std::abs(g.extrapolated);
+  return g.change <= tolerance_rel;
 }
 
 // The exact motion at `steps` + 1 equal time steps: inside interval k,
@@ -635,6 +663,28 @@ std::optional<SolverOutput> solve_coarse_graded(const Problem& pb, const std::ve
   }
 }
 
+// intervals of the fourth grid that checks the extrapolation of a uniform grid of
+// `intervals` (a quarter of them), 0 when it would have under 4
+int quarter_intervals(int intervals) {
+  const int q = intervals / 2 / 2;
+  return q >= 4 ? q : 0;
+}
+
+// The fourth, quarter grid of a uniform grid of `intervals` (the case's check points), solved
+// while the side thread finishes: it depends on neither. Nothing when it has under 4
+// intervals or its solve raises (the study solves it again then, for its message).
+std::optional<SolverOutput> solve_quarter(const Problem& pb, int intervals, int checks,
+                                          ExactPointCache* points) {
+  const int q = quarter_intervals(intervals);
+  if (q == 0) return std::nullopt;
+  try {
+    const std::vector<double> quarter = make_nodes(pb.path, q);
+    return solve_exact(pb, quarter, std::vector<int>(quarter.size() - 1, checks), points);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
 // the intervals whose check points the re-check `round` doubles: those over the tolerance
 // in the first round, then every interval with any overshoot and its neighbours (a re-solve
 // can move the overshoot next door); false when it marks none
@@ -678,8 +728,8 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
   const SolverOutput* known =
       graded && graded->halved_solution ? &*graded->halved_solution : nullptr;
   if (o.solved)
-    speculative =
-        SideTask<SideResults>([&pb, &grid, &points, &fine_points, known, checks = exact_checks] {
+    speculative = SideTask<SideResults>(
+        [&pb, &grid, &points, &fine_points, known, checks = exact_checks] {
           points.absorb(fine_points);  // (after the prefetch: the side thread runs tasks in turn)
           points.merge();
           SideResults out{known ? RefinedGrid{checks, *known, MinSinQ2(pb, halved(grid))}
@@ -690,7 +740,8 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
           max_velocity_curve(pb, grid, &out.mvc_sd, &out.mvc_velocity_sd, &points);
           if (known) out.coarse = solve_coarse_graded(pb, grid, checks.front(), &points);
           return out;
-        });
+        },
+        AfterTask::kSleep);  // (the study's last side task)
   finish(pb, o, spec.resample_per_interval, &r, &interval_worst);
   for (int k = 0; k < kMaxRefinements && o.solved && r.violation.worst > kExactTolerance; ++k) {
     if (speculative.valid()) speculative.wait();  // (the cache is this thread's again)
@@ -711,11 +762,46 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
   return true;
 }
 
+// The converged duration over the case's grid and its refined one, solved into g: a third,
+// coarser grid (about half the intervals) for the observed order, and on a uniform grid a
+// fourth (half again) that checks the extrapolation one grid down (on a graded grid the
+// coarser one is every other node of it: the same nesting). `coarse_side` and
+// `quarter_side`: those grids' solutions where already solved.
+void extrapolate_grids(const Problem& pb, const Spec& spec, const ProgressFn& progress,
+                       const std::vector<double>& grid, const GradedGrid* graded,
+                       ExactPointCache& points, std::optional<SolverOutput> coarse_side,
+                       std::optional<SolverOutput> quarter_side, GridConvergence& g) {
+  const int intervals = static_cast<int>(grid.size()) - 1;
+  const std::vector<double> coarse_graded =
+      graded ? every_other(grid, pb.path.stops()) : std::vector<double>{};
+  const int coarse_intervals = graded ? static_cast<int>(coarse_graded.size()) - 1 : intervals / 2;
+  const int quarter = graded ? 0 : quarter_intervals(intervals);
+  const int checks = spec.exact.checks_per_interval;
+  if (coarse_intervals < 4) return;
+  report(progress, 0.11, "exact solver on coarser grids (extrapolation)");
+  const std::vector<double> coarse = graded ? coarse_graded : make_nodes(pb.path, coarse_intervals);
+  const SolverOutput oc =
+      coarse_side ? std::move(*coarse_side)
+                  : solve_exact(pb, coarse, std::vector<int>(coarse.size() - 1, checks), &points);
+  g.coarse_points = static_cast<int>(coarse.size());
+  g.coarse_duration = oc.solved ? oc.duration : NAN;
+  if (quarter > 0) {
+    const std::vector<double> nodes = make_nodes(pb.path, quarter);
+    const SolverOutput oq =
+        quarter_side ? std::move(*quarter_side)
+                     : solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks), &points);
+    g.quarter_points = static_cast<int>(nodes.size());
+    g.quarter_duration = oq.solved ? oq.duration : NAN;
+  }
+  extrapolate(g, quarter, coarse_intervals, intervals);
+}
+
 // The exact duration's convergence with the grid: the halved grid's solve (from the side
-// thread when its check points still hold) and a third, coarser grid for the observed
-// order. Returns the graded grid to solve the study again on when a uniform grid is not
-// converged to exact.tolerance_rel (the uniform grid's work is lost; a case whose uniform
-// grid converges pays nothing).
+// thread when its check points still hold), a third, coarser grid for the observed order
+// and (uniform grids) a fourth checking the extrapolation. Returns the graded grid to solve
+// the study again on when a uniform grid's headline is not converged to
+// exact.tolerance_rel (headline_converged; the uniform grid's work is lost, and a case
+// whose uniform grid converges pays nothing).
 std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
                                         const ProgressFn& progress, const std::vector<double>& grid,
                                         const std::vector<int>& exact_checks,
@@ -725,6 +811,12 @@ std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
   std::optional<RefinedGrid> refined;
   SolverOutput stale;  // (the side thread's halved grid with check points since doubled)
   std::optional<SolverOutput> coarse_side;
+  // (the fourth grid of a uniform one while the side thread still works: its points are
+  // evaluated anew, the shared cache being the side thread's until it is waited for)
+  std::optional<SolverOutput> quarter_side =
+      graded ? std::nullopt
+             : solve_quarter(pb, static_cast<int>(grid.size()) - 1, spec.exact.checks_per_interval,
+                             nullptr);
   if (speculative.valid()) {
     SideResults side = speculative.get();
     coarse_side = std::move(side.coarse);
@@ -739,32 +831,15 @@ std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
   }
   if (!refined) refined.emplace(solve_refined_grid(pb, grid, exact_checks, &points, &stale));
   res.grid = grid_convergence(pb, res.solvers.front(), *refined, spec.exact, graded);
+  if (res.grid.refined_solved)
+    extrapolate_grids(pb, spec, progress, grid, graded, points, std::move(coarse_side),
+                      std::move(quarter_side), res.grid);
   if (!graded && spec.exact.tolerance_rel > 0 && res.grid.refined_solved &&
-      res.grid.change > spec.exact.tolerance_rel &&
+      !headline_converged(res.grid, spec.exact.tolerance_rel) &&
       static_cast<int>(grid.size()) < spec.exact.max_grid_points) {
-    report(progress, 0.11, "grading the exact solver's grid");
+    report(progress, 0.12, "grading the exact solver's grid");
     return grade_grid(pb, grid, spec.exact.checks_per_interval, spec.exact, res.grid.change,
                       &points, exact, refined->solution);
-  }
-  // a third, coarser grid (about half the intervals) for the observed order
-  // (on a graded grid, every other node of it: the same nesting)
-  const int intervals = static_cast<int>(grid.size()) - 1;
-  const std::vector<double> coarse_graded =
-      graded ? every_other(grid, pb.path.stops()) : std::vector<double>{};
-  const int coarse_intervals = graded ? static_cast<int>(coarse_graded.size()) - 1 : intervals / 2;
-  if (res.grid.refined_solved && coarse_intervals >= 4) {
-    report(progress, 0.12, "exact solver on a coarser grid (extrapolation)");
-    const std::vector<double> coarse =
-        graded ? coarse_graded : make_nodes(pb.path, coarse_intervals);
-    const SolverOutput oc =
-        coarse_side
-            ? std::move(*coarse_side)
-            : solve_exact(pb, coarse,
-                          std::vector<int>(coarse.size() - 1, spec.exact.checks_per_interval),
-                          &points);
-    res.grid.coarse_points = static_cast<int>(coarse.size());
-    res.grid.coarse_duration = oc.solved ? oc.duration : NAN;
-    extrapolate(res.grid, coarse_intervals, intervals);
   }
   return std::nullopt;
 }
@@ -889,7 +964,9 @@ std::string summary_message(const Problem& pb, const Result& res, double exact_d
     // the headline is the converged duration with its error; the grid's own value follows
     os << significant(g.extrapolated, g.extrapolation_error) << " s +- " << std::setprecision(2)
        << g.extrapolation_error << " s (exact, "
-       << (g.asymptotic ? "extrapolated over 3 grids" : "finest grid; not in the asymptotic range")
+       << (!g.asymptotic ? "finest grid; not in the asymptotic range"
+           : g.checked   ? "extrapolated over 3 grids, its error from a 4th"
+                         : "extrapolated over 3 grids")
        << "; " << fixed(exact_duration, 4) << " s on its " << g.grid_points
        << (g.graded ? "-point graded grid)" : "-point grid)");
   } else {

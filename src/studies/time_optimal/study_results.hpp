@@ -66,11 +66,17 @@ struct StudyResults {
     std::vector<double> t_s, s;
     Rows tip_m, q_rad;
   };
+  struct ExtrapolationCheck {
+    int quarter_points = 0;
+    double quarter_duration_s = 0, order = 0, duration_s = 0;
+    bool used = false;
+  };
   struct Extrapolation {
     int coarse_points = 0;
     double coarse_duration_s = 0, order = 0;
     bool asymptotic = false;
     double duration_s = 0, error_s = 0;
+    std::optional<ExtrapolationCheck> check;
   };
   struct Graded {
     int uniform_points = 0;
@@ -197,6 +203,19 @@ void fields(V& v, StudyResults::Motion& x) {
   v("q_rad", x.q_rad, "joint angles per sample");
 }
 template <class V>
+void fields(V& v, StudyResults::ExtrapolationCheck& x) {
+  v("quarter_points", x.quarter_points,
+    "grid points of the fourth grid (half the coarser's intervals)");
+  v("quarter_duration_s", x.quarter_duration_s, "duration on it (null when not solved)");
+  v("order", x.order,
+    "observed order over the quarter, coarser and case grids (null: not asymptotic)");
+  v("duration_s", x.duration_s,
+    "the extrapolation over those three, one grid down (null: not asymptotic)");
+  v("used", x.used,
+    "the orders agree, so the error is 3 x the two extrapolations' difference (else the "
+    "correction's size)");
+}
+template <class V>
 void fields(V& v, StudyResults::Extrapolation& x) {
   v("coarse_points", x.coarse_points, "grid points of the third, coarser grid");
   v("coarse_duration_s", x.coarse_duration_s, "duration on it (null when not solved)");
@@ -206,6 +225,7 @@ void fields(V& v, StudyResults::Extrapolation& x) {
   v("duration_s", x.duration_s,
     "the converged duration: extrapolated, or the refined grid's when not asymptotic");
   v("error_s", x.error_s, "its error estimate");
+  v.optional("check", x.check, "uniform grids: the extrapolation one grid down that checks it");
 }
 template <class V>
 void fields(V& v, StudyResults::Graded& x) {
