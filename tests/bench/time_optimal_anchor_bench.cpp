@@ -16,9 +16,10 @@
 //     but their extrapolation (500, 1000 and 2000 intervals), checked one grid down (250),
 //     is within it: 4 exact solves (1001, 2001, 501 and 251 points) and one dense re-check.
 //     Process CPU per solve, medians of 16 runs alternating with a build of 014b1b7 (before
-//     grading) in one session (load 1.3-1.6 on 2 cores): 2.20 ms before, 2.27 ms now (1.03x);
-//     wall 1.12 / 1.27 ms (1.13x). While the anchor was graded (7 solves, two re-checks):
-//     2.76x, then 2.20x with the grading's solves reused.
+//     grading) in one session, twice (load 1.2-1.5 on 2 cores): 2.16 / 2.23 ms (1.03x) and
+//     2.12 / 2.24 ms (1.06x); wall 1.09 / 1.16 ms (1.06x) and 1.08 / 1.16 ms (1.08x). While
+//     the anchor was graded (7 solves, two re-checks): 2.76x, then 2.20x with the grading's
+//     solves reused.
 #include <benchmark/benchmark.h>
 
 #include <time.h>

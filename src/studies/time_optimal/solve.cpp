@@ -200,7 +200,8 @@ struct RefinedGrid {
 struct SideResults {
   RefinedGrid refined;
   std::vector<double> mvc_sd, mvc_velocity_sd;
-  std::optional<SolverOutput> coarse;  // (on a graded grid: solve_coarse_graded's)
+  std::optional<SolverOutput> coarse;   // (on a graded grid: solve_coarse_graded's)
+  std::optional<SolverOutput> quarter;  // (on a uniform grid: solve_quarter's)
 };
 // the grid with every interval halved, and its check points (interval k's in both halves)
 std::vector<double> halved(const std::vector<double>& grid) {
@@ -670,19 +671,29 @@ int quarter_intervals(int intervals) {
   return q >= 4 ? q : 0;
 }
 
-// The fourth, quarter grid of a uniform grid of `intervals` (the case's check points), solved
-// while the side thread finishes: it depends on neither. Nothing when it has under 4
-// intervals or its solve raises (the study solves it again then, for its message).
-std::optional<SolverOutput> solve_quarter(const Problem& pb, int intervals, int checks,
+// The exact solver on a uniform grid of `intervals` (the case's check points), or nothing
+// when it has under 4 intervals or its solve raises (the study solves it again then, for its
+// message)
+std::optional<SolverOutput> solve_uniform(const Problem& pb, int intervals, int checks,
                                           ExactPointCache* points) {
-  const int q = quarter_intervals(intervals);
-  if (q == 0) return std::nullopt;
+  if (intervals < 4) return std::nullopt;
   try {
-    const std::vector<double> quarter = make_nodes(pb.path, q);
-    return solve_exact(pb, quarter, std::vector<int>(quarter.size() - 1, checks), points);
+    const std::vector<double> nodes = make_nodes(pb.path, intervals);
+    return solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks), points);
   } catch (const std::exception&) {
     return std::nullopt;
   }
+}
+// The extrapolation's grids of a uniform grid of `intervals`: the coarser one, solved by this
+// thread while the side thread solves the halved grid (its points evaluated anew: the shared
+// cache is the side thread's until it is waited for), and the fourth, quarter grid, solved
+// on the side thread after the halved grid. Neither depends on the answer or its re-check.
+std::optional<SolverOutput> solve_uniform_coarse(const Problem& pb, int intervals, int checks) {
+  return solve_uniform(pb, intervals / 2, checks, nullptr);
+}
+std::optional<SolverOutput> solve_quarter(const Problem& pb, int intervals, int checks,
+                                          ExactPointCache* points) {
+  return solve_uniform(pb, quarter_intervals(intervals), checks, points);
 }
 
 // the intervals whose check points the re-check `round` doubles: those over the tolerance
@@ -736,9 +747,14 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
                                 : solve_refined_grid(pb, grid, checks, &points),
                           {},
                           {},
+                          std::nullopt,
                           std::nullopt};
           max_velocity_curve(pb, grid, &out.mvc_sd, &out.mvc_velocity_sd, &points);
-          if (known) out.coarse = solve_coarse_graded(pb, grid, checks.front(), &points);
+          if (known)
+            out.coarse = solve_coarse_graded(pb, grid, checks.front(), &points);
+          else
+            out.quarter =
+                solve_quarter(pb, static_cast<int>(grid.size()) - 1, checks.front(), &points);
           return out;
         },
         AfterTask::kSleep);  // (the study's last side task)
@@ -810,16 +826,17 @@ std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
                                         SideTask<SideResults>& speculative, Result& res) {
   std::optional<RefinedGrid> refined;
   SolverOutput stale;  // (the side thread's halved grid with check points since doubled)
-  std::optional<SolverOutput> coarse_side;
-  // (the fourth grid of a uniform one while the side thread still works: its points are
+  // (the coarser grid of a uniform one while the side thread still works: its points are
   // evaluated anew, the shared cache being the side thread's until it is waited for)
-  std::optional<SolverOutput> quarter_side =
+  std::optional<SolverOutput> coarse_side =
       graded ? std::nullopt
-             : solve_quarter(pb, static_cast<int>(grid.size()) - 1, spec.exact.checks_per_interval,
-                             nullptr);
+             : solve_uniform_coarse(pb, static_cast<int>(grid.size()) - 1,
+                                    spec.exact.checks_per_interval);
+  std::optional<SolverOutput> quarter_side;
   if (speculative.valid()) {
     SideResults side = speculative.get();
-    coarse_side = std::move(side.coarse);
+    if (graded) coarse_side = std::move(side.coarse);
+    quarter_side = std::move(side.quarter);
     if (side.refined.checks == exact_checks)
       refined.emplace(std::move(side.refined));
     else
