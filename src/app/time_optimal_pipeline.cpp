@@ -136,8 +136,7 @@ class TimeOptimalRun final : public TypedStudyRun<to::Spec, to::Result, Results>
     const auto& g = result_.grid;
     if (g.extrapolation_computed && std::isfinite(g.extrapolated)) {
       k.push_back({"duration_s[converged]", g.extrapolated, "s",
-                   g.asymptotic ? "shortest duration, extrapolated over three grids"
-                                : "shortest duration, finest grid (not asymptotic)"});
+                   "shortest duration, extrapolated (the converged duration)"});
       k.push_back({"duration_error_s[converged]", g.extrapolation_error, "s",
                    "error estimate of the converged duration"});
     }
@@ -259,15 +258,17 @@ Results TimeOptimalRun::study_results() const {
                                                   g.text,
                                                   std::nullopt,
                                                   std::nullopt};
-    if (g.extrapolation_computed) {
-      o.grid_convergence->extrapolation =
-          Results::Extrapolation{g.coarse_points, g.coarse_duration,     g.order,     g.asymptotic,
-                                 g.extrapolated,  g.extrapolation_error, std::nullopt};
-      if (g.quarter_points > 0)
-        o.grid_convergence->extrapolation->check =
-            Results::ExtrapolationCheck{g.quarter_points, g.quarter_duration, g.quarter_order,
-                                        g.quarter_extrapolated, g.checked};
-    }
+    if (g.extrapolation_computed)
+      o.grid_convergence->extrapolation = Results::Extrapolation{g.coarse_points,
+                                                                 g.coarse_duration,
+                                                                 g.quarter_points,
+                                                                 g.quarter_duration,
+                                                                 g.order,
+                                                                 g.asymptotic,
+                                                                 g.extrapolated,
+                                                                 g.extrapolated_coarse,
+                                                                 g.extrapolated_quarter,
+                                                                 g.extrapolation_error};
     if (g.graded)
       o.grid_convergence->graded =
           Results::Graded{g.uniform_points,   g.uniform_change, g.graded_rounds,

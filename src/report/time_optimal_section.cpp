@@ -251,10 +251,11 @@ Table dp_convergence_table(const Results_& to) {
 std::string graded_grid_text(const Results_::GridConvergence& g) {
   const auto& gr = *g.graded;
   return "Graded grid: the case's " + as_text(gr.uniform_points) +
-         " uniform points did not show the converged duration within exact.tolerance_rel = " +
-         format_sig(gr.tolerance_rel, 3) + " (they changed by " + format_sig(gr.uniform_change, 3) +
-         " with every interval halved, and their extrapolation was not confirmed one grid down "
-         "at a regular order within that), so the exact solver refined the grid where the "
+         " uniform points did not give the converged duration within exact.tolerance_rel = " +
+         format_sig(gr.tolerance_rel, 3) +
+         " (the spread of their extrapolations was larger; they changed by " +
+         format_sig(gr.uniform_change, 3) +
+         " with every interval halved), so the exact solver refined the grid where the "
          "change arose (near a singular pose the maximum velocity curve falls over a stretch "
          "far shorter than an interval, and a uniform grid converges only like N^-1/2): " +
          as_text(gr.rounds) + " round(s) of bisecting the intervals holding half the change, to " +
@@ -266,39 +267,34 @@ std::string graded_grid_text(const Results_::GridConvergence& g) {
          "every other node of it.";
 }
 
-// how the extrapolation's error was estimated: from the extrapolation one grid down when
-// the two orders agree, else the extrapolation's size
-std::string extrapolation_error_words(const Results_::Extrapolation& x) {
-  if (!x.check) return "the error estimate is the extrapolation's size.";
-  const auto& c = *x.check;
-  const std::string down = "the same over a fourth grid of " + as_text(c.quarter_points) +
-                           " points (" + format_sig(c.quarter_duration_s, 8) +
-                           " s), the coarser grid and the case's";
-  if (c.used)
-    return down + " gives " + format_sig(c.duration_s, 8) + " s (order " + format_sig(c.order, 3) +
-           "); the error estimate is 3 times the difference.";
-  return down +
-         (std::isfinite(c.order) ? " gives order " + format_sig(c.order, 3) +
-                                       ", too far from it to check the extrapolation"
-                                 : " is not in the asymptotic range") +
-         "; the error estimate is the extrapolation's size.";
+// the grids' durations and their extrapolations one and two grids down, in words
+std::string extrapolation_spread_words(const Results_::Extrapolation& x) {
+  std::string w = "The same one grid down, over a coarser grid of " + as_text(x.coarse_points) +
+                  " points (" + format_sig(x.coarse_duration_s, 8) + " s) and the case's, gives " +
+                  format_sig(x.one_grid_down_s, 8) + " s";
+  if (x.quarter_points > 0)
+    w += ", and two grids down, over a quarter grid of " + as_text(x.quarter_points) + " points (" +
+         format_sig(x.quarter_duration_s, 8) + " s) and the coarser one, " +
+         format_sig(x.two_grids_down_s, 8) + " s";
+  w += x.quarter_points > 0
+           ? "; the error estimate is 4 times the larger of the first difference and half the "
+             "second."
+           : "; the error estimate is 4 times their difference.";
+  return w;
 }
 
-// the converged duration: Richardson-extrapolated, or the refined grid's
+// the converged duration: Richardson-extrapolated at the scheme's order 1, its error from
+// the spread of the extrapolations
 std::string extrapolation_text(const Results_::GridConvergence& g) {
   const auto& x = *g.extrapolation;
   return "Converged duration: " + format_sig(x.duration_s, 8) + " s ± " + format_sig(x.error_s, 2) +
-         " s" +
+         " s, Richardson's extrapolation at the solver's order 1 over the case's grid and the "
+         "refined one. " +
+         extrapolation_spread_words(x) + " Observed order over the three finest grids: " +
          (x.asymptotic
-              ? ", Richardson-extrapolated from a coarser grid of " + as_text(x.coarse_points) +
-                    " points (" + format_sig(x.coarse_duration_s, 8) +
-                    " s), the case's grid and the refined one; observed order " +
-                    format_sig(x.order, 3) + ", " + extrapolation_error_words(x)
-              : ": the refined grid's duration, because the coarser grid of " +
-                    as_text(x.coarse_points) + " points (" + format_sig(x.coarse_duration_s, 8) +
-                    " s) and the two finer ones are not in the asymptotic range; the error is "
-                    "the larger change between them.") +
-         " The page's headline is this duration; the case's grid value is a detail.";
+              ? format_sig(x.order, 3)
+              : std::string("none (their changes differ in sign or it is outside 0.5-4)")) +
+         ". The page's headline is this duration; the case's grid value is a detail.";
 }
 
 // the exact solver's own grid convergence

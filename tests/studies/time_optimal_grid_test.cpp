@@ -108,7 +108,7 @@ TEST(TimeOptimalGrid, TheHeadlineIsTheExtrapolatedDurationWithinItsStatedError) 
   EXPECT_LT(std::abs(g.extrapolated - reference), g.extrapolation_error)
       << g.extrapolated << " vs " << reference;
   EXPECT_LT(std::abs(g.extrapolated - reference), 0.1 * std::abs(g.duration - reference));
-  EXPECT_TRUE(has(coarse.message, "extrapolated over 3 grids")) << coarse.message;
+  EXPECT_TRUE(has(coarse.message, "extrapolated over 4 grids")) << coarse.message;
 }
 
 TEST(TimeOptimalGrid, DpFailureNamesTheSegmentThePlaceAndTheLimit) {

@@ -89,17 +89,14 @@ struct ConvergenceRow {
   std::string message;  ///< why not, when not solved (segment, place and binding limit)
 };
 
-/// The two extrapolations of GridConvergence check each other when their observed orders
-/// differ by at most this.
-inline constexpr double kOrderAgreement = 0.3;
-/// The extrapolated duration's error estimate is this many times its difference from the
-/// extrapolation one grid down: that difference is (2^q - 1) times the finer one's error
-/// when the next term of the error falls like I^-q, so 3 covers any q >= 0.42 (measured
-/// q = 0.7-1.7 on regular paths).
-inline constexpr double kExtrapolationSafety = 3.0;
-/// Below this observed order the grids show a singular pose's N^-1/2 (regular paths: ~1):
-/// the extrapolation is not trusted to decide the grid is converged.
-inline constexpr double kRegularOrder = 0.75;
+/// The converged duration's error estimate is this many times the spread of the order-1
+/// Richardson extrapolations one and two grids down (GridConvergence). For a clean order p
+/// the extrapolation's error is 1 / (2^p - 1) times that spread, so 4 covers p >= 0.32
+/// (a singular pose's N^-1/2 included). Measured on 648 random lines of the source's arm at
+/// 300, 1000 and 2000 grid points against 32,000 and 64,000 (docs/derivations/time_optimal.md):
+/// it covered all but one (at 300 points, 1.4 times its estimate); 3 left one line at 1000
+/// points on the edge (1.0).
+inline constexpr double kExtrapolationSafety = 4.0;
 
 /// The exact solver's own grid convergence: the same problem on the grid with every
 /// interval halved (2 N - 1 points), and where the duration changed.
@@ -121,28 +118,27 @@ struct GridConvergence {
   double max_sd = 0;
   double min_sin_q2 = 1, path_min_sin_q2 = 1;
   std::string text;  ///< the sentence for the check and the page
-  /// Richardson extrapolation over three grids: a coarser one (about half the case's
-  /// intervals), the case's and the refined one, T(I) = T_inf + C I^-p with the order p
-  /// solved from the three. When the three are not in the asymptotic range (the changes
-  /// differ in sign, or p outside [0.5, 4]), the extrapolation is not used: extrapolated is
-  /// the refined duration and the error the larger of the two changes.
-  /// On a uniform grid a fourth, quarter grid (about half the coarser one's intervals)
-  /// extrapolates once more, one grid down (quarter, coarse, case): when it is asymptotic
-  /// too and its order within kOrderAgreement of p, the error estimate is
-  /// kExtrapolationSafety |T_inf - that extrapolation| (`checked`); otherwise (and on a
-  /// graded grid) it is the correction's size |T_inf - refined duration|.
+  /// The converged duration. The exact solver's discretisation is first order in the
+  /// interval, T(I) = T_inf + C / I + ..., so the headline is Richardson's extrapolation at
+  /// order 1 over the case's grid and the refined one, E = T(2I) - (T(I) - T(2I)). The same
+  /// one grid down, over a coarser grid (about half the case's intervals) and the case's,
+  /// gives E1, and two grids down, over a quarter grid and the coarser one, E2; the error
+  /// estimate is kExtrapolationSafety max(|E - E1|, |E1 - E2| / 2) (the spread of the
+  /// extrapolations, which the erratic part of the error and any other order show; without
+  /// a quarter grid |E - E1| alone). The observed order p of T(I) = T_inf + C I^-p over the
+  /// coarser, case and refined grids checks the first-order assumption; `asymptotic`: the
+  /// two changes have one sign and p lies in [0.5, 4].
   bool extrapolation_computed = false;
   int coarse_points = 0;
-  double coarse_duration = NAN;  ///< s
-  double order = NAN;            ///< observed p (NaN when not in the asymptotic range)
+  double coarse_duration = NAN;   ///< s
+  int quarter_points = 0;         ///< 0: no quarter grid
+  double quarter_duration = NAN;  ///< s
+  double order = NAN;             ///< observed p (NaN when not in the asymptotic range)
   bool asymptotic = false;
-  double extrapolated = NAN;          ///< s, the headline duration
+  double extrapolated = NAN;          ///< s, E: the headline duration
+  double extrapolated_coarse = NAN;   ///< s, E1
+  double extrapolated_quarter = NAN;  ///< s, E2 (NaN: no quarter grid)
   double extrapolation_error = NAN;   ///< s
-  int quarter_points = 0;             ///< 0: no fourth grid
-  double quarter_duration = NAN;      ///< s
-  double quarter_order = NAN;         ///< p over (quarter, coarse, case); NaN: not asymptotic
-  double quarter_extrapolated = NAN;  ///< s, T_inf over (quarter, coarse, case)
-  bool checked = false;               ///< the error is from the two extrapolations
   /// The graded grid (ExactSettings::tolerance_rel): whether the case's uniform grid was
   /// refined where its halving change arose, the uniform grid's points and change, the
   /// bisection rounds, the target and whether the node cap (max_grid_points) stopped it.

@@ -487,14 +487,11 @@ std::string significant(double v, double error) {
   return os.str();
 }
 
-// T(I) = T_inf + C I^-p through the durations of three grids of i1 < i2 < i3 intervals:
-// the order p solves (t1 - t2) / (t2 - t3) = ((i2 / i1)^p - 1) / (1 - (i2 / i3)^p) (its right
-// side grows with p, so bisection on [0.5, 4]), then T_inf = t3 - (t2 - t3) / ((i3 / i2)^p - 1)
-// (Richardson). Nothing when the changes differ in sign or p falls outside [0.5, 4].
-struct Richardson {
-  double order = NAN, limit = NAN;
-};
-std::optional<Richardson> richardson(int i1, double t1, int i2, double t2, int i3, double t3) {
+// The observed order p of T(I) = T_inf + C I^-p through the durations of three grids of
+// i1 < i2 < i3 intervals: it solves (t1 - t2) / (t2 - t3) = ((i2 / i1)^p - 1) / (1 - (i2 /
+// i3)^p) (its right side grows with p, so bisection on [0.5, 4]). Nothing when the changes
+// differ in sign or p falls outside [0.5, 4].
+std::optional<double> observed_order(int i1, double t1, int i2, double t2, int i3, double t3) {
   const double d1 = t1 - t2, d2 = t2 - t3;
   if (!(std::isfinite(t1) && std::isfinite(t2) && std::isfinite(t3)) || d2 == 0 || d1 * d2 <= 0)
     return std::nullopt;
@@ -506,45 +503,41 @@ std::optional<Richardson> richardson(int i1, double t1, int i2, double t2, int i
     const double mid = 0.5 * (lo + hi);
     (f(mid) < 0 ? lo : hi) = mid;
   }
-  const double p = 0.5 * (lo + hi);
-  return Richardson{p, t3 - d2 / (std::pow(1 / b, p) - 1)};
+  return 0.5 * (lo + hi);
 }
 
-// Richardson over the coarse, case and refined grids (intervals Ic, I, 2 I) for the
-// headline; over the quarter, coarse and case grids (Iq, Ic, I; quarter_intervals 0: none)
-// for its error (GridConvergence says how)
+// Richardson's extrapolation at order 1 over grids of i1 < i2 intervals:
+// T(I) = T_inf + C / I through both
+double richardson1(int i1, double t1, int i2, double t2) { return t2 - (t1 - t2) * i1 / (i2 - i1); }
+
+// The converged duration over the quarter (quarter_intervals 0: none), coarse, case and
+// refined grids, and its error (GridConvergence says how)
 void extrapolate(GridConvergence& g, int quarter_intervals, int coarse_intervals, int intervals) {
-  const double tc = g.coarse_duration, t = g.duration, tf = g.refined_duration;
+  const double tq = g.quarter_duration, tc = g.coarse_duration, t = g.duration,
+               tf = g.refined_duration;
   g.extrapolation_computed = true;
-  const std::optional<Richardson> r =
-      richardson(coarse_intervals, tc, intervals, t, 2 * intervals, tf);
-  if (!r) {
-    g.asymptotic = false;
-    g.order = NAN;
-    g.extrapolated = tf;
-    g.extrapolation_error = std::max(std::abs(tc - t), std::abs(t - tf));
+  const std::optional<double> p =
+      observed_order(coarse_intervals, tc, intervals, t, 2 * intervals, tf);
+  g.asymptotic = p.has_value();
+  g.order = p ? *p : NAN;
+  g.extrapolated = richardson1(intervals, t, 2 * intervals, tf);
+  if (!std::isfinite(tc)) {  // (the coarser grid failed: the extrapolation's own size)
+    g.extrapolation_error = kExtrapolationSafety * std::abs(g.extrapolated - tf);
     return;
   }
-  g.order = r->order;
-  g.asymptotic = true;
-  g.extrapolated = r->limit;
-  g.extrapolation_error = std::abs(g.extrapolated - tf);
-  if (quarter_intervals <= 0) return;
-  const std::optional<Richardson> down =
-      richardson(quarter_intervals, g.quarter_duration, coarse_intervals, tc, intervals, t);
-  if (!down) return;
-  g.quarter_order = down->order;
-  g.quarter_extrapolated = down->limit;
-  if (std::abs(down->order - r->order) > kOrderAgreement) return;
-  g.checked = true;
-  g.extrapolation_error = kExtrapolationSafety * std::abs(r->limit - down->limit);
+  g.extrapolated_coarse = richardson1(coarse_intervals, tc, intervals, t);
+  double spread = std::abs(g.extrapolated - g.extrapolated_coarse);
+  if (quarter_intervals > 0 && std::isfinite(tq)) {
+    g.extrapolated_quarter = richardson1(quarter_intervals, tq, coarse_intervals, tc);
+    spread = std::max(spread, 0.5 * std::abs(g.extrapolated_coarse - g.extrapolated_quarter));
+  }
+  g.extrapolation_error = kExtrapolationSafety * spread;
 }
 
-// The headline's relative error is within exact.tolerance_rel: the extrapolation's where the
-// uniform grids converge regularly (order >= kRegularOrder, its error checked one grid
-// down), else the grid's halving change
+// The headline's relative error is within exact.tolerance_rel (without an extrapolation:
+// the grid's halving change)
 bool headline_converged(const GridConvergence& g, double tolerance_rel) {
-  if (g.checked && g.order >= kRegularOrder)
+  if (g.extrapolation_computed && std::isfinite(g.extrapolation_error))
     return g.extrapolation_error <= tolerance_rel * std::abs(g.extrapolated);
   return g.change <= tolerance_rel;
 }
@@ -650,50 +643,44 @@ std::string exact_method(const Spec& spec, const std::vector<double>& grid,
   return method;
 }
 
-// The extrapolation's coarser grid on a graded grid (every other node, the case's check
-// points), solved on the side thread while the answer is re-checked: it depends on neither.
-// Nothing when it has under 4 intervals or its solve raises (the study solves it again then).
-std::optional<SolverOutput> solve_coarse_graded(const Problem& pb, const std::vector<double>& grid,
-                                                int checks, ExactPointCache* points) {
-  const std::vector<double> coarse = every_other(grid, pb.path.stops());
-  if (coarse.size() < 5) return std::nullopt;
-  try {
-    return solve_exact(pb, coarse, std::vector<int>(coarse.size() - 1, checks), points);
-  } catch (const std::exception&) {
-    return std::nullopt;
+// The extrapolation's coarser grids of `grid`: on a graded grid every other node of it and
+// every other node of that (nested coarsenings, keeping the path's stops), on a uniform one
+// the uniform grids of half and a quarter of its intervals. A grid of under 4 intervals is
+// left empty (the quarter one: no quarter grid).
+struct CoarserGrids {
+  std::vector<double> coarse, quarter;
+};
+CoarserGrids coarser_grids(const Problem& pb, const std::vector<double>& grid, bool graded) {
+  CoarserGrids out;
+  const auto big_enough = [](const std::vector<double>& g) { return g.size() >= 5; };
+  if (graded) {
+    out.coarse = every_other(grid, pb.path.stops());
+    if (big_enough(out.coarse)) out.quarter = every_other(out.coarse, pb.path.stops());
+  } else {
+    const int intervals = static_cast<int>(grid.size()) - 1;
+    if (intervals / 2 >= 4) out.coarse = make_nodes(pb.path, intervals / 2);
+    if (intervals / 4 >= 4) out.quarter = make_nodes(pb.path, intervals / 4);
   }
+  if (!big_enough(out.coarse)) out.coarse.clear();
+  if (out.coarse.empty() || !big_enough(out.quarter)) out.quarter.clear();
+  return out;
 }
 
-// intervals of the fourth grid that checks the extrapolation of a uniform grid of
-// `intervals` (a quarter of them), 0 when it would have under 4
-int quarter_intervals(int intervals) {
-  const int q = intervals / 2 / 2;
-  return q >= 4 ? q : 0;
-}
-
-// The exact solver on a uniform grid of `intervals` (the case's check points), or nothing
-// when it has under 4 intervals or its solve raises (the study solves it again then, for its
-// message)
-std::optional<SolverOutput> solve_uniform(const Problem& pb, int intervals, int checks,
-                                          ExactPointCache* points) {
-  if (intervals < 4) return std::nullopt;
+// The exact solver on `nodes` with `checks` check points per interval, or nothing when
+// there are none or its solve raises (the study solves it again then, for its message). The
+// extrapolation's coarser grids depend on neither the answer nor its re-check: on a uniform
+// grid the coarser one is solved by the study's thread while the side thread solves the
+// halved grid (its points evaluated anew: the shared cache is the side thread's until it is
+// waited for), the quarter one on the side thread after the halved grid; on a graded grid
+// both on the side thread.
+std::optional<SolverOutput> try_solve(const Problem& pb, const std::vector<double>& nodes,
+                                      int checks, ExactPointCache* points) {
+  if (nodes.empty()) return std::nullopt;
   try {
-    const std::vector<double> nodes = make_nodes(pb.path, intervals);
     return solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks), points);
   } catch (const std::exception&) {
     return std::nullopt;
   }
-}
-// The extrapolation's grids of a uniform grid of `intervals`: the coarser one, solved by this
-// thread while the side thread solves the halved grid (its points evaluated anew: the shared
-// cache is the side thread's until it is waited for), and the fourth, quarter grid, solved
-// on the side thread after the halved grid. Neither depends on the answer or its re-check.
-std::optional<SolverOutput> solve_uniform_coarse(const Problem& pb, int intervals, int checks) {
-  return solve_uniform(pb, intervals / 2, checks, nullptr);
-}
-std::optional<SolverOutput> solve_quarter(const Problem& pb, int intervals, int checks,
-                                          ExactPointCache* points) {
-  return solve_uniform(pb, quarter_intervals(intervals), checks, points);
 }
 
 // the intervals whose check points the re-check `round` doubles: those over the tolerance
@@ -750,11 +737,9 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
                           std::nullopt,
                           std::nullopt};
           max_velocity_curve(pb, grid, &out.mvc_sd, &out.mvc_velocity_sd, &points);
-          if (known)
-            out.coarse = solve_coarse_graded(pb, grid, checks.front(), &points);
-          else
-            out.quarter =
-                solve_quarter(pb, static_cast<int>(grid.size()) - 1, checks.front(), &points);
+          const CoarserGrids coarser = coarser_grids(pb, grid, known != nullptr);
+          if (known) out.coarse = try_solve(pb, coarser.coarse, checks.front(), &points);
+          out.quarter = try_solve(pb, coarser.quarter, checks.front(), &points);
           return out;
         },
         AfterTask::kSleep);  // (the study's last side task)
@@ -778,38 +763,31 @@ bool refine_exact(const Problem& pb, const Spec& spec, const std::vector<double>
   return true;
 }
 
-// The converged duration over the case's grid and its refined one, solved into g: a third,
-// coarser grid (about half the intervals) for the observed order, and on a uniform grid a
-// fourth (half again) that checks the extrapolation one grid down (on a graded grid the
-// coarser one is every other node of it: the same nesting). `coarse_side` and
-// `quarter_side`: those grids' solutions where already solved.
+// The converged duration over the case's grid and its refined one, solved into g, with the
+// coarser grids (coarser_grids; `coarse_side` and `quarter_side`: their solutions where
+// already solved)
 void extrapolate_grids(const Problem& pb, const Spec& spec, const ProgressFn& progress,
                        const std::vector<double>& grid, const GradedGrid* graded,
                        ExactPointCache& points, std::optional<SolverOutput> coarse_side,
                        std::optional<SolverOutput> quarter_side, GridConvergence& g) {
-  const int intervals = static_cast<int>(grid.size()) - 1;
-  const std::vector<double> coarse_graded =
-      graded ? every_other(grid, pb.path.stops()) : std::vector<double>{};
-  const int coarse_intervals = graded ? static_cast<int>(coarse_graded.size()) - 1 : intervals / 2;
-  const int quarter = graded ? 0 : quarter_intervals(intervals);
-  const int checks = spec.exact.checks_per_interval;
-  if (coarse_intervals < 4) return;
+  const CoarserGrids coarser = coarser_grids(pb, grid, graded != nullptr);
+  if (coarser.coarse.empty()) return;
   report(progress, 0.11, "exact solver on coarser grids (extrapolation)");
-  const std::vector<double> coarse = graded ? coarse_graded : make_nodes(pb.path, coarse_intervals);
-  const SolverOutput oc =
-      coarse_side ? std::move(*coarse_side)
-                  : solve_exact(pb, coarse, std::vector<int>(coarse.size() - 1, checks), &points);
-  g.coarse_points = static_cast<int>(coarse.size());
-  g.coarse_duration = oc.solved ? oc.duration : NAN;
-  if (quarter > 0) {
-    const std::vector<double> nodes = make_nodes(pb.path, quarter);
-    const SolverOutput oq =
-        quarter_side ? std::move(*quarter_side)
-                     : solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks), &points);
-    g.quarter_points = static_cast<int>(nodes.size());
-    g.quarter_duration = oq.solved ? oq.duration : NAN;
+  const int checks = spec.exact.checks_per_interval;
+  const auto solved = [&](const std::vector<double>& nodes, std::optional<SolverOutput>& side) {
+    const SolverOutput o =
+        side ? std::move(*side)
+             : solve_exact(pb, nodes, std::vector<int>(nodes.size() - 1, checks), &points);
+    return o.solved ? o.duration : NAN;
+  };
+  g.coarse_points = static_cast<int>(coarser.coarse.size());
+  g.coarse_duration = solved(coarser.coarse, coarse_side);
+  if (!coarser.quarter.empty()) {
+    g.quarter_points = static_cast<int>(coarser.quarter.size());
+    g.quarter_duration = solved(coarser.quarter, quarter_side);
   }
-  extrapolate(g, quarter, coarse_intervals, intervals);
+  extrapolate(g, std::max(0, g.quarter_points - 1), g.coarse_points - 1,
+              static_cast<int>(grid.size()) - 1);
 }
 
 // The exact duration's convergence with the grid: the halved grid's solve (from the side
@@ -826,12 +804,11 @@ std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
                                         SideTask<SideResults>& speculative, Result& res) {
   std::optional<RefinedGrid> refined;
   SolverOutput stale;  // (the side thread's halved grid with check points since doubled)
-  // (the coarser grid of a uniform one while the side thread still works: its points are
-  // evaluated anew, the shared cache being the side thread's until it is waited for)
+  // (the coarser grid of a uniform one while the side thread still works: try_solve)
   std::optional<SolverOutput> coarse_side =
       graded ? std::nullopt
-             : solve_uniform_coarse(pb, static_cast<int>(grid.size()) - 1,
-                                    spec.exact.checks_per_interval);
+             : try_solve(pb, coarser_grids(pb, grid, false).coarse, spec.exact.checks_per_interval,
+                         nullptr);
   std::optional<SolverOutput> quarter_side;
   if (speculative.valid()) {
     SideResults side = speculative.get();
@@ -981,9 +958,11 @@ std::string summary_message(const Problem& pb, const Result& res, double exact_d
     // the headline is the converged duration with its error; the grid's own value follows
     os << significant(g.extrapolated, g.extrapolation_error) << " s +- " << std::setprecision(2)
        << g.extrapolation_error << " s (exact, "
-       << (!g.asymptotic ? "finest grid; not in the asymptotic range"
-           : g.checked   ? "extrapolated over 3 grids, its error from a 4th"
-                         : "extrapolated over 3 grids")
+       << "extrapolated over "
+       << (g.quarter_points > 0  ? 4
+           : g.coarse_points > 0 ? 3
+                                 : 2)
+       << " grids"
        << "; " << fixed(exact_duration, 4) << " s on its " << g.grid_points
        << (g.graded ? "-point graded grid)" : "-point grid)");
   } else {

@@ -73,13 +73,13 @@ struct ExactSettings {
   /// (and half the case grid's). Regular paths change by ~1e-4 at 1000 points.
   double grid_tolerance = 1e-3;
   /// The headline (converged) duration's relative error. On the case's uniform grid it is
-  /// met when the extrapolation over the coarser, case and halved grids, checked one grid
-  /// down at a regular order (>= 0.75), has its error estimate within this, or else when
-  /// the duration changes by no more than this with every interval halved. Otherwise the
-  /// solver grades the grid where the change arises (near a singular pose the maximum
-  /// velocity curve falls to zero over a stretch far shorter than an interval, and a uniform
-  /// grid converges like N^-1/2): it bisects the intervals that hold half of the summed
-  /// change, again and again, until the change is within this; 0: the uniform grid is kept.
+  /// met when the extrapolation's error estimate (GridConvergence) is within this (without
+  /// a coarser grid: when the duration changes by no more than this with every interval
+  /// halved). Otherwise the solver grades the grid where the change arises (near a singular
+  /// pose the maximum velocity curve falls to zero over a stretch far shorter than an
+  /// interval, and a uniform grid converges like N^-1/2): it bisects the intervals that hold half
+  /// of the summed change, again and again, until the change is within this; 0: the uniform grid is
+  /// kept.
   double tolerance_rel = 1e-4;
   /// most nodes of the graded grid; the refinement stops there and says so
   int max_grid_points = 200000;

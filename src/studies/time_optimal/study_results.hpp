@@ -66,17 +66,13 @@ struct StudyResults {
     std::vector<double> t_s, s;
     Rows tip_m, q_rad;
   };
-  struct ExtrapolationCheck {
-    int quarter_points = 0;
-    double quarter_duration_s = 0, order = 0, duration_s = 0;
-    bool used = false;
-  };
   struct Extrapolation {
     int coarse_points = 0;
-    double coarse_duration_s = 0, order = 0;
+    double coarse_duration_s = 0;
+    int quarter_points = 0;
+    double quarter_duration_s = 0, order = 0;
     bool asymptotic = false;
-    double duration_s = 0, error_s = 0;
-    std::optional<ExtrapolationCheck> check;
+    double duration_s = 0, one_grid_down_s = 0, two_grids_down_s = 0, error_s = 0;
   };
   struct Graded {
     int uniform_points = 0;
@@ -203,29 +199,25 @@ void fields(V& v, StudyResults::Motion& x) {
   v("q_rad", x.q_rad, "joint angles per sample");
 }
 template <class V>
-void fields(V& v, StudyResults::ExtrapolationCheck& x) {
-  v("quarter_points", x.quarter_points,
-    "grid points of the fourth grid (half the coarser's intervals)");
-  v("quarter_duration_s", x.quarter_duration_s, "duration on it (null when not solved)");
-  v("order", x.order,
-    "observed order over the quarter, coarser and case grids (null: not asymptotic)");
-  v("duration_s", x.duration_s,
-    "the extrapolation over those three, one grid down (null: not asymptotic)");
-  v("used", x.used,
-    "the orders agree, so the error is 3 x the two extrapolations' difference (else the "
-    "correction's size)");
-}
-template <class V>
 void fields(V& v, StudyResults::Extrapolation& x) {
-  v("coarse_points", x.coarse_points, "grid points of the third, coarser grid");
+  v("coarse_points", x.coarse_points, "grid points of the coarser grid (about half the intervals)");
   v("coarse_duration_s", x.coarse_duration_s, "duration on it (null when not solved)");
+  v("quarter_points", x.quarter_points,
+    "grid points of the quarter grid (half the coarser one's intervals; 0: none)");
+  v("quarter_duration_s", x.quarter_duration_s, "duration on it (null when none or not solved)");
   v("order", x.order,
-    "observed order p of T(I) = T_inf + C I^-p from the three grids (null: not asymptotic)");
-  v("asymptotic", x.asymptotic, "the three grids are in the asymptotic range");
+    "observed order p of T(I) = T_inf + C I^-p over the coarser, case and refined grids "
+    "(null: the changes differ in sign or p is outside [0.5, 4]); the scheme's is 1");
+  v("asymptotic", x.asymptotic, "the observed order was found");
   v("duration_s", x.duration_s,
-    "the converged duration: extrapolated, or the refined grid's when not asymptotic");
-  v("error_s", x.error_s, "its error estimate");
-  v.optional("check", x.check, "uniform grids: the extrapolation one grid down that checks it");
+    "the converged duration: Richardson at order 1 over the case's and the refined grid");
+  v("one_grid_down_s", x.one_grid_down_s,
+    "the same over the coarser and the case's grid (null when the coarser was not solved)");
+  v("two_grids_down_s", x.two_grids_down_s,
+    "the same over the quarter and the coarser grid (null when none)");
+  v("error_s", x.error_s,
+    "its error estimate: 4 x max(|duration - one grid down|, |one grid down - two grids "
+    "down| / 2)");
 }
 template <class V>
 void fields(V& v, StudyResults::Graded& x) {
