@@ -282,8 +282,7 @@ std::optional<Figure> margin_figure(const PS& pl, FigureWriter& figures) {
 std::string located_text(double value, double error, int digits) {
   if (!(error > 0) || !std::isfinite(error) || !std::isfinite(value) || value == 0)
     return format_sig(value, digits);
-  const int known = int(std::ceil(std::log10(std::abs(value) / error))) + 1;
-  return format_sig(value, std::clamp(known, 2, 12)) + " ± " + format_sig(error, 1);
+  return format_to_error(value, error, digits) + " ± " + format_sig(error, 1);
 }
 
 // the refined optimum per program and configuration; `owners` gets each optimum's series

@@ -270,12 +270,13 @@ std::string graded_grid_text(const Results_::GridConvergence& g) {
 // the grids' durations and their extrapolations one and two grids down, in words
 std::string extrapolation_spread_words(const Results_::Extrapolation& x) {
   std::string w = "The same one grid down, over a coarser grid of " + as_text(x.coarse_points) +
-                  " points (" + format_sig(x.coarse_duration_s, 8) + " s) and the case's, gives " +
-                  format_sig(x.one_grid_down_s, 8) + " s";
+                  " points (" + format_to_error(x.coarse_duration_s, x.error_s, 8) +
+                  " s) and the case's, gives " + format_to_error(x.one_grid_down_s, x.error_s, 8) +
+                  " s";
   if (x.quarter_points > 0)
     w += ", and two grids down, over a quarter grid of " + as_text(x.quarter_points) + " points (" +
-         format_sig(x.quarter_duration_s, 8) + " s) and the coarser one, " +
-         format_sig(x.two_grids_down_s, 8) + " s";
+         format_to_error(x.quarter_duration_s, x.error_s, 8) + " s) and the coarser one, " +
+         format_to_error(x.two_grids_down_s, x.error_s, 8) + " s";
   w += x.quarter_points > 0
            ? "; the error estimate is 4 times the larger of the first difference and half the "
              "second."
@@ -287,7 +288,8 @@ std::string extrapolation_spread_words(const Results_::Extrapolation& x) {
 // the spread of the extrapolations
 std::string extrapolation_text(const Results_::GridConvergence& g) {
   const auto& x = *g.extrapolation;
-  return "Converged duration: " + format_sig(x.duration_s, 8) + " s ± " + format_sig(x.error_s, 2) +
+  return "Converged duration: " + format_to_error(x.duration_s, x.error_s, 8) + " s ± " +
+         format_sig(x.error_s, 2) +
          " s, Richardson's extrapolation at the solver's order 1 over the case's grid and the "
          "refined one. " +
          extrapolation_spread_words(x) + " Observed order over the three finest grids: " +
