@@ -9,6 +9,8 @@
 
 namespace armstudy::studies {
 namespace {
+thread_local int awake_waits = 0;  // (a side thread's: SideThread::run counts)
+
 class SideThread {
  public:
   SideThread() : thread_([this] { run(); }) {}
@@ -38,8 +40,10 @@ class SideThread {
       // waiting for it awake saves the wake-up of a sleeping thread (measured 0.04-0.06 ms
       // on this project's 2-core VM, a tenth of the time-optimal study's halved-grid solve);
       // after a study's last task it would only burn a core
-      if (after == AfterTask::kStayAwake)
+      if (after == AfterTask::kStayAwake) {
+        ++awake_waits;
         spin_until([this] { return posted_.load(std::memory_order_acquire) != taken_; });
+      }
       {
         std::unique_lock<std::mutex> lock(mutex_);
         wake_.wait(lock, [this] { return stop_ || !tasks_.empty(); });
@@ -76,6 +80,8 @@ void spin_until(const std::function<bool()>& done) {
 #endif
   }
 }
+
+int side_thread_awake_waits() { return awake_waits; }
 
 void post_to_side_thread(std::function<void()> task, AfterTask after) {
   thread_local SideThread side;

@@ -26,6 +26,11 @@ inline constexpr int kSpinMicroseconds = 200;
 /// Returns once `done()` is true, or after kSpinMicroseconds.
 void spin_until(const std::function<bool()>& done);
 
+/// How many times the calling thread, a side thread, has waited awake for a task so far
+/// (0 on any other thread): read inside a task, it tells whether the side thread waited
+/// awake after the task before (AfterTask).
+int side_thread_awake_waits();
+
 /// A value computed on the side thread. It is waited for when read and when it goes out of
 /// scope (so a task may refer to the caller's locals declared before it); an exception of
 /// the task is rethrown by get(). A task must not wait for another side task.

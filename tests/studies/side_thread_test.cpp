@@ -11,8 +11,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include <time.h>
-
 namespace armstudy::studies {
 namespace {
 
@@ -36,23 +34,18 @@ TEST(SideThread, ATaskPostedAfterTheSideThreadHasGoneToSleepRuns) {
   EXPECT_EQ(c.get(), 3);
 }
 
-// the side thread's own CPU time (s)
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 TEST(SideThread, AfterALastTaskTheSideThreadSleepsInsteadOfWaitingAwake) {
-  // after a task posted with AfterTask::kSleep the side thread does not spin for the next
-  // one (kSpinMicroseconds of a core otherwise): between the end of that task and the next
-  // task, 10 spins' time later, it spends well under one spin's CPU time; the next task runs
-  SideTask<double> last(thread_cpu_seconds, AfterTask::kSleep);
-  const double at_end = last.get();
+  // after a task posted with AfterTask::kSleep the side thread does not wait awake for the
+  // next one (kSpinMicroseconds of a core otherwise), after any other task it does; each
+  // task reads the side thread's count of its waits awake so far. The next task runs.
+  SideTask<int> first(side_thread_awake_waits);
+  const int before = first.get();
+  SideTask<int> last(side_thread_awake_waits, AfterTask::kSleep);
+  const int at_last = last.get();
+  EXPECT_EQ(at_last, before + 1);  // (it waited awake after `first`)
   std::this_thread::sleep_for(std::chrono::microseconds(10 * kSpinMicroseconds));
-  SideTask<double> next(thread_cpu_seconds);
-  const double at_next = next.get();
-  EXPECT_LT(at_next - at_end, 0.5e-6 * kSpinMicroseconds);
+  SideTask<int> next(side_thread_awake_waits);
+  EXPECT_EQ(next.get(), at_last);  // (it did not after `last`)
 }
 
 TEST(SideThread, TheTasksExceptionReachesGet) {
