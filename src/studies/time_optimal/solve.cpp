@@ -791,11 +791,10 @@ void extrapolate_grids(const Problem& pb, const Spec& spec, const ProgressFn& pr
 }
 
 // The exact duration's convergence with the grid: the halved grid's solve (from the side
-// thread when its check points still hold), a third, coarser grid for the observed order
-// and (uniform grids) a fourth checking the extrapolation. Returns the graded grid to solve
-// the study again on when a uniform grid's headline is not converged to
-// exact.tolerance_rel (headline_converged; the uniform grid's work is lost, and a case
-// whose uniform grid converges pays nothing).
+// thread when its check points still hold) and the coarser grids of the extrapolation
+// (extrapolate_grids). Returns the graded grid to solve the study again on when a uniform
+// grid's headline is not converged to exact.tolerance_rel (headline_converged; the uniform
+// grid's work is lost, and a case whose uniform grid converges pays nothing).
 std::optional<GradedGrid> converge_grid(const Problem& pb, const Spec& spec,
                                         const ProgressFn& progress, const std::vector<double>& grid,
                                         const std::vector<int>& exact_checks,
