@@ -200,8 +200,8 @@ struct RefinedGrid {
 struct SideResults {
   RefinedGrid refined;
   std::vector<double> mvc_sd, mvc_velocity_sd;
-  std::optional<SolverOutput> coarse;   // (on a graded grid: solve_coarse_graded's)
-  std::optional<SolverOutput> quarter;  // (on a uniform grid: solve_quarter's)
+  std::optional<SolverOutput> coarse;   // (on a graded grid: coarser_grids' coarse one)
+  std::optional<SolverOutput> quarter;  // (coarser_grids' quarter one)
 };
 // the grid with every interval halved, and its check points (interval k's in both halves)
 std::vector<double> halved(const std::vector<double>& grid) {
