@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Writes OUT (a C++ source defining armstudy::git_commit()) from `git describe` of SOURCE_DIR,
 # rewriting it only when the text changes, so that a build after a commit records the new
 # commit without recompiling anything else. "-dirty" marks uncommitted changes.

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Precompiled headers. Parsing the standard library, Eigen and nlohmann-json again in every
 # file was much of the front end's time (results_record.cpp: 4.0 of its 8.0 CPU-s were
 # -fsyntax-only; run_case.cpp 11.9 -> 8.6 CPU-s with them); each target now parses them

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Unity (jumbo) builds: CMake compiles a target's sources a few at a time as one translation
 # unit (Unity/unity_<n>_cxx.cxx including them), so that the templates several files use
 # (nlohmann-json, GoogleTest, the results mapping of report/results_fields.hpp, the records'

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Sweep throughput benchmark and the 200-case scale run: the bundled sweep
 # (reports/sweeps/placement-link-ratio.yaml) without rendering, run (a) once with --jobs J,
 # (b) as N shards one after the other, each with --jobs J, then both merged. Prints cases

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Optional benchmark: armstudy's exact time-optimal solver beside TOPP-RA's C++ core (its
 # Seidel LP solver) on the anchor problem (scripts/toppra_anchor.cpp describes it), in the
 # same run. TOPP-RA is not a dependency of armstudy: build it yourself, outside this

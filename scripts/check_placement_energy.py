@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Independent check of armstudy's placement energies near a workspace boundary: pure
 Python, no code shared with armstudy (the arm's Lagrangian constants come from the sibling
 check_placement_optimum.py, itself independent of armstudy).

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Independent check of a placement optimum: pure Python, no code shared with
 armstudy. Model: the 2-link arm in absolute angles (th1, th2) from its Lagrangian, torques
 M2 = Q2 (elbow), M1 = Q1 + Q2 (root), energy = int |M1 th1'| + |M2 (th2' - th1')| dt by the

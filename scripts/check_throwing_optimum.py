@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Independent re-simulation of a throwing answer: pure Python 3 standard library, no code
 shared with armstudy.
 

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Independent check of the time-optimal duration of reports/cases/time-optimal-3link.yaml:
 pure Python, no code shared with armstudy. The path is the case's natural cubic spline in
 joint space (chord-length knots; the duration does not depend on how the curve is

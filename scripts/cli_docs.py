@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """The man pages and the bash completion of armstudy, made from its own --help at build time
 (so that they say what the program does, option for option).
 

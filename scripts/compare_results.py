@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Compare the results.json files of two runs of the same cases, e.g. before and after a
 change of the number format or of the code that writes the file.
 

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Lists the functions in src/ longer than a limit, longest first (the house rule,
 docs/architecture.md: no function over 120 lines, none over 60 without a reason in its
 comment).

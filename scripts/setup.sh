@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # armstudy set-up, command 1 of the README: installs every Debian package the project
 # needs (only the missing ones; fast when all are there), builds in Release and renders
 # every bundled case under reports/cases/ into reports/out/.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # armstudy set-up and the whole test suite, command 2 of the README (.ci/run calls it):
 # installs the missing packages, builds in Release and runs every test with CTest, then
 # the suite again built with AddressSanitizer and UndefinedBehaviorSanitizer

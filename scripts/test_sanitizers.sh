@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer (gcc's, in a
 # second build folder, build-asan/) and run with CTest: any memory error, leak or
 # undefined behaviour fails the test that triggers it. scripts/test.sh runs it after the

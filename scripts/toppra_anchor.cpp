@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // TOPP-RA's side of the exact time-optimal comparison (scripts/bench_toppra.sh builds and runs
 // it against a TOPP-RA build; TOPP-RA is not a dependency of armstudy).
 //

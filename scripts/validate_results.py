@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Validates results.json files against results.schema.json (JSON Schema 2020-12).
 
 usage: validate_results.py SCHEMA FILE_OR_DIR...   (a folder is searched for results.json)

@@ -1,4 +1,6 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # The code follows the project's .clang-format: every tracked C++ file is as clang-format
 # (Debian's clang-format 14, scripts/packages.txt) would write it. Format a file with
 # `clang-format -i FILE` before committing.

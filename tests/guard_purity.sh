@@ -1,4 +1,6 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # core and studies are pure: no file or console I/O, no YAML, no MuJoCo, no system plumbing
 # (src/sys: processes, files, locks) (docs/development.md, Layout).
 # MuJoCo is its headers and calls (mujoco/..., mj_*): a results.json key such as

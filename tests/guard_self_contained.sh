@@ -1,4 +1,6 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # The repository stands on its own: no tracked file (code, comments, README, docs, case
 # files, models, templates, report text, tests) may point outside it. Forbidden: paths to a
 # shared folder beside the clone (../shared, /work/shared, seeds/), the planning notes

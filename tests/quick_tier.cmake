@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # The quick tier (`ctest -L quick`, the edit-build-test loop): every GoogleTest of every
 # folder gets the label `quick` beside its folder's label, except those matching a line of
 # tests/slow_tests.txt (tests that drive the browser or run many whole cases). CTest

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// results.json "exports": what each file for other tools holds (model.xml, motion CSVs), as
 /// the typed records (report::ExportRecord) a pipeline's write_exports returns to run_case.

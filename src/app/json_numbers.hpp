@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Numbers in results.json: every finite double is written in full, in the shortest form
 /// that reads back to the same double (at most 17 significant digits, C locale), so any

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The pendulum study in the pipeline: case -> studies::solve_pendulum -> results.json.
 //
 // results.json "pendulum" section: studies/pendulum/study_results.hpp (every key, typed;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The pipeline of one case: case -> study -> result -> scene/report. Each study plugs in
 /// one loader record (StudyLoader, app/study_loaders.cpp), one StudyRun implementation and

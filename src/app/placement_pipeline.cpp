@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The placement study in the pipeline: case -> studies::placement::solve -> results.json.
 //
 // results.json "placement" section: studies/placement/study_results.hpp (every key, typed;

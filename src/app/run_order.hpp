@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The order a run works through its cases in: the longest first, so that the last case to
 /// finish on each core is a short one. Only the order changes; every case's output is the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The sensitivity part of a case (`sensitivity:`, cases/sensitivity_spec.hpp): the solved
 /// case re-solved with each listed key at its value minus and plus its step, through the

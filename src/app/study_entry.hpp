@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What a study's pipeline (app/<study>_pipeline.cpp) builds its StudyRun and its registry
 /// parts with.

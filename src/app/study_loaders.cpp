@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The one list of armstudy's studies (app/study_loaders.hpp): a study is added here, by its
 // name, its case loader and its results.json part, and then gets its run and report
 // parts in app/study_registry.cpp (the program refuses to start while one is missing). The

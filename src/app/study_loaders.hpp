@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The loading half of a study's registry record: its name, its case loader (src/cases) and
 /// its results.json part's schema and strict reader, with nothing of its solver, scenes

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The program's study registry: the one list of studies (app/study_loaders.cpp), each
 // extended with its run and report parts from its pipeline file.
 #include "app/pipeline.hpp"

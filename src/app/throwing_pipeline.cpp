@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The throwing study in the pipeline: case -> studies::solve_throwing -> results.json.
 //
 // results.json "throwing" section: studies/throwing/study_results.hpp (every key, typed;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal study in the pipeline: case -> studies::time_optimal::solve -> results.json.
 //
 // results.json "time_optimal" section: studies/time_optimal/study_results.hpp (every key,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Resource budgets: before anything is solved, each study's loader estimates the work and
 /// memory its case asks for (a Demand); the case is refused (exit 2, at the keys that set

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// User-input errors of case files: `path:line:col: what is wrong; expected what`.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The one way armstudy reads a file it did not just write itself (a case or sweep file,
 /// --tolerances, results.json in run's skip check, merge and diff, a frame read by diff):

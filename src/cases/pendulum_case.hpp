@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// `pendulum:` section of a case file -> studies::PendulumSpec. Every key is optional;
 /// defaults are Sec. 3 of Sato et al. and the choices documented in

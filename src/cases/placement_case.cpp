@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #include "cases/placement_case.hpp"
 
 #include <cmath>

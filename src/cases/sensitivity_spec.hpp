@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// How much the answer depends on what the case assumed (`sensitivity:` in YAML): a list of
 /// numeric keys of the case file, each re-solved at -step and +step around the value the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What a case's source printed, to set beside armstudy's numbers (`source:` in YAML): the
 /// figures the source prints for the case and the claims it makes about it, each with

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// `throwing:` section of a case file -> studies::ThrowingSpec (and the tray-arm readers
 /// shared with the pendulum case). Every key is optional; defaults are Table 1 and Sec. 4

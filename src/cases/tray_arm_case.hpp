@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The keys of the tray arm (studies/tray_arm.hpp) that the pendulum and the throwing case
 /// files share: `link1`, `link2`, `tray`, `ball` and `gravity_m_s2`.

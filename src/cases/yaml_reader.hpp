@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Typed, position-aware reading of YAML case files (yaml-cpp 0.7).
 ///

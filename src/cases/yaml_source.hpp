@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The bytes of a YAML file checked before yaml-cpp builds a tree of them, so that hostile
 /// input is refused quickly with its file:line:col instead of hanging, crashing or running

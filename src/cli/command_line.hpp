@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// armstudy's command line: every command, its options and what the parse fills in
 /// (cli/main.cpp runs the command given).

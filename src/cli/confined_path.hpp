@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Paths taken from files armstudy reads (a sweep's `base:`, the `frames` and `files` of a
 /// results.json) stay in their place: inside a given folder, symlinks resolved.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// `armstudy diff BASE NEW`: what changed between two output folders of `run` or `merge`
 /// (e.g. the main branch's report artefact and a pull request's), case by case: added and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Tolerances of `armstudy diff`, from a YAML file (errors as file:line:col, like case files):
 ///

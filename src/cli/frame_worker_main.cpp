@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // armstudy-frames: the helper process that draws frames beside armstudy (scene/frame_worker.hpp).
 // Started by armstudy with its socket as standard input and output and armstudy's process id
 // as the one argument; not meant to be run by hand.

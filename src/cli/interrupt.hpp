@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// SIGINT, SIGTERM and SIGHUP: armstudy stops at once, kills the browsers it started,
 /// puts back any earlier report a folder swap had moved aside, removes its unfinished

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // armstudy: planar-arm studies from YAML case files to rendered reports.
 //
 // Exit codes: 0 done; 1 a study could not be solved or failed its own checks; 2 bad

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Merging case outputs into what CI reads: summary.md (a job summary), junit.xml (one
 /// testcase per case and check) and, for sweeps, sweep.csv / sweep.json (one row per case:

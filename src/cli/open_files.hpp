@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The open files (file descriptors) a run needs. A run holds case files, PNGs, SVGs,
 /// results.json, the frame helpers' sockets, ffmpeg's pipe and the browser's at once; with

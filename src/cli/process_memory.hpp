@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// How the process keeps the memory it frees. On this project's virtual machines a page
 /// fault costs far more than on bare metal, and glibc's defaults hand large freed blocks

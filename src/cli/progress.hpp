@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Progress of long work on stderr: a live bar with time left on a terminal, plain
 /// periodic lines otherwise (CI logs). Thread-safe; one line per task.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Parameter sweeps: a sweep file names a base case and axes over case parameters (by
 /// path, e.g. `arm.links[2].length`, 1-based list indices as in error messages); expand()

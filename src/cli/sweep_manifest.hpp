@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// A sweep's manifest: `sweep expand` writes `sweep-manifest.json` beside the case files it
 /// generates, naming the sweep and every case id. `run` copies it into its output folder

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// `armstudy --version`: armstudy's version and commit, then the libraries it runs with and
 /// the browser --pdf would use.

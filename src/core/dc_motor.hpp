@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Armature-controlled DC servomotor of Sato et al. eq. 5-7 (direct drive).
 ///

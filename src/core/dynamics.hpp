@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Rigid-body dynamics of a PlanarChain: M(q) qdd + h(q, qd) = tau, with tau on the
 /// relative joint angles and gravity along -y.

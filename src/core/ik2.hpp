@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Closed-form inverse kinematics of a 2-link planar arm (both configurations), with
 /// velocity and acceleration analysis. Angles are RELATIVE: q1 absolute angle of link 1,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Ordinary differential equation integrators for the small state vectors of the tray arm
 /// (passive joints' angles and rates, plus quadrature states such as energy).

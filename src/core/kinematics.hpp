@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Forward kinematics, point Jacobians and their time derivatives of a PlanarChain.
 /// Frames: W is the world frame; all positions are in W, in metres.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Rest-to-rest motion programs s(t) over [0, T] from 0 to L, with s', s'', s'''.
 

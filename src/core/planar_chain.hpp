@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The one model of every arm in armstudy: a planar serial chain of revolute joints.
 ///

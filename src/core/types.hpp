@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Fixed-capacity joint-space types: N is 2 to kMaxLinks at run time, with no heap allocation.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The moving pictures of a case page, from results.json "animations" (written by
 /// scene/animation.hpp): a section of CSS animations over the sprite sheets, each with its

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The answer box on page 1 of a case report: the one-sentence result, the key picture,
 /// the key figures in words with units, the verdict of the study's checks (passed or

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The study report of one case (DIR/<case>/index.html with its figures and stylesheet),
 /// the page of all cases (DIR/index.html) and the PDF print through headless Chromium.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What changed between two runs (`armstudy diff BASE NEW`): the comparison, filled by
 /// app::diff_runs from the two output folders, and its two renderings, DIR/diff.html (a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the parts of a page every study shares: axis labels from unit-suffixed keys and the table
 // of a typed value written as JSON (to_json)
 #include <algorithm>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Markdown text helpers for the tables armstudy writes (summary.md, diff.md).
 

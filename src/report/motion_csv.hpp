@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The motions of a case as CSV files beside results.json, for a reader's own tools: one
 /// file per solver or optimiser, one row per sample, a header row naming every column with

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What in an output folder armstudy wrote, and so may replace: a case folder holds
 /// armstudy's results.json for that case (every version writes one: an object with

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The content model of a report page (sections of paragraphs, tables, figures and notes)
 /// and the helpers that study sections use to fill it. Rendering to HTML happens in

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // html -> pdf through headless chromium over the DevTools protocol: one fresh profile per
 // browser; one browser per page (print_pdf) or one for all pages of a run (print_pdfs). Every
 // page is printed with scripts off and no file read outside the page's own folder.

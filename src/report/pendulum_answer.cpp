@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the pendulum study's lines of the answer box (page 1): no optimum, the energy check and
 // the choices the case makes
 #include "report/answer_box.hpp"

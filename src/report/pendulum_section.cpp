@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the pendulum test of Sato et al. sec. 3: energy over time (fig. 3), angles
 // over time, the ball's path with the snapshots (fig. 2)
 #include <cmath>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the placement study's lines of the answer box (page 1): what decides each optimum, the
 // assumptions of the energy integral, and the locus of the optimum of least energy
 #include <algorithm>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the placement page's maps: the energy over root locations per program and configuration,
 // the energy over the direction angle (the thesis's Fig. 9.11), the optimal root locations
 // (9.30) and the torque trade-off (Pareto fronts)

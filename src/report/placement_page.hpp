@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // The placement page's helpers and parts shared by report/placement_section.cpp (the page)
 // and report/placement_maps.cpp (its maps, energy over direction, root loci and trade-off).

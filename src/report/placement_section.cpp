@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the placement study of Kopmaz (2016): optima, time series (figs. 9.1-9.5), the method and
 // the convergence; the maps, energy over direction angle (9.11), root loci (9.30) and pareto
 // front are in placement_maps.cpp

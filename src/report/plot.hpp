@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Plots as SVG files through PLplot's cairo driver (svgcairo): line plots with axes,
 /// units and legends, and shaded maps with a colour bar, masked regions and markers.

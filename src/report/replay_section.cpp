@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // MuJoCo's dynamic replay of a plan (scene/dynamic_replay.hpp, results.json "mujoco_replay")
 #include "report/replay_section.hpp"
 

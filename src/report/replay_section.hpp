@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The "MuJoCo dynamic replay" section of a placement or time-optimal page: what MuJoCo
 /// simulates itself and what it does not, the replay's numbers and check, the deviation from

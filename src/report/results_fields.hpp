@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The JSON mapping of the typed study results (src/studies/<study>/study_results.hpp),
 /// written once per type as a `fields` function that names every key:

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The parts of results.json every study shares, typed: the record around the study's own
 /// section (results[study], studies/<study>/study_results.hpp). `run_case` writes it from

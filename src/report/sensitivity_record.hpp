@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// results["sensitivity"], typed: the case's answer re-solved at -step and +step of each key
 /// its `sensitivity:` part lists (app/sensitivity.hpp; docs/sensitivity.md).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The sensitivity part of a case report (results["sensitivity"], report/sensitivity_record.hpp):
 /// a tornado chart of the headline figure's change per key on page 1, largest influence

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The case's source beside armstudy: every figure and claim the source prints for the case
 /// (the case file's `source:`, cases/source_spec.hpp) with armstudy's values read from the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // armstudy's rules for sys::remove_stale_scratch: which entries of an output folder it wrote
 // (report/owned_output.hpp)
 #include <algorithm>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Per-study parts of a case page: each gets its study's part of results.json as the
 /// study's typed result (read once by app::study_parts through report::read_study_results,

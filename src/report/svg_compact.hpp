@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Compaction of the SVG that PLplot draws through cairo, without changing what it draws.
 /// A report embeds every figure; the browser that prints it to PDF pays per SVG element,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The sweep report: DIR/sweep/index.html, the key figures of every sweep case plotted over
 /// the sweep's axes (e.g. the least energy over the link-length ratio, one curve per line

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The sweep table: one row per case of a sweep, its point and its key figures. merge builds
 /// it from the cases' results.json (cli::sweep_table) and writes it as sweep.json; diff

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Text from files and names (case names, messages, check names, units) made safe for where
 /// armstudy prints it: a terminal or log, XML (junit.xml) and Markdown tables (summary.md,

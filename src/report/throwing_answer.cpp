@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the throwing study's lines of the answer box (page 1): what binds each optimiser's
 // answer, the values the source leaves open, and the ball's flight as the key picture
 #include <vector>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the throwing page's ball, release and flight (cf. Figure 7 of Sato et al.) and the
 // optimisers' convergence with the simulation's accuracy
 #include <cmath>

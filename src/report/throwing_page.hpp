@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // The throwing page's types and helpers shared by report/throwing_section.cpp (method,
 // results, seeds, motors, contact) and report/throwing_flight.cpp (the ball, release and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the throwing study of Sato et al. sec. 4 (docs/sources.md) as a constrained problem
 // (docs/throwing.md): eq. 8 start, feasible reference, idp optimum (best of several seeds)
 // and the gradient (slsqp) optimum side by side; one comparison table on equal terms;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the time-optimal study's lines of the answer box (page 1): the share of the exact
 // solver's samples at which each limit is within 1 % of its bound, and the path assumed
 #include <algorithm>

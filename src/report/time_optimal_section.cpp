@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // the time-optimal study of Ozkipcak (1994): solvers side by side, the phase plane
 // with the maximum velocity curve, joint torques and velocities with their limits, the dp
 // convergence table

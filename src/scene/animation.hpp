@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Moving pictures of a motion: frames at equal time steps rendered once and written as a
 /// sprite sheet (one PNG of every frame in a grid, which the report's stylesheet steps

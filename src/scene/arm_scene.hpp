@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The MuJoCo scenes of the two arms, generated from the case's chain (so that masses,
 /// centres of mass and inertias are the case's): the horizontal 2-link arm on a table seen

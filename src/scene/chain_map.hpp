@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The linear map between a PlanarChain's coordinates and those of its generated MuJoCo
 /// model: q_mj = J q. Chain joint i is MuJoCo joint "joint<i+1>"; a coupling spinner's

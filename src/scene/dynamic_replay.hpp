@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// MuJoCo's own dynamics on a planned motion: the plan's joint torques applied open loop
 /// (actuators `motor<i>`, gear 1) through mj_step in the MJCF generated from the case's

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The messages between armstudy and its frame helper (scene/frame_worker.hpp): each one typed
 /// struct with one `fields` list, which the writer (pack) and the reader (unpack) both walk, so

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// A helper process that draws frames of a scene: its own MuJoCo model, OSMesa context and
 /// llvmpipe. llvmpipe rasterises every context of one process through one queue, so a

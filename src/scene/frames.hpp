@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Frame strips (N poses at given times, one PNG, time labels) and stroboscopic loci
 /// (several poses superimposed, older ones fainter, the end-effector path traced).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// 8-bit RGB images (top row first) and the few operations the frame strips need.
 

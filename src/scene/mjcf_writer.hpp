@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// MJCF generated from a core::PlanarChain, so that MuJoCo's masses, centres of mass and
 /// inertias are exactly the case's.

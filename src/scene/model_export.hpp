@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// model.xml in a case's output folder: the MJCF of the scene the case's frames are drawn
 /// in, generated from the case's own chain (so its masses, centres of mass and inertias are

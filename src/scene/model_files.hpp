@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The MJCF files of models/: both arms generated from their default parameters (the
 /// thesis arm of 000 Ch. 9 with an example task line; the tray arm of 003 Table 1 with the

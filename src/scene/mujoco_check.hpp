@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// MuJoCo's dynamics along a computed motion, as a check a study can put in results.json:
 /// the inverse dynamics of the generated model (mj_inverse, projected onto the chain's

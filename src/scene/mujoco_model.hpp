@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// RAII ownership of an mjModel loaded from MJCF text and its mjData.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// A headless OpenGL context from OSMesa (llvmpipe), made current on the calling thread.
 /// MuJoCo renders into its own off-screen framebuffer inside this context.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// MuJoCo draws overlay text as given: a line wider than the frame runs off its edge and is
 /// cut ("... locked; e"). These wrap a label at spaces so that each line fits a width in

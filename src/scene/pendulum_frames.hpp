@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Frames of the pendulum test (003 Sec. 3, Fig. 2a): the tray and the rolling ball with
 /// joints 1 and 2 locked, a snapshot every snapshot_step (0.13 s): a strip of the

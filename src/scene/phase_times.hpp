@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Where a run's time goes, for diagnosis only: with ARMSTUDY_PHASE_TIMES=1 in the
 /// environment, `armstudy run` prints one line per case on stderr with the wall-clock

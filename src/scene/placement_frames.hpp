@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Frames of the placement study: for every program and configuration with an optimum,
 /// the arm at its optimal root carrying the payload along the fixed line (drawn in the

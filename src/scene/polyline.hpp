@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Fewer segments for a drawn polyline: a path sampled at a thousand points is drawn as a
 /// thousand capsules in every frame, most of them collinear to well under a pixel.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What a study's render step hands back to the run (StudyRun::render, app/pipeline.hpp):
 /// the frames' file names and the animations as typed values, nothing written for the run to

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Off-screen rendering of a MuJoCo model: one OSMesa context (taken from those earlier
 /// renderers gave back, osmesa_context.hpp), one mjvScene and one mjrContext, reused for

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Replaying a chain's motion in its MuJoCo model: kinematic (the computed qpos/qvel,
 /// then mj_forward) and simulated (mj_step, for passive systems).

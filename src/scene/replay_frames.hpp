@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Frames of MuJoCo's dynamic replay: the planned motion (the arm, posed kinematically) with
 /// the motion MuJoCo simulated from the plan's torques drawn over it as a magenta skeleton (links

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What the per-study frame writers share: render settings from the case, and writing a
 /// strip and a locus of one motion.

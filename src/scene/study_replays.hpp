@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The placement and time-optimal plans as functions of time for MuJoCo's dynamic replay
 /// (dynamic_replay.hpp): the time-optimal study's exact solution (constant s'' between its

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Frames of the throwing study (003 Sec. 4, Fig. 7): the optimised (IDP) motion of the tray
 /// arm from rest to release, as a strip and as a stroboscopic locus with the ball's path,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Frames of the time-optimal study: the exact (reachability) solution at equal time steps
 /// along its path (a strip), and a locus of all of them with the path traced.

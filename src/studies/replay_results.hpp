@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// MuJoCo's dynamic replay of a planned motion (scene/dynamic_replay.hpp) as results.json
 /// writes it, shared by the placement and time-optimal sections. See results_fields.hpp

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// A second thread for work a study can do beside its own: the calling thread's helper,
 /// started on its first task and kept (with its thread_local buffers warm) until the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The arm with a passive tray of Sato et al. as a core::PlanarChain.
 ///

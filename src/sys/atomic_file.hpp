@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Names of files being written, renamed into place when complete, so that processes and
 /// threads writing the same output folder (shards of a sweep finishing together, say)

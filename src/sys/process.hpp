@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Starting other programs: finding one on PATH and spawning it with its file descriptors,
 /// process group, signal mask and (optionally) death signal set up. armstudy blocks the

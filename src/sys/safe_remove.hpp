@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Removing what armstudy named itself, never through a symbolic link: every step works on
 /// an open folder (openat, unlinkat with O_NOFOLLOW), so that a link put where a scratch

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Where armstudy keeps what it has not finished writing in an output folder: a hidden
 /// scratch folder `.armstudy-<tag>` (tag: host, pid and a random number, unique to the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Loading hostile case text: the file checks (UTF-8, structure, alias expansion) and the
 // duplicate/unknown key checks are linear in the number of keys (they were quadratic:
 // 40 000 keys took 5 s, 80 000 took 18 s).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Core inverse dynamics throughput (samples per second), 2-link and 4-link chains.
 #include <benchmark/benchmark.h>
 

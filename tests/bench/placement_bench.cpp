@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Placement study speed: closed-form candidate evaluation (IK + velocities + accelerations
 // + torques + power) in trajectory samples per second on 1 and 2 threads, the constrained
 // refinement of one optimum, and the

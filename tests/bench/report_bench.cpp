@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Report speed: a line plot of the optima (8 curves, 101 points) and a shaded placement
 // map (120 x 60 cells with regions and a marker), written as SVG to a temporary folder.
 #include <benchmark/benchmark.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Off-screen rendering throughput at 640x480 (frames per second): MuJoCo render + pixel
 // read-back through one reused OSMesa context, with and without PNG encoding (zlib level 1,
 // no filters), with shadows, and the locus (a frame with every earlier pose as extra geoms);

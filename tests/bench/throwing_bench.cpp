@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Speed of the tray-arm simulations: RK4 steps per second of the planning model (one
 // evaluation of an IDP candidate; the Planner one evaluation at a time, the reference, beside
 // the simulation kernel, one profile or several at once in its lanes), the open-loop DOPRI5

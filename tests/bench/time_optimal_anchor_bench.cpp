@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The exact time-optimal solve on the anchor problem that scripts/bench_toppra.sh runs beside
 // TOPP-RA (scripts/toppra_anchor.cpp is TOPP-RA's side): horizontal plane, massless links of
 // 1 m with a 1 kg point mass at the end of each, the tip on the line (1.6, 0.4) -> (0.4, 1.6)

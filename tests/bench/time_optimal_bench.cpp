@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Speed of the time-optimal solvers on the bundled source case (time-optimal-source.yaml:
 // the default arm on a 0.81 m line): the exact reachability solver on 1000 grid points
 // (target < 5 ms), DP with N = 10 and 200 velocity levels (target < 50 ms), the rows of the

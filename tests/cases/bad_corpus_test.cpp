@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The bad-input corpus: every file in tests/cases/bad/ states in its header the exit code,
 // the key words its message must contain and the position of the first error
 // (`# expect-position: LINE:COL`, or `none`); `armstudy validate` and `armstudy run` must

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The fuzz corpus replayed in the normal build: every bad case file (tests/cases/bad),
 // every input that ever crashed a reader (tests/fuzz/corpus), the fuzzers' seeds
 // (tests/fuzz/seeds: small results.json and tolerances files) and the bundled cases and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The one reader of files armstudy did not just write (cases/input_file.hpp): regular
 // files only, a cap, never a wait; links refused where armstudy wrote the file itself.
 #include "cases/input_file.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The `pendulum:` section of case files (pendulum_case.hpp): the bundled case equals the
 // documented defaults (Sec. 3 of 003), and errors carry file:line:col.
 #include "cases/pendulum_case.hpp"

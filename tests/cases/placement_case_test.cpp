@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // `study: placement` case files: defaults, units, and every user error at file:line:col.
 #include "cases/placement_case.hpp"
 

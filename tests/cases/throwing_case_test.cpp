@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The `throwing:` section of case files (throwing_case.hpp): the bundled case spells out
 // exactly the documented defaults (Table 1, Sec. 4 of 003), degrees become radians, and
 // every user error names its file:line:col with what was expected.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // `study: time_optimal` case files: the documented defaults and the path forms.
 #include "cases/time_optimal_case.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Hostile input refused before (or while) a tree is built: file kinds and size, text,
 // document structure, aliases; merge keys; linear-time key checks; capped errors; numbers.
 #include "cases/yaml_source.hpp"

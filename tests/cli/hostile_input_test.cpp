@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The CLI on hostile input: files that are not regular files, budgets and --allow-large,
 // and sweeps whose point count overflows or is too large. Each refusal exits 2 quickly,
 // says why and writes nothing.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Progress is real: time left only once there is something to extrapolate from, growing
 // while a stage says nothing, and a line at least every period even without reports.
 #include "cli/progress.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The order a run works through its cases: the longest estimated solve first, each case
 // exactly once, equal estimates in the order given.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Sweeps from untrusted files: the base case stays in its place and is named, never quoted;
 // an axis that would be silently merged is refused; expansion owns its folder (removes its
 // own cases no longer in the sweep, never a user's file) and writes the sweep's manifest.

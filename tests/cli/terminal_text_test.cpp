@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Text from files printed on a terminal or in a log: no control character, terminal
 // escape or byte that is not UTF-8 reaches it raw, and one line stays one line.
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The integrators of the tray-arm simulations: DOPRI5 meets its tolerance on a problem
 // with a known solution, hits the requested times exactly, and RK4 converges at 4th order.
 #include "core/integrators.hpp"

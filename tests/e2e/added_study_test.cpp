@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Adding a study is its folder, one line in the list of studies and its parts in the registry
 // (docs/development.md, "Adding a study"): a trivial study defined here, with its typed
 // results.json part, loader, solver, checks, key figures and report sections, runs through

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Every bundled case's report, opened in a real browser (headless Chromium): the page loads
 // with no console message (CSP violations and script errors are console messages), every
 // img/link/object target exists on disk, a screenshot is not blank, and report.pdf has at

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The armstudy command as a user runs it: help, version, usage errors, exit codes,
 // results.json contents and atomic output.
 #include <gtest/gtest.h>

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Checks an armstudy output folder after a run was killed, for the crash-safety tests.
 
 usage: crash_check.py OUT CASE_NAME SHA_OLD SHA_NEW [--no-hidden]

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // `armstudy diff BASE NEW`: two runs of the same cases diff clean; a changed case file, a
 // removed and an added case are exactly the entries of the diff; a tolerance that covers the
 // change passes; a frame changed in a few pixels is found and drawn; bad input names the

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # armstudy's exports opened by the programs users open them with, on every bundled case
 # (reports/cases/, run with --no-render: the exports are the same):
 #  - junit.xml, of the run and of a merge that adds a case failing its `expect` and an

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The files a case folder holds for other tools, end to end through the CLI: model.xml and
 // one motion CSV per solver, each named in results.json "exports", listed under "files"
 // with its size and sha256; the CSVs parse, their header names every column with its unit

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Crash safety: a run killed (SIGKILL, strace's fault injection) at each of its renames,
 # file writes, unlinks and folder creations and removals must never cost the earlier
 # report: after each kill, the next run finds the case's report complete, the earlier one

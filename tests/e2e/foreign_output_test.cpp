@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // armstudy replaces only what it wrote: a user's folder or file of a case's name, a foreign
 // run-level file (index.html, summary.md, ...), a link out of the output folder and what it
 // points to, a page armstudy did not write: each is refused (exit 2) or left alone, byte for

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # armstudy as a Debian user gets it: the package CPack makes from this build
 # (armstudy_<version>_amd64.deb), unpacked with dpkg-deb -x into a scratch root (nothing is
 # installed into the system), then run from another folder, under strace, on a bundled case

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # The browser armstudy starts for --pdf is tied to it. A stand-in for Chromium (it starts a
 # helper process in its group and hangs; for the last run it answers the DevTools protocol
 # and prints) makes the timing deterministic:

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // A MuJoCo client of armstudy's model.xml that knows nothing of armstudy: plain libmujoco
 // loads the file, sets each keyframe (mj_resetDataKeyframe), runs mj_forward and prints
 // what the key holds as one JSON object: every key's time and the angle of each hinge

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // summary.md, junit.xml and sweep tables built from results.json data.
 #include "cli/merge.hpp"
 

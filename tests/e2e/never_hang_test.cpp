@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Never hang, never crash: a FIFO, device or link loop where armstudy reads a
 // file, PLplot without its driver, too few open files and every study's failure path end
 // promptly in a message and an exit code (2 bad input, 1 unsolvable, 3 runtime), never in

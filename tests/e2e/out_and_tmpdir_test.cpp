@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Usage and environment: `--out ""` or a file as --out is bad usage (exit 2, not 3),
 // and a TMPDIR that is no folder does not stop --pdf.
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // What armstudy writes when things go wrong: refused case names, failed writes (a
 // read-only folder, a full standard output; a full disk is in fault_injection_test.sh),
 // the skip-if-done key, and merge over broken results.json files. Each test checks the exit code,

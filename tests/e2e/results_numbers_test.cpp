@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Numbers in results.json: every double is written in the shortest form that reads back
 // to the same double, so a figure can be re-checked from the file (a key figure equals the
 // study section's number bit for bit; the time-optimal duration follows from the written

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The sensitivity part (app/sensitivity.hpp): a closed-form elasticity, the bundled throwing
 // case's warm-started steps against cold-started re-solves, and the file:line:col errors of
 // a bad `sensitivity:` entry.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # model.xml opened in MuJoCo's own viewer, `mujoco-simulate model.xml` (Debian's
 # libmujoco-samples), on a virtual X display (Xvfb), for both arms: a placement case
 # (placement-example-2, the horizontal 2-link arm) and a throwing case (throwing, the arm

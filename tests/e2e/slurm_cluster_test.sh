@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # A real one-node Slurm cluster (Debian's slurm-wlm and munge) started by this test, with
 # every file it writes in one temporary folder: a throw-away munge key and munged, a
 # generated slurm.conf for this host (2 CPUs, so an array of 6 tasks queues), slurmctld and

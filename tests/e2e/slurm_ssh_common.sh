@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Shared by slurm_cluster_test.sh and ssh_parallel_test.sh (sourced, not run): the root
 # check, the temporary folder, the case subset with its unsharded reference run, and the
 # check that nothing was written outside the temporary folder.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Every report that reproduces a source sets the source's printed figures beside
 // armstudy's: each printed figure and claim of a bundled case file (its `source:` part, the
 // repository's data) is found in the case's results.json and in its HTML, each difference

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # GNU Parallel over ssh, as docs/scale-out.md tells a lab to run a sweep on its machines: an sshd
 # started by this test on a loopback port (openssh-server; throw-away host and user keys
 # made here; config, keys and logs in one temporary folder) stands for a lab machine that

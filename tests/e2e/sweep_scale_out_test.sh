@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # The tests' sweep (tests/sweeps/placement-small.yaml: the bundled sweep's two axes, 24
 # cheap cases), expanded and run (a) in one run, (b) as 4 shards in a scrambled order with
 # one shard killed after its first case and re-run, (c) by GNU Parallel with 2 jobs, (d)

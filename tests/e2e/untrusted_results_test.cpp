@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // What merge, diff and run read back from output folders comes from pull requests and
 // other people's jobs: paths in results.json stay in their case folder, frames and files
 // are bounded, names and messages never reach summary.md, junit.xml or the terminal raw,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // libFuzzer target for the case and sweep loaders: every input goes through
 // fuzz::case_and_sweep_loaders (fuzz_entries.hpp: as a case file, as a sweep file and as a
 // sweep's base case). A loader may refuse an input only with cases::CaseErrors, each error

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // The fuzz targets' entries, shared by the libFuzzer targets (tests/fuzz/*_fuzz.cpp, built
 // by run_fuzz.sh with clang, ASan and UBSan) and the corpus replay in the normal build

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The fuzz build's study registry: the one list of studies (src/app/study_loaders.cpp: each
 // study's case loader and results.json part's strict reader, compiled here as in the
 // program), each extended with stand-ins for the parts the fuzz targets never call (the run

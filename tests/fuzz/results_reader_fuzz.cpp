@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // libFuzzer target for the readers of run output: every input goes through
 // fuzz::results_and_tolerances_readers (fuzz_entries.hpp: as a case's results.json the way
 // `armstudy merge` and `armstudy diff` read it, with the merged tables written from it, and

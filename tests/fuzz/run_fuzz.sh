@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # Builds the libFuzzer targets with clang (ASan + UBSan; only the loaders and readers, see
 # CMakeLists.txt here) and runs each for a bounded time: case_loader_fuzz seeded with the
 # bad-input corpus, the crash corpus and the bundled and test cases and sweeps;

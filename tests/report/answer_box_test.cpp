@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The answer box of page 1 and the CSS animations, from results.json written from the typed
 // record and study sections: what the reviewer reads first must follow the checks and the
 // study's own account of what binds.

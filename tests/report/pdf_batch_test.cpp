@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // One headless Chromium prints every page of a run (print_pdfs over the DevTools pipe); a
 // browser that dies costs nothing but time: its pages are printed one browser each.
 

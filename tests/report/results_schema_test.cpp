@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // results.schema.json describes every study's section completely: its study sections are the
 // JSON Schemas of the typed results (src/studies/<study>/study_results.hpp), so the file,
 // the writer and the reader cannot drift apart.

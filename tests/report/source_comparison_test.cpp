@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The source beside armstudy (report/source_comparison.hpp): value paths into results.json,
 // the precision a printed number carries, and the verdicts.
 #include "report/source_comparison.hpp"

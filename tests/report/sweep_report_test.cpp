@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The sweep page: one plot per key figure over the first numeric parameter, curves per
 // combination of the others, failed cases left out of the plots and counted.
 #include "report/sweep_report.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // A 3-link time-optimal solution against MuJoCo, and the model.xml a case folder holds:
 // MuJoCo's mj_inverse gives the study's torques along the exact motion; model.xml loads
 // with mj_loadXML, its masses, centres of mass and inertias are the case's, and its

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // MuJoCo's own dynamics on the plans of the placement and time-optimal studies:
 // the planned joint torques applied open loop through mj_step in the generated MJCF, from
 // the plan's initial state, reproduce the planned motion within the tolerance h^2 V of

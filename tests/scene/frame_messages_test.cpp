@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The frame helper's messages (scene/frame_messages.hpp): each written and read by its one
 // field list, so every field reads back as written; the scene message keeps its documented
 // layout; a value past its limit is refused, not allocated.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The frame helper process (scene/frame_worker.hpp): it draws a scene's frames byte for byte
 // as this process does, also after it is given back and loaded with another scene; a scene
 // MuJoCo rejects, a missing helper program and a helper that dies leave the frames to this

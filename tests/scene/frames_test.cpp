@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The helpers behind strips: sample times, resampling of a motion, tiling, PNG round trip.
 
 #include <gtest/gtest.h>

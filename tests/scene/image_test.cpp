@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Image operations the animations and strips rely on: the sprite sheet's box-filter downscale
 // gives the pixels of the plain per-block mean (each rounded down), bit for bit.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // MuJoCo's own dynamics (mj_inverse, mj_forward) on the generated MJCF equal core's
 // Kane-method dynamics along smooth motions, for every arm of the factory, a 4-link chain
 // with gravity, lateral centres of mass and a rotor, and the tray arm with its rolling ball.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // models/*.xml: in sync with the generator, loadable by MuJoCo from disk, and carrying
 // exactly the case's masses, centres of mass and inertias (computed here independently of
 // the writer, from the chain's links and point masses).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // MuJoCo's dynamics along the studies' own motions: the throwing study's simulated throw
 // (passive tray and rolling ball) and a placement optimum's motion.
 

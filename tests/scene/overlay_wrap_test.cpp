@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Frame labels wrapped to the frame's width: MuJoCo's overlay cuts a line off at the edge
 // (the pendulum's title read "... locked; e"), so a long label is broken at spaces.
 #include "scene/overlay_wrap.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The pendulum of Sato et al. Sec. 3 (joints 1 and 2 locked: a chain whose
 // base is the tray hinge, with the tray and the rolling ball) simulated in MuJoCo with RK4:
 // it conserves mechanical energy and follows core's own simulation.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The placement study's energies against an independent model: MuJoCo's mj_inverse on the
 // MJCF generated from the same chain, along the optimal motions, integrated the same way.
 #include <gtest/gtest.h>

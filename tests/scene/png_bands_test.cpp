@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // A large image compressed in bands is a valid PNG of the same pixels, and the same bytes on
 // any number of threads.
 

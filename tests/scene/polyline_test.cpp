@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // A drawn polyline keeps only the points a frame can show: a finely sampled path (the
 // time-optimal tip path has a thousand points) is drawn as few segments, every dropped
 // point within the tolerance of the line drawn.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Off-screen rendering: frames are not blank, the arm is where the kinematics says,
 // rendering is deterministic, the grid is as wide as the captions say, and the OSMesa
 // failure path suggests --no-render.

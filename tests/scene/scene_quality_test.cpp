@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Round geoms (spheres, capsules, cylinders) are drawn with as few polygon sides as the frame
 // can show: each polygon within a quarter of a pixel of its circle; a close-up keeps
 // MuJoCo's own 28.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Every study's frames, rendered from the study's own (small) solution: the files are
 // written, not blank, and the arm is where the kinematics says.
 

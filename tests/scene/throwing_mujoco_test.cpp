@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The throwing study's proof in MuJoCo: the motor voltages of an IDP-optimised
 // throw, applied open loop to the generated MuJoCo model of the tray arm (rolling ball as a
 // spin body with a joint equality, mjcf_writer.hpp), reproduce the planned motion of all

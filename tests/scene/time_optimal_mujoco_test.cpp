@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal study's torques against MuJoCo: along the exact solution, mj_inverse of
 // the generated model gives the torques the study computed, and those equal the path-
 // projected dynamics tau = a s'' + b s'^2 + c that the solvers constrain.

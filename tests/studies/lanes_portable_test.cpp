@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The portable two-lane arithmetic (studies/throwing/lanes.hpp without SSE2, as on a machine
 // of another architecture) gives each lane the scalar result bit for bit, NaN, infinities
 // and signed zeros included, as the SSE2 one does.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The pendulum test of 003 Sec. 3 (pendulum.hpp): with joints 1 and 2 locked the tray and
 // the rolling ball conserve mechanical energy to 1e-8 over 2 s; the equilibrium stays at
 // rest; snapshots come every 0.13 s; small swings have the period of the linearised system.

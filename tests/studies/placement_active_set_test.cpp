@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Every active constraint of a placement optimum is named, the same way for a configuration
 // and its mirror image: at 0.9 Lmax with a 12 W elbow power limit both the outer clearance
 // margin and the power limit bind the cycloidal optimum of both configurations, whose slacks

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The closed-form 2-link evaluator of the placement study against core's generic
 // kinematics and Kane dynamics, and the integrals it computes.
 #include "studies/placement/arm2.hpp"

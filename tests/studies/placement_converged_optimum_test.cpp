@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The placement optimum is the minimum of the converged energy (the adaptive quadrature),
 // not of the 401-sample energy, and its printed figures carry their errors: the refined
 // optimum against an independent nested golden-section search on the quadrature, the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The thesis's search intervals (cases 4.7-4.13), the exact annulus check and the line frame
 // of the placement study (Kopmaz 2016, Ch. 4).
 #include "studies/placement/geometry.hpp"

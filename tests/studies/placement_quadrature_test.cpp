@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The energy of a near-singular placement line by adaptive Gauss-Kronrod quadrature
 // (studies/placement/quadrature.hpp): finite with an honest error estimate where the sampled
 // energy would not converge within 409601 samples, checked against independent integrations

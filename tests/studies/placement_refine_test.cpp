@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The placement optimum says what decides it and is converged: the constrained
 // refinement against an independent fine constrained search, margin binding and interior
 // optima, admissible Pareto fronts, and singular motions that never print a number.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The "placement" part of results.json as placement_pipeline.cpp documents it, produced by the
 // pipeline from a case file (what the report and CI read).
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The placement study's answer: physics invariants, singularity handling, refinement,
 // limits, Pareto front and evaluations.
 #include "studies/placement/solve.hpp"

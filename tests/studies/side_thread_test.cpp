@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The study's side thread: a task runs on another thread, the same one for every task of a
 // caller (its thread_local buffers stay warm), a task runs whether the side thread is awake
 // or asleep when it comes, after a study's last task it sleeps at once, its exception

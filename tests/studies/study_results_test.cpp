@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Each study's typed result and its JSON mapping agree with what a real run writes: a small
 // case of every study is run into results.json; the study's section read back into its typed
 // result (studies/<study>/study_results.hpp) and written again gives the same text, and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The throwing study's answer is an optimum, not an early stop, and it is reproducible:
 // - the bundled case's answer moves by less than 0.5 % when the release angle moves by
 //   1 ulp (-52.5 deg against the code's -7 pi/24) or by 1e-5 deg, the reproducibility the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // IDP (idp.hpp) and the SLSQP comparison (nlopt_solve.hpp) on a small instance of the
 // throw (8 stages): both solve the constrained problem of docs/throwing.md; IDP compares by
 // the feasibility rules and never accepts a worse profile, its answer does not depend on the

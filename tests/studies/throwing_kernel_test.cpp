@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The simulation kernel (simulate_kernel.hpp), one profile at a time and two to five at once, gives
 // the Planner's evaluations (ThrowSetup::kernel_lanes 0, one evaluation at a time) bit for
 // bit: feasible, infeasible, early-stopped and diverging profiles, in pairs whose lanes end

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The throwing study's checks in the pipeline (cli/throwing_pipeline.cpp): a run cut short by
 // its budget is flagged "not converged" and fails the case unless the case allows it; the
 // results carry the seed spread, the comparison table and the contact forces over time.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Velocity profiles of the active joints: eq. 8 (corrected) meets both end rates and the
 // displacement; the piecewise-linear profile keeps angle and rate continuous at the nodes;
 // the projection restores the release angles of any candidate exactly.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The throwing study's shortcuts give the answers of the full computations they replace:
 // a simulation stopped at its first certain violation (simulate_profile's
 // stop_when_infeasible) belongs to an infeasible profile, one that is not stopped equals the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The planning simulation of the tray arm (simulate.hpp): the motors' mechanical work is the
 // change of the arm's kinetic plus potential energy (passive joints do no work), eq. 7's
 // electrical energy splits exactly into work, copper and friction, the RK4 plan agrees with

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The whole throwing study on a reduced setting (8 stages, 2 seeds): the saving is measured
 // from a feasible reference, every reported optimum meets every constraint when re-simulated
 // with 4x the steps (independently of the optimiser) and the release state within its

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The tray arm as a core::PlanarChain (src/studies/tray_arm.hpp): its kinetic and
 // potential energy equal the first-principles expressions written out here independently
 // (positions of every centre of mass, rolling ball spin), and the motor mapping is

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The one-pass dynamics of the tray arm (src/studies/throwing/tray_dynamics.hpp) equal the
 // generic chain's (core::passive_forward_dynamics and ball_contact_forces) to 1e-12 relative
 // at random states of both motor mounts, with rotor inertia, a lateral tray centre of mass

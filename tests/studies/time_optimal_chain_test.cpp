@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal study on a path given in joint space: the same problem as a tip path
 // takes the same time, and a vertical 3-link arm's exact solution meets every limit under
 // dense resampling and is never slower than DP or Complex.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal study's fast paths keep its answers: solve_exact (no allocation, rows
 // without tags, its points without trigonometric functions) gives solve_exact_reference's
 // numbers to 1e-12 relative and its failure messages word for word, on tip paths (line, polyline,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The exact time-optimal solver on its graded grid: where the case's uniform grid does not
 // converge to exact.tolerance_rel (near a singular pose the maximum velocity curve falls to
 // zero over a stretch far shorter than an interval, and a uniform grid converges only like

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal study judging its own answer: the exact solver's grid
 // convergence check flags a near-singular path and passes a regular one; DP and Complex
 // failures name the segment, the place and the binding limit; a path that leaves the

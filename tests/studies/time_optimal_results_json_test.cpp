@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal pipeline records its grid-convergence check and MuJoCo's dynamic replay
 // in results.json and its checks: a near-singular line is solved on a graded grid and says
 // so (on its uniform grid it fails exact_grid_converged and says so in its message); a

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal study's solvers against each other, against an analytic duration and
 // against infeasible problems.
 #include "studies/time_optimal/solve.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The closed-form 2-link path dynamics (src/studies/time_optimal/two_link_dynamics.hpp)
 // equal core's generic chain to 1e-12 relative: a = M q', b = M q'' + C(q, q') q', c = g(q)
 // at random states of arms with lateral centres of mass, point masses, spinners, gravity and

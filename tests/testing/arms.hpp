@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // Test helpers: a small factory of arms (2-link horizontal, 2-link vertical, 4-link tray
 // with passive joints) and an AssertionResult that prints both operands and the delta.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // Headless Chromium for the tests that open pages in a real browser (the case reports, the
 // diff page): shell helpers, a run with a fresh profile, and how much ink a screenshot has.

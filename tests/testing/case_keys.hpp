@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // The keys of a case file's root that the CLI reads itself (app::load_case), for tests that
 // load one study's section of a bundled case directly with its loader.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // Runs the armstudy command as a user would (the ARMSTUDY_BINARY the test target defines),
 // standard input closed, and returns its exit code and its standard output and error.

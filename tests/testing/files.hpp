@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // File helpers shared by the tests: the source tree, read or write a whole file, make a fresh
 // temporary folder. Test files use these instead of helpers of their own of the same name, so

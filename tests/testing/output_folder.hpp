@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // Output-folder helpers shared by the e2e tests: a quick case under any name, and every
 // entry under a folder with its bytes (to prove that a run left a user's files as they were).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // The bundled vertical 3-link time-optimal case (reports/cases/time-optimal-3link.yaml),
 // loaded with its own loader, with settings small enough for a unit test.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 // A moving pose of the default tray arm (4 joints: both links, the tray and the ball) at
 // time t, for the scene tests and benchmarks: every joint moves, the tray and ball swing.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Box's Complex method (M. J. Box, "A new method of constrained optimization and a
 /// comparison with other methods", Computer Journal 8, 1965): derivative-free minimisation

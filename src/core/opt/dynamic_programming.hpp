@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Staged dynamic programming over discrete states (Bellman's backward recursion), arm
 /// agnostic: nodes k = 0..K, node k has levels[k] states, and a transition from state i at

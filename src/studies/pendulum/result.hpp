@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The pendulum study's answer (plain data): the free swing sampled, its energies and drift.
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The pendulum test of Sato et al. Sec. 3: joints 1 and 2 locked, the tray
 /// (passive) and the rolling ball swing freely from rest. A passive system: its mechanical

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The pendulum study's part of results.json as a typed value: what the pipeline writes
 /// (app/pendulum_pipeline.cpp fills it from the PendulumResult) and what the report and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Specialised closed-form evaluator of a 2-link arm in a horizontal plane carrying its tip
 /// along a straight line: inverse kinematics, velocities, accelerations, actuator torques

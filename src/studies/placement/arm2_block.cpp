@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Compiled with -fno-math-errno -fno-trapping-math (CMakeLists.txt): neither changes a
 // computed value (no reassociation, no contraction), they let the compiler vectorise the
 // loop (sqrt without the errno branch, the clamp's selects without a branch).

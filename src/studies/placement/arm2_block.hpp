@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The per-sample part of evaluate_line (arm2.hpp) over a block of samples, structure of
 /// arrays: arm2_sample's arithmetic, unchanged, in a loop without calls or branches that the

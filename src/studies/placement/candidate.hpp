@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// One candidate line of the placement study: its status (unreachable, singular, over a
 /// limit, feasible) and its metrics. Used by the sweep (solve.cpp), the refinement

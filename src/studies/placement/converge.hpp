@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The figures of one checked motion (an optimum, an evaluated placement, the thesis's best):
 /// - its energy by adaptive Gauss-Kronrod quadrature with an error estimate (quadrature.hpp),

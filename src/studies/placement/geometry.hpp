@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Geometry of the placement search: the thesis's start-point and direction intervals
 /// (Kopmaz 2016, cases 4.7-4.13), the exact annulus check of a line, and the

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The actuator limits at the samples a placement is printed at. The refinement keeps a
 /// limit at the sweep's samples (spec.samples); the report prints each optimum and each

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The energy of one motion, E = integral over [0, T] of |tau1 qd1| + |tau2 qd2| dt (eq. 8.1),
 /// by adaptive Gauss-Kronrod quadrature (G7-K15, global subdivision of the interval of

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The placement study's answer: plain data for the scene (replay of every optimum and
 /// evaluated placement) and the report (tables, maps, curves, Pareto front).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The placement study: sweep, exact checks, refinement, maps, curves, Pareto front and
 /// evaluations (Kopmaz 2016, Ch. 4-9, with the defects of docs/defects.md corrected).

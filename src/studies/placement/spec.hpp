@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The placement study's input (Kopmaz 2016): where to put the root of a
 /// 2-link arm in a horizontal plane so that carrying a payload along a fixed straight line

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The placement study's part of results.json as a typed value: what the pipeline
 /// writes (app/placement_pipeline.cpp fills it from the Result) and what the report and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The placement study re-solved from a known optimum (a sensitivity step,
 /// app/sensitivity.hpp): each program and configuration that had an optimum in `nominal`

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Iterative dynamic programming (Luus) over the velocity profiles of the active joints,
 /// as in Sec. 4 and Fig. 4-5 of Sato et al.

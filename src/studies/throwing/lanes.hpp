@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Two doubles in one SSE2 register, for evaluating two profiles with the same operations at
 /// once (simulate_kernel.hpp). Every operation is the IEEE double operation of the scalar

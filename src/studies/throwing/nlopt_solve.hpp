@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The throwing problem solved by a gradient-based optimiser on the SAME parameterisation
 /// and the SAME constraints as IDP (the interior node rates of profile.hpp): NLopt's SLSQP

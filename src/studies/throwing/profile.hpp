@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Velocity profiles of the two active joints: the decision variables of IDP and NLopt.
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The throwing study's answer (plain data): the eq. 8 start, the feasible reference, the
 /// IDP and SLSQP optima with their independent re-checks, the replay and the flight.

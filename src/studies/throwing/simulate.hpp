@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Simulation of the tray arm along a velocity profile of the active joints, its motor
 /// electrics (003 eq. 5-7) and the constraints of the throw (eq. 9's tray width and the

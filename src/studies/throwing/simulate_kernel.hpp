@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The planning model's RK4 simulation without recorded samples (IDP's candidates, SLSQP's
 /// points and neighbours), one profile at a time or up to five at once in the lanes of

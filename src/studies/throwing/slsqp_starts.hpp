@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// SLSQP from several deterministic starts (the multi-start of docs/throwing.md): the
 /// feasible reference, IDP's optimum, the raw eq. 8 profile and `perturbed_starts` seeded

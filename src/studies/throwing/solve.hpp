@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Solves the throwing study (spec.hpp -> result.hpp; the method: docs/throwing.md).
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The throwing study of Sato et al. Sec. 4: the tray arm moves from rest to
 /// the release state in tf; joints 1, 2 follow a velocity profile optimised for the energy

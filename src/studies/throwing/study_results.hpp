@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The throwing study's part of results.json as a typed value: what the pipeline writes
 /// (app/throwing_pipeline.cpp fills it from the ThrowingResult) and what the report and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Fast path of the planning model's dynamics for the tray arm (a chain of exactly four
 /// joints): mixed forward dynamics (given active accelerations, solve the passive ones and

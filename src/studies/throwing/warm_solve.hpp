@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The throwing study re-solved from a known throw (a sensitivity step, app/sensitivity.hpp):
 /// SLSQP from `start` alone (no IDP, no further starts, no replay), the answer re-checked

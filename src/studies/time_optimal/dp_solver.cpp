@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // dynamic programming (Ozkipcak 1994) and Box's Complex on the same discretisation
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// A path given in joint space, for a chain of any number of joints: q(s) through
 /// configurations (waypoints) as a line, a polyline (the arm stops at every corner) or a

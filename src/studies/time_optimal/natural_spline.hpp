@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The second derivatives of a natural cubic spline through points at given knots, shared by
 /// the tip path (path.cpp, 2-vectors) and the joint-space path (joint_path.cpp, one angle per

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #include "studies/time_optimal/path.hpp"
 #include "studies/time_optimal/two_link_dynamics.hpp"
 

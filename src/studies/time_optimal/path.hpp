@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Tip path geometry parameterised by arc length s (m): p(s), p'(s) (the unit tangent) and
 /// p''(s) (the curvature vector), and the joint path q(s), q'(s), q''(s) of a 2-link arm

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The limits of the time-optimal problem in the phase plane of the path: with x = s'^2
 /// (m^2/s^2) and u = s'' (m/s^2), every limit at a path point is linear in (x, u):

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Problem data shared by the solvers (arm, path, limits) and the dense resampling that
 /// re-checks every solution between its nodes.

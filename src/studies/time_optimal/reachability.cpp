@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // exact solver: reachability analysis (backward controllable sets, greedy forward pass)
 #include <algorithm>
 #include <cmath>

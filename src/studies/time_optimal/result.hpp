@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Everything the time-optimal report shows: per solver the duration, run time, the
 /// profile s'(s) and s(t), joint velocities and torques over time, the largest limit

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The time-optimal study: exact (reachability) solver, dynamic programming and Box's
 /// Complex method on one problem, each solution re-checked by dense resampling.

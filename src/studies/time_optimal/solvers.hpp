@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The three solvers of the time-optimal study on a Problem. Each returns its profile at
 /// its nodes, or a message when it cannot solve the problem.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The source's arm, apart from the solver: the case loader (src/cases/time_optimal_case.cpp)
 // needs it, and the fuzz build of the loaders (tests/fuzz) then links no solver.
 #include "studies/time_optimal/spec.hpp"

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The time-optimal study (Ozkipcak 1994): the fastest rest-to-rest motion along a given
 /// path under joint velocity, torque and (optional) acceleration limits: the tip path of a

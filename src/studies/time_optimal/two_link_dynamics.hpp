@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Closed-form dynamics of a 2-link planar chain for the path-projected torques of the
 /// time-optimal solvers: tau = a s'' + b s'^2 + c with a = M q', b = M q'' + C(q, q') q',
