@@ -5,9 +5,12 @@
 (so that they say what the program does, option for option).
 
 usage: cli_docs.py ARMSTUDY VERSION OUT_DIR
-writes OUT_DIR/man1/armstudy.1, OUT_DIR/man1/armstudy-<command>[-<sub>].1 for every
-(sub)command `armstudy --help` lists, and OUT_DIR/bash-completion/armstudy.
+writes OUT_DIR/man1/armstudy.1.gz, OUT_DIR/man1/armstudy-<command>[-<sub>].1.gz for every
+(sub)command `armstudy --help` lists (gzipped reproducibly, as Debian installs man pages),
+and OUT_DIR/bash-completion/armstudy. A command's EXAMPLES are the "Examples:" lines of its
+--help.
 """
+import gzip
 import os
 import re
 import subprocess
@@ -58,7 +61,7 @@ def parse(text):
         elif current is not None and line.startswith(" " * 30) and current[1]:
             entry = current[1][-1]
             entry[1] = (entry[1] + " " + line.strip()).strip()
-        else:  # the footer: the studies and the exit codes
+        else:  # the footer: the studies, the exit codes and the examples
             current = None
             footer.append(line)
     return description, usage, sections, footer
@@ -67,6 +70,24 @@ def parse(text):
 def roff(text):
     text = text.replace("\\", "\\e").replace("-", "\\-")
     return "\\&" + text if text[:1] in (".", "'") else text
+
+
+def examples_of(footer):
+    """The footer's "Examples:" lines: (what it does, the command), a "# what" line before its
+    command."""
+    if "Examples:" not in footer:
+        return []
+    examples, what = [], ""
+    for line in footer[footer.index("Examples:") + 1:]:
+        if not line.startswith("  "):
+            break
+        line = line.strip()
+        if line.startswith("# "):
+            what = line[2:]
+        else:
+            examples.append((what, line))
+            what = ""
+    return examples
 
 
 def page(name, version, description, usage, sections, footer, words, children, see_also):
@@ -92,6 +113,12 @@ def page(name, version, description, usage, sections, footer, words, children, s
     exits = [f for f in footer if f.startswith("Exit codes: ")]
     if exits:
         out += [".SH EXIT STATUS", roff(exits[0][len("Exit codes: "):])]
+    examples = examples_of(footer)
+    if examples:
+        out.append(".SH EXAMPLES")
+        for what, command in examples:
+            out += [".PP", roff(what) if what else "", ".RS 4", ".EX", roff(command), ".EE", ".RE"]
+            out = [o for o in out if o]
     if not words:
         out.append(".SH ENVIRONMENT")
         for var, text in ENVIRONMENT:
@@ -120,9 +147,12 @@ def main():
         pending += [words + [c] for c in children]
     names = ["-".join(["armstudy"] + p[0]) for p in parsed]
     for (words, description, usage, sections, footer, children), name in zip(parsed, names):
-        with open(os.path.join(out_dir, "man1", name + ".1"), "w") as f:
-            f.write(page(name, version, description, usage, sections, footer, words, children,
-                         names))
+        text = page(name, version, description, usage, sections, footer, words, children, names)
+        # mtime 0 and no file name: the same bytes at every build (gzip -9n)
+        with open(os.path.join(out_dir, "man1", name + ".1.gz"), "wb") as raw:
+            with gzip.GzipFile(filename="", mode="wb", compresslevel=9, fileobj=raw,
+                               mtime=0) as f:
+                f.write(text.encode())
     # bash completion: the (sub)commands, then each command's options; files otherwise
     cases = []
     for words, _, _, sections, _, children in parsed:

@@ -32,6 +32,8 @@ for f in $(list); do
   esac
   where="at the top of $f"
   [ "$(head -c 2 "$f")" = "#!" ] && where="in $f, right after its #! line"
+  # the stylesheet's first line is the mark armstudy knows its own copy by (owned_output.cpp)
+  case $f in *.css) where="in $f, right after its first line" ;; esac
   echo "$f: no licence lines; add these two lines $where:"
   echo "$c SPDX-License-Identifier: Apache-2.0$e"
   echo "$c Copyright 2026 The armstudy authors$e"

@@ -55,23 +55,11 @@ void check_budget(cases::Map& root, const cases::RenderOptions& render) {
   }
 }
 
-// (over 60 lines, kept whole: the case's top-level keys read in the order of their errors
-// (file:line:col))
-LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnostics& diag,
-                     LoadedCase out, const LoadOptions& options) {
-  if (!root_node) diag.throw_if_any();
-  out.info.sha256 = cases::sha256_hex(out.info.yaml);
+}  // namespace
 
-  cases::Map root(*root_node, diag, "");
-  std::vector<std::string> studies;
-  for (const StudyEntry& e : study_registry()) studies.emplace_back(e.study);
-  const auto study = root.has("study") ? root.choice("study", studies) : std::nullopt;
-  if (!root.has("study")) {
-    root.get("study");
-    std::string list;
-    for (const auto& s : studies) list += (list.empty() ? "" : ", ") + s;
-    root.error_here("missing required key 'study'; expected one of: " + list);
-  }
+// the keys every case has, after study: (the case's top-level keys read in the order of
+// their errors, file:line:col)
+void read_case_parts(cases::Map& root, LoadedCase& out) {
   if (const auto name = root.required_string("name")) {
     // the name is a folder name: keep it portable
     static const std::regex ok("[A-Za-z0-9][A-Za-z0-9._-]{0,99}");
@@ -108,6 +96,26 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
   }
   out.info.source = cases::read_source(root);
   out.info.sensitivity = cases::read_sensitivity(root);
+}
+
+namespace {
+
+LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnostics& diag,
+                     LoadedCase out, const LoadOptions& options) {
+  if (!root_node) diag.throw_if_any();
+  out.info.sha256 = cases::sha256_hex(out.info.yaml);
+
+  cases::Map root(*root_node, diag, "");
+  std::vector<std::string> studies;
+  for (const StudyEntry& e : study_registry()) studies.emplace_back(e.study);
+  const auto study = root.has("study") ? root.choice("study", studies) : std::nullopt;
+  if (!root.has("study")) {
+    root.get("study");
+    std::string list;
+    for (const auto& s : studies) list += (list.empty() ? "" : ", ") + s;
+    root.error_here("missing required key 'study'; expected one of: " + list);
+  }
+  read_case_parts(root, out);
   if (study) {
     out.info.study = *study;
     const auto it = std::find_if(study_registry().begin(), study_registry().end(),

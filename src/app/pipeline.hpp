@@ -198,4 +198,8 @@ LoadedCase load_case(const std::string& path, const LoadOptions& options = {});
 LoadedCase load_case_text(const std::string& text, const std::string& path,
                           const LoadOptions& options = {});
 
+/// Reads the keys every case has besides `study` (name, description, expect, render, sweep,
+/// source, sensitivity) from the root mapping into out.info; errors into root.diag().
+void read_case_parts(cases::Map& root, LoadedCase& out);
+
 }  // namespace armstudy::app

@@ -24,6 +24,7 @@
 #include "app/provenance.hpp"
 #include "app/sensitivity.hpp"
 #include "cases/case_info.hpp"
+#include "cases/case_inputs.hpp"
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
 #include "report/source_comparison.hpp"
@@ -52,6 +53,7 @@ report::ResultsRecord results_header(const cases::CaseInfo& info, studies::Statu
   r.case_info.name = info.name;
   r.case_info.path = info.path;
   r.case_info.sha256 = info.sha256;
+  r.case_info.inputs = cases::case_inputs(info.yaml);
   if (!info.description.empty()) r.case_info.description = info.description;
   if (info.expect_unsolvable) r.case_info.expect = "unsolvable";
   if (!info.sweep_name.empty() || !info.sweep_point.empty()) {
@@ -298,6 +300,7 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
       report::write_case_report(tmp_dir, c.info, j, c.entry->report, c.entry->answer);
     }
     // results.json last, listing every file written beside it with its sha256
+    j["run_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     j["files"] = report::to_json(list_files(tmp_dir, "results.json"));
     write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
 

@@ -3,6 +3,7 @@
 #include "cases/arm_loader.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace armstudy::cases {
@@ -38,7 +39,13 @@ void read_point_masses(Map& arm, int n, core::PlanarChain& chain) {
     auto pm = pms->map_at(i);
     if (!pm) continue;
     core::PointMass p;
-    p.link = pm->integer_or("link", 1, 1, std::max(1, n)) - 1;
+    // a whole number >= 1 as a key (the key reference's range), then one of this arm's links
+    p.link = pm->integer_or("link", 1, 1, std::numeric_limits<int>::max()) - 1;
+    if (p.link >= std::max(1, n)) {
+      pm->error("link", "'" + pm->path_of("link") + "' is " + std::to_string(p.link + 1) +
+                            "; should be in [1, " + std::to_string(std::max(1, n)) + "]");
+      p.link = 0;
+    }
     p.x = pm->required_number("at", NumberRule::any("m"));
     p.y = pm->number_or("lateral", 0.0, NumberRule::any("m"));
     p.mass = pm->required_number("mass", NumberRule::positive("kg"));

@@ -8,6 +8,11 @@
 #include "core/types.hpp"
 
 namespace armstudy::cases {
+namespace {
+// a number read with its default (number_or: the key reference shows the loader's default),
+// the default kept when the file's value was refused (the error is recorded)
+double keep(double read, double fallback) { return std::isnan(read) ? fallback : read; }
+}  // namespace
 
 studies::PendulumSpec load_pendulum_spec(Map& root) {
   using core::kDeg;
@@ -27,15 +32,19 @@ studies::PendulumSpec load_pendulum_spec(Map& root) {
     s.theta3_rate = (*v)[0] * kDeg;
     s.theta4_rate = (*v)[1] * kDeg;
   }
-  if (const auto v = sec->number("duration_s", NumberRule::range(1e-3, 60.0, "s"))) s.duration = *v;
-  if (const auto v = sec->number("sample_s", NumberRule::range(1e-4, 1.0, "s"))) s.sample_step = *v;
-  if (const auto v = sec->number("snapshot_s", NumberRule::range(1e-3, 60.0, "s")))
-    s.snapshot_step = *v;
-  if (const auto v = sec->number("rtol", NumberRule::range(1e-14, 1e-3, ""))) s.rtol = *v;
-  if (const auto v = sec->number("atol", NumberRule::range(1e-16, 1e-3, ""))) s.atol = *v;
-  if (const auto v = sec->number("drift_tolerance", NumberRule::positive("")))
-    s.drift_tolerance = *v;
-  if (const auto v = sec->integer("max_steps", 100, 100'000'000)) s.max_steps = *v;
+  s.duration = keep(sec->number_or("duration_s", s.duration, NumberRule::range(1e-3, 60.0, "s")),
+                    s.duration);
+  s.sample_step = keep(sec->number_or("sample_s", s.sample_step, NumberRule::range(1e-4, 1.0, "s")),
+                       s.sample_step);
+  s.snapshot_step =
+      keep(sec->number_or("snapshot_s", s.snapshot_step, NumberRule::range(1e-3, 60.0, "s")),
+           s.snapshot_step);
+  s.rtol = keep(sec->number_or("rtol", s.rtol, NumberRule::range(1e-14, 1e-3, "")), s.rtol);
+  s.atol = keep(sec->number_or("atol", s.atol, NumberRule::range(1e-16, 1e-3, "")), s.atol);
+  s.drift_tolerance =
+      keep(sec->number_or("drift_tolerance", s.drift_tolerance, NumberRule::positive("")),
+           s.drift_tolerance);
+  s.max_steps = sec->integer_or("max_steps", s.max_steps, 100, 100'000'000);
   // the strip and the locus draw every snapshot
   const double snapshots = std::floor(s.duration / s.snapshot_step + 1e-9) + 1;
   if (snapshots > kMaxPendulumSnapshots)

@@ -12,7 +12,8 @@ namespace {
 
 // a number key that keeps `value` when absent or wrong (the error is recorded)
 void num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
-  if (const auto v = m.number(key, rule)) value = *v;
+  // number_or: the default is the loader's, for the key reference (app/case_keys.hpp)
+  if (const double v = m.number_or(key, value, rule); !std::isnan(v)) value = v;
 }
 
 // throwing.motors: the motors (eq. 5) and their limits

@@ -23,7 +23,8 @@ std::optional<core::JointVector> joint_limits(Map& m, std::string_view key, cons
                                  ", one per joint of the arm");
     return std::nullopt;
   }
-  if (const auto v = m.numbers(key, NumberRule::non_negative(unit), joints)) {
+  // (its length checked above: the key reference says "one per joint", not a count)
+  if (const auto v = m.numbers(key, NumberRule::non_negative(unit))) {
     core::JointVector out(joints);
     for (int j = 0; j < joints; ++j) out[j] = (*v)[j];
     return out;

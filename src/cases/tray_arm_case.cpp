@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The armstudy authors
+#include <cmath>
+
 #include "cases/tray_arm_case.hpp"
 
 #include "core/types.hpp"
@@ -9,7 +11,8 @@ namespace {
 
 // a number key that keeps `value` when absent or wrong (the error is recorded)
 void tray_num(Map& m, std::string_view key, double& value, const NumberRule& rule) {
-  if (const auto v = m.number(key, rule)) value = *v;
+  // number_or: the default is the loader's, for the key reference (app/case_keys.hpp)
+  if (const double v = m.number_or(key, value, rule); !std::isnan(v)) value = v;
 }
 
 void read_link(Map& section, std::string_view key, double& length, double& mass, double& com,

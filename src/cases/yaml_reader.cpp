@@ -3,6 +3,7 @@
 #include "cases/yaml_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -257,22 +258,107 @@ std::string Map::path_of(std::string_view key) const {
   return context_.empty() ? std::string(key) : context_ + "." + std::string(key);
 }
 
-bool Map::has(std::string_view key) const { return find(key) != nullptr; }
+// ----------------------------------------------------------------------------- catalog
 
-YAML::Node Map::get(std::string_view key) {
+std::string KeyCatalog::pattern(const std::string& path) {
+  std::string out;
+  for (size_t i = 0; i < path.size(); ++i) {
+    out += path[i];
+    if (path[i] != '[') continue;
+    size_t j = i + 1;
+    while (j < path.size() && std::isdigit(static_cast<unsigned char>(path[j]))) ++j;
+    if (j > i + 1 && j < path.size() && path[j] == ']') i = j - 1;
+  }
+  return out;
+}
+
+void KeyCatalog::record(KeyInfo k) {
+  for (KeyInfo& have : keys) {
+    if (have.path != k.path) continue;
+    if (have.kind == "value" && k.kind != "value") {
+      have.kind = k.kind;
+      have.rule = k.rule;
+      have.choices = k.choices;
+      have.count = k.count;
+    }
+    if (!have.default_text) have.default_text = k.default_text;
+    have.required = have.required || k.required;
+    return;
+  }
+  keys.push_back(std::move(k));
+}
+
+void Map::mark_known(std::string_view key) const {
   std::string k(key);
   if (known_set_.insert(k).second) known_.push_back(std::move(k));
+}
+
+bool Map::catalog_key(std::string_view key, KeyInfo k) const {
+  KeyCatalog& c = *diag_->catalog();
+  k.path = KeyCatalog::pattern(path_of(key));
+  const bool present = !c.absent.count(k.path);
+  c.record(std::move(k));
+  return present;
+}
+
+bool Map::has(std::string_view key) const {
+  mark_known(key);  // an alternative the loader checks for is a key a message may suggest
+  if (diag_->catalog()) {
+    diag_->catalog()->asked.insert(KeyCatalog::pattern(path_of(key)));
+    return catalog_key(key, {});
+  }
+  return find(key) != nullptr;
+}
+
+YAML::Node Map::get(std::string_view key) {
+  mark_known(key);
+  if (diag_->catalog()) {
+    catalog_key(key, {});
+    return YAML::Node(YAML::NodeType::Undefined);
+  }
   if (const Entry* e = find(key)) return e->value;
   return YAML::Node(YAML::NodeType::Undefined);
 }
 
+namespace {
+// what a catalog pass records of a key (its path is the Map's to make)
+KeyInfo key_info(const char* kind, NumberRule rule = {},
+                 std::optional<std::string> default_text = std::nullopt, bool required = false) {
+  KeyInfo k;
+  k.kind = kind;
+  k.rule = std::move(rule);
+  k.default_text = std::move(default_text);
+  k.required = required;
+  return k;
+}
+
+// a value a catalog pass gives for a required number: inside its rule, so that the loader
+// goes on as for a file that has it
+double plausible(const NumberRule& rule) {
+  if (rule.min && rule.max) return (*rule.min + *rule.max) / 2;
+  if (rule.min) return *rule.min + 1;
+  if (rule.max) return *rule.max - 1;
+  return 1.0;
+}
+}  // namespace
+
 std::optional<double> Map::number(std::string_view key, const NumberRule& rule) {
+  if (diag_->catalog()) {
+    catalog_key(key, key_info("number", rule));
+    mark_known(key);
+    return std::nullopt;
+  }
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   return read_number(n, *diag_, "'" + path_of(key) + "'", rule);
 }
 
 double Map::number_or(std::string_view key, double fallback, const NumberRule& rule) {
+  if (diag_->catalog()) {
+    catalog_key(key, key_info("number", rule, format_number(fallback)));
+    mark_known(key);
+    return fallback;
+  }
   const bool present = has(key);
   const auto v = number(key, rule);
   if (v) return *v;
@@ -280,6 +366,12 @@ double Map::number_or(std::string_view key, double fallback, const NumberRule& r
 }
 
 double Map::required_number(std::string_view key, const NumberRule& rule) {
+  if (diag_->catalog()) {
+    mark_known(key);
+    return catalog_key(key, key_info("number", rule, std::nullopt, true))
+               ? plausible(rule)
+               : std::numeric_limits<double>::quiet_NaN();
+  }
   if (!has(key)) {
     get(key);
     error_here("missing required key '" + path_of(key) + "'; expected a number" +
@@ -291,6 +383,11 @@ double Map::required_number(std::string_view key, const NumberRule& rule) {
 }
 
 std::optional<int> Map::integer(std::string_view key, int min, int max) {
+  if (diag_->catalog()) {
+    catalog_key(key, key_info("integer", NumberRule::range(min, max, "")));
+    mark_known(key);
+    return std::nullopt;
+  }
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   const auto v = read_number(n, *diag_, "'" + path_of(key) + "'", NumberRule::range(min, max, ""));
@@ -304,11 +401,19 @@ std::optional<int> Map::integer(std::string_view key, int min, int max) {
 }
 
 int Map::integer_or(std::string_view key, int fallback, int min, int max) {
+  if (diag_->catalog())
+    catalog_key(key,
+                key_info("integer", NumberRule::range(min, max, ""), std::to_string(fallback)));
   const auto v = integer(key, min, max);
   return v ? *v : fallback;
 }
 
 std::optional<std::string> Map::string(std::string_view key) {
+  if (diag_->catalog()) {
+    catalog_key(key, key_info("string"));
+    mark_known(key);
+    return std::nullopt;
+  }
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   if (!n.IsScalar()) {
@@ -319,11 +424,17 @@ std::optional<std::string> Map::string(std::string_view key) {
 }
 
 std::string Map::string_or(std::string_view key, std::string fallback) {
+  if (diag_->catalog() && !fallback.empty()) catalog_key(key, key_info("string", {}, fallback));
   const auto v = string(key);
   return v ? *v : fallback;
 }
 
 std::optional<std::string> Map::required_string(std::string_view key) {
+  if (diag_->catalog()) {
+    catalog_key(key, key_info("string", {}, std::nullopt, true));
+    mark_known(key);
+    return std::nullopt;
+  }
   if (!has(key)) {
     get(key);
     error_here("missing required key '" + path_of(key) + "'; expected a string");
@@ -334,6 +445,13 @@ std::optional<std::string> Map::required_string(std::string_view key) {
 
 std::optional<std::string> Map::choice(std::string_view key,
                                        const std::vector<std::string>& allowed) {
+  if (diag_->catalog()) {
+    KeyInfo k = key_info("choice");
+    k.choices = allowed;
+    catalog_key(key, std::move(k));
+    mark_known(key);
+    return std::nullopt;
+  }
   const auto v = string(key);
   if (!v) return std::nullopt;
   if (std::find(allowed.begin(), allowed.end(), *v) != allowed.end()) return v;
@@ -346,6 +464,11 @@ std::optional<std::string> Map::choice(std::string_view key,
 }
 
 std::optional<bool> Map::boolean(std::string_view key) {
+  if (diag_->catalog()) {
+    catalog_key(key, key_info("boolean"));
+    mark_known(key);
+    return std::nullopt;
+  }
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   if (n.IsScalar()) {
@@ -359,12 +482,20 @@ std::optional<bool> Map::boolean(std::string_view key) {
 }
 
 bool Map::boolean_or(std::string_view key, bool fallback) {
+  if (diag_->catalog()) catalog_key(key, key_info("boolean", {}, fallback ? "true" : "false"));
   const auto v = boolean(key);
   return v ? *v : fallback;
 }
 
 std::optional<std::vector<double>> Map::numbers(std::string_view key, const NumberRule& rule,
                                                 size_t size) {
+  if (diag_->catalog()) {
+    KeyInfo k = key_info("numbers", rule);
+    k.count = size;
+    catalog_key(key, std::move(k));
+    mark_known(key);
+    return std::nullopt;
+  }
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   if (!n.IsSequence() || n.size() == 0 || (size != 0 && n.size() != size)) {
@@ -388,6 +519,11 @@ std::optional<std::vector<double>> Map::numbers(std::string_view key, const Numb
 }
 
 std::optional<Map> Map::map(std::string_view key) {
+  if (diag_->catalog()) {
+    mark_known(key);
+    if (!catalog_key(key, key_info("mapping"))) return std::nullopt;
+    return Map(YAML::Node(YAML::NodeType::Map), *diag_, path_of(key));
+  }
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   if (!n.IsMap()) {
@@ -399,6 +535,15 @@ std::optional<Map> Map::map(std::string_view key) {
 }
 
 std::optional<Seq> Map::seq(std::string_view key) {
+  if (diag_->catalog()) {
+    mark_known(key);
+    if (!catalog_key(key, key_info("list"))) return std::nullopt;
+    // two items: a list of links is then a 2-link arm, which every study takes
+    YAML::Node two(YAML::NodeType::Sequence);
+    two.push_back(YAML::Node(YAML::NodeType::Map));
+    two.push_back(YAML::Node(YAML::NodeType::Map));
+    return Seq(two, *diag_, path_of(key));
+  }
   const YAML::Node n = get(key);
   if (!n.IsDefined()) return std::nullopt;
   if (!n.IsSequence()) {

@@ -12,6 +12,7 @@
 /// mappings in order. Files are checked before yaml-cpp reads them (yaml_source.hpp).
 
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -28,6 +29,8 @@ namespace armstudy::cases {
 
 /// Errors kept per file; more are counted, not kept.
 inline constexpr size_t kMaxErrors = 50;
+
+class KeyCatalog;
 
 /// Collects the errors of one file.
 class Diagnostics {
@@ -47,9 +50,14 @@ class Diagnostics {
   /// Records what the case asks for (judged against the budget by the caller).
   void demand(Demand d) { demands_.push_back(std::move(d)); }
   const std::vector<Demand>& demands() const { return demands_; }
+  /// Catalog mode (KeyCatalog below): the maps read with this Diagnostics record each key
+  /// they ask for instead of reading a file.
+  void set_catalog(KeyCatalog* catalog) { catalog_ = catalog; }
+  KeyCatalog* catalog() const { return catalog_; }
 
  private:
   std::string path_;
+  KeyCatalog* catalog_ = nullptr;
   std::vector<CaseError> errors_;
   std::vector<Demand> demands_;
   size_t dropped_ = 0;
@@ -91,6 +99,42 @@ std::string violation(double value, const NumberRule& rule);
 /// [kMinMagnitude, kMaxMagnitude], or one that breaks the rule.
 std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std::string_view what,
                                   const NumberRule& rule);
+
+/// One key of a case file as a loader asks for it: what KeyCatalog records.
+struct KeyInfo {
+  /// dotted, a list's items as [] ("arm.links[].length")
+  std::string path;
+  /// number, integer, string, choice, boolean, numbers (a list of numbers), mapping, list,
+  /// value (read by the loader itself: its meaning says what it takes)
+  std::string kind = "value";
+  NumberRule rule;                          ///< number, integer, numbers
+  std::optional<std::string> default_text;  ///< the loader's default, as YAML text
+  std::vector<std::string> choices;         ///< choice
+  size_t count = 0;                         ///< numbers: the length it must have (0: any)
+  bool required = false;
+};
+
+/// The keys the case loaders read, recorded by running them in catalog mode: a Map whose
+/// Diagnostics has a catalog answers as if every key it asks for were present (unless its
+/// path is in `absent`), each typed read giving the loader's default or nothing (as for a
+/// value it refuses), map() an empty mapping and seq() a list of two empty mappings, so that
+/// a loader walks every branch it can reach and records each key's kind, rule and default.
+/// Loaders read nothing else (no files), so a catalog is the one description of the keys
+/// that the schema, the key reference and `armstudy init` are made from (app/case_keys.hpp).
+class KeyCatalog {
+ public:
+  /// Paths (as KeyInfo::path) read as absent in this pass.
+  std::set<std::string> absent;
+  /// Every key recorded, in the order first asked for.
+  std::vector<KeyInfo> keys;
+  /// The paths a loader asked has() for (the branches a later pass may leave out).
+  std::set<std::string> asked;
+  /// Records a key; a later record of the same path adds what it knows (a kind for a
+  /// value, a default, required).
+  void record(KeyInfo k);
+  /// `path` with each list index as [] ("arm.links[2].mass" -> "arm.links[].mass").
+  static std::string pattern(const std::string& path);
+};
 
 class Seq;
 
@@ -151,9 +195,13 @@ class Map {
   std::string context_;
   std::vector<Entry> entries_;                     ///< in file order, merged ones last
   std::unordered_map<std::string, size_t> index_;  ///< key -> entries_ index
-  std::vector<std::string> known_;                 ///< keys asked for, in order
-  std::unordered_set<std::string> known_set_;
+  /// keys asked for (by has() too: an alternative key is known), in order
+  mutable std::vector<std::string> known_;
+  mutable std::unordered_set<std::string> known_set_;
   bool valid_ = false;
+  /// catalog mode: records `k` (its path made from `key`); true when the key is present
+  bool catalog_key(std::string_view key, KeyInfo k) const;
+  void mark_known(std::string_view key) const;
 };
 
 /// A YAML sequence being read.

@@ -3,6 +3,8 @@
 #include "cli/command_line.hpp"
 
 #include "app/pipeline.hpp"
+#include "cases/yaml_reader.hpp"
+#include "cli/command_examples.hpp"
 #include "cli/version_text.hpp"
 
 namespace armstudy::cli {
@@ -24,6 +26,9 @@ CLI::App* add_run(CLI::App& app, Args& a) {
                 "Skip the re-solves of each case's sensitivity: part (docs/sensitivity.md)");
   run->add_flag("--pdf", a.options.pdf,
                 "Also print each report to report.pdf with headless Chromium");
+  run->add_flag("--json", a.run_json,
+                "Print a JSON summary of the run on stdout (each case's result, exit code, "
+                "seconds, folder and answer) instead of one line per case");
   run->add_option("--jobs,-j", a.jobs, "Cases run in parallel")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
@@ -107,6 +112,19 @@ CLI::App* add_validate(CLI::App& app, Args& a) {
   return validate;
 }
 
+CLI::App* add_init(CLI::App& app, Args& a) {
+  auto* init = app.add_subcommand(
+      "init", "Print a case of a study with every key at its default, each explained");
+  std::string studies;
+  for (const auto& e : app::study_registry())
+    studies += (studies.empty() ? "" : ", ") + std::string(e.study);
+  init->add_option("study", a.init_study, "The study: " + studies)->required();
+  init->add_option("--out,-o", a.init_out,
+                   "Write the case to this file instead of stdout (a file armstudy did not "
+                   "write is never replaced)");
+  return init;
+}
+
 }  // namespace
 
 // armstudy itself: its description, --version and the footer naming the studies
@@ -133,7 +151,47 @@ Commands add_commands(CLI::App& app, Args& a) {
   c.merge = add_merge(app, a, &c.merge_out);
   c.diff = add_diff(app, a);
   c.validate = add_validate(app, a);
+  c.init = add_init(app, a);
+  add_examples(app);
   return c;
+}
+
+// the options of `command` (--out, -j, ...), for messages
+std::vector<std::string> option_names(const CLI::App& command) {
+  std::vector<std::string> names;
+  for (const CLI::Option* o : command.get_options()) {
+    for (const auto& n : o->get_lnames()) names.push_back("--" + n);
+    for (const auto& n : o->get_snames()) names.push_back("-" + n);
+  }
+  return names;
+}
+
+std::string unknown_option_message(const CLI::App& app) {
+  // the command given, deepest first: its own options, then its parents'
+  const CLI::App* command = &app;
+  std::string path = "armstudy";
+  for (;;) {
+    const auto subs = command->get_subcommands();
+    if (subs.empty()) break;
+    command = subs.front();
+    path += " " + command->get_name();
+  }
+  for (const CLI::App* at = command; at; at = at->get_parent()) {
+    for (const std::string& arg : at->remaining()) {
+      if (arg.size() < 2 || arg[0] != '-' || (arg[1] >= '0' && arg[1] <= '9') || arg[1] == '.')
+        continue;  // a value or a negative number, not an option
+      const std::string name = arg.substr(0, arg.find('='));
+      const std::vector<std::string> known = option_names(*command);
+      std::string message = path + ": unknown option '" + name + "'";
+      if (const auto c = cases::closest(name, known)) message += " (did you mean '" + *c + "'?)";
+      std::string list;
+      for (const auto& k : known)
+        if (k != "--help" && k != "-h") list += (list.empty() ? "" : ", ") + k;
+      if (!list.empty()) message += "; expected one of: " + list;
+      return message + "\nRun with --help for more information.";
+    }
+  }
+  return "";
 }
 
 }  // namespace armstudy::cli

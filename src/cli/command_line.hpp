@@ -21,6 +21,7 @@ struct Args {
   std::string out_dir = "reports/out";
   bool no_render = false;
   bool no_sensitivity = false;
+  bool run_json = false;
   int jobs = 1;
   std::string shard;
   bool force = false;
@@ -34,12 +35,13 @@ struct Args {
   std::string merge_manifest;
   DiffOptions diff_options;
   std::string diff_base, diff_new, diff_out = diff_options.out.string();
+  std::string init_study, init_out;
 };
 
 /// The commands, to tell which one was given.
 struct Commands {
   CLI::App *run = nullptr, *expand = nullptr, *list = nullptr, *merge = nullptr, *diff = nullptr,
-           *validate = nullptr;
+           *validate = nullptr, *init = nullptr;
   CLI::Option* merge_out = nullptr;
 };
 
@@ -48,5 +50,11 @@ void describe_app(CLI::App& app);
 
 /// Every command and its options, in the order --help lists them, bound to `a`.
 Commands add_commands(CLI::App& app, Args& a);
+
+/// After a failed parse: the message naming the first option of the command line that no
+/// command given has ("armstudy run: unknown option '--jobz' (did you mean '--jobs'?) ..."),
+/// or "" when every option was known. CLI11 would otherwise report a later problem the
+/// unknown option caused (its value taken for a case file: "Path does not exist: 2").
+std::string unknown_option_message(const CLI::App& app);
 
 }  // namespace armstudy::cli

@@ -215,6 +215,21 @@ void compare_provenance(const CaseOutput& base, const CaseOutput& now, CaseDiff&
   }
 }
 
+// the case's inputs that differ (both results.json must echo them: inputs_known)
+void compare_inputs(const report::CaseRecord& b, const report::CaseRecord& n, CaseDiff& d) {
+  d.inputs_known = b.inputs && n.inputs;
+  if (!d.inputs_known) return;
+  std::set<std::string> keys;
+  for (const auto& [k, v] : *b.inputs) keys.insert(k);
+  for (const auto& [k, v] : *n.inputs) keys.insert(k);
+  for (const auto& k : keys) {
+    const auto x = b.inputs->find(k), y = n.inputs->find(k);
+    const std::string bx = x == b.inputs->end() ? "(none)" : x->second;
+    const std::string ny = y == n.inputs->end() ? "(none)" : y->second;
+    if (bx != ny) d.inputs.push_back({k, bx, ny});
+  }
+}
+
 CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolerances& tol,
                       const FrameOptions& fo) {
   CaseDiff d;
@@ -238,6 +253,7 @@ CaseDiff compare_case(const CaseOutput* b, const CaseOutput* n, const DiffTolera
     compare_checks(*b, *n, d);
     compare_frames(*b, *n, fo, d);
     compare_provenance(*b, *n, d);
+    compare_inputs(b->record.case_info, n->record.case_info, d);
   }
   return d;
 }

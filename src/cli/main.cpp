@@ -38,6 +38,7 @@
 #include "cli/command_line.hpp"
 #include "cli/confined_path.hpp"
 #include "cli/diff.hpp"
+#include "cli/init_command.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/merge.hpp"
 #include "cli/open_files.hpp"
@@ -292,15 +293,17 @@ void report_stale_outputs(const std::filesystem::path& out_dir) {
 
 // drops the cases whose output exists and passed for the same case file, version and
 // options; -1, or the exit code when a case file cannot be read
-int skip_done_cases(std::vector<LoadedCase>* all, const armstudy::app::RunOptions& options) {
+int skip_done_cases(std::vector<LoadedCase>* all, const armstudy::app::RunOptions& options,
+                    std::vector<std::string>* skipped_names) {
   std::vector<LoadedCase>& cases = *all;
   std::vector<LoadedCase> todo;
   size_t skipped = 0;
   for (auto& c : cases) {
     try {
-      if (already_done(options.out_dir, c, options))
+      if (already_done(options.out_dir, c, options)) {
         ++skipped;
-      else
+        skipped_names->push_back(c.info.name);
+      } else
         todo.push_back(std::move(c));
     } catch (const armstudy::cases::InputFileError& e) {
       std::fprintf(stderr, "armstudy: %s\nnothing was run\n", e.what());
@@ -316,11 +319,13 @@ int skip_done_cases(std::vector<LoadedCase>* all, const armstudy::app::RunOption
   return -1;
 }
 
-// what one case's run ended with: its exit code, its line for the terminal and, when it
-// ended in an error, the error
+// what one case's run ended with: its exit code, its line for the terminal (the answer, for
+// stdout, unless the run ended in an error: then the error, for stderr) and its entry of
+// run --json
 struct CaseEnd {
   int code = kExitDone;
   std::string line, error;
+  nlohmann::json summary;
 };
 
 // runs one case, turning every error into its exit code and line; `need` is its memory
@@ -330,14 +335,22 @@ CaseEnd run_one_case(LoadedCase& c, const armstudy::app::RunOptions& case_option
   int code = kExitDone;
   std::string line, error;
   const std::string name = armstudy::report::terminal_text(c.info.name);
+  nlohmann::json summary = {{"name", c.info.name}, {"study", c.info.study}, {"path", c.info.path}};
   try {
     const auto o = armstudy::app::run_case(c, case_options, progress.task(c.info.name));
     code = o.exit_code;
     char secs[32];
     std::snprintf(secs, sizeof secs, "%.1f s", o.seconds);
-    line = (code == 0 ? "done: " : "FAILED: ") + name + " (" + c.info.study + ", " + secs +
-           ") -> " + o.folder.string() +
-           (o.message.empty() ? "" : "\n  " + armstudy::report::terminal_text(o.message));
+    // one line: the verdict, the case, where its report is, then the answer
+    line = (code == 0 ? "done: " : "FAILED: ") + name + " (" + c.info.study + ", " + secs + ", " +
+           o.folder.string() + ")" +
+           (o.message.empty() ? "" : ": " + armstudy::report::terminal_text(o.message));
+    summary.update({{"result", code == 0 ? "done" : "failed"},
+                    {"exit_code", code},
+                    {"seconds", o.seconds},
+                    {"folder", o.folder.string()},
+                    {"message", o.message}});
+    return {code, line, "", summary};
   } catch (const armstudy::report::ForeignOutput& e) {
     code = kExitBadInput;  // a user's folder of the case's name appeared during the run
     error = e.what();
@@ -359,15 +372,17 @@ CaseEnd run_one_case(LoadedCase& c, const armstudy::app::RunOptions& case_option
     error = e.what();
     line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
   }
-  return {code, line, error};
+  summary.update({{"result", "error"}, {"exit_code", code}, {"message", error}});
+  return {code, line, error, summary};
 }
 
 // runs the cases on `jobs` threads, the longest first, each starting when its memory estimate
 // fits the run's budget; the worst exit code; the cases that ended in an error in *errored
+// (each case's answer on stdout; with --json, *summaries an array, its entry there instead)
 int run_cases(std::vector<LoadedCase>& cases, const armstudy::app::RunOptions& options,
               const armstudy::app::RunOptions& case_options, int jobs,
               armstudy::cli::ProgressReporter& progress,
-              std::vector<armstudy::cli::CaseOutput>* errored) {
+              std::vector<armstudy::cli::CaseOutput>* errored, nlohmann::json* summaries) {
   // the longest cases first, so that each core ends on a short one
   const std::vector<size_t> order =
       armstudy::app::longest_first(cases, options.render, options.sensitivity);
@@ -384,8 +399,10 @@ int run_cases(std::vector<LoadedCase>& cases, const armstudy::app::RunOptions& o
       memory.acquire(need);
       const CaseEnd end = run_one_case(c, case_options, progress, need);
       memory.release(need);
-      progress.line(end.line);
+      // the answer on stdout (stderr when stdout is the --json summary); an error on stderr
+      progress.line(end.line, end.error.empty() && summaries->is_null() ? stdout : stderr);
       std::lock_guard<std::mutex> lock(mu);
+      if (!summaries->is_null()) summaries->push_back(end.summary);
       worst = std::max(worst, end.code);
       if (!end.error.empty())
         errored->push_back(armstudy::cli::failed_output(options.out_dir / c.info.name, c.info.name,
@@ -450,11 +467,27 @@ int write_summaries(const std::filesystem::path& out_dir,
   return worst;
 }
 
+// run --json: the run's summary on stdout, one JSON document (the cases sorted by name)
+void print_run_json(const std::filesystem::path& out_dir, int exit_code, nlohmann::json cases,
+                    const std::vector<std::string>& skipped) {
+  std::sort(cases.begin(), cases.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a["name"].get<std::string>() < b["name"].get<std::string>();
+  });
+  const nlohmann::json j = {{"out", out_dir.string()},
+                            {"exit_code", exit_code},
+                            {"cases", std::move(cases)},
+                            {"skipped", skipped},
+                            {"summary_md", (out_dir / "summary.md").string()},
+                            {"junit_xml", (out_dir / "junit.xml").string()},
+                            {"index_html", (out_dir / "index.html").string()}};
+  std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+}
+
 // `armstudy run`: load, shard, refuse foreign outputs, skip done cases, run, print and
 // summarise (over 60 lines: the steps of a run in their order, each a call or a message)
 int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptions& options,
             int jobs, const std::string& shard, bool force, bool allow_large,
-            const std::vector<std::string>& run_paths) {
+            const std::vector<std::string>& run_paths, bool json) {
   std::vector<LoadedCase> cases;
   if (!load_all(paths, &cases, allow_large)) {
     std::fprintf(stderr, "nothing was written: fix the case files above\n");
@@ -480,8 +513,9 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   if (const int code = copy_manifest(run_paths, options.out_dir); code != kExitDone) return code;
   // what killed runs on this host left behind (hidden temporary folders and files)
   report_stale_outputs(options.out_dir);
+  std::vector<std::string> skipped;
   if (!force)
-    if (const int code = skip_done_cases(&cases, options); code >= 0) return code;
+    if (const int code = skip_done_cases(&cases, options, &skipped); code >= 0) return code;
   // with --pdf, one browser prints each case's page as soon as the case is in place
   armstudy::app::RunOptions case_options = options;
   std::unique_ptr<armstudy::report::PdfPrinter> printer;
@@ -493,7 +527,8 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   // cases that ended in an error wrote no results.json: they are failed cases in summary.md
   // and junit.xml all the same
   std::vector<armstudy::cli::CaseOutput> errored;
-  int worst = run_cases(cases, options, case_options, jobs, progress, &errored);
+  nlohmann::json summaries = json ? nlohmann::json::array() : nlohmann::json();
+  int worst = run_cases(cases, options, case_options, jobs, progress, &errored, &summaries);
   progress.finish();
   if (printer) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -512,6 +547,7 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
   if (worst == kExitDone)
     std::fprintf(stderr, "all %zu case(s) done; output in %s\n", cases.size(),
                  options.out_dir.c_str());
+  if (json) print_run_json(options.out_dir, worst, std::move(summaries), skipped);
   return worst;
 }
 
@@ -725,6 +761,7 @@ int check_before_running(const armstudy::cli::Commands& c, const armstudy::cli::
 // runs the command given; its exit code
 int run_command(const armstudy::cli::Commands& c, armstudy::cli::Args& a) {
   if (*c.validate) return cmd_validate(a.validate_paths, a.allow_large);
+  if (*c.init) return armstudy::cli::cmd_init(a.init_study, a.init_out);
   if (*c.expand) return cmd_sweep_expand(a.sweep_file, a.sweep_out, a.base_dirs);
   if (*c.list) return cmd_list(a.list_items, a.list_json);
   if (*c.merge) return cmd_merge(a.merge_dirs, a.merge_out, a.merge_manifest);
@@ -738,7 +775,7 @@ int run_command(const armstudy::cli::Commands& c, armstudy::cli::Args& a) {
   a.options.render = !a.no_render;
   a.options.sensitivity = !a.no_sensitivity;
   return cmd_run(case_files(a.run_paths), a.options, a.jobs, a.shard, a.force, a.allow_large,
-                 a.run_paths);
+                 a.run_paths, a.run_json);
 }
 
 }  // namespace
@@ -758,6 +795,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    // an unknown option first: not what it caused later ("Path does not exist: 2")
+    if (const std::string unknown = armstudy::cli::unknown_option_message(app);
+        !unknown.empty() && e.get_exit_code() != static_cast<int>(CLI::ExitCodes::Success)) {
+      std::fprintf(stderr, "%s\n", unknown.c_str());
+      return kExitBadInput;
+    }
     const int code = app.exit(e);  // prints help, version or the error
     return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)
                ? 0

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
@@ -299,19 +300,34 @@ std::string summary_markdown(const std::vector<CaseOutput>& cases, size_t max_by
   return s;
 }
 
+namespace {
+// seconds as junit.xml writes them: milliseconds, never negative
+std::string junit_seconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", std::isfinite(s) && s > 0 ? s : 0.0);
+  return text;
+}
+}  // namespace
+
 std::string junit_xml(const std::vector<CaseOutput>& cases) {
   std::map<std::string, std::vector<const CaseOutput*>> by_study;
   for (const auto& c : cases) by_study[c.record.study].push_back(&c);
   size_t tests = 0, failures = 0;
+  double total_s = 0;
   std::ostringstream body;
   for (const auto& [study, list] : by_study) {
     size_t st = 0, sf = 0;
+    double suite_s = 0;
     std::ostringstream tc;
     for (const auto* c : list) {
       const auto& r = c->record;
       const std::string cls = xml_text(study + "." + r.case_info.name);
       ++st;
-      tc << "    <testcase classname=\"" << cls << "\" name=\"solve\"";
+      // the case's run is its "solve" test case's time; its checks ran within it
+      const double case_s = r.run_time_s.value_or(0.0);
+      suite_s += std::isfinite(case_s) && case_s > 0 ? case_s : 0.0;
+      tc << "    <testcase classname=\"" << cls << "\" name=\"solve\" time=\""
+         << junit_seconds(case_s) << "\"";
       if (!status_as_expected(r)) {
         ++sf;
         tc << "><failure message=\"" << xml_text(failure_text(r)) << "\"/></testcase>\n";
@@ -320,7 +336,8 @@ std::string junit_xml(const std::vector<CaseOutput>& cases) {
       }
       for (const auto& ch : r.checks) {
         ++st;
-        tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_text(ch.name) << "\"";
+        tc << "    <testcase classname=\"" << cls << "\" name=\"" << xml_text(ch.name)
+           << "\" time=\"0.000\"";
         if (!ch.passed) {
           ++sf;
           tc << "><failure message=\""
@@ -333,14 +350,16 @@ std::string junit_xml(const std::vector<CaseOutput>& cases) {
       }
     }
     body << "  <testsuite name=\"" << xml_text(study) << "\" tests=\"" << st << "\" failures=\""
-         << sf << "\" errors=\"0\">\n"
+         << sf << "\" errors=\"0\" time=\"" << junit_seconds(suite_s) << "\">\n"
          << tc.str() << "  </testsuite>\n";
     tests += st;
     failures += sf;
+    total_s += suite_s;
   }
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"armstudy\" tests=\"" << tests
-    << "\" failures=\"" << failures << "\" errors=\"0\">\n"
+    << "\" failures=\"" << failures << "\" errors=\"0\" time=\"" << junit_seconds(total_s)
+    << "\">\n"
     << body.str() << "</testsuites>\n";
   return x.str();
 }

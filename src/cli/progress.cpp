@@ -151,12 +151,15 @@ void ProgressReporter::heartbeat() {
   }
 }
 
-void ProgressReporter::line(std::string_view text) {
+void ProgressReporter::line(std::string_view text) { line(text, out_); }
+
+void ProgressReporter::line(std::string_view text, std::FILE* to) {
   std::lock_guard<std::mutex> lock(mu_);
   if (bar_shown_) std::fprintf(out_, "\r\033[K");
-  bar_shown_ = false;
-  std::fprintf(out_, "%.*s\n", static_cast<int>(text.size()), text.data());
   std::fflush(out_);
+  bar_shown_ = false;
+  std::fprintf(to, "%.*s\n", static_cast<int>(text.size()), text.data());
+  std::fflush(to);
 }
 
 void ProgressReporter::finish() {

@@ -44,6 +44,8 @@ class ProgressReporter {
   studies::ProgressFn task(std::string task);
   /// Prints a whole line (clearing a live bar first).
   void line(std::string_view text);
+  /// Prints a whole line to `to` (e.g. stdout, the answers), clearing a live bar first.
+  void line(std::string_view text, std::FILE* to);
   /// Ends the live bar, if any, and stops the heartbeat.
   void finish();
   /// Redraws the running tasks if nothing was printed for a period (live: a second).

@@ -41,7 +41,7 @@ bool CaseDiff::beyond() const {
 }
 
 bool CaseDiff::changed() const {
-  if (beyond() || !checks.empty() || base_message != new_message) return true;
+  if (beyond() || !checks.empty() || !inputs.empty() || base_message != new_message) return true;
   for (const auto& f : figures)
     if (!(f.base == f.now || (f.base && f.now && std::isnan(*f.base) && std::isnan(*f.now))))
       return true;
@@ -283,6 +283,33 @@ std::vector<const CaseDiff*> moved_cases(const RunDiff& d) {
 
 }  // namespace
 
+namespace {
+// the inputs that differ between the runs, per case, before what moved (from each
+// results.json's case.inputs); the cases whose runs do not both record them are named
+void md_inputs(std::ostringstream& md, const RunDiff& d) {
+  Table t;
+  t.header = {"case", "input", "base", "new"};
+  std::string unknown;
+  for (const auto& c : d.cases) {
+    if (c.presence != CaseDiff::Presence::kBoth) continue;
+    if (!c.inputs_known) unknown += (unknown.empty() ? "" : ", ") + c.name;
+    for (const auto& i : c.inputs) t.rows.push_back({c.name, i.key, i.base, i.now});
+  }
+  if (t.rows.empty() && unknown.empty()) {
+    md << "## Inputs\n\nEvery case of both runs has the same inputs.\n\n";
+    return;
+  }
+  md << "## Inputs that differ\n\n";
+  if (!t.rows.empty())
+    md_table(md, t);
+  else
+    md << "No recorded input differs.\n\n";
+  if (!unknown.empty())
+    md << "Not recorded in both runs (a results.json of an older armstudy): " << md_cell(unknown)
+       << ".\n\n";
+}
+}  // namespace
+
 std::string diff_markdown(const RunDiff& d, size_t max_bytes) {
   std::ostringstream md;
   const size_t moved = d.beyond_count();
@@ -292,6 +319,7 @@ std::string diff_markdown(const RunDiff& d, size_t max_bytes) {
      << " case(s)): " << count_presence(d, CaseDiff::Presence::kAdded) << " added, "
      << count_presence(d, CaseDiff::Presence::kRemoved) << " removed. " << tolerances_sentence(d)
      << ".\n\n";
+  md_inputs(md, d);
   if (moved) {
     md << "## Beyond tolerance (" << moved << ")\n\n| case | study | what moved |\n|---|---|---|\n";
     for (const CaseDiff* c : moved_cases(d))

@@ -65,6 +65,12 @@ struct ProvenanceDiff {
   std::string base, now;
 };
 
+/// An input of the case (results.json case.inputs) that differs between the runs.
+struct InputDiff {
+  std::string key;        ///< its dotted path, e.g. "placement.torque_limits_Nm"
+  std::string base, now;  ///< as YAML text; "(none)" where that run's case file lacks it
+};
+
 struct CaseDiff {
   enum class Presence { kBoth, kAdded, kRemoved };
   std::string name;
@@ -77,6 +83,9 @@ struct CaseDiff {
   std::vector<CheckDiff> checks;    ///< only those whose verdict changed
   std::vector<FrameDiff> frames;    ///< every frame of either side
   std::vector<ProvenanceDiff> provenance;
+  /// the inputs that differ; inputs_known: both runs' results.json echo their case's inputs
+  std::vector<InputDiff> inputs;
+  bool inputs_known = false;
 
   /// Something moved beyond its tolerance: added, removed, status or verdict changed, a
   /// key figure or a frame beyond tolerance.

@@ -33,6 +33,8 @@ struct CaseRecord {
   std::string name, path, sha256;
   std::optional<std::string> description, expect;
   std::optional<Sweep> sweep;
+  /// every value the case file writes by its key path, as YAML text (cases/case_inputs.hpp)
+  std::optional<std::map<std::string, std::string>> inputs;
 };
 
 /// results["provenance"]: what produced the numbers and frames.
@@ -120,6 +122,7 @@ struct ResultsRecord {
   ProvenanceRecord provenance;
   std::string status;  ///< "solved" or "unsolvable"
   std::string message;
+  std::optional<double> run_time_s;  ///< wall clock from the case's start to its results.json
   std::vector<CheckRecord> checks;
   std::vector<KeyFigureRecord> key_figures;
   RunOptionsRecord run_options;
@@ -158,6 +161,9 @@ void fields(V& v, CaseRecord& x) {
   v.optional("expect", x.expect, "'unsolvable' when the case expects no answer",
              {{"enum", nlohmann::json::array({"unsolvable"})}});
   v.optional("sweep", x.sweep, "the sweep and point this case was generated from");
+  v.optional("inputs", x.inputs,
+             "every value the case file writes, by its dotted key path (arm.links[1].length), "
+             "as YAML text; armstudy diff lists those that differ between two runs");
 }
 template <class V>
 void fields(V& v, ProvenanceRecord& x) {
@@ -266,6 +272,10 @@ void fields(V& v, ResultsRecord& x) {
   v("status", x.status, "whether the study found its answer",
     {{"enum", nlohmann::json::array({"solved", "unsolvable"})}});
   v("message", x.message, "the study's answer (or why there is none) in one sentence");
+  v.optional("run_time_s", x.run_time_s,
+             "wall-clock seconds from the case's start to this file (solve, sensitivity, frames, "
+             "report): junit.xml's time of the case",
+             {{"minimum", 0}});
   v("checks", x.checks, "the checks the study ran on its answer");
   v("key_figures", x.key_figures,
     "the numbers a reader compares across cases (none when unsolved)");

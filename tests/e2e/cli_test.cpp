@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -169,15 +170,96 @@ TEST(Cli, DuplicateCaseNamesAreRejectedBeforeAnythingRuns) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(Cli, ProgressIsPlainLinesWithoutATerminal) {
+// progress on stderr, plain lines in a log; on stdout one line per case: its answer
+TEST(Cli, ProgressIsPlainLinesWithoutATerminalAndTheAnswerIsOnStdout) {
   const fs::path out = temp_dir("progress");
+  fs::create_directories(out.parent_path());
+  const fs::path err = out.string() + ".stderr";
   const fs::path c = kSource / "reports/cases/placement-example-2.yaml";
-  const CliRun r = run_cli("run --no-render --out " + out.string() + " " + c.string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find('\r'), std::string::npos) << "no carriage returns in a log";
-  EXPECT_EQ(r.output.find("\033["), std::string::npos) << "no terminal escapes in a log";
-  EXPECT_NE(r.output.find("done: placement-example-2"), std::string::npos) << r.output;
+  // stdout alone through the pipe; stderr into a file
+  const CliRun r =
+      armstudy::testing::run_shell("{ " + armstudy::testing::kBin + " run --no-render --out " +
+                                   out.string() + " " + c.string() + " 2>" + err.string() + "; }");
+  const std::string progress = read_text(err);
+  ASSERT_EQ(r.exit_code, 0) << r.output << progress;
+  EXPECT_EQ(progress.find('\r'), std::string::npos) << "no carriage returns in a log";
+  EXPECT_EQ(progress.find("\033["), std::string::npos) << "no terminal escapes in a log";
+  EXPECT_NE(progress.find("placement-example-2: "), std::string::npos) << progress;
+  EXPECT_EQ(progress.find("done: "), std::string::npos) << "the answer is on stdout\n" << progress;
+  const std::string line = "done: placement-example-2 (placement, ";
+  EXPECT_EQ(r.output.rfind(line, 0), 0u) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find(", " + (out / "placement-example-2").string() + "): least energy "),
+            std::string::npos)
+      << r.output;
   fs::remove_all(out);
+  fs::remove(err);
+}
+
+// run --json: one JSON document on stdout (each case's result, exit code, seconds, folder,
+// answer); results.json echoes the case's inputs and its run time, which junit.xml carries
+TEST(Cli, RunJsonSummarisesTheRunOnStdoutAndJunitHasTimes) {
+  const fs::path out = temp_dir("json");
+  fs::create_directories(out.parent_path());
+  const fs::path err = out.string() + ".stderr";
+  const fs::path c = kSource / "reports/cases/pendulum.yaml";
+  const CliRun r = armstudy::testing::run_shell(
+      "{ " + armstudy::testing::kBin + " run --no-render --no-sensitivity --json --out " +
+      out.string() + " " + c.string() + " 2>" + err.string() + "; }");
+  ASSERT_EQ(r.exit_code, 0) << r.output << read_text(err);
+  const auto j = nlohmann::json::parse(r.output);  // nothing else on stdout
+  EXPECT_EQ(j["exit_code"], 0);
+  EXPECT_EQ(j["out"], out.string());
+  ASSERT_EQ(j["cases"].size(), 1u) << j.dump(2);
+  const auto& k = j["cases"][0];
+  EXPECT_EQ(k["name"], "pendulum");
+  EXPECT_EQ(k["study"], "pendulum");
+  EXPECT_EQ(k["result"], "done");
+  EXPECT_EQ(k["folder"], (out / "pendulum").string());
+  EXPECT_GT(k["seconds"].get<double>(), 0.0);
+  const auto results = nlohmann::json::parse(read_text(out / "pendulum/results.json"));
+  EXPECT_EQ(k["message"], results["message"]);
+  EXPECT_NE(read_text(err).find("done: pendulum"), std::string::npos) << "the lines go to stderr";
+  // the inputs echoed as the file writes them, the run time measured
+  const auto& inputs = results["case"]["inputs"];
+  EXPECT_EQ(inputs["study"], "pendulum");
+  EXPECT_EQ(inputs["name"], "pendulum");
+  EXPECT_GE(inputs.size(), 5u) << inputs.dump(2);
+  const double run_s = results["run_time_s"];
+  EXPECT_GT(run_s, 0.0);
+  EXPECT_LE(run_s, k["seconds"].get<double>());
+  const std::string junit = read_text(out / "junit.xml");
+  char expected[96];
+  std::snprintf(expected, sizeof expected, "name=\"solve\" time=\"%.3f\"", run_s);
+  EXPECT_NE(junit.find(expected), std::string::npos) << junit;
+  std::snprintf(expected, sizeof expected,
+                "<testsuite name=\"pendulum\" tests=\"%zu\" "
+                "failures=\"0\" errors=\"0\" time=\"%.3f\"",
+                results["checks"].size() + 1, run_s);
+  EXPECT_NE(junit.find(expected), std::string::npos) << junit;
+  fs::remove_all(out);
+  fs::remove(err);
+}
+
+// an unknown option is named, with the command's options, whatever else it causes
+TEST(Cli, AnUnknownOptionIsNamed) {
+  const std::string c = (kSource / "reports/cases/pendulum.yaml").string();
+  for (const std::string& args : {"run " + c + " --jobz 2", "run --jobz 2 " + c}) {
+    const CliRun r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_NE(r.output.find("armstudy run: unknown option '--jobz' (did you mean '--jobs'?); "
+                            "expected one of: "),
+              std::string::npos)
+        << args << "\n"
+        << r.output;
+    EXPECT_EQ(r.output.find("Path does not exist"), std::string::npos) << r.output;
+  }
+  const CliRun v = run_cli("validate --alow-large " + c);
+  EXPECT_EQ(v.exit_code, 2);
+  EXPECT_NE(v.output.find("armstudy validate: unknown option '--alow-large' (did you mean "
+                          "'--allow-large'?)"),
+            std::string::npos)
+      << v.output;
 }
 
 }  // namespace
@@ -233,6 +315,53 @@ TEST(Cli, InfeasibleTimeOptimalCaseExitsOneNamingTheLimitAndThePlace) {
   EXPECT_EQ(j["status"], "unsolvable");
   fs::remove_all(out);
   fs::remove_all(work);
+}
+
+}  // namespace
+
+namespace {
+
+// `armstudy init STUDY`: a case of every study, on stdout and with -o, that validates; the
+// fast studies' also run (--no-render); -o replaces only a case init wrote, never a user's
+// file (nor an init case edited since)
+TEST(Cli, InitWritesACaseOfEveryStudyThatValidatesAndRuns) {
+  const fs::path dir = temp_dir("init");
+  fs::create_directories(dir);
+  for (const char* study : {"placement", "pendulum", "throwing", "time_optimal"}) {
+    const fs::path file = dir / (std::string(study) + ".yaml");
+    const CliRun printed = armstudy::testing::run_shell("{ " + armstudy::testing::kBin + " init " +
+                                                        study + " 2>/dev/null; }");
+    ASSERT_EQ(printed.exit_code, 0) << study << "\n" << printed.output;
+    EXPECT_EQ(printed.output.rfind("# yaml-language-server: $schema=", 0), 0u) << printed.output;
+    const CliRun written = run_cli(std::string("init ") + study + " -o " + file.string());
+    ASSERT_EQ(written.exit_code, 0) << written.output;
+    EXPECT_EQ(read_text(file), printed.output) << study;
+    const CliRun valid = run_cli("validate " + file.string());
+    EXPECT_EQ(valid.exit_code, 0) << study << "\n" << valid.output << "\n" << printed.output;
+  }
+  for (const char* study : {"pendulum", "time_optimal"}) {
+    const fs::path file = dir / (std::string(study) + ".yaml");
+    const CliRun r = run_cli("run --no-render --no-sensitivity --out " + (dir / "out").string() +
+                             " " + file.string());
+    EXPECT_EQ(r.exit_code, 0) << study << "\n" << r.output;
+  }
+  // a file init wrote is replaced; one the user wrote, or edited, is not
+  const fs::path file = dir / "pendulum.yaml";
+  EXPECT_EQ(run_cli("init pendulum -o " + file.string()).exit_code, 0);
+  { std::ofstream(file, std::ios::app) << "# mine\n"; }
+  const std::string edited = read_text(file);
+  const CliRun refused = run_cli("init pendulum -o " + file.string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("armstudy never replaces a file it did not write"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_EQ(read_text(file), edited);
+  const CliRun unknown = run_cli("init pendulm");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.output.find("unknown study 'pendulm'; expected one of: placement"),
+            std::string::npos)
+      << unknown.output;
+  fs::remove_all(dir);
 }
 
 }  // namespace

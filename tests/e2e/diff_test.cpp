@@ -139,6 +139,8 @@ TEST_F(Diff, TwoRunsOfTheSameCasesDiffClean) {
             std::string::npos)
       << md;
   EXPECT_EQ(md.find("## Beyond tolerance"), std::string::npos) << md;
+  EXPECT_NE(md.find("## Inputs\n\nEvery case of both runs has the same inputs."), std::string::npos)
+      << md;
   EXPECT_TRUE(fs::exists(out("clean") / "diff.html"));
   EXPECT_FALSE(fs::exists(out("clean") / "diff-frames")) << "identical frames need no copies";
 }
@@ -187,8 +189,19 @@ TEST_F(Diff, AToleranceThatCoversTheChangePasses) {
   const CliRun strict =
       cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " + q(out("strict")));
   EXPECT_EQ(strict.exit_code, 1) << strict.output;
-  EXPECT_EQ(table_cases(slurp(out("strict") / "diff.md"), "## Beyond tolerance"),
+  const std::string strict_md = slurp(out("strict") / "diff.md");
+  EXPECT_EQ(table_cases(strict_md, "## Beyond tolerance"),
             std::vector<std::string>{"placement-example-3"});
+  // first the input that differs (from each results.json's case.inputs), then what moved
+  const size_t inputs = strict_md.find("## Inputs that differ\n\n| case | input | base | new |");
+  EXPECT_NE(inputs, std::string::npos) << strict_md;
+  EXPECT_LT(inputs, strict_md.find("## Beyond tolerance")) << strict_md;
+  EXPECT_EQ(table_cases(strict_md, "## Inputs that differ"),
+            std::vector<std::string>{"placement-example-3"})
+      << strict_md;
+  EXPECT_NE(strict_md.find("| placement-example-3 | placement.duration_s | 1.0 | 1.1 |"),
+            std::string::npos)
+      << strict_md;
   const fs::path tol = root_ / "tolerances.yaml";
   write_text(tol, "# energies scale as 1/T^3\nstudies:\n  placement:\n    default: {rel: 0.3}\n");
   const CliRun r = cli("diff " + q(root_ / "base") + " " + q(root_ / "longer") + " --out " +

@@ -7,9 +7,11 @@
 # the package ships, to a complete report with --pdf:
 #  - the file name, the Depends (the shared libraries by dpkg-shlibdeps and PLplot's cairo
 #    driver) and Recommends (a headless Chromium, ffmpeg, the DejaVu fonts);
-#  - the files: both programs, the templates, the schema, the docs and bundled cases, a man
-#    page per command of `armstudy --help` (each formats without a groff warning) and the
-#    bash completion (it completes the commands);
+#  - lintian finds no error in it (its warnings are listed);
+#  - the files: both programs, the templates, the schema, the docs and bundled cases, the
+#    copyright and changelog (whose latest entry is the package's version), a gzipped man
+#    page per command of `armstudy --help` (each formats without a groff warning and has
+#    EXAMPLES) and the bash completion (it completes the commands);
 #  - the run opens no path under the source tree or the build tree: it reads the package's
 #    templates and starts the package's frame helper;
 #  - --version of the installed program names the libraries.
@@ -29,8 +31,10 @@ fail() {
 # --- the package ---------------------------------------------------------------------------
 cpack --config "$build/CPackConfig.cmake" -B "$work/pkg" >"$work/cpack.log" 2>&1 ||
   { cat "$work/cpack.log"; fail "cpack"; }
-deb=$work/pkg/armstudy_${version}_amd64.deb
-[ -f "$deb" ] || { ls "$work/pkg"; fail "no $deb"; }
+deb=$(echo "$work"/pkg/armstudy_"${version}"-*_amd64.deb)
+[ -f "$deb" ] || { ls "$work/pkg"; fail "no $work/pkg/armstudy_${version}-<revision>_amd64.deb"; }
+maintainer=$(dpkg-deb -f "$deb" Maintainer)
+grep -qE '^[^<]+ <[^@ >]+@[^@ >]+>$' <<<"$maintainer" || fail "Maintainer without an address: $maintainer"
 depends=$(dpkg-deb -f "$deb" Depends)
 for lib in libmujoco libosmesa6 libyaml-cpp libnlopt libplplot libpng libssl plplot-driver-cairo; do
   grep -q "$lib" <<<"$depends" || fail "Depends lacks $lib: $depends"
@@ -39,6 +43,13 @@ done
   fail "Recommends: $(dpkg-deb -f "$deb" Recommends)"
 echo "Depends: $depends"
 
+# lintian: no error (as Debian's archive checks a package); its warnings are listed
+lintian_status=0
+lintian --tag-display-limit 0 --fail-on error --suppress-tags mail-contact \
+  "$deb" >"$work/lintian.log" 2>&1 || lintian_status=$?
+sed 's/^/lintian: /' "$work/lintian.log"
+[ "$lintian_status" = 0 ] || fail "lintian found errors (exit $lintian_status)"
+
 root=$work/root
 dpkg-deb -x "$deb" "$root"
 for f in bin/armstudy bin/armstudy-frames share/armstudy/templates/case.html \
@@ -46,10 +57,16 @@ for f in bin/armstudy bin/armstudy-frames share/armstudy/templates/case.html \
   share/armstudy/results.schema.json share/armstudy/junit.xsd share/doc/armstudy/README.md \
   share/doc/armstudy/docs/cli.md share/doc/armstudy/docs/install.md \
   share/doc/armstudy/examples/cases/placement-example-2.yaml \
-  share/bash-completion/completions/armstudy share/man/man1/armstudy.1; do
+  share/doc/armstudy/copyright share/doc/armstudy/changelog.Debian.gz \
+  share/bash-completion/completions/armstudy share/man/man1/armstudy.1.gz; do
   [ -f "$root/usr/$f" ] || fail "the package has no /usr/$f"
 done
 bin=$root/usr/bin/armstudy
+# the changelog's latest entry is this package's version
+changelog_version=$(zcat "$root/usr/share/doc/armstudy/changelog.Debian.gz" | head -1 |
+  sed -n 's/^armstudy (\([^)]*\)).*/\1/p')
+[ "$changelog_version" = "$(dpkg-deb -f "$deb" Version)" ] ||
+  fail "changelog.Debian.gz's latest entry is '$changelog_version', the package $(dpkg-deb -f "$deb" Version)"
 
 # a man page per command and subcommand --help lists, each formatting without a warning
 commands=$("$bin" --help | sed -n '/^Subcommands:/,/^$/p' | awk 'NR > 1 && NF {print $1}')
@@ -62,15 +79,18 @@ for c in $commands; do
   done
 done
 for p in "${pages[@]}"; do
-  man=$root/usr/share/man/man1/$p.1
-  [ -f "$man" ] || fail "no man page $p.1"
-  warnings=$(groff -man -Tutf8 -ww -z "$man" 2>&1)
+  man=$root/usr/share/man/man1/$p.1.gz
+  [ -f "$man" ] || fail "no man page $p.1.gz"
+  text=$(zcat "$man")
+  warnings=$(groff -man -Tutf8 -ww -z <<<"$text" 2>&1)
   [ -z "$warnings" ] || fail "$p.1: $warnings"
+  grep -q '^\.SH EXAMPLES$' <<<"$text" || fail "$p.1 has no EXAMPLES"
 done
 echo "man pages: ${pages[*]}"
 run_help=$("$bin" run --help)
+run_man=$(zcat "$root/usr/share/man/man1/armstudy-run.1.gz")
 for o in $(grep -oE -- '--[a-z][a-z-]*' <<<"$run_help" | sort -u); do
-  grep -qF -- "$(sed 's/-/\\-/g' <<<"$o")" "$root/usr/share/man/man1/armstudy-run.1" ||
+  grep -qF -- "$(sed 's/-/\\-/g' <<<"$o")" <<<"$run_man" ||
     fail "armstudy-run.1 lacks $o"
 done
 

@@ -96,7 +96,7 @@ cd "$work"
 t0=$(now)
 parallel --sshlogin 2/"$node" --workdir "$PWD" \
   "$armstudy" run sweep-cases --no-render --out sweep-out --shard {}/"$shards" ::: $(seq 0 $((shards - 1))) \
-  2>"$work/parallel.log" && "$armstudy" merge sweep-out 2>"$work/merge.log" ||
+  >"$work/parallel.log" 2>&1 && "$armstudy" merge sweep-out 2>"$work/merge.log" ||
   { tail -n 20 "$work/parallel.log" "$work/merge.log"; fail "GNU Parallel over ssh"; }
 t1=$(now)
 logins=$(($(grep -c 'Accepted publickey' "$ssh_dir/sshd.log") - logins_before))

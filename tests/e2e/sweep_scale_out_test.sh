@@ -50,7 +50,8 @@ for i in 2 0 3; do
 done
 per_shard=$(( $(ls "$work/sharded"/*/results.json | wc -l) / 3 ))
 [ "$per_shard" -ge 3 ] || fail "a shard has $per_shard case(s); expected 24 / 4"
-"$armstudy" run "$work/cases" --no-render --jobs 1 --out "$work/sharded" --shard 1/4 2>"$work/killed.log" &
+# (each case's "done:" line is on stdout, the progress on stderr: both into the log)
+"$armstudy" run "$work/cases" --no-render --jobs 1 --out "$work/sharded" --shard 1/4 >"$work/killed.log" 2>&1 &
 killed_pid=$!
 until grep -qs '^done:' "$work/killed.log"; do
   kill -0 "$killed_pid" 2>/dev/null || { cat "$work/killed.log"; fail "shard 1/4 ended before its first case was done"; }
