@@ -18,13 +18,15 @@ list() {
       -o -name '*.css' -o -path ./.ci/run \) -print | sed 's|^\./||'
   fi
 }
+# the files whose first 5 lines lack either line (one awk over all of them)
+files=$(list | while read -r f; do [ -f "$f" ] && echo "$f"; done)
+lacking=$(echo "$files" | tr '\n' '\0' | xargs -0 awk '
+  FNR == 1 { seen[FILENAME] = 1 }
+  FNR <= 5 && /SPDX-License-Identifier: Apache-2.0/ { spdx[FILENAME] = 1 }
+  FNR <= 5 && /Copyright 2026 The armstudy authors/ { copy[FILENAME] = 1 }
+  END { for (f in seen) if (!(spdx[f] && copy[f])) print f }' | sort)
 missing=0
-for f in $(list); do
-  [ -f "$f" ] || continue
-  head=$(head -n 5 "$f")
-  case $head in
-    *"SPDX-License-Identifier: Apache-2.0"*"Copyright 2026 The armstudy authors"*) continue ;;
-  esac
+for f in $lacking; do
   case $f in
     *.cpp | *.hpp | *.hpp.in | *.h | *.c) c='//'; e='' ;;
     *.css) c='/*'; e=' */' ;;
