@@ -30,7 +30,7 @@ YAML::Node node_at(const YAML::Node& root, const std::string& path) {
       const size_t i = std::stoul(m[2].str());
       if (!next.IsSequence() || i < 1 || i > next.size())
         return YAML::Node(YAML::NodeType::Undefined);
-      next = next[i - 1];
+      next.reset(next[i - 1]);  // (`next = ...` would write the entry over the list)
     }
     cur.reset(next);
     if (dot == std::string::npos) return cur;
@@ -81,7 +81,10 @@ std::string resolve(const YAML::Node& root, SensitivityItem& it) {
     return "";
   }
   const auto v = number_of(n);
-  if (!v) return "'" + brief(it.key) + "' is not a number in the case file";
+  if (!v)
+    return "'" + brief(it.key) + "' is " +
+           (n.IsScalar() ? "'" + brief(n.Scalar()) + "'" : std::string("not a number")) +
+           " in the case file; expected a key whose value is a number (or a list of numbers)";
   it.nominal.push_back(*v);
   return "";
 }

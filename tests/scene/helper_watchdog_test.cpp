@@ -20,6 +20,7 @@
 #include "scene/animation.hpp"
 #include "scene/arm_scene.hpp"
 #include "scene/frames.hpp"
+#include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/study_frames.hpp"
 #include "testing/tray_poses.hpp"
@@ -110,7 +111,8 @@ std::string video_note(const fs::path& dir, const std::string& program) {
   const Animation a = pending.get();
   EXPECT_TRUE(a.video.empty()) << program;
   EXPECT_FALSE(fs::exists(dir / "anim.mp4")) << program;
-  EXPECT_FALSE(fs::exists(dir / "anim.mp4.tmp.mp4")) << program << ": its temporary file is removed";
+  EXPECT_FALSE(fs::exists(dir / "anim.mp4.tmp.mp4"))
+      << program << ": its temporary file is removed";
   return a.note;
 }
 
@@ -135,6 +137,24 @@ TEST(HelperWatchdog, AnFfmpegThatIsStuckOrWritesNothingLeavesTheVideoOutSayingWh
       << note;
   EXPECT_LT(seconds_since(t0), 60);
   fs::remove_all(d);
+}
+
+}  // namespace
+}  // namespace armstudy::scene
+
+namespace armstudy::scene {
+namespace {
+
+// a full disk said "cannot write ..._anim.png" without the reason
+TEST(FrameFiles, AWriteThatFailsSaysWhy) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  try {
+    write_bytes("/dev/full", std::string(100000, 'x'));
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write /dev/full: No space left on device");
+  }
+  EXPECT_TRUE(fs::exists("/dev/full"));
 }
 
 }  // namespace
