@@ -122,6 +122,12 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
   const int timeout_ms = static_cast<int>(sys::helper_timeout_seconds() * 1000);
   // this end never blocks: a frame goes in as far as ffmpeg takes it
   ::fcntl(in[1], F_SETFL, ::fcntl(in[1], F_GETFL) | O_NONBLOCK);
+  // a write to an ffmpeg that has gone fails with EPIPE, never a SIGPIPE to this process
+  // (blocked in this thread, and a pending one taken below)
+  sigset_t pipe_signal, old_mask;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  ::pthread_sigmask(SIG_BLOCK, &pipe_signal, &old_mask);
   std::string said;  // ffmpeg's messages, the last 2 kB
   bool stuck = false, write_failed = false;
   // the frames in, ffmpeg's messages out, until it has every frame and ends
@@ -163,6 +169,10 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
     }
   }
   if (in_fd >= 0) ::close(in_fd);
+  const timespec now{0, 0};
+  while (::sigtimedwait(&pipe_signal, nullptr, &now) == SIGPIPE) {
+  }
+  ::pthread_sigmask(SIG_SETMASK, &old_mask, nullptr);
   ::close(msg[0]);
   // its end: waited for at most the timeout once its output has closed
   int status = 0;
