@@ -195,7 +195,10 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
   if (stuck)
     return fail("ffmpeg (" + ffmpeg + ") made no progress for " + timeout_text() +
                 " (ARMSTUDY_HELPER_TIMEOUT_S) and was ended");
-  if (write_failed || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  const bool exited_ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  if (exited_ok && write_failed)
+    return fail("ffmpeg (" + ffmpeg + ") ended without taking every frame or writing the video");
+  if (!exited_ok)
     return fail("ffmpeg failed (" +
                 (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
                                    : "signal " + std::to_string(WTERMSIG(status))) +

@@ -314,13 +314,13 @@ TEST(OutputSafety, AReportAKillLeftAsideIsPutBack) {
 
 namespace {
 
-// a time-optimal case on the exact grid alone (no DP, no Complex) with `exact` as given
+// a time-optimal case on the exact grid and a small DP (no Complex) with `exact` as given
 fs::path huge_grid_case(const fs::path& dir, const std::string& name, const std::string& exact) {
   const fs::path p = dir / (name + ".yaml");
   std::ofstream(p) << "study: time_optimal\nname: " << name
                    << "\ntime_optimal:\n"
                       "  path: {points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n"
-                      "  dp: {states: [], convergence_segments: []}\n"
+                      "  dp: {segments: 10, levels: 20, convergence_segments: []}\n"
                       "  complex: {enabled: false}\n"
                       "  exact: "
                    << exact << "\n";

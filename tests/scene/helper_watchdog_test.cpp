@@ -130,7 +130,14 @@ TEST(HelperWatchdog, AnFfmpegThatIsStuckOrWritesNothingLeavesTheVideoOutSayingWh
   EXPECT_NE(note.find("made no progress for 1 s"), std::string::npos) << note;
   // ends at once, successfully, without a file
   note = video_note(d, script(d, "silent.sh", "exit 0"));
-  EXPECT_NE(note.find("ended without writing the video"), std::string::npos) << note;
+  EXPECT_NE(note.find("ended without taking every frame or writing the video"), std::string::npos)
+      << note;
+  // takes every frame, ends successfully, writes nothing
+  note = video_note(d, script(d, "nofile.sh", "cat > /dev/null"));
+  EXPECT_NE(
+      note.find("ffmpeg (" + (d / "nofile.sh").string() + ") ended without writing the video"),
+      std::string::npos)
+      << note;
   // fails, saying why
   note = video_note(d, script(d, "fails.sh", "echo 'Unknown encoder libx264' >&2\nexit 1"));
   EXPECT_NE(note.find("ffmpeg failed (exit status 1: Unknown encoder libx264)"), std::string::npos)
