@@ -25,6 +25,7 @@
 #include "app/sensitivity.hpp"
 #include "cases/case_info.hpp"
 #include "cases/case_inputs.hpp"
+#include "cases/input_file.hpp"
 #include "report/case_report.hpp"
 #include "report/owned_output.hpp"
 #include "report/source_comparison.hpp"
@@ -302,7 +303,16 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
     // results.json last, listing every file written beside it with its sha256
     j["run_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     j["files"] = report::to_json(list_files(tmp_dir, "results.json"));
-    write_file_atomic(tmp_dir / "results.json", results_text(j));  // shortest round-trip numbers
+    const std::string text = results_text(j);  // shortest round-trip numbers
+    // never a results.json this armstudy would refuse to read back (the folder would be
+    // "not armstudy's" from then on): the earlier report stays
+    if (text.size() > cases::kMaxResultsJsonBytes)
+      throw std::runtime_error(
+          "results.json of case '" + c.info.name + "' would be " + std::to_string(text.size()) +
+          " bytes, beyond the " + std::to_string(cases::kMaxResultsJsonBytes) +
+          " bytes armstudy reads back (docs/budgets.md); nothing was written: please report "
+          "this case");
+    write_file_atomic(tmp_dir / "results.json", text);
 
     swap_into_place(tmp_dir, final_dir, tmp_dir.parent_path().parent_path() / "old" / c.info.name,
                     c.info.name);

@@ -12,6 +12,7 @@
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
 #include "app/replay_json.hpp"
+#include "app/stored_series.hpp"
 #include "app/study_entry.hpp"
 #include "cases/time_optimal_case.hpp"
 #include "report/motion_csv.hpp"
@@ -86,9 +87,12 @@ Results::Solver solver_section(const to::SolverResult& r, int nj) {
   o.iterations = r.iterations;
   if (!r.solved) return o;
   o.violation = violation_section(r.violation, nj);
-  o.node_s = r.node_s;
-  o.node_sd = r.node_sd;
-  o.node_t_s = r.node_t;
+  // a huge grid as a subsample (app/stored_series.hpp); the study keeps every node
+  const int stride = stored_stride(r.node_s.size());
+  o.node_s = stored(r.node_s, stride);
+  o.node_sd = stored(r.node_sd, stride);
+  o.node_t_s = stored(r.node_t, stride);
+  o.node_stride = stride;
   const to::MotionSamples& s = r.samples;
   o.samples =
       Results::Samples{s.t, s.s, s.sd, s.sdd, rows(s.q), rows(s.qd), rows(s.qdd), rows(s.tau)};
@@ -230,16 +234,20 @@ Results TimeOptimalRun::study_results() const {
   o.limits.torque_Nm = joints(spec_.torque_limit);
   if (spec_.acceleration_limit) o.limits.acceleration_rad_s2 = joints(*spec_.acceleration_limit);
   for (const auto& s : r.solvers) o.solvers.push_back(solver_section(s, nj));
-  o.mvc = {r.mvc_s, r.mvc_sd, r.mvc_velocity_sd};
+  const int mvc_stride = stored_stride(r.mvc_s.size());
+  o.mvc = {stored(r.mvc_s, mvc_stride), stored(r.mvc_sd, mvc_stride),
+           stored(r.mvc_velocity_sd, mvc_stride), mvc_stride};
   for (const auto& row : r.convergence)
     o.convergence.push_back({row.segments, row.levels, row.solved, row.solved ? row.duration : NAN,
                              row.solved ? row.excess : NAN, row.run_time,
                              row.solved ? row.worst_violation : NAN, row.message});
-  o.motion.t_s = r.motion_t;
-  o.motion.s = r.motion_s;
-  for (int k = 0; k < r.motion_p.cols(); ++k) {
-    o.motion.tip_m.push_back(pair(r.motion_p.col(k)));
-    o.motion.q_rad.push_back(joints(r.motion_q.col(k)));
+  const int motion_stride = stored_stride(r.motion_t.size());
+  o.motion.t_s = stored(r.motion_t, motion_stride);
+  o.motion.s = stored(r.motion_s, motion_stride);
+  o.motion.stride = motion_stride;
+  for (size_t k : stored_indices(static_cast<size_t>(r.motion_p.cols()), motion_stride)) {
+    o.motion.tip_m.push_back(pair(r.motion_p.col(static_cast<Eigen::Index>(k))));
+    o.motion.q_rad.push_back(joints(r.motion_q.col(static_cast<Eigen::Index>(k))));
   }
   if (r.grid.computed) {
     const to::GridConvergence& g = r.grid;

@@ -15,7 +15,8 @@ struct CaseError {
   int line = 0;
   int column = 0;
   std::string message;
-  /// "path:line:col: message" (or "path: message" without a position).
+  /// "path:line:col: message" (or "path: message" without a position); a control
+  /// character of the path as \xNN.
   std::string format() const;
 };
 

@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <regex>
+#include <string>
+#include <unordered_map>
+#include <vector>
 
 #include "cases/yaml_reader.hpp"
 
@@ -29,7 +32,7 @@ YAML::Node node_at(const YAML::Node& root, const std::string& path) {
       const size_t i = std::stoul(m[2].str());
       if (!next.IsSequence() || i < 1 || i > next.size())
         return YAML::Node(YAML::NodeType::Undefined);
-      next = next[i - 1];
+      next.reset(next[i - 1]);  // (`next = ...` would write the entry over the list)
     }
     cur.reset(next);
     if (dot == std::string::npos) return cur;
@@ -80,7 +83,10 @@ std::string resolve(const YAML::Node& root, SensitivityItem& it) {
     return "";
   }
   const auto v = number_of(n);
-  if (!v) return "'" + brief(it.key) + "' is not a number in the case file";
+  if (!v)
+    return "'" + brief(it.key) + "' is " +
+           (n.IsScalar() ? "'" + brief(n.Scalar()) + "'" : std::string("not a number")) +
+           " in the case file; expected a key whose value is a number (or a list of numbers)";
   it.nominal.push_back(*v);
   return "";
 }
@@ -93,6 +99,13 @@ SensitivitySpec read_sensitivity(Map& root) {
   if (!root.has("sensitivity")) return out;
   auto list = root.seq("sensitivity");
   if (!list) return out;
+  struct Repeats {
+    YAML::Mark first;
+    int count = 0;
+    YAML::Mark second{};
+  };
+  std::unordered_map<std::string, Repeats> seen;
+  std::vector<std::string> repeated;  // in the order of their second entries
   for (size_t i = 0; i < list->size(); ++i) {
     const YAML::Node e = list->at(i);
     SensitivityItem it;
@@ -154,10 +167,20 @@ SensitivitySpec read_sensitivity(Map& root) {
         continue;
       }
     }
-    for (const SensitivityItem& o : out.items)
-      if (o.key == it.key)
-        list->diag().error(e.Mark(), "'" + brief(it.key) + "' is listed twice in 'sensitivity'");
+    // a repeat is said once per key, at its second entry (a hash of the keys: linear)
+    const auto [first, fresh] = seen.try_emplace(it.key, Repeats{e.Mark(), 1});
+    if (!fresh && ++first->second.count == 2) {
+      first->second.second = e.Mark();
+      repeated.push_back(it.key);
+    }
     out.items.push_back(std::move(it));
+  }
+  for (const std::string& key : repeated) {
+    const Repeats& r = seen.at(key);
+    list->diag().error(
+        r.second, "'" + brief(key) + "' is listed " +
+                      (r.count == 2 ? std::string("twice") : std::to_string(r.count) + " times") +
+                      " in 'sensitivity'; expected each key once");
   }
   return out;
 }

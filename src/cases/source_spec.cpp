@@ -66,10 +66,14 @@ SourceClaim read_claim(Map& c) {
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
     const bool number = !text.empty() && end && *end == '\0' && std::isfinite(v);
-    if (!number && !valid_path(text))
+    if (number) {
+      // read as every case number is: no hexadecimal (0x10), no denormal (1e-309)
+      if (c.number("b", NumberRule::any(""))) out.b = text;
+    } else if (!valid_path(text)) {
       c.error("b", "'b' is '" + brief(text) + "'; expected a number or a value path");
-    else
+    } else {
       out.b = text;
+    }
   } else {
     c.error("b", "missing required key 'b' (a value path or a number)");
   }

@@ -11,6 +11,13 @@
 
 namespace armstudy::cases {
 namespace {
+
+// why a point `d` from the one before it is refused: a repeat, or nearer than 1e-9
+std::string too_close(double d, const std::string& what, const std::string& unit) {
+  const std::string want = "; expected consecutive " + what + "s at least 1e-09 " + unit + " apart";
+  if (d == 0) return "repeats the " + what + " before it" + want;
+  return "is only " + format_number(d) + " " + unit + " from the " + what + " before it" + want;
+}
 namespace to = studies::time_optimal;
 
 // a per-joint list of limits >= 0, one per joint of the arm
@@ -69,9 +76,9 @@ bool read_waypoints(Seq& pts, int joints, const std::string& want, to::Spec* spe
       continue;
     }
     if (!spec->joint_path.points.empty() && (q - spec->joint_path.points.back()).norm() < 1e-9) {
-      pts.diag().error(n.Mark(), "'" + pts.path_at(i) +
-                                     "' repeats the waypoint before it; expected "
-                                     "distinct consecutive waypoints");
+      pts.diag().error(
+          n.Mark(), "'" + pts.path_at(i) + "' " +
+                        too_close((q - spec->joint_path.points.back()).norm(), "waypoint", "rad"));
       all_read = false;
       continue;
     }
@@ -233,9 +240,9 @@ void load_path(Map& t, to::Spec* spec) {
     if (!x || !y) continue;
     const Eigen::Vector2d p(*x, *y);
     if (!spec->path.points.empty() && (p - spec->path.points.back()).norm() < 1e-9) {
-      pts->diag().error(n.Mark(), "'" + pts->path_at(i) +
-                                      "' repeats the point before it; expected "
-                                      "distinct consecutive points");
+      pts->diag().error(n.Mark(),
+                        "'" + pts->path_at(i) + "' " +
+                            too_close((p - spec->path.points.back()).norm(), "point", "m"));
       continue;
     }
     spec->path.points.push_back(p);

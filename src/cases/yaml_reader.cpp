@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
@@ -48,6 +50,17 @@ std::string format_number(double v) {
   return os.str();
 }
 
+std::string exact_number(double v) {
+  if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+    return buf;
+  }
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest round trip, C locale
+  return std::string(buf, r.ptr);
+}
+
 void Diagnostics::error(const YAML::Mark& mark, std::string message) {
   if (errors_.size() >= kMaxErrors) {
     ++dropped_;
@@ -81,15 +94,13 @@ std::string violation(double v, const NumberRule& rule) {
   if (rule.sign == NumberRule::Sign::kNonNegative && !(v >= 0)) return "should be >= 0" + u;
   if (rule.min && v < *rule.min) {
     if (rule.max)
-      return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" +
-             u;
-    return "should be >= " + format_number(*rule.min) + u;
+      return "should be in [" + exact_number(*rule.min) + ", " + exact_number(*rule.max) + "]" + u;
+    return "should be >= " + exact_number(*rule.min) + u;
   }
   if (rule.max && v > *rule.max) {
     if (rule.min)
-      return "should be in [" + format_number(*rule.min) + ", " + format_number(*rule.max) + "]" +
-             u;
-    return "should be <= " + format_number(*rule.max) + u;
+      return "should be in [" + exact_number(*rule.min) + ", " + exact_number(*rule.max) + "]" + u;
+    return "should be <= " + exact_number(*rule.max) + u;
   }
   return "";
 }
@@ -170,7 +181,7 @@ std::optional<double> read_number(const YAML::Node& node, Diagnostics& diag, std
   }
   const std::string bad = violation(v, rule);
   if (!bad.empty()) {
-    diag.error(node.Mark(), name + " is " + format_number(v) + "; " + bad);
+    diag.error(node.Mark(), name + " is " + exact_number(v) + "; " + bad);
     return std::nullopt;
   }
   return v;
@@ -603,16 +614,17 @@ std::optional<Map> Seq::map_at(size_t i) const {
 
 // ----------------------------------------------------------------------------- files
 
-std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag,
-                                     std::string* text) {
+std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text,
+                                     const std::string& expected) {
   std::string bytes;
   if (!read_regular_file(path, diag, &bytes)) return std::nullopt;
-  auto root = parse_text(bytes, diag);
+  auto root = parse_text(bytes, diag, expected);
   if (text) *text = std::move(bytes);
   return root;
 }
 
-std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag) {
+std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag,
+                                     const std::string& expected) {
   // old Mac line breaks (a CR alone): yaml-cpp reads a file of them as one line, often a
   // comment, so "the file is empty"; as LF, one for one, the lines and columns stay
   std::string bytes = text;
@@ -627,13 +639,11 @@ std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag)
     return std::nullopt;
   }
   if (root.IsNull() || !root.IsDefined()) {
-    diag.error(YAML::Mark::null_mark(),
-               "the file is empty; expected a YAML mapping with 'study:' and 'name:'");
+    diag.error(YAML::Mark::null_mark(), "the file is empty; expected " + expected);
     return std::nullopt;
   }
   if (!root.IsMap()) {
-    diag.error(root.Mark(), "the file holds " + describe_kind(root) +
-                                "; expected a YAML mapping with 'study:' and 'name:'");
+    diag.error(root.Mark(), "the file holds " + describe_kind(root) + "; expected " + expected);
     return std::nullopt;
   }
   return root;

@@ -85,6 +85,10 @@ struct NumberRule {
 /// A number as messages show it: 6 significant digits, C locale ("0.4", "1e-06").
 std::string format_number(double v);
 
+/// A number exactly, for a limit and the value that broke it: a whole number below 1e15
+/// in full ("1000001", never "1e+06"), else the shortest text that reads back to it.
+std::string exact_number(double v);
+
 /// Magnitudes a case number may have (besides 0): products of a few of them stay finite
 /// and normal in double precision. Beyond them a number is refused as out of range.
 inline constexpr double kMaxMagnitude = 1e100;
@@ -222,14 +226,21 @@ class Seq {
   std::string context_;
 };
 
+/// What a case file is, for the message of an empty file or a root that is no mapping.
+inline const std::string kCaseFileExpected = "a YAML mapping with 'study:' and 'name:'";
+
 /// Parses a YAML file; on a file that is not a regular file of at most kMaxFileBytes, text
 /// or structure refused by check_yaml_source, a syntax error, an empty file or a
 /// non-mapping root, records the error and returns nullopt. `text` receives the bytes.
-std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text);
+/// `expected` is what an empty file or another root should have been (a case file's by
+/// default).
+std::optional<YAML::Node> parse_file(const std::string& path, Diagnostics& diag, std::string* text,
+                                     const std::string& expected = kCaseFileExpected);
 
 /// Parses YAML text like parse_file (errors recorded against diag's path). Line breaks
 /// may be LF, CRLF or a CR alone.
-std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag);
+std::optional<YAML::Node> parse_text(const std::string& text, Diagnostics& diag,
+                                     const std::string& expected = kCaseFileExpected);
 
 /// The closest of `candidates` to `word` by edit distance, if close enough to suggest.
 std::optional<std::string> closest(std::string_view word,

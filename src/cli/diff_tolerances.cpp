@@ -91,7 +91,9 @@ DiffTolerances load_diff_tolerances(const std::string& path) {
   DiffTolerances out;
   out.file = path;
   // a missing file, a FIFO, a device or a link loop: refused by parse_file, never waited on
-  const auto root_node = cases::parse_file(path, diag, nullptr);
+  const auto root_node = cases::parse_file(
+      path, diag, nullptr,
+      "a YAML mapping of tolerances ('default:', 'studies:' and/or 'frames:'; docs/ci.md)");
   if (!root_node) diag.throw_if_any();
   cases::Map root(*root_node, diag, "");
   out.fallback = read_tolerance(root, "default", path);

@@ -105,7 +105,8 @@ int cmd_validate(const std::vector<std::string>& paths, bool allow_large) {
   std::vector<LoadedCase> cases;
   const bool ok = load_all(paths, &cases, allow_large);
   for (const auto& c : cases)
-    std::printf("ok: %s (study %s, case %s)\n", c.info.path.c_str(), c.info.study.c_str(),
+    std::printf("ok: %s (study %s, case %s)\n",
+                armstudy::report::terminal_text(c.info.path).c_str(), c.info.study.c_str(),
                 c.info.name.c_str());
   return ok ? kExitDone : kExitBadInput;
 }
@@ -354,11 +355,11 @@ CaseEnd run_one_case(LoadedCase& c, const armstudy::app::RunOptions& case_option
   } catch (const armstudy::report::ForeignOutput& e) {
     code = kExitBadInput;  // a user's folder of the case's name appeared during the run
     error = e.what();
-    line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
+    line = "ERROR: " + name + ": " + armstudy::report::terminal_lines(error);
   } catch (const armstudy::scene::ModelError& e) {
     code = kExitBadInput;  // MuJoCo cannot load the arm the case describes
     error = e.what();
-    line = "ERROR: " + name + " (" + c.info.path + "): " + armstudy::report::terminal_text(error);
+    line = "ERROR: " + name + " (" + c.info.path + "): " + armstudy::report::terminal_lines(error);
   } catch (const std::bad_alloc&) {
     code = kExitRuntime;
     error = "out of memory: the case's estimate is " + armstudy::cases::bytes_text(need) +
@@ -370,7 +371,7 @@ CaseEnd run_one_case(LoadedCase& c, const armstudy::app::RunOptions& case_option
   } catch (const std::exception& e) {
     code = kExitRuntime;
     error = e.what();
-    line = "ERROR: " + name + ": " + armstudy::report::terminal_text(error);
+    line = "ERROR: " + name + ": " + armstudy::report::terminal_lines(error);
   }
   summary.update({{"result", "error"}, {"exit_code", code}, {"message", error}});
   return {code, line, error, summary};
@@ -497,6 +498,14 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
     std::fprintf(stderr, "armstudy: %s; nothing was written\n",
                  armstudy::report::missing_chromium_text().c_str());
     return kExitRuntime;
+  }
+  // the report templates, read before anything is solved (a FIFO or a device among them)
+  try {
+    armstudy::report::check_templates();
+  } catch (const armstudy::cases::InputFileError& e) {
+    std::fprintf(stderr, "armstudy: %s; nothing was run\n",
+                 armstudy::report::terminal_text(e.what()).c_str());
+    return e.runtime() ? kExitRuntime : kExitBadInput;
   }
   // a stable subset: cases sorted by name, every N-th from I
   if (!take_shard(shard, &cases)) return kExitBadInput;

@@ -3,10 +3,14 @@
 #include "cli/sweep_manifest.hpp"
 
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_set>
 
 #include <nlohmann/json.hpp>
+
+#include "cases/yaml_source.hpp"
 
 namespace armstudy::cli {
 namespace fs = std::filesystem;
@@ -14,7 +18,22 @@ using nlohmann::json;
 
 namespace {
 constexpr std::uintmax_t kMaxManifestBytes = 16u << 20;
+
+// the ids a manifest may list: at least one, each a case name (letters, digits, '.', '_'
+// or '-', as load_case.cpp checks a case's name: never "", "../x" or "/etc"), each once
+void check_case_ids(const std::vector<std::string>& ids) {
+  static const std::regex ok("[A-Za-z0-9][A-Za-z0-9._-]{0,99}");
+  if (ids.empty()) throw std::runtime_error("\"cases\" is empty; expected the sweep's case ids");
+  std::unordered_set<std::string> seen;
+  for (const std::string& id : ids) {
+    if (!std::regex_match(id, ok))
+      throw std::runtime_error("\"cases\" holds '" + cases::brief(id) + "'" +
+                               "; expected case names (letters, digits, '.', '_' or '-')");
+    if (!seen.insert(id).second)
+      throw std::runtime_error("\"cases\" lists '" + id + "' twice; expected each case once");
+  }
 }
+}  // namespace
 
 std::string manifest_text(const SweepManifest& m) {
   const json j = {{"armstudy_sweep_manifest", 1},
@@ -49,6 +68,7 @@ std::optional<SweepManifest> read_manifest(const fs::path& path) {
     m.sweep = j.at("sweep").get<std::string>();
     m.sweep_file = j.at("sweep_file").get<std::string>();
     m.cases = j.at("cases").get<std::vector<std::string>>();
+    check_case_ids(m.cases);
   } catch (const std::exception& e) {
     throw std::runtime_error(where + "not a sweep manifest of this armstudy (" +
                              std::string(dynamic_cast<const json::exception*>(&e)

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "cases/input_file.hpp"
 #include "report/animation_view.hpp"
 #include "report/number_format.hpp"
 #include "report/owned_output.hpp"
@@ -31,6 +32,9 @@ namespace {
 
 // the largest results.json the run's index reads (as merge and diff, docs/budgets.md)
 constexpr std::uintmax_t kMaxIndexedResultsBytes = std::uintmax_t(16) << 20;
+// the templates are a few kB each
+constexpr std::size_t kMaxTemplateBytes = std::size_t(1) << 20;
+constexpr const char* kTemplateNames[] = {"case.html", "index.html", "report.css"};
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -40,12 +44,70 @@ std::string read_text(const fs::path& p) {
   return ss.str();
 }
 
+// a template, read as every input is (cases/input_file.hpp): a regular file of at most
+// kMaxTemplateBytes, never a FIFO or a device that would block or never end
+std::string read_template(const fs::path& p) {
+  return cases::read_input_file(p.string(), {kMaxTemplateBytes, "template file", true});
+}
+
 // through a temporary file, removed on failure; the error says why (disk full, ...)
 void write_text(const fs::path& p, const std::string& text) { sys::write_file_atomic(p, text); }
 
+}  // namespace
+
+void check_templates() {
+  const fs::path dir = template_dir();
+  for (const char* name : kTemplateNames) {
+    std::string text;
+    try {
+      text = read_template(dir / name);
+    } catch (const cases::InputFileError& e) {
+      throw cases::InputFileError(std::string("the report template ") + e.what() +
+                                      " (the folder is $ARMSTUDY_TEMPLATE_DIR, or the installed "
+                                      "share/armstudy/templates)",
+                                  e.runtime());
+    }
+    if (std::string(name).ends_with(".html")) {
+      mus::mustache tmpl{text};
+      if (!tmpl.is_valid())
+        throw cases::InputFileError(
+            "the report template " + (dir / name).string() + ": " + tmpl.error_message(), false);
+    }
+  }
+}
+
+namespace {
+
+// {{x}} of a page: & < > " ' as entities, and a control character (but tab, newline and
+// carriage return: an ESC of a description's "\e[31m") as the visible text \xNN
+std::string page_escape(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    switch (ch) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default:
+        if ((c < 0x20 && ch != '\t' && ch != '\n' && ch != '\r') || c == 0x7F) {
+          char hex[8];
+          std::snprintf(hex, sizeof hex, "\\x%02X", c);
+          out += hex;
+        } else {
+          out += ch;
+        }
+    }
+  }
+  return out;
+}
+
 // renders a template of template_dir(); {{x}} escapes html (& < > " '), {{{x}}} is never used
 std::string render_template(const std::string& name, const mus::data& data) {
-  mus::mustache tmpl{read_text(template_dir() / name)};
+  mus::mustache tmpl{read_template(template_dir() / name)};
+  tmpl.set_custom_escape(page_escape);
   if (!tmpl.is_valid()) throw std::runtime_error("template " + name + ": " + tmpl.error_message());
   std::string html = tmpl.render(data);
   if (!tmpl.error_message().empty())
@@ -56,7 +118,7 @@ std::string render_template(const std::string& name, const mus::data& data) {
 // the template's stylesheet plus one swatch class per plot colour (the page's CSP forbids
 // inline styles, so a table row's colour is a class: .swatch.c0072b2)
 void copy_stylesheet(const fs::path& dir) {
-  std::string css = read_text(template_dir() / "report.css");
+  std::string css = read_template(template_dir() / "report.css");
   css += "\n/* plot colours, generated */\n";
   for (const Rgb& c : palette_colours()) {
     const std::string hex = css_colour(c);

@@ -86,6 +86,12 @@ std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord
 /// <prefix>/share/armstudy/templates beside the program's <prefix>/bin (from /proc/self/exe).
 std::filesystem::path template_dir();
 
+/// Reads every template of template_dir() as every input is read (a regular file of at most
+/// 1 MiB, never a FIFO or a device) and parses the pages' templates, so that a run learns
+/// before it solves anything that it could not write its pages. @throws
+/// cases::InputFileError naming the template and the reason (runtime() for an I/O error).
+void check_templates();
+
 /// Chromium could not be found or did not print.
 class PdfError : public std::runtime_error {
  public:

@@ -24,7 +24,10 @@ double FigureDiff::rel_change() const {
   if (!base || !now) return NAN;
   const double d = *now - *base;
   if (d == 0) return 0;
-  return *base == 0 ? (d > 0 ? INFINITY : -INFINITY) : d / std::abs(*base);
+  if (*base == 0) return d > 0 ? INFINITY : -INFINITY;
+  // 1e308 to -1e308: the difference overflows, the ratio does not (-2, not "from 0")
+  if (!std::isfinite(d)) return *now / std::abs(*base) - (*base > 0 ? 1 : -1);
+  return d / std::abs(*base);
 }
 
 bool CaseDiff::beyond() const {

@@ -40,6 +40,21 @@ std::string terminal_text(const std::string& s) {
   return o;
 }
 
+std::string terminal_lines(const std::string& s, const std::string& indent) {
+  std::string o;
+  size_t at = 0;
+  while (true) {
+    const size_t nl = s.find('\n', at);
+    std::string line = s.substr(at, nl == std::string::npos ? std::string::npos : nl - at);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    o += terminal_text(line);
+    if (nl == std::string::npos || nl + 1 == s.size()) break;
+    o += "\n" + indent;
+    at = nl + 1;
+  }
+  return o;
+}
+
 std::string xml_text(const std::string& s) {
   std::string o;
   o.reserve(s.size());

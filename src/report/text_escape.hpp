@@ -15,6 +15,11 @@ namespace armstudy::report {
 /// `\\`; everything else as it is.
 std::string terminal_text(const std::string& s);
 
+/// For a message of several lines (MuJoCo's "fromto points too close\nObject name = ...")
+/// on a terminal: each line as terminal_text, the lines after the first on lines of their
+/// own indented by `indent` (never a literal `\n`).
+std::string terminal_lines(const std::string& s, const std::string& indent = "  ");
+
 /// For XML 1.0 text and attribute values: & < > " ' as entities, tab and newline as
 /// character references, and every character XML 1.0 does not allow (C0 controls, U+FFFE,
 /// U+FFFF, bytes that are not UTF-8) as the visible text `\xNN`.

@@ -12,7 +12,16 @@
 #include <stdexcept>
 #include <vector>
 
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <thread>
 
 #include "scene/phase_times.hpp"
 #include "scene/png_writer.hpp"
@@ -25,16 +34,23 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+// a pipe, both ends close-on-exec (spawn gives the child its end as a copy); false when
+// out of descriptors
+bool make_pipe(int fds[2]) { return ::pipe2(fds, O_CLOEXEC) == 0; }
+
+// "N s" of the helper timeout, for messages
+std::string timeout_text() {
+  char secs[32];
+  std::snprintf(secs, sizeof secs, "%g s", sys::helper_timeout_seconds());
+  return secs;
 }
 
 // frames as raw RGB into ffmpeg's stdin: H.264 in MP4, yuv420p (plays everywhere), one
 // thread and bit-exact flags so that the same frames give the same file; x264's veryfast
 // preset: about 0.6x medium's CPU on these flat-shaded scenes at the same crf, 46 dB PSNR
-// against medium's 48 and a file about 5 % larger
+// against medium's 48 and a file about 5 % larger. ffmpeg is watched: when it takes no
+// input, says nothing and does not end for sys::helper_timeout_seconds(), it is killed and
+// the video left out (its messages, the last 2 kB, say why it failed).
 bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, double fps,
                  const fs::path& out, std::string* why) {
   PhaseScope phase("video");
@@ -42,38 +58,166 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
   char rate[64];
   std::snprintf(rate, sizeof rate, "%.6f", fps);
   const fs::path tmp = out.string() + ".tmp.mp4";
-  const std::string cmd =
-      quote(ffmpeg) + " -loglevel error -nostdin -y -f rawvideo -pix_fmt rgb24 -s " +
-      std::to_string(frames.front().width) + "x" + std::to_string(frames.front().height) +
-      " -framerate " + rate + " -i - -vf crop=" + std::to_string(w) + ":" + std::to_string(h) +
-      ":0:0 -c:v libx264 -preset veryfast -crf 20 -pix_fmt yuv420p"
-      " -threads 1 -map_metadata -1 -fflags +bitexact -flags:v +bitexact"
-      " -movflags +faststart " +
-      quote(tmp.string()) + " 2>&1";
-  // close-on-exec ("e"): a process another thread starts meanwhile (Chromium, another case's
-  // ffmpeg) must not inherit this pipe's end, or ffmpeg waits for that process to end
-  FILE* p = ::popen(cmd.c_str(), "we");
-  if (!p) {
-    *why = "cannot start ffmpeg";
+  std::error_code ec;
+  fs::remove(tmp, ec);
+  sys::SpawnOptions o;
+  o.argv = {ffmpeg,
+            "-loglevel",
+            "error",
+            "-nostdin",
+            "-y",
+            "-f",
+            "rawvideo",
+            "-pix_fmt",
+            "rgb24",
+            "-s",
+            std::to_string(frames.front().width) + "x" + std::to_string(frames.front().height),
+            "-framerate",
+            rate,
+            "-i",
+            "-",
+            "-vf",
+            "crop=" + std::to_string(w) + ":" + std::to_string(h) + ":0:0",
+            "-c:v",
+            "libx264",
+            "-preset",
+            "veryfast",
+            "-crf",
+            "20",
+            "-pix_fmt",
+            "yuv420p",
+            "-threads",
+            "1",
+            "-map_metadata",
+            "-1",
+            "-fflags",
+            "+bitexact",
+            "-flags:v",
+            "+bitexact",
+            "-movflags",
+            "+faststart",
+            tmp.string()};
+  o.env = sys::current_environment();
+  o.default_signals = {SIGPIPE, SIGINT, SIGTERM, SIGHUP};
+  o.death_signal = SIGKILL;  // dies with this thread (and with armstudy)
+  // close-on-exec ends: a process another thread starts meanwhile (Chromium, another
+  // case's ffmpeg) must not inherit them, or ffmpeg waits for that process to end
+  int in[2], msg[2];
+  if (!make_pipe(in)) {
+    *why = "cannot start ffmpeg: " + std::string(std::strerror(errno));
     return false;
   }
-  bool ok = true;
-  for (const Image& f : frames) ok &= std::fwrite(f.rgb.data(), 1, f.rgb.size(), p) == f.rgb.size();
-  const int rc = ::pclose(p);
-  if (!ok || rc != 0) {
-    std::error_code ec;
+  if (!make_pipe(msg)) {
+    const int err = errno;
+    ::close(in[0]), ::close(in[1]);
+    return *why = "cannot start ffmpeg: " + std::string(std::strerror(err)), false;
+  }
+  o.fds = {{in[0], 0}, {msg[1], 1}, {msg[1], 2}};
+  int error = 0;
+  const pid_t pid = sys::spawn(o, &error);
+  ::close(in[0]), ::close(msg[1]);
+  if (pid < 0) {
+    ::close(in[1]), ::close(msg[0]);
+    *why = "cannot start ffmpeg (" + ffmpeg + "): " + std::strerror(error);
+    return false;
+  }
+  const int timeout_ms = static_cast<int>(sys::helper_timeout_seconds() * 1000);
+  // this end never blocks: a frame goes in as far as ffmpeg takes it
+  ::fcntl(in[1], F_SETFL, ::fcntl(in[1], F_GETFL) | O_NONBLOCK);
+  // a write to an ffmpeg that has gone fails with EPIPE, never a SIGPIPE to this process
+  // (blocked in this thread, and a pending one taken below)
+  sigset_t pipe_signal, old_mask;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  ::pthread_sigmask(SIG_BLOCK, &pipe_signal, &old_mask);
+  std::string said;  // ffmpeg's messages, the last 2 kB
+  bool stuck = false, write_failed = false;
+  // the frames in, ffmpeg's messages out, until it has every frame and ends
+  size_t frame = 0, at = 0;
+  int in_fd = in[1];
+  bool msg_open = true;
+  while ((in_fd >= 0 || msg_open) && !stuck) {
+    if (in_fd >= 0 && frame == frames.size()) {
+      ::close(in_fd), in_fd = -1;
+      continue;
+    }
+    pollfd p[2] = {{msg_open ? msg[0] : -1, POLLIN, 0}, {in_fd, POLLOUT, 0}};
+    const int r = ::poll(p, 2, timeout_ms);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) {
+      stuck = r == 0;
+      break;
+    }
+    if (p[0].revents) {
+      char buf[4096];
+      const ssize_t got = ::read(msg[0], buf, sizeof buf);
+      if (got > 0) {
+        said.append(buf, static_cast<size_t>(got));
+        if (said.size() > 2048) said.erase(0, said.size() - 2048);
+      } else if (got == 0 || errno != EINTR) {
+        msg_open = false;
+      }
+    }
+    if (in_fd >= 0 && p[1].revents) {
+      const Image& f = frames[frame];
+      const ssize_t put = ::write(in_fd, f.rgb.data() + at, f.rgb.size() - at);
+      if (put > 0) {
+        at += static_cast<size_t>(put);
+        if (at == f.rgb.size()) ++frame, at = 0;
+      } else if (put < 0 && errno != EINTR && errno != EAGAIN) {
+        write_failed = true;  // ffmpeg closed its input (it failed: its messages say why)
+        ::close(in_fd), in_fd = -1;
+      }
+    }
+  }
+  if (in_fd >= 0) ::close(in_fd);
+  const timespec now{0, 0};
+  while (::sigtimedwait(&pipe_signal, nullptr, &now) == SIGPIPE) {
+  }
+  ::pthread_sigmask(SIG_SETMASK, &old_mask, nullptr);
+  ::close(msg[0]);
+  // its end: waited for at most the timeout once its output has closed
+  int status = 0;
+  const auto until =
+      std::chrono::steady_clock::now() + std::chrono::milliseconds(stuck ? 0 : timeout_ms);
+  pid_t done = 0;
+  while ((done = ::waitpid(pid, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (done == 0) {
+    stuck = true;
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  while (!said.empty() && (said.back() == '\n' || said.back() == '\r')) said.pop_back();
+  const auto fail = [&](const std::string& text) {
     fs::remove(tmp, ec);
-    *why = "ffmpeg failed (exit status " + std::to_string(rc) + ")";
+    *why = text;
     return false;
-  }
-  fs::rename(tmp, out);
+  };
+  if (stuck)
+    return fail("ffmpeg (" + ffmpeg + ") made no progress for " + timeout_text() +
+                " (ARMSTUDY_HELPER_TIMEOUT_S) and was ended");
+  const bool exited_ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  if (exited_ok && write_failed)
+    return fail("ffmpeg (" + ffmpeg + ") ended without taking every frame or writing the video");
+  if (!exited_ok)
+    return fail("ffmpeg failed (" +
+                (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                   : "signal " + std::to_string(WTERMSIG(status))) +
+                (said.empty() ? "" : ": " + said) + ")");
+  if (!fs::is_regular_file(fs::symlink_status(tmp, ec)) || fs::file_size(tmp, ec) == 0)
+    return fail("ffmpeg (" + ffmpeg + ") ended without writing the video");
+  fs::rename(tmp, out, ec);
+  if (ec) return fail("cannot rename " + tmp.string() + ": " + ec.message());
   return true;
 }
 
 }  // namespace
 
 std::string find_ffmpeg() {
-  if (const char* env = std::getenv("ARMSTUDY_FFMPEG"); env && *env) return env;
+  // a name without a folder is looked for on PATH (the program is started without a shell)
+  if (const char* env = std::getenv("ARMSTUDY_FFMPEG"); env && *env)
+    return std::string(env).find('/') == std::string::npos ? sys::find_on_path({env}) : env;
   return sys::find_on_path({"ffmpeg"});
 }
 

@@ -141,10 +141,11 @@ inline Packed pack(Kind kind) {
   return out;
 }
 
-/// Writes everything; false if the other end is gone.
-bool send_all(int fd, const char* p, std::size_t n);
-/// Sends a packed message (its bytes, then its pixels); false if the other end is gone.
-bool send(int fd, const Packed& m);
+/// Writes everything, waiting at most timeout_ms for the other end to take each part (-1:
+/// no limit); false if the other end is gone or the time ran out (`timed_out` set).
+bool send_all(int fd, const char* p, std::size_t n, int timeout_ms = -1, bool* timed_out = nullptr);
+/// Sends a packed message (its bytes, then its pixels); false as send_all.
+bool send(int fd, const Packed& m, int timeout_ms = -1, bool* timed_out = nullptr);
 /// Reads exactly n bytes, waiting at most timeout_ms for each part (-1: no limit); false at
 /// the end of the connection, on an error or when the time ran out (`timed_out` set).
 bool read_all(int fd, char* p, std::size_t n, int timeout_ms, bool* timed_out = nullptr);

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -27,8 +28,18 @@ namespace wire = frame_wire;  // the messages (scene/frame_messages.hpp)
 
 namespace {
 
-// how long the parent waits for the helper's next bytes before it gives up on it
-constexpr int kAnswerTimeoutMs = 120000;
+// how long the parent waits for the helper to take or give its next bytes before it ends
+// it (ARMSTUDY_HELPER_TIMEOUT_S, 120 s by default)
+int answer_timeout_ms() { return static_cast<int>(sys::helper_timeout_seconds() * 1000); }
+
+// the error of a helper that made no progress (it has been killed)
+HelperStuck stuck(int pid) {
+  char secs[32];
+  std::snprintf(secs, sizeof secs, "%g", sys::helper_timeout_seconds());
+  return HelperStuck("the frame helper (armstudy-frames, " + frame_worker_program() + ", pid " +
+                     std::to_string(pid) + ") made no progress for " + secs +
+                     " s (ARMSTUDY_HELPER_TIMEOUT_S) and was ended");
+}
 
 }  // namespace
 
@@ -85,8 +96,13 @@ std::unique_ptr<FrameWorker> FrameWorker::spawn(std::string* why) {
 }
 
 void FrameWorker::send_message(const frame_wire::Packed& message) {
-  if (!wire::send(fd_, message)) {
+  bool timed_out = false;
+  if (!wire::send(fd_, message, answer_timeout_ms(), &timed_out)) {
     failed_ = true;
+    if (timed_out) {
+      ::kill(pid_, SIGKILL);
+      throw stuck(pid_);
+    }
     throw SceneError("the frame helper (armstudy-frames) closed the connection");
   }
 }
@@ -101,7 +117,7 @@ void FrameWorker::load(const ArmScene& scene, const std::string& source,
 // the answers to the loads asked for, in order: an error of the last is thrown, of an
 // earlier one (a scene replaced before it was drawn) dropped; false if the helper is gone
 bool FrameWorker::read_loads(bool* timed_out) {
-  wire::Reader in{fd_, kAnswerTimeoutMs};
+  wire::Reader in{fd_, answer_timeout_ms()};
   while (loads_pending_ > 0) {
     const char type = in.kind();
     if (!in.ok) return *timed_out = in.timed_out, false;
@@ -198,10 +214,11 @@ void FrameWorker::send(const WorkerPose& p) {
 Image FrameWorker::receive() {
   // any error below leaves the connection in an unknown state: this helper is not reused
   failed_ = true;
-  wire::Reader in{fd_, kAnswerTimeoutMs};
-  const auto gone = [&] {
-    return SceneError(in.timed_out ? "the frame helper (armstudy-frames) stopped answering"
-                                   : "the frame helper (armstudy-frames) ended unexpectedly");
+  wire::Reader in{fd_, answer_timeout_ms()};
+  const auto gone = [&]() -> SceneError {
+    if (!in.timed_out) return SceneError("the frame helper (armstudy-frames) ended unexpectedly");
+    ::kill(pid_, SIGKILL);
+    throw stuck(pid_);
   };
   if (!read_loads(&in.timed_out)) throw gone();
   if (frames_pending_ <= 0) throw SceneError("frame helper: no frame was asked for");

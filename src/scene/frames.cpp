@@ -9,6 +9,7 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <mutex>
 #include <thread>
 
 #include "core/kinematics.hpp"
@@ -121,6 +122,8 @@ void SceneRenderer::draw_frames(std::span<const PoseSample> samples,
   std::vector<char> taken(n, 0);
   std::atomic<size_t> next{0};
   std::vector<char> failed(helpers, 0);
+  std::exception_ptr stuck;  // a helper that made no progress (frame_worker.cpp)
+  std::mutex stuck_mutex;
   std::vector<std::thread> pool;
   for (size_t j = 0; j < helpers; ++j) {
     pool.emplace_back([&, j] {
@@ -147,6 +150,10 @@ void SceneRenderer::draw_frames(std::span<const PoseSample> samples,
           taken[k] = 1;
           asked.pop_front();
         }
+      } catch (const HelperStuck&) {
+        failed[j] = 1;  // ended: the case ends with its error (below)
+        const std::lock_guard<std::mutex> lock(stuck_mutex);
+        if (!stuck) stuck = std::current_exception();
       } catch (...) {
         failed[j] = 1;  // its frames not drawn are drawn here (below)
       }
@@ -164,6 +171,11 @@ void SceneRenderer::draw_frames(std::span<const PoseSample> samples,
   }
   for (auto& t : pool) t.join();
   if (here) std::rethrow_exception(here);
+  if (stuck) {
+    workers_failed_ = true;
+    workers_.clear();
+    std::rethrow_exception(stuck);
+  }
   // a helper that failed (died, or its scene raised an error): the frames it did not give
   // are drawn here (where an error of the scene itself is raised again), and no helper is
   // asked again

@@ -10,6 +10,7 @@
 #include "scene/chain_map.hpp"
 #include "scene/frames.hpp"
 #include "scene/mujoco_model.hpp"
+#include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
@@ -61,10 +62,7 @@ std::string write_model_xml(const std::filesystem::path& dir, const core::Planar
                             const std::string& motion, const std::string& source) {
   const std::string text = mjcf_with_keyframes(chain, mjcf, keys, motion, source);
   const std::filesystem::path path = dir / kModelFile;
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  f << text;
-  f.close();
-  if (!f) throw SceneError("cannot write " + path.string());
+  write_bytes(path, text);  // the error says why (No space left on device)
   return kModelFile;
 }
 

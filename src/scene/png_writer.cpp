@@ -3,12 +3,15 @@
 #include "scene/png_writer.hpp"
 
 #include <png.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <csetjmp>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <thread>
@@ -175,12 +178,24 @@ std::string encode_png(const Image& image, int threads) {
   return out;
 }
 
+void write_bytes(const std::filesystem::path& path, const std::string& bytes) {
+  FILE* f = std::fopen(path.c_str(), "wbe");
+  int err = f ? 0 : errno;
+  if (f) {
+    struct stat st {};
+    const bool regular = ::fstat(::fileno(f), &st) == 0 && S_ISREG(st.st_mode);
+    errno = 0;
+    if (std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size() || std::fflush(f) != 0)
+      err = errno ? errno : EIO;
+    if (std::fclose(f) != 0 && err == 0) err = errno ? errno : EIO;
+    if (err != 0 && regular) std::remove(path.c_str());  // never a device's node
+  }
+  if (err != 0) throw SceneError("cannot write " + path.string() + ": " + std::strerror(err));
+}
+
 void write_png(const std::filesystem::path& path, const Image& image, int threads) {
   const std::string bytes = encode_png(image, threads);
-  std::ofstream f(path, std::ios::binary);
-  f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  f.close();
-  if (!f) throw SceneError("cannot write " + path.string());
+  write_bytes(path, bytes);  // the error says why (No space left on device)
 }
 
 Image read_png(const std::filesystem::path& path) {

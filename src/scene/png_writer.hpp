@@ -18,6 +18,10 @@ namespace armstudy::scene {
 /// one libpng stream.
 std::string encode_png(const Image& image, int threads = 1);
 
+/// Writes `bytes` to `path`. @throws SceneError "cannot write <path>: <reason>" (No space
+/// left on device, Permission denied), the partial file removed.
+void write_bytes(const std::filesystem::path& path, const std::string& bytes);
+
 /// Writes `image` to `path` as PNG (encode_png). @throws SceneError naming the file if it
 /// cannot be written.
 void write_png(const std::filesystem::path& path, const Image& image, int threads = 1);

@@ -21,6 +21,13 @@ class ModelError : public SceneError {
   using SceneError::SceneError;
 };
 
+/// A helper process (the frame helper) that made no progress within
+/// sys::helper_timeout_seconds(): it was ended, and the case ends with this error (exit 3).
+class HelperStuck : public SceneError {
+ public:
+  using SceneError::SceneError;
+};
+
 /// Installs mju_user_error / mju_user_warning handlers (once per process): MuJoCo errors
 /// throw SceneError instead of exiting the process (the 2.2.2 default); warnings are
 /// recorded and can be read with take_mujoco_warnings().

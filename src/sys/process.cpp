@@ -142,6 +142,15 @@ std::vector<std::string> current_environment() {
   return env;
 }
 
+double helper_timeout_seconds() {
+  constexpr double kDefault = 120;
+  const char* env = std::getenv("ARMSTUDY_HELPER_TIMEOUT_S");
+  if (!env || !*env) return kDefault;
+  char* end = nullptr;
+  const double v = std::strtod(env, &end);
+  return *end == '\0' && v >= 0.1 && v <= 86400 ? v : kDefault;
+}
+
 pid_t spawn(const SpawnOptions& o, int* error) {
   *error = 0;
   if (o.argv.empty()) {

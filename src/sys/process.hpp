@@ -50,6 +50,11 @@ struct SpawnOptions {
   int death_signal = 0;
 };
 
+/// Seconds a helper process (the frame helper armstudy-frames, ffmpeg) may go without
+/// progress (no answer, no input taken, not ended) before armstudy ends it:
+/// $ARMSTUDY_HELPER_TIMEOUT_S when it is a number in [0.1, 86400], else 120.
+double helper_timeout_seconds();
+
 /// Starts the child; its pid, or -1 with *error set to the errno value. A child whose
 /// program cannot be executed (after fork) exits with status 127.
 pid_t spawn(const SpawnOptions& o, int* error);

@@ -165,6 +165,21 @@ bool legacy_part(const std::string& f) {
          rest.find('-', dash + 1) == std::string::npos;
 }
 
+// a name scratch_dir() gives: .armstudy-<host>-<pid>-<8 hex digits> (a user's
+// .armstudy-cache is not one)
+bool scratch_name(const std::string& f) {
+  if (f.rfind(kPrefix, 0) != 0) return false;
+  const size_t r = f.rfind('-');
+  if (r == std::string::npos || f.size() - r - 1 != 8) return false;
+  for (size_t k = r + 1; k < f.size(); ++k)
+    if (!std::isxdigit(static_cast<unsigned char>(f[k]))) return false;
+  const size_t p = f.rfind('-', r - 1);
+  if (p == std::string::npos || p + 1 == r || p < std::string(kPrefix).size()) return false;
+  for (size_t k = p + 1; k < r; ++k)
+    if (!std::isdigit(static_cast<unsigned char>(f[k]))) return false;
+  return true;
+}
+
 // the scratch folders, old-style leftovers and old-style part files of the open folder
 // `dir_fd` (`dir`): only entries armstudy names itself, each a real folder or file (a link
 // of such a name is left alone), never anything through a link. In the output folder
@@ -178,13 +193,20 @@ void clean_folder(int dir_fd, const fs::path& dir, bool top, const StaleRules& r
     const bool folder = S_ISDIR(st.st_mode);
     if (f.rfind(kPrefix, 0) == 0 && f.size() > kRemoving.size() &&
         f.compare(f.size() - kRemoving.size(), kRemoving.size(), kRemoving) == 0) {
-      if (folder) out->removed += remove_tree_at(dir_fd, f) > 0;  // its reports are back
+      // its reports are back
+      if (folder && scratch_name(f.substr(0, f.size() - kRemoving.size())))
+        out->removed += remove_tree_at(dir_fd, f) > 0;
     } else if (f.rfind(kPrefix, 0) == 0) {
-      if (f == mine || !folder) continue;
+      if (f == mine || !folder || !scratch_name(f)) continue;  // a user's .armstudy-cache
       int fd = -1;
       if (!lock_is_free(dir_fd, f, &fd)) continue;  // a live run's
-      // no lock file: being set up right now (microseconds), or a kill came in between
-      if (fd < 0 && !older_than(st, std::chrono::minutes(1))) continue;
+      // no lock file, armstudy's marker: being set up right now (microseconds), or a kill
+      // came in between (then it is empty); a folder with anything in it is not armstudy's
+      if (fd < 0) {
+        if (older_than(st, std::chrono::minutes(1)))
+          out->removed += ::unlinkat(dir_fd, f.c_str(), AT_REMOVEDIR) == 0;
+        continue;
+      }
       out->removed += discard(dir_fd, f, dir, &out->restored);
       if (fd >= 0) ::close(fd);
     } else if (top && f.size() > 1 && f[0] == '.') {

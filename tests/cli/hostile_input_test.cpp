@@ -15,6 +15,7 @@
 
 #include "testing/cli.hpp"
 #include "testing/files.hpp"
+#include "testing/output_folder.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -161,6 +162,29 @@ TEST(HostileInput, SweepNamesABadBaseWithoutQuotingIt) {
   EXPECT_EQ(p.exit_code, 2) << p.output.substr(0, 500);
   EXPECT_NE(p.output.find("is not a parameter path like arm.links[2].length"), std::string::npos);
   EXPECT_LT(p.output.size(), 800u);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// a file name made to move the terminal's cursor and retitle its window, printed by
+// validate: never raw, its control characters as \xNN
+TEST(HostileInput, AFileNameWithTerminalEscapesIsPrintedEscaped) {
+  const fs::path dir = armstudy::testing::fresh_dir("cli_escaped_names");
+  const std::string bad = "bad\x1b[2J\x1b]0;owned\x07.yaml", good = "good\x1b[31m.yaml";
+  write_file(dir / bad, "study: placement\nname: my case\n");
+  fs::rename(armstudy::testing::quick_case(dir, "fine"), dir / good);
+  for (const std::string& f : {bad, good}) {
+    const CliRun r = run_cli("validate '" + (dir / f).string() + "'");
+    EXPECT_EQ(r.exit_code, f == bad ? 2 : 0) << r.output;
+    EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << "a raw ESC in: " << r.output;
+    EXPECT_EQ(r.output.find('\x07'), std::string::npos) << "a raw BEL in: " << r.output;
+  }
+  EXPECT_NE(run_cli("validate '" + (dir / bad).string() + "'")
+                .output.find("bad\\x1B[2J\\x1B]0;owned\\x07.yaml:"),
+            std::string::npos);
   fs::remove_all(dir);
 }
 

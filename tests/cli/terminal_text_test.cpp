@@ -25,4 +25,13 @@ TEST(TerminalText, EscapesControlsEscapesAndForeignBytesKeepsUtf8) {
   EXPECT_EQ(terminal_text("Länge 0,5 m ≤ 1 m"), "Länge 0,5 m ≤ 1 m");
 }
 
+// MuJoCo's "fromto points too close\nObject name = ..." was printed with a literal \n
+TEST(TerminalText, AMessageOfSeveralLinesKeepsItsLinesIndentedAndEscapesTheRest) {
+  using armstudy::report::terminal_lines;
+  EXPECT_EQ(terminal_lines("XML Error: too close\nObject name = link2\x1b[2J"),
+            "XML Error: too close\n  Object name = link2\\x1B[2J");
+  EXPECT_EQ(terminal_lines("one line\n"), "one line");
+  EXPECT_EQ(terminal_lines("a\r\nb", "    "), "a\n    b");
+}
+
 }  // namespace

@@ -238,3 +238,52 @@ TEST(NeverCrash, EveryStudysFailurePathExitsOneWithItsMessage) {
 }
 
 }  // namespace
+
+namespace {
+
+// a FIFO or /dev/zero among the templates (ARMSTUDY_TEMPLATE_DIR) hung the run after the
+// solve, or read 2.2 GB and blamed memory: they are read as every input is, before the
+// solve, and refused saying which and why
+TEST(NeverHang, TemplatesThatAreAFifoOrADeviceAreRefusedBeforeTheSolve) {
+  const fs::path d = fresh_dir("fifo_templates");
+  const fs::path c = pendulum_case(d, "swing");
+  for (const char* bad : {"report.css", "case.html"}) {
+    const fs::path t = d / (std::string("templates-") + bad);
+    fs::create_directories(t);
+    for (const char* f : {"case.html", "index.html", "report.css"})
+      fs::copy_file(kSource / "templates" / f, t / f);
+    fs::remove(t / bad);
+    if (std::string(bad) == "report.css")
+      ASSERT_EQ(::mkfifo((t / bad).c_str(), 0600), 0);
+    else
+      fs::create_symlink("/dev/zero", t / bad);
+    const BoundedRun r =
+        run_bounded({"run", "--no-render", "--out", (d / "out").string(), c.string()},
+                    {30, false, 0, {{"ARMSTUDY_TEMPLATE_DIR", t.string()}}});
+    EXPECT_FALSE(r.hung) << how(r);
+    EXPECT_EQ(r.exit_code, 2) << how(r);
+    EXPECT_TRUE(has(r, "the report template " + (t / bad).string() + ": is a")) << how(r);
+    EXPECT_TRUE(has(r, "is a FIFO (named pipe)") || has(r, "is a device")) << how(r);
+    EXPECT_TRUE(has(r, "nothing was run")) << how(r);
+    EXPECT_FALSE(has(r, "swing:")) << "refused before the solve\n" << how(r);
+    EXPECT_FALSE(fs::exists(d / "out" / "swing"));
+  }
+  fs::remove_all(d);
+}
+
+// an empty --tolerances file asked for "a YAML mapping with 'study:' and 'name:'" (a case)
+TEST(NeverHang, AnEmptyTolerancesFileAsksForTolerancesNotACase) {
+  const fs::path d = fresh_dir("empty_tolerances");
+  const fs::path out = pendulum_output(d);
+  std::ofstream(d / "tol.yaml") << "# nothing yet\n";
+  const BoundedRun r =
+      run_bounded({"diff", out.string(), out.string(), "--out", (d / "diff").string(),
+                   "--tolerances", (d / "tol.yaml").string()},
+                  {.timeout_s = 30});
+  EXPECT_EQ(r.exit_code, 2) << how(r);
+  EXPECT_TRUE(has(r, "the file is empty; expected a YAML mapping of tolerances")) << how(r);
+  EXPECT_FALSE(has(r, "'study:'")) << how(r);
+  fs::remove_all(d);
+}
+
+}  // namespace

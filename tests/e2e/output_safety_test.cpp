@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -314,3 +315,79 @@ TEST(OutputSafety, AReportAKillLeftAsideIsPutBack) {
 }
 
 }  // namespace
+
+namespace {
+
+// a time-optimal case on the exact grid and a small DP (no Complex) with `exact` as given
+fs::path huge_grid_case(const fs::path& dir, const std::string& name, const std::string& exact) {
+  const fs::path p = dir / (name + ".yaml");
+  std::ofstream(p) << "study: time_optimal\nname: " << name
+                   << "\ntime_optimal:\n"
+                      "  path: {points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n"
+                      "  dp: {segments: 10, levels: 20, convergence_segments: []}\n"
+                      "  complex: {enabled: false}\n"
+                      "  exact: "
+                   << exact << "\n";
+  return p;
+}
+
+}  // namespace
+
+// A valid case at the largest uniform exact grid wrote every node of it (a graded grid of
+// up to 1e6 nodes likewise): results.json beyond the 16 MiB armstudy reads back, so the
+// run exited 2 without junit.xml, and re-runs and merge refused the folder from then on.
+// What it stores per grid point is now a subsample of at most 2001 points with its stride.
+TEST(OutputSafety, AValidCaseAtItsLargestGridWritesAResultsJsonThatRunAndMergeReadBack) {
+  const fs::path d = fresh_dir("huge_grid");
+  const fs::path c = huge_grid_case(d, "huge-grid", "{grid_points: 100000, tolerance_rel: 0}");
+  const fs::path out = d / "out";
+  const std::string run = "run --no-render --no-sensitivity --out " + out.string() + " ";
+  const CmdRun first = run_cli(run + c.string());
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const fs::path rj = out / "huge-grid/results.json";
+  EXPECT_LT(fs::file_size(rj), 2u << 20) << "a summary of the grid, not every node";
+  EXPECT_TRUE(fs::exists(out / "junit.xml"));
+  const auto j = nlohmann::json::parse(slurp(rj));
+  const auto& exact = j["time_optimal"]["solvers"][0];
+  EXPECT_EQ(exact["intervals"], 99999);
+  EXPECT_LE(exact["node_s"].size(), 2001u);
+  EXPECT_GT(exact["node_stride"].get<int>(), 1);
+  EXPECT_EQ(exact["node_s"].back(), j["time_optimal"]["path_length"]) << "the last node is kept";
+  EXPECT_LE(j["time_optimal"]["mvc"]["s"].size(), 2001u);
+  EXPECT_GT(j["time_optimal"]["mvc"]["stride"].get<int>(), 1);
+  // read back: a re-run keeps it, --force replaces it, merge reads it
+  const CmdRun again = run_cli(run + c.string());
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("skipped 1 case(s)"), std::string::npos) << again.output;
+  const CmdRun forced = run_cli(run + "--force " + c.string());
+  EXPECT_EQ(forced.exit_code, 0) << forced.output;
+  const CmdRun merged = run_cli("merge " + out.string());
+  EXPECT_EQ(merged.exit_code, 0) << merged.output;
+  fs::remove_all(d);
+}
+
+// a user's .armstudy-cache (no lock file, or one of its own) was removed as a killed run's
+// scratch folder: only names armstudy gives (.armstudy-<host>-<pid>-<8 hex>) with its lock
+// file are, or such a folder left empty by a kill before its lock file was made
+TEST(OutputSafety, AUsersFolderOfArmstudysPrefixIsNeverRemoved) {
+  const fs::path d = fresh_dir("user_cache");
+  const fs::path out = d / "out";
+  fs::create_directories(out / ".armstudy-cache");
+  std::ofstream(out / ".armstudy-cache/data.bin") << "a user's cache";
+  fs::create_directories(out / ".armstudy-locked");
+  std::ofstream(out / ".armstudy-locked/lock");
+  fs::create_directories(out / ".armstudy-host-12-0badc0de");  // a killed run's, without lock
+  std::ofstream(out / ".armstudy-host-12-0badc0de/notes.txt") << "kept: not empty";
+  fs::create_directories(out / ".armstudy-host-13-0badc0de");  // empty: a kill before the lock
+  const auto old = fs::file_time_type::clock::now() - std::chrono::minutes(30);
+  for (const auto& e : fs::recursive_directory_iterator(out)) fs::last_write_time(e.path(), old);
+  const auto before = snapshot(out);
+  const CmdRun r =
+      run_cli("run --no-render --out " + out.string() + " " + quick_case(d, "beside").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* f : {".armstudy-cache/data.bin", ".armstudy-locked/lock",
+                        ".armstudy-host-12-0badc0de/notes.txt"})
+    EXPECT_EQ(slurp(out / f), before.at(f)) << f << " was removed\n" << r.output;
+  EXPECT_FALSE(fs::exists(out / ".armstudy-host-13-0badc0de")) << "an empty scratch folder stays";
+  fs::remove_all(d);
+}

@@ -15,6 +15,8 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -239,6 +241,41 @@ TEST(SweepManifest, MergeOfAPartialSweepOrAnEmptyFolderFailsNamingWhatIsMissing)
               (d / "cases" / "sweep-manifest.json").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("2 case(s) of sweep 's'"), std::string::npos) << r.output;
+  fs::remove_all(d);
+}
+
+// --manifest with no case said "no case folder with a results.json" (there were two); an
+// id listed twice counted twice; "", "../../../etc" and "/etc/passwd" were accepted as ids
+TEST(SweepManifest, AManifestWithNoCaseARepeatedIdOrAnIdThatIsNoCaseNameIsRefused) {
+  const fs::path d = fresh_dir("merge_bad_manifest");
+  write_file(d / "base.yaml", "study: placement\nname: m\nplacement: {length_fraction: 0.5}\n");
+  write_file(d / "s.yaml",
+             "sweep: s\nbase: base.yaml\naxes:\n  - path: placement.length_fraction\n"
+             "    values: [0.4, 0.6]\n");
+  ASSERT_EQ(run_cli("sweep expand " + (d / "s.yaml").string() + " --out " + (d / "cases").string())
+                .exit_code,
+            0);
+  const CmdRun ran =
+      run_cli("run --no-render --out " + (d / "out").string() + " " + (d / "cases").string());
+  ASSERT_EQ(ran.exit_code, 0) << ran.output;
+  json m = json::parse(slurp(d / "cases" / "sweep-manifest.json"));
+  const std::string id = m["cases"][0].get<std::string>();
+  const std::vector<std::pair<json, std::string>> bad = {
+      {json::array(), "\"cases\" is empty; expected the sweep's case ids"},
+      {json::array({id, id}), "lists '" + id + "' twice; expected each case once"},
+      {json::array({""}), "\"cases\" holds ''; expected case names"},
+      {json::array({"../../../etc"}), "\"cases\" holds '../../../etc'; expected case names"},
+      {json::array({"/etc/passwd"}), "\"cases\" holds '/etc/passwd'; expected case names"}};
+  for (const auto& [cases, message] : bad) {
+    m["cases"] = cases;
+    write_file(d / "bad-manifest.json", m.dump());
+    const auto before = slurp(d / "out" / "summary.md");
+    const CmdRun r = run_cli("merge " + (d / "out").string() + " --manifest " +
+                             (d / "bad-manifest.json").string());
+    EXPECT_EQ(r.exit_code, 2) << cases << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_EQ(slurp(d / "out" / "summary.md"), before) << "nothing is written";
+  }
   fs::remove_all(d);
 }
 

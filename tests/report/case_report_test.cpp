@@ -211,6 +211,18 @@ TEST(CaseReport, EveryValueIsHtmlEscaped) {
   EXPECT_NE(html.find("optimum &lt;found&gt; &amp; checked"), std::string::npos);
 }
 
+// a description written "\e]0;title\a\e[31m" (YAML's escapes) landed raw in the page
+TEST(CaseReport, ControlCharactersOfADescriptionAreShownAsTextNotWrittenRaw) {
+  auto info = hostile_info("placement");
+  info.description = "red \x1b[31m bell \x07 tab\tend";
+  const fs::path d = fresh_dir("control_escape");
+  write_case_report(d, info, synthetic_results(info), sections_of(info), answer_of(info));
+  const std::string html = slurp(d / "index.html");
+  EXPECT_EQ(html.find('\x1b'), std::string::npos);
+  EXPECT_EQ(html.find('\x07'), std::string::npos);
+  EXPECT_NE(html.find("red \\x1B[31m bell \\x07 tab\tend"), std::string::npos);
+}
+
 TEST(CaseReport, PageForbidsNetworkFetchesWithContentSecurityPolicy) {
   const auto info = hostile_info("pendulum");
   const fs::path d = fresh_dir("csp");

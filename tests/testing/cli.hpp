@@ -44,7 +44,12 @@ inline CliRun run_shell(const std::string& command) {
 
 /// `armstudy ARGS 2>&1 </dev/null`; exit_code -1 when it did not exit normally.
 inline CliRun run_cli(const std::string& args) {
-  return run_shell(std::string(ARMSTUDY_BINARY) + " " + args);
+  // appended in place: GCC 12 misreads `std::string(...) + " " + args` inlined into some
+  // callers as an out-of-bounds copy (-Warray-bounds)
+  std::string command = ARMSTUDY_BINARY;
+  command += ' ';
+  command += args;
+  return run_shell(command);
 }
 
 /// How run_bounded runs armstudy.

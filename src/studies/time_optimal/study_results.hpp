@@ -53,10 +53,12 @@ struct StudyResults {
     int iterations = 0;
     std::optional<Violation> violation;  ///< the rest: only when solved
     std::optional<std::vector<double>> node_s, node_sd, node_t_s;
+    std::optional<int> node_stride;  ///< node_* hold every node_stride-th node and the last
     std::optional<Samples> samples;
   };
   struct Mvc {
     std::vector<double> s, sd, velocity_sd;
+    std::optional<int> stride;  ///< every stride-th grid point and the last
   };
   struct ConvergenceRow {
     int segments = 0, levels = 0;
@@ -67,6 +69,7 @@ struct StudyResults {
   struct Motion {
     std::vector<double> t_s, s;
     Rows tip_m, q_rad;
+    std::optional<int> stride;  ///< every stride-th time step and the last
   };
   struct Extrapolation {
     int coarse_points = 0;
@@ -173,6 +176,9 @@ void fields(V& v, StudyResults::Solver& x) {
   v.optional("node_sd", x.node_sd,
              "path speed at the solver's nodes, path.s_unit per s (when solved)");
   v.optional("node_t_s", x.node_t_s, "time at the solver's nodes (when solved)");
+  v.optional("node_stride", x.node_stride,
+             "node_s, node_sd and node_t_s hold every node_stride-th node and the last (1: "
+             "every node; a grid beyond 2001 nodes is stored as this subsample)");
   v.optional("samples", x.samples, "dense samples for plots (when solved)");
 }
 template <class V>
@@ -181,6 +187,9 @@ void fields(V& v, StudyResults::Mvc& x) {
   v("sd", x.sd, "maximum velocity curve, every limit (path.s_unit per s)");
   v("velocity_sd", x.velocity_sd,
     "maximum velocity curve of the velocity limits alone (path.s_unit per s)");
+  v.optional("stride", x.stride,
+             "s, sd and velocity_sd hold every stride-th grid point and the last (1: every "
+             "point; a grid beyond 2001 points is stored as this subsample)");
 }
 template <class V>
 void fields(V& v, StudyResults::ConvergenceRow& x) {
@@ -199,6 +208,9 @@ void fields(V& v, StudyResults::Motion& x) {
   v("s", x.s, "path position (path.s_unit)");
   v("tip_m", x.tip_m, "tip [x, y] per sample (m)");
   v("q_rad", x.q_rad, "joint angles per sample");
+  v.optional("stride", x.stride,
+             "the samples are every stride-th time step and the last (1: every step; more "
+             "than 2001 steps are stored as this subsample)");
 }
 template <class V>
 void fields(V& v, StudyResults::Extrapolation& x) {
