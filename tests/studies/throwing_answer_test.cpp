@@ -21,11 +21,16 @@ namespace {
 
 constexpr double kReproducible = 0.005;  // the stated error: 0.5 %
 
-double answer_energy(const ThrowingSpec& s) {
+// the answer's energy; `converged`: its SLSQP run must be first-order converged (the
+// invariant below needs a feasible throw only: a tighter answer not converged on its grid
+// still may not be cheaper)
+double answer_energy(const ThrowingSpec& s, bool converged = true) {
   const ThrowingResult r = solve_throwing(s);
   EXPECT_EQ(r.status, Status::kSolved) << r.message;
   EXPECT_EQ(r.answer, "slsqp");
-  EXPECT_TRUE(r.nlopt_run.converged) << r.message;
+  if (converged) {
+    EXPECT_TRUE(r.nlopt_run.converged) << r.message;
+  }
   EXPECT_TRUE(r.nlopt_check.feasible) << r.message;
   return r.nlopt.evaluation.energy;
 }
@@ -67,7 +72,7 @@ TEST(ThrowingAnswer, ATighterProblemIsNeverCheaperThanTheNominalAnswer) {
   for (const auto& [name, spec] : {std::pair{"40 W", w40}, std::pair{"contact 0.022 N", contact},
                                    std::pair{"friction 0.45", mu},
                                    std::pair{"release 0.5 deg", release}}) {
-    const double e = answer_energy(spec);
+    const double e = answer_energy(spec, false);
     std::printf("%s: %.6f J against the nominal %.6f J\n", name, e, e0);
     EXPECT_GE(e, e0 * (1 - kReproducible)) << name << ": " << e << " J, nominal " << e0 << " J";
   }
@@ -83,6 +88,7 @@ ThrowingSpec small() {
   s.idp.seeds = 1;
   s.power_max = 200;
   s.current_max = 10;
+  s.grid.refinements = 0;  // one grid (the control grids: throwing_grid_test.cpp)
   return s;
 }
 

@@ -67,7 +67,9 @@ TEST(ThrowingGrid, FinerGridsNeverCostMoreAndTheVerdictFollowsTheTolerance) {
     EXPECT_EQ(r.grids[i].stages, 8 << i);
     EXPECT_EQ(r.grids[i].stages * r.grids[i].steps_per_stage, 160);
     EXPECT_TRUE(r.grids[i].feasible);
-    if (i) EXPECT_LE(r.grids[i].energy, r.grids[i - 1].energy);
+    if (i) {
+      EXPECT_LE(r.grids[i].energy, r.grids[i - 1].energy);
+    }
   }
   EXPECT_EQ(r.nlopt.profile.stages(), 32);
   EXPECT_DOUBLE_EQ(r.nlopt.evaluation.energy, r.grids.back().energy);
