@@ -55,16 +55,6 @@ Results::Worst worst_of(const std::array<double, st::kConstraintKinds>& w) {
   return {w[0], w[1], w[2], w[3], w[4], w[5], w[6]};
 }
 
-// constraints within twice the back-off of their limit: the ones that bound the optimum
-std::vector<std::string> binding_of(const std::array<double, st::kConstraintKinds>& w,
-                                    double backoff) {
-  std::vector<std::string> b;
-  for (int c = 0; c < st::kConstraintKinds; ++c)
-    if (w[c] >= -2 * backoff - 1e-9)
-      b.push_back(st::constraint_name(static_cast<st::ConstraintKind>(c)));
-  return b;
-}
-
 // the motor rating nearest its limit, "(not binding)" when it is not within twice the back-off
 std::string binding_rating(const std::array<double, st::kConstraintKinds>& w, double backoff) {
   int best = static_cast<int>(st::ConstraintKind::kVoltage);
@@ -313,12 +303,30 @@ void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Result
   }
 }
 
+// the answer's control grids: every grid and the verdict
+void set_control_grids(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
+                       Results::Optimised& o) {
+  if (!r.nlopt_ran || r.grids.empty()) return;
+  Results::ControlGrids& cg = o.control_grids.emplace();
+  cg.status = r.grids.size() < 2 ? "not_refined" : r.grid_converged ? "converged" : "not_converged";
+  cg.tolerance = spec.grid.tolerance;
+  cg.refinements = spec.grid.refinements;
+  for (const auto& g : r.grids)
+    cg.grids.push_back({g.stages, g.steps_per_stage, g.energy, g.feasible, g.converged,
+                        g.kkt_residual, g.from, g.run_time, g.simulations});
+  cg.change_per_doubling_J = r.grid_change;
+  cg.error_J = r.grid_error;
+  cg.extrapolated_J = r.grid_extrapolated;
+  cg.energy_first_grid_J = r.first_grid.evaluation.energy;
+}
+
 // one table of the optimisers on equal terms, and the finer re-simulation's verdicts
 void set_comparison(const st::ThrowingSpec& spec, const st::ThrowingResult& r, long evaluations,
                     Results::Optimised& o) {
   // one table of the optimisers on equal terms (margins from the finer re-simulation)
   auto row = [&](const std::string& name, const st::ThrowMotion& m, const st::Verification& v,
-                 bool conv, long sims, double time) {
+                 bool conv, long sims, double time, std::vector<std::string> binding) {
+    std::sort(binding.begin(), binding.end());
     return Results::Comparison{name,
                                m.evaluation.energy,
                                m.split.mechanical,
@@ -329,16 +337,37 @@ void set_comparison(const st::ThrowingSpec& spec, const st::ThrowingResult& r, l
                                time,
                                v.feasible,
                                margins_of(spec, v.evaluation),
-                               binding_of(v.worst, spec.backoff),
+                               binding,
                                binding_rating(v.worst, spec.backoff)};
   };
   o.comparison.push_back(row("IDP (best of " + std::to_string(r.idp_seeds.size()) + " seeds)" +
                                  (r.idp_converged ? "" : ", a stall"),
-                             r.idp, r.idp_check, r.idp_converged, evaluations, r.idp_time));
-  if (r.nlopt_ran)
+                             r.idp, r.idp_check, r.idp_converged, evaluations, r.idp_time,
+                             r.idp_optimality.binding));
+  const bool grids = r.nlopt_ran && r.grids.size() >= 2;
+  if (r.nlopt_ran) {
+    long sims = slsqp_simulations(r);
+    double time = r.nlopt_run.run_time;
+    if (grids) {
+      time = 0;
+      for (const auto& g : r.grids) time += g.run_time;
+      for (size_t k = 1; k < r.grids.size(); ++k) sims += r.grids[k].simulations;
+    }
     o.comparison.push_back(
-        row("SLSQP (best of " + std::to_string(r.slsqp_starts.size()) + " starts)", r.nlopt,
-            r.nlopt_check, r.nlopt_run.converged, slsqp_simulations(r), r.nlopt_run.run_time));
+        row("SLSQP" +
+                (grids ? " on " + std::to_string(r.nlopt.profile.stages()) + " stages (the answer)"
+                       : std::string()) +
+                " (best of " + std::to_string(r.slsqp_starts.size()) + " starts)",
+            r.nlopt, r.nlopt_check, r.nlopt_run.converged, sims, time, r.nlopt_run.binding));
+  }
+  // SLSQP's answer on the first grid, IDP's stages: IDP's gap on its own grid
+  if (grids) {
+    const auto& b = r.slsqp_starts[r.slsqp_best_start];
+    o.comparison.push_back(row("SLSQP on " + std::to_string(r.grids.front().stages) +
+                                   " stages (IDP's grid)",
+                               r.first_grid, r.first_grid_check, b.run.converged,
+                               slsqp_simulations(r), r.grids.front().run_time, b.run.binding));
+  }
   o.verification.refinement = spec.check_refinement;
   o.verification.idp = {r.idp_check.feasible, margins_of(spec, r.idp_check.evaluation),
                         worst_of(r.idp_check.worst)};
@@ -372,9 +401,13 @@ void set_flight_and_replay(const st::ThrowingSpec& spec, const st::ThrowingResul
       "DOPRI5 rtol 1e-10 atol 1e-12, all joints free; voltages of the plan simulated "
       "with 16x the RK4 steps, linear between its samples within a stage; "
       "error against that plan; coulomb sign smoothed by tanh(qd / 1e-4 rad/s)";
+  // the answer's grid (the finest of the control grids when SLSQP answers)
+  const bool fine = r.answer == "slsqp" && r.answer_steps_per_stage > 0;
+  const int steps = fine ? r.answer_steps_per_stage : spec.steps_per_stage;
+  const int stages = fine ? r.nlopt.profile.stages() : spec.stages;
   o.integration = {"classical RK4, fixed step, steps aligned with the stages",
-                   spec.steps_per_stage,
-                   spec.tf / spec.stages / spec.steps_per_stage,
+                   steps,
+                   spec.tf / stages / steps,
                    16,
                    r.rk4_energy_error,
                    r.rk4_theta3_error};
@@ -395,7 +428,6 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     if (!n || n->result_.status != st::Status::kSolved) return false;
     const auto& r = n->result_;
     const st::VelocityProfile& p = r.answer == "slsqp" ? r.nlopt.profile : r.idp.profile;
-    if (p.stages() != spec_.stages) return false;
     warm_ = p;
     return true;
   }
@@ -485,6 +517,21 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
       verify("slsqp", "SLSQP optimum (the answer)", r.nlopt_check);
       converged("slsqp", "SLSQP's answer is feasible and its " + kkt_words, r.nlopt_run.converged);
     }
+    // the control grid: 0 converged, 1 still falling (a failure only when the case
+    // requires a converged sequence; the answer's sentence says "not converged" either way)
+    if (r.nlopt_ran && r.answer == "slsqp" && r.grids.size() >= 2)
+      c.push_back(st::make_check(
+          "control_grid_converged",
+          "the control grid: the last doubling of the stages (" +
+              std::to_string(r.grids[r.grids.size() - 2].stages) + " -> " +
+              std::to_string(r.grids.back().stages) + ") changed the energy by " +
+              short_number(std::abs(r.grid_change)) + " J, at most " +
+              short_number(sp.grid.tolerance) + " of it (throwing.grid.tolerance)" +
+              (sp.grid.require_converged ? ""
+                                         : " (the case allows a sequence still falling: "
+                                           "throwing.grid.require_converged false)") +
+              ": 0 converged, 1 not",
+          r.grid_converged ? 0.0 : 1.0, sp.grid.require_converged ? 0.0 : 1.0));
     c.push_back(st::make_check("open_loop_replay",
                                "the optimum's voltages applied open loop to the core model (all "
                                "joints free, DOPRI5) reproduce the planned angles (16x-step plan): "
@@ -518,6 +565,12 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     if (r.nlopt_ran)
       k.push_back(
           {"energy_slsqp_J", r.nlopt.evaluation.energy, "J", "energy of the SLSQP optimum"});
+    if (r.nlopt_ran && r.grids.size() >= 2) {
+      k.push_back({"energy_first_grid_J", r.first_grid.evaluation.energy, "J",
+                   "SLSQP's answer on the first control grid (IDP's stages)"});
+      k.push_back({"grid_error_J", r.grid_error, "J",
+                   "estimated error of the answer's energy from the control grids"});
+    }
     if (r.flight.reaches)
       k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x of the answer"});
     return k;
@@ -542,6 +595,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     o.optimum = motion_of(spec_, r.idp);
     const long evaluations = set_idp(spec_, r, o);
     set_nlopt(spec_, r, o);
+    set_control_grids(spec_, r, o);
     set_comparison(spec_, r, evaluations, o);
     set_flight_and_replay(spec_, r, o);
     o.run_time_s = r.run_time;

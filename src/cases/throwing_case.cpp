@@ -99,6 +99,15 @@ void read_nlopt(Map& n, studies::ThrowingSpec& s) {
   n.finish();
 }
 
+// throwing.grid: the control grids after the first (studies/throwing/grid_sequence.hpp)
+void read_grid(Map& g, studies::ThrowingSpec& s) {
+  s.grid.refinements = g.integer_or("refinements", s.grid.refinements, 0, 4);
+  num(g, "tolerance", s.grid.tolerance, NumberRule::range(1e-6, 0.5, ""));
+  s.grid.refine_best = g.integer_or("refine_best", s.grid.refine_best, 1, 16);
+  s.grid.require_converged = g.boolean_or("require_converged", s.grid.require_converged);
+  g.finish();
+}
+
 // throwing.checks: the checks on the answer
 void read_checks(Map& c, studies::ThrowingSpec& s) {
   num(c, "replay_tolerance_rad", s.replay_tolerance, NumberRule::positive("rad"));
@@ -119,6 +128,7 @@ studies::ThrowingSpec load_throwing_spec(Map& root) {
   if (auto c = sec->map("constraints")) read_constraints(*c, s);
   if (auto i = sec->map("idp")) read_idp(*i, s);
   if (auto n = sec->map("nlopt")) read_nlopt(*n, s);
+  if (auto g = sec->map("grid")) read_grid(*g, s);
   if (auto c = sec->map("checks")) read_checks(*c, s);
   s.threads = sec->integer_or("threads", s.threads, 1, 64);
   sec->finish();
@@ -137,14 +147,22 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
   // SLSQP: every start (the reference, IDP's, eq. 8's, the perturbed ones and the hops) with
   // its budget of gradient evaluations
   const double starts = 3.0 + s.nlopt.perturbed_starts + s.nlopt.hops;
+  // then each finer grid (the same RK4 step, 2^l x the stages): refine_best starts on the
+  // first, one on the others, each a gradient of 4 (stages - 1) + 1 simulations
+  double grids = 0.0;
+  for (int l = 1; l <= s.grid.refinements; ++l)
+    grids += (l == 1 ? s.grid.refine_best + 1.0 : 2.0) * s.nlopt.max_evaluations *
+             (4.0 * ((s.stages << l) - 1.0) + 1.0);
   const double nlopt =
-      s.run_nlopt ? starts * s.nlopt.max_evaluations * (4.0 * (s.stages - 1.0) + 1.0) : 0.0;
+      s.run_nlopt ? starts * s.nlopt.max_evaluations * (4.0 * (s.stages - 1.0) + 1.0) + grids
+                  : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
   d.keys =
       "throwing.idp.seeds, throwing.idp.max_passes, throwing.idp.iterations, throwing.idp.stages, "
       "throwing.idp.candidates, "
-      "throwing.idp.steps_per_stage and throwing.nlopt.max_evaluations";
+      "throwing.idp.steps_per_stage, throwing.nlopt.max_evaluations and "
+      "throwing.grid.refinements";
   d.unit = "RK4 steps";
   d.work = (idp + nlopt) * steps;
   d.work_budget = 1e9;

@@ -56,14 +56,16 @@ void add_tray_angles(const Page& p, FigureWriter& figures, Section& ball) {
                              "The passive tray joint, moved only by the dynamics." + target_text));
 }
 
-// release and flight of the ball (IDP optimum)
+// release and flight of the ball (the answer's throw: throwing.flight)
 void add_release(const Page& p, Section& ball) {
   const TS::Optimised& th = p.th;
   const bool ran = p.ran;
   const auto& rel = th.release;
   const auto& fl = th.flight;
   Table r;
-  r.caption = "Release and flight of the ball (IDP optimum).";
+  r.caption = std::string("Release and flight of the ball (") +
+              (th.answer == "slsqp" ? "the answer: SLSQP's throw" : "the answer: IDP's throw") +
+              ").";
   r.header = {"quantity", "value"};
   auto pair = [](const std::vector<double>& v) {
     return v.size() == 2 ? "(" + format_sig(v[0], 4) + ", " + format_sig(v[1], 4) + ")"

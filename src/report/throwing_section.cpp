@@ -264,7 +264,8 @@ Table comparison_table(const Page& p) {
       "Margins (> 0: met) come from re-simulating each optimum with " +
       (ran ? as_text(th.verification.refinement) : std::string()) +
       "x the steps, independently of the optimiser; friction margin = μ − max |F_t|/N. "
-      "Binding: constraints within twice the back-off of their limit.";
+      "Binding: the constraint kinds with a positive multiplier at the optimum (first order; "
+      "the sensitivity part's binding list).";
   // one column per optimiser (the rows are the quantities, so the table fits the page)
   const auto& cmp = th.comparison;
   ct.header = {"quantity"};
@@ -301,6 +302,37 @@ Table comparison_table(const Page& p) {
   return ct;
 }
 
+// the answer's control grids: each grid's energy and time, and the verdict on the sequence
+void add_grids(const Page& p, Section& res) {
+  if (!p.ran || !p.th.control_grids) return;
+  const TS::ControlGrids& cg = *p.th.control_grids;
+  Table t;
+  t.caption =
+      "The answer on finer control grids (docs/throwing.md): each grid's SLSQP starts from the "
+      "coarser grid's answer prolonged (the same throw, feasible, the same energy), the RK4 "
+      "step kept. " +
+      std::string(cg.status == "converged"
+                      ? "Converged: the last doubling changed the energy by " +
+                            format_sig(std::abs(cg.change_per_doubling_J), 3) +
+                            " J, within the tolerance " + format_sig(cg.tolerance, 3) +
+                            " of it; estimated error " + format_sig(cg.error_J, 3) + " J."
+                  : cg.status == "not_converged"
+                      ? "NOT converged: still falling by " +
+                            format_sig(std::abs(cg.change_per_doubling_J), 3) +
+                            " J per doubling at the finest grid (tolerance " +
+                            format_sig(cg.tolerance, 3) + " of the energy); estimated error " +
+                            format_sig(cg.error_J, 3) + " J, the limit about " +
+                            format_sig(cg.extrapolated_J, 4) + " J."
+                      : "Not refined: one grid, the control grid's error is not measured.");
+  t.header = {"stages", "RK4 steps per stage", "energy (J)", "feasible", "converged (first order)",
+              "first-order residual", "from", "simulations", "time (s)"};
+  for (const auto& g : cg.grids)
+    t.rows.push_back({as_text(g.stages), as_text(g.steps_per_stage), format_sig(g.energy_J, 5),
+                      as_text(g.feasible), yes_no(g.converged), format_sig(g.kkt_residual, 2),
+                      g.from, as_text(g.simulations), format_sig(g.run_time_s, 3)});
+  res.table(std::move(t));
+}
+
 // whether each optimiser converged, and a note when the two disagree
 void add_verdict(const Page& p, Section& res) {
   const TS::Optimised& th = p.th;
@@ -328,6 +360,14 @@ void add_verdict(const Page& p, Section& res) {
   if (ran) res.paragraph(conv);
   // the optimisers on the same problem should agree; say so when they do not
   const auto& cm = th.comparison;
+  // IDP against SLSQP's answer on IDP's own grid too (the third row, with control grids)
+  if (cm.size() >= 3 && std::isfinite(cm[0].energy_J) && std::isfinite(cm[2].energy_J))
+    res.paragraph("IDP's gap: its throw (" + format_sig(cm[0].energy_J, 4) + " J) is " +
+                  format_sig(100 * (cm[0].energy_J / cm[1].energy_J - 1), 3) +
+                  " % above the answer (" + cm[1].optimiser + ", " +
+                  format_sig(cm[1].energy_J, 4) + " J) and " +
+                  format_sig(100 * (cm[0].energy_J / cm[2].energy_J - 1), 3) + " % above " +
+                  cm[2].optimiser + " (" + format_sig(cm[2].energy_J, 4) + " J).");
   if (cm.size() >= 2) {
     const double ei = cm[0].energy_J, eg = cm[1].energy_J;
     if (std::isfinite(ei) && std::isfinite(eg) && std::abs(ei - eg) > 0.01 * std::min(ei, eg)) {
@@ -393,6 +433,7 @@ Section results_section(const Page& p) {
   res.heading = "Saving, optimisers compared";
   add_saving(p, res);
   add_starts(p, res);
+  add_grids(p, res);
   if (Table ct = comparison_table(p); !ct.rows.empty()) res.table(std::move(ct));
   add_verdict(p, res);
   if (Table t = motions_table(p); !t.rows.empty()) res.table(std::move(t));

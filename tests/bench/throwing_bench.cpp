@@ -7,8 +7,9 @@
 // bundled case's feasible reference, and the 4 seeds on one or both cores, one after the
 // other or side by side; also without the early stop of infeasible candidates, the
 // reference it must equal), one SLSQP central-difference gradient (the point and its 60
-// neighbours, each simulated from t = 0 or resumed from the point's stage checkpoints), and
-// the pendulum study.
+// neighbours, each simulated from t = 0 or resumed from the point's stage checkpoints), the
+// bundled throw solved whole (16 stages alone, and with its control grids), and the pendulum
+// study.
 #include <benchmark/benchmark.h>
 
 #include "studies/pendulum/solve.hpp"
@@ -209,6 +210,31 @@ BENCHMARK(BM_SlsqpGradient)
     ->Args({1, 2})
     ->Args({1, 4})
     ->Unit(benchmark::kMillisecond);
+
+// the bundled throwing case solved whole (ThrowingSpec's defaults are the bundled case's):
+// IDP, SLSQP from every start on 16 stages, then the control grids (32, 64 stages; argument:
+// grid.refinements, 0 the first grid alone). CPU time of the process (both threads): the
+// budget of the converged throw is 60 s of CPU on the 2-core CI machine
+void BM_ThrowingSolved(benchmark::State& state) {
+  ThrowingSpec spec;
+  spec.grid.refinements = static_cast<int>(state.range(0));
+  double energy = 0;
+  long sims = 0;
+  for (auto _ : state) {
+    const ThrowingResult r = solve_throwing(spec);
+    energy = r.nlopt.evaluation.energy;
+    sims = 0;
+    for (const auto& g : r.grids) sims += g.simulations;
+  }
+  state.counters["energy_J"] = energy;
+  state.counters["slsqp_simulations"] = static_cast<double>(sims);
+}
+BENCHMARK(BM_ThrowingSolved)
+    ->Arg(0)
+    ->Arg(2)
+    ->Iterations(1)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kSecond);
 
 void BM_PendulumTwoSeconds(benchmark::State& state) {
   const PendulumSpec spec = default_pendulum_spec();

@@ -124,10 +124,10 @@ TEST(Sensitivity, ARunWithoutTheSensitivityPartIsRedoneByOneWithIt) {
   }
 }
 
-// The bundled throwing case: each of its four keys (release tolerance, contact margin,
-// friction coefficient, power rating) at +step, warm-started (SLSQP from the nominal
-// answer), against one cold-started re-solve of the whole study (eq. 8, IDP, SLSQP from
-// every start) at the same value. Both are throws re-checked feasible with 4x the steps, so
+// The bundled throwing case: each of its five keys (release tolerance, contact margin,
+// friction coefficient, power rating, rotor inertia) at +step, warm-started (SLSQP from the
+// nominal answer, on its finest control grid), against one cold-started re-solve of the
+// whole study (eq. 8, IDP, SLSQP from every start, the control grids) at the same value. Both are throws re-checked feasible with 4x the steps, so
 // the warm step must not cost more than the cold answer by more than kWarmExcess (the
 // optimisers' own spread between restarts is ~1e-4). The cold answer may cost more: the
 // multi-start search can land in another local optimum. Measured (load 8-10, 104 s in all,
@@ -142,7 +142,7 @@ TEST(Sensitivity, ThrowingWarmStepsAgreeWithColdResolves) {
   ASSERT_EQ(c.run->solve({}), studies::Status::kSolved) << c.run->message();
   const auto s = app::run_sensitivity(c, {});
   ASSERT_TRUE(s.has_value());
-  ASSERT_EQ(s->keys.size(), 4u);
+  ASSERT_EQ(s->keys.size(), 5u);
   for (const auto& k : s->keys) {
     ASSERT_TRUE(k.plus.value) << k.key << ": " << k.plus.message;
     EXPECT_TRUE(k.plus.warm) << k.key;

@@ -5,12 +5,15 @@
 //   1 ulp (-52.5 deg against the code's -7 pi/24) or by 1e-5 deg, the reproducibility the
 //   report states (a single SLSQP start moved 2-70 % under such changes);
 // - a 40 W power limit (a subset of the 60 W problem) is never cheaper than 60 W, beyond that
-//   stated error;
+//   stated error; nor, on the control grids, 40 W, a 0.022 N contact margin, friction 0.45
+//   or a 0.5 deg release tolerance;
 // - a run cut by its budget, or stopped by a tolerance too loose for the first-order test,
 //   fails its convergence check; a case no throw can meet is not solved and quotes no saving.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <utility>
 
 #include "core/types.hpp"
 #include "studies/throwing/solve.hpp"
@@ -20,11 +23,16 @@ namespace {
 
 constexpr double kReproducible = 0.005;  // the stated error: 0.5 %
 
-double answer_energy(const ThrowingSpec& s) {
+// the answer's energy; `converged`: its SLSQP run must be first-order converged (the
+// invariant below needs a feasible throw only: a tighter answer not converged on its grid
+// still may not be cheaper)
+double answer_energy(const ThrowingSpec& s, bool converged = true) {
   const ThrowingResult r = solve_throwing(s);
   EXPECT_EQ(r.status, Status::kSolved) << r.message;
   EXPECT_EQ(r.answer, "slsqp");
-  EXPECT_TRUE(r.nlopt_run.converged) << r.message;
+  if (converged) {
+    EXPECT_TRUE(r.nlopt_run.converged) << r.message;
+  }
   EXPECT_TRUE(r.nlopt_check.feasible) << r.message;
   return r.nlopt.evaluation.energy;
 }
@@ -34,6 +42,7 @@ ThrowingSpec bundled() { return ThrowingSpec{}; }
 
 TEST(ThrowingAnswer, ALastDigitChangeOfTheReleaseAngleMovesTheAnswerByLessThanHalfAPercent) {
   ThrowingSpec s = bundled();
+  s.grid.refinements = 0;  // the search on its first grid (the control grids: below)
   const double e0 = answer_energy(s);
   // the bundled file's -52.5 deg: one ulp from -7 pi / 24
   s.theta3_release = -52.5 * (core::kPi / 180);
@@ -45,9 +54,30 @@ TEST(ThrowingAnswer, ALastDigitChangeOfTheReleaseAngleMovesTheAnswerByLessThanHa
   EXPECT_LT(std::abs(e_5 - e0), kReproducible * e0) << e0 << " J vs " << e_5 << " J";
   // and 40 W, a subset of the 60 W throws, is no cheaper beyond that error
   ThrowingSpec w40 = bundled();
+  w40.grid.refinements = 0;
   w40.power_max = 40;
   const double e40 = answer_energy(w40);
   EXPECT_GE(e40, e0 * (1 - kReproducible)) << "40 W: " << e40 << " J, 60 W: " << e0 << " J";
+}
+
+// the bundled answer (on its control grids) against four tighter problems, each a subset of
+// the nominal one: none may come out cheaper (beyond the stated 0.5 %). Before the control
+// grids and the refinement of the best few 16-stage optima, a 0.022 N contact margin
+// answered 4.56 J where the nominal answered 6.29 J.
+TEST(ThrowingAnswer, ATighterProblemIsNeverCheaperThanTheNominalAnswer) {
+  const double e0 = answer_energy(bundled());
+  ThrowingSpec w40 = bundled(), contact = bundled(), mu = bundled(), release = bundled();
+  w40.power_max = 40;
+  contact.contact_margin = 0.022;
+  mu.friction_coefficient = 0.45;
+  release.release_tolerance = 0.5 * core::kDeg;
+  for (const auto& [name, spec] : {std::pair{"40 W", w40}, std::pair{"contact 0.022 N", contact},
+                                   std::pair{"friction 0.45", mu},
+                                   std::pair{"release 0.5 deg", release}}) {
+    const double e = answer_energy(spec, false);
+    std::printf("%s: %.6f J against the nominal %.6f J\n", name, e, e0);
+    EXPECT_GE(e, e0 * (1 - kReproducible)) << name << ": " << e << " J, nominal " << e0 << " J";
+  }
 }
 
 // a small throw (8 stages) with the bundled limits loosened so that it is feasible
@@ -60,6 +90,7 @@ ThrowingSpec small() {
   s.idp.seeds = 1;
   s.power_max = 200;
   s.current_max = 10;
+  s.grid.refinements = 0;  // one grid (the control grids: throwing_grid_test.cpp)
   return s;
 }
 

@@ -29,6 +29,7 @@ ThrowingSpec reduced() {
   s.nlopt.ftol_rel = 1e-5;
   s.power_max = 200;  // 8 stages cannot keep 60 W; the other limits as in the bundled case
   s.current_max = 10;
+  s.grid.refinements = 0;  // one grid (the control grids: throwing_grid_test.cpp)
   return s;
 }
 

@@ -47,6 +47,20 @@ void project_displacement(VelocityProfile& p, const Eigen::Vector2d& delta) {
   for (int k = 1; k < P; ++k) p.v.col(k) += c * std::sin(core::kPi * k / P);
 }
 
+VelocityProfile prolong_profile(const VelocityProfile& p, int factor) {
+  ARM_THROW_UNLESS(factor >= 1, "prolongation factor " << factor << " should be >= 1");
+  VelocityProfile q = p;
+  const int P = p.stages();
+  q.v.resize(2, P * factor + 1);
+  for (int k = 0; k < P; ++k)
+    for (int m = 0; m < factor; ++m) {
+      const double s = double(m) / factor;
+      q.v.col(k * factor + m) = (1 - s) * p.v.col(k) + s * p.v.col(k + 1);
+    }
+  q.v.col(P * factor) = p.v.col(P);
+  return q;
+}
+
 Eigen::Vector2d eq8_rate(const Eigen::Vector2d& q_i, const Eigen::Vector2d& qd_i,
                          const Eigen::Vector2d& q_f, const Eigen::Vector2d& qd_f, double tf,
                          double t) {

@@ -45,6 +45,13 @@ Eigen::Vector2d displacement(const VelocityProfile& p);
 /// `delta` (rad). @throws std::invalid_argument if P < 2 (no interior node).
 void project_displacement(VelocityProfile& p, const Eigen::Vector2d& delta);
 
+/// The same rate function on `factor` x the stages: each stage cut into `factor` equal
+/// stages, the new nodes on the coarse stage's line. Exact: the prolonged profile is the same
+/// function of time (same angles, rates and accelerations everywhere), so simulated with the
+/// same RK4 step (steps_per_stage / factor) it costs the same energy and meets the same
+/// constraints. @throws std::invalid_argument if factor < 1.
+VelocityProfile prolong_profile(const VelocityProfile& p, int factor);
+
 /// The initial trajectory of 003 eq. 8 (corrected form of docs/defects.md) sampled at the nodes:
 ///   qd(t) = qd_i + (qd_f - qd_i) t/tf + (pi/2) ((q_f - q_i)/tf - (qd_i + qd_f)/2) sin(pi t/tf),
 /// then projected so that the piecewise-linear profile meets q_f exactly.

@@ -97,6 +97,28 @@ struct ThrowingResult {
   };
   std::vector<SlsqpStart> slsqp_starts;
   int slsqp_best_start = -1;  ///< the answer's start: lowest converged, re-checked feasible
+  /// One control grid of the answer's sequence (grid_sequence.hpp), coarsest first.
+  struct GridLevel {
+    int stages = 0, steps_per_stage = 0;
+    double energy = NAN;     ///< J, the lowest feasible throw on this grid
+    bool feasible = false;   ///< that throw meets every limit, also in the re-check
+    bool converged = false;  ///< first-order converged (SLSQP's test) on this grid
+    double kkt_residual = NAN;
+    std::string from;       ///< the start of that throw ("reference", "prolonged ...")
+    double run_time = 0;    ///< s, wall clock of this grid's searches (the first: from
+                            ///< the study's start, IDP and every SLSQP start)
+    long simulations = 0;   ///< of this grid's SLSQP searches
+    std::vector<SlsqpStart> runs;  ///< SLSQP on this grid from each prolonged start
+  };
+  std::vector<GridLevel> grids;  ///< the answer's control grids (empty: SLSQP did not run)
+  /// the last doubling changed the energy by at most grid.tolerance (relative)
+  bool grid_converged = false;
+  double grid_change = NAN;        ///< J, energy of the finest grid minus the one before
+  double grid_error = NAN;         ///< J, estimated distance of the answer to the limit
+  double grid_extrapolated = NAN;  ///< J, the answer's energy minus grid_error
+  ThrowMotion first_grid;          ///< SLSQP's answer on the first grid (IDP's grid)
+  Verification first_grid_check;
+  int answer_steps_per_stage = 0;  ///< RK4 steps per stage of the answer's grid
   Optimality idp_optimality;  ///< the first-order measure at IDP's optimum
   bool nlopt_ran = false;
   ThrowMotion nlopt;  ///< SLSQP's answer (the best start's local optimum)

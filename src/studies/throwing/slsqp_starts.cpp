@@ -35,31 +35,7 @@ void perturbations(const VelocityProfile& p, const Eigen::Vector2d& delta, int c
 // SLSQP from each start, side by side on `threads` threads, appended to r.slsqp_starts
 void run_wave(const ThrowSetup& setup, const ThrowingSpec& spec, const std::vector<Start>& starts,
               const Eigen::Vector2d& delta, const NloptSettings& settings, ThrowingResult& r) {
-  const int first = static_cast<int>(r.slsqp_starts.size());
-  const int n = static_cast<int>(starts.size());
-  r.slsqp_starts.resize(first + n);
-  NloptSettings one = settings;
-  one.threads = 1;  // the starts run side by side instead
-  std::atomic<int> next{0};
-  std::vector<std::exception_ptr> failed(n);
-  auto worker = [&] {
-    for (int i = next++; i < n; i = next++) {
-      auto& s = r.slsqp_starts[first + i];
-      s.name = starts[i].first;
-      try {
-        s.run = run_nlopt(setup, starts[i].second, delta, one);
-        s.check = verify_profile(setup, s.run.best, spec.check_refinement);
-      } catch (...) {
-        failed[i] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::clamp(settings.threads, 1, n); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  run_slsqp_wave(setup, spec, starts, delta, settings, r.slsqp_starts);
 }
 
 // the best start so far: lowest converged and re-checked feasible; else the lowest feasible;
@@ -88,6 +64,38 @@ int best_start(const ThrowingResult& r) {
 }
 
 }  // namespace
+
+void run_slsqp_wave(const ThrowSetup& setup, const ThrowingSpec& spec,
+                    const std::vector<std::pair<std::string, VelocityProfile>>& starts,
+                    const Eigen::Vector2d& delta, const NloptSettings& settings,
+                    std::vector<ThrowingResult::SlsqpStart>& out) {
+  const int first = static_cast<int>(out.size());
+  const int n = static_cast<int>(starts.size());
+  out.resize(first + n);
+  NloptSettings one = settings;
+  if (n > 1) one.threads = 1;  // the starts run side by side instead
+  std::atomic<int> next{0};
+  std::vector<std::exception_ptr> failed(n);
+  auto worker = [&] {
+    for (int i = next++; i < n; i = next++) {
+      auto& s = out[first + i];
+      s.name = starts[i].first;
+      try {
+        s.run = run_nlopt(setup, starts[i].second, delta, one);
+        s.check = verify_profile(setup, s.run.best, spec.check_refinement);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::clamp(settings.threads, 1, n); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
+
 
 void run_slsqp_starts(const ThrowSetup& setup, const ThrowingSpec& spec,
                       const VelocityProfile& reference, const VelocityProfile& eq8,

@@ -24,4 +24,13 @@ void run_slsqp_starts(const ThrowSetup& setup, const ThrowingSpec& spec,
                       const Eigen::Vector2d& delta, const NloptSettings& settings,
                       ThrowingResult& r);
 
+/// SLSQP from each named start on `setup` (any grid), each local optimum re-checked with
+/// spec.check_refinement x the steps, appended to `out` in the order of `starts`. Several
+/// starts run side by side on settings.threads threads (one simulation thread each), one
+/// start uses them for its gradients: the results do not depend on the thread count.
+void run_slsqp_wave(const ThrowSetup& setup, const ThrowingSpec& spec,
+                    const std::vector<std::pair<std::string, VelocityProfile>>& starts,
+                    const Eigen::Vector2d& delta, const NloptSettings& settings,
+                    std::vector<ThrowingResult::SlsqpStart>& out);
+
 }  // namespace armstudy::studies

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/kinematics.hpp"
+#include "studies/throwing/grid_sequence.hpp"
 #include "studies/throwing/slsqp_starts.hpp"
 
 namespace armstudy::studies {
@@ -79,8 +80,32 @@ void decide_answer(const ThrowingSpec& spec, ThrowingResult& r) {
                                       " starts (best from " +
                                       r.slsqp_starts[r.slsqp_best_start].name + ")"
                                 : std::string("IDP");
-  r.message = std::string(converged ? "lowest-energy throw found: " : "NOT converged: ") +
-              fixed(e, 3) + " J by " + who + ", first-order residual " + fixed(kkt, 6) +
+  // the control grids: the answer of the continuous problem, or how far it still falls
+  std::string lead = converged ? "lowest-energy throw found: " : "NOT converged: ";
+  std::string grid_words;
+  if (slsqp && r.grids.size() >= 2) {
+    std::string seq;
+    for (const auto& g : r.grids)
+      seq += (seq.empty() ? "" : ", ") + std::to_string(g.stages) + ": " + fixed(g.energy, 3);
+    grid_words = " on " + std::to_string(r.grids.back().stages) + " stages (control grids " +
+                 seq + " J; ";
+    if (r.grid_converged) {
+      grid_words += "converged: the last doubling changed it by " +
+                    fixed(std::abs(r.grid_change), 4) + " J, estimated error " +
+                    fixed(r.grid_error, 4) + " J)";
+    } else {
+      grid_words += "the energy still falls with the stages)";
+      lead = "not converged: still falling by " + fixed(std::abs(r.grid_change), 3) +
+             " J per doubling of the stages (estimated error " + fixed(r.grid_error, 3) +
+             " J): " + (converged ? "" : "NOT converged on its grid: ");
+    }
+  } else if (slsqp && spec.grid.refinements > 0 && r.grids.size() == 1) {
+    grid_words = " on " + std::to_string(r.grids.back().stages) +
+                 " stages (no finer grid gave a throw feasible in the re-check: the control "
+                 "grid's error is not measured)";
+  }
+  r.message = lead + fixed(e, 3) + " J" + grid_words + " by " + who + ", first-order residual " +
+              fixed(kkt, 6) +
               " /(rad/s), feasible in the re-check (" + eq8_words + "; saving " +
               fixed(r.saving_percent, 1) +
               " %); the ball lands at x = " + fixed(flight.landing.x(), 3) + " m";
@@ -281,6 +306,7 @@ void open_loop_replay(const ThrowSetup& setup, const ThrowingSpec& spec, const T
 }
 
 // integration accuracy: the answer with 16 times the rk4 steps, and its open-loop replay
+// (voltages from 64 times the steps)
 void check_answer(const ThrowSetup& setup, const ThrowingSpec& spec, const ThrowMotion& answer,
                   ThrowingResult& r) {
   ThrowSetup fine = setup;
@@ -291,6 +317,12 @@ void check_answer(const ThrowSetup& setup, const ThrowingSpec& spec, const Throw
     r.rk4_energy_error = std::abs(ef.energy - answer.evaluation.energy) / std::abs(ef.energy);
     r.rk4_theta3_error = std::abs(ef.theta3_final - answer.evaluation.theta3_final);
   }
+  // the replay's voltages from 64x the steps: linear between samples, their error falls
+  // with the square of the spacing (the finer grids' faster voltage swings need it)
+  ThrowSetup replay = setup;
+  replay.steps_per_stage = 64 * setup.steps_per_stage;
+  fine_samples.clear();
+  simulate_profile(replay, answer.profile, &fine_samples);
   open_loop_replay(setup, spec, answer, fine_samples, r);
 }
 }  // namespace
@@ -335,6 +367,11 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
     if (progress) progress(0.4, "SLSQP (NLopt) from several starts");
     run_slsqp_starts(setup, spec, start, initial, delta, ns, r);
     r.nlopt_ran = r.slsqp_best_start >= 0;
+    const double first_grid_time =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+    if (progress) progress(0.7, "SLSQP on finer control grids");
+    refine_grids(setup, spec, delta, ns, r);
+    if (!r.grids.empty()) r.grids.front().run_time = first_grid_time;
   }
   if (progress) progress(0.95, "open-loop replay");
   // the answer: SLSQP's best start when it is feasible (also in the re-check); else IDP's
@@ -342,7 +379,10 @@ ThrowingResult solve_throwing(const ThrowingSpec& spec, const ProgressFn& progre
   const bool slsqp_feasible = r.nlopt_ran && r.nlopt_run.feasible && r.nlopt_check.feasible;
   const bool idp_feasible = r.idp.evaluation.feasible && r.idp_check.feasible;
   r.answer = slsqp_feasible || (r.nlopt_ran && !idp_feasible) ? "slsqp" : "idp";
-  check_answer(setup, spec, r.answer == "slsqp" ? r.nlopt : r.idp, r);
+  check_answer(r.answer == "slsqp" && !r.grids.empty()
+                   ? grid_setup(setup, spec.stages, r.nlopt.profile.stages())
+                   : setup,
+               spec, r.answer == "slsqp" ? r.nlopt : r.idp, r);
 
   // ballistic flight of the ball after release
   auto flight_of = [&](const ThrowMotion& m) {

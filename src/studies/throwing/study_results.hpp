@@ -231,6 +231,25 @@ struct ThrowingStudyResults {
     int fine_steps_factor = 0;
     double energy_error_vs_fine_steps = 0, theta3_error_vs_fine_steps_rad = 0;
   };
+  /// one control grid of the answer's sequence
+  struct Grid {
+    int stages = 0, steps_per_stage = 0;
+    double energy_J = 0;
+    bool feasible = false, converged = false;
+    double kkt_residual = 0;
+    std::string from;
+    double run_time_s = 0;
+    long simulations = 0;
+  };
+  /// the answer's control grids and the verdict on them
+  struct ControlGrids {
+    std::string status;  ///< converged, not_converged or not_refined
+    double tolerance = 0;
+    int refinements = 0;
+    std::vector<Grid> grids;
+    double change_per_doubling_J = 0, error_J = 0, extrapolated_J = 0;
+    double energy_first_grid_J = 0;
+  };
   /// what only a run of the optimisers has
   struct Optimised {
     Reference reference;
@@ -239,6 +258,7 @@ struct ThrowingStudyResults {
     Motion optimum;
     Idp idp;
     Nlopt nlopt;
+    std::optional<ControlGrids> control_grids;  ///< when SLSQP ran
     std::vector<Comparison> comparison;
     std::string answer;  ///< "idp" or "slsqp": the optimiser whose throw the study answers with
     Verification verification;
@@ -520,6 +540,32 @@ void fields(V& v, ThrowingStudyResults::NloptRun& x) {
   v.optional("best_start", x.best_start, "the start whose local optimum is the answer");
 }
 template <class V>
+void fields(V& v, ThrowingStudyResults::Grid& x) {
+  v("stages", x.stages, "control stages of this grid");
+  v("steps_per_stage", x.steps_per_stage, "RK4 steps per stage (the step kept)");
+  v("energy_J", x.energy_J, "the lowest throw feasible in the re-check on this grid");
+  v("feasible", x.feasible, "that throw meets every limit, also in the re-check");
+  v("converged", x.converged, "that throw is first-order converged on this grid");
+  v("kkt_residual", x.kkt_residual, "its first-order residual / E per rad/s");
+  v("from", x.from, "the start it descends from");
+  v("run_time_s", x.run_time_s, "wall time of this grid's searches");
+  v("simulations", x.simulations, "simulations of this grid's searches");
+}
+template <class V>
+void fields(V& v, ThrowingStudyResults::ControlGrids& x) {
+  v("status", x.status,
+    "converged (the last doubling changed the energy by at most the tolerance), "
+    "not_converged (still falling at the last grid) or not_refined (one grid)");
+  v("tolerance", x.tolerance, "relative energy change per doubling that counts as converged");
+  v("refinements", x.refinements, "doublings allowed after the first grid");
+  v("grids", x.grids, "every grid, coarsest first");
+  v("change_per_doubling_J", x.change_per_doubling_J,
+    "energy of the finest grid minus the one before (null: one grid)");
+  v("error_J", x.error_J, "estimated distance of the answer's energy to the limit (null: one grid)");
+  v("extrapolated_J", x.extrapolated_J, "the answer's energy minus that error (null: one grid)");
+  v("energy_first_grid_J", x.energy_first_grid_J, "SLSQP's answer on the first grid (IDP's)");
+}
+template <class V>
 void fields(V& v, ThrowingStudyResults::Nlopt& x) {
   v("ran", x.ran, "the gradient optimiser ran");
   v.inline_if(x.ran, x.run);
@@ -536,7 +582,9 @@ void fields(V& v, ThrowingStudyResults::Comparison& x) {
   v("run_time_s", x.run_time_s, "wall time");
   v("feasible", x.feasible, "meets every constraint at the finer re-simulation");
   v("margins", x.margins, "margins at the finer re-simulation");
-  v("binding", x.binding, "constraints within twice the back-off of their limit");
+  v("binding", x.binding,
+    "constraint kinds with a positive multiplier at the optimum (first order; the "
+    "sensitivity part's binding list)");
   v("binding_rating", x.binding_rating, "the motor rating nearest its limit");
 }
 template <class V>
@@ -594,6 +642,8 @@ void fields(V& v, ThrowingStudyResults::Optimised& x) {
   v("optimum", x.optimum, "the IDP optimum");
   v("idp", x.idp, "the IDP runs");
   v("nlopt", x.nlopt, "the gradient optimiser");
+  v.optional("control_grids", x.control_grids,
+             "the answer on finer control grids (when the gradient optimiser ran)");
   v("answer", x.answer,
     "the optimiser whose throw is the answer: slsqp when its converged answer is feasible in the "
     "re-check and lower than IDP's, else idp");

@@ -2,6 +2,7 @@
 // Copyright 2026 The armstudy authors
 #include "studies/throwing/warm_solve.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <locale>
@@ -13,17 +14,22 @@ namespace armstudy::studies {
 
 // (over 60 lines, kept whole: the warm re-solve's steps in order (set-up, repair, SLSQP, re-check),
 // as solve_throwing's)
-ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfile& start) {
+ThrowingResult solve_throwing_warm(const ThrowingSpec& case_spec, const VelocityProfile& start) {
   const auto t0 = std::chrono::steady_clock::now();
   ThrowingResult r;
   ThrowSetup setup;
   VelocityProfile initial;
+  // the start's control grid (the nominal answer's finest), with the RK4 step kept at most
+  // the case's (grid_setup)
+  ThrowingSpec spec = case_spec;
+  if (start.stages() >= 2 && start.stages() != spec.stages) {
+    const long steps = static_cast<long>(spec.steps_per_stage) * spec.stages;
+    spec.stages = start.stages();
+    spec.steps_per_stage = static_cast<int>(std::max(1L, (steps + spec.stages - 1) / spec.stages));
+  }
   const Eigen::Vector2d delta = spec.release - spec.start;
   if (!prepare_throw(spec, setup, initial, r)) return r;
-  if (start.stages() != spec.stages) {
-    r.message = "the warm start has another number of stages";
-    return r;
-  }
+  r.answer_steps_per_stage = spec.steps_per_stage;
   r.initial = record_motion(setup, spec, initial);
   r.initial_feasible = r.initial.evaluation.feasible;
   NloptSettings ns = spec.nlopt;

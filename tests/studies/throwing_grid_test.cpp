@@ -1,0 +1,94 @@
+// The throwing answer on a sequence of control grids (studies/throwing/grid_sequence.hpp):
+// - the prolongation of a piecewise-linear rate profile is exact: a profile on twice (four
+//   times) the stages with the RK4 step kept costs the same energy and has the same worst
+//   constraint values, so a coarse answer prolonged is a feasible start of the finer grid;
+// - on a small throw, each finer grid's energy is at most the coarser one's, the finest is
+//   the answer, and the verdict follows the tolerance: a tolerance no doubling can meet
+//   leaves the answer "not converged: still falling by X J per doubling", never a plain
+//   optimum; a loose one stops at the first doubling as converged.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "studies/throwing/grid_sequence.hpp"
+#include "studies/throwing/solve.hpp"
+
+namespace armstudy::studies {
+namespace {
+
+TEST(ThrowingGrid, AProlongedProfileIsTheSameThrowOnTheFinerGrid) {
+  const ThrowingSpec spec;
+  const ThrowSetup setup = make_throw_setup(spec);
+  VelocityProfile p = eq8_profile(spec.start, Eigen::Vector2d::Zero(), spec.release,
+                                  spec.release_rate, spec.tf, spec.stages);
+  // an uneven profile: every stage its own acceleration
+  for (int k = 1; k < p.stages(); ++k) p.v(0, k) += 0.3 * std::sin(1.7 * k);
+  project_displacement(p, spec.release - spec.start);
+  const ProfileEvaluation e = simulate_profile(setup, p);
+  const auto w = worst_constraints(setup, e);
+  for (int factor : {2, 4}) {
+    const VelocityProfile q = prolong_profile(p, factor);
+    ASSERT_EQ(q.stages(), factor * p.stages());
+    EXPECT_LT((displacement(q) - displacement(p)).norm(), 1e-12);
+    const ThrowSetup fine = grid_setup(setup, p.stages(), q.stages());
+    ASSERT_EQ(fine.steps_per_stage * factor, setup.steps_per_stage);
+    const ProfileEvaluation f = simulate_profile(fine, q);
+    EXPECT_NEAR(f.energy, e.energy, 1e-10 * std::abs(e.energy)) << factor;
+    EXPECT_NEAR(f.theta3_final, e.theta3_final, 1e-10) << factor;
+    EXPECT_EQ(f.feasible, e.feasible) << factor;
+    const auto wf = worst_constraints(fine, f);
+    for (int c = 0; c < kConstraintKinds; ++c) EXPECT_NEAR(wf[c], w[c], 1e-9) << factor << " " << c;
+  }
+}
+
+// a small throw (8 stages) with loosened ratings, as ThrowingAnswer's
+ThrowingSpec small_grid_throw() {
+  ThrowingSpec s;
+  s.stages = 8;
+  s.steps_per_stage = 20;
+  s.idp.iterations = 2;
+  s.idp.max_passes = 3;
+  s.idp.seeds = 1;
+  s.power_max = 200;
+  s.current_max = 10;
+  s.nlopt.hops = 0;
+  s.grid.refinements = 2;
+  s.grid.refine_best = 1;
+  return s;
+}
+
+TEST(ThrowingGrid, FinerGridsNeverCostMoreAndTheVerdictFollowsTheTolerance) {
+  ThrowingSpec s = small_grid_throw();
+  s.grid.tolerance = 1e-9;  // no doubling changes the energy this little
+  const ThrowingResult r = solve_throwing(s);
+  ASSERT_EQ(r.status, Status::kSolved) << r.message;
+  ASSERT_EQ(r.grids.size(), 3u) << r.message;
+  for (size_t i = 0; i < r.grids.size(); ++i) {
+    EXPECT_EQ(r.grids[i].stages, 8 << i);
+    EXPECT_EQ(r.grids[i].stages * r.grids[i].steps_per_stage, 160);
+    EXPECT_TRUE(r.grids[i].feasible);
+    if (i) {
+      EXPECT_LE(r.grids[i].energy, r.grids[i - 1].energy);
+    }
+  }
+  EXPECT_EQ(r.nlopt.profile.stages(), 32);
+  EXPECT_DOUBLE_EQ(r.nlopt.evaluation.energy, r.grids.back().energy);
+  EXPECT_TRUE(r.nlopt_check.feasible);
+  EXPECT_DOUBLE_EQ(r.first_grid.evaluation.energy, r.grids.front().energy);
+  EXPECT_FALSE(r.grid_converged);
+  EXPECT_LT(r.grid_change, 0.0);
+  EXPECT_EQ(r.message.rfind("not converged: still falling by ", 0), 0u) << r.message;
+  EXPECT_EQ(r.message.find("lowest-energy throw found"), std::string::npos) << r.message;
+
+  ThrowingSpec loose = small_grid_throw();
+  loose.grid.tolerance = 0.5;  // any doubling of a feasible throw changes it less
+  const ThrowingResult rl = solve_throwing(loose);
+  ASSERT_EQ(rl.status, Status::kSolved) << rl.message;
+  ASSERT_EQ(rl.grids.size(), 2u) << rl.message;
+  EXPECT_TRUE(rl.grid_converged);
+  EXPECT_NE(rl.message.find("converged: the last doubling changed it by"), std::string::npos)
+      << rl.message;
+}
+
+}  // namespace
+}  // namespace armstudy::studies
