@@ -10,6 +10,7 @@
 #include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
+#include "app/study_checks.hpp"
 #include "app/study_entry.hpp"
 #include "cases/pendulum_case.hpp"
 #include "report/motion_csv.hpp"
@@ -37,14 +38,7 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
     return result_.status;
   }
 
-  std::vector<studies::Check> checks() const override {
-    if (result_.status != studies::Status::kSolved) return {};
-    return {studies::make_check(
-        "pendulum_energy_drift",
-        "mechanical energy of the passive tray and ball (joints 1, 2 locked) stays constant: "
-        "max |E(t) - E(0)| over the largest kinetic energy",
-        result_.energy_drift_rel, spec_.drift_tolerance)};
-  }
+  std::vector<studies::Check> checks() const override { return pendulum_checks(spec_, result_); }
 
   // the figure the pendulum's parameters move (the drift is the integrator's, not theirs)
   std::string headline() const override { return "energy_exchanged_J"; }
@@ -143,6 +137,16 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
 };
 
 }  // namespace
+
+std::vector<studies::Check> pendulum_checks(const studies::PendulumSpec& spec,
+                                            const studies::PendulumResult& result) {
+  if (result.status != studies::Status::kSolved) return {};
+  return {studies::make_check(
+      "pendulum_energy_drift",
+      "mechanical energy of the passive tray and ball (joints 1, 2 locked) stays constant: "
+      "max |E(t) - E(0)| over the largest kinetic energy",
+      result.energy_drift_rel, spec.drift_tolerance)};
+}
 
 StudyParts pendulum_parts() {
   return study_parts<PendulumRun>(

@@ -12,6 +12,7 @@
 #include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
+#include "app/study_checks.hpp"
 #include "app/study_entry.hpp"
 #include "cases/throwing_case.hpp"
 #include "report/motion_csv.hpp"
@@ -442,106 +443,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     return b;
   }
 
-  // (over 60 lines, kept whole: one check a block, in the order the report lists them)
-  std::vector<st::Check> checks() const override {
-    const auto& r = result_;
-    const auto& sp = spec_;
-    if (r.idp.series.t.empty()) return {};
-    std::vector<st::Check> c;
-    const std::string fine = std::to_string(sp.check_refinement) + "x the steps";
-    // every reported optimum, re-simulated with finer steps, against every constraint
-    auto verify = [&](const std::string& who, const std::string& label, const st::Verification& v) {
-      const auto& e = v.evaluation;
-      c.push_back(st::make_check(who + "_contact",
-                                 label + " at " + fine +
-                                     ": contact margin minus the "
-                                     "smallest normal force of the tray on the ball (N)",
-                                 sp.contact_margin - e.min_normal_force, 0.0));
-      c.push_back(st::make_check(who + "_friction",
-                                 label + " at " + fine +
-                                     ": largest friction "
-                                     "needed to roll, |F_t| / N, against the friction coefficient",
-                                 e.max_friction_ratio, sp.friction_coefficient));
-      c.push_back(st::make_check(who + "_ball_in_tray",
-                                 label + " at " + fine +
-                                     ": largest |theta4| "
-                                     "(rad) against lambda/2",
-                                 e.max_abs_theta4, sp.tray_width / 2));
-      c.push_back(st::make_check(who + "_voltage",
-                                 label + " at " + fine +
-                                     ": largest |motor "
-                                     "voltage| (V)",
-                                 e.max_voltage, sp.voltage_max));
-      c.push_back(st::make_check(who + "_current",
-                                 label + " at " + fine +
-                                     ": largest |motor "
-                                     "current| (A)",
-                                 e.max_current, sp.current_max));
-      c.push_back(st::make_check(who + "_power",
-                                 label + " at " + fine +
-                                     ": largest |motor power "
-                                     "e i| (W)",
-                                 e.max_power, sp.power_max));
-      c.push_back(st::make_check(who + "_release_theta3",
-                                 label + " at " + fine +
-                                     ": |theta3(tf) - "
-                                     "release theta3| (rad)",
-                                 v.release_error, sp.release_tolerance));
-    };
-    auto converged = [&](const std::string& who, const std::string& what, bool ok) {
-      c.push_back(st::make_check(
-          who + "_converged",
-          what +
-              (sp.allow_not_converged ? " (the case allows a run that "
-                                        "is not converged: checks.allow_not_converged)"
-                                      : "") +
-              ": 0 converged, 1 not",
-          ok ? 0.0 : 1.0, sp.allow_not_converged ? 1.0 : 0.0));
-    };
-    // the answer's checks decide the case; IDP, when it is only the comparison, is not
-    // checked here: its re-check margins are in the comparison table and the answer's
-    // sentence says when its throw breaks a limit or stalls
-    const bool idp_answer = r.answer == "idp";
-    const std::string kkt_words =
-        "first-order residual |grad E + sum lambda grad g| / E per rad/s "
-        "at most " +
-        short_number(sp.nlopt.kkt_tolerance) + " (KKT, active constraints)";
-    if (idp_answer) verify("idp", "IDP optimum (the answer)", r.idp_check);
-    if (idp_answer)
-      converged("idp",
-                "IDP stopped on its tolerance (relative gain of a pass < " +
-                    std::to_string(sp.idp.tolerance) + ", " + std::to_string(sp.idp.quiet_passes) +
-                    " passes in a row) before its budget and its optimum's " + kkt_words,
-                r.idp_converged);
-    if (r.nlopt_ran) {
-      verify("slsqp", "SLSQP optimum (the answer)", r.nlopt_check);
-      converged("slsqp", "SLSQP's answer is feasible and its " + kkt_words, r.nlopt_run.converged);
-    }
-    // the control grid: 0 converged, 1 still falling (a failure only when the case
-    // requires a converged sequence; the answer's sentence says "not converged" either way)
-    if (r.nlopt_ran && r.answer == "slsqp" && r.grids.size() >= 2)
-      c.push_back(st::make_check(
-          "control_grid_converged",
-          "the control grid: the last doubling of the stages (" +
-              std::to_string(r.grids[r.grids.size() - 2].stages) + " -> " +
-              std::to_string(r.grids.back().stages) + ") changed the energy by " +
-              short_number(std::abs(r.grid_change)) + " J, at most " +
-              short_number(sp.grid.tolerance) + " of it (throwing.grid.tolerance)" +
-              (sp.grid.require_converged ? ""
-                                         : " (the case allows a sequence still falling: "
-                                           "throwing.grid.require_converged false)") +
-              ": 0 converged, 1 not",
-          r.grid_converged ? 0.0 : 1.0, sp.grid.require_converged ? 0.0 : 1.0));
-    c.push_back(st::make_check("open_loop_replay",
-                               "the optimum's voltages applied open loop to the core model (all "
-                               "joints free, DOPRI5) reproduce the planned angles (16x-step plan): "
-                               "max error (rad)",
-                               r.replay_error, sp.replay_tolerance));
-    c.push_back(st::make_check("rk4_accuracy",
-                               "relative energy change of the optimum with 16x the RK4 steps",
-                               r.rk4_energy_error, 1e-3));
-    return c;
-  }
+  std::vector<st::Check> checks() const override { return throwing_checks(spec_, result_); }
 
   std::vector<KeyFigure> key_figures() const override {
     const auto& r = result_;
@@ -667,6 +569,105 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
 };
 
 }  // namespace
+
+// (over 60 lines, kept whole: one check a block, in the order the report lists them)
+std::vector<st::Check> throwing_checks(const st::ThrowingSpec& sp, const st::ThrowingResult& r) {
+  if (r.idp.series.t.empty()) return {};
+  std::vector<st::Check> c;
+  const std::string fine = std::to_string(sp.check_refinement) + "x the steps";
+  // every reported optimum, re-simulated with finer steps, against every constraint
+  auto verify = [&](const std::string& who, const std::string& label, const st::Verification& v) {
+    const auto& e = v.evaluation;
+    c.push_back(st::make_check(who + "_contact",
+                               label + " at " + fine +
+                                   ": contact margin minus the "
+                                   "smallest normal force of the tray on the ball (N)",
+                               sp.contact_margin - e.min_normal_force, 0.0));
+    c.push_back(st::make_check(who + "_friction",
+                               label + " at " + fine +
+                                   ": largest friction "
+                                   "needed to roll, |F_t| / N, against the friction coefficient",
+                               e.max_friction_ratio, sp.friction_coefficient));
+    c.push_back(st::make_check(who + "_ball_in_tray",
+                               label + " at " + fine +
+                                   ": largest |theta4| "
+                                   "(rad) against lambda/2",
+                               e.max_abs_theta4, sp.tray_width / 2));
+    c.push_back(st::make_check(who + "_voltage",
+                               label + " at " + fine +
+                                   ": largest |motor "
+                                   "voltage| (V)",
+                               e.max_voltage, sp.voltage_max));
+    c.push_back(st::make_check(who + "_current",
+                               label + " at " + fine +
+                                   ": largest |motor "
+                                   "current| (A)",
+                               e.max_current, sp.current_max));
+    c.push_back(st::make_check(who + "_power",
+                               label + " at " + fine +
+                                   ": largest |motor power "
+                                   "e i| (W)",
+                               e.max_power, sp.power_max));
+    c.push_back(st::make_check(who + "_release_theta3",
+                               label + " at " + fine +
+                                   ": |theta3(tf) - "
+                                   "release theta3| (rad)",
+                               v.release_error, sp.release_tolerance));
+  };
+  auto converged = [&](const std::string& who, const std::string& what, bool ok) {
+    c.push_back(
+        st::make_check(who + "_converged",
+                       what +
+                           (sp.allow_not_converged ? " (the case allows a run that "
+                                                     "is not converged: checks.allow_not_converged)"
+                                                   : "") +
+                           ": 0 converged, 1 not",
+                       ok ? 0.0 : 1.0, sp.allow_not_converged ? 1.0 : 0.0));
+  };
+  // the answer's checks decide the case; IDP, when it is only the comparison, is not
+  // checked here: its re-check margins are in the comparison table and the answer's
+  // sentence says when its throw breaks a limit or stalls
+  const bool idp_answer = r.answer == "idp";
+  const std::string kkt_words =
+      "first-order residual |grad E + sum lambda grad g| / E per rad/s "
+      "at most " +
+      short_number(sp.nlopt.kkt_tolerance) + " (KKT, active constraints)";
+  if (idp_answer) verify("idp", "IDP optimum (the answer)", r.idp_check);
+  if (idp_answer)
+    converged("idp",
+              "IDP stopped on its tolerance (relative gain of a pass < " +
+                  std::to_string(sp.idp.tolerance) + ", " + std::to_string(sp.idp.quiet_passes) +
+                  " passes in a row) before its budget and its optimum's " + kkt_words,
+              r.idp_converged);
+  if (r.nlopt_ran) {
+    verify("slsqp", "SLSQP optimum (the answer)", r.nlopt_check);
+    converged("slsqp", "SLSQP's answer is feasible and its " + kkt_words, r.nlopt_run.converged);
+  }
+  // the control grid: 0 converged, 1 still falling (a failure only when the case
+  // requires a converged sequence; the answer's sentence says "not converged" either way)
+  if (r.nlopt_ran && r.answer == "slsqp" && r.grids.size() >= 2)
+    c.push_back(st::make_check(
+        "control_grid_converged",
+        "the control grid: the last doubling of the stages (" +
+            std::to_string(r.grids[r.grids.size() - 2].stages) + " -> " +
+            std::to_string(r.grids.back().stages) + ") changed the energy by " +
+            short_number(std::abs(r.grid_change)) + " J, at most " +
+            short_number(sp.grid.tolerance) + " of it (throwing.grid.tolerance)" +
+            (sp.grid.require_converged ? ""
+                                       : " (the case allows a sequence still falling: "
+                                         "throwing.grid.require_converged false)") +
+            ": 0 converged, 1 not",
+        r.grid_converged ? 0.0 : 1.0, sp.grid.require_converged ? 0.0 : 1.0));
+  c.push_back(st::make_check("open_loop_replay",
+                             "the optimum's voltages applied open loop to the core model (all "
+                             "joints free, DOPRI5) reproduce the planned angles (16x-step plan): "
+                             "max error (rad)",
+                             r.replay_error, sp.replay_tolerance));
+  c.push_back(st::make_check("rk4_accuracy",
+                             "relative energy change of the optimum with 16x the RK4 steps",
+                             r.rk4_energy_error, 1e-3));
+  return c;
+}
 
 StudyParts throwing_parts() {
   return study_parts<ThrowingRun>(

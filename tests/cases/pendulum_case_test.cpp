@@ -23,18 +23,35 @@ TEST(PendulumCase, BundledCaseEqualsTheDocumentedDefaults) {
   const studies::PendulumSpec s = load_pendulum_spec(m);
   m.finish();
   ASSERT_TRUE(d.empty()) << d.errors()[0].format();
-  const studies::PendulumSpec def = studies::default_pendulum_spec();
-  EXPECT_NEAR(s.theta3, -core::kPi / 2, 1e-12);
-  EXPECT_NEAR(s.theta4, -core::kPi / 5, 1e-12);
-  EXPECT_EQ(s.arm.m3, 0.109);
-  EXPECT_EQ(s.arm.m4, 0.122);
-  EXPECT_EQ(s.arm.r4, 0.075);
-  EXPECT_EQ(s.arm.rb, 0.015);
-  EXPECT_NEAR(s.arm.r3, def.arm.r3, 1e-12);
-  EXPECT_NEAR(s.arm.I3, def.arm.I3, 1e-7);
-  EXPECT_NEAR(s.arm.Ib, def.arm.Ib, 1e-15);
-  EXPECT_EQ(s.duration, def.duration);
-  EXPECT_EQ(s.snapshot_step, 0.13);
+  // the values default_pendulum_spec() and the case's comments document (Sec. 3's m3, m4,
+  // r4, r_b; the tray's centre of mass at the cup bottom 0.015 + r4 + r_b, its inertia a
+  // 0.18 m rod's m3 (r4 + r_b)^2 / 3; a solid ball 2/5 m4 r_b^2), written out here: the
+  // bundled case and the defaults must both equal them
+  for (const studies::PendulumSpec& p : {s, studies::default_pendulum_spec()}) {
+    EXPECT_EQ(p.theta1, 0.0);
+    EXPECT_EQ(p.theta2, 0.0);
+    EXPECT_NEAR(p.theta3, -1.5707963267948966, 1e-12);
+    EXPECT_NEAR(p.theta4, -0.6283185307179586, 1e-12);
+    EXPECT_EQ(p.theta3_rate, 0.0);
+    EXPECT_EQ(p.theta4_rate, 0.0);
+    EXPECT_EQ(p.arm.gravity, 9.81);
+    EXPECT_EQ(p.arm.circle_offset, 0.015);
+    EXPECT_EQ(p.arm.m3, 0.109);
+    EXPECT_EQ(p.arm.m4, 0.122);
+    EXPECT_EQ(p.arm.r4, 0.075);
+    EXPECT_EQ(p.arm.rb, 0.015);
+    EXPECT_NEAR(p.arm.r3, 0.105, 1e-12);
+    EXPECT_EQ(p.arm.r3_lateral, 0.0);
+    EXPECT_NEAR(p.arm.I3, 2.943e-4, 1e-12);
+    EXPECT_NEAR(p.arm.Ib, 1.098e-5, 1e-15);
+    EXPECT_EQ(p.duration, 2.0);
+    EXPECT_EQ(p.sample_step, 0.005);
+    EXPECT_EQ(p.snapshot_step, 0.13);
+    EXPECT_EQ(p.rtol, 1e-12);
+    EXPECT_EQ(p.atol, 1e-12);
+    EXPECT_EQ(p.drift_tolerance, 1e-8);
+    EXPECT_EQ(p.max_steps, 10000000);
+  }
 }
 
 TEST(PendulumCase, UnknownKeyAndWidthAreRejectedWithPositions) {

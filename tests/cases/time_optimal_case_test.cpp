@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <regex>
 
 #include "cases/arm_loader.hpp"
 #include "core/dynamics.hpp"
@@ -112,7 +113,19 @@ time_optimal:
   path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}
   exact: {tolerance_rel: -1.0e-4}
 )");
-  EXPECT_NE(l.errors.find("tolerance_rel"), std::string::npos) << l.errors;
+  // one error, at the number (line 4), naming the key and the rule
+  EXPECT_TRUE(std::regex_match(
+      l.errors, std::regex("c\\.yaml:4:[0-9]+: [^\n]*tolerance_rel[^\n]*should be >= 0\n")))
+      << l.errors;
+  // 0 (no grading) and a positive tolerance are read as written
+  for (const double tol : {0.0, 2.5e-4}) {
+    const TimeOptimalLoad ok = load_yaml(
+        "time_optimal:\n  path: {kind: line, points_m: [[0.3, 0.1], [-0.1, 0.8]]}\n"
+        "  exact: {tolerance_rel: " +
+        std::to_string(tol) + "}\n");
+    EXPECT_TRUE(ok.errors.empty()) << ok.errors;
+    EXPECT_EQ(ok.spec.exact.tolerance_rel, tol);
+  }
 }
 
 TEST(TimeOptimalCase, APolylineNeedsTwoSegmentsPerPiece) {

@@ -264,8 +264,9 @@ TEST_F(BrowserReport, PdfHasAPagePerSectionAndNoBlankPage) {
 
 namespace {
 
-// what CI reads of the bundled run: every results.json valid against the schema, a junit
-// testcase per case and check, summary.md naming every case
+// what CI reads of the bundled run: every results.json valid against the schema, every case
+// ending as it expects with every check passed, a junit testcase per case and check,
+// summary.md naming every case
 TEST_F(BrowserReport, BundledResultsValidateAndCiFilesCountEveryCheck) {
   const fs::path src(ARMSTUDY_SOURCE_DIR);
   const std::string cmd =
@@ -277,8 +278,16 @@ TEST_F(BrowserReport, BundledResultsValidateAndCiFilesCountEveryCheck) {
   for (const auto& n : bundled_case_names()) {
     const auto j = nlohmann::json::parse(slurp(out_ / n / "results.json"));
     expected += 1 + j["checks"].size();
-    failures += j["status"] != j["case"].value("expect", std::string("solved"));
-    for (const auto& c : j["checks"]) failures += !c["passed"].get<bool>();
+    // every bundled case ends as it expects and passes every check: junit.xml counts the
+    // failures, and there must be none
+    const std::string expect = j["case"].value("expect", std::string("solved"));
+    failures += j["status"] != expect;
+    EXPECT_EQ(j["status"], expect) << n;
+    for (const auto& c : j["checks"]) {
+      failures += !c["passed"].get<bool>();
+      EXPECT_TRUE(c["passed"].get<bool>()) << n << ": check " << c["name"] << " failed, value "
+                                           << c["value"] << ", tolerance " << c["tolerance"];
+    }
     EXPECT_NE(summary.find(n), std::string::npos) << n << " missing from summary.md";
   }
   const std::string junit = slurp(out_ / "junit.xml");

@@ -14,6 +14,7 @@
 #include "app/pipeline.hpp"
 #include "app/run_case.hpp"
 #include "report/case_report.hpp"
+#include "studies/placement/converge.hpp"
 
 namespace armstudy::app {
 namespace {

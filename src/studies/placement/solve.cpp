@@ -15,6 +15,7 @@
 #include "core/check.hpp"
 #include "studies/grid.hpp"
 #include "studies/placement/candidate.hpp"
+#include "studies/placement/checks.hpp"
 #include "studies/placement/geometry.hpp"
 #include "studies/placement/printed_limits.hpp"
 #include "studies/placement/refine.hpp"
@@ -697,26 +698,35 @@ void sample_convergence(const SolveState& s, Result& res) {
   }
 }
 
+// every program's sampled metrics of every candidate line, with the line's boundary distance
+void check_signed_work(const SolveState& s, Result& res) {
+  std::vector<std::pair<double, const LineMetrics*>> lines;
+  for (size_t pc = 0; pc < s.pcs.size(); ++pc)
+    for (size_t k = 0; k < s.geo.size(); ++k)
+      lines.emplace_back(s.geo[k].check.boundary_distance, &s.metric(pc, k));
+  res.checks.push_back(signed_work_check(s.spec, lines));
+}
+
+}  // namespace
+
 // relative to each candidate's energy: near the margin the joint rates grow steeply and
 // an absolute bound would only measure how close the grid comes to a singular pose
-void check_signed_work(const SolveState& s, Result& res) {
+Check signed_work_check(const Spec& spec,
+                        const std::vector<std::pair<double, const LineMetrics*>>& lines) {
   double max_work = 0;
   int feasible = 0;
-  for (size_t pc = 0; pc < s.pcs.size(); ++pc) {
-    for (size_t k = 0; k < s.geo.size(); ++k) {
-      if (s.geo[k].check.boundary_distance < s.spec.singularity_margin) continue;
-      const LineMetrics& m = s.metric(pc, k);
-      if (!m.finite() || !(m.energy > 0)) continue;
-      max_work = std::max(max_work, std::abs(m.signed_work) / m.energy);
-      ++feasible;
-    }
+  for (const auto& [boundary_distance, metrics] : lines) {
+    if (boundary_distance < spec.singularity_margin) continue;
+    const LineMetrics& m = *metrics;
+    if (!m.finite() || !(m.energy > 0)) continue;
+    max_work = std::max(max_work, std::abs(m.signed_work) / m.energy);
+    ++feasible;
   }
-  res.checks.push_back(
-      make_check("signed_work_rest_to_rest",
-                 "largest |signed actuator work| / energy of the " + std::to_string(feasible) +
-                     " rest-to-rest candidates clear of the margin (no gravity: the kinetic energy "
-                     "starts and ends at 0, so this measures the quadrature error)",
-                 max_work, 1e-6));
+  return make_check("signed_work_rest_to_rest",
+                    "largest |signed actuator work| / energy of the " + std::to_string(feasible) +
+                        " rest-to-rest candidates clear of the margin (no gravity: the kinetic "
+                        "energy starts and ends at 0, so this measures the quadrature error)",
+                    max_work, 1e-6);
 }
 
 // the checks on the optima: clear of the singularities, refinement converged and not
@@ -788,6 +798,8 @@ void check_sample_convergence(const Spec& spec, Result& res) {
                                     std::abs(e_spec - e_ref) / e_ref, 1e-4));
   }
 }
+
+namespace {
 
 // why no pair has an admissible placement, in words
 std::string unsolvable_message(const Spec& spec, const Annulus& an, double L) {

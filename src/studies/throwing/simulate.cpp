@@ -174,7 +174,7 @@ std::vector<double> constraint_values(const ThrowSetup& s, const ProfileEvaluati
     stage_constraint_values(s, e, k, backoff, gk);
     for (int c = 0; c < 6; ++c) g[c * P + k] = gk[c];
   }
-  g[6 * P] =
+  g[6 * size_t(P)] =
       (std::abs(e.theta3_final - s.theta3_release) - s.release_tolerance) / s.release_tolerance +
       backoff;
   return g;
@@ -188,7 +188,7 @@ std::array<double, kConstraintKinds> worst_constraints(const ThrowSetup& s,
   w.fill(-INFINITY);
   for (int c = 0; c < 6; ++c)
     for (int k = 0; k < P; ++k) w[c] = std::max(w[c], g[c * P + k]);
-  w[6] = g[6 * P];
+  w[6] = g[6 * size_t(P)];
   return w;
 }
 

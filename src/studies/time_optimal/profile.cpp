@@ -515,7 +515,8 @@ struct TwoLinkResample {
         xs(buf.arrays[0]),
         us(buf.arrays[1]),
         sds(buf.arrays[2]),
-        val{buf.arrays + 3, buf.arrays + 3 + nj, buf.arrays + 3 + 2 * nj},
+        val{buf.arrays + 3, buf.arrays + 3 + nj,
+            buf.arrays + 3 + 2 * static_cast<std::ptrdiff_t>(nj)},
         peaks(buf.peaks) {
     *out = MotionSamples{};
     *viol = Violation{};
@@ -565,8 +566,8 @@ struct TwoLinkResample {
     const PathGeometry& path = problem.path.tip();
     std::vector<double>& s_at = buf.s_at;
     std::vector<PathPoint>& pp_at = buf.pp_at;
-    s_at.resize(static_cast<size_t>(per_interval + 1));
-    pp_at.resize(static_cast<size_t>(per_interval + 1));
+    s_at.resize(static_cast<size_t>(per_interval) + 1);
+    pp_at.resize(static_cast<size_t>(per_interval) + 1);
     for (int k = k0; k < k1; ++k) {
       const int m0 = k == 0 ? 0 : 1;
       // point m of interval k at index base + m of the block

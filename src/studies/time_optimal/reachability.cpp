@@ -3,6 +3,7 @@
 // exact solver: reachability analysis (backward controllable sets, greedy forward pass)
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <iterator>
 #include <sstream>
 
@@ -149,7 +150,8 @@ inline int add_rows(const double* p, int nj, const Limits& lim, double shift, Co
   const auto add = [&](double cx, double cu, double lo, double hi) {
     out[n++] = Coef{cx, cu + shift * cx, lo, hi};
   };
-  const double *dq = p, *ddq = p + nj, *a = p + 2 * nj, *b = p + 3 * nj, *c = p + 4 * nj;
+  const std::ptrdiff_t m = nj;  // (the offsets in the pointers' type)
+  const double *dq = p, *ddq = p + m, *a = p + 2 * m, *b = p + 3 * m, *c = p + 4 * m;
   for (int j = 0; j < nj; ++j) {
     add(dq[j] * dq[j], 0.0, -kReachInf, lim.velocity[j] * lim.velocity[j]);
     add(b[j], a[j], -lim.torque[j] - c[j], lim.torque[j] - c[j]);

@@ -466,7 +466,7 @@ GridConvergence grid_convergence(const Problem& pb, const SolverResult& exact,
   g.s_lo = grid[best_lo];
   g.s_hi = grid[best_hi + 1];
   for (int k = best_lo; k <= best_hi + 1; ++k) g.max_sd = std::max(g.max_sd, exact.node_sd[k]);
-  g.min_sin_q2 = std::min(g.min_sin_q2, min_sin_q2(2 * best_lo, 2 * best_hi + 2));
+  g.min_sin_q2 = std::min(g.min_sin_q2, min_sin_q2(2 * size_t(best_lo), 2 * size_t(best_hi) + 2));
   os.precision(7);
   os << "duration " << exact.duration << " s on " << n << (graded ? " graded" : "")
      << " grid points, " << o.duration << " s on " << g.refined_points
