@@ -28,7 +28,7 @@ namespace to = studies::time_optimal;
 
 const fs::path kRepo = ARMSTUDY_SOURCE_DIR;
 
-to::Spec load_bundled(const fs::path& path) {
+to::Spec load_model_case(const fs::path& path) {
   cases::Diagnostics d(path.string());
   std::string text;
   const auto node = cases::parse_file(path.string(), d, &text);
@@ -81,7 +81,7 @@ TEST(ArmModelMujoco, MjInverseOnTheUsersModelAndOnModelXmlEqualsTheChainsDynamic
                          Arm{vertical_case, kRepo / "tests/cases/models/arm3_vertical.xml",
                              "arm3_vertical_in_plane"}}) {
     SCOPED_TRACE(arm.model.string());
-    const to::Spec spec = load_bundled(arm.case_file);
+    const to::Spec spec = load_model_case(arm.case_file);
     const core::PlanarChain& chain = spec.chain;
     const int n = chain.num_links();
     MujocoModel user = MujocoModel::from_file(arm.model.string());
