@@ -285,6 +285,7 @@ Results TimeOptimalRun::study_results() const {
                           g.graded_tolerance, g.max_points,     g.capped};
   }
   if (replay_) o.mujoco_replay = replay_results(*replay_);
+  if (spec_.arm_origin.from_model()) o.arm_model = spec_.arm_origin.lines();
   return o;
 }
 

@@ -3,8 +3,11 @@
 #include "cases/arm_loader.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
+
+#include "cases/input_file.hpp"
 
 namespace armstudy::cases {
 
@@ -70,14 +73,65 @@ void check_massless_links(const core::PlanarChain& chain,
     }
   }
 }
+
+// `arm: {model: FILE}`: the file read like every input, then through MuJoCo's parser
+core::PlanarChain load_arm_model(Map& root, Map& arm, const core::PlanarChain& fallback,
+                                 int links_required,
+                                 std::optional<model_import::ImportedArm>* imported) {
+  const auto file = arm.string("model");
+  for (const char* k : {"links", "payload", "point_masses"})
+    if (arm.has(k))
+      arm.error(k, "'arm." + std::string(k) +
+                       "' is given beside 'arm.model'; expected one of them (the model "
+                       "gives the links, masses and payload)");
+  arm.finish();
+  if (root.has("gravity")) {
+    root.get("gravity");
+    root.error("gravity",
+               "'gravity' is given with 'arm.model'; expected none: gravity is the model's "
+               "(<option gravity>, MuJoCo's default for a URDF), projected into its plane");
+  }
+  if (!file) return fallback;
+  const std::filesystem::path case_dir = std::filesystem::path(arm.diag().path()).parent_path();
+  const std::string path = (case_dir / *file).lexically_normal().string();
+  const std::string where = "'arm.model' (" + path + ")";
+  std::string bytes, why;
+  bool runtime = false;
+  InputFileRules rules;
+  rules.max_bytes = kMaxModelBytes;
+  rules.kind = "robot description (URDF or MJCF)";
+  if (!read_input_file(path, rules, &bytes, &why, &runtime)) {
+    arm.error("model", where + ": " + why);
+    return fallback;
+  }
+  try {
+    model_import::ImportedArm a = model_import::import_arm(path, bytes);
+    const int n = a.chain.num_links();
+    if (links_required > 0 && n != links_required) {
+      arm.error("model", where + ": the model has " + std::to_string(n) + " hinges; expected " +
+                             std::to_string(links_required) + " links for this study");
+      return fallback;
+    }
+    a.path = *file;
+    core::PlanarChain chain = a.chain;
+    if (imported) *imported = std::move(a);
+    return chain;
+  } catch (const std::exception& e) {
+    arm.error("model", "'arm.model': " + std::string(e.what()));
+    return fallback;
+  }
+}
 }  // namespace
 
-core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int links_required) {
+core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int links_required,
+                           std::optional<model_import::ImportedArm>* imported) {
+  auto arm = root.map("arm");
+  if (arm && arm->has("model"))
+    return load_arm_model(root, *arm, fallback, links_required, imported);
   core::PlanarChain chain = fallback;
   chain.gravity =
       root.number_or("gravity", fallback.gravity, NumberRule::range(0.0, 100.0, "m/s^2"));
   if (std::isnan(chain.gravity)) chain.gravity = fallback.gravity;
-  auto arm = root.map("arm");
   if (!arm) return chain;
   const size_t errors_before = arm->diag().count();
 
@@ -121,6 +175,26 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
     root.error("arm", std::string("arm: ") + e.what());
     return fallback;
   }
+}
+
+studies::ArmOrigin arm_origin(const model_import::ImportedArm& arm) {
+  studies::ArmOrigin o;
+  o.model = arm.path;
+  o.format = arm.format;
+  o.name = arm.model_name;
+  o.plane = arm.plane_text();
+  o.tip = arm.tip;
+  o.joint_names = arm.joint_names;
+  return o;
+}
+
+std::vector<Eigen::Vector2d> model_ranges(const model_import::ImportedArm& arm) {
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& r : arm.range) {
+    if (!r) return {};
+    out.emplace_back(r->lower, r->upper);
+  }
+  return out;
 }
 
 double payload_mass(const core::PlanarChain& chain) {

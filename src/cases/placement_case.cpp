@@ -63,8 +63,14 @@ namespace {
 namespace pl = studies::placement;
 
 // the arm: a horizontal 2-link arm with both joints active
-void check_placement_arm(Map& root, const core::PlanarChain& chain) {
-  if (chain.gravity != 0.0) {
+void check_placement_arm(Map& root, const core::PlanarChain& chain, bool from_model) {
+  if (chain.gravity != 0.0 && from_model) {
+    root.error("arm", "'arm.model' is an arm in a plane with gravity " +
+                          format_number(chain.gravity) +
+                          " m/s^2 (the model's gravity projected into the plane normal to its "
+                          "joints' axes); expected 0: the placement study is a horizontal plane "
+                          "(joint axes along the model's gravity)");
+  } else if (chain.gravity != 0.0) {
     root.error("gravity", "'gravity' is " + format_number(chain.gravity) +
                               " m/s^2; expected 0: the placement study is a horizontal plane");
   }
@@ -75,6 +81,23 @@ void check_placement_arm(Map& root, const core::PlanarChain& chain) {
                      "]' has a passive joint; expected both joints active for a placement study");
     }
   }
+}
+
+// an imported arm's torque limits (the model's, both joints) where the case sets none
+void model_torque_limit(Map& p, const model_import::ImportedArm& model, pl::Spec& spec) {
+  std::vector<std::string>& origin = spec.arm_origin.limits;
+  if (p.has("torque_limits_Nm")) {
+    origin.push_back("placement.torque_limits_Nm: the case");
+    return;
+  }
+  if (model.torque.size() != 2 || !model.torque[0] || !model.torque[1]) {
+    origin.push_back("placement.torque_limits_Nm: none (the model states none for both joints)");
+    return;
+  }
+  spec.torque_limit = std::array<double, 2>{model.torque[0]->value, model.torque[1]->value};
+  origin.push_back("placement.torque_limits_Nm [" + format_number(model.torque[0]->value) + ", " +
+                   format_number(model.torque[1]->value) + "] N m: the model's " +
+                   model.torque[0]->from + "; " + model.torque[1]->from);
 }
 
 // the task: exactly one of length_fraction and length_m
@@ -212,8 +235,10 @@ void load_evaluations(Map& p, pl::Spec& spec) {
 
 studies::placement::Spec load_placement(Map& root) {
   pl::Spec spec;  // its defaults are the defaults of the keys below (written once, in spec.hpp)
-  spec.chain = load_arm(root, placement_default_arm(), 2);
-  check_placement_arm(root, spec.chain);
+  std::optional<model_import::ImportedArm> model;
+  spec.chain = load_arm(root, placement_default_arm(), 2, &model);
+  check_placement_arm(root, spec.chain, model.has_value());
+  if (model) spec.arm_origin = arm_origin(*model);
   const pl::Annulus an = pl::annulus(spec.chain.links[0].length, spec.chain.links[1].length);
 
   auto p = root.map("placement");
@@ -230,6 +255,7 @@ studies::placement::Spec load_placement(Map& root) {
   load_sweep_settings(*p, an, spec);
   load_evaluations(*p, spec);
   spec.threads = p->integer_or("threads", spec.threads, 0, 256);
+  if (model) model_torque_limit(*p, *model, spec);
   p->finish();
   if (p->diag().empty()) p->diag().demand(placement_demand(spec, p->node().Mark()));
   return spec;

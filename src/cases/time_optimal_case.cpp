@@ -173,7 +173,8 @@ void check_path_in_ranges(Seq& pts, const std::vector<YAML::Node>& nodes, int jo
 
 // `time_optimal.joint_path`: waypoints in joint space, one angle per joint, and the joints'
 // optional ranges (the whole path must stay inside them)
-void load_joint_path(Map& path, int joints, to::Spec* spec) {
+void load_joint_path(Map& path, int joints, to::Spec* spec,
+                     const std::vector<Eigen::Vector2d>& model_range) {
   spec->space = to::PathSpace::kJoint;
   if (joints < 1 || joints > core::kMaxLinks) {
     // the arm is already refused (arm.links, or 0 when it was): no joints to read against
@@ -203,6 +204,8 @@ void load_joint_path(Map& path, int joints, to::Spec* spec) {
   const bool all_read = read_waypoints(*pts, joints, want, spec, &nodes);
   const bool count_ok = check_waypoint_count(path, pts->size(), spec->joint_path.kind);
   const bool range_ok = read_joint_ranges(path, joints, spec);
+  if (!path.has("range_rad") && model_range.size() == static_cast<size_t>(joints))
+    spec->joint_path.range = model_range;  // the model's joint ranges (arm.model)
   path.finish();
   if (!all_read || !count_ok || !range_ok || spec->joint_path.range.empty()) return;
   check_path_in_ranges(*pts, nodes, joints, *spec);
@@ -324,13 +327,14 @@ void check_time_optimal_arm(Map& root, const core::PlanarChain& chain, bool arm_
 }
 
 // exactly one of time_optimal.path (a tip path, 2 links) and time_optimal.joint_path
-void load_either_path(Map& t, bool arm_ok, int joints, to::Spec* spec) {
+void load_either_path(Map& t, bool arm_ok, int joints, to::Spec* spec,
+                      const std::vector<Eigen::Vector2d>& model_range) {
   if (t.has("path") && t.has("joint_path")) {
     t.error("joint_path",
             "'time_optimal' has both 'path' (a tip path) and 'joint_path'; expected one of them");
     t.get("path");
   } else if (t.has("joint_path")) {
-    if (auto jp = t.map("joint_path")) load_joint_path(*jp, arm_ok ? joints : 0, spec);
+    if (auto jp = t.map("joint_path")) load_joint_path(*jp, arm_ok ? joints : 0, spec, model_range);
     spec->space = to::PathSpace::kJoint;
     if (t.has("configuration"))
       t.error(
@@ -358,8 +362,30 @@ void load_either_path(Map& t, bool arm_ok, int joints, to::Spec* spec) {
   }
 }
 
-// the per-joint limits, judged against a valid arm only (a refused arm is reported once)
-void load_limits(Map& t, bool arm_ok, int joints, to::Spec* spec) {
+// one per-joint limit of an imported arm's model, if it states it for every joint
+std::optional<core::JointVector> model_limit(
+    const std::vector<std::optional<model_import::ModelLimit>>& per_joint, std::string* from) {
+  if (per_joint.empty()) return std::nullopt;
+  core::JointVector v(static_cast<int>(per_joint.size()));
+  for (size_t i = 0; i < per_joint.size(); ++i) {
+    if (!per_joint[i]) return std::nullopt;
+    v[static_cast<int>(i)] = per_joint[i]->value;
+    *from += (i ? "; " : "") + per_joint[i]->from;
+  }
+  return v;
+}
+
+std::string joint_values(const core::JointVector& v) {
+  std::string s = "[";
+  for (int i = 0; i < v.size(); ++i) s += (i ? ", " : "") + format_number(v[i]);
+  return s + "]";
+}
+
+// the per-joint limits, judged against a valid arm only (a refused arm is reported once).
+// An imported arm's model states its own (arm.model); a case key still overrides them.
+void load_limits(Map& t, bool arm_ok, int joints, to::Spec* spec,
+                 const model_import::ImportedArm* model) {
+  std::vector<std::string>& origin = spec->arm_origin.limits;
   if (arm_ok) {
     const int nl = std::clamp(joints, 1, core::kMaxLinks);
     if (const auto v = joint_limits(t, "velocity_limit_rad_s", "rad/s", nl))
@@ -371,14 +397,39 @@ void load_limits(Map& t, bool arm_ok, int joints, to::Spec* spec) {
     for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm", "acceleration_limit_rad_s2"})
       t.get(key);
   }
-  // the default limits are the 2-link source's: a longer chain states its own
-  if (arm_ok && joints != 2) {
-    for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm"})
-      if (!t.has(key))
-        t.error_here(std::string("missing required key 'time_optimal.") + key + "' for an arm of " +
-                     std::to_string(joints) + " links; expected " + std::to_string(joints) +
-                     " limits, one per joint (the defaults are a 2-link arm's)");
+  struct Key {
+    const char* key;
+    const char* unit;
+    core::JointVector* value;
+    const std::vector<std::optional<model_import::ModelLimit>>* from_model;
+  };
+  const std::vector<std::optional<model_import::ModelLimit>> none;
+  for (const Key& k :
+       {Key{"velocity_limit_rad_s", "rad/s", &spec->velocity_limit,
+            model ? &model->velocity : &none},
+        Key{"torque_limit_Nm", "N m", &spec->torque_limit, model ? &model->torque : &none}}) {
+    if (!arm_ok) break;
+    std::string from;
+    const std::string key = std::string("time_optimal.") + k.key;
+    if (t.has(k.key)) {
+      if (model)
+        origin.push_back(key + " " + joint_values(*k.value) + " " + k.unit +
+                         ": the case (over the model's)");
+    } else if (const auto v = model_limit(*k.from_model, &from)) {
+      *k.value = *v;
+      origin.push_back(key + " " + joint_values(*v) + " " + k.unit + ": the model's " + from);
+    } else if (model || joints != 2) {
+      // the default limits are the 2-link source's: a longer chain, or a model's arm, states
+      // its own
+      t.error_here("missing required key '" + key + "' for an arm of " + std::to_string(joints) +
+                   " links; expected " + std::to_string(joints) + " limits, one per joint " +
+                   (model ? "(the model " + model->path + " does not state them for every joint)"
+                          : std::string("(the defaults are a 2-link arm's)")));
+    }
   }
+  if (model && spec->acceleration_limit)
+    origin.push_back("time_optimal.acceleration_limit_rad_s2 " +
+                     joint_values(*spec->acceleration_limit) + " rad/s^2: the case");
 }
 
 // time_optimal.complex and time_optimal.exact
@@ -435,8 +486,10 @@ void check_polyline_segments(Map& root, const to::Spec& spec) {
 studies::time_optimal::Spec load_time_optimal(Map& root) {
   to::Spec spec;
   const size_t errors_before = root.diag().count();
-  spec.chain = load_arm(root, to::default_arm(), 0);
+  std::optional<model_import::ImportedArm> model;
+  spec.chain = load_arm(root, to::default_arm(), 0, &model);
   const bool arm_ok = root.diag().count() == errors_before;
+  if (model) spec.arm_origin = arm_origin(*model);
   const int joints = spec.chain.num_links();
   check_time_optimal_arm(root, spec.chain, arm_ok);
   auto t = root.map("time_optimal");
@@ -446,9 +499,19 @@ studies::time_optimal::Spec load_time_optimal(Map& root) {
           "missing required key 'time_optimal'; expected the path and the joint limits");
     return spec;
   }
-  load_either_path(*t, arm_ok, joints, &spec);
+  load_either_path(*t, arm_ok, joints, &spec,
+                   model ? model_ranges(*model) : std::vector<Eigen::Vector2d>{});
+  if (model && spec.space == to::PathSpace::kJoint && !spec.joint_path.range.empty()) {
+    const YAML::Node jp = t->node()["joint_path"];
+    const bool own = jp.IsMap() && jp["range_rad"].IsDefined();
+    std::string from;
+    for (const auto& r : model->range)
+      if (r) from += (from.empty() ? "" : "; ") + r->from;
+    spec.arm_origin.limits.push_back("time_optimal.joint_path.range_rad: " +
+                                     (own ? std::string("the case") : "the model's " + from));
+  }
   spec.configuration = t->integer_or("configuration", 1, 1, 2);
-  load_limits(*t, arm_ok, joints, &spec);
+  load_limits(*t, arm_ok, joints, &spec, model ? &*model : nullptr);
   load_dp(*t, &spec.dp);
   load_complex_and_exact(*t, &spec);
   spec.motion_steps = t->integer_or("motion_steps", spec.motion_steps, 1, 100000);

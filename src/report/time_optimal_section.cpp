@@ -77,6 +77,14 @@ Section method_section(const Results_& to) {
       "The comparison that matters is between the solvers: the exact solver is never slower "
       "than DP or Complex on the same problem.");
   method.table(json_table(to_json(limits), "Limits used (per joint)."));
+  if (to.arm_model && !to.arm_model->empty()) {
+    // an arm read from a URDF or MJCF: its plane, and where each limit came from
+    method.paragraph("The " + (*to.arm_model)[0] + ".");
+    std::string from = "Where each limit came from: ";
+    for (size_t i = 1; i < to.arm_model->size(); ++i)
+      from += (*to.arm_model)[i] + (i + 1 < to.arm_model->size() ? "; " : ".");
+    if (to.arm_model->size() > 1) method.paragraph(from);
+  }
   return method;
 }
 

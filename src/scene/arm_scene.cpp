@@ -3,6 +3,7 @@
 #include "scene/arm_scene.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <locale>
 #include <sstream>
@@ -144,18 +145,57 @@ ViewBox table_view(const Eigen::Vector2d& b, double R, double r,
   return v;
 }
 
-// the model's comment: the case's own arm (its links and its gravity) and the scene
-std::string table_comment(const core::PlanarChain& chain) {
+// a model name from the model file's own (letters, digits and _ kept)
+std::string model_name_of(const studies::ArmOrigin& origin, double gravity) {
+  if (origin.name.empty()) return gravity == 0 ? "horizontal_arm" : "vertical_arm";
+  std::string n = origin.name;
+  for (char& c : n)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+  return n + "_in_plane";
+}
+
+std::string joint_list(const std::vector<double>& v, const char* unit) {
+  auto x = xml();
+  for (size_t i = 0; i < v.size(); ++i) x << (i ? ", " : "") << "joint" << i + 1 << " " << v[i];
+  x << " " << unit;
+  return x.str();
+}
+
+// the model's comment: the case's own arm (its links, its plane and gravity), where it came
+// from, the limits the study used, and the scene
+std::string table_comment(const core::PlanarChain& chain, const TableDecor& d) {
   std::ostringstream what;
   what.imbue(std::locale::classic());
   what << "    A " << chain.num_links() << "-link planar arm in the x-y plane, "
-       << (chain.gravity == 0 ? "horizontal (gravity 0)" : "gravity ");
+       << (chain.gravity == 0 ? "horizontal (gravity 0)" : "vertical: gravity ");
   if (chain.gravity != 0) what << chain.gravity << " m/s^2 along -y";
-  what << ": the\n";
+  what << ".\n";
+  const studies::ArmOrigin& o = d.origin;
+  if (o.from_model()) {
+    what << "    Read from " << o.model << " (" << o.format << ", model '" << o.name
+         << "') through MuJoCo's parser and solved in\n    " << o.plane << ".\n    The tip is "
+         << o.tip << ". Joints joint1, joint2, ... are the model's";
+    for (size_t i = 0; i < o.joint_names.size(); ++i)
+      what << (i ? ", " : " ") << "'" << o.joint_names[i] << "'";
+    what << " (the model's own angles).\n";
+  }
+  if (!d.joint_range.empty() || !d.torque_limit.empty() || !d.velocity_limit.empty() ||
+      !o.limits.empty()) {
+    what << "    The limits the study used: joint ranges (range) and torque bounds (the motors'\n"
+         << "    forcerange, gear 1) below; MJCF has no velocity limit";
+    if (!d.velocity_limit.empty()) what << ": " << joint_list(d.velocity_limit, "rad/s");
+    what << ".\n";
+    for (const std::string& l : o.limits) what << "      " << l << "\n";
+  }
+  if (chain.gravity == 0)
+    what << "    The table is the x-y plane seen from above (camera looking down -z), the root is\n"
+            "    the dark pedestal, the task is drawn in red from S (green) to F (red); a 0.2 m "
+            "grid.\n";
+  else
+    what << "    The x-y plane is seen from +z (x right, y up: gravity points down the image), "
+            "the\n    root is the dark pedestal, the task is drawn in red from S (green) to F "
+            "(red); a 0.2 m grid.\n";
   return what.str() +
-         "    table is the x-y plane seen from above (camera looking down -z), the root is the\n"
-         "    dark pedestal, the task line is drawn in red from S (green) to F (red); a 0.2 m "
-         "grid.\n"
          "    Each link body has one combined <inertial> (link + payload), so MuJoCo's masses,\n"
          "    centres of mass and inertias are the case's; geoms are visual only.\n";
 }
@@ -219,7 +259,9 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
   }
 
   MjcfOptions o;
-  o.model_name = "horizontal_arm";
+  o.model_name = model_name_of(decor.origin, chain.gravity);
+  o.joint_range = decor.joint_range;
+  o.torque_limit = decor.torque_limit;
   o.fovy = kFovy;
   o.top_extra = viewer_centre(cx, cy);
   o.offscreen = decor.offscreen;
@@ -233,7 +275,7 @@ ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& 
     o.asset_extra = grid_asset("table", kTableGridM, v, decor.offscreen.width,
                                decor.offscreen.height, rgb, mark);
   }
-  o.comment = table_comment(chain);
+  o.comment = table_comment(chain, decor);
   o.world_extra = table_world(b, r, cx, cy, half, task);
   // joints as dark discs
   for (int i = 0; i < chain.num_links(); ++i) {

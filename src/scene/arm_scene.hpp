@@ -14,6 +14,7 @@
 
 #include "core/planar_chain.hpp"
 #include "scene/renderer.hpp"
+#include "studies/arm_origin.hpp"
 
 namespace armstudy::scene {
 
@@ -38,11 +39,21 @@ struct TableDecor {
   /// A task path as a polyline (used when task_start/task_end are not set), m.
   std::vector<Eigen::Vector2d> task_path;
   cases::FrameSize offscreen;  ///< the model's off-screen buffer, px: at least the frame
+  /// The limits the study used, for model.xml (empty: none): per joint a range [lo, hi]
+  /// (rad), a torque bound (N m, the motors' force range) and a velocity bound (rad/s,
+  /// written as a comment: MJCF has no joint velocity limit).
+  std::vector<Eigen::Vector2d> joint_range;
+  std::vector<double> torque_limit, velocity_limit;
+  /// Where the arm came from (its model file, plane and limits' sources).
+  studies::ArmOrigin origin;
 };
 
-/// The horizontal arm on a table (top view): links in blue and teal, the payload as an
-/// orange sphere at the tip, the task line in red with its start and end, the root as a
-/// dark pedestal with a cross; a kTableGridM grid on the table.
+/// The arm in its plane seen from +z (x right, y up): a horizontal arm (gravity 0, model
+/// `horizontal_arm`) on a table seen from above, or an arm in a vertical plane (model
+/// `vertical_arm`, gravity along -y, down the image) before a wall; an arm read from a
+/// model file is named after it. The horizontal arm on a table (top view): links in blue and teal,
+/// the payload as an orange sphere at the tip, the task line in red with its start and end, the
+/// root as a dark pedestal with a cross; a kTableGridM grid on the table.
 ArmScene horizontal_arm_scene(const core::PlanarChain& chain, const TableDecor& decor);
 
 /// What the tray arm's scene needs besides the chain.

@@ -166,7 +166,11 @@ void write_mjcf_links(std::ostream& x, const core::PlanarChain& chain, const Mjc
     const std::string& rgba = o.link_rgba.empty()
                                   ? std::string("0.30 0.45 0.70 1")
                                   : o.link_rgba[std::min<size_t>(i, o.link_rgba.size() - 1)];
-    x << indent << "  <joint name=\"joint" << i + 1 << "\" armature=\"" << armature[i] << "\"/>\n"
+    x << indent << "  <joint name=\"joint" << i + 1 << "\" armature=\"" << armature[i] << "\"";
+    if (i < static_cast<int>(o.joint_range.size()))
+      x << " limited=\"true\" range=\"" << o.joint_range[i].x() << " " << o.joint_range[i].y()
+        << "\"";
+    x << "/>\n"
       << indent << "  <inertial pos=\"" << in.com_x << " " << in.com_y << " 0\" mass=\""
       << std::max(in.mass, kMinMjcfMass) << "\" diaginertia=\"" << izz << " " << izz << " " << izz
       << "\"/>\n"
@@ -204,8 +208,13 @@ void write_mjcf_tail(std::ostream& x, const core::PlanarChain& chain, const Mjcf
   }
   x << "  <actuator>\n";
   for (int i = 0; i < chain.num_links(); ++i)
-    if (chain.links[i].active)
-      x << "    <motor name=\"motor" << i + 1 << "\" joint=\"joint" << i + 1 << "\" gear=\"1\"/>\n";
+    if (chain.links[i].active) {
+      x << "    <motor name=\"motor" << i + 1 << "\" joint=\"joint" << i + 1 << "\" gear=\"1\"";
+      if (i < static_cast<int>(o.torque_limit.size()))
+        x << " forcelimited=\"true\" forcerange=\"" << -o.torque_limit[i] << " "
+          << o.torque_limit[i] << "\"";
+      x << "/>\n";
+    }
   x << "  </actuator>\n</mujoco>\n";
 }
 }  // namespace

@@ -63,6 +63,10 @@ struct MjcfOptions {
   std::string equality_solimp = "0.9999 0.9999 0.001";
   /// XML comment placed after the header (how the model represents the case).
   std::string comment;
+  /// Per joint (empty: none): the range [lo, hi] in rad (limited="true") and the motor's
+  /// torque bound in N m (forcelimited="true" forcerange="-t t", gear 1).
+  std::vector<Eigen::Vector2d> joint_range;
+  std::vector<double> torque_limit;
 };
 
 /// How one coupling spinner is represented in MuJoCo (see the header comment).

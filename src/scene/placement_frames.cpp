@@ -25,6 +25,8 @@ ArmScene placement_scene(const pl::Spec& spec, const pl::ProgramConfig& pc,
   decor.task_start = Eigen::Vector2d::Zero();
   decor.task_end = to_P * (F - S);
   decor.offscreen = options.frame;
+  if (spec.torque_limit) decor.torque_limit = {(*spec.torque_limit)[0], (*spec.torque_limit)[1]};
+  decor.origin = spec.arm_origin;
   return horizontal_arm_scene(chain, decor);
 }
 

@@ -16,6 +16,13 @@ ArmScene time_optimal_scene(const to::Spec& spec, const to::Result& result,
   TableDecor decor;
   for (int k = 0; k < result.path_p.cols(); ++k) decor.task_path.push_back(result.path_p.col(k));
   decor.offscreen = options.frame;
+  // the limits the study used, for model.xml
+  decor.torque_limit.assign(spec.torque_limit.data(),
+                            spec.torque_limit.data() + spec.torque_limit.size());
+  decor.velocity_limit.assign(spec.velocity_limit.data(),
+                              spec.velocity_limit.data() + spec.velocity_limit.size());
+  if (spec.space == to::PathSpace::kJoint) decor.joint_range = spec.joint_path.range;
+  decor.origin = spec.arm_origin;
   return horizontal_arm_scene(spec.chain, decor);
 }
 

@@ -13,6 +13,7 @@
 
 #include "core/motion_program.hpp"
 #include "core/planar_chain.hpp"
+#include "studies/arm_origin.hpp"
 
 namespace armstudy::studies::placement {
 
@@ -50,6 +51,8 @@ struct Spec {
   double refine_xtol = 1e-5;                                   ///< m
   double refine_phitol = 1e-3 * 3.14159265358979323846 / 180;  ///< rad
   int threads = 0;  ///< worker threads for the sweeps (0: all hardware threads)
+  /// where the arm and its limits came from (model.xml and the report say it)
+  ArmOrigin arm_origin;
 };
 
 }  // namespace armstudy::studies::placement

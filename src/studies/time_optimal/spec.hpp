@@ -13,6 +13,7 @@
 
 #include "core/planar_chain.hpp"
 #include "core/types.hpp"
+#include "studies/arm_origin.hpp"
 
 namespace armstudy::studies::time_optimal {
 
@@ -107,6 +108,8 @@ struct Spec {
   ExactSettings exact;
   int motion_steps = 200;          ///< equal time steps of the sampled motion (for the renderer)
   int resample_per_interval = 16;  ///< dense re-check points per solver interval
+  /// where the arm and its limits came from (model.xml and the report say it)
+  ArmOrigin arm_origin;
 };
 
 /// The source's arm: massless links with a 1.0 kg point mass at the end of each link,

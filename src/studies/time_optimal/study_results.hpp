@@ -110,6 +110,8 @@ struct StudyResults {
   Motion motion;
   std::optional<GridConvergence> grid_convergence;
   std::optional<ReplayResults> mujoco_replay;
+  /// an arm read from a model file (arm.model): where it and each limit came from
+  std::optional<std::vector<std::string>> arm_model;
 };
 
 template <class V>
@@ -287,6 +289,10 @@ void fields(V& v, StudyResults& x) {
   v.optional(
       "mujoco_replay", x.mujoco_replay,
       "the exact solution's torques applied open loop in MuJoCo (check mujoco_dynamic_replay)");
+  v.optional("arm_model", x.arm_model,
+             "an arm read from a URDF or MJCF file (arm.model): the file, the plane and gravity "
+             "it was solved in, and where each limit came from (the model or the case); absent "
+             "for an arm written out in the case");
 }
 
 }  // namespace armstudy::studies::time_optimal
