@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "studies/placement/geometry.hpp"
 #include "studies/placement/peaks.hpp"
@@ -81,8 +82,8 @@ TEST(PlacementLimits, TheLimitBoundOptimaKeepTheirLimitBetweenTheSamples) {
     std::printf(
         "%.2f Lmax %s: elbow %s peak %.12f on 200001 samples, printed %.12f, limit %g; "
         "energy %.10f +- %.1e J, reference %.10f J\n",
-        run.fraction, core::program_name(run.program), run.torque ? "torque" : "power", peak,
-        printed, limit, e, pc.energy_error(), run.reference);
+        run.fraction, std::string(core::program_name(run.program)).c_str(),
+        run.torque ? "torque" : "power", peak, printed, limit, e, pc.energy_error(), run.reference);
     // the limit holds between the samples (to the dense sampling's own error), and the
     // printed peak is the continuous one
     EXPECT_LE(peak, limit * (1 + 2e-10)) << run.fraction;
