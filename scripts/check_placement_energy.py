@@ -111,10 +111,17 @@ class Line:
 
     def powers(self, t):
         """(M1 w1, M2 (w2 - w1)) at time t: root and elbow power, W."""
+        if min(t, self.T - t) <= 0:
+            return 0.0, 0.0   # at rest on the end itself (a point of measure zero)
+        M1, M2, r1, r2 = self.state(t)
+        return M1 * r1, M2 * r2
+
+    def state(self, t):
+        """(M1, M2, w1, w2 - w1) at time t: root and elbow torque (N m) and joint rates
+        (rad/s)."""
         tail = t > self.T / 2
         tau = self.T - t if tail else t
-        if tau <= 0:
-            return 0.0, 0.0   # at rest on the end itself (a point of measure zero)
+        tau = max(tau, 0.0)
         sig, sd, sdd = program_from_end(self.prog, tau, self.T, self.L)
         if tail:
             px, py = self.ex - sig * self.ux, self.ey - sig * self.uy
@@ -146,7 +153,7 @@ class Line:
         a2 = (-L1 * c1 * bx - L1 * s1 * by) / det
         Q1 = arm.J1 * a1 + arm.H * cq * a2 - arm.H * sq * w2 ** 2
         Q2 = arm.H * cq * a1 + arm.J2 * a2 + arm.H * sq * w1 ** 2
-        return (Q1 + Q2) * w1, Q2 * (w2 - w1)
+        return Q1 + Q2, Q2, w1, w2 - w1
 
     def integrand(self, t):
         p1, p2 = self.powers(t)

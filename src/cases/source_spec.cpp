@@ -79,6 +79,8 @@ SourceClaim read_claim(Map& c) {
   }
   out.tie_rel = c.number_or("tie_rel", out.tie_rel, NumberRule::non_negative(""));
   out.measure = c.string_or("measure", "");
+  out.resolution_rel =
+      c.number_or("resolution_rel", out.resolution_rel, NumberRule::non_negative(""));
   c.finish();
   return out;
 }

@@ -42,6 +42,9 @@ struct SourceClaim {
   std::string b;          ///< value path, or a number as text
   double tie_rel = 1e-6;  ///< |a - b| <= tie_rel max(|a|, |b|) is a tie, not a relation
   std::string measure;    ///< what a and b are, in words (e.g. "energy, J")
+  /// the resolution of the methods a and b come from, relative: |a - b| within it (and
+  /// above tie_rel) decides nothing, the verdict "tie" (0: none given)
+  double resolution_rel = 0;
 };
 
 /// One printed figure or claim of the source.

@@ -572,8 +572,10 @@ void placement_sections(const PS& pl, const ResultsRecord& record, FigureWriter&
       "error estimate; its peak torque is checked by doubling the samples until it changes by "
       "less than 1e-3. Near a workspace boundary the energy stays finite while the peak "
       "torque grows without bound: such a motion has its energy but no peak torque "
-      "(peak torque unbounded, singular pose); a line tangent to the inner circle is reported "
-      "as singular without an energy, a peak or a saving.");
+      "(peak torque unbounded, singular pose); a line exactly tangent to the inner circle "
+      "folds the elbow, where both joint rates reverse at once: its energy is the limit of "
+      "the lines just outside it (the integral on both sides plus the reversal's jump "
+      "term), printed with its error, and its peak torque is an impulse.");
   method.note(
       "The thesis's printed example energies cannot be reproduced from its own model and "
       "parameters, and its eq. 7.2 is wrong (M2 is (6.35) itself and M1 = (6.29) + (6.35); "

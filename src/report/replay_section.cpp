@@ -54,7 +54,7 @@ void mujoco_replay_section(const std::vector<ReplayOf>& rs, const std::vector<st
   Table t;
   t.caption = "Open-loop replay in MuJoCo (" + first.integrator +
               "): the largest deviation of any joint from the plan over the motion, against "
-              "the tolerance h² V.";
+              "the tolerance (the larger of h² V and the step's error measured at 2h).";
   t.header = {"motion",   "step h (s)", "steps",           "largest deviation (rad)",
               "at t (s)", "joint",      "tolerance (rad)", "at 2h (rad)",
               "order",    "check"};

@@ -124,9 +124,12 @@ SourceRecord compare_with_source(const cases::SourceSpec& spec, const json& resu
         r.verdict = "no_value";
       } else {
         const double scale = std::max(std::abs(*r.a), std::abs(*r.b));
-        const bool tie = std::abs(*r.a - *r.b) <= c.tie_rel * scale;
+        const double gap = std::abs(*r.a - *r.b);
+        const bool tie = gap <= c.tie_rel * scale;
         const bool holds = !tie && (c.relation == "less" ? *r.a < *r.b : *r.a > *r.b);
-        r.verdict = holds ? "confirmed" : "contradicted";
+        // within the methods' resolution (and not equal) the values decide nothing
+        const bool unresolved = !tie && gap <= c.resolution_rel * scale;
+        r.verdict = unresolved ? "tie" : holds ? "confirmed" : "contradicted";
       }
     } else {
       r.kind = "figure";
@@ -152,7 +155,8 @@ SourceRecord compare_with_source(const cases::SourceSpec& spec, const json& resu
 CheckRecord source_explained_check(const SourceRecord& source) {
   int unexplained = 0;
   for (const SourceRowRecord& r : source.rows)
-    if ((r.verdict == "differs" || r.verdict == "contradicted" || r.verdict == "no_value") &&
+    if ((r.verdict == "differs" || r.verdict == "contradicted" || r.verdict == "tie" ||
+         r.verdict == "no_value") &&
         (!r.reason || r.why.empty()))
       ++unexplained;
   CheckRecord c;
@@ -167,7 +171,7 @@ CheckRecord source_explained_check(const SourceRecord& source) {
 }
 
 std::string source_summary(const SourceRecord& source) {
-  int figures = 0, agrees = 0, claims = 0, confirmed = 0, none = 0;
+  int figures = 0, agrees = 0, claims = 0, confirmed = 0, ties = 0, none = 0;
   for (const SourceRowRecord& r : source.rows) {
     none += r.verdict == "no_value";
     if (r.kind == "figure") {
@@ -176,6 +180,7 @@ std::string source_summary(const SourceRecord& source) {
     } else {
       ++claims;
       confirmed += r.verdict == "confirmed";
+      ties += r.verdict == "tie";
     }
   }
   std::string s = source.document + ": ";
@@ -185,8 +190,9 @@ std::string source_summary(const SourceRecord& source) {
   if (figures && claims) s += "; ";
   if (claims)
     s += std::to_string(claims) + (claims == 1 ? " claim, " : " claims, ") +
-         std::to_string(confirmed) + " confirmed, " + std::to_string(claims - confirmed) +
-         " contradicted";
+         std::to_string(confirmed) + " confirmed, " +
+         (ties ? std::to_string(ties) + " a tie at the methods' resolution, " : std::string()) +
+         std::to_string(claims - confirmed - ties) + " contradicted";
   if (none) s += " (" + std::to_string(none) + " with no armstudy value)";
   return s + ". Reasons: page 2.";
 }
@@ -201,7 +207,11 @@ Section source_section(const SourceRecord& source) {
       "printed placement, grid or parameters) and at armstudy's own optimum. A printed figure "
       "agrees when armstudy's value rounds to it (within half a unit of its last printed "
       "digit); a claim is confirmed when armstudy's values stand in the relation it states "
-      "(a tie, equal to 1e-6, is no relation). Every difference names its reason; each is "
+      "(a tie, equal to 1e-6, is no relation; within the resolution of the methods the values "
+      "come from, where the source names them, they decide nothing: a tie). A difference is "
+      "armstudy's value at the "
+      "source's setting minus the printed one, or at armstudy's optimum where the setting has "
+      "no value (an unreachable line), and says which. Every difference names its reason; each is "
       "derived in docs/defects.md under the anchor given.");
   Table t;
   t.caption = "The source's figures and claims for this case, and armstudy's.";
@@ -209,7 +219,7 @@ Section source_section(const SourceRecord& source) {
               "The source prints",
               "armstudy at the source's setting",
               "armstudy at its optimum",
-              "Difference",
+              "Difference (armstudy − printed)",
               "Verdict",
               "Why (docs/defects.md)"};
   for (const SourceRowRecord& r : source.rows) {
@@ -229,6 +239,8 @@ Section source_section(const SourceRecord& source) {
         diff = format_sig(*r.difference, 4) + (r.unit.empty() ? "" : " " + r.unit);
         if (r.printed && *r.printed != 0)
           diff += " (" + format_sig(100 * *r.difference / std::abs(*r.printed), 3) + " %)";
+        // its baseline: the source's setting where armstudy has a value there
+        diff += r.at_source_setting ? ", at the source's setting" : ", at armstudy's optimum";
       }
     }
     std::string why = r.why;

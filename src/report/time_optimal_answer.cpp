@@ -14,6 +14,18 @@
 #include "studies/time_optimal/study_results.hpp"
 
 namespace armstudy::report {
+namespace {
+
+// a share of the samples in per cent: "100" only when it is all of them, whole per cents
+// from 10 % (never "1e+02"), two digits below
+std::string percent_of_samples(double share) {
+  if (share >= 1) return "100";
+  const double p = 100 * share;
+  if (p >= 9.95) return std::to_string(std::min(99L, std::lround(p)));
+  return format_sig(p, 2);
+}
+
+}  // namespace
 
 void time_optimal_answer(const studies::time_optimal::StudyResults& to, const ResultsRecord&,
                          AnswerBox& a) {
@@ -46,7 +58,7 @@ void time_optimal_answer(const studies::time_optimal::StudyResults& to, const Re
     std::stable_sort(shares.begin(), shares.end(),
                      [](const auto& x, const auto& y) { return x.first > y.first; });
     for (const auto& [share, what] : shares)
-      a.binding.push_back("the " + what + " limit binds at " + format_sig(100 * share, 2) +
+      a.binding.push_back("the " + what + " limit binds at " + percent_of_samples(share) +
                           " % of the samples (within 1 %)");
     if (shares.empty() && n > 0)
       a.binding.push_back("no limit is within 1 % of its bound at any sample");

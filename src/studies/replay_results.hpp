@@ -51,7 +51,8 @@ void fields(V& v, ReplayResults& x) {
   v("max_deviation_rad", x.max_deviation_rad, "max over steps and joints of |q_sim - q_plan|");
   v("max_deviation_t_s", x.max_deviation_t_s, "time of the largest deviation");
   v("max_deviation_joint", x.max_deviation_joint, "joint of the largest deviation (1-based)");
-  v("tolerance_rad", x.tolerance_rad, "allowed deviation, h^2 V");
+  v("tolerance_rad", x.tolerance_rad,
+    "allowed deviation, the larger of h^2 V and the step's error measured at 2 h");
   v("tolerance_rule", x.tolerance_rule, "the tolerance as a sentence");
   v("variation_rad_s2", x.variation_rad_s2,
     "V: total variation of M(q)^-1 tau over the step means");

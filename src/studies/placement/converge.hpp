@@ -72,6 +72,9 @@ struct EnergyConvergence {
   double rel_change = std::numeric_limits<double>::quiet_NaN();  ///< energy, at the last doubling
   double peak_rel_change = std::numeric_limits<double>::quiet_NaN();  ///< peak torque, same
   double tolerance = 0;  ///< the relative tolerance asked for (energy error, doubling)
+  /// relative resolution of the peaks in `metrics` when they are the continuous motion's
+  /// (peaks.hpp: a case with a torque or power limit); 0: sampled peaks
+  double peak_resolution = 0;
   /// at `samples`; with the quadrature, metrics.energy is the quadrature's energy
   LineMetrics metrics;
   std::vector<ConvergenceRow> rows;  ///< every doubling tried, coarsest first (sampled)

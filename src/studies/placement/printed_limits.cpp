@@ -24,14 +24,18 @@ void check_point(const Spec& spec, const Candidate& c, const std::string& name,
   if (!m.finite()) return;
   ++out.points;
   const char* joint[2] = {"root", "elbow"};
-  const int samples = c.convergence.checked ? c.convergence.samples : spec.samples;
+  const bool continuous = c.convergence.checked && c.convergence.peak_resolution > 0;
+  const std::string at =
+      continuous
+          ? " on the continuous motion"
+          : " at " + std::to_string(c.convergence.checked ? c.convergence.samples : spec.samples) +
+                " samples";
   // one peak against its limit: the largest excess so far, and where
   const auto against = [&](double peak, double limit, const char* what, const char* unit, int j) {
     const double x = peak / limit - 1;
     if (!(x > out.relative)) return;
     out.relative = x;
-    out.where = name + ": " + joint[j] + " " + what + " " + sig6(peak) + " " + unit + " at " +
-                std::to_string(samples) + " samples";
+    out.where = name + ": " + joint[j] + " " + what + " " + sig6(peak) + " " + unit + at;
   };
   for (int j = 0; j < 2; ++j) {
     if (spec.torque_limit)
@@ -59,12 +63,13 @@ std::optional<Check> printed_limits_check(const Spec& spec, const Result& result
   const PrintedLimitExcess e = printed_limit_excess(spec, result);
   std::string what =
       "largest relative excess of a printed point's peak torque or power over "
-      "its limit, at the samples it is printed at (the refinement keeps the "
-      "limit at " +
-      std::to_string(spec.samples) + " samples), over " + std::to_string(e.points) +
-      " printed points";
+      "its limit on the continuous motion (peaks refined between the " +
+      std::to_string(spec.samples) +
+      " samples, resolution below 1e-13 relative; the refinement keeps the limits there), "
+      "over " +
+      std::to_string(e.points) + " printed points";
   if (e.relative > 0) what += "; largest: " + e.where;
-  return make_check("limits_at_printed_samples", what, e.relative, 1e-3);
+  return make_check("limits_at_printed_samples", what, e.relative, 1e-12);
 }
 
 }  // namespace armstudy::studies::placement

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The armstudy authors
 #pragma once
-/// The actuator limits at the samples a placement is printed at. The refinement keeps a
-/// limit at the sweep's samples (spec.samples); the report prints each optimum and each
-/// margin-sweep point at the finer samples where its doubling converged, where a peak that
-/// sits on its limit can read a little higher (the sampling error of a peak, ~h^2). This
-/// check names the largest such excess, relative to the limit, over every printed point.
+/// The actuator limits on the printed placements' motions. The refinement keeps a limit on
+/// the continuous motion (its peaks refined between the samples, peaks.hpp) and the report
+/// prints each optimum's and each margin-sweep point's peaks the same way, so a printed
+/// peak above its limit is a real violation, beyond the peaks' resolution (below 1e-13
+/// relative). This check names the largest such excess, relative to the limit, over every
+/// printed point.
 
 #include "studies/common.hpp"
 #include "studies/placement/result.hpp"
@@ -23,8 +24,8 @@ struct PrintedLimitExcess {
 
 PrintedLimitExcess printed_limit_excess(const Spec& spec, const Result& result);
 
-/// The check "limits_at_printed_samples" (tolerance: the peaks' convergence tolerance, 1e-3),
-/// or none when the case sets no torque or power limit.
+/// The check "limits_at_printed_samples" (tolerance: 1e-12 relative, the continuous peaks'
+/// resolution with room for roundoff), or none when the case sets no torque or power limit.
 std::optional<Check> printed_limits_check(const Spec& spec, const Result& result);
 
 }  // namespace armstudy::studies::placement

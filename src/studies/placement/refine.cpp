@@ -12,6 +12,7 @@
 
 #include "studies/placement/candidate.hpp"
 #include "studies/placement/geometry.hpp"
+#include "studies/placement/peaks.hpp"
 #include "studies/placement/quadrature.hpp"
 
 namespace armstudy::studies::placement {
@@ -92,11 +93,24 @@ class Problem {
     const Line line = thesis_line(xs, phi(v));
     const LineCheck chk = check_line(arm_.L1, arm_.L2, line, spec_.length);
     if (chk.boundary_distance < 0) return kRefineInf;
+    const int j = (k - 2) % 2;
+    if (quadrature_) {
+      const MotionPeaks p = peaks(line);
+      if (!p.finite) return kRefineInf;
+      return k < 4 ? p.torque[j] / (*spec_.torque_limit)[j] - 1.0
+                   : p.power[j] / (*spec_.power_limit)[j] - 1.0;
+    }
     const LineMetrics m = evaluate_line(arm_, table_, line, configuration_);
     if (!m.finite()) return kRefineInf;
-    const int j = (k - 2) % 2;
     return k < 4 ? m.peak_torque[j] / (*spec_.torque_limit)[j] - 1.0
                  : m.peak_power[j] / (*spec_.power_limit)[j] - 1.0;
+  }
+
+  // the peaks of the continuous motion along `line` (peaks.hpp), refined from the table's
+  // samples: the limits of the converged pass
+  MotionPeaks peaks(const Line& line) const {
+    return continuous_peaks(arm_, table_.program, spec_.duration, spec_.length, line,
+                            configuration_, table_.size());
   }
 
   // the geometric constraints alone (no motion evaluated)
@@ -108,7 +122,7 @@ class Problem {
 
   // energy and every constraint at (u, v); the last point is cached (COBYLA asks for the
   // objective and each constraint at the same point)
-  const Eval& at(double u, double v) {
+  const Eval& at(double u, double v, bool track = true) {
     if (u == last_.u && v == last_.v) return last_;
     ++evals_;
     Eval e;
@@ -130,6 +144,14 @@ class Problem {
       m = evaluate_line(arm_, table_, line, configuration_);
     else if (chk.boundary_distance < 0)
       m.energy = kRefineInf;
+    if (quadrature_ && limits() && m.finite()) {
+      // the converged pass keeps the limits on the continuous motion, not at the samples
+      const MotionPeaks p = peaks(line);
+      for (int j = 0; j < 2; ++j) {
+        m.peak_torque[j] = p.finite ? p.torque[j] : kRefineInf;
+        m.peak_power[j] = p.finite ? p.power[j] : kRefineInf;
+      }
+    }
     for (int j = 0; j < 2; ++j) {
       e.g[2 + j] =
           spec_.torque_limit ? m.peak_torque[j] / (*spec_.torque_limit)[j] - 1.0 : -kRefineInf;
@@ -146,7 +168,7 @@ class Problem {
     }
     e.feasible = std::isfinite(e.energy);
     for (int k = 0; k < kMaxConstraints; ++k) e.feasible = e.feasible && !(e.g[k] > 0);
-    if (e.feasible && (!best_.feasible || e.energy < best_.energy)) best_ = e;
+    if (track && e.feasible && (!best_.feasible || e.energy < best_.energy)) best_ = e;
     last_ = e;
     return last_;
   }
@@ -494,7 +516,44 @@ int nearest_constraint(const Problem& pr, double hx) {
   return k_best;
 }
 
+// J, the energy's error from the limits' resolution: at each nearly active limit k (slack
+// below 1e-6) its multiplier, |grad E| / |grad g_k| by central differences (KKT with one
+// active constraint), times the resolution of the continuous peak (peaks.hpp); the
+// probes do not move the best point
+double limit_energy_error(Problem& pr) {
+  if (!pr.quadrature() || !pr.limits() || !pr.has_best()) return 0;
+  const Problem::Eval b = pr.best();
+  const MotionPeaks p = pr.peaks(thesis_line(pr.x_s(b.u), pr.phi(b.v)));
+  constexpr double d = 1e-4;
+  double out = 0;
+  for (int k = 2; k < kMaxConstraints; ++k) {
+    if (!pr.used(k) || b.g[k] < -1e-6) continue;
+    const Problem::Eval up = pr.at(b.u + d, b.v, false), um = pr.at(b.u - d, b.v, false);
+    const Problem::Eval vp = pr.at(b.u, b.v + d, false), vm = pr.at(b.u, b.v - d, false);
+    const double eu = (up.energy - um.energy) / (2 * d), ev = (vp.energy - vm.energy) / (2 * d);
+    const double gu = (up.g[k] - um.g[k]) / (2 * d), gv = (vp.g[k] - vm.g[k]) / (2 * d);
+    const double lambda = std::hypot(eu, ev) / std::hypot(gu, gv);
+    if (std::isfinite(lambda)) out += lambda * p.resolution;
+  }
+  return out;
+}
+
 }  // namespace
+
+void with_continuous_peaks(const Spec& spec, const Arm2& arm, const ProgramTable& table,
+                           int configuration, Candidate& c) {
+  if ((!spec.torque_limit && !spec.power_limit) || !c.metrics.finite() ||
+      c.status == CandidateStatus::kUnreachable)
+    return;
+  const MotionPeaks p = continuous_peaks(arm, table.program, spec.duration, spec.length,
+                                         thesis_line(c.x_s, c.phi), configuration, table.size());
+  if (!p.finite) return;
+  for (int j = 0; j < 2; ++j) {
+    c.metrics.peak_torque[j] = std::max(c.metrics.peak_torque[j], p.torque[j]);
+    c.metrics.peak_power[j] = std::max(c.metrics.peak_power[j], p.power[j]);
+  }
+  c.status = classify(spec, c.boundary_distance, c.metrics);
+}
 
 const char* binding_name(Binding b) {
   switch (b) {
@@ -554,6 +613,9 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
       const Problem::Eval b = pr.best();
       pr.use_quadrature();
       pr.at(b.u, b.v);
+      // a limit kept at the samples may be broken between them (~h^2 of the peak): COBYLA
+      // from there to the continuous limit
+      if (!pr.has_best()) cobyla(pr, b.u, b.v, 0.01, 400);
     }
     const int maxeval = converged_objective ? 100 : 2000;
     // the converged pass's rounds are short (100 evaluations): a start far from the converged
@@ -627,6 +689,7 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
         if (pr.best().u == at.u && pr.best().v == at.v) break;
       }
     }
+    out.limit_energy_error = limit_energy_error(pr);
     out.x_s_error = (loc.u + std::abs(pr.best().u - at.u)) * hx;
     out.phi_error = (loc.v + std::abs(pr.best().v - at.v)) * hphi;
     out.objective_error = pr.best().error;
@@ -641,7 +704,12 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
                "inside the admissible set" +
                (boundary_searched ? "; golden section along the nearly active constraint" : "") +
                "; first on the sampled energy, then on the energy by adaptive quadrature "
-               "(asked for 1e-11) from the point found; converged when a COBYLA restart gains, "
+               "(asked for 1e-11) from the point found" +
+               (spec.torque_limit || spec.power_limit
+                    ? std::string(", with the limits on the continuous motion (peaks refined "
+                                  "between the samples)")
+                    : std::string()) +
+               "; converged when a COBYLA restart gains, "
                "and a fitted quadratic predicts, < " +
                target.str() + " relative in the quadrature's energy";
   out.evaluations = pr.evaluations();
@@ -652,6 +720,7 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
   } else {
     out.best = start;
   }
+  with_continuous_peaks(spec, arm, table, configuration, out.best);
   return out;
 }
 

@@ -23,8 +23,12 @@
 /// minima ~5e-6 relative apart, and its own O(h^2) error moves the optimum by up to 1e-5
 /// relative), then from the point found on the converged energy, the adaptive quadrature of
 /// quadrature.hpp asked for 1e-11: Nelder-Mead (at an interior point), the quadratic polish,
-/// the boundary search (+-0.1 scaled, to 1e-10) and the COBYLA restart; the limits stay the
-/// sampled peaks at the table's samples. The final tolerance is the second pass's.
+/// the boundary search (+-0.1 scaled, to 1e-10) and the COBYLA restart; there the limits are
+/// kept on the continuous motion (peaks.hpp: each sampled maximum refined between the
+/// samples; a peak on its limit at 401 samples is up to ~2e-5 relative higher between them),
+/// and the point the first pass found, when it breaks them, is moved back by COBYLA. The
+/// final tolerance is the second pass's; a nearly active limit adds its multiplier times its
+/// peak's resolution to the energy's error (limit_energy_error).
 ///
 /// The optimum's location error (x_s_error, phi_error) is its distance from the minimum of
 /// the converged energy: at an interior optimum, the Newton step to the minimum of the
@@ -69,7 +73,17 @@ struct Refinement {
   double x_s_error = std::numeric_limits<double>::quiet_NaN();
   double phi_error = std::numeric_limits<double>::quiet_NaN();
   double objective_error = std::numeric_limits<double>::quiet_NaN();  ///< J, at best
+  /// J, the energy's error from the resolution of the continuous peaks a nearly active limit
+  /// is kept on: the limit's multiplier (|grad E| / |grad g|) times that resolution (0: no
+  /// limit near)
+  double limit_energy_error = 0;
 };
+
+/// Sets the peaks of `c` (at the table's samples) to those of the continuous motion
+/// (peaks.hpp) and classifies it again, when the spec has a torque or power limit: what the
+/// limits are kept on.
+void with_continuous_peaks(const Spec& spec, const Arm2& arm, const ProgramTable& table,
+                           int configuration, Candidate& c);
 
 /// Refines `start` (an admissible candidate of the sweep) in a box of +-4 (hx, hphi) around
 /// it with spec's margin and limits; the energy uses `table`'s samples.

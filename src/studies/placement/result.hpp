@@ -174,13 +174,17 @@ struct ProgramConfig {
   /// (refine.hpp; NaN: not refined, or no quadratic could be fitted)
   double x_s_error = std::numeric_limits<double>::quiet_NaN();
   double phi_error = std::numeric_limits<double>::quiet_NaN();
+  /// J, the part of energy_error() from the resolution of a nearly active limit's continuous
+  /// peak (refine.hpp; 0 without one)
+  double limit_energy_error = 0;
   /// J: how far the printed energy may lie from the least converged energy, the refined
-  /// optimum's quadrature error plus refine_tolerance_rel times its energy (NaN: not refined,
-  /// or its energy withheld)
+  /// optimum's quadrature error plus refine_tolerance_rel times its energy plus the limit's
+  /// resolution carried to the energy (NaN: not refined, or its energy withheld)
   double energy_error() const {
     if (refine_method.empty() || refined.convergence.energy_withheld())
       return std::numeric_limits<double>::quiet_NaN();
-    return refined.convergence.energy_error + refine_tolerance_rel * refined.convergence.energy;
+    return refined.convergence.energy_error + refine_tolerance_rel * refined.convergence.energy +
+           limit_energy_error;
   }
   Decision decision;  ///< what decides the refined optimum
   /// the optimum re-solved at a range of margins (when a clearance binds), by margin

@@ -17,6 +17,7 @@
 #include "studies/placement/candidate.hpp"
 #include "studies/placement/checks.hpp"
 #include "studies/placement/geometry.hpp"
+#include "studies/placement/peaks.hpp"
 #include "studies/placement/printed_limits.hpp"
 #include "studies/placement/refine.hpp"
 
@@ -76,12 +77,26 @@ void parallel_for(long n, int threads, const ProgressFn& progress, double p0, do
 }
 
 // a checked candidate: its energy by adaptive quadrature (to kQuadTol, printed within
-// kEnergyTol), its sampled peaks converged by doubling from the spec's samples
+// kEnergyTol), its sampled peaks converged by doubling from the spec's samples; with a
+// torque or power limit, a settled peak is the continuous motion's (peaks.hpp), what the
+// limits are kept on
 EnergyConvergence converged(const Spec& spec, const Arm2& arm, core::MotionProgram program,
                             const Candidate& c, int configuration) {
-  return check_energy(arm, program, spec.duration, spec.length, thesis_line(c.x_s, c.phi),
-                      configuration, spec.samples, c.boundary_distance < kTouch,
-                      c.inner_clearance < kTouch, kEnergyTol, kQuadTol);
+  EnergyConvergence ec = check_energy(
+      arm, program, spec.duration, spec.length, thesis_line(c.x_s, c.phi), configuration,
+      spec.samples, c.boundary_distance < kTouch, c.inner_clearance < kTouch, kEnergyTol, kQuadTol);
+  if ((spec.torque_limit || spec.power_limit) && !ec.peak_withheld()) {
+    const MotionPeaks p = continuous_peaks(arm, program, spec.duration, spec.length,
+                                           thesis_line(c.x_s, c.phi), configuration, spec.samples);
+    if (p.finite) {
+      for (int j = 0; j < 2; ++j) {
+        ec.metrics.peak_torque[j] = std::max(ec.metrics.peak_torque[j], p.torque[j]);
+        ec.metrics.peak_power[j] = std::max(ec.metrics.peak_power[j], p.power[j]);
+      }
+      ec.peak_resolution = p.resolution;
+    }
+  }
+  return ec;
 }
 
 // a sampled energy whose embedded error estimate is within the tolerance
@@ -418,6 +433,7 @@ long long refine_optimum(const SolveState& s, size_t pc, ProgramConfig& out) {
   const Spec& spec = s.spec;
   const ProgramTable& table = s.tables[s.pcs[pc].program];
   long long samples = 0;
+  with_continuous_peaks(spec, s.arm, table, out.configuration, out.grid);
   out.grid.convergence = converged(spec, s.arm, out.program, out.grid, out.configuration);
   out.refined = out.grid;
   if (spec.refine) {
@@ -430,8 +446,10 @@ long long refine_optimum(const SolveState& s, size_t pc, ProgramConfig& out) {
     if (rf.best.status == CandidateStatus::kFeasible) {
       Candidate r = rf.best;
       r.convergence = converged(spec, s.arm, out.program, r, out.configuration);
-      if (not_worse(r, out.grid)) {
+      // (a grid point that breaks a limit between its samples is no fallback)
+      if (out.grid.status != CandidateStatus::kFeasible || not_worse(r, out.grid)) {
         out.refined = r;
+        out.limit_energy_error = rf.limit_energy_error;
         out.x_s_error = rf.x_s_error;
         out.phi_error = rf.phi_error;
       }
@@ -500,8 +518,10 @@ long long margin_sensitivity(const SolveState& s, size_t pc, ProgramConfig& out)
     Candidate r = rf.best;
     r.convergence = converged(sm, s.arm, out.program, r, out.configuration);
     Candidate c0 = start;
+    with_continuous_peaks(sm, s.arm, table, out.configuration, c0);
     c0.convergence = converged(sm, s.arm, out.program, c0, out.configuration);
-    const bool refined = r.status == CandidateStatus::kFeasible && not_worse(r, c0);
+    const bool refined = r.status == CandidateStatus::kFeasible &&
+                         (c0.status != CandidateStatus::kFeasible || not_worse(r, c0));
     const Candidate& c = refined ? r : c0;
     mp.found = c.status == CandidateStatus::kFeasible;
     mp.optimum = c;

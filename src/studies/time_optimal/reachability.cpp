@@ -69,8 +69,8 @@ SolverOutput solve_exact_reference(const Problem& pb, const std::vector<double>&
       if (b.joint != a.joint || b.kind != a.kind || b.s != a.s)
         os << " conflicts with " << describe(b, pb.limits, pb.path.unit());
       if (rest[k] && xi.lo <= xi.hi + tol)
-        os << " (the arm must be at rest there, but the limits need s'^2 >= " << xi.lo
-           << " m^2/s^2)";
+        os << " (the arm must be at rest there, but the limits need s'^2 >= " << xi.lo << " "
+           << pb.path.unit() << "^2/s^2)";
       out.message = os.str();
       return out;
     }
