@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """Independent check of limit-bound placement optima: pure Python, no code shared with
 armstudy (the model and the energy quadrature are the sibling scripts'
 check_placement_optimum.py and check_placement_energy.py, themselves independent of it).

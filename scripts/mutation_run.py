@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 """A small mutation run: a handful of hand-made mutants of the physics and the checks, each
 applied alone to a scratch copy of the tree, built, and the quick tier's core and studies
 tests run on it (ctest -L quick -L '^(core|studies)$'). A mutant is killed when a test fails

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Copyright 2026 The armstudy authors
 # clang-tidy's bugprone checks (Debian's clang-tidy 14, scripts/packages.txt) on the
 # physics: the core and studies libraries, as the build compiles them (its
 # compile_commands.json, CMAKE_EXPORT_COMPILE_COMMANDS). Any warning fails the test.

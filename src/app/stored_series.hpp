@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What results.json stores of a long series (a solver's nodes, a grid's curve, a sampled
 /// motion): at most kMaxStoredPoints points, every stride-th and the last, so that a case

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The checks the pendulum and throwing pipelines run on a study's answer, each a function of
 /// the measured figures and the case's limits (the placement and time-optimal studies have

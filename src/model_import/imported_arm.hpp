@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// A planar arm read from a robot description (URDF or MJCF) through MuJoCo's own parser
 /// (mj_loadXML), so that what armstudy studies is exactly what MuJoCo loads.

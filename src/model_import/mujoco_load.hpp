@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// A MuJoCo model compiled from bytes already read (through MuJoCo's virtual file system,
 /// under the file's own name, so that its mesh files are looked up beside it).

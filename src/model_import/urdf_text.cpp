@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #include "model_import/urdf_text.hpp"
 
 #include <cmath>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// What MuJoCo 2.2's URDF parser drops, read from the URDF with libxml2: each joint's
 /// <limit effort velocity>, and the text MuJoCo is given, which keeps fixed links as

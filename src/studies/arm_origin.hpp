@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// Where a study's arm and its limits came from: the case's own YAML, or a robot
 /// description (URDF or MJCF) that `arm: {model: FILE}` names. Plain text for model.xml and

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // `arm: {model: FILE}`: an arm read from a URDF or an MJCF through MuJoCo's parser is the
 // same arm as the one written out in YAML (dynamics, and the study's answer to 1e-9), its
 // limits come from the model unless the case sets them, and a model that is no planar

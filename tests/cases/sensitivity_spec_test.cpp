@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // `sensitivity:` lists: a repeated key is said once, and a long list is read in linear time.
 #include "cases/sensitivity_spec.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The gate of the bundled cases (reports/cases/*.yaml): each one, run as `armstudy run
 // --no-render --no-sensitivity` runs it (app::run_case), ends with the status it expects and
 // passes every check, the study's and the source comparison's, each named with its value

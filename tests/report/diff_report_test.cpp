@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The diff report's relative change of a key figure: finite wherever the ratio is.
 #include "report/diff_report.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // An arm read from a URDF or MJCF (arm: {model: FILE}) against MuJoCo: mj_inverse on the
 // user's own model, loaded by MuJoCo from the file, and on armstudy's model.xml of it, at
 // the same joint angles (the model's own), equals armstudy's dynamics to 1e-12; model.xml

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Every helper process is watched (sys::helper_timeout_seconds, ARMSTUDY_HELPER_TIMEOUT_S):
 // a frame helper or an ffmpeg that stops taking input, answering or ending is killed within
 // the timeout. A stuck frame helper ends the strip with an error naming it (the run: exit

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // Every check of every pipeline (app/*_pipeline.cpp) held on both sides of its limit: a
 // measured value just inside the limit passes and one just outside fails, and the check
 // reports the value its contract names (the check functions of app/study_checks.hpp,

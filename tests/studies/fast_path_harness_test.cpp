@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // One property harness for the fast paths: random chains, states and motions (std::mt19937,
 // fixed seeds), and each specialised implementation against the one reference, the generic
 // chain's dynamics of core/dynamics.hpp, itself held to MuJoCo's mj_inverse on the same

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // A torque or power limit holds on the continuous motion, not only at its samples: the
 // three limit-bound optima of tests/studies/cases/placement-limit-*.yaml (0.55 Lmax with the
 // elbow's torque limited to 1 N m, 3-4-5; 0.75 Lmax with the elbow's power limited to 6 W,

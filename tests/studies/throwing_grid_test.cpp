@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The throwing answer on a sequence of control grids (studies/throwing/grid_sequence.hpp):
 // - the prolongation of a piecewise-linear rate profile is exact: a profile on twice (four
 //   times) the stages with the RK4 step kept costs the same energy and has the same worst

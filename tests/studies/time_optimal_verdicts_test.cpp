@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 // The time-optimal study's verdicts on cases kept in tests/studies/cases: a correct plan
 // fails none of its own checks (each check's tolerance is the error its own method
 // allows), and an arm that cannot hold itself against gravity is told so, naming the joint,

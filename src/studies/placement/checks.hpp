@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The placement study's checks on its own answer, each a function of the measured figures
 /// and the case's limits (solve() runs them; tests hold each verdict on both sides of its

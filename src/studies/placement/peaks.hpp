@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The peaks of one motion's joint torques and powers over the continuous motion, not only
 /// at its samples: a torque or power limit is a limit on the motion, and a peak that sits on

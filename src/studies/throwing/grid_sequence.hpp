@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright 2026 The armstudy authors
 #pragma once
 /// The answer of the continuous problem, not of one control grid (docs/throwing.md, "The
 /// control grid"): the first grid's SLSQP optima (IDP's stages) are prolonged to twice the
