@@ -48,6 +48,9 @@ const std::vector<KeyDoc> kDocs = {
     {"", "source.printed[].claim.tie_rel",
      "A relative difference below which a and b count as equal."},
     {"", "source.printed[].claim.measure", "What is compared, in words."},
+    {"", "source.printed[].claim.resolution_rel",
+     "The methods' own relative resolution: a gap at most this large is a tie at the methods' "
+     "resolution, not a verdict for either."},
     {"", "source.printed[].reason", "The docs/defects.md anchor that explains a difference."},
     {"", "source.printed[].why", "Why armstudy differs, in one sentence."},
     {"", "sensitivity",
@@ -60,6 +63,10 @@ const std::vector<KeyDoc> kDocs = {
     // ---- the arm of placement and time_optimal
     {"", "gravity", "Gravity along -y; 0 for a horizontal plane."},
     {"", "arm", "The arm, base to tip.", "", false, "the study's own arm"},
+    {"", "arm.model",
+     "A URDF or MJCF file (relative to the case file) that gives the arm instead of 'links': "
+     "a planar chain of parallel hinges read through MuJoCo's parser; its limits apply where "
+     "the case sets none (docs/case_files.md)."},
     {"", "arm.links", "The links, base to tip."},
     {"", "arm.links[].length", "Link length."},
     {"", "arm.links[].mass", "Link mass (0 only for a massless link that carries a point mass)."},
@@ -190,6 +197,18 @@ const std::vector<KeyDoc> kDocs = {
     {"throwing", "throwing.idp.seed", "Random seed of the first run."},
     {"throwing", "throwing.idp.seeds", "Runs, with seeds seed, seed + 1, ..."},
     {"throwing", "throwing.nlopt", "SLSQP from several starts beside IDP."},
+    {"throwing", "throwing.grid",
+     "The sequence of control grids: each doubles the stages of the one before, warm-started "
+     "from it (docs/throwing.md)."},
+    {"throwing", "throwing.grid.refinements",
+     "How many doublings of the stages after the first grid (0: the first grid only)."},
+    {"throwing", "throwing.grid.tolerance",
+     "Converged when a doubling changes the energy by at most this fraction of it."},
+    {"throwing", "throwing.grid.refine_best",
+     "How many of the lowest distinct first-grid optima the second grid refines."},
+    {"throwing", "throwing.grid.require_converged",
+     "Fail the case when the control grids have not converged (otherwise the page says "
+     "'not converged')."},
     {"throwing", "throwing.nlopt.enabled", "Run SLSQP."},
     {"throwing", "throwing.nlopt.max_evaluations", "Gradient evaluations per start."},
     {"throwing", "throwing.nlopt.max_time_s", "Wall-clock safety net per start."},
