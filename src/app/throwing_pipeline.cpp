@@ -364,10 +364,10 @@ void set_comparison(const st::ThrowingSpec& spec, const st::ThrowingResult& r, l
   // SLSQP's answer on the first grid, IDP's stages: IDP's gap on its own grid
   if (grids) {
     const auto& b = r.slsqp_starts[r.slsqp_best_start];
-    o.comparison.push_back(row("SLSQP on " + std::to_string(r.grids.front().stages) +
-                                   " stages (IDP's grid)",
-                               r.first_grid, r.first_grid_check, b.run.converged,
-                               slsqp_simulations(r), r.grids.front().run_time, b.run.binding));
+    o.comparison.push_back(
+        row("SLSQP on " + std::to_string(r.grids.front().stages) + " stages (IDP's grid)",
+            r.first_grid, r.first_grid_check, b.run.converged, slsqp_simulations(r),
+            r.grids.front().run_time, b.run.binding));
   }
   o.verification.refinement = spec.check_refinement;
   o.verification.idp = {r.idp_check.feasible, margins_of(spec, r.idp_check.evaluation),

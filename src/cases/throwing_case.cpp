@@ -154,8 +154,7 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
     grids += (l == 1 ? s.grid.refine_best + 1.0 : 2.0) * s.nlopt.max_evaluations *
              (4.0 * ((s.stages << l) - 1.0) + 1.0);
   const double nlopt =
-      s.run_nlopt ? starts * s.nlopt.max_evaluations * (4.0 * (s.stages - 1.0) + 1.0) + grids
-                  : 0.0;
+      s.run_nlopt ? starts * s.nlopt.max_evaluations * (4.0 * (s.stages - 1.0) + 1.0) + grids : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
   d.keys =

@@ -324,8 +324,15 @@ void add_grids(const Page& p, Section& res) {
                             format_sig(cg.error_J, 3) + " J, the limit about " +
                             format_sig(cg.extrapolated_J, 4) + " J."
                       : "Not refined: one grid, the control grid's error is not measured.");
-  t.header = {"stages", "RK4 steps per stage", "energy (J)", "feasible", "converged (first order)",
-              "first-order residual", "from", "simulations", "time (s)"};
+  t.header = {"stages",
+              "RK4 steps per stage",
+              "energy (J)",
+              "feasible",
+              "converged (first order)",
+              "first-order residual",
+              "from",
+              "simulations",
+              "time (s)"};
   for (const auto& g : cg.grids)
     t.rows.push_back({as_text(g.stages), as_text(g.steps_per_stage), format_sig(g.energy_J, 5),
                       as_text(g.feasible), yes_no(g.converged), format_sig(g.kkt_residual, 2),
@@ -364,10 +371,9 @@ void add_verdict(const Page& p, Section& res) {
   if (cm.size() >= 3 && std::isfinite(cm[0].energy_J) && std::isfinite(cm[2].energy_J))
     res.paragraph("IDP's gap: its throw (" + format_sig(cm[0].energy_J, 4) + " J) is " +
                   format_sig(100 * (cm[0].energy_J / cm[1].energy_J - 1), 3) +
-                  " % above the answer (" + cm[1].optimiser + ", " +
-                  format_sig(cm[1].energy_J, 4) + " J) and " +
-                  format_sig(100 * (cm[0].energy_J / cm[2].energy_J - 1), 3) + " % above " +
-                  cm[2].optimiser + " (" + format_sig(cm[2].energy_J, 4) + " J).");
+                  " % above the answer (" + cm[1].optimiser + ", " + format_sig(cm[1].energy_J, 4) +
+                  " J) and " + format_sig(100 * (cm[0].energy_J / cm[2].energy_J - 1), 3) +
+                  " % above " + cm[2].optimiser + " (" + format_sig(cm[2].energy_J, 4) + " J).");
   if (cm.size() >= 2) {
     const double ei = cm[0].energy_J, eg = cm[1].energy_J;
     if (std::isfinite(ei) && std::isfinite(eg) && std::abs(ei - eg) > 0.01 * std::min(ei, eg)) {

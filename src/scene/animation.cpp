@@ -45,6 +45,108 @@ std::string timeout_text() {
   return secs;
 }
 
+// ffmpeg's command line: raw RGB frames of `first`'s size on stdin, H.264 MP4 into tmp
+std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, const Image& first, double fps,
+                                          const fs::path& tmp) {
+  const int w = first.width & ~1, h = first.height & ~1;
+  char rate[64];
+  std::snprintf(rate, sizeof rate, "%.6f", fps);
+  return {ffmpeg,
+          "-loglevel",
+          "error",
+          "-nostdin",
+          "-y",
+          "-f",
+          "rawvideo",
+          "-pix_fmt",
+          "rgb24",
+          "-s",
+          std::to_string(first.width) + "x" + std::to_string(first.height),
+          "-framerate",
+          rate,
+          "-i",
+          "-",
+          "-vf",
+          "crop=" + std::to_string(w) + ":" + std::to_string(h) + ":0:0",
+          "-c:v",
+          "libx264",
+          "-preset",
+          "veryfast",
+          "-crf",
+          "20",
+          "-pix_fmt",
+          "yuv420p",
+          "-threads",
+          "1",
+          "-map_metadata",
+          "-1",
+          "-fflags",
+          "+bitexact",
+          "-flags:v",
+          "+bitexact",
+          "-movflags",
+          "+faststart",
+          tmp.string()};
+}
+
+// what feeding ffmpeg came to: its messages (the last 2 kB), whether it took nothing and
+// said nothing for the timeout, whether it closed its input before taking every frame
+struct FeedOutcome {
+  std::string said;
+  bool stuck = false;
+  bool write_failed = false;
+};
+
+// the frames into ffmpeg's input (non-blocking, closed at the end), its messages out, until
+// it has every frame and closes its output or stays silent for timeout_ms
+FeedOutcome feed_frames(const std::vector<Image>& frames, int in_write, int msg_read,
+                        int timeout_ms) {
+  FeedOutcome out;
+  std::string& said = out.said;
+  bool& stuck = out.stuck;
+  bool& write_failed = out.write_failed;
+  // the frames in, ffmpeg's messages out, until it has every frame and ends
+  size_t frame = 0, at = 0;
+  int in_fd = in_write;
+  bool msg_open = true;
+  while ((in_fd >= 0 || msg_open) && !stuck) {
+    if (in_fd >= 0 && frame == frames.size()) {
+      ::close(in_fd), in_fd = -1;
+      continue;
+    }
+    pollfd p[2] = {{msg_open ? msg_read : -1, POLLIN, 0}, {in_fd, POLLOUT, 0}};
+    const int r = ::poll(p, 2, timeout_ms);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) {
+      stuck = r == 0;
+      break;
+    }
+    if (p[0].revents) {
+      char buf[4096];
+      const ssize_t got = ::read(msg_read, buf, sizeof buf);
+      if (got > 0) {
+        said.append(buf, static_cast<size_t>(got));
+        if (said.size() > 2048) said.erase(0, said.size() - 2048);
+      } else if (got == 0 || errno != EINTR) {
+        msg_open = false;
+      }
+    }
+    if (in_fd >= 0 && p[1].revents) {
+      const Image& f = frames[frame];
+      const ssize_t put = ::write(in_fd, f.rgb.data() + at, f.rgb.size() - at);
+      if (put > 0) {
+        at += static_cast<size_t>(put);
+        if (at == f.rgb.size()) ++frame, at = 0;
+      } else if (put < 0 && errno != EINTR && errno != EAGAIN) {
+        write_failed = true;  // ffmpeg closed its input (it failed: its messages say why)
+        ::close(in_fd), in_fd = -1;
+      }
+    }
+  }
+  if (in_fd >= 0) ::close(in_fd);
+  return out;
+}
+
 // frames as raw RGB into ffmpeg's stdin: H.264 in MP4, yuv420p (plays everywhere), one
 // thread and bit-exact flags so that the same frames give the same file; x264's veryfast
 // preset: about 0.6x medium's CPU on these flat-shaded scenes at the same crf, 46 dB PSNR
@@ -54,49 +156,11 @@ std::string timeout_text() {
 bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, double fps,
                  const fs::path& out, std::string* why) {
   PhaseScope phase("video");
-  const int w = frames.front().width & ~1, h = frames.front().height & ~1;
-  char rate[64];
-  std::snprintf(rate, sizeof rate, "%.6f", fps);
   const fs::path tmp = out.string() + ".tmp.mp4";
   std::error_code ec;
   fs::remove(tmp, ec);
   sys::SpawnOptions o;
-  o.argv = {ffmpeg,
-            "-loglevel",
-            "error",
-            "-nostdin",
-            "-y",
-            "-f",
-            "rawvideo",
-            "-pix_fmt",
-            "rgb24",
-            "-s",
-            std::to_string(frames.front().width) + "x" + std::to_string(frames.front().height),
-            "-framerate",
-            rate,
-            "-i",
-            "-",
-            "-vf",
-            "crop=" + std::to_string(w) + ":" + std::to_string(h) + ":0:0",
-            "-c:v",
-            "libx264",
-            "-preset",
-            "veryfast",
-            "-crf",
-            "20",
-            "-pix_fmt",
-            "yuv420p",
-            "-threads",
-            "1",
-            "-map_metadata",
-            "-1",
-            "-fflags",
-            "+bitexact",
-            "-flags:v",
-            "+bitexact",
-            "-movflags",
-            "+faststart",
-            tmp.string()};
+  o.argv = ffmpeg_arguments(ffmpeg, frames.front(), fps, tmp);
   o.env = sys::current_environment();
   o.default_signals = {SIGPIPE, SIGINT, SIGTERM, SIGHUP};
   o.death_signal = SIGKILL;  // dies with this thread (and with armstudy)
@@ -130,47 +194,10 @@ bool write_video(const std::string& ffmpeg, const std::vector<Image>& frames, do
   sigemptyset(&pipe_signal);
   sigaddset(&pipe_signal, SIGPIPE);
   ::pthread_sigmask(SIG_BLOCK, &pipe_signal, &old_mask);
-  std::string said;  // ffmpeg's messages, the last 2 kB
-  bool stuck = false, write_failed = false;
-  // the frames in, ffmpeg's messages out, until it has every frame and ends
-  size_t frame = 0, at = 0;
-  int in_fd = in[1];
-  bool msg_open = true;
-  while ((in_fd >= 0 || msg_open) && !stuck) {
-    if (in_fd >= 0 && frame == frames.size()) {
-      ::close(in_fd), in_fd = -1;
-      continue;
-    }
-    pollfd p[2] = {{msg_open ? msg[0] : -1, POLLIN, 0}, {in_fd, POLLOUT, 0}};
-    const int r = ::poll(p, 2, timeout_ms);
-    if (r < 0 && errno == EINTR) continue;
-    if (r <= 0) {
-      stuck = r == 0;
-      break;
-    }
-    if (p[0].revents) {
-      char buf[4096];
-      const ssize_t got = ::read(msg[0], buf, sizeof buf);
-      if (got > 0) {
-        said.append(buf, static_cast<size_t>(got));
-        if (said.size() > 2048) said.erase(0, said.size() - 2048);
-      } else if (got == 0 || errno != EINTR) {
-        msg_open = false;
-      }
-    }
-    if (in_fd >= 0 && p[1].revents) {
-      const Image& f = frames[frame];
-      const ssize_t put = ::write(in_fd, f.rgb.data() + at, f.rgb.size() - at);
-      if (put > 0) {
-        at += static_cast<size_t>(put);
-        if (at == f.rgb.size()) ++frame, at = 0;
-      } else if (put < 0 && errno != EINTR && errno != EAGAIN) {
-        write_failed = true;  // ffmpeg closed its input (it failed: its messages say why)
-        ::close(in_fd), in_fd = -1;
-      }
-    }
-  }
-  if (in_fd >= 0) ::close(in_fd);
+  const FeedOutcome fed = feed_frames(frames, in[1], msg[0], timeout_ms);
+  std::string said = fed.said;
+  bool stuck = fed.stuck;
+  const bool write_failed = fed.write_failed;
   const timespec now{0, 0};
   while (::sigtimedwait(&pipe_signal, nullptr, &now) == SIGPIPE) {
   }

@@ -59,10 +59,10 @@ TEST(RunOrder, TheThrowingOptimisationStartsFirstAndEqualCasesKeepTheirOrder) {
     const auto at = [&](const std::string& n) {
       return std::find(names.begin(), names.end(), n) - names.begin();
     };
-    // the IDP and multi-start SLSQP throws are the longest cases of the bundled set (both
-    // throwing cases have the same budget: they keep their file order)
-    EXPECT_EQ(names[0], "throwing-motor-on-base");
-    EXPECT_EQ(names[1], "throwing");
+    // the IDP and multi-start SLSQP throws on their control grids are the longest cases of
+    // the bundled set (the bundled throw first: its sensitivity list is the longer)
+    EXPECT_EQ(names[0], "throwing");
+    EXPECT_EQ(names[1], "throwing-motor-on-base");
     // the placement examples ask for the same sweep and frames: they keep their name order
     EXPECT_LT(at("placement-example-2"), at("placement-example-3"));
     EXPECT_LT(at("placement-example-3"), at("placement-example-4"));
@@ -89,13 +89,18 @@ TEST(RunOrder, MoreIdpIterationsOrSlsqpEvaluationsEstimateALongerSolve) {
   const int iterations = std::stoi(text.substr(p + key.size(), end - p - key.size()));
   text.replace(p, end - p, key + " " + std::to_string(2 * iterations));
   const LoadedCase more = armstudy::app::load_case_text(text, path);
+  // (IDP is a small part of the bundled throw's work since SLSQP refines on 32 and 64
+  // stages: doubling its iterations adds about 4 %)
   EXPECT_GT(armstudy::app::estimated_seconds(more, false),
-            1.05 * armstudy::app::estimated_seconds(base, false));
+            1.02 * armstudy::app::estimated_seconds(base, false));
   const std::string budget = "max_evaluations: 1500";
   const auto b = text.find(budget);
   ASSERT_NE(b, std::string::npos);
   text.replace(b, budget.size(), "max_evaluations: 3000");
-  const LoadedCase more_slsqp = armstudy::app::load_case_text(text, path);
+  // (twice SLSQP's budget on every grid is beyond the default work budget)
+  armstudy::app::LoadOptions large;
+  large.allow_large = true;
+  const LoadedCase more_slsqp = armstudy::app::load_case_text(text, path, large);
   EXPECT_GT(armstudy::app::estimated_seconds(more_slsqp, false),
             1.5 * armstudy::app::estimated_seconds(more, false));
 }

@@ -127,12 +127,12 @@ TEST(Sensitivity, ARunWithoutTheSensitivityPartIsRedoneByOneWithIt) {
 // The bundled throwing case: each of its five keys (release tolerance, contact margin,
 // friction coefficient, power rating, rotor inertia) at +step, warm-started (SLSQP from the
 // nominal answer, on its finest control grid), against one cold-started re-solve of the
-// whole study (eq. 8, IDP, SLSQP from every start, the control grids) at the same value. Both are throws re-checked feasible with 4x the steps, so
-// the warm step must not cost more than the cold answer by more than kWarmExcess (the
-// optimisers' own spread between restarts is ~1e-4). The cold answer may cost more: the
-// multi-start search can land in another local optimum. Measured (load 8-10, 104 s in all,
-// each cold solve 18-21 s): friction and power agree within 3e-4; at +10 % release
-// tolerance and +10 % contact margin the cold study answers 6.692 and 6.719 J where the
+// whole study (eq. 8, IDP, SLSQP from every start, the control grids) at the same value. Both are
+// throws re-checked feasible with 4x the steps, so the warm step must not cost more than the cold
+// answer by more than kWarmExcess (the optimisers' own spread between restarts is ~1e-4). The cold
+// answer may cost more: the multi-start search can land in another local optimum. Measured (load
+// 8-10, 104 s in all, each cold solve 18-21 s): friction and power agree within 3e-4; at +10 %
+// release tolerance and +10 % contact margin the cold study answers 6.692 and 6.719 J where the
 // warm step finds 6.289 and 6.329 J (6 % lower): the bundled answer (6.290 J, found by a
 // hop) is a local optimum that a cold search at a nearby value misses (docs/sensitivity.md).
 TEST(Sensitivity, ThrowingWarmStepsAgreeWithColdResolves) {

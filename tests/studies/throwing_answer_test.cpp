@@ -71,9 +71,9 @@ TEST(ThrowingAnswer, ATighterProblemIsNeverCheaperThanTheNominalAnswer) {
   contact.contact_margin = 0.022;
   mu.friction_coefficient = 0.45;
   release.release_tolerance = 0.5 * core::kDeg;
-  for (const auto& [name, spec] : {std::pair{"40 W", w40}, std::pair{"contact 0.022 N", contact},
-                                   std::pair{"friction 0.45", mu},
-                                   std::pair{"release 0.5 deg", release}}) {
+  for (const auto& [name, spec] :
+       {std::pair{"40 W", w40}, std::pair{"contact 0.022 N", contact},
+        std::pair{"friction 0.45", mu}, std::pair{"release 0.5 deg", release}}) {
     const double e = answer_energy(spec, false);
     std::printf("%s: %.6f J against the nominal %.6f J\n", name, e, e0);
     EXPECT_GE(e, e0 * (1 - kReproducible)) << name << ": " << e << " J, nominal " << e0 << " J";

@@ -81,7 +81,7 @@ MotionPeaks continuous_peaks(const Arm2& arm, core::MotionProgram program, doubl
     for (int k = 0; k < n; ++k) {
       const double v = quantity(s[size_t(k)], q);
       const bool local = (k == 0 || v >= quantity(s[size_t(k - 1)], q)) &&
-                         (k == n - 1 || v >= quantity(s[size_t(k + 1)], q));
+                         (k == n - 1 || v >= quantity(s[size_t(k) + 1], q));
       if (!local || v < 0.99 * sampled || !(v > 0)) continue;
       const double a = std::max(0.0, (k - 1) * dt), b = std::min(duration, (k + 1) * dt);
       const Refined r = golden_max(power, q, a, b, duration);

@@ -595,6 +595,31 @@ Decision decide(const Spec& spec, const Candidate& c, double active_m, double ac
   return d;
 }
 
+namespace {
+
+// the refinement's method, in words, for the report
+std::string refinement_method(const Spec& spec, bool boundary_searched, double target_rel) {
+  std::ostringstream target;
+  target << target_rel;
+  return std::string("NLopt COBYLA with the inner and outer clearances") +
+         (spec.torque_limit ? ", the torque limits" : "") +
+         (spec.power_limit ? ", the power limits" : "") +
+         " as inequality constraints; Nelder-Mead and Newton steps on fitted quadratics "
+         "inside the admissible set" +
+         (boundary_searched ? "; golden section along the nearly active constraint" : "") +
+         "; first on the sampled energy, then on the energy by adaptive quadrature "
+         "(asked for 1e-11) from the point found" +
+         (spec.torque_limit || spec.power_limit
+              ? std::string(", with the limits on the continuous motion (peaks refined "
+                            "between the samples)")
+              : std::string()) +
+         "; converged when a COBYLA restart gains, "
+         "and a fitted quadratic predicts, < " +
+         target.str() + " relative in the quadrature's energy";
+}
+
+}  // namespace
+
 // (over 60 lines, kept whole: the rounds of the stages of refine.hpp on one Problem, in the
 // order its header gives them)
 Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTable& table,
@@ -695,23 +720,7 @@ Refinement refine_constrained(const Spec& spec, const Arm2& arm, const ProgramTa
     out.objective_error = pr.best().error;
   }
   out.converged = pr.has_best() && out.tolerance_rel <= target_rel;
-  std::ostringstream target;
-  target << target_rel;
-  out.method = std::string("NLopt COBYLA with the inner and outer clearances") +
-               (spec.torque_limit ? ", the torque limits" : "") +
-               (spec.power_limit ? ", the power limits" : "") +
-               " as inequality constraints; Nelder-Mead and Newton steps on fitted quadratics "
-               "inside the admissible set" +
-               (boundary_searched ? "; golden section along the nearly active constraint" : "") +
-               "; first on the sampled energy, then on the energy by adaptive quadrature "
-               "(asked for 1e-11) from the point found" +
-               (spec.torque_limit || spec.power_limit
-                    ? std::string(", with the limits on the continuous motion (peaks refined "
-                                  "between the samples)")
-                    : std::string()) +
-               "; converged when a COBYLA restart gains, "
-               "and a fitted quadratic predicts, < " +
-               target.str() + " relative in the quadrature's energy";
+  out.method = refinement_method(spec, boundary_searched, target_rel);
   out.evaluations = pr.evaluations();
   out.quadratures = pr.quadrature_evaluations();
   if (pr.has_best()) {

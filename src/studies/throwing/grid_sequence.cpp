@@ -149,9 +149,8 @@ void refine_grids(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen
     r.answer_steps_per_stage = fine.steps_per_stage;
     r.nlopt = record_motion(fine, spec, best.run.best);
     // the first grid's start this throw descends from
-    const std::string origin = b < static_cast<int>(candidates.size())
-                                   ? candidates[b].first
-                                   : candidates[0].first;
+    const std::string origin =
+        b < static_cast<int>(candidates.size()) ? candidates[b].first : candidates[0].first;
     candidates = {{origin, best.run.best}};
     r.grids.push_back(std::move(g));
     estimate_error(spec, r);

@@ -55,9 +55,9 @@ VelocityProfile prolong_profile(const VelocityProfile& p, int factor) {
   for (int k = 0; k < P; ++k)
     for (int m = 0; m < factor; ++m) {
       const double s = double(m) / factor;
-      q.v.col(k * factor + m) = (1 - s) * p.v.col(k) + s * p.v.col(k + 1);
+      q.v.col(Eigen::Index(k) * factor + m) = (1 - s) * p.v.col(k) + s * p.v.col(k + 1);
     }
-  q.v.col(P * factor) = p.v.col(P);
+  q.v.col(Eigen::Index(P) * factor) = p.v.col(P);
   return q;
 }
 

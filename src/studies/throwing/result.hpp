@@ -104,10 +104,10 @@ struct ThrowingResult {
     bool feasible = false;   ///< that throw meets every limit, also in the re-check
     bool converged = false;  ///< first-order converged (SLSQP's test) on this grid
     double kkt_residual = NAN;
-    std::string from;       ///< the start of that throw ("reference", "prolonged ...")
-    double run_time = 0;    ///< s, wall clock of this grid's searches (the first: from
-                            ///< the study's start, IDP and every SLSQP start)
-    long simulations = 0;   ///< of this grid's SLSQP searches
+    std::string from;              ///< the start of that throw ("reference", "prolonged ...")
+    double run_time = 0;           ///< s, wall clock of this grid's searches (the first: from
+                                   ///< the study's start, IDP and every SLSQP start)
+    long simulations = 0;          ///< of this grid's SLSQP searches
     std::vector<SlsqpStart> runs;  ///< SLSQP on this grid from each prolonged start
   };
   std::vector<GridLevel> grids;  ///< the answer's control grids (empty: SLSQP did not run)
@@ -119,7 +119,7 @@ struct ThrowingResult {
   ThrowMotion first_grid;          ///< SLSQP's answer on the first grid (IDP's grid)
   Verification first_grid_check;
   int answer_steps_per_stage = 0;  ///< RK4 steps per stage of the answer's grid
-  Optimality idp_optimality;  ///< the first-order measure at IDP's optimum
+  Optimality idp_optimality;       ///< the first-order measure at IDP's optimum
   bool nlopt_ran = false;
   ThrowMotion nlopt;  ///< SLSQP's answer (the best start's local optimum)
   NloptOutcome nlopt_run;

@@ -96,7 +96,6 @@ void run_slsqp_wave(const ThrowSetup& setup, const ThrowingSpec& spec,
     if (e) std::rethrow_exception(e);
 }
 
-
 void run_slsqp_starts(const ThrowSetup& setup, const ThrowingSpec& spec,
                       const VelocityProfile& reference, const VelocityProfile& eq8,
                       const Eigen::Vector2d& delta, const NloptSettings& settings,

@@ -87,8 +87,8 @@ void decide_answer(const ThrowingSpec& spec, ThrowingResult& r) {
     std::string seq;
     for (const auto& g : r.grids)
       seq += (seq.empty() ? "" : ", ") + std::to_string(g.stages) + ": " + fixed(g.energy, 3);
-    grid_words = " on " + std::to_string(r.grids.back().stages) + " stages (control grids " +
-                 seq + " J; ";
+    grid_words =
+        " on " + std::to_string(r.grids.back().stages) + " stages (control grids " + seq + " J; ";
     if (r.grid_converged) {
       grid_words += "converged: the last doubling changed it by " +
                     fixed(std::abs(r.grid_change), 4) + " J, estimated error " +
@@ -105,8 +105,7 @@ void decide_answer(const ThrowingSpec& spec, ThrowingResult& r) {
                  "grid's error is not measured)";
   }
   r.message = lead + fixed(e, 3) + " J" + grid_words + " by " + who + ", first-order residual " +
-              fixed(kkt, 6) +
-              " /(rad/s), feasible in the re-check (" + eq8_words + "; saving " +
+              fixed(kkt, 6) + " /(rad/s), feasible in the re-check (" + eq8_words + "; saving " +
               fixed(r.saving_percent, 1) +
               " %); the ball lands at x = " + fixed(flight.landing.x(), 3) + " m";
   if (slsqp) r.message += "; " + idp_words;

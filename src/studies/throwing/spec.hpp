@@ -29,10 +29,10 @@ namespace armstudy::studies {
 
 /// The control grid's refinement (grid_sequence.hpp): the answer of the continuous problem.
 struct GridSettings {
-  int refinements = 2;     ///< doublings of the stages after the first grid (16 -> 32 -> 64)
-  double tolerance = 0.01; ///< converged: the energy changes by at most this (relative) per
-                           ///< doubling
-  int refine_best = 2;     ///< distinct local optima of the first grid refined (the best few)
+  int refinements = 2;      ///< doublings of the stages after the first grid (16 -> 32 -> 64)
+  double tolerance = 0.01;  ///< converged: the energy changes by at most this (relative) per
+                            ///< doubling
+  int refine_best = 2;      ///< distinct local optima of the first grid refined (the best few)
   bool require_converged = false;  ///< a sequence still falling at its last grid fails the
                                    ///< case (false: it is reported "not converged" only)
 };
@@ -62,7 +62,7 @@ struct ThrowingSpec {
   int stages = 16;                   ///< P
   int steps_per_stage = 20;          ///< RK4 steps per stage
   IdpSettings idp;
-  GridSettings grid;                 ///< the control grids after the first (SLSQP only)
+  GridSettings grid;  ///< the control grids after the first (SLSQP only)
   bool run_nlopt = true;
   NloptSettings nlopt;
   double release_tolerance = core::kDeg;  ///< rad, allowed |theta3(tf) - release| (check)

@@ -561,7 +561,8 @@ void fields(V& v, ThrowingStudyResults::ControlGrids& x) {
   v("grids", x.grids, "every grid, coarsest first");
   v("change_per_doubling_J", x.change_per_doubling_J,
     "energy of the finest grid minus the one before (null: one grid)");
-  v("error_J", x.error_J, "estimated distance of the answer's energy to the limit (null: one grid)");
+  v("error_J", x.error_J,
+    "estimated distance of the answer's energy to the limit (null: one grid)");
   v("extrapolated_J", x.extrapolated_J, "the answer's energy minus that error (null: one grid)");
   v("energy_first_grid_J", x.energy_first_grid_J, "SLSQP's answer on the first grid (IDP's)");
 }

@@ -17,9 +17,9 @@ namespace armstudy::studies {
 
 /// Solves `spec` by SLSQP from `start` (a profile meeting the displacement, e.g. the
 /// nominal case's answer) on the start's control grid (its stages; the RK4 step at most
-/// the case's: steps per stage = ceil(steps_per_stage x stages / the start's stages)). Solved when SLSQP's throw is feasible,
-/// also in the re-check; its message starts "NOT converged" when it is feasible but not
-/// first-order converged.
+/// the case's: steps per stage = ceil(steps_per_stage x stages / the start's stages)). Solved when
+/// SLSQP's throw is feasible, also in the re-check; its message starts "NOT converged" when it is
+/// feasible but not first-order converged.
 ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfile& start);
 
 }  // namespace armstudy::studies
