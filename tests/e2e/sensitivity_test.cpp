@@ -130,15 +130,24 @@ TEST(Sensitivity, ARunWithoutTheSensitivityPartIsRedoneByOneWithIt) {
 // whole study (eq. 8, IDP, SLSQP from every start, the control grids) at the same value. Both are
 // throws re-checked feasible with 4x the steps, so the warm step must not cost more than the cold
 // answer by more than kWarmExcess (the optimisers' own spread between restarts is ~1e-4). The cold
-// answer may cost more: the multi-start search can land in another local optimum. Measured (load
-// 8-10, 104 s in all, each cold solve 18-21 s): friction and power agree within 3e-4; at +10 %
-// release tolerance and +10 % contact margin the cold study answers 6.692 and 6.719 J where the
-// warm step finds 6.289 and 6.329 J (6 % lower): the bundled answer (6.290 J, found by a
-// hop) is a local optimum that a cold search at a nearby value misses (docs/sensitivity.md).
+// answer may cost more: the multi-start search can land in another local optimum. On two of
+// the case's three grids (16 and 32 stages), measured at load 11 (113 s of CPU, each cold
+// solve 44-52 s of wall): release tolerance, friction, power and rotor inertia agree within
+// 3e-4; at +10 % contact margin the cold study answers 4.710 J where the warm step finds
+// 4.537 J (3.7 % lower). On the 16-stage grid alone the rotor inertia's warm step does not
+// converge (first-order residual 5.2), so one refinement is kept.
 TEST(Sensitivity, ThrowingWarmStepsAgreeWithColdResolves) {
   constexpr double kWarmExcess = 5e-3;  // relative
   const std::string path = std::string(ARMSTUDY_SOURCE_DIR) + "/reports/cases/throwing.yaml";
-  app::LoadedCase c = app::load_case(path);
+  // on the case's first two control grids (16 and 32 stages; throwing.grid.refinements 1):
+  // warm against cold is a property of the search on the grids it has, and the 64 stages
+  // would make every solve about twice as dear. case_text_with drops the sensitivity part:
+  // put it back.
+  const std::string bundled = testing::slurp(path);
+  std::string yaml = app::case_text_with(bundled, "throwing.grid.refinements", {1.0});
+  yaml += bundled.substr(bundled.find("\nsensitivity:"));
+  app::LoadedCase c = app::load_case_text(yaml, path);
+  ASSERT_EQ(c.info.sensitivity.items.size(), 5u);
   ASSERT_EQ(c.run->solve({}), studies::Status::kSolved) << c.run->message();
   const auto s = app::run_sensitivity(c, {});
   ASSERT_TRUE(s.has_value());
