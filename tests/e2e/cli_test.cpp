@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -239,6 +240,36 @@ TEST(Cli, RunJsonSummarisesTheRunOnStdoutAndJunitHasTimes) {
   EXPECT_NE(junit.find(expected), std::string::npos) << junit;
   fs::remove_all(out);
   fs::remove(err);
+}
+
+// run --json answers in JSON when the run stops before any case runs (a missing or bad case
+// file, an --out that is a file; an unknown option or a bad --shard stop the same way): one
+// document on stdout, with the exit code and the error, and nothing written
+TEST(Cli, RunJsonAnswersInJsonWhenNoCaseRuns) {
+  const fs::path dir = temp_dir("json_refused");
+  fs::create_directories(dir);
+  const std::string c = (kSource / "reports/cases/pendulum.yaml").string();
+  std::ofstream(dir / "bad.yaml") << "study: pendulum\nname: bad\npendulum: {duration_s: -1}\n";
+  std::ofstream(dir / "a-file") << "not a folder\n";
+  const std::string out = (dir / "out").string();
+  struct Refused {
+    std::string args, says;
+  };
+  for (const Refused& r : std::vector<Refused>{
+           {"--out " + out + " " + (dir / "missing.yaml").string(), "missing.yaml"},
+           {"--out " + out + " " + (dir / "bad.yaml").string(), "duration_s"},
+           {"--out " + (dir / "a-file").string() + " " + c, "a file, not a folder"}}) {
+    const CliRun run = armstudy::testing::run_shell("{ " + armstudy::testing::kBin +
+                                                    " run --json " + r.args + " 2>/dev/null; }");
+    EXPECT_EQ(run.exit_code, 2) << r.args << "\n" << run.output;
+    nlohmann::json j;
+    ASSERT_NO_THROW(j = nlohmann::json::parse(run.output)) << r.args << "\n" << run.output;
+    EXPECT_EQ(j["exit_code"], 2) << j.dump(2);
+    EXPECT_NE(j["error"].get<std::string>().find(r.says), std::string::npos) << j.dump(2);
+    EXPECT_TRUE(j["cases"].empty()) << j.dump(2);
+  }
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove_all(dir);
 }
 
 // an unknown option is named, with the command's options, whatever else it causes
