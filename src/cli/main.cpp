@@ -785,6 +785,9 @@ int run_command(const armstudy::cli::Commands& c, armstudy::cli::Args& a) {
     return armstudy::cli::run_diff(a.diff_options);
   }
   a.options.out_dir = a.out_dir;
+  if (!c.run_out->count())  // the default, named: a user who forgot --out finds the output
+    std::fprintf(stderr, "no --out given: the output goes to %s\n",
+                 std::filesystem::absolute(a.out_dir).c_str());
   a.options.render = !a.no_render;
   a.options.sensitivity = !a.no_sensitivity;
   return cmd_run(case_files(a.run_paths), a.options, a.jobs, a.shard, a.force, a.allow_large,

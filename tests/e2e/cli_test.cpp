@@ -272,6 +272,33 @@ TEST(Cli, RunJsonAnswersInJsonWhenNoCaseRuns) {
   fs::remove_all(dir);
 }
 
+// without --out a run writes armstudy-out/ in the current folder and names it on stderr; the
+// repository's .gitignore ignores that folder wherever a run is started in it, so a run from
+// the source tree never writes into a tracked folder
+TEST(Cli, WithoutOutARunWritesArmstudyOutAndSaysSo) {
+  const fs::path cwd = temp_dir("default_out");
+  fs::create_directories(cwd);
+  // shard 1 of 2 of one case: no case runs, but the run's folder and summaries are written
+  const CliRun r = armstudy::testing::run_shell("cd " + cwd.string() + " && " +
+                                                armstudy::testing::kBin + " run --shard 1/2 " +
+                                                (kSource / "reports/cases/pendulum.yaml").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const std::string said = "no --out given: the output goes to " + (cwd / "armstudy-out").string();
+  EXPECT_NE(r.output.find(said), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_directory(cwd / "armstudy-out")) << r.output;
+  size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(cwd)) ++entries;
+  EXPECT_EQ(entries, 1u) << "only armstudy-out/ is written in the current folder";
+  fs::remove_all(cwd);
+  if (!fs::exists(kSource / ".git")) GTEST_SKIP() << "the source is not a git checkout";
+  for (const char* p : {"armstudy-out/pendulum/results.json", "src/armstudy-out/summary.md",
+                        "reports/cases/armstudy-out/index.html"}) {
+    const CliRun ignored =
+        armstudy::testing::run_shell("git -C " + kSource.string() + " check-ignore -q " + p);
+    EXPECT_EQ(ignored.exit_code, 0) << p << " is not ignored by the repository's .gitignore";
+  }
+}
+
 // an unknown option is named, with the command's options, whatever else it causes
 TEST(Cli, AnUnknownOptionIsNamed) {
   const std::string c = (kSource / "reports/cases/pendulum.yaml").string();
