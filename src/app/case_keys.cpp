@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <yaml-cpp/yaml.h>
+
 #include "app/pipeline.hpp"
 #include "app/study_loaders.hpp"
 #include "report/case_report.hpp"
@@ -105,10 +107,23 @@ json number_schema(const cases::NumberRule& rule, bool integer) {
   return s;
 }
 
-// the default as JSON (a number, true/false or text)
+// the default as JSON (a number, true/false, text, or a list of numbers or of text)
 json default_json(const KeyInfo& k) {
   const std::string& t = *k.default_text;
   if (k.kind == "boolean") return t == "true";
+  if (k.kind == "numbers" || k.kind == "list") {  // YAML flow text: "[1, 2]", "[path_speed]"
+    json items = json::array();
+    for (const YAML::Node& item : YAML::Load(t)) {
+      const std::string text = item.Scalar();
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (k.kind == "numbers" && end && *end == '\0')
+        items.push_back(v);
+      else
+        items.push_back(text);
+    }
+    return items;
+  }
   if (k.kind == "number" || k.kind == "integer") {
     char* end = nullptr;
     const double v = std::strtod(t.c_str(), &end);
@@ -143,7 +158,7 @@ json leaf_schema(const CaseKey& k) {
   if (i.kind == "mapping") s = {{"type", "object"}};
   if (i.kind == "list") s = {{"type", "array"}};
   s["description"] = description(k);
-  if (i.default_text && i.kind != "list" && i.kind != "mapping") s["default"] = default_json(i);
+  if (i.default_text && i.kind != "mapping") s["default"] = default_json(i);
   return s;
 }
 

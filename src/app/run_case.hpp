@@ -18,8 +18,12 @@ class PdfPrinter;
 
 namespace armstudy::app {
 
+/// Where `armstudy run` writes without --out: a folder named after armstudy in the current
+/// folder (never a tracked folder of armstudy's repository: its .gitignore ignores it).
+inline constexpr const char* kDefaultOutDir = "armstudy-out";
+
 struct RunOptions {
-  std::filesystem::path out_dir = "reports/out";
+  std::filesystem::path out_dir = kDefaultOutDir;
   bool render = true;
   bool pdf = false;
   /// Re-solves each key of the case's `sensitivity:` part (app/sensitivity.hpp); false with

@@ -20,15 +20,18 @@ studies::PendulumSpec load_pendulum_spec(Map& root) {
   auto sec = root.map("pendulum");
   if (!sec) return s;
   read_tray_arm(*sec, s.arm, nullptr);
-  if (const auto v = sec->numbers("locked_deg", NumberRule::range(-360, 360, "deg"), 2)) {
+  if (const auto v = sec->numbers("locked_deg", NumberRule::range(-360, 360, "deg"), 2,
+                                  {s.theta1 / kDeg, s.theta2 / kDeg})) {
     s.theta1 = (*v)[0] * kDeg;
     s.theta2 = (*v)[1] * kDeg;
   }
-  if (const auto v = sec->numbers("start_deg", NumberRule::range(-360, 360, "deg"), 2)) {
+  if (const auto v = sec->numbers("start_deg", NumberRule::range(-360, 360, "deg"), 2,
+                                  {s.theta3 / kDeg, s.theta4 / kDeg})) {
     s.theta3 = (*v)[0] * kDeg;
     s.theta4 = (*v)[1] * kDeg;
   }
-  if (const auto v = sec->numbers("start_rate_deg_s", NumberRule::range(-1e4, 1e4, "deg/s"), 2)) {
+  if (const auto v = sec->numbers("start_rate_deg_s", NumberRule::range(-1e4, 1e4, "deg/s"), 2,
+                                  {s.theta3_rate / kDeg, s.theta4_rate / kDeg})) {
     s.theta3_rate = (*v)[0] * kDeg;
     s.theta4_rate = (*v)[1] * kDeg;
   }

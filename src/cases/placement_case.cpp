@@ -136,7 +136,9 @@ void load_line_length(Map& p, const pl::Annulus& an, pl::Spec& spec) {
 
 // placement.programs (by name) and placement.configurations (1 or 2)
 void load_programs(Map& p, pl::Spec& spec) {
-  if (auto progs = p.seq("programs")) {
+  std::vector<std::string> default_programs;
+  for (const auto prog : spec.programs) default_programs.emplace_back(core::program_name(prog));
+  if (auto progs = p.seq("programs", default_programs)) {
     spec.programs.clear();
     const auto names = core::program_names();
     for (size_t i = 0; i < progs->size(); ++i) {
@@ -157,7 +159,10 @@ void load_programs(Map& p, pl::Spec& spec) {
     if (progs->size() == 0)
       p.error("programs", "'placement.programs' is empty; expected at least one program");
   }
-  if (auto cfgs = p.numbers("configurations", NumberRule::range(1, 2, ""))) {
+  const std::vector<double> default_configurations(spec.configurations.begin(),
+                                                   spec.configurations.end());
+  if (auto cfgs =
+          p.numbers("configurations", NumberRule::range(1, 2, ""), 0, default_configurations)) {
     spec.configurations.clear();
     for (size_t i = 0; i < cfgs->size(); ++i) {
       const double c = (*cfgs)[i];

@@ -36,16 +36,21 @@ void read_motors(Map& m, studies::ThrowingSpec& s) {
 
 // throwing.task: start and release angles, release rates, duration, landing height
 void read_task(Map& t, studies::ThrowingSpec& s) {
-  if (const auto v = t.numbers("start_deg", NumberRule::range(-360, 360, "deg"), 4)) {
+  if (const auto v = t.numbers("start_deg", NumberRule::range(-360, 360, "deg"), 4,
+                               {s.start[0] / core::kDeg, s.start[1] / core::kDeg,
+                                s.theta3_start / core::kDeg, s.theta4_start / core::kDeg})) {
     s.start = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
     s.theta3_start = (*v)[2] * core::kDeg;
     s.theta4_start = (*v)[3] * core::kDeg;
   }
-  if (const auto v = t.numbers("release_deg", NumberRule::range(-360, 360, "deg"), 3)) {
+  if (const auto v = t.numbers(
+          "release_deg", NumberRule::range(-360, 360, "deg"), 3,
+          {s.release[0] / core::kDeg, s.release[1] / core::kDeg, s.theta3_release / core::kDeg})) {
     s.release = {(*v)[0] * core::kDeg, (*v)[1] * core::kDeg};
     s.theta3_release = (*v)[2] * core::kDeg;
   }
-  if (const auto v = t.numbers("release_rate_rad_s", NumberRule::range(-200, 200, "rad/s"), 2))
+  if (const auto v = t.numbers("release_rate_rad_s", NumberRule::range(-200, 200, "rad/s"), 2,
+                               {s.release_rate[0], s.release_rate[1]}))
     s.release_rate = {(*v)[0], (*v)[1]};
   num(t, "duration_s", s.tf, NumberRule::range(0.01, 60.0, "s"));
   num(t, "landing_height_m", s.landing_height, NumberRule::range(-100.0, 100.0, "m"));
@@ -73,7 +78,8 @@ void read_idp(Map& i, studies::ThrowingSpec& s) {
   num(i, "restore", s.idp.restore, NumberRule::range(1e-3, 1.0, ""));
   s.idp.candidates = i.integer_or("candidates", s.idp.candidates, 1, 200);
   num(i, "shrink", s.idp.shrink, NumberRule::range(1e-3, 0.999, ""));
-  if (const auto v = i.numbers("region_rad_s", NumberRule::positive("rad/s"), 2))
+  if (const auto v = i.numbers("region_rad_s", NumberRule::positive("rad/s"), 2,
+                               {s.idp.region[0], s.idp.region[1]}))
     s.idp.region = {(*v)[0], (*v)[1]};
   s.idp.seed =
       static_cast<unsigned>(i.integer_or("seed", static_cast<int>(s.idp.seed), 0, 2147483647));

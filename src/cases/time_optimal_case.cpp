@@ -268,7 +268,11 @@ void load_dp(Map& t, to::DpSettings* dp) {
   dp->segments = m->integer_or("segments", dp->segments, 2, 2000);
   dp->levels = m->integer_or("levels", dp->levels, 2, 20000);
   dp->checks_per_segment = m->integer_or("checks_per_segment", dp->checks_per_segment, 1, 1000);
-  if (auto st = m->seq("states")) {
+  std::vector<std::string> default_states;
+  for (const auto state : dp->states)
+    default_states.emplace_back(state == to::DpState::kPathSpeed ? "path_speed"
+                                                                 : "joint1_velocity");
+  if (auto st = m->seq("states", default_states)) {
     dp->states.clear();
     for (size_t i = 0; i < st->size(); ++i) {
       const YAML::Node n = st->at(i);
@@ -291,9 +295,12 @@ void load_dp(Map& t, to::DpSettings* dp) {
   }
   if (m->has("convergence_segments")) {
     const YAML::Node n = m->get("convergence_segments");
+    const std::vector<double> default_segments(dp->convergence_segments.begin(),
+                                               dp->convergence_segments.end());
     dp->convergence_segments.clear();
     if (!(n.IsSequence() && n.size() == 0)) {
-      if (const auto v = m->numbers("convergence_segments", NumberRule::range(2, 2000, ""))) {
+      if (const auto v = m->numbers("convergence_segments", NumberRule::range(2, 2000, ""), 0,
+                                    default_segments)) {
         for (size_t i = 0; i < v->size(); ++i) {
           if ((*v)[i] != std::floor((*v)[i])) {
             m->error("convergence_segments",

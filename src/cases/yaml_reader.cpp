@@ -343,6 +343,14 @@ KeyInfo key_info(const char* kind, NumberRule rule = {},
   return k;
 }
 
+// a default list as YAML flow text ("[1, 2]"); none when it has no items
+std::optional<std::string> flow_list(const std::vector<std::string>& items) {
+  if (items.empty()) return std::nullopt;
+  std::string t;
+  for (const std::string& i : items) t += (t.empty() ? "[" : ", ") + i;
+  return t + "]";
+}
+
 // a value a catalog pass gives for a required number: inside its rule, so that the loader
 // goes on as for a file that has it
 double plausible(const NumberRule& rule) {
@@ -499,9 +507,12 @@ bool Map::boolean_or(std::string_view key, bool fallback) {
 }
 
 std::optional<std::vector<double>> Map::numbers(std::string_view key, const NumberRule& rule,
-                                                size_t size) {
+                                                size_t size,
+                                                const std::vector<double>& default_value) {
   if (diag_->catalog()) {
-    KeyInfo k = key_info("numbers", rule);
+    std::vector<std::string> items;
+    for (const double v : default_value) items.push_back(format_number(v));
+    KeyInfo k = key_info("numbers", rule, flow_list(items));
     k.count = size;
     catalog_key(key, std::move(k));
     mark_known(key);
@@ -545,10 +556,10 @@ std::optional<Map> Map::map(std::string_view key) {
   return Map(n, *diag_, path_of(key));
 }
 
-std::optional<Seq> Map::seq(std::string_view key) {
+std::optional<Seq> Map::seq(std::string_view key, const std::vector<std::string>& default_items) {
   if (diag_->catalog()) {
     mark_known(key);
-    if (!catalog_key(key, key_info("list"))) return std::nullopt;
+    if (!catalog_key(key, key_info("list", {}, flow_list(default_items)))) return std::nullopt;
     // two items: a list of links is then a 2-link arm, which every study takes
     YAML::Node two(YAML::NodeType::Sequence);
     two.push_back(YAML::Node(YAML::NodeType::Map));

@@ -166,11 +166,16 @@ class Map {
   std::optional<std::string> choice(std::string_view key, const std::vector<std::string>& allowed);
   std::optional<bool> boolean(std::string_view key);
   bool boolean_or(std::string_view key, bool fallback);
-  /// A list of numbers; `size` 0 means any non-empty length.
+  /// A list of numbers; `size` 0 means any non-empty length; nullopt when absent.
+  /// `default_value`: what the loader keeps when the key is absent (in the key's unit), for
+  /// the key reference, the schema and `armstudy init`; empty: none.
   std::optional<std::vector<double>> numbers(std::string_view key, const NumberRule& rule,
-                                             size_t size = 0);
+                                             size_t size = 0,
+                                             const std::vector<double>& default_value = {});
   std::optional<Map> map(std::string_view key);
-  std::optional<Seq> seq(std::string_view key);
+  /// A list; nullopt when absent. `default_items`: the items (as YAML scalars) the loader
+  /// keeps when the key is absent, for the key reference, the schema and `armstudy init`.
+  std::optional<Seq> seq(std::string_view key, const std::vector<std::string>& default_items = {});
 
   /// Records an error at the key's value (or at the mapping if the key is missing).
   void error(std::string_view key, std::string message);

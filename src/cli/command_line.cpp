@@ -13,13 +13,16 @@ namespace {
 constexpr const char* kAllowLargeHelp =
     "Run cases whose estimated work or memory is beyond the budget (docs/budgets.md)";
 
-CLI::App* add_run(CLI::App& app, Args& a) {
+CLI::App* add_run(CLI::App& app, Args& a, CLI::Option** out_option) {
   auto* run = app.add_subcommand("run", "Solve, render and report case files");
   run->add_option("cases", a.run_paths, "Case files (YAML), or folders of case files")
       ->required()
       ->check(CLI::ExistingPath);
-  run->add_option("--out", a.out_dir, "Output folder; each case goes to OUT/<case name>/")
-      ->capture_default_str();
+  *out_option =
+      run->add_option("--out", a.out_dir,
+                      "Output folder, made if missing; each case goes to OUT/<case name>/ (without "
+                      "--out: armstudy-out in the current folder, named on stderr)")
+          ->capture_default_str();
   run->add_flag("--no-render", a.no_render,
                 "Skip MuJoCo frame rendering (everything else is made)");
   run->add_flag("--no-sensitivity", a.no_sensitivity,
@@ -145,7 +148,7 @@ void describe_app(CLI::App& app) {
 // every command and its options, in the order --help lists them
 Commands add_commands(CLI::App& app, Args& a) {
   Commands c;
-  c.run = add_run(app, a);
+  c.run = add_run(app, a, &c.run_out);
   c.expand = add_sweep_expand(app, a);
   c.list = add_list(app, a);
   c.merge = add_merge(app, a, &c.merge_out);

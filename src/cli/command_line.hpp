@@ -18,7 +18,7 @@ namespace armstudy::cli {
 struct Args {
   std::vector<std::string> run_paths, validate_paths;
   app::RunOptions options;
-  std::string out_dir = "reports/out";
+  std::string out_dir = app::kDefaultOutDir;
   bool no_render = false;
   bool no_sensitivity = false;
   bool run_json = false;
@@ -42,7 +42,7 @@ struct Args {
 struct Commands {
   CLI::App *run = nullptr, *expand = nullptr, *list = nullptr, *merge = nullptr, *diff = nullptr,
            *validate = nullptr, *init = nullptr;
-  CLI::Option* merge_out = nullptr;
+  CLI::Option *merge_out = nullptr, *run_out = nullptr;
 };
 
 /// armstudy itself: --version and the footer naming the studies and the exit codes.

@@ -44,6 +44,7 @@
 #include "cli/open_files.hpp"
 #include "cli/process_memory.hpp"
 #include "cli/progress.hpp"
+#include "cli/run_refusal.hpp"
 #include "cli/sweep.hpp"
 #include "cli/sweep_manifest.hpp"
 #include "cli/version_text.hpp"
@@ -78,23 +79,22 @@ bool load_all(const std::vector<std::string>& paths, std::vector<LoadedCase>* ou
     try {
       LoadedCase c = armstudy::app::load_case(p, {allow_large});
       if (auto it = names.find(c.info.name); it != names.end()) {
-        std::fprintf(stderr, "%s: case name '%s' is also the name of %s; expected unique names\n",
-                     p.c_str(), c.info.name.c_str(), it->second.c_str());
+        armstudy::cli::say_refusal(p + ": case name '" + c.info.name + "' is also the name of " +
+                                   it->second + "; expected unique names");
         ok = false;
         continue;
       }
       if (const char* clash = armstudy::cli::run_level_file(c.info.name)) {
-        std::fprintf(stderr,
-                     "%s: case name '%s' is the name of %s, which armstudy writes beside the "
-                     "case folders; expected another name\n",
-                     p.c_str(), c.info.name.c_str(), clash);
+        armstudy::cli::say_refusal(p + ": case name '" + c.info.name + "' is the name of " + clash +
+                                   ", which armstudy writes beside the case folders; expected "
+                                   "another name");
         ok = false;
         continue;
       }
       names[c.info.name] = p;
       if (out) out->push_back(std::move(c));
     } catch (const armstudy::cases::CaseErrors& e) {
-      std::fprintf(stderr, "%s\n", e.what());
+      armstudy::cli::say_refusal(e.what());
       ok = false;
     }
   }
@@ -228,11 +228,11 @@ bool refuse_foreign_outputs(const std::filesystem::path& out_dir,
                             const std::vector<std::string>& cases,
                             const std::vector<std::string>& run_level) {
   const auto foreign = armstudy::report::foreign_outputs(out_dir, cases, run_level);
-  for (const std::string& f : foreign) std::fprintf(stderr, "armstudy: %s\n", f.c_str());
+  for (const std::string& f : foreign) armstudy::cli::say_refusal("armstudy: " + f);
   if (!foreign.empty())
-    std::fprintf(stderr,
-                 "nothing was written: armstudy replaces only what it wrote; move these "
-                 "away or choose another --out\n");
+    armstudy::cli::say_refusal(
+        "nothing was written: armstudy replaces only what it wrote; move these away or choose "
+        "another --out");
   return !foreign.empty();
 }
 
@@ -251,8 +251,8 @@ int copy_manifest(const std::vector<std::string>& run_paths, const std::filesyst
       armstudy::app::write_file_atomic(dst, armstudy::cli::manifest_text(*m));
       return kExitDone;
     } catch (const std::runtime_error& e) {
-      std::fprintf(stderr, "armstudy: %s; nothing was written\n",
-                   armstudy::report::terminal_text(e.what()).c_str());
+      armstudy::cli::say_refusal("armstudy: " + armstudy::report::terminal_text(e.what()) +
+                                 "; nothing was written");
       return kExitBadInput;
     }
   }
@@ -268,7 +268,7 @@ bool take_shard(const std::string& shard, std::vector<LoadedCase>* all) {
   if (!shard.empty()) {
     int index = 0, count = 1;
     if (!parse_shard(shard, &index, &count)) {
-      std::fprintf(stderr, "--shard '%s': expected I/N with 0 <= I < N, e.g. 0/4\n", shard.c_str());
+      armstudy::cli::say_refusal("--shard '" + shard + "': expected I/N with 0 <= I < N, e.g. 0/4");
       return false;
     }
     std::vector<LoadedCase> mine;
@@ -307,7 +307,7 @@ int skip_done_cases(std::vector<LoadedCase>* all, const armstudy::app::RunOption
       } else
         todo.push_back(std::move(c));
     } catch (const armstudy::cases::InputFileError& e) {
-      std::fprintf(stderr, "armstudy: %s\nnothing was run\n", e.what());
+      armstudy::cli::say_refusal("armstudy: " + std::string(e.what()) + "\nnothing was run");
       return e.runtime() ? kExitRuntime : kExitBadInput;
     }
   }
@@ -468,6 +468,9 @@ int write_summaries(const std::filesystem::path& out_dir,
   return worst;
 }
 
+// whether run --json printed its summary (else main prints why no case ran)
+bool g_run_json_printed = false;
+
 // run --json: the run's summary on stdout, one JSON document (the cases sorted by name)
 void print_run_json(const std::filesystem::path& out_dir, int exit_code, nlohmann::json cases,
                     const std::vector<std::string>& skipped) {
@@ -482,6 +485,7 @@ void print_run_json(const std::filesystem::path& out_dir, int exit_code, nlohman
                             {"junit_xml", (out_dir / "junit.xml").string()},
                             {"index_html", (out_dir / "index.html").string()}};
   std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+  g_run_json_printed = true;
 }
 
 // `armstudy run`: load, shard, refuse foreign outputs, skip done cases, run, print and
@@ -491,20 +495,20 @@ int cmd_run(const std::vector<std::string>& paths, const armstudy::app::RunOptio
             const std::vector<std::string>& run_paths, bool json) {
   std::vector<LoadedCase> cases;
   if (!load_all(paths, &cases, allow_large)) {
-    std::fprintf(stderr, "nothing was written: fix the case files above\n");
+    armstudy::cli::say_refusal("nothing was written: fix the case files above");
     return kExitBadInput;
   }
   if (options.pdf && armstudy::report::find_chromium().empty()) {
-    std::fprintf(stderr, "armstudy: %s; nothing was written\n",
-                 armstudy::report::missing_chromium_text().c_str());
+    armstudy::cli::say_refusal("armstudy: " + armstudy::report::missing_chromium_text() +
+                               "; nothing was written");
     return kExitRuntime;
   }
   // the report templates, read before anything is solved (a FIFO or a device among them)
   try {
     armstudy::report::check_templates();
   } catch (const armstudy::cases::InputFileError& e) {
-    std::fprintf(stderr, "armstudy: %s; nothing was run\n",
-                 armstudy::report::terminal_text(e.what()).c_str());
+    armstudy::cli::say_refusal("armstudy: " + armstudy::report::terminal_text(e.what()) +
+                               "; nothing was run");
     return e.runtime() ? kExitRuntime : kExitBadInput;
   }
   // a stable subset: cases sorted by name, every N-th from I
@@ -754,13 +758,13 @@ int check_before_running(const armstudy::cli::Commands& c, const armstudy::cli::
                                                                     : nullptr;
   if (out_given) {
     if (const std::string why = out_problem(*out_given); !why.empty()) {
-      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      armstudy::cli::say_refusal("armstudy: " + why);
       return kExitBadInput;
     }
   }
   if (*c.run || *c.merge || *c.diff) {
     if (const std::string why = armstudy::cli::ensure_open_files(); !why.empty()) {
-      std::fprintf(stderr, "armstudy: %s\n", why.c_str());
+      armstudy::cli::say_refusal("armstudy: " + why);
       return kExitRuntime;
     }
   }
@@ -781,10 +785,39 @@ int run_command(const armstudy::cli::Commands& c, armstudy::cli::Args& a) {
     return armstudy::cli::run_diff(a.diff_options);
   }
   a.options.out_dir = a.out_dir;
+  if (!c.run_out->count())  // the default, named: a user who forgot --out finds the output
+    std::fprintf(stderr, "no --out given: the output goes to %s\n",
+                 std::filesystem::absolute(a.out_dir).c_str());
   a.options.render = !a.no_render;
   a.options.sensitivity = !a.no_sensitivity;
   return cmd_run(case_files(a.run_paths), a.options, a.jobs, a.shard, a.force, a.allow_large,
                  a.run_paths, a.run_json);
+}
+
+// parses the command line and runs the command given; its exit code
+int parse_and_run(CLI::App& app, const armstudy::cli::Commands& commands, armstudy::cli::Args& a,
+                  int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // an unknown option first: not what it caused later ("Path does not exist: 2")
+    if (const std::string unknown = armstudy::cli::unknown_option_message(app);
+        !unknown.empty() && e.get_exit_code() != static_cast<int>(CLI::ExitCodes::Success)) {
+      armstudy::cli::say_refusal(unknown);
+      return kExitBadInput;
+    }
+    const int code = app.exit(e);  // prints help, version or the error
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return 0;
+    armstudy::cli::keep_refusal(e.what());
+    return code ? kExitBadInput : 0;
+  }
+  if (const int code = check_before_running(commands, a); code != kExitDone) return code;
+  try {
+    return run_command(commands, a);
+  } catch (const std::exception& e) {
+    armstudy::cli::say_refusal("armstudy: internal error: " + std::string(e.what()));
+    return kExitRuntime;
+  }
 }
 
 }  // namespace
@@ -801,28 +834,10 @@ int main(int argc, char** argv) {
   armstudy::cli::describe_app(app);
   armstudy::cli::Args a;
   const armstudy::cli::Commands commands = armstudy::cli::add_commands(app, a);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // an unknown option first: not what it caused later ("Path does not exist: 2")
-    if (const std::string unknown = armstudy::cli::unknown_option_message(app);
-        !unknown.empty() && e.get_exit_code() != static_cast<int>(CLI::ExitCodes::Success)) {
-      std::fprintf(stderr, "%s\n", unknown.c_str());
-      return kExitBadInput;
-    }
-    const int code = app.exit(e);  // prints help, version or the error
-    return e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)
-               ? 0
-               : (code ? kExitBadInput : 0);
-  }
-  if (const int code = check_before_running(commands, a); code != kExitDone) return code;
-  int code = kExitRuntime;
-  try {
-    code = run_command(commands, a);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "armstudy: internal error: %s\n", e.what());
-    code = kExitRuntime;
-  }
+  int code = parse_and_run(app, commands, a, argc, argv);
+  // run --json answers in JSON whatever stopped the run: a bad option, a missing case file
+  if (code != kExitDone && !g_run_json_printed && armstudy::cli::run_json_requested(argc, argv))
+    std::printf("%s\n", armstudy::cli::refusal_json(a.out_dir, code).c_str());
   // every write to standard output checked: `list --json > /dev/full` is a failure
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
     std::fprintf(stderr, "armstudy: cannot write to standard output: %s\n", std::strerror(errno));

@@ -18,6 +18,8 @@
 #include "app/study_loaders.hpp"
 #include "cases/key_docs.hpp"
 #include "cases/placement_case.hpp"
+#include "studies/placement/spec.hpp"
+#include "studies/time_optimal/spec.hpp"
 #include "testing/case_keys.hpp"
 #include "testing/files.hpp"
 
@@ -87,6 +89,64 @@ TEST(CaseSchema, TheCatalogWalksEveryAlternative) {
       EXPECT_EQ(k.info.rule.min, 21);
     }
   }
+}
+
+// the schema of `name` in `s`: the first "properties" entry of that name, depth first
+const nlohmann::json* property(const nlohmann::json& s, const std::string& name) {
+  if (!s.is_object() && !s.is_array()) return nullptr;
+  if (s.is_object() && s.contains("properties") && s["properties"].contains(name))
+    return &s["properties"][name];
+  for (const auto& v : s)
+    if (const auto* found = property(v, name)) return found;
+  return nullptr;
+}
+
+// a list's default is the loader's own, in the key reference and the schema; the lists with
+// none are those whose absence means none (no limit, no extra item) or that a case must give
+TEST(CaseSchema, ListsHaveTheLoadersDefaults) {
+  // (arm.links: without `arm:` the study's own arm; with arm.model, the model's links)
+  const std::set<std::string> no_default = {"source.printed",
+                                            "sensitivity",
+                                            "arm.links",
+                                            "arm.point_masses",
+                                            "placement.torque_limits_Nm",
+                                            "placement.power_limits_W",
+                                            "placement.evaluate",
+                                            "placement.evaluate[].root_xy_m",
+                                            "time_optimal.acceleration_limit_rad_s2",
+                                            "time_optimal.path.points_m",
+                                            "time_optimal.joint_path.points_rad",
+                                            "time_optimal.joint_path.range_rad"};
+  for (const auto& l : armstudy::app::study_loaders())
+    for (const auto& k : case_keys(std::string(l.study))) {
+      if (k.info.kind != "numbers" && k.info.kind != "list") continue;
+      const bool has =
+          k.info.default_text || k.info.required || (k.doc && !k.doc->default_words.empty());
+      EXPECT_TRUE(has || no_default.count(k.info.path))
+          << l.study << ": '" << k.info.path << "' is a list without a default; pass the "
+          << "loader's default to Map::numbers() or Map::seq()";
+    }
+  // placement.configurations and time_optimal.dp.convergence_segments: what the specs keep
+  const nlohmann::json schema = armstudy::app::case_schema();
+  const auto* configurations = property(schema, "configurations");
+  ASSERT_NE(configurations, nullptr);
+  ASSERT_TRUE(configurations->contains("default")) << configurations->dump();
+  EXPECT_EQ((*configurations)["default"],
+            nlohmann::json(armstudy::studies::placement::Spec{}.configurations));
+  const auto* segments = property(schema, "convergence_segments");
+  ASSERT_NE(segments, nullptr);
+  ASSERT_TRUE(segments->contains("default")) << segments->dump();
+  EXPECT_EQ((*segments)["default"],
+            nlohmann::json(armstudy::studies::time_optimal::DpSettings{}.convergence_segments));
+  const auto* states = property(schema, "states");
+  ASSERT_NE(states, nullptr);
+  ASSERT_TRUE(states->contains("default")) << states->dump();
+  EXPECT_EQ((*states)["default"], nlohmann::json::array({"path_speed"}));
+  std::string expected_row = "| `placement.configurations` | list of numbers |  | [";
+  for (const int c : armstudy::studies::placement::Spec{}.configurations)
+    expected_row += (expected_row.back() == '[' ? "" : ", ") + std::to_string(c);
+  EXPECT_NE(armstudy::app::case_reference_markdown().find(expected_row + "] |"), std::string::npos)
+      << expected_row;
 }
 
 // the generated files in the repository are what the loaders make today

@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -239,6 +240,63 @@ TEST(Cli, RunJsonSummarisesTheRunOnStdoutAndJunitHasTimes) {
   EXPECT_NE(junit.find(expected), std::string::npos) << junit;
   fs::remove_all(out);
   fs::remove(err);
+}
+
+// run --json answers in JSON when the run stops before any case runs (a missing or bad case
+// file, an --out that is a file; an unknown option or a bad --shard stop the same way): one
+// document on stdout, with the exit code and the error, and nothing written
+TEST(Cli, RunJsonAnswersInJsonWhenNoCaseRuns) {
+  const fs::path dir = temp_dir("json_refused");
+  fs::create_directories(dir);
+  const std::string c = (kSource / "reports/cases/pendulum.yaml").string();
+  std::ofstream(dir / "bad.yaml") << "study: pendulum\nname: bad\npendulum: {duration_s: -1}\n";
+  std::ofstream(dir / "a-file") << "not a folder\n";
+  const std::string out = (dir / "out").string();
+  struct Refused {
+    std::string args, says;
+  };
+  for (const Refused& r : std::vector<Refused>{
+           {"--out " + out + " " + (dir / "missing.yaml").string(), "missing.yaml"},
+           {"--out " + out + " " + (dir / "bad.yaml").string(), "duration_s"},
+           {"--out " + (dir / "a-file").string() + " " + c, "a file, not a folder"}}) {
+    const CliRun run = armstudy::testing::run_shell("{ " + armstudy::testing::kBin +
+                                                    " run --json " + r.args + " 2>/dev/null; }");
+    EXPECT_EQ(run.exit_code, 2) << r.args << "\n" << run.output;
+    nlohmann::json j;
+    ASSERT_NO_THROW(j = nlohmann::json::parse(run.output)) << r.args << "\n" << run.output;
+    EXPECT_EQ(j["exit_code"], 2) << j.dump(2);
+    EXPECT_NE(j["error"].get<std::string>().find(r.says), std::string::npos) << j.dump(2);
+    EXPECT_TRUE(j["cases"].empty()) << j.dump(2);
+  }
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+// without --out a run writes armstudy-out/ in the current folder and names it on stderr; the
+// repository's .gitignore ignores that folder wherever a run is started in it, so a run from
+// the source tree never writes into a tracked folder
+TEST(Cli, WithoutOutARunWritesArmstudyOutAndSaysSo) {
+  const fs::path cwd = temp_dir("default_out");
+  fs::create_directories(cwd);
+  // shard 1 of 2 of one case: no case runs, but the run's folder and summaries are written
+  const CliRun r = armstudy::testing::run_shell("cd " + cwd.string() + " && " +
+                                                armstudy::testing::kBin + " run --shard 1/2 " +
+                                                (kSource / "reports/cases/pendulum.yaml").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const std::string said = "no --out given: the output goes to " + (cwd / "armstudy-out").string();
+  EXPECT_NE(r.output.find(said), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_directory(cwd / "armstudy-out")) << r.output;
+  size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(cwd)) ++entries;
+  EXPECT_EQ(entries, 1u) << "only armstudy-out/ is written in the current folder";
+  fs::remove_all(cwd);
+  if (!fs::exists(kSource / ".git")) GTEST_SKIP() << "the source is not a git checkout";
+  for (const char* p : {"armstudy-out/pendulum/results.json", "src/armstudy-out/summary.md",
+                        "reports/cases/armstudy-out/index.html"}) {
+    const CliRun ignored =
+        armstudy::testing::run_shell("git -C " + kSource.string() + " check-ignore -q " + p);
+    EXPECT_EQ(ignored.exit_code, 0) << p << " is not ignored by the repository's .gitignore";
+  }
 }
 
 // an unknown option is named, with the command's options, whatever else it causes
