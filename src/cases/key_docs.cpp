@@ -36,6 +36,9 @@ const std::vector<KeyDoc> kDocs = {
     {"", "source.printed[].unit", "Its unit."},
     {"", "source.printed[].tolerance",
      "Half a unit of its last printed digit, or the agreement asked for."},
+    {"", "source.printed[].by_constraint",
+     "True when the tolerance is a constraint the study imposes (the value is then met by "
+     "constraint, not an agreement)."},
     {"", "source.printed[].at_source_setting",
      "The results.json value armstudy computes at the source's own setting."},
     {"", "source.printed[].at_optimum",

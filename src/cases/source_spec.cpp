@@ -96,6 +96,7 @@ PrintedItem read_item(Map& m) {
   }
   it.unit = m.string_or("unit", "");
   it.tolerance = m.number_or("tolerance", it.tolerance, NumberRule::non_negative(it.unit));
+  it.by_constraint = m.boolean_or("by_constraint", false);
   if (auto p = path_key(m, "at_source_setting")) it.at_source_setting = *p;
   if (auto p = path_key(m, "at_optimum")) it.at_optimum = *p;
   if (auto c = m.map("claim")) it.claim = read_claim(*c);

@@ -54,6 +54,7 @@ struct PrintedItem {
   std::optional<double> value;       ///< a figure: the printed number
   std::string unit;                  ///< its unit ("" for none)
   double tolerance = 0;              ///< half a unit of the last printed digit, or given
+  bool by_constraint = false;        ///< the tolerance is a constraint of the study itself
   std::string at_source_setting;     ///< armstudy's value under the source's own setting
   std::string at_optimum;            ///< armstudy's value at its own optimum
   std::optional<SourceClaim> claim;  ///< a claim instead of a figure

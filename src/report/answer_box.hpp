@@ -27,6 +27,8 @@ struct AnswerBox {
   std::vector<std::pair<std::string, std::string>> figures;  ///< (label in words, value with unit)
   std::string verdict;  ///< "all 10 checks passed" / "2 of 10 checks FAILED: ..."
   bool verdict_ok = true;
+  /// what qualifies the status badge ("not converged"); empty: the plain status
+  std::string status_note;
   std::vector<std::string> binding;      ///< what binds / decides the optimum, in words
   std::vector<std::string> assumptions;  ///< where the source is silent: value used and why
   std::string source;  ///< the case's source beside armstudy, in one line; empty: no source

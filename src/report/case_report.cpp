@@ -556,6 +556,11 @@ void write_case_report(const fs::path& dir, const cases::CaseInfo& info,
         write_tornado(dir, *record.sensitivity, &page.answer->sensitivity_caption);
 
   if (record.case_info.expect == page.status) page.status += " (as the case expects)";
+  // an answer its study calls not converged is no plain optimum: the badge says so
+  if (page.answer && !page.answer->status_note.empty()) {
+    page.status += ", " + page.answer->status_note;
+    page.status_ok = false;
+  }
   write_page(dir, page, info);
   // the animations' rules after the shared stylesheet (the page's CSP allows no inline style)
   if (const std::string css = animation_css(record.animations); !css.empty())

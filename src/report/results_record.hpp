@@ -101,7 +101,7 @@ struct SourceRowRecord {
   std::optional<double> difference;         ///< armstudy (source setting, else optimum) - printed
   std::optional<double> a, b;               ///< a claim: the two values it compares
   std::optional<std::string> relation;      ///< a claim: "less" or "greater"
-  std::string verdict;                ///< agrees, differs, confirmed, contradicted, tie or no_value
+  std::string verdict;                ///< agrees, differs, met_by_constraint, confirmed, contradicted, tie or no_value
   std::optional<std::string> reason;  ///< docs/defects.md anchor
   std::string why;
 };
@@ -248,10 +248,11 @@ void fields(V& v, SourceRowRecord& x) {
   v.optional("relation", x.relation, "a claim: what the source says a is to b",
              {{"enum", nlohmann::json::array({"less", "greater"})}});
   v("verdict", x.verdict,
-    "agrees / differs (figures), confirmed / contradicted / tie (claims; tie: within the "
+    "agrees / differs / met_by_constraint (figures; met_by_constraint: within a tolerance the "
+    "study imposes as a constraint), confirmed / contradicted / tie (claims; tie: within the "
     "resolution of the methods the values come from)",
-    {{"enum", nlohmann::json::array(
-                  {"agrees", "differs", "confirmed", "contradicted", "tie", "no_value"})}});
+    {{"enum", nlohmann::json::array({"agrees", "differs", "met_by_constraint", "confirmed",
+                                     "contradicted", "tie", "no_value"})}});
   v.optional("reason", x.reason, "the docs/defects.md entry that explains a difference");
   v("why", x.why, "the reason in one sentence (empty when armstudy agrees)");
 }

@@ -144,7 +144,9 @@ SourceRecord compare_with_source(const cases::SourceSpec& spec, const json& resu
       } else {
         r.difference = *ours - *r.printed;
         const double slack = 1e-12 * std::max(1.0, std::abs(*r.printed));
-        r.verdict = std::abs(*r.difference) <= it.tolerance + slack ? "agrees" : "differs";
+        // within a tolerance the study imposes, the value is met by it: no agreement
+        const bool within = std::abs(*r.difference) <= it.tolerance + slack;
+        r.verdict = !within ? "differs" : it.by_constraint ? "met_by_constraint" : "agrees";
       }
     }
     out.rows.push_back(std::move(r));
@@ -171,12 +173,13 @@ CheckRecord source_explained_check(const SourceRecord& source) {
 }
 
 std::string source_summary(const SourceRecord& source) {
-  int figures = 0, agrees = 0, claims = 0, confirmed = 0, ties = 0, none = 0;
+  int figures = 0, agrees = 0, met = 0, claims = 0, confirmed = 0, ties = 0, none = 0;
   for (const SourceRowRecord& r : source.rows) {
     none += r.verdict == "no_value";
     if (r.kind == "figure") {
       ++figures;
       agrees += r.verdict == "agrees";
+      met += r.verdict == "met_by_constraint";
     } else {
       ++claims;
       confirmed += r.verdict == "confirmed";
@@ -186,7 +189,9 @@ std::string source_summary(const SourceRecord& source) {
   std::string s = source.document + ": ";
   if (figures)
     s += std::to_string(figures) + (figures == 1 ? " printed figure, " : " printed figures, ") +
-         std::to_string(agrees) + " agree, " + std::to_string(figures - agrees) + " differ";
+         std::to_string(agrees) + " agree, " +
+         (met ? std::to_string(met) + " met by a constraint, " : std::string()) +
+         std::to_string(figures - agrees - met) + " differ";
   if (figures && claims) s += "; ";
   if (claims)
     s += std::to_string(claims) + (claims == 1 ? " claim, " : " claims, ") +
@@ -206,7 +211,8 @@ Section source_section(const SourceRecord& source) {
       " prints for this case, beside armstudy's value under the source's own setting (the "
       "printed placement, grid or parameters) and at armstudy's own optimum. A printed figure "
       "agrees when armstudy's value rounds to it (within half a unit of its last printed "
-      "digit); a claim is confirmed when armstudy's values stand in the relation it states "
+      "digit); a figure the study itself constrains (its tolerance is the constraint) is "
+      "met by constraint, not an agreement; a claim is confirmed when armstudy's values stand in the relation it states "
       "(a tie, equal to 1e-6, is no relation; within the resolution of the methods the values "
       "come from, where the source names them, they decide nothing: a tie). A difference is "
       "armstudy's value at the "
@@ -248,7 +254,9 @@ Section source_section(const SourceRecord& source) {
     std::string says = r.says;
     if (r.kind == "figure" && r.printed) says += " [" + with_unit(*r.printed, r.unit) + "]";
     t.rows.push_back({r.where, says, at_setting, at_opt, diff.empty() ? "-" : diff,
-                      r.verdict == "no_value" ? "no value" : r.verdict, why.empty() ? "-" : why});
+                      r.verdict == "no_value"            ? "no value"
+                      : r.verdict == "met_by_constraint" ? "met by constraint"
+                                                         : r.verdict, why.empty() ? "-" : why});
   }
   s.table(std::move(t));
   return s;

@@ -32,16 +32,16 @@ void throwing_answer(const studies::ThrowingStudyResults& th, const ResultsRecor
       a.binding.push_back(row.optimiser + ": " + (b.empty() ? "no constraint binds" : b + " bind") +
                           "; motor rating nearest its limit: " + row.binding_rating);
     }
+  // a grid sequence still falling is no plain optimum: the status badge says so
+  if (th.run && th.run->control_grids && th.run->control_grids->status == "not_converged")
+    a.status_note = "not converged";
   // what the optimum exploits in the model: said before the values the source leaves open
   const auto& mo = th.parameters.motors;
   a.assumptions.push_back(
-      "the optimum leans on: a rotor inertia of " + format_sig(mo.rotor_inertia_kg_m2, 3) +
+      "the optimum leans on: rotor inertia " + format_sig(mo.rotor_inertia_kg_m2, 3) +
       " kg m^2" +
-      (mo.rotor_inertia_kg_m2 == 0 ? " (the motors accelerate at no cost of their own)" : "") +
-      (mo.count_regeneration ? "; regenerated energy counted as negative (eq. 7's signed e i)"
-                             : "; only e i > 0 counted (no regeneration)") +
-      "; no motor inductance (the current follows the voltage at once): its swings of rate "
-      "and power are within the model, not shown to be realisable");
+      (mo.count_regeneration ? ", regeneration counted" : ", no regeneration counted") +
+      ", no motor inductance");
   for (const auto& x : th.assumptions)
     a.assumptions.push_back(x.name + ": " + format_sig(x.value, 4) +
                             (x.unit.empty() ? "" : " " + x.unit));

@@ -62,9 +62,18 @@ TEST(SourceComparison, VerdictsFollowThePrintedDigitsAndTheClaimedRelation) {
   holds.claim = cases::SourceClaim{"key:energy_J[cycloidal,1]", "less", "4.5", 1e-6, ""};
   cases::PrintedItem missing = agrees;
   missing.at_source_setting = "placement.evaluations[label=b].energy_J";
-  spec.printed = {agrees, differs, far, tie, holds, missing};
+  // a value the study constrains to within the tolerance is met by it, not an agreement
+  cases::PrintedItem constrained = agrees;
+  constrained.by_constraint = true;
+  cases::PrintedItem constrained_far = far;
+  constrained_far.by_constraint = true;
+  spec.printed = {agrees, differs, far, tie, holds, missing, constrained, constrained_far};
   const SourceRecord r = compare_with_source(spec, kResults);
-  ASSERT_EQ(r.rows.size(), 6u);
+  ASSERT_EQ(r.rows.size(), 8u);
+  EXPECT_EQ(r.rows[6].verdict, "met_by_constraint");
+  EXPECT_EQ(r.rows[7].verdict, "differs");
+  EXPECT_NE(source_summary(r).find("1 met by a constraint, 3 differ"), std::string::npos)
+      << source_summary(r);
   EXPECT_EQ(r.rows[0].verdict, "agrees");
   EXPECT_EQ(r.rows[1].verdict, "agrees");
   EXPECT_EQ(r.rows[2].verdict, "differs");
@@ -75,7 +84,7 @@ TEST(SourceComparison, VerdictsFollowThePrintedDigitsAndTheClaimedRelation) {
   // a difference, a contradiction and a missing value without their reason fail the check
   const CheckRecord c = source_explained_check(r);
   EXPECT_FALSE(c.passed);
-  EXPECT_EQ(c.value, 3);
+  EXPECT_EQ(c.value, 4);
 }
 
 }  // namespace armstudy::report::source_comparison_test
