@@ -101,7 +101,8 @@ struct SourceRowRecord {
   std::optional<double> difference;         ///< armstudy (source setting, else optimum) - printed
   std::optional<double> a, b;               ///< a claim: the two values it compares
   std::optional<std::string> relation;      ///< a claim: "less" or "greater"
-  std::string verdict;                ///< agrees, differs, met_by_constraint, confirmed, contradicted, tie or no_value
+  std::string
+      verdict;  ///< agrees, differs, met_by_constraint, confirmed, contradicted, tie or no_value
   std::optional<std::string> reason;  ///< docs/defects.md anchor
   std::string why;
 };

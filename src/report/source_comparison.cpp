@@ -212,7 +212,8 @@ Section source_section(const SourceRecord& source) {
       "printed placement, grid or parameters) and at armstudy's own optimum. A printed figure "
       "agrees when armstudy's value rounds to it (within half a unit of its last printed "
       "digit); a figure the study itself constrains (its tolerance is the constraint) is "
-      "met by constraint, not an agreement; a claim is confirmed when armstudy's values stand in the relation it states "
+      "met by constraint, not an agreement; a claim is confirmed when armstudy's values stand in "
+      "the relation it states "
       "(a tie, equal to 1e-6, is no relation; within the resolution of the methods the values "
       "come from, where the source names them, they decide nothing: a tie). A difference is "
       "armstudy's value at the "
@@ -256,7 +257,8 @@ Section source_section(const SourceRecord& source) {
     t.rows.push_back({r.where, says, at_setting, at_opt, diff.empty() ? "-" : diff,
                       r.verdict == "no_value"            ? "no value"
                       : r.verdict == "met_by_constraint" ? "met by constraint"
-                                                         : r.verdict, why.empty() ? "-" : why});
+                                                         : r.verdict,
+                      why.empty() ? "-" : why});
   }
   s.table(std::move(t));
   return s;

@@ -38,8 +38,7 @@ void throwing_answer(const studies::ThrowingStudyResults& th, const ResultsRecor
   // what the optimum exploits in the model: said before the values the source leaves open
   const auto& mo = th.parameters.motors;
   a.assumptions.push_back(
-      "the optimum leans on: rotor inertia " + format_sig(mo.rotor_inertia_kg_m2, 3) +
-      " kg m^2" +
+      "the optimum leans on: rotor inertia " + format_sig(mo.rotor_inertia_kg_m2, 3) + " kg m^2" +
       (mo.count_regeneration ? ", regeneration counted" : ", no regeneration counted") +
       ", no motor inductance");
   for (const auto& x : th.assumptions)

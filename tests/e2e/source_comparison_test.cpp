@@ -109,7 +109,7 @@ TEST(SourceComparison, EachPrintedFigureIsInResultsJsonAndTheReport) {
           const bool agrees = std::abs(ours.get<double>() - v) <=
                               row["tolerance"].get<double>() + 1e-12 * std::max(1.0, std::abs(v));
           const bool by_constraint = item["by_constraint"] && item["by_constraint"].as<bool>();
-          EXPECT_EQ(row["verdict"], !agrees        ? "differs"
+          EXPECT_EQ(row["verdict"], !agrees         ? "differs"
                                     : by_constraint ? "met_by_constraint"
                                                     : "agrees");
         }
