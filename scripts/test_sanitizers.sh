@@ -12,7 +12,8 @@
 # e2e.interrupt (the fork/exec code of the browser with a stand-in). Left out: the browser
 # tests (headless Chromium prints the bundled reports; minutes under ASan), the
 # fault-injection and package tests (strace watches the run; LeakSanitizer cannot run under
-# ptrace), the exports' and viewer's client tests (their armstudy part is every bundled case,
+# ptrace), the independent placement checks (their armstudy part is the placement solver,
+# whose quick tests run here; 42 s in Release), the exports' and viewer's client tests (their armstudy part is every bundled case,
 # as the browser tests'; minutes under ASan), the sweep scale-out tests and the live Slurm and ssh ones (their armstudy part is
 # the sweep code the e2e tests cover). ARMSTUDY_SANITIZE_ALL=1 runs every test but the
 # browser, fault-injection and package ones.
@@ -56,7 +57,7 @@ else
   exclude="BrowserReport"
   # (the throwing sensitivity cross-check solves the bundled throwing case 9 times: its
   # physics is the throwing tests', which run here; under ASan -O0 it takes over 10 min)
-  select=(-L "^quick$|^e2e$" -E "$exclude|^guard\.|^install\.|^Sensitivity\.ThrowingWarmStepsAgreeWithColdResolves$|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection|export_clients|simulate_viewer|check_placement_energy)$")
+  select=(-L "^quick$|^e2e$" -E "$exclude|^guard\.|^install\.|^Sensitivity\.ThrowingWarmStepsAgreeWithColdResolves$|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection|export_clients|simulate_viewer|check_placement_energy|check_placement_limits)$")
 fi
 built=$(date +%s)
 

@@ -21,6 +21,10 @@ foreach(folder @QUICK_FOLDERS@)
     endforeach()
     if(NOT slow)
       set_tests_properties("${test}" PROPERTIES LABELS "${folder};quick")
+    else()
+      # started first in a run with no timings yet (a fresh clone, CI): a long test begun
+      # last keeps one core busy after the other has finished
+      set_tests_properties("${test}" PROPERTIES COST 60)
     endif()
   endforeach()
 endforeach()
