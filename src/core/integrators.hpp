@@ -6,14 +6,16 @@
 ///
 /// - rk4_step: the classical fourth-order Runge-Kutta step (fixed step h). The throwing
 ///   study integrates each IDP stage with a whole number of such steps, so that the
-///   active joints' piecewise-constant accelerations never jump inside a step.
+///   active joints' piecewise-constant accelerations never jump inside a step (both of its
+///   simulations, simulate.cpp's and the lanes of simulate_kernel.cpp, through the form
+///   that takes the step's first stage k1 already evaluated).
 /// - integrate_dopri5: Dormand-Prince 5(4) with embedded error control (Hairer, Norsett,
 ///   Wanner, Solving ODE I, II.4 and II.5; the FSAL coefficients of DOPRI5). The step is
 ///   accepted when the scaled error norm max_i |err_i| / (atol + rtol max(|x_i|, |x_new_i|))
 ///   is <= 1, and the next step is h * clamp(0.9 err^(-1/5), 0.2, 5). Steps never cross the
 ///   requested output times, which are hit exactly.
-/// Both are templates over the right-hand side f(t, x) -> dx/dt (same size as x). Used by
-/// the pendulum and throwing studies.
+/// Both are templates over the right-hand side f(t, x) -> dx/dt (same size as x).
+/// integrate_dopri5 is used by the pendulum study and the throw's open-loop replay.
 
 #include <algorithm>
 #include <cmath>
@@ -28,14 +30,25 @@ namespace armstudy::core {
 /// A state vector of at most 16 entries (no heap allocation).
 using OdeState = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 16, 1>;
 
+/// One classical RK4 step of size h (s) from (t, x) whose first stage k1 = f(t, x) the
+/// caller has already evaluated (the throwing study reads its constraints at that point);
+/// returns x(t + h). State is any value type with State + State and double * State whose
+/// results convert to State (OdeState, or the throwing kernel's lanes of five states); f(t,
+/// x) returns a State. Component by component, the stages are evaluated at x + (0.5 h) k1,
+/// x + (0.5 h) k2 and x + h k3, and the step is x + (h / 6) (((k1 + 2 k2) + 2 k3) + k4),
+/// in exactly this order of double operations.
+template <typename State, typename F>
+State rk4_step(F&& f, double t, const State& x, const State& k1, double h) {
+  const State k2 = f(t + 0.5 * h, State(x + 0.5 * h * k1));
+  const State k3 = f(t + 0.5 * h, State(x + 0.5 * h * k2));
+  const State k4 = f(t + h, State(x + h * k3));
+  return State(x + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4));
+}
+
 /// One classical RK4 step of size h (s) from (t, x); returns x(t + h).
 template <typename F>
 OdeState rk4_step(F&& f, double t, const OdeState& x, double h) {
-  const OdeState k1 = f(t, x);
-  const OdeState k2 = f(t + 0.5 * h, OdeState(x + 0.5 * h * k1));
-  const OdeState k3 = f(t + 0.5 * h, OdeState(x + 0.5 * h * k2));
-  const OdeState k4 = f(t + h, OdeState(x + h * k3));
-  return x + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  return rk4_step(f, t, x, OdeState(f(t, x)), h);
 }
 
 /// Settings of the adaptive Dormand-Prince integrator.

@@ -20,7 +20,6 @@ using core::Dopri5Options;
 using core::Dopri5Stats;
 using core::integrate_dopri5;
 using core::OdeState;
-using core::rk4_step;
 
 PendulumSpec default_pendulum_spec() {
   PendulumSpec s;

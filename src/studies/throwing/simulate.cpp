@@ -20,7 +20,6 @@ using core::Dopri5Options;
 using core::Dopri5Stats;
 using core::integrate_dopri5;
 using core::OdeState;
-using core::rk4_step;
 namespace {
 
 double sign(double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); }
@@ -264,8 +263,8 @@ void finish_simulation(const ThrowSetup& setup, OdeState& x, double backoff,
 
 // simulate_profile; with `from`, resumes at stage `first` from its state (the stages before
 // copied from its evaluation); with `save`, stores the state at every stage start
-// (over 60 lines, kept whole: the classical rk4 loop over the stages with its tracking of
-// the limits, read as one integration)
+// (over 60 lines, kept whole: the loop of core::rk4_step steps over the stages with its
+// tracking of the limits, read as one integration)
 ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profile,
                            std::vector<ThrowSample>* samples, double backoff,
                            bool stop_when_infeasible, const SimulationCheckpoints* from, int first,
@@ -280,7 +279,7 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
   ProfileEvaluation ev;
   OdeState x(5);
   x << setup.theta3_0, setup.theta4_0, 0.0, 0.0, 0.0;
-  PointEval k1, k2, k3, k4;
+  PointEval k1, kj;  // an RK4 step's first stage (tracked), its later ones
   const int k0 = start_stages(P, from, first, ev, x);
   if (save) {
     save->profile = profile;
@@ -309,6 +308,11 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
       if (v > 0) return true;
     return false;
   };
+  // the right-hand side inside the current stage
+  auto stage_rhs = [&](double t, const OdeState& y) {
+    planner.eval(stage, t, y, kj);
+    return kj.dx;
+  };
   if (samples) samples->clear();
   for (int k = k0; k < P && ev.finite && !ev.stopped; ++k) {
     stage = k;
@@ -318,7 +322,8 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
     }
     for (int j = 0; j < n; ++j) {
       const double t = k * h + j * dt;
-      // classical rk4 inside stage k (the accelerations are constant there)
+      // core::rk4_step inside stage k (the accelerations are constant there) from its
+      // first stage, where the limits are tracked
       planner.eval(k, t, x, k1);
       track(k1);
       if (samples) record(k1, k, t, x[4], samples);
@@ -326,10 +331,7 @@ ProfileEvaluation simulate(const ThrowSetup& setup, const VelocityProfile& profi
         ev.stopped = true;
         break;
       }
-      planner.eval(k, t + 0.5 * dt, OdeState(x + 0.5 * dt * k1.dx), k2);
-      planner.eval(k, t + 0.5 * dt, OdeState(x + 0.5 * dt * k2.dx), k3);
-      planner.eval(k, t + dt, OdeState(x + dt * k3.dx), k4);
-      x += (dt / 6.0) * (k1.dx + 2.0 * k2.dx + 2.0 * k3.dx + k4.dx);
+      x = core::rk4_step(stage_rhs, t, x, k1.dx, dt);
       if (!x.allFinite() || std::abs(x[2]) > 1e4 || std::abs(x[3]) > 1e4) {
         ev.finite = false;
         break;

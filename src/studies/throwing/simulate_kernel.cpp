@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/check.hpp"
+#include "core/integrators.hpp"
 #include "studies/throwing/lanes.hpp"
 
 namespace armstudy::studies {
@@ -260,10 +261,29 @@ struct Frames {
   T w, al, ax, ay;             // the ball's acceleration sums over links 1 and 2
 };
 
+// the five states (theta3, theta4, their rates, the energy) of every lane, with the
+// operations core::rk4_step needs: each the lanes' operation component by component
+template <typename T>
+struct LaneState {
+  T v[5];
+  T& operator[](int i) { return v[i]; }
+  const T& operator[](int i) const { return v[i]; }
+  friend LaneState operator+(const LaneState& a, const LaneState& b) {
+    LaneState r;
+    for (int i = 0; i < 5; ++i) r.v[i] = a.v[i] + b.v[i];
+    return r;
+  }
+  friend LaneState operator*(double c, const LaneState& a) {
+    LaneState r;
+    for (int i = 0; i < 5; ++i) r.v[i] = c * a.v[i];
+    return r;
+  }
+};
+
 // one point's outputs: the state derivative and what the constraints track
 template <typename T>
 struct Point {
-  T dx[5];
+  LaneState<T> dx;
   T voltage[2], current[2], power[2];
   T normal, tangential;
 };
@@ -275,7 +295,7 @@ class Kernel {
 
   // the Planner's eval(stage, t, x) for what the simulation uses (over 60 lines, kept whole:
   // the innermost step of every lane's rk4, one pass through the equations with no calls)
-  void eval(int stage, double t, const T x[5], Point<T>& out) {
+  void eval(int stage, double t, const LaneState<T>& x, Point<T>& out) {
     const double tau = t - stage * h_;
     const uint64_t bits = std::bit_cast<uint64_t>(tau);
     if (!cached_ || stage != stage_ || bits != tau_bits_) {
@@ -458,7 +478,7 @@ struct Track {
 };
 
 template <typename T>
-void track(const Model& m, const T x[5], const Point<T>& p, int k, Track<T>& tr) {
+void track(const Model& m, const LaneState<T>& x, const Point<T>& p, int k, Track<T>& tr) {
   tr.theta4[k] = lane_max(tr.theta4[k], lane_abs(x[1]));
   for (int i = 0; i < 2; ++i) {
     tr.voltage[k] = lane_max(tr.voltage[k], lane_abs(p.voltage[i]));
@@ -497,11 +517,15 @@ struct Run {
 // why, with (k, j) where the other lanes go on; the lanes of `stop` (bit i: lane i) stop at
 // a certain violation
 template <typename T>
-int run(const Run& r, Kernel<T>& K, const Model& m, T x[5], Track<T>& tr, int& k, int& j, int stop,
-        End& why) {
-  Point<T> k1, k2, k3, k4;
-  T xs[5];
+int run(const Run& r, Kernel<T>& K, const Model& m, LaneState<T>& x, Track<T>& tr, int& k, int& j,
+        int stop, End& why) {
+  Point<T> k1, kj;  // an RK4 step's first stage (tracked), its later ones
   const double dt = r.dt;
+  // the right-hand side inside stage k
+  auto stage_rhs = [&](double t, const LaneState<T>& y) {
+    K.eval(k, t, y, kj);
+    return kj.dx;
+  };
   for (; k < r.P; ++k, j = 0) {
     if (j == 0 && r.save) {
       core::OdeState s(5);
@@ -520,14 +544,7 @@ int run(const Run& r, Kernel<T>& K, const Model& m, T x[5], Track<T>& tr, int& k
           return v;
         }
       }
-      for (int i = 0; i < 5; ++i) xs[i] = x[i] + 0.5 * dt * k1.dx[i];
-      K.eval(k, t + 0.5 * dt, xs, k2);
-      for (int i = 0; i < 5; ++i) xs[i] = x[i] + 0.5 * dt * k2.dx[i];
-      K.eval(k, t + 0.5 * dt, xs, k3);
-      for (int i = 0; i < 5; ++i) xs[i] = x[i] + dt * k3.dx[i];
-      K.eval(k, t + dt, xs, k4);
-      for (int i = 0; i < 5; ++i)
-        x[i] += (dt / 6.0) * (k1.dx[i] + 2.0 * k2.dx[i] + 2.0 * k3.dx[i] + k4.dx[i]);
+      x = core::rk4_step(stage_rhs, t, x, k1.dx, dt);
       auto bad = lane_not(lane_finite(x[0]));
       for (int i = 1; i < 5; ++i) bad = lane_or(bad, lane_not(lane_finite(x[i])));
       bad = lane_or(bad, lane_or(lane_abs(x[2]) > 1e4, lane_abs(x[3]) > 1e4));
@@ -657,7 +674,7 @@ int run_lanes(const Model& m, const Run& r, Job* const* jobs, int n, int& k, int
     lp.q0.push_back(packed([q](const Job& b) { return b.nodes.q0[q]; }));
     lp.q1.push_back(packed([q](const Job& b) { return b.nodes.q1[q]; }));
   }
-  T x[5];
+  LaneState<T> x;
   for (int c = 0; c < 5; ++c) x[c] = packed([c](const Job& b) { return b.x[c]; });
   Track<T> tr;
   auto track_of = [&](std::vector<double> Track<double>::*f) {
