@@ -9,6 +9,8 @@ rebuild and a test run: minutes each); docs/testing.md has the last score.
 
   scripts/mutation_run.py                   every mutant
   scripts/mutation_run.py contact_margin    the mutants named
+  scripts/mutation_run.py --check           only checks that each mutant's text is in its
+                                            file exactly once (no copy, build or test)
 
 Environment: ARMSTUDY_MUTATION_DIR (the scratch copy, default build/mutation of this tree, which
 git ignores: under the same folder as the tree, ccache with CCACHE_BASEDIR finds most of the
@@ -29,15 +31,17 @@ MUTANTS = [
      "sp.contact_margin - e.min_normal_force, 0.0", "-e.min_normal_force, 0.0",
      "the throw's contact check ignores the contact margin (N >= 0 instead of N >= margin)"),
     ("core_rk4_stage", "src/core/integrators.hpp",
-     "const OdeState k3 = f(t + 0.5 * h, OdeState(x + 0.5 * h * k2));",
-     "const OdeState k3 = f(t + 0.5 * h, OdeState(x + 0.5 * h * k1));",
-     "core::rk4_step's third stage from k1"),
+     "const State k3 = f(t + 0.5 * h, State(x + 0.5 * h * k2));",
+     "const State k3 = f(t + 0.5 * h, State(x + 0.5 * h * k1));",
+     "core::rk4_step's third stage from k1 (the throw's Planner and kernel both step with it)"),
+    # the Planner and the kernel have no RK4 stages of their own: their mutants break how they
+    # hand core::rk4_step their right-hand side (each is then no longer the other's twin)
     ("planner_rk4_stage", "src/studies/throwing/simulate.cpp",
-     "OdeState(x + 0.5 * dt * k2.dx), k3)", "OdeState(x + 0.5 * dt * k1.dx), k3)",
-     "the throw Planner's RK4: third stage from k1"),
+     "planner.eval(stage, t, y, kj);", "planner.eval(stage, t, x, kj);",
+     "the throw Planner's RK4: core::rk4_step's stages evaluated at the step's start state"),
     ("kernel_rk4_stage", "src/studies/throwing/simulate_kernel.cpp",
-     "xs[i] = x[i] + 0.5 * dt * k2.dx[i];", "xs[i] = x[i] + 0.5 * dt * k1.dx[i];",
-     "the throw kernel's RK4: third stage from k1"),
+     "K.eval(k, t, y, kj);", "K.eval(k, t, x, kj);",
+     "the throw kernel's RK4: core::rk4_step's stages evaluated at the step's start state"),
     ("richardson_safety", "src/studies/time_optimal/result.hpp",
      "kExtrapolationSafety = 4.0", "kExtrapolationSafety = 1.0",
      "the Richardson error's safety factor 1 (was 4)"),
@@ -80,8 +84,29 @@ def build_and_test(scratch, jobs, log):
     return 0 if run(ctest, scratch, log) == 0 else 1
 
 
+def check():
+    """Each mutant's text exactly once in this tree's file: 0, else 1 (nothing built)."""
+    bad = 0
+    for name, rel, old, _, what in MUTANTS:
+        path = os.path.join(ROOT, rel)
+        n = open(path).read().count(old) if os.path.isfile(path) else 0
+        print(f"{name}: {'found once' if n == 1 else f'found {n} times'} in {rel}: {what}")
+        bad += n != 1
+    print(f"{len(MUTANTS) - bad} of {len(MUTANTS)} mutants apply")
+    return 1 if bad else 0
+
+
 def main():
     names = sys.argv[1:]
+    if names in (["-h"], ["--help"]):
+        print(__doc__)
+        return 0
+    if names == ["--check"]:
+        return check()
+    unknown = [n for n in names if n not in [m[0] for m in MUTANTS]]
+    if unknown:
+        print(f"no mutant named {', '.join(unknown)} (--check lists them)")
+        return 2
     mutants = [m for m in MUTANTS if not names or m[0] in names]
     scratch = os.environ.get("ARMSTUDY_MUTATION_DIR", os.path.join(ROOT, "build", "mutation"))
     jobs = os.environ.get("JOBS", "2")

@@ -10,7 +10,8 @@
 /// stage by stage); the tray and the ball (joints 3, 4) follow core::passive_forward_dynamics,
 /// which also returns the joint torques Q1, Q2 that realise the motion. Motor torques are
 /// tau_m = B^-T Q (studies/tray_arm.hpp), and eq. 5-6 give voltages and currents. Each stage is
-/// integrated with `steps_per_stage` RK4 steps, so the accelerations never jump inside a step;
+/// integrated with `steps_per_stage` RK4 steps (core::rk4_step, handed the first stage that the
+/// constraints are read at), so the accelerations never jump inside a step;
 /// the consumed energy (eq. 7) is integrated as a fifth state by the same RK4 steps.
 ///
 /// Constraints (docs/throwing.md derives the contact forces). At the start of every RK4 step
