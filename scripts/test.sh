@@ -11,7 +11,33 @@ cd "$(dirname "$0")/.."
 ARMSTUDY_WERROR=ON scripts/setup.sh --no-reports
 export LP_NUM_THREADS=1
 jobs=$(nproc 2>/dev/null || echo 2)
-ctest --test-dir build --output-on-failure -j"$jobs" --timeout 900
-if [ "${ARMSTUDY_SANITIZERS:-1}" != 0 ]; then
-  scripts/test_sanitizers.sh
+sanitizers=${ARMSTUDY_SANITIZERS:-1}
+if [ "$sanitizers" != 0 ]; then
+  # the sanitizer build at the lowest priority while the Release suite runs: it takes the CPU
+  # the tests leave idle (their waits on the Slurm and ssh daemons, Chromium, ffmpeg, the
+  # single-threaded tail) and, when the suite ends, goes on at full speed; the tests keep
+  # their CPU (nice 19 weighs 15 against their 1024)
+  mkdir -p build-asan
+  # (setsid: its own process group, so that a failed suite stops the whole build)
+  ARMSTUDY_SANITIZER_PHASE=build setsid nice -n 19 scripts/test_sanitizers.sh >build-asan/build.log 2>&1 &
+  asan_build=$!
+  trap 'kill -- "-$asan_build" 2>/dev/null || true' EXIT
 fi
+status=0
+ctest --test-dir build --output-on-failure -j"$jobs" --timeout 900 || status=$?
+if [ "$sanitizers" != 0 ]; then
+  if [ "$status" != 0 ]; then
+    echo "test: the Release suite failed (exit $status); the sanitizer tier is not run"
+    exit "$status"
+  fi
+  echo "test: waiting for the sanitizer build (started beside the Release suite)"
+  if ! wait "$asan_build"; then
+    tail -n 60 build-asan/build.log
+    echo "test: the sanitizer build failed (build-asan/build.log)"
+    exit 1
+  fi
+  trap - EXIT
+  tail -n 1 build-asan/build.log
+  ARMSTUDY_SANITIZER_PHASE=test scripts/test_sanitizers.sh
+fi
+exit "$status"

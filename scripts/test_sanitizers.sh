@@ -33,6 +33,9 @@
 #
 #   scripts/test_sanitizers.sh            configure, build and run
 #   scripts/test_sanitizers.sh -R merge   extra arguments go to ctest
+#
+# ARMSTUDY_SANITIZER_PHASE=build only configures and builds, =test only runs the tests of an
+# earlier build: scripts/test.sh builds at the lowest priority while the Release suite runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
@@ -46,10 +49,16 @@ if command -v ninja >/dev/null && { [ ! -f build-asan/CMakeCache.txt ] ||
   grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' build-asan/CMakeCache.txt; }; then
   generator=(-G Ninja)
 fi
-cmake "${generator[@]}" -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DARMSTUDY_BUILD_BENCH=OFF "${launcher[@]}" \
-  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DARMSTUDY_TEST_COMPILE_OPTIONS=-O0 \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
-cmake --build build-asan -j"$jobs"
+phase=${ARMSTUDY_SANITIZER_PHASE:-all}
+case "$phase" in all | build | test) ;; *) echo "ARMSTUDY_SANITIZER_PHASE: all, build or test, not '$phase'" >&2; exit 2 ;; esac
+if [ "$phase" != test ]; then
+  cmake "${generator[@]}" -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DARMSTUDY_BUILD_BENCH=OFF "${launcher[@]}" \
+    -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DARMSTUDY_TEST_COMPILE_OPTIONS=-O0 \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+  cmake --build build-asan -j"$jobs"
+  echo "sanitizers: built in $(($(date +%s) - start)) s"
+  [ "$phase" = build ] && exit 0
+fi
 if [ "${ARMSTUDY_SANITIZE_ALL:-0}" = 1 ]; then
   exclude="BrowserReport|e2e.fault_injection|install.debian_package"
   select=()
@@ -70,5 +79,9 @@ status=0
 if [ ${#select[@]} -eq 0 ]; then select=(-E "$exclude"); fi
 ctest --test-dir build-asan --output-on-failure -j"$jobs" --timeout 900 "${select[@]}" "$@" || status=$?
 end=$(date +%s)
-echo "sanitizers: build $((built - start)) s, tests $((end - built)) s (excluded: $exclude)"
+if [ "$phase" = test ]; then
+  echo "sanitizers: tests $((end - built)) s (excluded: $exclude)"
+else
+  echo "sanitizers: build $((built - start)) s, tests $((end - built)) s (excluded: $exclude)"
+fi
 exit $status
