@@ -208,7 +208,8 @@ void claim_cells(const SourceRowRecord& r, std::string& terms, std::string& gap)
   }
   if (!gap.empty() && (r.a_error || r.b_error))
     gap += "; their errors together " +
-           with_unit(r.a_error.value_or(0) + r.b_error.value_or(0), r.unit);
+           format_sig(r.a_error.value_or(0) + r.b_error.value_or(0), 2) +
+           (r.unit.empty() ? "" : " " + r.unit);
 }
 
 }  // namespace
