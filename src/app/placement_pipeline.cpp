@@ -327,6 +327,7 @@ Results::Optimum optimum_section(const pl::Spec& spec, const pl::ProgramConfig& 
   o.refinement.evaluations = pc.refine_evaluations;
   o.refinement.x_s_error_m = pc.x_s_error;
   o.refinement.phi_error_deg = pc.phi_error / kDeg;
+  o.refinement.root_error_m = std::hypot(pc.x_s_error, c.x_s * pc.phi_error);
   o.refinement.energy_error_J = pc.energy_error();
   for (const pl::MarginPoint& m : pc.margin_sensitivity) {
     Results::MarginPoint mp;

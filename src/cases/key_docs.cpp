@@ -45,9 +45,16 @@ const std::vector<KeyDoc> kDocs = {
      "The results.json value armstudy computes at its own optimum."},
     {"", "source.printed[].claim", "A claim comparing two values instead of one number."},
     {"", "source.printed[].claim.a",
-     "The value the claim is about: a value path (key:<figure>) or a number."},
-    {"", "source.printed[].claim.relation", "How a compares to b."},
+     "The value the claim is about: a value path (key:<figure>) or a number; a path to a list "
+     "of numbers is a point (relation same only), compared by distance."},
+    {"", "source.printed[].claim.relation",
+     "How a compares to b: less, greater, or same (equal, or the same point, within the sum "
+     "of their errors)."},
     {"", "source.printed[].claim.b", "What a is compared with: a value path or a number."},
+    {"", "source.printed[].claim.a_error",
+     "The absolute error of a: a value path or a number. With b_error: a gap within their sum "
+     "decides nothing (a tie), and same holds within it."},
+    {"", "source.printed[].claim.b_error", "The absolute error of b: a value path or a number."},
     {"", "source.printed[].claim.tie_rel",
      "A relative difference below which a and b count as equal."},
     {"", "source.printed[].claim.measure", "What is compared, in words."},

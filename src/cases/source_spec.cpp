@@ -54,29 +54,38 @@ std::optional<std::string> path_key(Map& m, std::string_view key) {
   return p;
 }
 
+// a claim's key that is a number or a value path, as text ("" when absent or wrong)
+std::string number_or_path(Map& c, const char* key, NumberRule rule) {
+  const YAML::Node n = c.get(key);
+  const std::string text = n.IsScalar() ? n.Scalar() : "";
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  const bool number = !text.empty() && end && *end == '\0' && std::isfinite(v);
+  if (number) {
+    // read as every case number is: no hexadecimal (0x10), no denormal (1e-309)
+    if (c.number(key, rule)) return text;
+  } else if (!valid_path(text)) {
+    c.error(key, "'" + std::string(key) + "' is '" + brief(text) +
+                     "'; expected a number or a value path");
+  } else {
+    return text;
+  }
+  return "";
+}
+
 SourceClaim read_claim(Map& c) {
   SourceClaim out;
   if (auto a = path_key(c, "a")) out.a = *a;
   if (!c.has("a")) c.error("a", "missing required key 'a' (the value the claim is about)");
-  if (auto r = c.choice("relation", {"less", "greater"})) out.relation = *r;
-  if (!c.has("relation")) c.error("relation", "missing required key 'relation' (less or greater)");
-  if (c.has("b")) {
-    const YAML::Node b = c.get("b");
-    const std::string text = b.IsScalar() ? b.Scalar() : "";
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    const bool number = !text.empty() && end && *end == '\0' && std::isfinite(v);
-    if (number) {
-      // read as every case number is: no hexadecimal (0x10), no denormal (1e-309)
-      if (c.number("b", NumberRule::any(""))) out.b = text;
-    } else if (!valid_path(text)) {
-      c.error("b", "'b' is '" + brief(text) + "'; expected a number or a value path");
-    } else {
-      out.b = text;
-    }
-  } else {
+  if (auto r = c.choice("relation", {"less", "greater", "same"})) out.relation = *r;
+  if (!c.has("relation"))
+    c.error("relation", "missing required key 'relation' (less, greater or same)");
+  if (c.has("b"))
+    out.b = number_or_path(c, "b", NumberRule::any(""));
+  else
     c.error("b", "missing required key 'b' (a value path or a number)");
-  }
+  if (c.has("a_error")) out.a_error = number_or_path(c, "a_error", NumberRule::non_negative(""));
+  if (c.has("b_error")) out.b_error = number_or_path(c, "b_error", NumberRule::non_negative(""));
   out.tie_rel = c.number_or("tie_rel", out.tie_rel, NumberRule::non_negative(""));
   out.measure = c.string_or("measure", "");
   out.resolution_rel =

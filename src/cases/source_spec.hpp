@@ -25,7 +25,16 @@
 ///
 /// A value path is dotted keys of results.json, `[N]` an index and `[k=v,...]` the one
 /// element of an array whose keys have those values; `key:NAME` is the value of the key
-/// figure NAME. A claim compares two values (`b` may be a number).
+/// figure NAME. A claim compares two values (`b` may be a number), each with its error where
+/// the case names one (`a_error`, `b_error`):
+///
+///       - says: "both programs share one optimum"
+///         claim:
+///           a: placement.optima[program=poly345,configuration=1].root_xy_m
+///           relation: same
+///           b: placement.optima[program=cycloidal,configuration=1].root_xy_m
+///           a_error: placement.optima[program=poly345,configuration=1].refinement.root_error_m
+///           b_error: placement.optima[program=cycloidal,configuration=1].refinement.root_error_m
 
 #include <optional>
 #include <string>
@@ -35,16 +44,22 @@ namespace armstudy::cases {
 
 class Map;
 
-/// A claim of the source: value a stands in `relation` to value b.
+/// A claim of the source: value a stands in `relation` to value b. A value path may lead to
+/// a list of numbers (a point, e.g. root_xy_m): then a and b are compared by their distance,
+/// and only `same` applies.
 struct SourceClaim {
   std::string a;          ///< value path
-  std::string relation;   ///< "less" or "greater"
+  std::string relation;   ///< "less", "greater" or "same"
   std::string b;          ///< value path, or a number as text
   double tie_rel = 1e-6;  ///< |a - b| <= tie_rel max(|a|, |b|) is a tie, not a relation
   std::string measure;    ///< what a and b are, in words (e.g. "energy, J")
   /// the resolution of the methods a and b come from, relative: |a - b| within it (and
   /// above tie_rel) decides nothing, the verdict "tie" (0: none given)
   double resolution_rel = 0;
+  /// value paths (or numbers as text) of the absolute errors of a and b (empty: none): the
+  /// values decide nothing within their sum. `same` holds when |a - b| (or the points'
+  /// distance) is within it; `less` and `greater` are a tie within it
+  std::string a_error = {}, b_error = {};
 };
 
 /// One printed figure or claim of the source.

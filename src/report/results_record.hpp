@@ -100,7 +100,10 @@ struct SourceRowRecord {
   std::optional<double> at_optimum;         ///< armstudy at its own optimum
   std::optional<double> difference;         ///< armstudy (source setting, else optimum) - printed
   std::optional<double> a, b;               ///< a claim: the two values it compares
-  std::optional<std::string> relation;      ///< a claim: "less" or "greater"
+  std::optional<std::vector<double>> a_point, b_point;  ///< a claim about points, instead
+  std::optional<double> distance;                       ///< a claim about points: |a - b|
+  std::optional<double> a_error, b_error;  ///< a claim: the errors of a and b, where given
+  std::optional<std::string> relation;     ///< a claim: "less", "greater" or "same"
   std::string
       verdict;  ///< agrees, differs, met_by_constraint, confirmed, contradicted, tie or no_value
   std::optional<std::string> reason;  ///< docs/defects.md anchor
@@ -246,12 +249,18 @@ void fields(V& v, SourceRowRecord& x) {
              "a figure: armstudy (at the source's setting, else at its optimum) minus printed");
   v.optional("a", x.a, "a claim: armstudy's value of its first term");
   v.optional("b", x.b, "a claim: armstudy's value of its second term");
-  v.optional("relation", x.relation, "a claim: what the source says a is to b",
-             {{"enum", nlohmann::json::array({"less", "greater"})}});
+  v.optional("a_point", x.a_point, "a claim about points: armstudy's point of its first term");
+  v.optional("b_point", x.b_point, "a claim about points: armstudy's point of its second term");
+  v.optional("distance", x.distance, "a claim about points: the distance between a and b");
+  v.optional("a_error", x.a_error, "a claim: the absolute error of a (or of its point)");
+  v.optional("b_error", x.b_error, "a claim: the absolute error of b (or of its point)");
+  v.optional("relation", x.relation,
+             "a claim: what the source says a is to b (same: equal within their errors)",
+             {{"enum", nlohmann::json::array({"less", "greater", "same"})}});
   v("verdict", x.verdict,
     "agrees / differs / met_by_constraint (figures; met_by_constraint: within a tolerance the "
     "study imposes as a constraint), confirmed / contradicted / tie (claims; tie: within the "
-    "resolution of the methods the values come from)",
+    "resolution of the methods the values come from, or within a and b's errors)",
     {{"enum", nlohmann::json::array({"agrees", "differs", "met_by_constraint", "confirmed",
                                      "contradicted", "tie", "no_value"})}});
   v.optional("reason", x.reason, "the docs/defects.md entry that explains a difference");

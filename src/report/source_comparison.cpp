@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "report/number_format.hpp"
 
@@ -72,16 +74,14 @@ std::string cell(const std::optional<double>& v, const std::string& unit) {
   return v ? with_unit(*v, unit) : "-";
 }
 
-}  // namespace
-
-std::optional<double> value_at(const json& results, const std::string& path) {
+// the element of results.json at a value path (nullptr: none)
+const json* node_at(const json& results, const std::string& path) {
   if (path.starts_with("key:")) {
     const std::string name = path.substr(4);
-    if (!results.contains("key_figures")) return std::nullopt;
+    if (!results.contains("key_figures")) return nullptr;
     for (const json& k : results["key_figures"])
-      if (k.is_object() && k.value("name", "") == name && k.contains("value"))
-        return number_of(&k["value"]);
-    return std::nullopt;
+      if (k.is_object() && k.value("name", "") == name && k.contains("value")) return &k["value"];
+    return nullptr;
   }
   const json* at = &results;
   size_t i = 0;
@@ -93,13 +93,129 @@ std::optional<double> value_at(const json& results, const std::string& path) {
     i = end;
     while (at && i < path.size() && path[i] == '[') {
       const size_t close = path.find(']', i);
-      if (close == std::string::npos) return std::nullopt;
+      if (close == std::string::npos) return nullptr;
       at = select(*at, path.substr(i + 1, close - i - 1));
       i = close + 1;
     }
     if (i < path.size() && path[i] == '.') ++i;
   }
-  return number_of(at);
+  return at;
+}
+
+// a claim's term: a number given as text, the number at a value path, or the list of
+// finite numbers there (a point)
+struct Term {
+  std::optional<double> value;
+  std::optional<std::vector<double>> point;
+};
+
+Term term_at(const json& results, const std::string& text) {
+  Term t;
+  if (text.empty()) return t;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end && end != text.c_str() && *end == '\0') {
+    t.value = v;
+    return t;
+  }
+  const json* n = node_at(results, text);
+  if (n && n->is_array() && !n->empty()) {
+    std::vector<double> p;
+    for (const json& x : *n) {
+      const std::optional<double> c = number_of(&x);
+      if (!c) return t;
+      p.push_back(*c);
+    }
+    t.point = std::move(p);
+  } else {
+    t.value = number_of(n);
+  }
+  return t;
+}
+
+double norm(const std::vector<double>& p) {
+  double s = 0;
+  for (double x : p) s += x * x;
+  return std::sqrt(s);
+}
+
+// a claim's values, their errors and its verdict: a tie (equal to tie_rel) is no relation;
+// a gap within the methods' resolution or within the sum of a's and b's errors decides
+// nothing (a tie); `same` holds when a and b (or their points) are that close
+void judge_claim(const cases::SourceClaim& c, const json& results, SourceRowRecord& r) {
+  r.kind = "claim";
+  r.relation = c.relation;
+  const Term a = term_at(results, c.a), b = term_at(results, c.b);
+  r.a = a.value;
+  r.b = b.value;
+  r.a_point = a.point;
+  r.b_point = b.point;
+  if (!c.a_error.empty()) r.a_error = term_at(results, c.a_error).value;
+  if (!c.b_error.empty()) r.b_error = term_at(results, c.b_error).value;
+  r.verdict = "no_value";
+  if ((!c.a_error.empty() && !r.a_error) || (!c.b_error.empty() && !r.b_error)) return;
+  double gap = 0, scale = 0;
+  if (a.point && b.point) {
+    if (a.point->size() != b.point->size() || c.relation != "same") return;
+    std::vector<double> d(a.point->size());
+    for (size_t k = 0; k < d.size(); ++k) d[k] = (*a.point)[k] - (*b.point)[k];
+    gap = norm(d);
+    scale = std::max(norm(*a.point), norm(*b.point));
+    r.distance = gap;
+  } else if (a.value && b.value) {
+    gap = std::abs(*a.value - *b.value);
+    scale = std::max(std::abs(*a.value), std::abs(*b.value));
+  } else {
+    return;
+  }
+  const double error = r.a_error.value_or(0) + r.b_error.value_or(0);
+  const bool tie = gap <= c.tie_rel * scale;
+  if (c.relation == "same") {
+    r.verdict = tie || gap <= error ? "confirmed" : "contradicted";
+    return;
+  }
+  const bool holds = !tie && (c.relation == "less" ? *a.value < *b.value : *a.value > *b.value);
+  const bool unresolved = !tie && gap <= std::max(c.resolution_rel * scale, error);
+  r.verdict = unresolved ? "tie" : holds ? "confirmed" : "contradicted";
+}
+
+// a claim's term as the table shows it: its value or point, with its error where given
+std::string term_cell(const std::optional<double>& v, const std::optional<std::vector<double>>& p,
+                      const std::optional<double>& error, const std::string& unit) {
+  std::string t = "-";
+  if (p) {
+    t = "(";
+    for (size_t k = 0; k < p->size(); ++k) t += (k ? ", " : "") + format_sig((*p)[k], 6);
+    t += ")" + (unit.empty() ? "" : " " + unit);
+  } else if (v) {
+    t = with_unit(*v, unit);
+  }
+  if (error && (v || p)) t += " ± " + format_sig(*error, 2);
+  return t;
+}
+
+// the claim's two cells: its terms, and their gap (a - b, or the points' distance) beside
+// the sum of their errors where the case gives them
+void claim_cells(const SourceRowRecord& r, std::string& terms, std::string& gap) {
+  terms = "a = " + term_cell(r.a, r.a_point, r.a_error, r.unit) +
+          ", b = " + term_cell(r.b, r.b_point, r.b_error, r.unit);
+  if (r.distance) {
+    gap = "distance " + with_unit(*r.distance, r.unit);
+  } else if (r.a && r.b) {
+    const double scale = std::max(std::abs(*r.a), std::abs(*r.b));
+    gap = "a - b = " + format_sig(*r.a - *r.b, 3) +
+          (scale > 0 ? " (" + format_sig(100 * (*r.a - *r.b) / scale, 3) + " %)" : "");
+  }
+  if (!gap.empty() && (r.a_error || r.b_error))
+    gap += "; their errors together " +
+           format_sig(r.a_error.value_or(0) + r.b_error.value_or(0), 2) +
+           (r.unit.empty() ? "" : " " + r.unit);
+}
+
+}  // namespace
+
+std::optional<double> value_at(const json& results, const std::string& path) {
+  return number_of(node_at(results, path));
 }
 
 SourceRecord compare_with_source(const cases::SourceSpec& spec, const json& results) {
@@ -113,24 +229,7 @@ SourceRecord compare_with_source(const cases::SourceSpec& spec, const json& resu
     r.why = it.why;
     if (!it.reason.empty()) r.reason = it.reason;
     if (it.claim) {
-      const cases::SourceClaim& c = *it.claim;
-      r.kind = "claim";
-      r.relation = c.relation;
-      r.a = value_at(results, c.a);
-      char* end = nullptr;
-      const double b = std::strtod(c.b.c_str(), &end);
-      r.b = end && *end == '\0' ? std::optional<double>(b) : value_at(results, c.b);
-      if (!r.a || !r.b) {
-        r.verdict = "no_value";
-      } else {
-        const double scale = std::max(std::abs(*r.a), std::abs(*r.b));
-        const double gap = std::abs(*r.a - *r.b);
-        const bool tie = gap <= c.tie_rel * scale;
-        const bool holds = !tie && (c.relation == "less" ? *r.a < *r.b : *r.a > *r.b);
-        // within the methods' resolution (and not equal) the values decide nothing
-        const bool unresolved = !tie && gap <= c.resolution_rel * scale;
-        r.verdict = unresolved ? "tie" : holds ? "confirmed" : "contradicted";
-      }
+      judge_claim(*it.claim, results, r);
     } else {
       r.kind = "figure";
       r.printed = it.value;
@@ -215,7 +314,10 @@ Section source_section(const SourceRecord& source) {
       "met by constraint, not an agreement; a claim is confirmed when armstudy's values stand in "
       "the relation it states "
       "(a tie, equal to 1e-6, is no relation; within the resolution of the methods the values "
-      "come from, where the source names them, they decide nothing: a tie). A difference is "
+      "come from, where the source names them, or within the sum of the two values' stated "
+      "errors (±), they decide nothing: a tie); a claim that two values or two locations are "
+      "the same is confirmed when they differ, or lie apart, by no more than the sum of their "
+      "errors, and contradicted otherwise. A difference is "
       "armstudy's value at the "
       "source's setting minus the printed one, or at armstudy's optimum where the setting has "
       "no value (an unreachable line), and says which. Every difference names its reason; each is "
@@ -232,13 +334,8 @@ Section source_section(const SourceRecord& source) {
   for (const SourceRowRecord& r : source.rows) {
     std::string at_setting, at_opt, diff;
     if (r.kind == "claim") {
-      at_setting = "a = " + cell(r.a, r.unit) + ", b = " + cell(r.b, r.unit);
+      claim_cells(r, at_setting, diff);
       at_opt = "-";
-      if (r.a && r.b) {
-        const double scale = std::max(std::abs(*r.a), std::abs(*r.b));
-        diff = "a - b = " + format_sig(*r.a - *r.b, 3) +
-               (scale > 0 ? " (" + format_sig(100 * (*r.a - *r.b) / scale, 3) + " %)" : "");
-      }
     } else {
       at_setting = cell(r.at_source_setting, r.unit);
       at_opt = cell(r.at_optimum, r.unit);

@@ -145,6 +145,44 @@ TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
       << a.assumptions.back();
 }
 
+// the binding lines of a two-joint time-optimal result whose joint 1 torque is at its limit
+// at `at` of `n` samples of the exact solver
+std::vector<std::string> torque_binding(int at, int n) {
+  using TO = studies::time_optimal::StudyResults;
+  TO to;
+  to.limits.velocity_rad_s = {5.0, 5.0};
+  to.limits.torque_Nm = {10.0, 10.0};
+  to.configuration = 1;
+  TO::Solver exact;
+  exact.samples = TO::Samples{};
+  for (int i = 0; i < n; ++i) exact.samples->t_s.push_back(0.01 * i);
+  exact.samples->qd_rad_s = {std::vector<double>(n, 1.0), std::vector<double>(n, 1.0)};
+  std::vector<double> tau1(n, 2.0);
+  for (int i = 0; i < at; ++i) tau1[i] = i % 2 ? -10.0 : 10.0;
+  exact.samples->tau_Nm = {tau1, std::vector<double>(n, 1.0)};
+  to.solvers = {exact};
+  return answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{},
+                    registered_answer("time_optimal"))
+      .binding;
+}
+
+TEST(AnswerBox, AFullyTorqueBoundTimeOptimalCaseSaysOneHundredPerCentNeverInExponentForm) {
+  // every sample at the torque limit: "100 %", never format_sig's "1e+02 %"
+  const std::vector<std::string> all = torque_binding(400, 400);
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0], "the torque of joint 1 limit binds at 100 % of the samples (within 1 %)");
+  // all but one of 1000 (99.9 %): whole per cents, and not rounded up to all of them
+  const std::vector<std::string> most = torque_binding(999, 1000);
+  ASSERT_EQ(most.size(), 1u);
+  EXPECT_EQ(most[0], "the torque of joint 1 limit binds at 99 % of the samples (within 1 %)");
+  // a few: two digits
+  const std::vector<std::string> few = torque_binding(3, 1000);
+  ASSERT_EQ(few.size(), 1u);
+  EXPECT_EQ(few[0], "the torque of joint 1 limit binds at 0.3 % of the samples (within 1 %)");
+  for (const auto& lines : {all, most, few})
+    for (const std::string& line : lines) EXPECT_EQ(line.find("e+"), std::string::npos) << line;
+}
+
 AnimationRecord arm_animation() {
   AnimationRecord a;
   a.name = "arm";

@@ -3,7 +3,8 @@
 // The time-optimal study's verdicts on cases kept in tests/studies/cases: a correct plan
 // fails none of its own checks (each check's tolerance is the error its own method
 // allows), and an arm that cannot hold itself against gravity is told so, naming the joint,
-// the point and the torque needed, before any other conflict.
+// the point and the torque needed, before any other conflict; the speed the limits need at a
+// rest point is given in the path's own unit.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -62,6 +63,26 @@ TEST(TimeOptimalVerdicts, AnArmThatCannotHoldItselfIsToldSoFirst) {
   EXPECT_EQ(s.message.rfind(want, 0), 0u) << s.message;
   EXPECT_NE(s.message.find("at s = "), std::string::npos) << s.message;
   EXPECT_NE(s.message.find("holding it needs 13."), std::string::npos) << s.message;
+}
+
+// the exact solver's words when the limits need speed at a rest point: s'^2 in the unit of
+// the path, rad^2/s^2 on a joint-space path and m^2/s^2 on a tip path, never the other
+void expect_rest_speed_in(const std::string& file, const std::string& unit,
+                          const std::string& other) {
+  const Solved s = solve_case_file(file);
+  ASSERT_EQ(s.status, studies::Status::kUnsolvable) << file;
+  const size_t at = s.message.find("the limits need s'^2 >= ");
+  ASSERT_NE(at, std::string::npos) << file << ": " << s.message;
+  const size_t close = s.message.find(')', at);
+  ASSERT_NE(close, std::string::npos) << s.message;
+  const std::string need = s.message.substr(at, close - at);
+  EXPECT_TRUE(need.ends_with(" " + unit + "^2/s^2")) << file << ": " << need;
+  EXPECT_EQ(s.message.find(other + "^2/s^2"), std::string::npos) << file << ": " << s.message;
+}
+
+TEST(TimeOptimalVerdicts, TheSpeedNeededAtARestPointIsInThePathsUnit) {
+  expect_rest_speed_in("time-optimal-start-needs-speed-joint.yaml", "rad", " m");
+  expect_rest_speed_in("time-optimal-start-needs-speed-tip.yaml", "m", "rad");
 }
 
 }  // namespace

@@ -99,6 +99,7 @@ struct StudyResults {
     bool converged = false;
     int evaluations = 0;
     double x_s_error_m = 0, phi_error_deg = 0, energy_error_J = 0;
+    double root_error_m = 0;  ///< root_xy_m's: hypot(x_s_error_m, x_s_m phi_error in rad)
   };
   struct MarginOptimum : Metrics {
     double x_s_m = 0, phi_deg = 0;
@@ -340,6 +341,10 @@ void fields(V& v, StudyResults::Refinement& x) {
     "error of x_s_m: its distance from the minimum of the converged energy (quadratic fit "
     "with its truncation and the quadrature's error; null: not refined or no fit)");
   v("phi_error_deg", x.phi_error_deg, "error of phi_deg, the same");
+  v("root_error_m", x.root_error_m,
+    "error of root_xy_m, the root's distance from where the minimum puts it: "
+    "sqrt(x_s_error_m^2 + (x_s_m phi_error)^2), phi_error in rad, the root (-x_s cos phi, "
+    "x_s sin phi) moving by those two orthogonal steps (null: either is)");
   v("energy_error_J", x.energy_error_J,
     "how far energy_J may lie from the least converged energy: its quadrature error plus "
     "final_tolerance_rel times the energy (null: not refined)");
