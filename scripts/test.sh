@@ -13,12 +13,14 @@ export LP_NUM_THREADS=1
 jobs=$(nproc 2>/dev/null || echo 2)
 sanitizers=${ARMSTUDY_SANITIZERS:-1}
 if [ "$sanitizers" != 0 ]; then
-  # the sanitizer build at the lowest priority while the Release suite runs: it takes the CPU
-  # the tests leave idle (their waits on the Slurm and ssh daemons, Chromium, ffmpeg, the
-  # single-threaded tail) and, when the suite ends, goes on at full speed; the tests keep
-  # their CPU (nice 19 weighs 15 against their 1024)
+  # the sanitizer build beside the Release suite: it fills the CPU the tests leave idle
+  # (their waits on the Slurm and ssh daemons, Chromium, ffmpeg, the single-test tail) and
+  # goes on at full speed when the suite ends. setsid gives it its own session, so that a
+  # failed suite stops the whole build; where the kernel groups the scheduler by session
+  # (autogroup, on in Debian's kernels) that session shares the CPU evenly with the suite's
+  # and nice 19 only ranks the build's own processes; without autogroup the build takes only
+  # what the tests leave. Measured with autogroup: docs/testing.md.
   mkdir -p build-asan
-  # (setsid: its own process group, so that a failed suite stops the whole build)
   ARMSTUDY_SANITIZER_PHASE=build setsid nice -n 19 scripts/test_sanitizers.sh >build-asan/build.log 2>&1 &
   asan_build=$!
   trap 'kill -- "-$asan_build" 2>/dev/null || true' EXIT
