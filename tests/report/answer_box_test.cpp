@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <utility>
+#include <vector>
 
 #include "app/pipeline.hpp"
 #include "report/animation_view.hpp"
@@ -122,20 +124,28 @@ TEST(AnswerBox, AMisspeltKeyIsAnErrorNamingItNotAnEmptyBox) {
   EXPECT_THROW(answer_box(s, CasePage{}, registered_answer("placement")), ResultsError);
 }
 
-TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
+// the answer box of a time-optimal result of two joints (configuration 1) whose exact solver
+// has the samples given: times, and per joint (one row each) the rates and torques
+AnswerBox exact_answer(std::vector<double> velocity_limits, std::vector<double> t,
+                       std::vector<std::vector<double>> qd, std::vector<std::vector<double>> tau) {
   using TO = studies::time_optimal::StudyResults;
   TO to;
-  to.limits.velocity_rad_s = {1.0, 2.0};
+  to.limits.velocity_rad_s = std::move(velocity_limits);
   to.limits.torque_Nm = {10.0, 10.0};
   to.configuration = 1;
   TO::Solver exact;
   exact.samples = TO::Samples{};
-  exact.samples->t_s = {0, 1, 2, 3};
-  exact.samples->qd_rad_s = {{0.5, 1.0, 1.0, 0.2}, {0, 0, 0, 2.0}};  // one row per joint
-  exact.samples->tau_Nm = {{10, 1, 1, 1}, {0, 0, 0, 0}};
+  exact.samples->t_s = std::move(t);
+  exact.samples->qd_rad_s = std::move(qd);
+  exact.samples->tau_Nm = std::move(tau);
   to.solvers = {exact};
-  const AnswerBox a = answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{},
-                                 registered_answer("time_optimal"));
+  return answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{},
+                    registered_answer("time_optimal"));
+}
+
+TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
+  const AnswerBox a = exact_answer({1.0, 2.0}, {0, 1, 2, 3}, {{0.5, 1.0, 1.0, 0.2}, {0, 0, 0, 2.0}},
+                                   {{10, 1, 1, 1}, {0, 0, 0, 0}});
   ASSERT_EQ(a.binding.size(), 3u);
   EXPECT_NE(a.binding[0].find("velocity of joint 1 limit binds at 50 %"), std::string::npos)
       << a.binding[0];
@@ -148,21 +158,13 @@ TEST(AnswerBox, TimeOptimalNamesTheLimitsAtTheirBoundByShareOfSamples) {
 // the binding lines of a two-joint time-optimal result whose joint 1 torque is at its limit
 // at `at` of `n` samples of the exact solver
 std::vector<std::string> torque_binding(int at, int n) {
-  using TO = studies::time_optimal::StudyResults;
-  TO to;
-  to.limits.velocity_rad_s = {5.0, 5.0};
-  to.limits.torque_Nm = {10.0, 10.0};
-  to.configuration = 1;
-  TO::Solver exact;
-  exact.samples = TO::Samples{};
-  for (int i = 0; i < n; ++i) exact.samples->t_s.push_back(0.01 * i);
-  exact.samples->qd_rad_s = {std::vector<double>(n, 1.0), std::vector<double>(n, 1.0)};
+  std::vector<double> t;
+  for (int i = 0; i < n; ++i) t.push_back(0.01 * i);
   std::vector<double> tau1(n, 2.0);
   for (int i = 0; i < at; ++i) tau1[i] = i % 2 ? -10.0 : 10.0;
-  exact.samples->tau_Nm = {tau1, std::vector<double>(n, 1.0)};
-  to.solvers = {exact};
-  return answer_box(results_of("time_optimal", to_json(to), {}, {}), CasePage{},
-                    registered_answer("time_optimal"))
+  return exact_answer({5.0, 5.0}, std::move(t),
+                      {std::vector<double>(n, 1.0), std::vector<double>(n, 1.0)},
+                      {tau1, std::vector<double>(n, 1.0)})
       .binding;
 }
 
