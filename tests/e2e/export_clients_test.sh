@@ -36,7 +36,26 @@ done
 export LP_NUM_THREADS=1
 
 # --- every bundled case ---------------------------------------------------------------------
-"$bin" run --no-render --no-sensitivity --jobs 2 --out "$work/out" "$src"/reports/cases/*.yaml >"$work/run.log" 2>&1 ||
+# the exports do not depend on the answer's grid: the two throws are solved on their first
+# control grid only (their runs on three grids were most of this test's CPU)
+mkdir -p "$work/throws"
+bundled=()
+for case in "$src"/reports/cases/*.yaml; do
+  case $(basename "$case") in
+    throwing*.yaml)
+      copy=$work/throws/$(basename "$case")
+      if grep -q '^  grid:' "$case"; then
+        sed 's/^    refinements: [0-9]* /    refinements: 0 /' "$case" >"$copy"
+      else
+        sed 's/^throwing:$/throwing:\n  grid: {refinements: 0}/' "$case" >"$copy"
+      fi
+      grep -q '^    refinements: 0 \|^  grid: {refinements: 0}$' "$copy" ||
+        fail "$(basename "$case"): its throwing.grid.refinements could not be set to 0"
+      bundled+=("$copy") ;;
+    *) bundled+=("$case") ;;
+  esac
+done
+"$bin" run --no-render --no-sensitivity --jobs 2 --out "$work/out" "${bundled[@]}" >"$work/run.log" 2>&1 ||
   { tail -30 "$work/run.log"; fail "the bundled run"; }
 
 # --- junit.xml ------------------------------------------------------------------------------

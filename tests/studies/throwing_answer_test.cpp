@@ -4,9 +4,9 @@
 // - the bundled case's answer moves by less than 0.5 % when the release angle moves by
 //   1 ulp (-52.5 deg against the code's -7 pi/24) or by 1e-5 deg, the reproducibility the
 //   report states (a single SLSQP start moved 2-70 % under such changes);
-// - a 40 W power limit (a subset of the 60 W problem) is never cheaper than 60 W, beyond that
-//   stated error; nor, on the control grids, 40 W, a 0.022 N contact margin, friction 0.45
-//   or a 0.5 deg release tolerance;
+// - on the control grids (16 and 32 stages) a tighter problem is never cheaper than the
+//   nominal one, beyond that stated error: 40 W (a subset of the 60 W problem), a 0.022 N
+//   contact margin, friction 0.45 or a 0.5 deg release tolerance;
 // - a run cut by its budget, or stopped by a tolerance too loose for the first-order test,
 //   fails its convergence check; a case no throw can meet is not solved and quotes no saving.
 #include <gtest/gtest.h>
@@ -52,21 +52,27 @@ TEST(ThrowingAnswer, ALastDigitChangeOfTheReleaseAngleMovesTheAnswerByLessThanHa
   const double e_5 = answer_energy(s);
   EXPECT_LT(std::abs(e_ulp - e0), kReproducible * e0) << e0 << " J vs " << e_ulp << " J";
   EXPECT_LT(std::abs(e_5 - e0), kReproducible * e0) << e0 << " J vs " << e_5 << " J";
-  // and 40 W, a subset of the 60 W throws, is no cheaper beyond that error
-  ThrowingSpec w40 = bundled();
-  w40.grid.refinements = 0;
-  w40.power_max = 40;
-  const double e40 = answer_energy(w40);
-  EXPECT_GE(e40, e0 * (1 - kReproducible)) << "40 W: " << e40 << " J, 60 W: " << e0 << " J";
+  // (40 W, a subset of the 60 W throws: on the control grids in the test below)
 }
 
 // the bundled answer (on its control grids) against four tighter problems, each a subset of
 // the nominal one: none may come out cheaper (beyond the stated 0.5 %). Before the control
 // grids and the refinement of the best few 16-stage optima, a 0.022 N contact margin
 // answered 4.56 J where the nominal answered 6.29 J.
+//
+// On the case's first two control grids (16 and 32 stages, grid.refinements 1), the nominal
+// and every tighter problem alike: the invariant is a property of the search on the grids it
+// has, and the 64-stage grid would make each of the five solves about twice as dear.
+ThrowingSpec bundled_on_two_grids() {
+  ThrowingSpec s = bundled();
+  s.grid.refinements = 1;
+  return s;
+}
+
 TEST(ThrowingAnswer, ATighterProblemIsNeverCheaperThanTheNominalAnswer) {
-  const double e0 = answer_energy(bundled());
-  ThrowingSpec w40 = bundled(), contact = bundled(), mu = bundled(), release = bundled();
+  const double e0 = answer_energy(bundled_on_two_grids());
+  ThrowingSpec w40 = bundled_on_two_grids(), contact = bundled_on_two_grids(),
+               mu = bundled_on_two_grids(), release = bundled_on_two_grids();
   w40.power_max = 40;
   contact.contact_margin = 0.022;
   mu.friction_coefficient = 0.45;
