@@ -27,13 +27,29 @@ std::string bytes_text(double b) {
   return buf;
 }
 
-std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height) {
+std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height,
+                                    const Resolves& resolves) {
   std::vector<OverBudget> out;
   const std::string raise = "; reduce them, or pass --allow-large to run it anyway";
-  if (d.work > d.work_budget) {
+  const double work = d.work * resolves.factor();
+  if (work > d.work_budget && resolves.keys == 0) {
     out.push_back({false, d.what + " asks for about " + sci(d.work) + " " + d.unit + " (" +
                               d.detail + "), more than the budget of " + sci(d.work_budget) + " " +
                               d.unit + ", set by " + d.keys + raise});
+  } else if (work > d.work_budget) {
+    // each key of `sensitivity:` re-solves the case twice: its list is part of the work
+    const std::string n = std::to_string(resolves.keys);
+    char share[32], factor[32];
+    std::snprintf(share, sizeof share, "%g", resolves.fraction);
+    std::snprintf(factor, sizeof factor, "%.3g", resolves.factor());
+    out.push_back({false, d.what + " with its sensitivity part asks for about " + sci(work) + " " +
+                              d.unit + " (" + sci(d.work) + " to solve: " + d.detail + "; x " +
+                              factor + " for the 2 x " + n + " re-solves of its " + n +
+                              " sensitivity keys, each about " + share +
+                              " of the solve), more than the budget of " + sci(d.work_budget) +
+                              " " + d.unit + ", set by " + d.keys + " and the length of " +
+                              "'sensitivity'; reduce them, list fewer keys, or pass --allow-large "
+                              "to run it anyway"});
   }
   const int strip = std::max(frames, d.strip_frames);
   const double pixels = double(strip) * width * height;

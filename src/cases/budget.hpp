@@ -54,8 +54,19 @@ struct OverBudget {
   std::string message;  ///< names the keys and the estimate
 };
 
-/// The complaints about `d` with frames of width x height px (`frames` per strip); empty
-/// when within budget.
-std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height);
+/// The sensitivity part of a case (`sensitivity:`): each key re-solves the case twice, each
+/// re-solve about `fraction` of the solve's work (app/run_order.hpp measures it), so a case
+/// with `keys` keys asks for its solve's work x (1 + 2 keys fraction). Memory is the solve's:
+/// the re-solves run one after another.
+struct Resolves {
+  size_t keys = 0;
+  double fraction = 0;
+  double factor() const { return 1.0 + 2.0 * double(keys) * fraction; }
+};
+
+/// The complaints about `d` with frames of width x height px (`frames` per strip), its
+/// work counted with the sensitivity part's `resolves`; empty when within budget.
+std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height,
+                                    const Resolves& resolves = {});
 
 }  // namespace armstudy::cases
