@@ -2,7 +2,7 @@
 // Copyright 2026 The armstudy authors
 // An arm's physical sizes are judged when the case is read (cases/physical_bounds.hpp): a
 // link of 1e-100 m validated and then `run` ended with MuJoCo's raw "fromto points too
-// close ...\nObject name = ..." (issue 50). Refused now at the key, in armstudy's words, by
+// close ...\nObject name = ...". Refused now at the key, in armstudy's words, by
 // validate as by run; the bounds' own edges are accepted.
 #include <gtest/gtest.h>
 

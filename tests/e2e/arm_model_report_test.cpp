@@ -3,7 +3,7 @@
 // An arm read from a robot description (`arm: {model: FILE}`): every study that takes one
 // says where its arm and its limits came from, in results.json (`<study>.arm_model`) and on
 // its page, in the same words (report/arm_model_paragraphs.hpp). The placement study said
-// it only in model.xml's comment (issue 51).
+// it only in model.xml's comment.
 #include <gtest/gtest.h>
 
 #include <filesystem>
