@@ -55,17 +55,20 @@ struct OverBudget {
 };
 
 /// The sensitivity part of a case (`sensitivity:`): each key re-solves the case twice, each
-/// re-solve about `fraction` of the solve's work (app/run_order.hpp measures it), so a case
-/// with `keys` keys asks for its solve's work x (1 + 2 keys fraction). Memory is the solve's:
-/// the re-solves run one after another.
+/// re-solve about `fraction` of the solve's work (app/run_order.hpp measures it), so the
+/// part asks for the solve's work x 2 keys fraction. It has a budget of its own, the
+/// study's: a case spends at most its budget on the solve and as much again on the
+/// re-solves. Memory is the solve's: the re-solves run one after another.
 struct Resolves {
   size_t keys = 0;
   double fraction = 0;
-  double factor() const { return 1.0 + 2.0 * double(keys) * fraction; }
+  /// The sensitivity part's work as a share of the solve's.
+  double share() const { return 2.0 * double(keys) * fraction; }
 };
 
-/// The complaints about `d` with frames of width x height px (`frames` per strip), its
-/// work counted with the sensitivity part's `resolves`; empty when within budget.
+/// The complaints about `d` with frames of width x height px (`frames` per strip), and
+/// about its sensitivity part (`resolves`) against a work budget of its own; empty when
+/// within budget.
 std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height,
                                     const Resolves& resolves = {});
 
