@@ -102,6 +102,11 @@ json number_schema(const cases::NumberRule& rule, bool integer) {
   json s = {{"type", integer ? "integer" : "number"}};
   if (rule.sign == cases::NumberRule::Sign::kPositive) s["exclusiveMinimum"] = 0;
   if (rule.sign == cases::NumberRule::Sign::kNonNegative) s["minimum"] = 0;
+  if (rule.or_zero && rule.min && rule.max) {  // 0, or a value in [min, max]
+    s["anyOf"] =
+        json::array({json{{"const", 0}}, json{{"minimum", *rule.min}, {"maximum", *rule.max}}});
+    return s;
+  }
   if (rule.min) s["minimum"] = *rule.min;
   if (rule.max) s["maximum"] = *rule.max;
   return s;
@@ -218,6 +223,8 @@ std::string type_text(const KeyInfo& k) {
 std::string range_text(const KeyInfo& k) {
   if (k.kind != "number" && k.kind != "integer" && k.kind != "numbers") return "";
   const auto& r = k.rule;
+  if (r.or_zero && r.min && r.max)
+    return "0 or [" + cases::format_number(*r.min) + ", " + cases::format_number(*r.max) + "]";
   if (r.min && r.max)
     return "[" + cases::format_number(*r.min) + ", " + cases::format_number(*r.max) + "]";
   if (r.min) return ">= " + cases::format_number(*r.min);

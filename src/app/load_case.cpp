@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "app/pipeline.hpp"
+#include "app/run_order.hpp"
 
 namespace armstudy::app {
 
@@ -34,8 +35,11 @@ LoadedCase load_case_text(const std::string& text, const std::string& path,
 
 namespace {
 
-// the study's estimated work and memory, and the frames, against the budget
-void check_budget(cases::Map& root, const cases::RenderOptions& render) {
+// the study's estimated work (with the sensitivity part's re-solves) and memory, and the
+// frames, against the budget
+void check_budget(cases::Map& root, const cases::CaseInfo& info) {
+  const cases::RenderOptions& render = info.render;
+  const cases::Resolves resolves{info.sensitivity.items.size(), kSensitivityResolveFraction};
   cases::Diagnostics& diag = root.diag();
   std::vector<cases::Demand> demands = diag.demands();
   if (demands.empty()) {
@@ -46,7 +50,7 @@ void check_budget(cases::Map& root, const cases::RenderOptions& render) {
   }
   for (const cases::Demand& d : demands) {
     for (const cases::OverBudget& o :
-         cases::over_budget(d, render.frames, render.frame.width, render.frame.height)) {
+         cases::over_budget(d, render.frames, render.frame.width, render.frame.height, resolves)) {
       if (o.frames && root.has("render"))
         root.error("render", o.message);
       else
@@ -124,9 +128,10 @@ LoadedCase load_root(const std::optional<YAML::Node>& root_node, cases::Diagnost
     out.entry = &*it;
   }
   if (study) root.finish();  // with no known study, its keys cannot be judged
-  if (diag.empty() && !options.allow_large) check_budget(root, out.info.render);
+  if (diag.empty() && !options.allow_large) check_budget(root, out.info);
   diag.throw_if_any();
   out.demands = diag.demands();
+  out.allow_large = options.allow_large;
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
+#include "app/stored_series.hpp"
 #include "app/study_checks.hpp"
 #include "app/study_entry.hpp"
 #include "cases/pendulum_case.hpp"
@@ -72,8 +73,12 @@ class PendulumRun final : public TypedStudyRun<studies::PendulumSpec, studies::P
         "the values used are in the parameters' tray entries"};
     s.integrator = {r.integrator,     r.rtol,           r.atol,
                     r.steps_accepted, r.steps_rejected, r.evaluations};
+    // a long integration as a subsample (app/stored_series.hpp, as the time-optimal
+    // study's nodes); the energy check and the snapshots read every step
     auto& se = s.series;
-    for (size_t k = 0; k < r.t.size(); ++k) {
+    const int stride = stored_stride(r.t.size());
+    se.stride = stride;
+    for (const size_t k : stored_indices(r.t.size(), stride)) {
       se.t_s.push_back(r.t[k]);
       se.q_rad.push_back(vec(r.q[k]));
       se.qd_rad_s.push_back(vec(r.qd[k]));

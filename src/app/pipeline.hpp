@@ -181,6 +181,8 @@ struct LoadedCase {
   const StudyEntry* entry = nullptr;  ///< the study's registry record
   /// The work and memory the study's loader estimated from its keys (cases/budget.hpp).
   std::vector<cases::Demand> demands;
+  /// Loaded with LoadOptions::allow_large: its sensitivity part's re-solves are too.
+  bool allow_large = false;
 };
 
 /// How a case is judged when it is loaded.

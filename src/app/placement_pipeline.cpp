@@ -536,6 +536,9 @@ Results PlacementRun::study_results() const {
   }
   j.solve_seconds = r.seconds;
   j.samples_evaluated = r.samples_evaluated;
+  // an arm read from a URDF or MJCF: its plane and where its limits came from (as the
+  // time-optimal study's arm_model)
+  if (spec_.arm_origin.from_model()) j.arm_model = spec_.arm_origin.lines();
   return j;
 }
 

@@ -71,8 +71,10 @@ report::SensitivityStepRecord solve_step(const LoadedCase& nominal, const std::s
   report::SensitivityStepRecord s;
   s.key_value = values;
   try {
+    // judged against the budget as the case was (a step of a key that sets the size, a
+    // grid or a step count, may take it beyond: then the step is "invalid", saying so)
     LoadedCase c = load_case_text(case_text_with(nominal.info.yaml, key, values), nominal.info.path,
-                                  LoadOptions{true});
+                                  LoadOptions{nominal.allow_large});
     c.run->warm_start(*nominal.run);
     const studies::Status st = c.run->solve({});
     s.warm = c.run->warm_started();

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "cases/input_file.hpp"
+#include "cases/physical_bounds.hpp"
 
 namespace armstudy::cases {
 
@@ -15,17 +16,18 @@ namespace {
 // one entry of arm.links: length, mass, centre of mass, inertia ('rod' or a number), joint
 core::Link read_arm_link(Map& lm) {
   core::Link l;
-  l.length = lm.required_number("length", NumberRule::positive("m"));
+  // physical sizes within cases/physical_bounds.hpp: what MuJoCo's model of the arm takes
+  l.length = lm.required_number("length", link_length_rule());
   // mass 0 is allowed only for a link that carries point masses (checked below)
-  l.mass = lm.required_number("mass", NumberRule::non_negative("kg"));
-  l.com = lm.number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, NumberRule::any("m"));
-  l.com_lateral = lm.number_or("com_lateral", 0.0, NumberRule::any("m"));
+  l.mass = lm.required_number("mass", mass_or_zero_rule());
+  l.com = lm.number_or("com", std::isfinite(l.length) ? l.length / 2 : 0.0, offset_rule());
+  l.com_lateral = lm.number_or("com_lateral", 0.0, offset_rule());
   const YAML::Node in = lm.get("inertia");
   if (!in.IsDefined() || (in.IsScalar() && in.Scalar() == "rod")) {
     l.inertia = core::uniform_rod_inertia(l.mass, l.length);
   } else {
-    const auto v = read_number(in, lm.diag(), "'" + lm.path_of("inertia") + "' (or 'rod')",
-                               NumberRule::non_negative("kg m^2"));
+    const auto v =
+        read_number(in, lm.diag(), "'" + lm.path_of("inertia") + "' (or 'rod')", inertia_rule());
     l.inertia = v ? *v : 0.0;
   }
   const auto joint = lm.choice("joint", {"active", "passive"});
@@ -49,9 +51,9 @@ void read_point_masses(Map& arm, int n, core::PlanarChain& chain) {
                             "; should be in [1, " + std::to_string(std::max(1, n)) + "]");
       p.link = 0;
     }
-    p.x = pm->required_number("at", NumberRule::any("m"));
-    p.y = pm->number_or("lateral", 0.0, NumberRule::any("m"));
-    p.mass = pm->required_number("mass", NumberRule::positive("kg"));
+    p.x = pm->required_number("at", offset_rule());
+    p.y = pm->number_or("lateral", 0.0, offset_rule());
+    p.mass = pm->required_number("mass", mass_rule());
     pm->finish();
     chain.point_masses.push_back(p);
   }
@@ -112,6 +114,10 @@ core::PlanarChain load_arm_model(Map& root, Map& arm, const core::PlanarChain& f
                              std::to_string(links_required) + " links for this study");
       return fallback;
     }
+    // the model's sizes within the bounds a case's own arm has (cases/physical_bounds.hpp)
+    const std::vector<std::string> sizes = chain_size_problems(a.chain, a.joint_names);
+    for (const std::string& size : sizes) arm.error("model", where + ": " + size);
+    if (!sizes.empty()) return fallback;
     a.path = *file;
     core::PlanarChain chain = a.chain;
     if (imported) *imported = std::move(a);
@@ -139,7 +145,7 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
   if (!links) {
     if (!arm->has("links"))
       arm->error_here("missing required key 'arm.links'; expected a list of links");
-    arm->number("payload", NumberRule::non_negative("kg"));
+    arm->number("payload", mass_or_zero_rule());
     arm->seq("point_masses");
     arm->finish();
     return chain;
@@ -162,7 +168,7 @@ core::PlanarChain load_arm(Map& root, const core::PlanarChain& fallback, int lin
     chain.links.push_back(lm ? read_arm_link(*lm) : core::Link{});
   }
   const int n = static_cast<int>(chain.links.size());
-  const double payload = arm->number_or("payload", 0.0, NumberRule::non_negative("kg"));
+  const double payload = arm->number_or("payload", 0.0, mass_or_zero_rule());
   read_point_masses(*arm, n, chain);
   if (std::isfinite(payload) && payload > 0 && n > 0)
     chain.point_masses.push_back({n - 1, chain.links.back().length, 0.0, payload});

@@ -27,13 +27,31 @@ std::string bytes_text(double b) {
   return buf;
 }
 
-std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height) {
+std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height,
+                                    const Resolves& resolves) {
   std::vector<OverBudget> out;
   const std::string raise = "; reduce them, or pass --allow-large to run it anyway";
+  const double resolve_work = d.work * resolves.share();
   if (d.work > d.work_budget) {
     out.push_back({false, d.what + " asks for about " + sci(d.work) + " " + d.unit + " (" +
                               d.detail + "), more than the budget of " + sci(d.work_budget) + " " +
                               d.unit + ", set by " + d.keys + raise});
+  } else if (resolve_work > d.work_budget) {
+    // each key of `sensitivity:` re-solves the case twice: the part has the study's budget
+    const std::string n = std::to_string(resolves.keys);
+    char share[32], factor[32];
+    std::snprintf(share, sizeof share, "%g", resolves.fraction);
+    std::snprintf(factor, sizeof factor, "%.3g", resolves.share());
+    out.push_back({false, "the sensitivity part of " + d.what + " asks for about " +
+                              sci(resolve_work) + " " + d.unit + " (the 2 x " + n +
+                              " re-solves of its " + n + " sensitivity keys, each about " + share +
+                              " of the solve's " + sci(d.work) + ": x " + factor +
+                              "), more than the budget of " + sci(d.work_budget) + " " + d.unit +
+                              " it has besides the solve's, set by the length of 'sensitivity' "
+                              "and " +
+                              d.keys +
+                              "; list fewer keys, reduce them, or pass "
+                              "--allow-large to run it anyway"});
   }
   const int strip = std::max(frames, d.strip_frames);
   const double pixels = double(strip) * width * height;

@@ -54,8 +54,22 @@ struct OverBudget {
   std::string message;  ///< names the keys and the estimate
 };
 
-/// The complaints about `d` with frames of width x height px (`frames` per strip); empty
-/// when within budget.
-std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height);
+/// The sensitivity part of a case (`sensitivity:`): each key re-solves the case twice, each
+/// re-solve about `fraction` of the solve's work (app/run_order.hpp measures it), so the
+/// part asks for the solve's work x 2 keys fraction. It has a budget of its own, the
+/// study's: a case spends at most its budget on the solve and as much again on the
+/// re-solves. Memory is the solve's: the re-solves run one after another.
+struct Resolves {
+  size_t keys = 0;
+  double fraction = 0;
+  /// The sensitivity part's work as a share of the solve's.
+  double share() const { return 2.0 * double(keys) * fraction; }
+};
+
+/// The complaints about `d` with frames of width x height px (`frames` per strip), and
+/// about its sensitivity part (`resolves`) against a work budget of its own; empty when
+/// within budget.
+std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int height,
+                                    const Resolves& resolves = {});
 
 }  // namespace armstudy::cases

@@ -99,6 +99,11 @@ SensitivitySpec read_sensitivity(Map& root) {
   if (!root.has("sensitivity")) return out;
   auto list = root.seq("sensitivity");
   if (!list) return out;
+  if (list->size() > kMaxSensitivityKeys)  // said once; every entry is still read (linear)
+    root.error("sensitivity", "'sensitivity' has " + std::to_string(list->size()) +
+                                  " entries; expected at most " +
+                                  std::to_string(kMaxSensitivityKeys) +
+                                  " (each key is two re-solves of the case)");
   struct Repeats {
     YAML::Mark first;
     int count = 0;

@@ -16,6 +16,7 @@
 /// axis path; it must name a number (or a list of numbers, varied together by a relative
 /// step) that the case file itself writes.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,10 @@ class Map;
 
 /// The default relative step of a key given without one.
 inline constexpr double kDefaultRelativeStep = 0.1;
+
+/// The most keys a `sensitivity:` list may have: each is two re-solves of the case (and the
+/// re-solves count in the case's work budget, docs/budgets.md).
+inline constexpr size_t kMaxSensitivityKeys = 100;
 
 /// One key to vary.
 struct SensitivityItem {

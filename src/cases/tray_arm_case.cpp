@@ -4,6 +4,7 @@
 
 #include "cases/tray_arm_case.hpp"
 
+#include "cases/physical_bounds.hpp"
 #include "core/types.hpp"
 
 namespace armstudy::cases {
@@ -19,10 +20,11 @@ void read_link(Map& section, std::string_view key, double& length, double& mass,
                double& inertia) {
   auto m = section.map(key);
   if (!m) return;
-  tray_num(*m, "length_m", length, NumberRule::positive("m"));
-  tray_num(*m, "mass_kg", mass, NumberRule::non_negative("kg"));
-  tray_num(*m, "com_m", com, NumberRule::any("m"));
-  tray_num(*m, "inertia_kg_m2", inertia, NumberRule::non_negative("kg m^2"));
+  // physical sizes within cases/physical_bounds.hpp, as a case's own arm
+  tray_num(*m, "length_m", length, link_length_rule());
+  tray_num(*m, "mass_kg", mass, mass_or_zero_rule());
+  tray_num(*m, "com_m", com, offset_rule());
+  tray_num(*m, "inertia_kg_m2", inertia, inertia_rule());
   m->finish();
 }
 
@@ -33,11 +35,11 @@ void read_tray_arm(Map& section, studies::TrayArmParams& a, double* width) {
   read_link(section, "link1", a.l1, a.m1, a.r1, a.I1);
   read_link(section, "link2", a.l2, a.m2, a.r2, a.I2);
   if (auto t = section.map("tray")) {
-    tray_num(*t, "circle_offset_m", a.circle_offset, NumberRule::positive("m"));
-    tray_num(*t, "mass_kg", a.m3, NumberRule::non_negative("kg"));
-    tray_num(*t, "com_m", a.r3, NumberRule::any("m"));
-    tray_num(*t, "com_lateral_m", a.r3_lateral, NumberRule::any("m"));
-    tray_num(*t, "inertia_kg_m2", a.I3, NumberRule::non_negative("kg m^2"));
+    tray_num(*t, "circle_offset_m", a.circle_offset, link_length_rule());
+    tray_num(*t, "mass_kg", a.m3, mass_or_zero_rule());
+    tray_num(*t, "com_m", a.r3, offset_rule());
+    tray_num(*t, "com_lateral_m", a.r3_lateral, offset_rule());
+    tray_num(*t, "inertia_kg_m2", a.I3, inertia_rule());
     if (width) {
       if (const auto w = t->number("width_deg", NumberRule::range(1.0, 360.0, "deg")))
         *width = *w * core::kDeg;
@@ -46,14 +48,13 @@ void read_tray_arm(Map& section, studies::TrayArmParams& a, double* width) {
   }
   bool solid_sphere = true;
   if (auto b = section.map("ball")) {
-    tray_num(*b, "mass_kg", a.m4, NumberRule::positive("kg"));
-    tray_num(*b, "circle_radius_m", a.r4, NumberRule::positive("m"));
-    tray_num(*b, "radius_m", a.rb, NumberRule::positive("m"));
+    tray_num(*b, "mass_kg", a.m4, mass_rule());
+    tray_num(*b, "circle_radius_m", a.r4, link_length_rule());
+    tray_num(*b, "radius_m", a.rb, link_length_rule());
     const YAML::Node in = b->get("inertia");
     if (in.IsDefined() && !(in.IsScalar() && in.Scalar() == "solid_sphere")) {
-      const auto v =
-          read_number(in, b->diag(), "'" + b->path_of("inertia") + "' (or 'solid_sphere')",
-                      NumberRule::non_negative("kg m^2"));
+      const auto v = read_number(
+          in, b->diag(), "'" + b->path_of("inertia") + "' (or 'solid_sphere')", inertia_rule());
       if (v) {
         a.Ib = *v;
         solid_sphere = false;

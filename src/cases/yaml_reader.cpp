@@ -92,6 +92,10 @@ std::string violation(double v, const NumberRule& rule) {
   const std::string u = rule.unit.empty() ? "" : " " + rule.unit;
   if (rule.sign == NumberRule::Sign::kPositive && !(v > 0)) return "should be > 0" + u;
   if (rule.sign == NumberRule::Sign::kNonNegative && !(v >= 0)) return "should be >= 0" + u;
+  if (rule.or_zero && v == 0) return "";
+  if (rule.or_zero && rule.min && rule.max && (v < *rule.min || v > *rule.max))
+    return "should be 0 or in [" + exact_number(*rule.min) + ", " + exact_number(*rule.max) + "]" +
+           u;
   if (rule.min && v < *rule.min) {
     if (rule.max)
       return "should be in [" + exact_number(*rule.min) + ", " + exact_number(*rule.max) + "]" + u;

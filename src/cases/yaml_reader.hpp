@@ -69,6 +69,7 @@ struct NumberRule {
   std::optional<double> min;  ///< inclusive
   std::optional<double> max;  ///< inclusive
   std::string unit;
+  bool or_zero = false;  ///< 0 is allowed besides [min, max] (a mass: none, or a real one)
 
   static NumberRule positive(std::string unit) {
     return {Sign::kPositive, {}, {}, std::move(unit)};
@@ -80,6 +81,10 @@ struct NumberRule {
     return {Sign::kAny, lo, hi, std::move(unit)};
   }
   static NumberRule any(std::string unit) { return {Sign::kAny, {}, {}, std::move(unit)}; }
+  /// 0, or a value in [lo, hi]
+  static NumberRule zero_or_range(double lo, double hi, std::string unit) {
+    return {Sign::kAny, lo, hi, std::move(unit), true};
+  }
 };
 
 /// A number as messages show it: 6 significant digits, C locale ("0.4", "1e-06").

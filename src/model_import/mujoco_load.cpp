@@ -6,12 +6,13 @@
 #include <filesystem>
 
 #include "model_import/imported_arm.hpp"
+#include "model_import/mujoco_message.hpp"
 
 namespace armstudy::model_import {
 namespace {
 // MuJoCo 2.2's default error handler exits the process: a thrown error instead (the scene
 // library installs its own, which throws as well, once it is used)
-void throw_error(const char* msg) { throw ImportError(std::string("MuJoCo error: ") + msg); }
+void throw_error(const char* msg) { throw ImportError("MuJoCo error: " + mujoco_message(msg)); }
 }  // namespace
 
 ModelPtr load_mujoco_model(const std::string& path, const std::string& text) {
@@ -33,11 +34,8 @@ ModelPtr load_mujoco_model(const std::string& path, const std::string& text) {
   }
   mj_deleteVFS(vfs.get());
   if (!m) {
-    std::string why = err;  // MuJoCo's message spans lines: one line in a case error
-    for (char& c : why)
-      if (c == '\n') c = ' ';
-    while (!why.empty() && why.back() == ' ') why.pop_back();
-    throw ImportError(path + ": MuJoCo could not load the model: " + why);
+    // MuJoCo's message spans lines: one line in a case error
+    throw ImportError(path + ": MuJoCo could not load the model: " + mujoco_message(err));
   }
   return ModelPtr(m);
 }

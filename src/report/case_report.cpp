@@ -23,6 +23,7 @@
 #include "report/sensitivity_section.hpp"
 #include "report/source_comparison.hpp"
 #include "report/study_sections.hpp"
+#include "report/templates.hpp"
 
 namespace armstudy::report {
 namespace fs = std::filesystem;
@@ -32,10 +33,6 @@ namespace {
 
 // the largest results.json the run's index reads (as merge and diff, docs/budgets.md)
 constexpr std::uintmax_t kMaxIndexedResultsBytes = std::uintmax_t(16) << 20;
-// the templates are a few kB each
-constexpr std::size_t kMaxTemplateBytes = std::size_t(1) << 20;
-constexpr const char* kTemplateNames[] = {"case.html", "index.html", "report.css"};
-
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + p.string());
@@ -44,37 +41,10 @@ std::string read_text(const fs::path& p) {
   return ss.str();
 }
 
-// a template, read as every input is (cases/input_file.hpp): a regular file of at most
-// kMaxTemplateBytes, never a FIFO or a device that would block or never end
-std::string read_template(const fs::path& p) {
-  return cases::read_input_file(p.string(), {kMaxTemplateBytes, "template file", true});
-}
-
 // through a temporary file, removed on failure; the error says why (disk full, ...)
 void write_text(const fs::path& p, const std::string& text) { sys::write_file_atomic(p, text); }
 
 }  // namespace
-
-void check_templates() {
-  const fs::path dir = template_dir();
-  for (const char* name : kTemplateNames) {
-    std::string text;
-    try {
-      text = read_template(dir / name);
-    } catch (const cases::InputFileError& e) {
-      throw cases::InputFileError(std::string("the report template ") + e.what() +
-                                      " (the folder is $ARMSTUDY_TEMPLATE_DIR, or the installed "
-                                      "share/armstudy/templates)",
-                                  e.runtime());
-    }
-    if (std::string(name).ends_with(".html")) {
-      mus::mustache tmpl{text};
-      if (!tmpl.is_valid())
-        throw cases::InputFileError(
-            "the report template " + (dir / name).string() + ": " + tmpl.error_message(), false);
-    }
-  }
-}
 
 namespace {
 
@@ -460,20 +430,6 @@ mus::data page_data(const CasePage& page, const cases::CaseInfo& info) {
 }
 
 }  // namespace
-
-fs::path template_dir() {
-  if (const char* env = std::getenv("ARMSTUDY_TEMPLATE_DIR"); env && *env) return env;
-  // installed: <prefix>/bin/armstudy reads <prefix>/share/armstudy/templates; a program of
-  // the build tree (armstudy, the tests) reads the source tree's templates/
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  const fs::path installed = self.parent_path().parent_path() / "share" / "armstudy" / "templates";
-#if defined(ARMSTUDY_BUILD_TREE) && defined(ARMSTUDY_TEMPLATE_DIR)
-  const std::string build = ARMSTUDY_BUILD_TREE "/";
-  if (ec || self.string().rfind(build, 0) == 0) return ARMSTUDY_TEMPLATE_DIR;
-#endif
-  return installed;
-}
 
 std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord& record) {
   // the study's own choice, results.json "key_figures": [{name, value, unit, label}]

@@ -17,6 +17,7 @@
 
 #include "cases/case_info.hpp"
 #include "report/answer_box.hpp"
+#include "report/templates.hpp"  // template_dir, check_templates
 
 namespace armstudy::report {
 
@@ -80,17 +81,6 @@ int write_index(const std::filesystem::path& out_dir, const std::vector<IndexStu
 
 /// Key figures of a case for the index and the page header (label, value with unit).
 std::vector<std::pair<std::string, std::string>> key_figures(const ResultsRecord& record);
-
-/// The folder holding the templates: $ARMSTUDY_TEMPLATE_DIR if set; else, for a program of
-/// the build tree, the source tree's templates/ (compiled in); else, installed,
-/// <prefix>/share/armstudy/templates beside the program's <prefix>/bin (from /proc/self/exe).
-std::filesystem::path template_dir();
-
-/// Reads every template of template_dir() as every input is read (a regular file of at most
-/// 1 MiB, never a FIFO or a device) and parses the pages' templates, so that a run learns
-/// before it solves anything that it could not write its pages. @throws
-/// cases::InputFileError naming the template and the reason (runtime() for an I/O error).
-void check_templates();
 
 /// Chromium could not be found or did not print.
 class PdfError : public std::runtime_error {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/types.hpp"
+#include "report/arm_model_paragraphs.hpp"
 #include "report/number_format.hpp"
 #include "report/placement_page.hpp"
 #include "report/replay_section.hpp"
@@ -165,6 +166,7 @@ Section task_section(const PS& pl) {
   }
   t.narrow = true;
   s.table(std::move(t));
+  arm_model_paragraphs(pl.arm_model, s);
   if (pl.geometry_counts) {
     const auto& c = *pl.geometry_counts;
     Table ct;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "report/arm_model_paragraphs.hpp"
 #include "report/number_format.hpp"
 #include "report/replay_section.hpp"
 #include "report/results_fields.hpp"
@@ -77,14 +78,7 @@ Section method_section(const Results_& to) {
       "The comparison that matters is between the solvers: the exact solver is never slower "
       "than DP or Complex on the same problem.");
   method.table(json_table(to_json(limits), "Limits used (per joint)."));
-  if (to.arm_model && !to.arm_model->empty()) {
-    // an arm read from a URDF or MJCF: its plane, and where each limit came from
-    method.paragraph("The " + (*to.arm_model)[0] + ".");
-    std::string from = "Where each limit came from: ";
-    for (size_t i = 1; i < to.arm_model->size(); ++i)
-      from += (*to.arm_model)[i] + (i + 1 < to.arm_model->size() ? "; " : ".");
-    if (to.arm_model->size() > 1) method.paragraph(from);
-  }
+  arm_model_paragraphs(to.arm_model, method);
   return method;
 }
 

@@ -5,13 +5,16 @@
 #include <cstring>
 #include <mutex>
 
+#include "model_import/mujoco_message.hpp"
 #include "scene/scene_error.hpp"
 
 namespace armstudy::scene {
 namespace {
 std::mutex g_warn_mu;
 std::string g_warnings;
-void on_error(const char* msg) { throw SceneError(std::string("MuJoCo error: ") + msg); }
+void on_error(const char* msg) {
+  throw SceneError("MuJoCo error: " + model_import::mujoco_message(msg));
+}
 void on_warning(const char* msg) {
   std::lock_guard<std::mutex> lock(g_warn_mu);
   g_warnings += std::string(msg) + "\n";
@@ -45,7 +48,9 @@ MujocoModel::MujocoModel(const std::string& mjcf, const std::string& source) {
   char err[1000] = "";
   mjModel* m = mj_loadXML(name, vfs.get(), err, sizeof err);
   mj_deleteVFS(vfs.get());
-  if (!m) throw ModelError(source + ": MuJoCo could not load the model: " + err);
+  if (!m)
+    throw ModelError(source +
+                     ": MuJoCo could not load the model: " + model_import::mujoco_message(err));
   model_.reset(m);
   data_.reset(mj_makeData(m));
   if (!data_) throw SceneError(source + ": MuJoCo could not allocate mjData");
@@ -55,7 +60,9 @@ MujocoModel MujocoModel::from_file(const std::string& path) {
   install_mujoco_handlers();
   char err[1000] = "";
   mjModel* m = mj_loadXML(path.c_str(), nullptr, err, sizeof err);
-  if (!m) throw ModelError(path + ": MuJoCo could not load the model: " + err);
+  if (!m)
+    throw ModelError(path +
+                     ": MuJoCo could not load the model: " + model_import::mujoco_message(err));
   MujocoModel out;
   out.model_.reset(m);
   out.data_.reset(mj_makeData(m));

@@ -42,6 +42,7 @@ void replay(const std::string& folder, size_t at_least) {
     const std::string input = read(f);
     EXPECT_EQ(armstudy::fuzz::case_and_sweep_loaders(input), "");
     EXPECT_EQ(armstudy::fuzz::results_and_tolerances_readers(input), "");
+    EXPECT_EQ(armstudy::fuzz::template_folder_reader(input), "");
   }
 }
 
@@ -51,6 +52,12 @@ TEST(FuzzCorpus, EveryInputThatEverCrashedAReaderIsLoadedOrRefusedCleanly) {
 TEST(FuzzCorpus, EveryBadCaseFileIsRefusedCleanlyByEveryReader) { replay("tests/cases/bad", 30); }
 TEST(FuzzCorpus, EverySeedResultsAndTolerancesFileIsReadOrRefusedCleanly) {
   replay("tests/fuzz/seeds", 4);
+}
+// the report templates (ARMSTUDY_TEMPLATE_DIR), bundled and broken: each is read or refused
+// with a message, and one read renders
+TEST(FuzzCorpus, EveryTemplateBundledOrBrokenIsReadOrRefusedCleanly) {
+  replay("templates", 3);
+  replay("tests/fuzz/templates", 3);
 }
 TEST(FuzzCorpus, EveryBundledCaseAndSweepIsReadOrRefusedCleanly) {
   replay("reports/cases", 10);

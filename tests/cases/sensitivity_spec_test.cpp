@@ -51,15 +51,39 @@ TEST(SensitivitySpec, AKeyListedFourTimesIsOneMessageAtItsSecondEntry) {
 }
 
 // every pair of 150,000 entries was compared: 20,000 took 117 s, 150,000 hours. 4,000
-// entries, repeats of two keys, are read here in linear time (0.2 s) with two messages
+// entries, repeats of two keys, are read here in linear time (0.2 s) with two messages,
+// beside the one that says the list is longer than a run would re-solve
 TEST(SensitivitySpec, ALongListOfRepeatsIsReadInLinearTimeWithOneMessagePerKey) {
   std::string yaml = std::string(kSensitivityCase) + "sensitivity:\n";
   for (int k = 0; k < 2000; ++k)
     yaml += "  - time_optimal.velocity_limit_rad_s\n  - time_optimal.torque_limit_Nm\n";
   const SensitivityLoad l = load_sensitivity(yaml);
-  ASSERT_EQ(l.errors.size(), 2u);
-  EXPECT_NE(l.errors[0].find("is listed 2000 times"), std::string::npos) << l.errors[0];
+  ASSERT_EQ(l.errors.size(), 3u) << ::testing::PrintToString(l.errors);
+  EXPECT_NE(l.errors[0].find("has 4000 entries; expected at most 100"), std::string::npos)
+      << l.errors[0];
   EXPECT_NE(l.errors[1].find("is listed 2000 times"), std::string::npos) << l.errors[1];
+  EXPECT_NE(l.errors[2].find("is listed 2000 times"), std::string::npos) << l.errors[2];
+}
+
+// each key is two re-solves of the case: a list of 150,000 distinct keys (a long path's
+// points, each a key) validated and then ran for days. 100 keys are the most a case lists.
+TEST(SensitivitySpec, AListOfMoreThanAHundredKeysIsRefusedOnce) {
+  std::string yaml = "time_optimal:\n  path:\n    points_m:\n";
+  for (int k = 0; k < 101; ++k) yaml += "      - [0.3, " + std::to_string(0.1 + 0.001 * k) + "]\n";
+  std::string hundred = yaml + "sensitivity:\n", more = hundred;
+  for (int k = 0; k < 101; ++k) {
+    const std::string entry = "  - time_optimal.path.points_m[" + std::to_string(k + 1) + "]\n";
+    if (k < 100) hundred += entry;
+    more += entry;
+  }
+  const SensitivityLoad ok = load_sensitivity(hundred);
+  EXPECT_TRUE(ok.errors.empty()) << ::testing::PrintToString(ok.errors);
+  EXPECT_EQ(ok.spec.items.size(), 100u);
+  const SensitivityLoad l = load_sensitivity(more);
+  ASSERT_EQ(l.errors.size(), 1u) << ::testing::PrintToString(l.errors);
+  EXPECT_EQ(l.errors[0].substr(l.errors[0].find(": ") + 2),
+            "'sensitivity' has 101 entries; expected at most 100 (each key is two re-solves of "
+            "the case)");
 }
 
 // the documented form arm.links[2].length was refused with "'arm.links' is a mapping;

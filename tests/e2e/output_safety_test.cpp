@@ -366,6 +366,34 @@ TEST(OutputSafety, AValidCaseAtItsLargestGridWritesAResultsJsonThatRunAndMergeRe
   fs::remove_all(d);
 }
 
+// The pendulum wrote every output sample: pendulum.sample_s 1e-4 over the documented 60 s
+// is 600,001 samples of 19 numbers, beyond the 16 MiB armstudy reads back. Its series is
+// stored as the time-optimal study's are (app/stored_series.hpp): at most 2001 samples,
+// every stride-th and the last, the stride written beside them.
+TEST(OutputSafety, APendulumSeriesIsStoredAsAtMost2001SamplesWithItsStride) {
+  const fs::path d = fresh_dir("long_pendulum");
+  const fs::path c = d / "long-pendulum.yaml";
+  std::ofstream(c) << "study: pendulum\nname: long-pendulum\n"
+                      "pendulum: {duration_s: 3.0, sample_s: 1.0e-4}\n";
+  const fs::path out = d / "out";
+  const CmdRun r =
+      run_cli("run --no-render --no-sensitivity --out " + out.string() + " " + c.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(slurp(out / "long-pendulum/results.json"));
+  const auto& series = j["pendulum"]["series"];
+  const int stride = series["stride"].get<int>();
+  EXPECT_GT(stride, 1);
+  EXPECT_LE(series["t_s"].size(), 2001u);
+  EXPECT_GE(series["t_s"].size(), 1500u) << "the stride keeps close to 2001 of 30,001 samples";
+  for (const char* key : {"q_rad", "qd_rad_s", "kinetic_J", "potential_J", "total_J", "ball_xy_m",
+                          "circle_centre_xy_m"})
+    EXPECT_EQ(series[key].size(), series["t_s"].size()) << key;
+  EXPECT_GE(series["t_s"][1].get<double>(), (stride - 1) * 1e-4) << "every stride-th sample";
+  EXPECT_DOUBLE_EQ(series["t_s"].back().get<double>(), 3.0) << "the last sample is kept";
+  EXPECT_EQ(j["pendulum"]["snapshots"].size(), 24u) << "every snapshot, from every sample";
+  fs::remove_all(d);
+}
+
 // a user's .armstudy-cache (no lock file, or one of its own) was removed as a killed run's
 // scratch folder: only names armstudy gives (.armstudy-<host>-<pid>-<8 hex>) with its lock
 // file are, or such a folder left empty by a kill before its lock file was made

@@ -4,15 +4,22 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <vector>
 
 #include "app/pipeline.hpp"
 #include "cases/case_error.hpp"
+#include "cases/input_file.hpp"
 #include "cli/diff_tolerances.hpp"
 #include "cli/merge.hpp"
 #include "cli/sweep.hpp"
+#include "report/templates.hpp"
+
+#include <kainjow/mustache.hpp>
 
 namespace armstudy::fuzz {
 namespace {
@@ -27,7 +34,10 @@ const char* kSweep =
 // this process's folder for the files the readers take by path, removed at exit
 struct WorkDir {
   fs::path path = fs::temp_directory_path() / ("armstudy-fuzz-" + std::to_string(getpid()));
-  WorkDir() { fs::create_directories(path / "run" / "case-a"); }
+  WorkDir() {
+    fs::create_directories(path / "run" / "case-a");
+    fs::create_directories(path / "templates");
+  }
   ~WorkDir() {
     std::error_code ec;
     fs::remove_all(path, ec);
@@ -56,6 +66,26 @@ std::string only_case_errors(const char* what, Load load) {
   }
   return "";
 }
+
+// small valid templates beside the one the input stands for
+const char* kStandIn[] = {
+    "<html><body>{{title}}{{#sections}}{{heading}}{{/sections}}</body></html>",
+    "<html><body>{{#cases}}{{name}}{{/cases}}</body></html>", "body { color: #000; }"};
+
+// ARMSTUDY_TEMPLATE_DIR set for one call, put back (or unset) after
+struct TemplateDirScope {
+  std::optional<std::string> before;
+  explicit TemplateDirScope(const fs::path& dir) {
+    if (const char* v = std::getenv("ARMSTUDY_TEMPLATE_DIR")) before = v;
+    ::setenv("ARMSTUDY_TEMPLATE_DIR", dir.c_str(), 1);
+  }
+  ~TemplateDirScope() {
+    if (before)
+      ::setenv("ARMSTUDY_TEMPLATE_DIR", before->c_str(), 1);
+    else
+      ::unsetenv("ARMSTUDY_TEMPLATE_DIR");
+  }
+};
 
 }  // namespace
 
@@ -102,6 +132,30 @@ std::string results_and_tolerances_readers(const std::string& input) {
     (void)t.lookup("placement", "min_energy_J");
     (void)t.lookup("throwing", "idp_run_time_s");
   });
+}
+
+std::string template_folder_reader(const std::string& input) {
+  const fs::path dir = work_dir() / "templates";
+  const TemplateDirScope scope(dir);
+  constexpr size_t kNames = std::size(report::kTemplateNames);
+  for (size_t as = 0; as < kNames; ++as) {
+    for (size_t k = 0; k < kNames; ++k)
+      write(dir / report::kTemplateNames[k], k == as ? input : std::string(kStandIn[k]));
+    const std::string name = report::kTemplateNames[as];
+    try {
+      report::check_templates();
+    } catch (const cases::InputFileError& e) {
+      if (std::string(e.what()).empty()) return "as " + name + ": refused without a message";
+      continue;
+    }
+    if (!name.ends_with(".html")) continue;
+    // accepted: it renders (as a run's page writer does) without crashing
+    kainjow::mustache::mustache page{report::read_template(dir / name)};
+    kainjow::mustache::data d;
+    d.set("title", "fuzz");
+    (void)page.render(d);
+  }
+  return "";
 }
 
 }  // namespace armstudy::fuzz

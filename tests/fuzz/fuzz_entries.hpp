@@ -24,4 +24,11 @@ std::string case_and_sweep_loaders(const std::string& input);
 /// cases::CaseErrors, each with a message), and a lookup in what it read.
 std::string results_and_tolerances_readers(const std::string& input);
 
+/// The input as each report template in turn (case.html, index.html, report.css) of a
+/// template folder given by ARMSTUDY_TEMPLATE_DIR, the other two the bundled ones'
+/// stand-ins, through report::check_templates (how a run reads the folder before it
+/// solves); a page template it accepts is then rendered. The reader may refuse it only with
+/// cases::InputFileError, with a message; ARMSTUDY_TEMPLATE_DIR is put back after.
+std::string template_folder_reader(const std::string& input);
+
 }  // namespace armstudy::fuzz

@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: Apache-2.0
 # Copyright 2026 The armstudy authors
 # Builds the libFuzzer targets with clang (ASan + UBSan; only the loaders and readers, see
-# CMakeLists.txt here) and runs each for a bounded time: case_loader_fuzz seeded with the
-# bad-input corpus, the crash corpus and the bundled and test cases and sweeps;
+# CMakeLists.txt here) and runs each for a bounded time: case_loader_fuzz (which also reads
+# each input as a report template of an ARMSTUDY_TEMPLATE_DIR folder) seeded with the
+# bad-input corpus, the crash corpus, the bundled and test cases and sweeps, and the bundled
+# and broken templates (tests/fuzz/templates);
 # results_reader_fuzz seeded with the results.json and tolerances seeds, the crash corpus
 # and the bundled CI tolerances. Exit 0: ran clean; 77: skipped (no clang with libFuzzer);
 # else a finding (the crashing input is left in BUILD/artifacts/).
@@ -52,5 +54,5 @@ fuzz() {
   echo "fuzz: $target ran clean for $(($(date +%s) - start)) s"
 }
 fuzz case_loader_fuzz "$src/tests/cases/bad" "$src/tests/fuzz/corpus" "$src/reports/cases" \
-  "$src/reports/sweeps" "$src/tests/sweeps"
+  "$src/reports/sweeps" "$src/tests/sweeps" "$src/templates" "$src/tests/fuzz/templates"
 fuzz results_reader_fuzz "$src/tests/fuzz/seeds" "$src/tests/fuzz/corpus" "$src/examples/ci"

@@ -8,6 +8,7 @@
 /// keys ending in _deg are degrees.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,7 @@ struct PendulumStudyResults {
     std::vector<std::vector<double>> q_rad, qd_rad_s;  ///< [[th1..th4] per sample]
     std::vector<double> kinetic_J, potential_J, total_J;
     std::vector<std::array<double, 2>> ball_xy_m, circle_centre_xy_m;
+    std::optional<int> stride;  ///< every stride-th output sample and the last
   };
   struct Snapshot {
     double t_s = 0;
@@ -101,11 +103,15 @@ void fields(V& v, PendulumStudyResults::Series& x) {
   v("total_J", x.total_J, "mechanical energy K + U per sample");
   v("ball_xy_m", x.ball_xy_m, "ball centre [x, y] per sample");
   v("circle_centre_xy_m", x.circle_centre_xy_m, "centre of the ball's circle [x, y] per sample");
+  v.optional("stride", x.stride,
+             "the samples are every stride-th output sample (pendulum.sample_s apart, with the "
+             "snapshot times) and the last (1: every sample; more when there are over 2001, so "
+             "that results.json stays within what armstudy reads back)");
 }
 template <class V>
 void fields(V& v, PendulumStudyResults::Snapshot& x) {
   v("t_s", x.t_s, "snapshot time");
-  v("index", x.index, "index of the sample in series");
+  v("index", x.index, "index of the output sample (series holds every series.stride-th)");
   v("q_rad", x.q_rad, "[theta1..theta4]");
   v("ball_xy_m", x.ball_xy_m, "ball centre [x, y]");
 }
@@ -122,7 +128,7 @@ template <class V>
 void fields(V& v, PendulumStudyResults& x) {
   v("parameters", x.parameters, "the model and the start as simulated");
   v("integrator", x.integrator, "the integrator and its effort");
-  v("series", x.series, "the motion at every sample");
+  v("series", x.series, "the motion at every sample (at most 2001: series.stride)");
   v("snapshots", x.snapshots, "the motion every snapshot step (the source's Figure 2)");
   v("energy", x.energy, "energy conservation");
   v("run_time_s", x.run_time_s, "wall time of the simulation");

@@ -202,6 +202,7 @@ struct StudyResults {
   std::vector<Replay> mujoco_replay;
   double solve_seconds = 0;
   long long samples_evaluated = 0;
+  std::optional<std::vector<std::string>> arm_model;
 };
 
 template <class V>
@@ -515,6 +516,10 @@ void fields(V& v, StudyResults& x) {
   v("mujoco_replay", x.mujoco_replay, "each optimum's torques applied open loop in MuJoCo");
   v("solve_seconds", x.solve_seconds, "wall time of the solve");
   v("samples_evaluated", x.samples_evaluated, "motion samples evaluated in all");
+  v.optional("arm_model", x.arm_model,
+             "an arm read from a URDF or MJCF file (arm.model): the file, the plane and gravity "
+             "it was solved in, and where each limit came from (the model or the case); absent "
+             "for an arm written out in the case");
 }
 
 }  // namespace armstudy::studies::placement
