@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "report/placement_page.hpp"
@@ -49,25 +51,30 @@ fs::path figure(const fs::path& dir, const std::string& name) {
 
 using PS = studies::placement::StudyResults;
 
+// examples 1 and 2 run once per process into a folder of the process's own (ctest runs each
+// test in a process of its own, several at once); each test first asks that the run worked
 class PrintedPlacements : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    out_ = new fs::path(testing::fresh_dir("printed_placements"));
-    const auto r =
+    out_ = new fs::path(testing::fresh_dir("printed_placements_" + std::to_string(::getpid())));
+    run_ = new testing::CliRun(
         testing::run_cli("run --no-render --no-sensitivity --out " + out_->string() + " " +
                          (kRepo / "reports/cases/placement-example-1.yaml").string() + " " +
-                         (kRepo / "reports/cases/placement-example-2.yaml").string());
-    ASSERT_EQ(r.exit_code, 0) << r.output;
+                         (kRepo / "reports/cases/placement-example-2.yaml").string()));
   }
   static void TearDownTestSuite() {
     fs::remove_all(*out_);
     delete out_;
+    delete run_;
   }
+  void SetUp() override { ASSERT_EQ(run_->exit_code, 0) << run_->output; }
   static fs::path dir(int example) {
     return *out_ / ("placement-example-" + std::to_string(example));
   }
   static fs::path* out_;
+  static testing::CliRun* run_;
 };
+testing::CliRun* PrintedPlacements::run_ = nullptr;
 fs::path* PrintedPlacements::out_ = nullptr;
 
 // example 2: the printed roots (from the printed x_S and phi by (4.14)) are marked on armstudy's
