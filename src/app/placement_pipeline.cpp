@@ -554,7 +554,9 @@ StudyParts placement_parts() {
        "line (every line starts at the origin and runs along X), one point per placement case, "
        "joined from the shortest line to the longest: Figure 9.30 of Kopmaz's thesis (2016; "
        "docs/sources.md), from this run's cases. Cases without an admissible optimum contribute no "
-       "point.",
+       "point. Triangles: the roots the thesis prints, by (4.14) from its printed x_S and φ "
+       "(the bundled examples evaluate them as thesis-config-1, thesis-config-2 and "
+       "thesis-only-line).",
        &report::placement_loci_across_cases});
 }
 

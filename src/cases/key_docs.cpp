@@ -115,7 +115,10 @@ const std::vector<KeyDoc> kDocs = {
     {"placement", "placement.map.nx", "Map nodes along x."},
     {"placement", "placement.map.ny", "Map nodes along y."},
     {"placement", "placement.evaluate", "Fixed placements evaluated beside the optimum."},
-    {"placement", "placement.evaluate[].label", "Its label."},
+    {"placement", "placement.evaluate[].label",
+     "Its label. thesis-config-1 and thesis-config-2 name the placements the thesis prints "
+     "as the optima of configuration 1 and 2, thesis-only-line its only line (both "
+     "configurations): the report marks their roots on the maps and draws their motion."},
     {"placement", "placement.evaluate[].x_s_m", "The line's start abscissa (with phi_deg)."},
     {"placement", "placement.evaluate[].phi_deg", "The line's direction (with x_s_m)."},
     {"placement", "placement.evaluate[].root_xy_m",

@@ -250,6 +250,8 @@ void add_map_marks(const PS& pl, const PS::Map& m, ShadedMap& map) {
                              "thesis-interval best (" + status_text(th.status) + ")",
                              {0, 0, 0},
                              false});
+  // the root the thesis prints for this configuration (its Fig. 9.30)
+  for (Marker& mk : printed_root_markers(pl, m.configuration)) map.markers.push_back(std::move(mk));
 }
 
 // one placement map (rows of text in results.json) as a shaded map
@@ -375,6 +377,11 @@ ShadedMap root_loci_map(const PS& pl) {
     for (size_t k = 0; k < locus.x.size(); ++k) grow(locus.x[k], locus.y[k]);
     loci.overlays.push_back(std::move(locus));
   }
+  // the roots the thesis prints (its Fig. 9.30), beside armstudy's optima
+  for (Marker& mk : printed_root_markers(pl, 0)) {
+    grow(mk.x, mk.y);
+    loci.markers.push_back(std::move(mk));
+  }
   if (loci.markers.empty()) return loci;
   const double pad = std::max(0.1, std::isfinite(r_out) ? 0.0 : 0.1);
   const double reach = std::isfinite(r_out) ? r_out : 0;
@@ -437,6 +444,29 @@ LinePlot pareto_plot(const PS& pl, int joint) {
   return plot;
 }
 
+// the roots the thesis prints, in words, for a caption (empty when the case evaluates none)
+std::string printed_roots_caption(const PS& pl) {
+  std::string list;
+  const PS::Evaluation* prev = nullptr;
+  for (const PS::Evaluation* e : printed_placements(pl, printed_program(pl))) {
+    // one line printed for both configurations (example 1): named once
+    if (prev && prev->label == e->label) {
+      list.insert(list.rfind("conf. ") + 6 + as_text(prev->configuration).size(),
+                  " and " + as_text(e->configuration));
+      continue;
+    }
+    prev = e;
+    list += std::string(list.empty() ? "" : "; ") + "conf. " + as_text(e->configuration) + " (" +
+            format_sig(e->root_xy_m[0], 4) + ", " + format_sig(e->root_xy_m[1], 4) +
+            ") m from x_S = " + format_sig(e->x_s_m, 6) + " m, φ = " + format_sig(e->phi_deg, 7) +
+            "°" +
+            (e->status == "unreachable" ? " (its line leaves the annulus: no motion there)" : "");
+  }
+  if (list.empty()) return "";
+  return " Triangles: the roots the thesis prints, by (4.14) from its printed x_S and φ: " + list +
+         ".";
+}
+
 }  // namespace
 
 Section maps_section(const PS& pl, FigureWriter& figures) {
@@ -455,8 +485,11 @@ Section maps_section(const PS& pl, FigureWriter& figures) {
         "frame fixed to the line (the line runs from the origin along X), one map per "
         "program and configuration. Only admissible placements are shaded; unreachable, "
         "inside-the-margin and over-limit regions are flat colours; the circled cross "
-        "is the optimum, the square the best of the thesis's own intervals. Y < 0 is "
-        "the mirror image with the configurations swapped.");
+        "is the optimum, the square the best of the thesis's own intervals" +
+        std::string(printed_root_markers(pl, 0).empty()
+                        ? ""
+                        : ", the triangle the root the thesis prints for the configuration") +
+        ". Y < 0 is the mirror image with the configurations swapped.");
   add_energy_vs_phi(pl, figures, s);
   return s;
 }
@@ -475,7 +508,8 @@ Section loci_and_tradeoff(const PS& pl, FigureWriter& figures, Section& maps) {
                          "frame (the line starts at the origin), as the thesis's Figure 9.30, "
                          "with each optimum's workspace annulus (dotted) and the locus of the "
                          "least-energy root as the allowed peak torque of joint 1 grows (the "
-                         "trade-off below).")));
+                         "trade-off below)." +
+                             printed_roots_caption(pl))));
   for (int joint = 1; joint <= 2; ++joint) {
     const LinePlot plot = pareto_plot(pl, joint);
     bool any = false;

@@ -6,8 +6,10 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "report/number_format.hpp"
+#include "report/plot.hpp"
 #include "report/results_fields.hpp"
 #include "report/study_sections.hpp"
 #include "studies/placement/study_results.hpp"
@@ -47,6 +49,28 @@ inline std::string thesis_figure(const PS& pl, int kind) {
       return "Figure 9." + std::to_string(e.first + kind);
   return kind == 5 ? "Figures 9.11, 9.17, 9.23, 9.29" : "figures of Ch. 9";
 }
+
+/// The thesis's printed placements among the case's evaluations, by the convention of the
+/// bundled examples (reports/cases/placement-example-*.yaml, docs/placement.md): the
+/// evaluation labelled "thesis-config-K" is the placement the thesis prints as the optimum
+/// of configuration K (of both programs), "thesis-only-line" its only line (example 1,
+/// printed for both configurations); any other label, e.g. "thesis-config-2-tangent" (the
+/// line the printed digits mean), is not a printed placement. The evaluations of `program`,
+/// each at the configuration it is printed for, configuration 1 first.
+std::vector<const PS::Evaluation*> printed_placements(const PS& pl, const std::string& program);
+
+/// The program whose motion the thesis draws at its placements (Ch. 9: "only figures of
+/// cycloidal motion program is provided"): cycloidal, else the case's first program.
+std::string printed_program(const PS& pl);
+
+/// "thesis's conf. K" (a legend entry of the plots at the printed placements) and its colour
+/// key "printed/K"
+std::string printed_label(const PS::Evaluation& e);
+std::string printed_key(const PS::Evaluation& e);
+
+/// A triangle at each printed placement's root of `configuration` (0: every configuration),
+/// labelled for the legend.
+std::vector<Marker> printed_root_markers(const PS& pl, int configuration);
 
 /// The placement maps (one per program and configuration) and the energy over the direction
 /// angle.

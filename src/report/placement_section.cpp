@@ -111,7 +111,7 @@ LinePlot optima_plot(const std::string& title, const std::string& y_label,
                              : LineStyle::kDotted;
       const std::string what = curve < labels.size() ? labels[curve] : "";
       // several owners: colour names the owner, style the column (legend entries below)
-      s.label = owners.size() == 1 ? what : columns.size() == 1 ? o.label : "";
+      s.label = columns.size() == 1 ? o.label : owners.size() == 1 ? what : "";
       // a single owner: colour per curve reads better than style alone
       if (owners.size() == 1 && columns.size() + labels.size() > 2)
         s.colour = colour_for("joint" + std::to_string(curve + 1));
@@ -398,9 +398,18 @@ void add_thesis_placements(const PS& pl, Section& s) {
   for (const std::string& label : labels) s.note(thesis_placement_note(pl, label));
 }
 
-// the motion of each optimum over time, two plots to a row
-void add_optima_plots(const PS& pl, const std::vector<SeriesOwner>& owners, FigureWriter& figures,
-                      Section& s) {
+// whose motion a row of plots over time shows: the optima, or the thesis's printed placements
+struct MotionPlots {
+  std::string file_prefix;  ///< "" (the optima) or "printed_"
+  std::string whose;        ///< "of the optima", in titles
+  std::string intro;        ///< the paragraph before the plots
+  std::string energy_note;  ///< the energy figure's caption's tail
+};
+
+// the motion of each owner over time, two plots to a row
+void add_motion_plots(const PS& pl, const std::vector<SeriesOwner>& owners,
+                      const std::vector<SeriesOwner>& energy_owners, const MotionPlots& what,
+                      FigureWriter& figures, Section& s) {
   struct Quantity {
     const char* name;
     const char* plural;
@@ -420,25 +429,117 @@ void add_optima_plots(const PS& pl, const std::vector<SeriesOwner>& owners, Figu
        "joint torque (N m)", 3},
       {"joint_powers", "powers", &PS::Series::power1_W, &PS::Series::power2_W, "power (W)", 4},
   };
-  s.paragraph(
-      "The motion of each optimum over time, two plots to a row: colour is the "
-      "program and configuration (as in the tables), solid is joint 1 (q1, link 1 from "
-      "the base), dashed joint 2 (q2, the elbow, relative to link 1).");
+  s.paragraph(what.intro);
   for (const Quantity& q : quantities) {
-    const std::string what = q.plural;
-    LinePlot plot = optima_plot(what + " of the optima", q.unit_label, owners, {q.key1, q.key2},
+    const std::string plural = q.plural;
+    LinePlot plot = optima_plot(plural + " " + what.whose, q.unit_label, owners, {q.key1, q.key2},
                                 {"joint 1", "joint 2"});
     if (plot.series.empty()) continue;
     s.figure(half(figures.line(
-        q.name, half_size(plot),
-        what + " over time (the thesis's " + thesis_figure(pl, q.thesis_kind) + ").")));
+        what.file_prefix + q.name, half_size(plot),
+        plural + " over time (the thesis's " + thesis_figure(pl, q.thesis_kind) + ").")));
   }
-  LinePlot energy = optima_plot("actuator energy of the optima", "energy used so far (J)", owners,
-                                {&PS::Series::energy_J}, {"energy"});
+  LinePlot energy = optima_plot("actuator energy " + what.whose, "energy used so far (J)",
+                                energy_owners, {&PS::Series::energy_J}, {"energy"});
   if (!energy.series.empty())
-    s.figure(half(figures.line("energy", half_size(energy),
+    s.figure(half(figures.line(what.file_prefix + "energy", half_size(energy),
                                "Actuator energy used up to each instant, ∫ |M1 dθ1| + "
-                               "|M2 d(θ2 - θ1)|; the end value is the optimum's energy.")));
+                               "|M2 d(θ2 - θ1)|" +
+                                   what.energy_note)));
+}
+
+void add_optima_plots(const PS& pl, const std::vector<SeriesOwner>& owners, FigureWriter& figures,
+                      Section& s) {
+  add_motion_plots(
+      pl, owners, owners,
+      {"", "of the optima",
+       "The motion of each optimum over time, two plots to a row: colour is the "
+       "program and configuration (as in the tables), solid is joint 1 (q1, link 1 from "
+       "the base), dashed joint 2 (q2, the elbow, relative to link 1).",
+       "; the end value is the optimum's energy."},
+      figures, s);
+}
+
+// "conf. 2 (thesis-config-2: x_S = 0.4764 m, φ = 155.18°)"
+std::string printed_where(const PS::Evaluation& e) {
+  return "conf. " + as_text(e.configuration) + " (" + e.label +
+         ": x_S = " + format_sig(e.x_s_m, 6) + " m, φ = " + format_sig(e.phi_deg, 7) + "°)";
+}
+
+// the motion at the thesis's printed placements, beside the optima's (the thesis draws the
+// cycloidal program's motion at its optima: Figures 9.1-9.5 for example 1, 9.6-9.10 for
+// example 2, ...); none when the case evaluates no printed placement
+std::optional<Section> printed_motion_section(const PS& pl, FigureWriter& figures) {
+  const std::string program = printed_program(pl);
+  std::vector<SeriesOwner> owners, energy_owners;
+  std::string unreachable, meant_lines, without_energy, singular;
+  const auto add = [](std::string& list, const std::string& item) {
+    list += (list.empty() ? "" : "; ") + item;
+  };
+  for (const PS::Evaluation* e : printed_placements(pl, program)) {
+    std::string label = printed_label(*e);
+    if (!e->series) {
+      add(unreachable, printed_where(*e));
+      // the line the printed digits mean, where the case evaluates it (as the source
+      // comparison does for the printed energies)
+      const PS::Evaluation* meant = nullptr;
+      for (const auto& t : pl.evaluations)
+        if (t.label == e->label + "-tangent" && t.program == e->program &&
+            t.configuration == e->configuration && t.series)
+          meant = &t;
+      if (!meant) continue;
+      add(meant_lines, printed_where(*meant));
+      e = meant;
+      label += " (tangent line)";
+    }
+    owners.push_back({label, printed_key(*e), &*e->series});
+    if (e->singular_trajectory.value_or(false)) add(singular, printed_where(*e));
+    // the sampled running energy must end on the printed energy: on a folded elbow it misses
+    // the reversal's jump term (docs/placement.md), so it is not drawn
+    const std::vector<double>& en = e->series->energy_J;
+    if (!no_energy(*e) && !en.empty() && std::isfinite(en.back()) &&
+        std::abs(en.back() - e->energy_J) <= 1e-2 * std::abs(e->energy_J))
+      energy_owners.push_back(owners.back());
+    else
+      add(without_energy,
+          printed_where(*e) + ", energy " + energy_text(*e, 7) + " J" +
+              (e->note && *e->note == studies::placement::kFoldedElbowNote
+                   ? " (the elbow folds: the sampled integral misses the reversal's jump term, "
+                     "which the printed energy holds, docs/placement.md)"
+                   : " (its sampled running energy does not end on it)"));
+  }
+  if (owners.empty() && unreachable.empty()) return std::nullopt;
+  Section s;
+  s.id = "printed-motion";
+  s.heading = "The motion at the thesis's printed placements";
+  if (!unreachable.empty())
+    s.note("No motion at " + unreachable +
+           ": with the printed digits the line leaves the workspace annulus, where no motion "
+           "exists" +
+           (meant_lines.empty()
+                ? std::string(".")
+                : "; drawn instead: the line the printed digits mean, " + meant_lines + "."));
+  if (owners.empty()) return s;
+  std::string intro =
+      "The " + program +
+      " program's motion at the placements the thesis prints as its optima, as the thesis "
+      "draws it (the same program, both configurations), beside the optima's motion above: "
+      "colour is the configuration, solid is joint 1 (q1, link 1 from the base), dashed joint "
+      "2 (q2, the elbow, relative to link 1; the thesis draws the absolute angle θ2 = q1 + q2 "
+      "and its rate). Computed by armstudy's model, not read off the thesis's figures.";
+  if (!singular.empty())
+    intro += " Singular motions (" + singular +
+             "): near the singular pose the accelerations, torques and powers grow without "
+             "bound, and the plots show their samples (at most 101 points of each motion), whose "
+             "peaks are the sampling's, not the motion's.";
+  std::string energy_note =
+      "; its end value is the placement's energy (Evaluated placements) to within the "
+      "sampled integral's error.";
+  add_motion_plots(pl, owners, energy_owners,
+                   {"printed_", "at the printed placements", intro, energy_note}, figures, s);
+  if (!without_energy.empty())
+    s.note("The running energy is not drawn for " + without_energy + ".");
+  return s;
 }
 
 Section optima_section(const PS& pl, FigureWriter& figures) {
@@ -589,6 +690,8 @@ void placement_sections(const PS& pl, const ResultsRecord& record, FigureWriter&
   page.sections.push_back(std::move(method));
   page.sections.push_back(task_section(pl));
   page.sections.push_back(optima_section(pl, figures));
+  if (auto printed = printed_motion_section(pl, figures))
+    page.sections.push_back(std::move(*printed));
   Section maps = maps_section(pl, figures);
   Section tradeoff = loci_and_tradeoff(pl, figures, maps);
   page.sections.push_back(std::move(maps));
@@ -610,6 +713,7 @@ bool placement_loci_across_cases(const std::vector<std::pair<std::string, const 
   };
   std::map<std::string, std::vector<Point>> loci;
   std::map<std::string, std::string> labels;
+  std::vector<Marker> printed;  // the roots the thesis prints (its Fig. 9.30)
   double longest = 0;
   int placement_cases = 0;
   for (const auto& [name, results] : cases) {
@@ -629,6 +733,7 @@ bool placement_loci_across_cases(const std::vector<std::pair<std::string, const 
       longest = std::max(longest, length);
       any = true;
     }
+    for (Marker& mk : printed_root_markers(pl, 0)) printed.push_back(std::move(mk));
     placement_cases += any;
   }
   if (placement_cases < 2) return false;
@@ -656,6 +761,20 @@ bool placement_loci_across_cases(const std::vector<std::pair<std::string, const 
       y1 = std::max(y1, p.y);
     }
     m.overlays.push_back(std::move(locus));
+  }
+  // the thesis's printed roots, one legend entry per configuration
+  std::vector<std::string> named;
+  for (Marker& mk : printed) {
+    const std::string conf = mk.label.substr(mk.label.rfind("conf."));
+    mk.label = std::find(named.begin(), named.end(), conf) == named.end()
+                   ? "thesis's printed roots, " + conf
+                   : std::string();
+    if (!mk.label.empty()) named.push_back(conf);
+    x0 = std::min(x0, mk.x);
+    x1 = std::max(x1, mk.x);
+    y0 = std::min(y0, mk.y);
+    y1 = std::max(y1, mk.y);
+    m.markers.push_back(std::move(mk));
   }
   const double pad = 0.08 * std::max(x1 - x0, y1 - y0) + 0.02;
   m.x_min = x0 - pad;

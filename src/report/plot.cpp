@@ -464,16 +464,29 @@ void set_viridis(plstream& p) {
 
 Rgb colour_for(std::string_view key) {
   static const std::map<std::string, Rgb, std::less<>> known = {
-      {"cycloidal/1", kPalette[0]},  {"cycloidal/2", kPalette[1]},
-      {"poly345/1", kPalette[2]},    {"poly345/2", kPalette[3]},
-      {"reachability", kPalette[0]}, {"dp", kPalette[1]},
-      {"complex", kPalette[2]},      {"mvc", kBlack},
-      {"initial", kPalette[7]},      {"idp", kPalette[0]},
-      {"gradient", kPalette[1]},     {"joint1", kPalette[0]},
-      {"joint2", kPalette[1]},       {"joint3", kPalette[2]},
-      {"joint4", kPalette[3]},       {"limit", kGrey},
-      {"energy", kPalette[0]},       {"kinetic", kPalette[1]},
-      {"potential", kPalette[2]},    {"mechanical", kBlack},
+      {"cycloidal/1", kPalette[0]},
+      {"cycloidal/2", kPalette[1]},
+      {"poly345/1", kPalette[2]},
+      {"poly345/2", kPalette[3]},
+      {"reachability", kPalette[0]},
+      {"dp", kPalette[1]},
+      {"complex", kPalette[2]},
+      {"mvc", kBlack},
+      {"initial", kPalette[7]},
+      {"idp", kPalette[0]},
+      {"gradient", kPalette[1]},
+      {"joint1", kPalette[0]},
+      {"joint2", kPalette[1]},
+      {"joint3", kPalette[2]},
+      {"joint4", kPalette[3]},
+      {"limit", kGrey},
+      {"energy", kPalette[0]},
+      {"kinetic", kPalette[1]},
+      {"potential", kPalette[2]},
+      {"mechanical", kBlack},
+      // a source's printed placements of configuration 1 and 2 (report/placement_printed.cpp)
+      {"printed/1", kPalette[8]},
+      {"printed/2", kPalette[6]},
   };
   if (auto it = known.find(key); it != known.end()) return it->second;
   // fnv-1a: stable across runs and machines, unlike std::hash
@@ -622,16 +635,18 @@ void check_shaded_map(const ShadedMap& map) {
   for (const auto& s : map.overlays) check_series(s);
 }
 
-// the map's markers, secondary ones first and the primary ones (optima) on top
+// the map's markers: secondary ones (squares) first, then a source's printed points
+// (triangles), the primary ones (optima) on top
 void draw_map_markers(const ShadedMap& map, Page& page, LegendEntries& legend) {
   plstream& p = page.p;
-  for (int pass = 0; pass < 2; ++pass)
+  const auto pass_of = [](const Marker& m) { return m.printed ? 1 : m.primary ? 2 : 0; };
+  for (int pass = 0; pass < 3; ++pass)
     for (const auto& m : map.markers) {
-      if (m.primary != (pass == 1)) continue;
+      if (pass_of(m) != pass) continue;
       const PLINT c = page.slot(m.colour);
       PLFLT x = m.x, y = m.y;
-      const char* glyph = m.primary ? "⊗" : "□";
-      p.schr(0, m.primary ? 2.2 : 1.2);
+      const char* glyph = m.printed ? "△" : m.primary ? "⊗" : "□";
+      p.schr(0, m.printed ? 1.6 : m.primary ? 2.2 : 1.2);
       p.col0(c);
       p.string(1, &x, &y, glyph);
       p.schr(0, 1.0);

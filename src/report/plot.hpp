@@ -76,6 +76,9 @@ struct Marker {
   std::string label;
   Rgb colour;
   bool primary = true;  ///< a large circled cross (an optimum), else a small square
+  /// a point a source document prints (e.g. a thesis's optimum): a triangle, whatever
+  /// `primary` says, drawn above the squares and below the circled crosses
+  bool printed = false;
 };
 
 /// A region of a map drawn in one flat colour (e.g. infeasible, singular), with a legend.
