@@ -192,7 +192,7 @@ namespace {
 
 TEST(PlacementCase, CycleTimeBlockLoadsItsLimitsAndGrids) {
   const Loaded l = load(
-      "study: placement\nname: c\nplacement:\n  length_fraction: 0.5\n  cycle_time:\n"
+      "placement:\n  length_fraction: 0.5\n  cycle_time:\n"
       "    velocity_limit_rad_s: [3, 4]\n    torque_limit_Nm: [20, 8]\n"
       "    acceleration_limit_rad_s2: [50, 60]\n    map_grid_points: 50\n");
   ASSERT_TRUE(l.errors.empty()) << all(l);
@@ -206,13 +206,12 @@ TEST(PlacementCase, CycleTimeBlockLoadsItsLimitsAndGrids) {
   EXPECT_EQ((*ct.acceleration_limit)[1], 60);
   EXPECT_EQ(ct.map_grid_points, 50);
   EXPECT_EQ(ct.grid_points, 1000);  // (its default)
-  EXPECT_FALSE(load("study: placement\nname: c\nplacement:\n  length_fraction: 0.5\n")
-                   .spec.cycle_time.has_value());
+  EXPECT_FALSE(load("placement:\n  length_fraction: 0.5\n").spec.cycle_time.has_value());
 }
 
 TEST(PlacementCase, CycleTimeBlockNeedsBothLimits) {
   const Loaded l = load(
-      "study: placement\nname: c\nplacement:\n  length_fraction: 0.5\n  cycle_time:\n"
+      "placement:\n  length_fraction: 0.5\n  cycle_time:\n"
       "    torque_limit_Nm: [20, 8]\n");
   EXPECT_TRUE(has_error(l, "placement.cycle_time.velocity_limit_rad_s")) << all(l);
 }
