@@ -13,6 +13,7 @@
 #include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
 #include "app/pipeline.hpp"
+#include "app/placement_cycle_time_section.hpp"
 #include "app/replay_json.hpp"
 #include "app/study_entry.hpp"
 #include "cases/placement_case.hpp"
@@ -534,6 +535,7 @@ Results PlacementRun::study_results() const {
     static_cast<studies::ReplayResults&>(rj) = replay_results(rp.replay);
     j.mujoco_replay.push_back(std::move(rj));
   }
+  j.cycle_time = cycle_time_section(spec_, r);
   j.solve_seconds = r.seconds;
   j.samples_evaluated = r.samples_evaluated;
   // an arm read from a URDF or MJCF: its plane and where its limits came from (as the

@@ -206,6 +206,32 @@ void load_sweep_settings(Map& p, const pl::Annulus& an, pl::Spec& spec) {
   }
 }
 
+// placement.cycle_time: the cycle-time objective's limits and grids (both limits required)
+void load_cycle_time(Map& p, pl::Spec& spec) {
+  auto m = p.map("cycle_time");
+  if (!m) return;
+  pl::CycleTimeSpec ct;
+  const auto pair = [](const std::vector<double>& v) {
+    return (core::JointVector(2) << v[0], v[1]).finished();
+  };
+  for (const char* key : {"velocity_limit_rad_s", "torque_limit_Nm"})
+    if (!m->has(key))
+      m->error_here("missing required key '" + m->path_of(key) +
+                    "'; expected the limits of joints 1 and 2");
+  if (const auto v = m->numbers("velocity_limit_rad_s", NumberRule::positive("rad/s"), 2))
+    ct.velocity_limit = pair(*v);
+  if (const auto v = m->numbers("torque_limit_Nm", NumberRule::positive("N m"), 2))
+    ct.torque_limit = pair(*v);
+  if (const auto v = m->numbers("acceleration_limit_rad_s2", NumberRule::positive("rad/s^2"), 2))
+    ct.acceleration_limit = pair(*v);
+  ct.map_grid_points = m->integer_or("map_grid_points", ct.map_grid_points, 3, 100000);
+  ct.grid_points = m->integer_or("grid_points", ct.grid_points, 3, 100000);
+  ct.checks_per_interval = m->integer_or("checks_per_interval", ct.checks_per_interval, 1, 100);
+  ct.tolerance_rel = m->number_or("tolerance_rel", ct.tolerance_rel, NumberRule::positive(""));
+  m->finish();
+  spec.cycle_time = ct;
+}
+
 // placement.evaluate: fixed placements, each by (x_s_m, phi_deg) or root_xy_m
 void load_evaluations(Map& p, pl::Spec& spec) {
   auto ev = p.seq("evaluate");
@@ -259,6 +285,7 @@ studies::placement::Spec load_placement(Map& root) {
   load_programs(*p, spec);
   load_sweep_settings(*p, an, spec);
   load_evaluations(*p, spec);
+  load_cycle_time(*p, spec);
   spec.threads = p->integer_or("threads", spec.threads, 0, 256);
   if (model) model_torque_limit(*p, *model, spec);
   p->finish();

@@ -186,3 +186,35 @@ TEST(PlacementCase, BundledExamplesLoadWithTheThesisLengths) {
 
 }  // namespace
 }  // namespace armstudy::cases
+
+namespace armstudy::cases {
+namespace {
+
+TEST(PlacementCase, CycleTimeBlockLoadsItsLimitsAndGrids) {
+  const Loaded l = load(
+      "placement:\n  length_fraction: 0.5\n  cycle_time:\n"
+      "    velocity_limit_rad_s: [3, 4]\n    torque_limit_Nm: [20, 8]\n"
+      "    acceleration_limit_rad_s2: [50, 60]\n    map_grid_points: 50\n");
+  ASSERT_TRUE(l.errors.empty()) << all(l);
+  ASSERT_TRUE(l.spec.cycle_time.has_value());
+  const studies::placement::CycleTimeSpec& ct = *l.spec.cycle_time;
+  EXPECT_EQ(ct.velocity_limit[0], 3);
+  EXPECT_EQ(ct.velocity_limit[1], 4);
+  EXPECT_EQ(ct.torque_limit[0], 20);
+  EXPECT_EQ(ct.torque_limit[1], 8);
+  ASSERT_TRUE(ct.acceleration_limit.has_value());
+  EXPECT_EQ((*ct.acceleration_limit)[1], 60);
+  EXPECT_EQ(ct.map_grid_points, 50);
+  EXPECT_EQ(ct.grid_points, 1000);  // (its default)
+  EXPECT_FALSE(load("placement:\n  length_fraction: 0.5\n").spec.cycle_time.has_value());
+}
+
+TEST(PlacementCase, CycleTimeBlockNeedsBothLimits) {
+  const Loaded l = load(
+      "placement:\n  length_fraction: 0.5\n  cycle_time:\n"
+      "    torque_limit_Nm: [20, 8]\n");
+  EXPECT_TRUE(has_error(l, "placement.cycle_time.velocity_limit_rad_s")) << all(l);
+}
+
+}  // namespace
+}  // namespace armstudy::cases

@@ -19,6 +19,7 @@
 #include "studies/common.hpp"
 #include "studies/placement/arm2.hpp"
 #include "studies/placement/converge.hpp"
+#include "studies/placement/cycle_time_result.hpp"
 
 namespace armstudy::studies::placement {
 
@@ -227,6 +228,8 @@ struct Result {
   int thesis_xs_case = 0;
   std::vector<ProgramConfig> cases;  ///< programs x configurations, in the spec's order
   std::vector<Evaluation> evaluations;
+  /// the cycle-time objective per configuration (empty: the spec has no cycle_time)
+  std::vector<CycleTime> cycle_time;
   std::vector<ConvergenceRow> convergence;  ///< of the first found optimum
   std::vector<Check> checks;
   double seconds = 0;  ///< wall time of the solve

@@ -16,7 +16,9 @@
 #include "studies/grid.hpp"
 #include "studies/placement/candidate.hpp"
 #include "studies/placement/checks.hpp"
+#include "studies/placement/cycle_time_map.hpp"
 #include "studies/placement/geometry.hpp"
+#include "studies/placement/parallel.hpp"
 #include "studies/placement/peaks.hpp"
 #include "studies/placement/printed_limits.hpp"
 #include "studies/placement/refine.hpp"
@@ -50,30 +52,6 @@ std::string fmt(double v, int precision = 4) {
   os.precision(precision);
   os << v;
   return os.str();
-}
-
-// runs body(i) for i in [0, n) on `threads` threads in chunks; the calling thread works too
-// and is the only one that reports progress
-template <typename Body>
-void parallel_for(long n, int threads, const ProgressFn& progress, double p0, double p1,
-                  std::string_view stage, Body body) {
-  constexpr long kChunk = 32;
-  std::atomic<long> next{0};
-  std::atomic<long> done{0};
-  const auto work = [&](bool report) {
-    for (;;) {
-      const long b = next.fetch_add(kChunk);
-      if (b >= n) break;
-      const long e = std::min(n, b + kChunk);
-      for (long i = b; i < e; ++i) body(i);
-      const long d = done.fetch_add(e - b) + (e - b);
-      if (report && progress) progress(p0 + (p1 - p0) * double(d) / double(n), stage);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, false);
-  work(true);
-  for (auto& t : pool) t.join();
 }
 
 // a checked candidate: its energy by adaptive quadrature (to kQuadTol, printed within
@@ -890,7 +868,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
         " m";
     return res;
   }
-  s.threads = spec.threads > 0 ? spec.threads : std::max(1u, std::thread::hardware_concurrency());
+  s.threads = sweep_threads(spec.threads);
   const XsInterval xsi = thesis_xs_interval(an, L);
   res.xs_init = xsi.init;
   res.xs_fin = xsi.fin;
@@ -902,6 +880,7 @@ Result solve(const Spec& spec, const ProgressFn& progress) {
     res.cases.push_back(solve_pair(s, pc, res.samples_evaluated));
   if (progress) progress(0.85, "placement refinement");
   evaluate_fixed(s, res);
+  if (spec.cycle_time) res.cycle_time = cycle_times(spec, res.cases, progress, 0.86, 0.97);
 
   int found = 0;
   for (const auto& c : res.cases) found += c.found;

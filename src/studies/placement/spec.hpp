@@ -24,6 +24,21 @@ struct EvaluationSpec {
   double phi = 0;     ///< rad, direction angle of the line
 };
 
+/// The cycle-time objective: the least time in which the arm can carry its tip
+/// along the task line, rest to rest, under joint velocity, torque and (optional)
+/// acceleration limits, found by the time-optimal study's exact solver (cycle_time.hpp).
+struct CycleTimeSpec {
+  core::JointVector velocity_limit;                     ///< rad/s per joint, > 0
+  core::JointVector torque_limit;                       ///< N m per joint, > 0
+  std::optional<core::JointVector> acceleration_limit;  ///< rad/s^2 per joint, > 0
+  int map_grid_points = 100;    ///< the exact solver's grid at each map node (the coarse grid)
+  int grid_points = 1000;       ///< its grid in the refinement and at the optimum (converged)
+  int checks_per_interval = 2;  ///< points per grid interval where the limits hold
+  /// the optimum's duration: the relative error the time-optimal study's extrapolation
+  /// is asked for (time_optimal::ExactSettings::tolerance_rel)
+  double tolerance_rel = 1e-5;
+};
+
 struct Spec {
   core::PlanarChain chain;  ///< 2 active links, gravity 0
   double length = 0;        ///< m, line length L (0 < L <= Lmax)
@@ -51,6 +66,8 @@ struct Spec {
   double refine_xtol = 1e-5;                                   ///< m
   double refine_phitol = 1e-3 * 3.14159265358979323846 / 180;  ///< rad
   int threads = 0;  ///< worker threads for the sweeps (0: all hardware threads)
+  /// the cycle-time objective beside the energy's (none: energy only)
+  std::optional<CycleTimeSpec> cycle_time;
   /// where the arm and its limits came from (model.xml and the report say it)
   ArmOrigin arm_origin;
 };

@@ -182,6 +182,55 @@ struct StudyResults {
     std::vector<SampleRow> rows;
   };
   struct Replay : Id, ReplayResults {};
+  /// the cycle-time objective (cycle_time_map.hpp): a limit's largest use by a fastest motion
+  struct LimitUse {
+    std::string kind;
+    int joint = 1;
+    double ratio = 0;
+    bool binding = false;
+  };
+  /// the least traversal time at one placement, converged by the time-optimal study
+  struct CycleTimeAt {
+    bool solved = false;
+    std::string message;
+    std::optional<double> duration_s, error_s, grid_duration_s;
+    int grid_points = 0;
+    std::vector<LimitUse> limits;
+  };
+  struct CycleTimeOptimum {
+    bool found = false;
+    std::string reason;
+    std::optional<Pair> root_xy_m, grid_root_xy_m;
+    std::optional<double> x_s_m, phi_deg, root_error_m, duration_s, duration_error_s, grid_time_s,
+        fine_time_s, inner_slack_m, outer_slack_m;
+    std::optional<bool> set_by_margin;
+    int refinement_solves = 0;
+    std::optional<CycleTimeAt> converged;
+  };
+  struct CycleTimeMap {
+    std::vector<double> x_m, y_m;
+    std::string encoding;
+    std::vector<std::string> time_s_rows, status_rows;
+    int nodes_solved = 0, grid_points = 0, threads = 1;
+    double seconds = 0;
+  };
+  struct EnergyOptimumTime {
+    std::string program;
+    double x_s_m = 0, phi_deg = 0, energy_J = 0;
+    Pair root_xy_m{};
+    CycleTimeAt cycle_time;
+  };
+  struct CycleTime {
+    int configuration = 1;
+    CycleTimeMap map;
+    CycleTimeOptimum optimum;
+    std::vector<EnergyOptimumTime> at_energy_optima;
+  };
+  struct CycleTimeSection {
+    Pair velocity_limit_rad_s{}, torque_limit_Nm{};
+    std::optional<Pair> acceleration_limit_rad_s2;
+    std::vector<CycleTime> configurations;
+  };
 
   double lmax_m = 0, length_m = 0, length_fraction = 0, duration_s = 0;
   int samples = 0;
@@ -200,6 +249,7 @@ struct StudyResults {
   std::vector<Map> maps;
   std::optional<Convergence> convergence;
   std::vector<Replay> mujoco_replay;
+  std::optional<CycleTimeSection> cycle_time;
   double solve_seconds = 0;
   long long samples_evaluated = 0;
   std::optional<std::vector<std::string>> arm_model;
@@ -487,6 +537,84 @@ void fields(V& v, StudyResults::Replay& x) {
   fields(v, static_cast<ReplayResults&>(x));
 }
 template <class V>
+void fields(V& v, StudyResults::LimitUse& x) {
+  v("kind", x.kind, "velocity, torque or acceleration");
+  v("joint", x.joint, "the joint (1-based)");
+  v("ratio", x.ratio, "largest |value| / limit over the densely resampled fastest motion");
+  v("binding", x.binding, "ratio >= 1 - 1e-3: the fastest motion runs on this limit");
+}
+template <class V>
+void fields(V& v, StudyResults::CycleTimeAt& x) {
+  v("solved", x.solved, "the time-optimal study found a motion");
+  v("message", x.message, "its summary, or why no motion exists");
+  v("duration_s", x.duration_s,
+    "the least traversal time, extrapolated over the exact solver's grids (null: unsolved)");
+  v("error_s", x.error_s, "its stated error, the extrapolation's (null: unsolved)");
+  v("grid_duration_s", x.grid_duration_s, "the exact solver's time on its grid (null: unsolved)");
+  v("grid_points", x.grid_points, "that grid's nodes");
+  v("limits", x.limits, "every limit's largest use by the fastest motion");
+}
+template <class V>
+void fields(V& v, StudyResults::CycleTimeOptimum& x) {
+  v("found", x.found, "an admissible placement with a motion exists");
+  v("reason", x.reason, "why not ('' when found)");
+  v("root_xy_m", x.root_xy_m, "the fastest root (X, Y) in the line frame (null: not found)");
+  v("x_s_m", x.x_s_m, "its line start abscissa");
+  v("phi_deg", x.phi_deg, "its line direction");
+  v("root_error_m", x.root_error_m,
+    "the compass search's last step, at which no admissible point around the root was faster "
+    "on the converged grid: the location's resolution");
+  v("duration_s", x.duration_s, "the least cycle time there, extrapolated (the answer)");
+  v("duration_error_s", x.duration_error_s,
+    "its error: the extrapolation's plus the time's largest change over the last compass ring");
+  v("grid_root_xy_m", x.grid_root_xy_m, "the map's fastest node");
+  v("grid_time_s", x.grid_time_s, "its time on the map's coarse grid");
+  v("fine_time_s", x.fine_time_s, "the optimum's time on the refinement's grid");
+  v("inner_slack_m", x.inner_slack_m, "clearance to the inner circle minus the margin");
+  v("outer_slack_m", x.outer_slack_m, "clearance to the outer circle minus the margin");
+  v("set_by_margin", x.set_by_margin, "a clearance slack is within 2 root_error_m of 0");
+  v("refinement_solves", x.refinement_solves, "exact solves of the compass search");
+  v("converged", x.converged, "the time-optimal study at the optimum (null: not found)");
+}
+template <class V>
+void fields(V& v, StudyResults::CycleTimeMap& x) {
+  v("x_m", x.x_m, "node abscissae X in the line frame (the energy maps' nodes)");
+  v("y_m", x.y_m, "node ordinates Y in the line frame");
+  v("encoding", x.encoding, "how the rows are written");
+  v("time_s_rows", x.time_s_rows,
+    "row j is y_m[j]: least times at 6 significant digits, '-' where not admissible or unsolved");
+  v("status_rows", x.status_rows, "row j is y_m[j]: one status character per node");
+  v("nodes_solved", x.nodes_solved, "admissible nodes with a motion");
+  v("grid_points", x.grid_points, "the exact solver's grid at each node (the coarse grid)");
+  v("threads", x.threads, "threads the map ran on");
+  v("seconds", x.seconds, "wall time of the map");
+}
+template <class V>
+void fields(V& v, StudyResults::EnergyOptimumTime& x) {
+  v("program", x.program, "the energy optimum's motion program");
+  v("x_s_m", x.x_s_m, "its line start abscissa");
+  v("phi_deg", x.phi_deg, "its line direction");
+  v("root_xy_m", x.root_xy_m, "its root in the line frame");
+  v("energy_J", x.energy_J, "its energy (fixed duration, the program's motion)");
+  v("cycle_time", x.cycle_time, "the least cycle time at that placement");
+}
+template <class V>
+void fields(V& v, StudyResults::CycleTime& x) {
+  v("configuration", x.configuration, "elbow configuration (1 or 2)");
+  v("map", x.map, "the least cycle time over root locations");
+  v("optimum", x.optimum, "the fastest placement, refined and converged");
+  v("at_energy_optima", x.at_energy_optima,
+    "the least cycle time at each energy optimum of this configuration");
+}
+template <class V>
+void fields(V& v, StudyResults::CycleTimeSection& x) {
+  v("velocity_limit_rad_s", x.velocity_limit_rad_s, "velocity limits [j1, j2]");
+  v("torque_limit_Nm", x.torque_limit_Nm, "torque limits [j1, j2]");
+  v("acceleration_limit_rad_s2", x.acceleration_limit_rad_s2,
+    "acceleration limits [j1, j2] (null: none)");
+  v("configurations", x.configurations, "the objective per configuration");
+}
+template <class V>
 void fields(V& v, StudyResults& x) {
   v("lmax_m", x.lmax_m, "4 sqrt(L1 L2) (4.6)");
   v("length_m", x.length_m, "line length L");
@@ -514,6 +642,9 @@ void fields(V& v, StudyResults& x) {
   v("maps", x.maps, "energy and status over root locations");
   v.optional("convergence", x.convergence, "the first optimum's energy as the samples double");
   v("mujoco_replay", x.mujoco_replay, "each optimum's torques applied open loop in MuJoCo");
+  v.optional("cycle_time", x.cycle_time,
+             "the cycle-time objective: the least traversal time under joint limits over root "
+             "locations and its optimum (present when the case asks for it)");
   v("solve_seconds", x.solve_seconds, "wall time of the solve");
   v("samples_evaluated", x.samples_evaluated, "motion samples evaluated in all");
   v.optional("arm_model", x.arm_model,
