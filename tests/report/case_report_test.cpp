@@ -119,7 +119,7 @@ json study_section(const std::string& study) {
   }
   if (study == "pendulum") {
     studies::PendulumStudyResults s;
-    s.series = {ts, s4(3), s4(4), s1(2), s1(3), s1(0), s2(1), s2(2)};
+    s.series = {ts, s4(3), s4(4), s1(2), s1(3), s1(0), s2(1), s2(2), std::nullopt};
     s.snapshots.push_back({0.0, 0, {0, 0, -1.5, -0.6}, {0.1, -0.1}});
     s.energy.initial_J = -0.2;
     s.energy.drift_J = 1e-13;
