@@ -25,6 +25,26 @@
 
 namespace armstudy::studies::placement {
 
+/// the cycle-time objective (cycle_time_map.hpp): a limit's largest use by a fastest motion.
+/// This and CycleTimeAt sit outside StudyResults: a class nested in another, with default
+/// member initialisers, is not default-constructible before the enclosing class is complete
+/// for clang, so std::optional<CycleTimeAt> inside StudyResults did not compile there (the
+/// fuzz targets' build); GCC accepts it.
+struct CycleTimeLimitUse {
+  std::string kind;
+  int joint = 1;
+  double ratio = 0;
+  bool binding = false;
+};
+/// the least traversal time at one placement, converged by the time-optimal study
+struct CycleTimeAt {
+  bool solved = false;
+  std::string message;
+  std::optional<double> duration_s, error_s, grid_duration_s;
+  int grid_points = 0;
+  std::vector<CycleTimeLimitUse> limits;
+};
+
 struct StudyResults {
   using Pair = std::array<double, 2>;
   /// which motion program and elbow configuration an entry belongs to
@@ -182,21 +202,10 @@ struct StudyResults {
     std::vector<SampleRow> rows;
   };
   struct Replay : Id, ReplayResults {};
-  /// the cycle-time objective (cycle_time_map.hpp): a limit's largest use by a fastest motion
-  struct LimitUse {
-    std::string kind;
-    int joint = 1;
-    double ratio = 0;
-    bool binding = false;
-  };
-  /// the least traversal time at one placement, converged by the time-optimal study
-  struct CycleTimeAt {
-    bool solved = false;
-    std::string message;
-    std::optional<double> duration_s, error_s, grid_duration_s;
-    int grid_points = 0;
-    std::vector<LimitUse> limits;
-  };
+  /// the cycle-time objective (cycle_time_map.hpp): a limit's largest use by a fastest
+  /// motion, and the least traversal time at one placement (at namespace scope: see there)
+  using LimitUse = CycleTimeLimitUse;
+  using CycleTimeAt = placement::CycleTimeAt;
   struct CycleTimeOptimum {
     bool found = false;
     std::string reason;
