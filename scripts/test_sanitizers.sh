@@ -9,7 +9,9 @@
 # By default (and in CI, through scripts/test.sh) the quick tier (`ctest -L quick`: every
 # GoogleTest of core, studies, cases, scene, report, cli and e2e but the few in
 # tests/slow_tests.txt, so every solver runs instrumented on the tests' small inputs) and
-# e2e.interrupt (the fork/exec code of the browser with a stand-in). Left out: the browser
+# e2e.interrupt (the fork/exec code of the browser with a stand-in). Left out: the e2e
+# folder's whole-run suites (below: Diff, ForeignOutput, OutputSafety, ... each runs armstudy
+# on whole rendered cases to check the files a run leaves), the browser
 # tests (headless Chromium prints the bundled reports; minutes under ASan), the
 # fault-injection and package tests (strace watches the run; LeakSanitizer cannot run under
 # ptrace), the independent placement checks (their armstudy part is the placement solver,
@@ -35,7 +37,8 @@
 #   scripts/test_sanitizers.sh -R merge   extra arguments go to ctest
 #
 # ARMSTUDY_SANITIZER_PHASE=build only configures and builds, =test only runs the tests of an
-# earlier build: scripts/test.sh builds at the lowest priority while the Release suite runs.
+# earlier build. scripts/test.sh runs the whole tier (build, then tests) in the background
+# beside the Release suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$(date +%s)
@@ -70,7 +73,14 @@ else
   # quick tests beside them (e.g. the throwing sensitivity cross-check solves the bundled
   # throw 11 times, over 10 min under ASan; the throwing tests run here)
   slow=$(grep -v -e '^#' -e '^[[:space:]]*$' tests/slow_tests.txt | sed 's/^[[:space:]]*//; s/[[:space:]]*$//; s/.*/^&$/' | paste -sd'|')
-  select=(-L "^quick$|^e2e$" -E "$exclude|$slow|^guard\.|^install\.|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection|export_clients|simulate_viewer|check_placement_energy|check_placement_limits)$")
+  # the e2e folder's whole-run suites: each runs armstudy on whole cases (rendered, several
+  # times over) to check the files a run leaves, the figures it prints and how it skips;
+  # their armstudy code runs instrumented here through the unit tests of the same code and
+  # the e2e suites that stay (hostile and untrusted input, merge, diff's tolerances, the
+  # command line); 509 of the tier's 1248 test-seconds (build-asan at f683386, load 4-7)
+  whole_runs="^(Diff|ForeignOutput|OutputSafety|ResultsNumbers|PrintedPlacements|NeverHang|Sensitivity)\\."
+  whole_runs+="|^SourceComparison\\.(EveryCase|EveryReason|EachPrinted|TheThesis|TheAnyNumber|ADifference)"
+  select=(-L "^quick$|^e2e$" -E "$exclude|$slow|$whole_runs|^guard\.|^install\.|^e2e\.(sweep_scale_out|slurm_cluster|ssh_parallel|fault_injection|export_clients|simulate_viewer|check_placement_energy|check_placement_limits)$")
 fi
 built=$(date +%s)
 
