@@ -128,15 +128,15 @@ TEST(Sensitivity, ARunWithoutTheSensitivityPartIsRedoneByOneWithIt) {
 // The bundled throwing case: each of its five keys (release tolerance, contact margin,
 // friction coefficient, power rating, rotor inertia) at +step, warm-started (SLSQP from the
 // nominal answer, on its finest control grid); two of them (contact margin, rotor inertia)
-// against one cold-started re-solve of the whole study (eq. 8, IDP, SLSQP from every start, the control grids) at the same value. Both are
-// throws re-checked feasible with 4x the steps, so the warm step must not cost more than the cold
-// answer by more than kWarmExcess (the optimisers' own spread between restarts is ~1e-4). The cold
-// answer may cost more: the multi-start search can land in another local optimum. On two of
-// the case's three grids (16 and 32 stages), measured at load 11 (113 s of CPU, each cold
-// solve 44-52 s of wall): release tolerance, friction, power and rotor inertia agree within
-// 3e-4; at +10 % contact margin the cold study answers 4.710 J where the warm step finds
-// 4.537 J (3.7 % lower). On the 16-stage grid alone the rotor inertia's warm step does not
-// converge (first-order residual 5.2), so one refinement is kept.
+// against one cold-started re-solve of the whole study (eq. 8, IDP, SLSQP from every start, the
+// control grids) at the same value. Both are throws re-checked feasible with 4x the steps, so the
+// warm step must not cost more than the cold answer by more than kWarmExcess (the optimisers' own
+// spread between restarts is ~1e-4). The cold answer may cost more: the multi-start search can land
+// in another local optimum. On two of the case's three grids (16 and 32 stages), measured at load
+// 11 (113 s of CPU, each cold solve 44-52 s of wall): release tolerance, friction, power and rotor
+// inertia agree within 3e-4; at +10 % contact margin the cold study answers 4.710 J where the warm
+// step finds 4.537 J (3.7 % lower). On the 16-stage grid alone the rotor inertia's warm step does
+// not converge (first-order residual 5.2), so one refinement is kept.
 TEST(Sensitivity, ThrowingWarmStepsAgreeWithColdResolves) {
   constexpr double kWarmExcess = 5e-3;  // relative
   const std::string path = std::string(ARMSTUDY_SOURCE_DIR) + "/reports/cases/throwing.yaml";
