@@ -6,9 +6,11 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
+#include <iomanip>
 #include <limits>
+#include <locale>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "studies/grid.hpp"
@@ -325,9 +327,10 @@ std::vector<CycleTime> cycle_times(const Spec& spec, const std::vector<ProgramCo
 namespace {
 
 std::string sig(double v, int digits) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os << std::setprecision(digits) << v;
+  return os.str();
 }
 
 }  // namespace
