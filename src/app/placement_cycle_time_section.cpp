@@ -31,6 +31,11 @@ Results::CycleTimeAt at_section(const pl::ConvergedCycleTime& c) {
   return a;
 }
 
+std::optional<pl::FastEnergy> fast_section(const pl::FastMotionEnergy& f) {
+  if (!f.computed) return std::nullopt;
+  return pl::FastEnergy{f.energy, f.error, f.duration, f.grid_points};
+}
+
 Results::CycleTimeMap map_section(const pl::CycleTimeMap& m, int grid_points) {
   Results::CycleTimeMap mj;
   mj.x_m = m.x;
@@ -84,7 +89,29 @@ Results::CycleTimeOptimum optimum_section(const pl::CycleTimeOptimum& o) {
   oj.outer_slack_m = o.outer_slack;
   oj.set_by_margin = o.set_by_margin;
   oj.converged = at_section(o.converged);
+  oj.fast_motion_energy = fast_section(o.fast_energy);
   return oj;
+}
+
+Results::EnergyOptimumTime energy_optimum_section(const pl::EnergyOptimumCycleTime& e,
+                                                  bool time_optimum) {
+  Results::EnergyOptimumTime ej;
+  ej.program = std::string(core::program_name(e.program));
+  ej.x_s_m = e.x_s;
+  ej.phi_deg = e.phi / core::kDeg;
+  ej.energy_J = e.energy;
+  ej.root_xy_m = xy(e.root);
+  ej.cycle_time = at_section(e.time);
+  ej.fast_motion_energy = fast_section(e.fast_energy);
+  if (e.has_energy_at_time_optimum) {
+    ej.energy_at_time_optimum_J = e.energy_at_time_optimum;
+    ej.energy_at_time_optimum_error_J = e.energy_at_time_optimum_error;
+  }
+  if (time_optimum) ej.status_at_time_optimum = pl::status_name(e.status_at_time_optimum);
+  for (const pl::CycleEnergyPoint& p : e.front)
+    ej.front.push_back(
+        {p.kind, xy(p.root), p.x_s, p.phi / core::kDeg, p.time, p.energy, p.fast_energy});
+  return ej;
 }
 
 }  // namespace
@@ -103,8 +130,7 @@ std::optional<Results::CycleTimeSection> cycle_time_section(const pl::Spec& spec
     cj.map = map_section(c.map, ct.map_grid_points);
     cj.optimum = optimum_section(c.optimum);
     for (const pl::EnergyOptimumCycleTime& e : c.at_energy_optima)
-      cj.at_energy_optima.push_back({std::string(core::program_name(e.program)), e.x_s,
-                                     e.phi / core::kDeg, e.energy, xy(e.root), at_section(e.time)});
+      cj.at_energy_optima.push_back(energy_optimum_section(e, c.optimum.found));
     s.configurations.push_back(std::move(cj));
   }
   return s;

@@ -102,6 +102,19 @@ void placement_answer(const PS& pl, const ResultsRecord& record, AnswerBox& a) {
         (mirrored ? ": mirrored in the line's perpendicular bisector and run backwards in time, "
                     "each is the other (docs/defects.md, kopmaz-configuration-symmetry)"
                   : ""));
+  // the fastest cycle's limits (the study's sentence gives its time and place)
+  if (pl.cycle_time)
+    for (const auto& c : pl.cycle_time->configurations) {
+      if (!c.optimum.found || !c.optimum.converged) continue;
+      std::string on;
+      for (const auto& u : c.optimum.converged->limits)
+        if (u.binding)
+          on += (on.empty() ? "" : ", ") + ("joint " + as_text(u.joint) + "'s " + u.kind);
+      a.binding.push_back(
+          "fastest cycle, configuration " + as_text(c.configuration) + ": " +
+          (on.empty() ? std::string("no joint limit binds") : "runs on " + on) +
+          (c.optimum.set_by_margin.value_or(false) ? "; the clearance margin sets its place" : ""));
+    }
   GroupedLines unsolved;
   for (const auto& u : pl.unsolved)
     add_to_group(unsolved, u.reason, u.program + " " + as_text(u.configuration));
@@ -118,6 +131,10 @@ void placement_answer(const PS& pl, const ResultsRecord& record, AnswerBox& a) {
                               : "no actuator limits (any torque, as in the thesis)");
   a.assumptions.push_back(
       "rest to rest, zero end accelerations; no actuator masses (as the thesis)");
+  if (pl.cycle_time)
+    a.assumptions.push_back(
+        "cycle time: the exact time-optimal solver under the case's joint velocity and torque "
+        "limits, rest to rest; its energy is the same integral (8.1) over that motion");
   // the key picture: the locus of the optimum of least energy; energies equal within their
   // error estimates (mirror-image optima) are a tie and the first stays, as in the answer
   double least = INFINITY, least_error = 0;

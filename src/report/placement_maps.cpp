@@ -181,7 +181,8 @@ Crop crop_to_reachable(const PS& pl, const PS::Map& m, const MapGrid& g) {
 // the drawn cells of `map` (mx by my, each a block of kx by ky nodes): a cell takes the most
 // severe status of its block, an admissible one the energy of its first node; returns the
 // note on the colours' saturation ("" when they do not saturate)
-std::string fill_cells(const MapGrid& g, const Crop& crop, size_t kx, size_t ky, ShadedMap& map) {
+std::string fill_cells(const MapGrid& g, const Crop& crop, size_t kx, size_t ky, ShadedMap& map,
+                       const std::string& unit = "J", const std::string& quantity = "energy") {
   const size_t nx = g.nx, mx = static_cast<size_t>(map.nx), my = static_cast<size_t>(map.ny);
   const size_t i0 = crop.i0, i1 = crop.i1, j0 = crop.j0, j1 = crop.j1;
   const std::vector<double>& z = g.z;
@@ -221,10 +222,9 @@ std::string fill_cells(const MapGrid& g, const Crop& crop, size_t kx, size_t ky,
     if (cap < sorted.back()) {
       for (double& v : map.z)
         if (std::isfinite(v)) v = std::min(v, cap);
-      saturation = " Colours saturate at " + format_sig(cap, 4) +
-                   " J (95th percentile; the "
-                   "largest admissible energy is " +
-                   format_sig(sorted.back(), 4) + " J).";
+      saturation = " Colours saturate at " + format_sig(cap, 4) + " " + unit +
+                   " (95th percentile; the largest admissible " + quantity + " is " +
+                   format_sig(sorted.back(), 4) + " " + unit + ").";
     }
   }
   map.regions = {unreachable, singular, over};
@@ -254,51 +254,110 @@ void add_map_marks(const PS& pl, const PS::Map& m, ShadedMap& map) {
   for (Marker& mk : printed_root_markers(pl, m.configuration)) map.markers.push_back(std::move(mk));
 }
 
-// one placement map (rows of text in results.json) as a shaded map
-bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& s) {
-  const auto& xs = m.x_m;
-  const auto& ys = m.y_m;
-  MapGrid g;
-  if (!read_map_grid(m, &g)) return false;
-  const size_t nx = g.nx, ny = g.ny;
-  const Crop c = crop_to_reachable(pl, m, g);
-  const size_t i0 = c.i0, i1 = c.i1, j0 = c.j0, j1 = c.j1;
-  const bool cropped = c.cropped;
-  const size_t cx = i1 - i0 + 1, cy = j1 - j0 + 1;
+// the drawn frame of a map over the grid `xs` x `ys` cropped to `c`: its cells (each a block
+// of *kx by *ky nodes, at most kMaxMapCells per axis), axes and range
+ShadedMap map_frame(const std::vector<double>& xs, const std::vector<double>& ys, const Crop& c,
+                    size_t* kx, size_t* ky) {
+  const size_t cx = c.i1 - c.i0 + 1, cy = c.j1 - c.j0 + 1;
   // thinned grid for drawing; a drawn cell takes the most severe status of its block
-  const size_t kx = (cx + kMaxMapCells - 1) / kMaxMapCells,
-               ky = (cy + kMaxMapCells - 1) / kMaxMapCells;
-  const size_t mx = (cx - 1) / kx + 1, my = (cy - 1) / ky + 1;
+  *kx = (cx + kMaxMapCells - 1) / kMaxMapCells;
+  *ky = (cy + kMaxMapCells - 1) / kMaxMapCells;
+  const size_t mx = (cx - 1) / *kx + 1, my = (cy - 1) / *ky + 1;
   ShadedMap map;
-  map.title = "energy over root locations, " + id_label(m);
   map.x_label = "root X (m), along the line";
   map.y_label = "root Y (m)";
-  map.z_label = "energy (J)";
   map.nx = static_cast<int>(mx);
   map.ny = static_cast<int>(my);
   map.fit_height = true;
-  map.x_min = xs[i0];
-  map.x_max = xs[i0 + (mx - 1) * kx];
-  map.y_min = ys[j0];
-  map.y_max = ys[j0 + (my - 1) * ky];
+  map.x_min = xs[c.i0];
+  map.x_max = xs[c.i0 + (mx - 1) * *kx];
+  map.y_min = ys[c.j0];
+  map.y_max = ys[c.j0 + (my - 1) * *ky];
   // a grid far longer one way than the other is drawn with axes not to scale (to scale it
   // was a sliver)
   const double span_ratio = (map.y_max - map.y_min) / (map.x_max - map.x_min);
   if (!(span_ratio < 2.5 && span_ratio > 0.4)) map.equal_aspect = false;
+  return map;
+}
+
+// the caption's account of the grid and of what is drawn
+std::string drawn_words(const MapGrid& g, const Crop& c, const ShadedMap& map) {
+  const std::string drawn =
+      c.cropped ? ", drawn where the line is reachable (X " + format_sig(map.x_min, 3) + " to " +
+                      format_sig(map.x_max, 3) + " m, Y " + format_sig(map.y_min, 3) + " to " +
+                      format_sig(map.y_max, 3) + " m; "
+                : " (";
+  return "a " + std::to_string(g.nx) + " × " + std::to_string(g.ny) + " grid" + drawn +
+         std::to_string(map.nx) + " × " + std::to_string(map.ny) + " cells drawn" +
+         (map.equal_aspect ? "" : "; axes not to scale") + ")";
+}
+
+// one placement map (rows of text in results.json) as a shaded map
+bool map_figure(const PS& pl, const PS::Map& m, FigureWriter& figures, Section& s) {
+  MapGrid g;
+  if (!read_map_grid(m, &g)) return false;
+  const Crop c = crop_to_reachable(pl, m, g);
+  size_t kx = 1, ky = 1;
+  ShadedMap map = map_frame(m.x_m, m.y_m, c, &kx, &ky);
+  map.title = "energy over root locations, " + id_label(m);
+  map.z_label = "energy (J)";
   const std::string saturation = fill_cells(g, c, kx, ky, map);
   add_map_marks(pl, m, map);
   const std::string name = "map_" + m.program + "_" + as_text(m.configuration);
-  const std::string drawn =
-      cropped ? ", drawn where the line is reachable (X " + format_sig(map.x_min, 3) + " to " +
-                    format_sig(map.x_max, 3) + " m, Y " + format_sig(map.y_min, 3) + " to " +
-                    format_sig(map.y_max, 3) + " m; "
-              : " (";
-  Figure f =
-      figures.map(name, map,
-                  id_label(m) + ": a " + std::to_string(nx) + " × " + std::to_string(ny) + " grid" +
-                      drawn + std::to_string(mx) + " × " + std::to_string(my) + " cells drawn" +
-                      (map.equal_aspect ? "" : "; axes not to scale") + ")." + saturation);
+  Figure f = figures.map(name, map, id_label(m) + ": " + drawn_words(g, c, map) + "." + saturation);
   f.half = true;  // the four maps print two by two
+  s.figure(std::move(f));
+  return true;
+}
+
+// the least cycle time over root locations of one configuration, drawn over the same nodes,
+// crop and cells as that configuration's first energy map; the fastest root, and each energy
+// optimum's, marked
+bool cycle_time_map_figure(const PS& pl, const PS::CycleTime& ct, FigureWriter& figures,
+                           Section& s) {
+  PS::Map tm;
+  tm.program = "cycle-time";
+  tm.configuration = ct.configuration;
+  tm.x_m = ct.map.x_m;
+  tm.y_m = ct.map.y_m;
+  tm.energy_J_rows = ct.map.time_s_rows;
+  tm.status_rows = ct.map.status_rows;
+  tm.optimum_xy_m = ct.optimum.root_xy_m;
+  MapGrid g;
+  if (!read_map_grid(tm, &g)) return false;
+  Crop c = crop_to_reachable(pl, tm, g);
+  for (const auto& em : pl.maps) {
+    MapGrid eg;
+    if (em.configuration != ct.configuration || !read_map_grid(em, &eg) || eg.nx != g.nx ||
+        eg.ny != g.ny)
+      continue;
+    c = crop_to_reachable(pl, em, eg);  // the energy map's axes
+    break;
+  }
+  size_t kx = 1, ky = 1;
+  ShadedMap map = map_frame(tm.x_m, tm.y_m, c, &kx, &ky);
+  map.title = "least cycle time over root locations, conf. " + as_text(ct.configuration);
+  map.z_label = "cycle time (s)";
+  const std::string saturation = fill_cells(g, c, kx, ky, map, "s", "cycle time");
+  // (no node is over a limit: the energy objective's limits do not apply here)
+  std::erase_if(map.regions, [](const MapRegion& r) {
+    return std::find(r.mask.begin(), r.mask.end(), 1) == r.mask.end();
+  });
+  Series line{"task line", {0.0, pl.length_m}, {0.0, 0.0}, {0, 0, 0}};
+  line.width = 2.5;
+  if (std::isfinite(pl.length_m)) map.overlays.push_back(line);
+  if (ct.optimum.root_xy_m)
+    map.markers.push_back({(*ct.optimum.root_xy_m)[0], (*ct.optimum.root_xy_m)[1], "fastest cycle",
+                           colour_for("cycle-time/" + as_text(ct.configuration))});
+  for (const auto& e : ct.at_energy_optima)
+    map.markers.push_back({e.root_xy_m[0], e.root_xy_m[1], "energy optimum, " + e.program,
+                           colour_for(e.program + "/" + as_text(ct.configuration)), false});
+  Figure f =
+      figures.map("map_cycle_time_" + as_text(ct.configuration), map,
+                  "Least cycle time, conf. " + as_text(ct.configuration) +
+                      ", on the exact solver's " + as_text(ct.map.grid_points) +
+                      "-point grid at each node: " + drawn_words(g, c, map) + "." + saturation);
+  f.half = true;
   s.figure(std::move(f));
   return true;
 }
@@ -468,6 +527,14 @@ std::string printed_roots_caption(const PS& pl) {
 }
 
 }  // namespace
+
+int cycle_time_maps(const PS& pl, FigureWriter& figures, Section& s) {
+  int n = 0;
+  if (pl.cycle_time)
+    for (const auto& ct : pl.cycle_time->configurations)
+      n += cycle_time_map_figure(pl, ct, figures, s);
+  return n;
+}
 
 Section maps_section(const PS& pl, FigureWriter& figures) {
   Section s;

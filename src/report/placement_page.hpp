@@ -5,6 +5,7 @@
 // and report/placement_maps.cpp (its maps, energy over direction, root loci and trade-off).
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,14 @@ std::vector<Marker> printed_root_markers(const PS& pl, int configuration);
 /// The placement maps (one per program and configuration) and the energy over the direction
 /// angle.
 Section maps_section(const PS& pl, FigureWriter& figures);
+
+/// The least cycle time over root locations, one map per configuration of the cycle-time
+/// objective (over the energy maps' crop and cells), into `s`; how many were drawn.
+int cycle_time_maps(const PS& pl, FigureWriter& figures, Section& s);
+
+/// The cycle-time objective (placement.cycle_time): the fastest placement, its limits, its
+/// maps, the trade-off with the energy objective. Nothing when the case has no such block.
+std::optional<Section> cycle_time_section(const PS& pl, FigureWriter& figures);
 
 /// The optimal root locations (the thesis's Fig. 9.30) into `maps`; the torque trade-off
 /// (Pareto fronts) as a section of its own.

@@ -695,6 +695,7 @@ void placement_sections(const PS& pl, const ResultsRecord& record, FigureWriter&
   Section maps = maps_section(pl, figures);
   Section tradeoff = loci_and_tradeoff(pl, figures, maps);
   page.sections.push_back(std::move(maps));
+  if (auto cycle = cycle_time_section(pl, figures)) page.sections.push_back(std::move(*cycle));
   page.sections.push_back(std::move(tradeoff));
   page.sections.push_back(convergence_and_evaluations(pl));
   // MuJoCo's open-loop replay of every optimum (report/replay_section.hpp)

@@ -8,7 +8,9 @@
 //     admissible ones solved, 100 grid points each) on that many threads; the counter
 //     placements_per_s is admissible nodes per wall second;
 //   BM_CycleTimeConverged: the time-optimal study at one placement (1000 points, its
-//     re-check and extrapolation): the refined optimum's last step.
+//     re-check and extrapolation): the refined optimum's last step;
+//   BM_CycleTimeFastEnergy: the fastest motion's energy at one placement (the exact solver
+//     on 1000 and 1999 points, the energy of each profile): what each optimum adds.
 // Measured, never asserted.
 #include <benchmark/benchmark.h>
 
@@ -72,5 +74,13 @@ void BM_CycleTimeConverged(benchmark::State& state) {
   state.counters["duration_s"] = t;
 }
 BENCHMARK(BM_CycleTimeConverged)->Unit(benchmark::kMillisecond);
+
+void BM_CycleTimeFastEnergy(benchmark::State& state) {
+  const Spec s = bench_spec(40, 1);
+  double e = 0;
+  for (auto _ : state) e = fastest_motion_energy(s, 1, kXs, kPhi).energy;
+  state.counters["energy_J"] = e;
+}
+BENCHMARK(BM_CycleTimeFastEnergy)->Unit(benchmark::kMillisecond);
 
 }  // namespace

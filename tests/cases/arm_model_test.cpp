@@ -196,6 +196,37 @@ TEST(ArmModel, ThePlacementArmFromMjcfAndUrdfGivesTheSameOptimum) {
   }
 }
 
+// the cycle-time objective on the arm read from MJCF (reports/cases/placement-mjcf.yaml's
+// model): the same fastest placement, time and energy as the arm written in YAML
+TEST(ArmModel, TheCycleTimeObjectiveOnTheMjcfArmIsTheYamlArms) {
+  const std::string task = std::string(kPlacementTask) +
+                           "  cycle_time:\n"
+                           "    velocity_limit_rad_s: [3.0, 4.0]\n"
+                           "    torque_limit_Nm: [20.0, 8.0]\n"
+                           "    grid_points: 300\n";
+  std::string errors;
+  pl::Spec yaml = load_case_text<pl::Spec>(task, &load_placement, &errors);
+  pl::Spec mjcf = load_case_text<pl::Spec>(
+      "arm: {model: ../../reports/cases/thesis_arm.xml}\n" + task, &load_placement, &errors);
+  ASSERT_TRUE(errors.empty()) << errors;
+  ASSERT_TRUE(mjcf.cycle_time.has_value());
+  for (pl::Spec* s : {&yaml, &mjcf}) {
+    s->map_nx = 16;  // (a map with admissible nodes: kPlacementTask's 4 x 3 has none)
+    s->map_ny = 8;
+  }
+  const pl::Result ry = pl::solve(yaml), rm = pl::solve(mjcf);
+  ASSERT_EQ(ry.cycle_time.size(), 1u);
+  ASSERT_EQ(rm.cycle_time.size(), 1u);
+  const pl::CycleTimeOptimum &oy = ry.cycle_time[0].optimum, &om = rm.cycle_time[0].optimum;
+  ASSERT_TRUE(oy.found) << oy.reason;
+  ASSERT_TRUE(om.found) << om.reason;
+  EXPECT_NEAR(om.converged.duration / oy.converged.duration - 1, 0.0, 1e-9);
+  EXPECT_LE((om.root - oy.root).norm(), 1e-9);
+  ASSERT_TRUE(oy.fast_energy.computed && om.fast_energy.computed);
+  EXPECT_NEAR(om.fast_energy.energy / oy.fast_energy.energy - 1, 0.0, 1e-9);
+  EXPECT_NE(rm.message.find("fastest cycle"), std::string::npos) << rm.message;
+}
+
 TEST(ArmModel, AVerticalModelIsRefusedByThePlacementStudyAndGravityIsTheModels) {
   std::string errors;
   load_case_text<pl::Spec>(model("arm3_vertical.xml") + kPlacementTask, &load_placement, &errors);

@@ -2,7 +2,9 @@
 // Copyright 2026 The armstudy authors
 // The placement study's cycle-time objective: its times are the time-optimal
 // study's on the same line placed at the same root, no admissible map node beats its
-// optimum, and configuration 2's optimum is configuration 1's mirror image.
+// optimum, and configuration 2's optimum is configuration 1's mirror image; the energy of
+// the fastest motion is the time-optimal motion's integral of |tau qd| by core's dynamics,
+// and the trade-off front holds no placement that another beats in both objectives.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,10 @@
 
 #include "studies/placement/cycle_time_map.hpp"
 #include "studies/placement/geometry.hpp"
+#include "studies/placement/solve.hpp"
+#include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solve.hpp"
+#include "studies/time_optimal/solvers.hpp"
 #include "testing/arms.hpp"
 
 namespace armstudy::studies::placement {
@@ -154,6 +159,125 @@ TEST(PlacementCycleTime, ConfigurationTwosOptimumIsTheMirrorImageOfConfiguration
   }
   std::cout << "largest relative difference of mirrored map nodes: " << worst << "\n";
   EXPECT_LT(worst, 2e-2);
+}
+
+// E = integral of |tau1 qd1| + |tau2 qd2| dt of the exact solver's motion on `grid_points`
+// nodes, by the time-optimal study's own state at time (core's generic inverse dynamics) and
+// the trapezoid on `steps` equal time steps
+double energy_by_core(const Spec& spec, int configuration, double x_s, double phi, int grid_points,
+                      int steps) {
+  const time_optimal::Spec t = cycle_time_problem(spec, configuration, x_s, phi, grid_points);
+  const time_optimal::Problem pb = time_optimal::make_problem(
+      t, time_optimal::Limits{t.velocity_limit, t.torque_limit, t.acceleration_limit});
+  const time_optimal::SolverOutput o = time_optimal::solve_exact(
+      pb, time_optimal::make_nodes(pb.path, grid_points - 1), t.exact.checks_per_interval);
+  EXPECT_TRUE(o.solved) << o.message;
+  std::vector<double> node_t(1, 0.0);
+  for (size_t k = 0; k + 1 < o.profile.s.size(); ++k)
+    node_t.push_back(node_t.back() + 2 * (o.profile.s[k + 1] - o.profile.s[k]) /
+                                         (o.profile.sd[k] + o.profile.sd[k + 1]));
+  double e = 0, prev = 0;
+  for (int k = 0; k <= steps; ++k) {
+    const time_optimal::TimedState st =
+        time_optimal::state_at_time(pb, o.profile, node_t, o.duration * k / steps);
+    const double p = std::abs(st.tau[0] * st.qd[0]) + std::abs(st.tau[1] * st.qd[1]);
+    if (k) e += 0.5 * (p + prev) * o.duration / steps;
+    prev = p;
+  }
+  return e;
+}
+
+TEST(PlacementCycleTime, TheFastestMotionsEnergyIsItsIntegralOfAbsolutePower) {
+  const Spec spec = cycle_spec();
+  const CycleTimeOptimum& o = cycle_solved(1).optimum;
+  ASSERT_TRUE(o.found) << o.reason;
+  const FastMotionEnergy f = fastest_motion_energy(spec, 1, o.x_s, o.phi);
+  ASSERT_TRUE(f.computed);
+  const double by_core = energy_by_core(spec, 1, o.x_s, o.phi, f.grid_points, 200000);
+  std::cout << "fastest motion at the optimum: " << f.energy << " J +- " << f.error << " J in "
+            << f.duration << " s (" << f.grid_points
+            << " points); core's dynamics, trapezoid: " << by_core << " J\n";
+  // the same motion: the two integrals differ by the trapezoid's error at the bang-bang
+  // switches (and the closed form's rounding)
+  EXPECT_TRUE(testing::near_rel(f.energy, by_core, 1e-4)) << f.energy << " " << by_core;
+  EXPECT_LT(f.error, 1e-2 * f.energy);
+  EXPECT_TRUE(testing::near_rel(f.duration, o.converged.duration, 1e-3));
+  // at a random admissible node, configuration 2
+  const CycleTimeMap& map = cycle_solved(2).map;
+  for (size_t m = map.time.size() / 2; m < map.time.size(); ++m) {
+    if (!std::isfinite(map.time[m])) continue;
+    const Eigen::Vector2d lp = line_of_root({map.x[m % map.x.size()], map.y[m / map.x.size()]});
+    const FastMotionOnGrid g = fastest_motion_on_grid(spec, 2, lp[0], lp[1], 400);
+    EXPECT_TRUE(
+        testing::near_rel(g.energy, energy_by_core(spec, 2, lp[0], lp[1], 400, 200000), 1e-4));
+    break;
+  }
+}
+
+// the energy objective's spec on a coarse sweep (one program, configuration 1) with the
+// cycle-time objective
+Spec trade_off_spec() {
+  Spec s = cycle_spec();
+  s.programs = {core::MotionProgram::kPoly345};
+  s.configurations = {1};
+  s.nx_s = 20;
+  s.phi_step = 3 * core::kDeg;
+  s.sensitivity_margins.clear();
+  return s;
+}
+
+TEST(PlacementCycleTime, TheTradeOffFrontIsNonDominatedFromTheTimeToTheEnergyOptimum) {
+  const Spec spec = trade_off_spec();
+  const Result r = solve(spec);
+  ASSERT_EQ(r.cycle_time.size(), 1u);
+  const CycleTime& ct = r.cycle_time.front();
+  ASSERT_TRUE(ct.optimum.found);
+  ASSERT_EQ(ct.at_energy_optima.size(), 1u);
+  const EnergyOptimumCycleTime& e = ct.at_energy_optima.front();
+  std::cout << r.message << "\n";
+  EXPECT_EQ(r.message.rfind("fastest cycle ", 0), 0u) << r.message;
+  ASSERT_TRUE(e.fast_energy.computed && ct.optimum.fast_energy.computed);
+  ASSERT_TRUE(e.has_energy_at_time_optimum);
+  std::cout << "time optimum " << ct.optimum.converged.duration << " s, fastest motion "
+            << ct.optimum.fast_energy.energy << " J, poly345 in T " << e.energy_at_time_optimum
+            << " J (" << status_name(e.status_at_time_optimum) << "); energy optimum " << e.energy
+            << " J, least cycle " << e.time.duration << " s, fastest motion "
+            << e.fast_energy.energy << " J; front of " << e.front.size() << "\n";
+  // the energy optimum is the least energy in T, the time optimum the least cycle time
+  EXPECT_LE(e.energy, e.energy_at_time_optimum + e.energy_at_time_optimum_error);
+  EXPECT_GE(e.time.duration + e.time.error,
+            ct.optimum.converged.duration - ct.optimum.duration_error);
+  ASSERT_GE(e.front.size(), 2u);
+  for (size_t k = 1; k < e.front.size(); ++k) {
+    EXPECT_GT(e.front[k].time, e.front[k - 1].time);
+    EXPECT_LT(e.front[k].energy, e.front[k - 1].energy);
+  }
+  // its ends: the energy optimum last (the least energy of the admissible set)
+  EXPECT_EQ(e.front.back().kind, "energy_optimum");
+  EXPECT_NEAR(e.front.back().energy, e.energy, 1e-4 * e.energy);
+  if (e.status_at_time_optimum == CandidateStatus::kFeasible) {
+    EXPECT_EQ(e.front.front().kind, "time_optimum");
+    EXPECT_TRUE(testing::near_rel(e.front.front().time, ct.optimum.fine_time, 1e-9));
+  }
+  // no admissible map node re-evaluated beats a point of the front in both objectives
+  const Arm2 arm = make_arm2(spec.chain);
+  const ProgramTable table =
+      make_program_table(core::MotionProgram::kPoly345, spec.duration, spec.length, spec.samples);
+  const EnergyMap& em = r.cases.front().map;
+  int checked = 0;
+  for (size_t m = 0; m < em.status.size(); m += 7) {
+    if (em.status[m] != CandidateStatus::kFeasible) continue;
+    const Eigen::Vector2d lp =
+        line_of_root({ct.map.x[m % ct.map.x.size()], ct.map.y[m / ct.map.x.size()]});
+    const Candidate c = evaluate_candidate(spec, arm, table, 1, lp[0], lp[1]);
+    const double t = cycle_time_on_grid(spec, 1, lp[0], lp[1], spec.cycle_time->grid_points);
+    for (const CycleEnergyPoint& p : e.front)
+      EXPECT_FALSE(t < p.time * (1 - 1e-9) && c.metrics.energy < p.energy * (1 - 1e-9))
+          << "node " << m << " (" << t << " s, " << c.metrics.energy << " J) beats " << p.kind
+          << " (" << p.time << " s, " << p.energy << " J)";
+    ++checked;
+  }
+  EXPECT_GT(checked, 10);
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "core/check.hpp"
+#include "studies/placement/arm2.hpp"
+#include "studies/time_optimal/profile.hpp"
 #include "studies/time_optimal/solve.hpp"
 #include "studies/time_optimal/solvers.hpp"
 
@@ -51,6 +53,69 @@ double cycle_time_on_grid(const Spec& spec, int configuration, double x_s, doubl
   } catch (const std::exception&) {  // (a point off the workspace or singular: no motion)
     return kNoMotion;
   }
+}
+
+namespace {
+
+// E = integral of |tau1 qd1| + |tau2 qd2| dt over the exact solver's motion (constant s''
+// per interval) along the line (x_s, phi): 4 Gauss-Legendre points per interval in time, the
+// placement's closed-form inverse dynamics at each (arm2_sample)
+double profile_energy(const Spec& spec, int configuration, double x_s, double phi,
+                      const time_optimal::Profile& profile) {
+  const Arm2 arm = make_arm2(spec.chain);
+  const Eigen::Vector2d start(x_s, 0.0), u(std::cos(phi), std::sin(phi));
+  const double sign = configuration == 1 ? 1.0 : -1.0;
+  static constexpr double kNode[2] = {0.3399810435848563, 0.8611363115940526};
+  static constexpr double kWeight[2] = {0.6521451548625461, 0.3478548451374538};
+  double energy = 0;
+  for (size_t k = 0; k + 1 < profile.s.size(); ++k) {
+    const double ds = profile.s[k + 1] - profile.s[k];
+    const double a = profile.sd[k], b = profile.sd[k + 1];
+    if (!(ds > 0) || !(a + b > 0)) continue;
+    const double sdd = (b * b - a * a) / (2 * ds), dt = 2 * ds / (a + b);
+    for (int side = -1; side <= 1; side += 2)
+      for (int g = 0; g < 2; ++g) {
+        const double tau = 0.5 * dt * (1 + side * kNode[g]);
+        const double s = profile.s[k] + a * tau + 0.5 * sdd * tau * tau, sd = a + sdd * tau;
+        const Eigen::Vector2d p = start + s * u, v = sd * u, acc = sdd * u;
+        const Arm2Sample o = arm2_sample(arm, p.x(), p.y(), v.x(), v.y(), acc.x(), acc.y(), sign);
+        energy += 0.5 * dt * kWeight[g] * (std::abs(o.tau1 * o.qd1) + std::abs(o.tau2 * o.qd2));
+      }
+  }
+  return energy;
+}
+
+}  // namespace
+
+FastMotionOnGrid fastest_motion_on_grid(const Spec& spec, int configuration, double x_s, double phi,
+                                        int grid_points) {
+  constexpr double kNoMotion = std::numeric_limits<double>::quiet_NaN();
+  const time_optimal::Spec t = cycle_time_problem(spec, configuration, x_s, phi, grid_points);
+  const time_optimal::Limits limits{t.velocity_limit, t.torque_limit, t.acceleration_limit};
+  try {
+    const time_optimal::Problem pb = time_optimal::make_problem(t, limits);
+    const time_optimal::SolverOutput o = time_optimal::solve_exact(
+        pb, time_optimal::make_nodes(pb.path, grid_points - 1), t.exact.checks_per_interval);
+    if (!o.solved) return {kNoMotion, kNoMotion};
+    return {o.duration, profile_energy(spec, configuration, x_s, phi, o.profile)};
+  } catch (const std::exception&) {  // (a point off the workspace or singular: no motion)
+    return {kNoMotion, kNoMotion};
+  }
+}
+
+FastMotionEnergy fastest_motion_energy(const Spec& spec, int configuration, double x_s,
+                                       double phi) {
+  FastMotionEnergy out;
+  const int n = spec.cycle_time->grid_points;
+  const FastMotionOnGrid coarse = fastest_motion_on_grid(spec, configuration, x_s, phi, n);
+  const FastMotionOnGrid fine = fastest_motion_on_grid(spec, configuration, x_s, phi, 2 * n - 1);
+  if (!std::isfinite(coarse.energy) || !std::isfinite(fine.energy)) return out;
+  out.computed = true;
+  out.energy = fine.energy;
+  out.error = std::abs(fine.energy - coarse.energy);
+  out.grid_points = 2 * n - 1;
+  out.duration = fine.duration;
+  return out;
 }
 
 namespace {

@@ -31,6 +31,19 @@ time_optimal::Spec cycle_time_problem(const Spec& spec, int configuration, doubl
 double cycle_time_on_grid(const Spec& spec, int configuration, double x_s, double phi,
                           int grid_points);
 
+/// The fastest motion on `grid_points` uniform nodes (the exact solver once, as
+/// cycle_time_on_grid): its time (s) and its energy (J, FastMotionEnergy's measure); both
+/// NaN when it finds no motion.
+struct FastMotionOnGrid {
+  double duration = 0, energy = 0;
+};
+FastMotionOnGrid fastest_motion_on_grid(const Spec& spec, int configuration, double x_s, double phi,
+                                        int grid_points);
+
+/// The energy of the fastest motion at one placement on spec.cycle_time->grid_points nodes
+/// and on the grid with every interval halved (FastMotionEnergy).
+FastMotionEnergy fastest_motion_energy(const Spec& spec, int configuration, double x_s, double phi);
+
 /// The converged least traversal time at one placement: the time-optimal study solved on
 /// the line (cycle_time_problem at spec.cycle_time->grid_points), its exact solution
 /// re-checked densely and its duration extrapolated over the grids with its error.

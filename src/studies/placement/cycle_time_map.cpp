@@ -2,16 +2,23 @@
 // Copyright 2026 The armstudy authors
 #include "studies/placement/cycle_time_map.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <locale>
+#include <optional>
+#include <sstream>
+#include <string>
 
 #include "studies/grid.hpp"
 #include "studies/placement/arm2.hpp"
 #include "studies/placement/candidate.hpp"
 #include "studies/placement/geometry.hpp"
 #include "studies/placement/parallel.hpp"
+#include "studies/placement/quadrature.hpp"
 
 namespace armstudy::studies::placement {
 namespace {
@@ -167,6 +174,132 @@ CycleTimeOptimum cycle_time_optimum(const Spec& spec, int configuration, const C
   return out;
 }
 
+namespace {
+
+// the point of the trade-off at root (X, Y): both objectives' values, or none when the
+// placement is not admissible for the energy objective or has no motion within the limits
+std::optional<CycleEnergyPoint> trade_off_point(const Spec& spec, const Arm2& arm,
+                                                const ProgramTable& table, int configuration,
+                                                const Eigen::Vector2d& root, std::string kind) {
+  CycleEnergyPoint p;
+  p.root = root;
+  const Eigen::Vector2d lp = line_of_root(root);
+  p.x_s = lp[0];
+  p.phi = lp[1];
+  const Candidate c = evaluate_candidate(spec, arm, table, configuration, p.x_s, p.phi);
+  if (c.status != CandidateStatus::kFeasible || !c.metrics.finite()) return std::nullopt;
+  p.energy = c.metrics.energy;
+  const FastMotionOnGrid f =
+      fastest_motion_on_grid(spec, configuration, p.x_s, p.phi, spec.cycle_time->grid_points);
+  if (!std::isfinite(f.duration)) return std::nullopt;
+  p.time = f.duration;
+  p.fast_energy = f.energy;
+  p.kind = std::move(kind);
+  return p;
+}
+
+// the points none of `pts` beats in both time and energy, by increasing time
+std::vector<CycleEnergyPoint> non_dominated(std::vector<CycleEnergyPoint> pts) {
+  std::sort(pts.begin(), pts.end(), [](const CycleEnergyPoint& a, const CycleEnergyPoint& b) {
+    return a.time < b.time || (a.time == b.time && a.energy < b.energy);
+  });
+  std::vector<CycleEnergyPoint> out;
+  for (CycleEnergyPoint& p : pts)
+    if (out.empty() || p.energy < out.back().energy) out.push_back(std::move(p));
+  return out;
+}
+
+// the coarse grid's times read slow, by 0.2 to 1.7 % on example 3's map (docs/placement.md),
+// not evenly: a node is dropped before its re-evaluation only when a node this much faster
+// has less energy
+constexpr double kCoarseTimeSlack = 5e-2;
+
+// the points no point faster by more than `slack` (relative) beats in energy, by time
+std::vector<CycleEnergyPoint> nearly_non_dominated(std::vector<CycleEnergyPoint> pts,
+                                                   double slack) {
+  std::sort(pts.begin(), pts.end(),
+            [](const CycleEnergyPoint& a, const CycleEnergyPoint& b) { return a.time < b.time; });
+  std::vector<CycleEnergyPoint> out;
+  double least = std::numeric_limits<double>::infinity();  // over the points faster by slack
+  size_t faster = 0;
+  for (const CycleEnergyPoint& p : pts) {
+    while (faster < pts.size() && pts[faster].time < p.time * (1 - slack))
+      least = std::min(least, pts[faster++].energy);
+    if (p.energy < least) out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<CycleEnergyPoint> cycle_energy_front(const Spec& spec, const ProgramConfig& energy,
+                                                 const CycleTimeMap& map,
+                                                 const CycleTimeOptimum& optimum) {
+  const Arm2 arm = make_arm2(spec.chain);
+  const ProgramTable table =
+      make_program_table(energy.program, spec.duration, spec.length, spec.samples);
+  const size_t n = map.time.size();
+  if (energy.map.energy.size() != n || energy.map.status.size() != n) return {};
+  // the nodes that no node faster by kCoarseTimeSlack beats in energy on the maps' own
+  // values (the coarse time, the map's energy)...
+  std::vector<CycleEnergyPoint> nodes;
+  for (size_t m = 0; m < n; ++m) {
+    if (!std::isfinite(map.time[m]) || energy.map.status[m] != CandidateStatus::kFeasible ||
+        !std::isfinite(energy.map.energy[m]))
+      continue;
+    CycleEnergyPoint p;
+    p.root = {map.x[m % map.x.size()], map.y[m / map.x.size()]};
+    p.time = map.time[m];
+    p.energy = energy.map.energy[m];
+    nodes.push_back(p);
+  }
+  nodes = nearly_non_dominated(std::move(nodes), kCoarseTimeSlack);
+  // ...each evaluated again on the converged grid and the sweep's samples, with both optima
+  std::vector<CycleEnergyPoint> pts;
+  auto add = [&](const Eigen::Vector2d& root, const char* kind) {
+    if (auto p = trade_off_point(spec, arm, table, energy.configuration, root, kind))
+      pts.push_back(std::move(*p));
+  };
+  for (const CycleEnergyPoint& p : nodes) add(p.root, "map_node");
+  if (energy.found) add(energy.refined.root, "energy_optimum");
+  if (optimum.found) add(optimum.root, "time_optimum");
+  return non_dominated(std::move(pts));
+}
+
+namespace {
+
+// the cycle-time objective's figures at the energy optimum of `pc` and the energy objective's
+// at the cycle-time optimum of its configuration
+EnergyOptimumCycleTime at_energy_optimum(const Spec& spec, const ProgramConfig& pc,
+                                         const CycleTime& ct) {
+  EnergyOptimumCycleTime e;
+  e.program = pc.program;
+  e.x_s = pc.refined.x_s;
+  e.phi = pc.refined.phi;
+  e.root = pc.refined.root;
+  e.energy = pc.refined.reported_metrics().energy;
+  e.time = converged_cycle_time(spec, ct.configuration, e.x_s, e.phi);
+  e.fast_energy = fastest_motion_energy(spec, ct.configuration, e.x_s, e.phi);
+  if (ct.optimum.found) {
+    const Arm2 arm = make_arm2(spec.chain);
+    const ProgramTable table =
+        make_program_table(pc.program, spec.duration, spec.length, spec.samples);
+    const Candidate c =
+        evaluate_candidate(spec, arm, table, ct.configuration, ct.optimum.x_s, ct.optimum.phi);
+    e.status_at_time_optimum = c.status;
+    const EnergyQuadrature q =
+        energy_quadrature(arm, pc.program, spec.duration, spec.length,
+                          thesis_line(ct.optimum.x_s, ct.optimum.phi), ct.configuration);
+    e.has_energy_at_time_optimum = std::isfinite(q.energy);
+    e.energy_at_time_optimum = q.energy;
+    e.energy_at_time_optimum_error = q.error;
+  }
+  e.front = cycle_energy_front(spec, pc, ct.map, ct.optimum);
+  return e;
+}
+
+}  // namespace
+
 std::vector<CycleTime> cycle_times(const Spec& spec, const std::vector<ProgramConfig>& energy,
                                    const ProgressFn& progress, double p0, double p1) {
   std::vector<CycleTime> out;
@@ -180,19 +313,69 @@ std::vector<CycleTime> cycle_times(const Spec& spec, const std::vector<ProgramCo
     });
     if (progress) progress(q0 + 0.8 * share, "cycle-time optimum");
     ct.optimum = cycle_time_optimum(spec, configuration, ct.map);
-    for (const ProgramConfig& pc : energy) {
-      if (pc.configuration != configuration || !pc.found) continue;
-      EnergyOptimumCycleTime e;
-      e.program = pc.program;
-      e.x_s = pc.refined.x_s;
-      e.phi = pc.refined.phi;
-      e.root = pc.refined.root;
-      e.energy = pc.refined.reported_metrics().energy;
-      e.time = converged_cycle_time(spec, configuration, e.x_s, e.phi);
-      ct.at_energy_optima.push_back(e);
-    }
+    if (ct.optimum.found)
+      ct.optimum.fast_energy =
+          fastest_motion_energy(spec, configuration, ct.optimum.x_s, ct.optimum.phi);
+    for (const ProgramConfig& pc : energy)
+      if (pc.configuration == configuration && pc.found)
+        ct.at_energy_optima.push_back(at_energy_optimum(spec, pc, ct));
     out.push_back(std::move(ct));
   }
+  return out;
+}
+
+namespace {
+
+std::string sig(double v, int digits) {
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os << std::setprecision(digits) << v;
+  return os.str();
+}
+
+}  // namespace
+
+std::string cycle_time_sentence(const std::vector<CycleTime>& cycle_time,
+                                core::MotionProgram program, int configuration, double duration) {
+  const CycleTime* fast = nullptr;
+  for (const CycleTime& c : cycle_time)
+    if (c.optimum.found &&
+        (!fast || c.optimum.converged.duration <
+                      fast->optimum.converged.duration -
+                          (c.optimum.duration_error + fast->optimum.duration_error)))
+      fast = &c;
+  if (!fast) return "";
+  const CycleTimeOptimum& o = fast->optimum;
+  std::string out =
+      "fastest cycle " + sig(o.converged.duration, 7) + " s ± " + sig(o.duration_error, 2) +
+      " s (configuration " + std::to_string(o.configuration) +
+      ") with the root at X = " + sig(o.root.x(), 6) + " m, Y = " + sig(o.root.y(), 6) + " m";
+  // the energy-optimal placement of the least energy, in the same configuration as the
+  // summary's (its mirror image otherwise has the same figures)
+  const EnergyOptimumCycleTime* e = nullptr;
+  for (const CycleTime& c : cycle_time)
+    for (const EnergyOptimumCycleTime& a : c.at_energy_optima)
+      if (a.program == program && c.configuration == configuration) e = &a;
+  if (!e || !e->time.solved) return out;
+  const double faster = 100 * (1 - o.converged.duration / e->time.duration);
+  const std::string prog(core::program_name(program));
+  out += ", " + sig(faster, 3) + " % faster than the least cycle at the energy-optimal " +
+         "placement (" + prog + ", configuration " + std::to_string(configuration) + ": " +
+         sig(e->time.duration, 6) + " s)";
+  if (o.fast_energy.computed && e->fast_energy.computed) {
+    const double d = o.fast_energy.energy - e->fast_energy.energy;
+    out += "; that fastest cycle costs " + sig(o.fast_energy.energy, 4) + " J, " +
+           sig(std::abs(d), 3) + " J " + (d >= 0 ? "more" : "less") +
+           " than the fastest cycle at the energy-optimal placement";
+  }
+  if (e->has_energy_at_time_optimum)
+    out += ", and the " + prog + " motion in T = " + sig(duration, 4) + " s costs " +
+           sig(e->energy_at_time_optimum, 5) + " J there against " + sig(e->energy, 5) +
+           " J at the energy optimum" +
+           (e->status_at_time_optimum == CandidateStatus::kFeasible
+                ? ""
+                : " (not admissible for the energy objective there: " +
+                      std::string(status_name(e->status_at_time_optimum)) + ")");
   return out;
 }
 

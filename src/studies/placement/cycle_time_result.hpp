@@ -41,6 +41,34 @@ struct ConvergedCycleTime {
   std::vector<LimitUse> limits;  ///< every limit of the problem, joint by joint
 };
 
+/// The energy of a fastest motion: E = integral of |tau1 qd1| + |tau2 qd2| dt (eq. 8.1), the
+/// energy objective's measure, over the time-optimal motion (constant s'' per interval of the
+/// exact solver's grid; 4 Gauss-Legendre points per interval, the placement's closed-form
+/// inverse dynamics, arm2.hpp) on spec.cycle_time->grid_points nodes and on the grid with
+/// every interval halved: the finer grid's energy, the change as its error (the exact
+/// solver's switching points move by a grid interval: first order).
+struct FastMotionEnergy {
+  bool computed = false;
+  double energy = 0;    ///< J, on the halved grid
+  double error = 0;     ///< J, |E(halved) - E(grid)|
+  int grid_points = 0;  ///< the halved grid's nodes
+  double duration = 0;  ///< s, that motion's time on the halved grid
+};
+
+/// One placement of the trade-off between the cycle-time and the energy objective (one
+/// program and configuration): the least cycle time there (the exact solver on the uniform
+/// spec.cycle_time->grid_points grid, not extrapolated), the energy objective's energy of the
+/// program's motion in T (the sweep's sampled energy, spec.samples) and the energy of the
+/// fastest motion there (the same solve). Every point is admissible for both objectives.
+struct CycleEnergyPoint {
+  Eigen::Vector2d root = Eigen::Vector2d::Zero();  ///< m, (X, Y) in the line frame
+  double x_s = 0, phi = 0;                         ///< m, rad
+  double time = 0;                                 ///< s
+  double energy = 0;                               ///< J, the program's motion in T
+  double fast_energy = 0;                          ///< J, the fastest motion's
+  std::string kind;  ///< "energy_optimum", "time_optimum" or "map_node"
+};
+
 /// The least traversal time over root locations (X, Y) in the line frame, one
 /// configuration: the energy map's nodes (row-major, row j is Y = y[j], column i X = x[i]).
 struct CycleTimeMap {
@@ -70,6 +98,7 @@ struct CycleTimeOptimum {
   double inner_slack = 0, outer_slack = 0;  ///< m, clearances to the circles minus the margin
   bool set_by_margin = false;               ///< a clearance slack is within root_error of 0
   ConvergedCycleTime converged;  ///< the duration, its error and the limits at the optimum
+  FastMotionEnergy fast_energy;  ///< what the fastest motion at the optimum costs
   /// s: how far the printed duration may lie above the least one, the extrapolation's error
   /// plus the largest time difference over the last compass ring on the converged grid (the
   /// objective's change within root_error)
@@ -84,6 +113,16 @@ struct EnergyOptimumCycleTime {
   Eigen::Vector2d root = Eigen::Vector2d::Zero();  ///< m
   double energy = 0;                               ///< J, of its fixed-duration motion
   ConvergedCycleTime time;
+  FastMotionEnergy fast_energy;  ///< the fastest motion at this placement
+  /// the energy objective at the cycle-time optimum of the configuration: this program's
+  /// motion in T there (adaptive quadrature, quadrature.hpp), its error and the placement's
+  /// status for the energy objective (a torque or power limit of it may exclude it)
+  double energy_at_time_optimum = 0, energy_at_time_optimum_error = 0;
+  bool has_energy_at_time_optimum = false;
+  CandidateStatus status_at_time_optimum{};
+  /// the non-dominated placements of (least cycle time, this program's energy in T) over
+  /// the map's nodes admissible for both objectives and both optima, by increasing time
+  std::vector<CycleEnergyPoint> front;
 };
 
 /// The cycle-time objective of one configuration.

@@ -827,6 +827,10 @@ std::string summary_message(const Spec& spec, const Annulus& an, const Result& r
                                       best->refined.convergence.energy_error)))
       best = &c;
   std::ostringstream os;
+  // the cycle-time objective's answer first when the case asks for it
+  const std::string fastest =
+      cycle_time_sentence(res.cycle_time, best->program, best->configuration, spec.duration);
+  if (!fastest.empty()) os << fastest << "; ";
   os << "least energy " << fmt(best->refined.reported_metrics().energy) << " J ("
      << core::program_name(best->program) << ", configuration " << best->configuration
      << ") with the root at X = " << fmt(best->refined.root.x())

@@ -45,6 +45,18 @@ struct CycleTimeAt {
   std::vector<CycleTimeLimitUse> limits;
 };
 
+/// the energy of a fastest motion (cycle_time_result.hpp, FastMotionEnergy)
+struct FastEnergy {
+  double energy_J = 0, error_J = 0, duration_s = 0;
+  int grid_points = 0;
+};
+/// a placement of the trade-off between the cycle time and the energy (CycleEnergyPoint)
+struct TradeOffPoint {
+  std::string kind;
+  std::array<double, 2> root_xy_m{};
+  double x_s_m = 0, phi_deg = 0, cycle_time_s = 0, energy_J = 0, fast_motion_energy_J = 0;
+};
+
 struct StudyResults {
   using Pair = std::array<double, 2>;
   /// which motion program and elbow configuration an entry belongs to
@@ -215,6 +227,7 @@ struct StudyResults {
     std::optional<bool> set_by_margin;
     int refinement_solves = 0;
     std::optional<CycleTimeAt> converged;
+    std::optional<FastEnergy> fast_motion_energy;
   };
   struct CycleTimeMap {
     std::vector<double> x_m, y_m;
@@ -228,6 +241,10 @@ struct StudyResults {
     double x_s_m = 0, phi_deg = 0, energy_J = 0;
     Pair root_xy_m{};
     CycleTimeAt cycle_time;
+    std::optional<FastEnergy> fast_motion_energy;
+    std::optional<double> energy_at_time_optimum_J, energy_at_time_optimum_error_J;
+    std::string status_at_time_optimum;
+    std::vector<TradeOffPoint> front;
   };
   struct CycleTime {
     int configuration = 1;
@@ -564,6 +581,29 @@ void fields(V& v, StudyResults::CycleTimeAt& x) {
   v("limits", x.limits, "every limit's largest use by the fastest motion");
 }
 template <class V>
+void fields(V& v, FastEnergy& x) {
+  v("energy_J", x.energy_J,
+    "integral of |tau1 qd1| + |tau2 qd2| dt over the time-optimal motion (the energy "
+    "objective's measure), on the exact solver's grid with every interval halved");
+  v("error_J", x.error_J, "its change from the unhalved grid (its error estimate)");
+  v("duration_s", x.duration_s, "that motion's time on the halved grid");
+  v("grid_points", x.grid_points, "the halved grid's nodes");
+}
+template <class V>
+void fields(V& v, TradeOffPoint& x) {
+  v("kind", x.kind, "energy_optimum, time_optimum or map_node");
+  v("root_xy_m", x.root_xy_m, "the root (X, Y) in the line frame");
+  v("x_s_m", x.x_s_m, "its line start abscissa");
+  v("phi_deg", x.phi_deg, "its line direction");
+  v("cycle_time_s", x.cycle_time_s,
+    "the least cycle time there on the converged grid (uniform, not extrapolated)");
+  v("energy_J", x.energy_J,
+    "the energy objective there: the program's motion in the case's duration (the sweep's "
+    "samples)");
+  v("fast_motion_energy_J", x.fast_motion_energy_J,
+    "the energy of the fastest motion there (the same solve)");
+}
+template <class V>
 void fields(V& v, StudyResults::CycleTimeOptimum& x) {
   v("found", x.found, "an admissible placement with a motion exists");
   v("reason", x.reason, "why not ('' when found)");
@@ -584,6 +624,8 @@ void fields(V& v, StudyResults::CycleTimeOptimum& x) {
   v("set_by_margin", x.set_by_margin, "a clearance slack is within 2 root_error_m of 0");
   v("refinement_solves", x.refinement_solves, "exact solves of the compass search");
   v("converged", x.converged, "the time-optimal study at the optimum (null: not found)");
+  v("fast_motion_energy", x.fast_motion_energy,
+    "what the fastest motion at the optimum costs in energy (null: not computed)");
 }
 template <class V>
 void fields(V& v, StudyResults::CycleTimeMap& x) {
@@ -606,6 +648,19 @@ void fields(V& v, StudyResults::EnergyOptimumTime& x) {
   v("root_xy_m", x.root_xy_m, "its root in the line frame");
   v("energy_J", x.energy_J, "its energy (fixed duration, the program's motion)");
   v("cycle_time", x.cycle_time, "the least cycle time at that placement");
+  v("fast_motion_energy", x.fast_motion_energy,
+    "what the fastest motion at that placement costs in energy (null: not computed)");
+  v("energy_at_time_optimum_J", x.energy_at_time_optimum_J,
+    "the program's motion in the case's duration at the cycle-time optimum of the "
+    "configuration, by adaptive quadrature (null: no time optimum)");
+  v("energy_at_time_optimum_error_J", x.energy_at_time_optimum_error_J,
+    "its quadrature error estimate");
+  v("status_at_time_optimum", x.status_at_time_optimum,
+    "the cycle-time optimum's status for the energy objective (feasible, over_limit, ...; "
+    "'' without a time optimum)");
+  v("front", x.front,
+    "the Pareto front of (least cycle time, this program's energy in the case's duration) over "
+    "the map's nodes admissible for both objectives and both optima, by increasing time");
 }
 template <class V>
 void fields(V& v, StudyResults::CycleTime& x) {
