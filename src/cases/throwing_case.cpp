@@ -95,6 +95,7 @@ void read_nlopt(Map& n, studies::ThrowingSpec& s) {
   num(n, "ftol_rel", s.nlopt.ftol_rel, NumberRule::range(1e-12, 0.1, ""));
   num(n, "xtol_rel", s.nlopt.xtol_rel, NumberRule::range(1e-12, 0.1, ""));
   num(n, "fd_step_rad_s", s.nlopt.fd_step, NumberRule::range(1e-9, 1e-1, "rad/s"));
+  s.nlopt.exact_gradient = n.boolean_or("exact_gradient", s.nlopt.exact_gradient);
   num(n, "kkt_tolerance", s.nlopt.kkt_tolerance, NumberRule::range(1e-8, 1.0, ""));
   num(n, "restart_gain", s.nlopt.restart_gain, NumberRule::range(1e-12, 0.1, ""));
   s.nlopt.restarts = n.integer_or("restarts", s.nlopt.restarts, 0, 100);
