@@ -252,25 +252,33 @@ BENCHMARK(BM_ThrowGradient)->ArgsProduct({{16, 64, 256}, {0, 1, 2}})->Unit(bench
 
 // the bundled throwing case solved whole (ThrowingSpec's defaults are the bundled case's):
 // IDP, SLSQP from every start on 16 stages, then the control grids (32, 64 stages; argument:
-// grid.refinements, 0 the first grid alone). CPU time of the process (both threads): the
-// budget of the converged throw is 60 s of CPU on the 2-core CI machine
+// grid.refinements, 0 the first grid alone; second: nlopt.exact_gradient). CPU time of the
+// process (both threads): the budget of the converged throw is 60 s of CPU on the 2-core CI
+// machine
 void BM_ThrowingSolved(benchmark::State& state) {
   ThrowingSpec spec;
   spec.grid.refinements = static_cast<int>(state.range(0));
+  spec.nlopt.exact_gradient = state.range(1) == 1;
   double energy = 0;
-  long sims = 0;
+  long sims = 0, grids = 0;
   for (auto _ : state) {
     const ThrowingResult r = solve_throwing(spec);
     energy = r.nlopt.evaluation.energy;
+    grids = static_cast<long>(r.grids.size());
     sims = 0;
     for (const auto& g : r.grids) sims += g.simulations;
   }
   state.counters["energy_J"] = energy;
   state.counters["slsqp_simulations"] = static_cast<double>(sims);
+  state.counters["grids"] = static_cast<double>(grids);
 }
 BENCHMARK(BM_ThrowingSolved)
-    ->Arg(0)
-    ->Arg(2)
+    ->Args({0, 0})
+    ->Args({2, 0})
+    ->Args({0, 1})
+    ->Args({2, 1})
+    ->Args({3, 1})
+    ->Args({4, 1})
     ->Iterations(1)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kSecond);

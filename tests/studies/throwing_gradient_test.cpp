@@ -17,6 +17,7 @@
 #include <random>
 
 #include "studies/throwing/grid_sequence.hpp"
+#include "studies/throwing/nlopt_solve.hpp"
 #include "studies/throwing/solve.hpp"
 #include "studies/throwing/throw_gradient.hpp"
 
@@ -144,6 +145,24 @@ TEST(ThrowGradient, EqualsCentralDifferencesAtTheSixtyFourStageAnswer) {
   const Agreement a = compare(s, p, 0.02);
   EXPECT_GT(a.compared, 10 * a.skipped);
   EXPECT_LT(a.worst, 1e-6) << a.compared << " compared, " << a.skipped << " at kinks";
+}
+
+// SLSQP with the exact derivatives (nlopt.exact_gradient) from the 16-stage answer of the
+// central differences stays there: feasible, first-order converged, the same energy to 0.1 %,
+// one simulation per gradient
+TEST(ThrowGradient, SlsqpWithExactDerivativesHoldsTheSixteenStageAnswer) {
+  const ThrowingSpec spec;
+  const ThrowSetup s = make_throw_setup(spec);
+  const VelocityProfile p = answer_profile(spec, kAnswer16);
+  NloptSettings settings = spec.nlopt;
+  settings.backoff = spec.backoff;
+  settings.exact_gradient = true;
+  const NloptOutcome out = run_nlopt(s, p, spec.release - spec.start, settings);
+  const double e0 = simulate_profile(s, p).energy;
+  EXPECT_TRUE(out.feasible);
+  EXPECT_TRUE(out.converged) << out.kkt_residual << " " << out.restart_gain;
+  EXPECT_NEAR(out.evaluation.energy, e0, 1e-3 * e0);
+  EXPECT_EQ(out.simulations, out.iterations);
 }
 
 }  // namespace

@@ -302,8 +302,9 @@ ThrowDerivatives ThrowSensitivity::finish(const core::OdeState& x, const SensSta
                            1.0 / s_.voltage_max, 1.0 / s_.current_max, 1.0 / s_.power_max};
   for (int k = 0; k < P_; ++k)
     for (int c = 0; c < 6; ++c)
-      d.constraint_jacobian.row(c * P_ + k) = scale[c] * worst_[6 * size_t(k) + c].grad;
-  d.constraint_jacobian.row(6 * P_) =
+      d.constraint_jacobian.row(Eigen::Index(c) * P_ + k) =
+          scale[c] * worst_[6 * size_t(k) + c].grad;
+  d.constraint_jacobian.row(6 * Eigen::Index(P_)) =
       (sens_sign(x[0] - s_.theta3_release) / s_.release_tolerance) * S.row(0);
   return d;
 }
