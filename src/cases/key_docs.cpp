@@ -255,6 +255,8 @@ const std::vector<KeyDoc> kDocs = {
     {"throwing", "throwing.nlopt.hops", "Starts from the best local optimum, perturbed."},
     {"throwing", "throwing.nlopt.hop_size_rad_s", "Their perturbation per node rate."},
     {"throwing", "throwing.nlopt.fd_step_rad_s", "Central-difference step."},
+    {"throwing", "throwing.nlopt.exact_gradient",
+     "Exact gradients (RK4 forward sensitivities) in place of central differences."},
     {"throwing", "throwing.checks", "The checks of the answer."},
     {"throwing", "throwing.checks.replay_tolerance_rad",
      "Open-loop voltage replay against the plan."},

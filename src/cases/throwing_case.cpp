@@ -95,6 +95,7 @@ void read_nlopt(Map& n, studies::ThrowingSpec& s) {
   num(n, "ftol_rel", s.nlopt.ftol_rel, NumberRule::range(1e-12, 0.1, ""));
   num(n, "xtol_rel", s.nlopt.xtol_rel, NumberRule::range(1e-12, 0.1, ""));
   num(n, "fd_step_rad_s", s.nlopt.fd_step, NumberRule::range(1e-9, 1e-1, "rad/s"));
+  s.nlopt.exact_gradient = n.boolean_or("exact_gradient", s.nlopt.exact_gradient);
   num(n, "kkt_tolerance", s.nlopt.kkt_tolerance, NumberRule::range(1e-8, 1.0, ""));
   num(n, "restart_gain", s.nlopt.restart_gain, NumberRule::range(1e-12, 0.1, ""));
   s.nlopt.restarts = n.integer_or("restarts", s.nlopt.restarts, 0, 100);
@@ -154,20 +155,24 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
   // its budget of gradient evaluations
   const double starts = 3.0 + s.nlopt.perturbed_starts + s.nlopt.hops;
   // then each finer grid (the same RK4 step, 2^l x the stages): refine_best starts on the
-  // first, one on the others, each a gradient of 4 (stages - 1) + 1 simulations
+  // first, one on the others, each a gradient of 4 (stages - 1) + 1 simulations, or exact
+  // (BM_ThrowGradient: about 12 + (stages - 1) / 8 simulations' time)
+  auto gradient = [&](double stages) {
+    return s.nlopt.exact_gradient ? 12.0 + (stages - 1.0) / 8.0 : 4.0 * (stages - 1.0) + 1.0;
+  };
   double grids = 0.0;
   for (int l = 1; l <= s.grid.refinements; ++l)
     grids += (l == 1 ? s.grid.refine_best + 1.0 : 2.0) * s.nlopt.max_evaluations *
-             (4.0 * ((s.stages << l) - 1.0) + 1.0);
+             gradient(s.stages << l);
   const double nlopt =
-      s.run_nlopt ? starts * s.nlopt.max_evaluations * (4.0 * (s.stages - 1.0) + 1.0) + grids : 0.0;
+      s.run_nlopt ? starts * s.nlopt.max_evaluations * gradient(s.stages) + grids : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
   d.keys =
       "throwing.idp.seeds, throwing.idp.max_passes, throwing.idp.iterations, throwing.idp.stages, "
       "throwing.idp.candidates, "
-      "throwing.idp.steps_per_stage, throwing.nlopt.max_evaluations and "
-      "throwing.grid.refinements";
+      "throwing.idp.steps_per_stage, throwing.nlopt.max_evaluations, "
+      "throwing.nlopt.exact_gradient and throwing.grid.refinements";
   d.unit = "RK4 steps";
   d.work = (idp + nlopt) * steps;
   d.work_budget = 1e9;

@@ -70,6 +70,7 @@
 ///     converged), > 0 ftol_rel: 1.0e-6                 # converged: relative energy change below
 ///     this xtol_rel: 1.0e-6                 # or relative rate change below this
 ///     fd_step_rad_s: 1.0e-5            # central-difference step, > 0
+///     exact_gradient: false            # exact derivatives in place of central differences
 ///   checks:
 ///     replay_tolerance_rad: 0.002      # open-loop replay vs plan, > 0
 ///     allow_not_converged: false       # true: a run ending on its budget does not fail

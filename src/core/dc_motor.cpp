@@ -11,11 +11,7 @@ double sign(double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); }
 
 MotorSample motor_sample(const DcMotor& m, double qd, double qdd, double tau) {
   MotorSample s;
-  const double b3 = m.Ra / m.kt;
-  // eq. 5
-  s.voltage = (m.kv + b3 * m.Dm) * qd + b3 * m.Im * qdd + b3 * tau + b3 * m.tau_f * sign(qd);
-  // eq. 6
-  s.current = (s.voltage - m.kv * qd) / m.Ra;
+  motor_electrics(m, qd, qdd, tau, s.voltage, s.current);  // eq. 5, 6
   s.power = s.voltage * s.current;
   s.copper = m.Ra * s.current * s.current;
   s.friction = (m.Dm * qd + m.tau_f * sign(qd)) * qd;

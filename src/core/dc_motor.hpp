@@ -33,6 +33,17 @@ struct MotorSample {
   double load = 0;      ///< W, tau qd (mechanical power into the arm)
 };
 
+/// Eq. 5's voltage and eq. 6's current for any scalar type (motor_sample's expressions,
+/// its double instance; throw_gradient.hpp differentiates them). sign(0) is taken as 0.
+template <typename T>
+void motor_electrics(const DcMotor& m, const T& qd, const T& qdd, const T& tau, T& voltage,
+                     T& current) {
+  const double b3 = m.Ra / m.kt;
+  const double sg = qd > 0.0 ? 1.0 : (qd < 0.0 ? -1.0 : 0.0);
+  voltage = (m.kv + b3 * m.Dm) * qd + b3 * m.Im * qdd + b3 * tau + b3 * m.tau_f * sg;
+  current = (voltage - m.kv * qd) / m.Ra;
+}
+
 /// Voltage, current and power split of `motor` driving a joint at (qd, qdd) with load tau.
 /// sign(0) is taken as 0.
 MotorSample motor_sample(const DcMotor& motor, double qd, double qdd, double tau);

@@ -13,10 +13,12 @@
 #include <benchmark/benchmark.h>
 
 #include "studies/pendulum/solve.hpp"
+#include "studies/throwing/grid_sequence.hpp"
 #include "studies/throwing/idp.hpp"
 #include "studies/throwing/nlopt_solve.hpp"
 #include "studies/throwing/simulate_kernel.hpp"
 #include "studies/throwing/solve.hpp"
+#include "studies/throwing/throw_gradient.hpp"
 
 namespace {
 using namespace armstudy::studies;
@@ -211,27 +213,72 @@ BENCHMARK(BM_SlsqpGradient)
     ->Args({1, 4})
     ->Unit(benchmark::kMillisecond);
 
+// one gradient of the energy and every constraint value on the bundled case's eq. 8 profile
+// on P stages (first argument; the RK4 step kept at 2.5 ms, grid_setup), on one core;
+// second argument: 0 central differences as SLSQP takes them (evaluate_neighbours, resumed,
+// the kernel 4 lanes at once: 2n + 1 simulations), 1 the exact derivatives
+// (throw_gradient.hpp), 2 one simulation alone (the kernel), the unit of the other two
+void BM_ThrowGradient(benchmark::State& state) {
+  Fixture f;
+  const int P = static_cast<int>(state.range(0));
+  const int mode = static_cast<int>(state.range(1));
+  const ThrowSetup setup = grid_setup(f.setup, f.profile.stages(), P);
+  const VelocityProfile profile = eq8_profile(f.spec.start, Eigen::Vector2d::Zero(), f.spec.release,
+                                              f.spec.release_rate, f.spec.tf, P);
+  std::vector<VelocityProfile> ps{profile};
+  std::vector<int> first{0};
+  for (int k = 1; k < P && mode == 0; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (double step : {1e-5, -1e-5}) {
+        VelocityProfile p = profile;
+        p.v(j, k) += step;
+        ps.push_back(p);
+        first.push_back(k - 1);
+      }
+  for (auto _ : state) {
+    if (mode == 0) {
+      const auto evs = evaluate_neighbours(setup, ps, first, 1, 0.02);
+      benchmark::DoNotOptimize(evs.back().energy);
+    } else if (mode == 1) {
+      const ThrowDerivatives d = throw_derivatives(setup, profile, 0.02);
+      benchmark::DoNotOptimize(d.energy_gradient[0]);
+    } else {
+      benchmark::DoNotOptimize(simulate_profile(setup, profile, nullptr, 0.02).energy);
+    }
+  }
+  state.counters["parameters"] = 2.0 * (P - 1);
+}
+BENCHMARK(BM_ThrowGradient)->ArgsProduct({{16, 64, 256}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+
 // the bundled throwing case solved whole (ThrowingSpec's defaults are the bundled case's):
 // IDP, SLSQP from every start on 16 stages, then the control grids (32, 64 stages; argument:
-// grid.refinements, 0 the first grid alone). CPU time of the process (both threads): the
-// budget of the converged throw is 60 s of CPU on the 2-core CI machine
+// grid.refinements, 0 the first grid alone; second: nlopt.exact_gradient). CPU time of the
+// process (both threads): the budget of the converged throw is 60 s of CPU on the 2-core CI
+// machine
 void BM_ThrowingSolved(benchmark::State& state) {
   ThrowingSpec spec;
   spec.grid.refinements = static_cast<int>(state.range(0));
+  spec.nlopt.exact_gradient = state.range(1) == 1;
   double energy = 0;
-  long sims = 0;
+  long sims = 0, grids = 0;
   for (auto _ : state) {
     const ThrowingResult r = solve_throwing(spec);
     energy = r.nlopt.evaluation.energy;
+    grids = static_cast<long>(r.grids.size());
     sims = 0;
     for (const auto& g : r.grids) sims += g.simulations;
   }
   state.counters["energy_J"] = energy;
   state.counters["slsqp_simulations"] = static_cast<double>(sims);
+  state.counters["grids"] = static_cast<double>(grids);
 }
 BENCHMARK(BM_ThrowingSolved)
-    ->Arg(0)
-    ->Arg(2)
+    ->Args({0, 0})
+    ->Args({2, 0})
+    ->Args({0, 1})
+    ->Args({2, 1})
+    ->Args({3, 1})
+    ->Args({4, 1})
     ->Iterations(1)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kSecond);

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "studies/throwing/idp.hpp"
+#include "studies/throwing/throw_gradient.hpp"
 
 namespace armstudy::studies {
 namespace {
@@ -53,6 +54,24 @@ void quantities(const Problem& pr, const ProfileEvaluation& e, double* q) {
   }
 }
 
+// the point's values and exact gradients (throw_gradient.hpp): the energy objective only
+void compute_exact(Problem& pr, const double* x) {
+  const int n = num_vars(pr.base);
+  const int m = 1 + pr.ineq;
+  const VelocityProfile p = to_profile(pr, x);
+  const ThrowDerivatives d = throw_derivatives(*pr.setup, p, pr.settings.backoff);
+  pr.out->simulations += 1;
+  pr.values.assign(m, 0.0);
+  pr.grads.assign(size_t(m) * n, 0.0);
+  quantities(pr, d.evaluation, pr.values.data());
+  for (int i = 0; i < n; ++i) pr.grads[i] = d.energy_gradient[i];
+  for (int j = 1; j < m; ++j)
+    for (int i = 0; i < n; ++i) pr.grads[size_t(j) * n + i] = d.constraint_jacobian(j - 1, i);
+  pr.out->history.push_back(pr.values[0]);
+  pr.out->violation_history.push_back(d.evaluation.violation);
+  pr.last = p;
+}
+
 void compute(Problem& pr, const double* x) {
   const int n = num_vars(pr.base);
   if (!pr.cached_x.empty() && std::equal(pr.cached_x.begin(), pr.cached_x.end(), x)) return;
@@ -67,6 +86,9 @@ void compute(Problem& pr, const double* x) {
     pr.out->violation_history.push_back(INFINITY);
     return;
   }
+  if (pr.settings.exact_gradient && pr.objective == Objective::kEnergy &&
+      derivatives_apply(*pr.setup))
+    return compute_exact(pr, x);
   // the point and the 2n central-difference neighbours, simulated in parallel; x[i] is a rate
   // of node i / 2 + 1, so its neighbours resume from the point's simulation at stage i / 2
   std::vector<VelocityProfile> ps;

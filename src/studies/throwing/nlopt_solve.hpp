@@ -9,7 +9,8 @@
 ///   constraint_values(setup, e, backoff) <= 0 (simulate.hpp: per stage contact force,
 ///   friction needed, tray angle, voltage, current, power; and the release angle).
 /// Gradients are central differences of the simulation (step `fd_step` rad/s), evaluated
-/// on `threads` threads.
+/// on `threads` threads, or (exact_gradient) the simulation's exact derivatives
+/// (throw_gradient.hpp).
 ///
 /// Convergence is first order, not SLSQP's own stop: at the final point the routine solves
 /// for the Lagrange multipliers of the equalities and of the active inequalities
@@ -58,7 +59,11 @@ struct NloptSettings {
   int hops = 3;                 ///< then starts from the best local optimum so far, perturbed
   double hop_size = 0.5;        ///< rad/s, half-width of a hop's changes
   double fd_step = 1e-5;        ///< rad/s, central-difference step
-  double backoff = 0.02;        ///< constraint back-off (constraint_values)
+  /// the energy's and the constraints' gradients exact (forward sensitivities of the RK4
+  /// simulation, throw_gradient.hpp; one simulation with sensitivities in place of 2n + 1)
+  /// instead of central differences; the violation objective keeps central differences
+  bool exact_gradient = false;
+  double backoff = 0.02;  ///< constraint back-off (constraint_values)
   int threads = 2;
 };
 

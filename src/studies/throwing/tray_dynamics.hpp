@@ -21,6 +21,7 @@
 #include "core/dynamics.hpp"
 #include "core/planar_chain.hpp"
 #include "core/types.hpp"
+#include "studies/throwing/tray_dynamics_impl.hpp"
 
 namespace armstudy::studies {
 
@@ -36,11 +37,14 @@ class TrayDynamics {
                             const core::JointVector& qdd_active, double ball_mass,
                             Eigen::Vector2d& force) const;
 
+  /// the chain's bodies in the generic chain's order (links, then point masses), for
+  /// tray_detail::mixed's other instances (throw_gradient.hpp)
+  const tray_detail::Body* bodies() const { return bodies_; }
+  int body_count() const { return n_bodies_; }
+  const core::PlanarChain& chain() const { return chain_; }
+
  private:
-  struct Body {
-    int link = 0;
-    double x = 0, y = 0, mass = 0, inertia = 0;
-  };
+  using Body = tray_detail::Body;
   const core::PlanarChain& chain_;
   Body bodies_[core::kMaxLinks * 2];
   int n_bodies_ = 0;
