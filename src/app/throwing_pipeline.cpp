@@ -470,8 +470,9 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     if (r.nlopt_ran && r.grids.size() >= 2) {
       k.push_back({"energy_first_grid_J", r.first_grid.evaluation.energy, "J",
                    "SLSQP's answer on the first control grid (IDP's stages)"});
-      k.push_back({"grid_error_J", r.grid_error, "J",
-                   "estimated error of the answer's energy from the control grids"});
+      if (r.grid_converged)  // not estimated while the energy still falls (NaN)
+        k.push_back({"grid_error_J", r.grid_error, "J",
+                     "estimated error of the answer's energy from the control grids"});
     }
     if (r.flight.reaches)
       k.push_back({"landing_x_m", r.flight.landing.x(), "m", "landing point x of the answer"});

@@ -320,9 +320,11 @@ void add_grids(const Page& p, Section& res) {
                       ? "NOT converged: still falling by " +
                             format_sig(std::abs(cg.change_per_doubling_J), 3) +
                             " J per doubling at the finest grid (tolerance " +
-                            format_sig(cg.tolerance, 3) + " of the energy); estimated error " +
-                            format_sig(cg.error_J, 3) + " J, the limit about " +
-                            format_sig(cg.extrapolated_J, 4) + " J."
+                            format_sig(cg.tolerance, 3) +
+                            " of the energy). The optimum of the continuous problem is at most "
+                            "the finest grid's energy; how far below it lies is not estimated: "
+                            "while the energy falls by more than the tolerance, a geometric fit "
+                            "of the changes per doubling is a guess (docs/throwing.md)."
                       : "Not refined: one grid, the control grid's error is not measured.");
   t.header = {"stages",
               "RK4 steps per stage",

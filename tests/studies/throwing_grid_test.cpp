@@ -81,6 +81,11 @@ TEST(ThrowingGrid, FinerGridsNeverCostMoreAndTheVerdictFollowsTheTolerance) {
   EXPECT_LT(r.grid_change, 0.0);
   EXPECT_EQ(r.message.rfind("not converged: still falling by ", 0), 0u) << r.message;
   EXPECT_EQ(r.message.find("lowest-energy throw found"), std::string::npos) << r.message;
+  // while it still falls, no limit is claimed: one ratio of changes shows no settled rate
+  EXPECT_TRUE(std::isnan(r.grid_error)) << r.grid_error;
+  EXPECT_TRUE(std::isnan(r.grid_extrapolated)) << r.grid_extrapolated;
+  EXPECT_NE(r.message.find("how far below it lies is not estimated"), std::string::npos)
+      << r.message;
 
   ThrowingSpec loose = small_grid_throw();
   loose.grid.tolerance = 0.5;  // any doubling of a feasible throw changes it less
@@ -88,6 +93,8 @@ TEST(ThrowingGrid, FinerGridsNeverCostMoreAndTheVerdictFollowsTheTolerance) {
   ASSERT_EQ(rl.status, Status::kSolved) << rl.message;
   ASSERT_EQ(rl.grids.size(), 2u) << rl.message;
   EXPECT_TRUE(rl.grid_converged);
+  EXPECT_TRUE(std::isfinite(rl.grid_error));
+  EXPECT_GE(rl.grid_error, std::abs(rl.grid_change));
   EXPECT_NE(rl.message.find("converged: the last doubling changed it by"), std::string::npos)
       << rl.message;
 }

@@ -96,8 +96,9 @@ void decide_answer(const ThrowingSpec& spec, ThrowingResult& r) {
     } else {
       grid_words += "the energy still falls with the stages)";
       lead = "not converged: still falling by " + fixed(std::abs(r.grid_change), 3) +
-             " J per doubling of the stages (estimated error " + fixed(r.grid_error, 3) +
-             " J): " + (converged ? "" : "NOT converged on its grid: ");
+             " J per doubling of the stages (the optimum of the continuous problem is at most "
+             "this throw's energy; how far below it lies is not estimated): " +
+             (converged ? "" : "NOT converged on its grid: ");
     }
   } else if (slsqp && spec.grid.refinements > 0 && r.grids.size() == 1) {
     grid_words = " on " + std::to_string(r.grids.back().stages) +

@@ -562,8 +562,10 @@ void fields(V& v, ThrowingStudyResults::ControlGrids& x) {
   v("change_per_doubling_J", x.change_per_doubling_J,
     "energy of the finest grid minus the one before (null: one grid)");
   v("error_J", x.error_J,
-    "estimated distance of the answer's energy to the limit (null: one grid)");
-  v("extrapolated_J", x.extrapolated_J, "the answer's energy minus that error (null: one grid)");
+    "estimated distance of the answer's energy to the limit (null: one grid, or not "
+    "converged: not estimated while the energy still falls by more than the tolerance)");
+  v("extrapolated_J", x.extrapolated_J,
+    "the answer's energy minus that error (null: one grid, or not converged)");
   v("energy_first_grid_J", x.energy_first_grid_J, "SLSQP's answer on the first grid (IDP's)");
 }
 template <class V>
