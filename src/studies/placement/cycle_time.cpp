@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "core/check.hpp"
@@ -40,19 +41,33 @@ time_optimal::Spec cycle_time_problem(const Spec& spec, int configuration, doubl
   return t;
 }
 
-double cycle_time_on_grid(const Spec& spec, int configuration, double x_s, double phi,
-                          int grid_points) {
-  constexpr double kNoMotion = std::numeric_limits<double>::quiet_NaN();
+namespace {
+
+// the exact solver's motion along the line (x_s, phi) on grid_points uniform nodes; nullopt
+// where there is none (unsolved, or a point off the workspace or singular)
+std::optional<time_optimal::SolverOutput> exact_on_grid(const Spec& spec, int configuration,
+                                                        double x_s, double phi, int grid_points) {
   const time_optimal::Spec t = cycle_time_problem(spec, configuration, x_s, phi, grid_points);
   const time_optimal::Limits limits{t.velocity_limit, t.torque_limit, t.acceleration_limit};
   try {
     const time_optimal::Problem pb = time_optimal::make_problem(t, limits);
-    const time_optimal::SolverOutput o = time_optimal::solve_exact(
+    time_optimal::SolverOutput o = time_optimal::solve_exact(
         pb, time_optimal::make_nodes(pb.path, grid_points - 1), t.exact.checks_per_interval);
-    return o.solved ? o.duration : kNoMotion;
-  } catch (const std::exception&) {  // (a point off the workspace or singular: no motion)
-    return kNoMotion;
+    if (!o.solved) return std::nullopt;
+    return o;
+  } catch (const std::exception&) {
+    return std::nullopt;
   }
+}
+
+constexpr double kNoMotion = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+double cycle_time_on_grid(const Spec& spec, int configuration, double x_s, double phi,
+                          int grid_points) {
+  const auto o = exact_on_grid(spec, configuration, x_s, phi, grid_points);
+  return o ? o->duration : kNoMotion;
 }
 
 namespace {
@@ -89,18 +104,9 @@ double profile_energy(const Spec& spec, int configuration, double x_s, double ph
 
 FastMotionOnGrid fastest_motion_on_grid(const Spec& spec, int configuration, double x_s, double phi,
                                         int grid_points) {
-  constexpr double kNoMotion = std::numeric_limits<double>::quiet_NaN();
-  const time_optimal::Spec t = cycle_time_problem(spec, configuration, x_s, phi, grid_points);
-  const time_optimal::Limits limits{t.velocity_limit, t.torque_limit, t.acceleration_limit};
-  try {
-    const time_optimal::Problem pb = time_optimal::make_problem(t, limits);
-    const time_optimal::SolverOutput o = time_optimal::solve_exact(
-        pb, time_optimal::make_nodes(pb.path, grid_points - 1), t.exact.checks_per_interval);
-    if (!o.solved) return {kNoMotion, kNoMotion};
-    return {o.duration, profile_energy(spec, configuration, x_s, phi, o.profile)};
-  } catch (const std::exception&) {  // (a point off the workspace or singular: no motion)
-    return {kNoMotion, kNoMotion};
-  }
+  const auto o = exact_on_grid(spec, configuration, x_s, phi, grid_points);
+  if (!o) return {kNoMotion, kNoMotion};
+  return {o->duration, profile_energy(spec, configuration, x_s, phi, o->profile)};
 }
 
 FastMotionEnergy fastest_motion_energy(const Spec& spec, int configuration, double x_s,
