@@ -277,7 +277,10 @@ long set_idp(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Results:
 void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Results::Optimised& o) {
   o.nlopt.ran = r.nlopt_ran;
   if (r.nlopt_ran) {
-    Results::NloptRun& nl = o.nlopt.run.emplace();
+    // assigned, not emplace()d: clang 14 (the sanitizer build) takes std::optional's
+    // emplace() of a nested struct with member initialisers as not default-constructible
+    o.nlopt.run = Results::NloptRun{};
+    Results::NloptRun& nl = *o.nlopt.run;
     nl.history_J = r.nlopt_run.history;
     nl.algorithm =
         "NLopt LD_SLSQP, central-difference gradients, same parameterisation and constraints";
@@ -308,7 +311,8 @@ void set_nlopt(const st::ThrowingSpec& spec, const st::ThrowingResult& r, Result
 void set_control_grids(const st::ThrowingSpec& spec, const st::ThrowingResult& r,
                        Results::Optimised& o) {
   if (!r.nlopt_ran || r.grids.empty()) return;
-  Results::ControlGrids& cg = o.control_grids.emplace();
+  o.control_grids = Results::ControlGrids{};  // not emplace(): clang 14, as above
+  Results::ControlGrids& cg = *o.control_grids;
   cg.status = r.grids.size() < 2 ? "not_refined" : r.grid_converged ? "converged" : "not_converged";
   cg.tolerance = spec.grid.tolerance;
   cg.refinements = spec.grid.refinements;
@@ -490,7 +494,8 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
         r.answer == "slsqp" ? r.nlopt.evaluation.energy : r.idp.evaluation.energy;
     j.saving_percent = r.saving_percent;
     if (r.idp.series.t.empty()) return j;
-    Results::Optimised& o = j.run.emplace();
+    j.run = Results::Optimised{};  // not emplace(): clang 14, as above
+    Results::Optimised& o = *j.run;
     o.answer = r.answer;
     set_reference(spec_, r, o);
     o.initial = motion_of(spec_, r.initial);

@@ -133,7 +133,8 @@ json study_section(const std::string& study) {
       for (const auto& x : v) r.push_back({x[0], x[1]});
       return r;
     };
-    TS::Optimised& o = s.run.emplace();
+    s.run = TS::Optimised{};  // not emplace(): clang 14 (the sanitizer build) refuses it
+    TS::Optimised& o = *s.run;
     for (TS::Motion* m : {&o.initial, &o.optimum}) {
       m->energy_J = 20.0;
       m->series.t_s = ts;

@@ -49,7 +49,7 @@ TEST(TrayDynamics, EqualsTheGenericChainAtRandomStates) {
     // the same sums in the same order: bit for bit in practice
     EXPECT_EQ(identical, 2000);
   }
-  EXPECT_THROW(TrayDynamics(testing::thesis_arm()), std::invalid_argument);
+  EXPECT_THROW(TrayDynamics{testing::thesis_arm()}, std::invalid_argument);
 }
 
 TEST(TrayDynamics, APlannedThrowEqualsTheGenericChainsThrow) {
