@@ -14,6 +14,9 @@
 
 #include "studies/pendulum/solve.hpp"
 #include "studies/throwing/grid_sequence.hpp"
+#if ARMSTUDY_WITH_IPOPT
+#include "studies/throwing/ipopt_solve.hpp"
+#endif
 #include "studies/throwing/idp.hpp"
 #include "studies/throwing/nlopt_solve.hpp"
 #include "studies/throwing/simulate_kernel.hpp"
@@ -279,6 +282,42 @@ BENCHMARK(BM_ThrowingSolved)
     ->Args({2, 1})
     ->Args({3, 1})
     ->Args({4, 1})
+    ->Iterations(1)
+    ->MeasureProcessCPUTime()
+    ->Unit(benchmark::kSecond);
+
+// one fine-grid solve of the bundled throw, the two optimisers on the same start: the 32-stage
+// SLSQP answer (exact gradients, made once, outside the timing) prolonged to 64 stages, the RK4
+// step kept at 2.5 ms; argument 0: SLSQP with exact gradients (run_nlopt), 1: IPOPT
+// (run_ipopt, built with ARMSTUDY_WITH_IPOPT only). Process CPU time, one run
+void BM_ThrowFineGridSolve(benchmark::State& state) {
+  ThrowingSpec spec;
+  spec.nlopt.exact_gradient = true;
+  spec.grid.refinements = 1;
+  static const VelocityProfile coarse = solve_throwing(spec).nlopt.profile;
+  const ThrowSetup fine = grid_setup(make_throw_setup(spec), spec.stages, 2 * coarse.stages());
+  const VelocityProfile start = prolong_profile(coarse, 2);
+  const Eigen::Vector2d delta = spec.release - spec.start;
+  NloptOutcome o;
+  for (auto _ : state) {
+#if ARMSTUDY_WITH_IPOPT
+    o = state.range(0) == 1 ? run_ipopt(fine, start, delta, spec.nlopt)
+                            : run_nlopt(fine, start, delta, spec.nlopt);
+#else
+    o = run_nlopt(fine, start, delta, spec.nlopt);
+#endif
+  }
+  state.counters["stages"] = start.stages();
+  state.counters["energy_J"] = o.evaluation.energy;
+  state.counters["feasible"] = o.feasible ? 1 : 0;
+  state.counters["converged"] = o.converged ? 1 : 0;
+  state.counters["simulations"] = static_cast<double>(o.simulations);
+}
+BENCHMARK(BM_ThrowFineGridSolve)
+    ->Arg(0)
+#if ARMSTUDY_WITH_IPOPT
+    ->Arg(1)
+#endif
     ->Iterations(1)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kSecond);

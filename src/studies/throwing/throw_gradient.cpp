@@ -94,8 +94,13 @@ struct SensWorst {
 
 class ThrowSensitivity {
  public:
-  ThrowSensitivity(const ThrowSetup& s, const VelocityProfile& p)
-      : s_(s), p_(p), dyn_(s.chain), P_(p.stages()), n_(2 * (p.stages() - 1)) {
+  ThrowSensitivity(const ThrowSetup& s, const VelocityProfile& p, bool per_sample)
+      : s_(s),
+        p_(p),
+        dyn_(s.chain),
+        P_(p.stages()),
+        n_(2 * (p.stages() - 1)),
+        per_sample_(per_sample) {
     h_ = p.stage_length();
     q_start_.resize(P_ + 1);
     q_start_[0] = p.q0;
@@ -128,11 +133,18 @@ class ThrowSensitivity {
   void step_sensitivity(int stage, double t, double dt, const SensEval* k, const SensInput& Z1,
                         int nc, SensState& S) const;
   ThrowDerivatives finish(const core::OdeState& x, const SensState& S, double backoff);
+  void sample_rows(int stage, const SensEval& e, const core::OdeState& x, const SensState& S,
+                   const SensInput& Z, int nc);
 
   const ThrowSetup& s_;
   const VelocityProfile& p_;
   const TrayDynamics dyn_;
   const int P_, n_;
+  const bool per_sample_;
+  double backoff_ = 0;
+  std::vector<double> sample_values_;
+  std::vector<Eigen::RowVectorXd> sample_grads_;  // the first columns(stage) entries only
+  std::vector<int> sample_stage_;
   double h_ = 0;
   std::vector<Eigen::Vector2d> q_start_;
   ProfileEvaluation ev_;
@@ -202,6 +214,32 @@ void ThrowSensitivity::track(int stage, const SensEval& e, const core::OdeState&
   });
   ev_.max_friction_ratio =
       std::max(ev_.max_friction_ratio, N > 0 ? std::abs(Ft) / N : double(INFINITY));
+  if (per_sample_) sample_rows(stage, e, x, S, Z, nc);
+}
+
+// the sample's own constraint rows (kSampleRows), normalised as stage_constraint_values
+void ThrowSensitivity::sample_rows(int stage, const SensEval& e, const core::OdeState& x,
+                                   const SensState& S, const SensInput& Z, int nc) {
+  const double weight = s_.ball_mass * s_.chain.gravity, b = backoff_;
+  const double N = e.value[kNormal], Ft = e.value[kTangent], mu = s_.friction_coefficient;
+  const double t4 = x[1];
+  sample_stage_.push_back(stage);
+  auto add = [&](double v, const Eigen::RowVectorXd& g) {
+    sample_values_.push_back(v);
+    sample_grads_.push_back(g);
+  };
+  add((s_.contact_margin - N) / weight + b, -(e.J.row(kNormal) * Z) / weight);
+  add((std::abs(Ft) - mu * N) / weight + b,
+      ((sens_sign(Ft) * e.J.row(kTangent) - mu * e.J.row(kNormal)) * Z) / weight);
+  add((std::abs(t4) - s_.half_width) / s_.half_width + b,
+      sens_sign(t4) * S.row(1).leftCols(nc) / s_.half_width);
+  const double limit[3] = {s_.voltage_max, s_.current_max, s_.power_max};
+  for (int m = 0; m < 2; ++m)
+    for (int r = 0; r < 3; ++r) {
+      const int row = kVolt0 + 2 * r + m;
+      const double v = e.value[row];
+      add((std::abs(v) - limit[r]) / limit[r] + b, sens_sign(v) * (e.J.row(row) * Z) / limit[r]);
+    }
 }
 
 // S over one RK4 step from t: k[0 .. 3] the step's evaluations, Z1 the first one's dz/dp
@@ -221,6 +259,7 @@ void ThrowSensitivity::step_sensitivity(int stage, double t, double dt, const Se
 }
 
 ThrowDerivatives ThrowSensitivity::run(double backoff) {
+  backoff_ = backoff;
   const int steps = std::max(1, s_.steps_per_stage);
   const double dt = h_ / steps;
   ev_.stage_theta4.assign(P_, 0.0);
@@ -306,6 +345,13 @@ ThrowDerivatives ThrowSensitivity::finish(const core::OdeState& x, const SensSta
           scale[c] * worst_[6 * size_t(k) + c].grad;
   d.constraint_jacobian.row(6 * Eigen::Index(P_)) =
       (sens_sign(x[0] - s_.theta3_release) / s_.release_tolerance) * S.row(0);
+  if (per_sample_) {
+    d.sample_constraints = std::move(sample_values_);
+    d.sample_stage = std::move(sample_stage_);
+    d.sample_jacobian = Eigen::MatrixXd::Zero(Eigen::Index(sample_grads_.size()), n_);
+    for (size_t r = 0; r < sample_grads_.size(); ++r)
+      d.sample_jacobian.row(Eigen::Index(r)).leftCols(sample_grads_[r].size()) = sample_grads_[r];
+  }
   return d;
 }
 
@@ -319,13 +365,13 @@ bool derivatives_apply(const ThrowSetup& s) {
 }
 
 ThrowDerivatives throw_derivatives(const ThrowSetup& setup, const VelocityProfile& profile,
-                                   double backoff) {
+                                   double backoff, bool per_sample) {
   ARM_THROW_UNLESS(
       derivatives_apply(setup),
       "exact derivatives need the tray arm's chain (joints 1, 2 active, 3, 4 passive)");
   ARM_THROW_UNLESS(profile.stages() >= 2,
                    "exact derivatives need >= 2 stages, the profile has " << profile.stages());
-  ThrowSensitivity sens(setup, profile);
+  ThrowSensitivity sens(setup, profile, per_sample);
   return sens.run(backoff);
 }
 

@@ -39,7 +39,17 @@ struct ThrowDerivatives {
   /// d energy / d p, p the interior node rates: node k's rate of joint j at 2 (k - 1) + j
   Eigen::VectorXd energy_gradient;
   Eigen::MatrixXd constraint_jacobian;  ///< (6P + 1) x n, rows as `constraints`
+  /// (per_sample only) the stage constraints sample by sample, smooth where the stage maxima
+  /// are kinked: kSampleRows rows per RK4 sample (the samples the stage maxima run over, in
+  /// time order), normalised and backed off as constraint_values; the release row is not here
+  std::vector<double> sample_constraints;
+  Eigen::MatrixXd sample_jacobian;  ///< rows as sample_constraints
+  std::vector<int> sample_stage;    ///< the stage of each sample (one entry per sample)
 };
+
+/// Rows per sample of ThrowDerivatives::sample_constraints: contact, friction, tray angle,
+/// then voltage, current and power of motor 1 and of motor 2 (each its |value|).
+inline constexpr int kSampleRows = 9;
 
 /// Can throw_derivatives differentiate `setup`'s simulations: the tray arm's 4-joint chain
 /// with joints 1, 2 active and 3, 4 passive (kernel_applies's chain)?
@@ -48,7 +58,8 @@ bool derivatives_apply(const ThrowSetup& setup);
 /// Simulates `profile` (as simulate_profile(setup, profile, nullptr, backoff)) with its
 /// forward sensitivities. A simulation that is not finite gives zero derivatives.
 /// @throws std::invalid_argument unless derivatives_apply(setup) and P >= 2.
+/// per_sample: also the constraints sample by sample (ThrowDerivatives::sample_constraints).
 ThrowDerivatives throw_derivatives(const ThrowSetup& setup, const VelocityProfile& profile,
-                                   double backoff = 0.0);
+                                   double backoff = 0.0, bool per_sample = false);
 
 }  // namespace armstudy::studies
