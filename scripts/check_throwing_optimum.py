@@ -389,8 +389,9 @@ def find_results(path):
 
 
 def main():
-    if len(sys.argv) < 2:
-        sys.exit(__doc__)
+    if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if len(sys.argv) >= 2 else 2
     rtol = float(sys.argv[2]) if len(sys.argv) > 2 else 1e-10
     wall = time.time()
     fn = find_results(sys.argv[1])

@@ -112,6 +112,7 @@ void read_grid(Map& g, studies::ThrowingSpec& s) {
   num(g, "tolerance", s.grid.tolerance, NumberRule::range(1e-6, 0.5, ""));
   s.grid.refine_best = g.integer_or("refine_best", s.grid.refine_best, 1, 16);
   s.grid.require_converged = g.boolean_or("require_converged", s.grid.require_converged);
+  s.grid.exact_gradient = g.boolean_or("exact_gradient", s.grid.exact_gradient);
   g.finish();
 }
 
@@ -157,22 +158,25 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
   // then each finer grid (the same RK4 step, 2^l x the stages): refine_best starts on the
   // first, one on the others, each a gradient of 4 (stages - 1) + 1 simulations, or exact
   // (BM_ThrowGradient: about 12 + (stages - 1) / 8 simulations' time)
-  auto gradient = [&](double stages) {
-    return s.nlopt.exact_gradient ? 12.0 + (stages - 1.0) / 8.0 : 4.0 * (stages - 1.0) + 1.0;
+  auto gradient = [&](double stages, bool exact) {
+    return exact ? 12.0 + (stages - 1.0) / 8.0 : 4.0 * (stages - 1.0) + 1.0;
   };
+  const bool fine_exact = s.nlopt.exact_gradient || s.grid.exact_gradient;
   double grids = 0.0;
   for (int l = 1; l <= s.grid.refinements; ++l)
     grids += (l == 1 ? s.grid.refine_best + 1.0 : 2.0) * s.nlopt.max_evaluations *
-             gradient(s.stages << l);
+             gradient(s.stages << l, fine_exact);
   const double nlopt =
-      s.run_nlopt ? starts * s.nlopt.max_evaluations * gradient(s.stages) + grids : 0.0;
+      s.run_nlopt
+          ? starts * s.nlopt.max_evaluations * gradient(s.stages, s.nlopt.exact_gradient) + grids
+          : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
   d.keys =
       "throwing.idp.seeds, throwing.idp.max_passes, throwing.idp.iterations, throwing.idp.stages, "
       "throwing.idp.candidates, "
       "throwing.idp.steps_per_stage, throwing.nlopt.max_evaluations, "
-      "throwing.nlopt.exact_gradient and throwing.grid.refinements";
+      "throwing.nlopt.exact_gradient, throwing.grid.refinements and throwing.grid.exact_gradient";
   d.unit = "RK4 steps";
   d.work = (idp + nlopt) * steps;
   d.work_budget = 1e9;

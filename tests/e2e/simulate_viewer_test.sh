@@ -48,7 +48,7 @@ rm -f "$artifacts"/*.png
 # model.xml does not depend on the answer: the throw is solved on its first control grid only
 # and neither case runs its sensitivity part (the run was most of this test's time)
 mkdir -p "$work/cases"
-sed 's/^    refinements: 2 /    refinements: 0 /' "$src/reports/cases/throwing.yaml" >"$work/cases/throwing.yaml"
+sed 's/^    refinements: [0-9]* /    refinements: 0 /' "$src/reports/cases/throwing.yaml" >"$work/cases/throwing.yaml"
 grep -q '^    refinements: 0 ' "$work/cases/throwing.yaml" || fail "throwing.yaml has no grid.refinements line"
 "$bin" run --no-render --no-sensitivity --jobs 2 --out "$work/out" \
   "$src/reports/cases/placement-example-2.yaml" "$work/cases/throwing.yaml" >"$work/run.log" 2>&1 ||

@@ -163,6 +163,30 @@ TEST(ThrowGradient, SlsqpWithExactDerivativesHoldsTheSixteenStageAnswer) {
   EXPECT_TRUE(out.converged) << out.kkt_residual << " " << out.restart_gain;
   EXPECT_NEAR(out.evaluation.energy, e0, 1e-3 * e0);
   EXPECT_EQ(out.simulations, out.iterations);
+  EXPECT_FALSE(out.central_polish);
+}
+
+// A run that exact derivatives leave short of the first-order test is finished by central
+// differences, with restarts of their own, so its verdict is theirs (a first-order test no
+// run can pass forces it here)
+TEST(ThrowGradient, ARunExactDerivativesLeaveShortOfTheTestIsFinishedByCentralDifferences) {
+  const ThrowingSpec spec;
+  const ThrowSetup s = make_throw_setup(spec);
+  const VelocityProfile p = answer_profile(spec, kAnswer16);
+  NloptSettings settings = spec.nlopt;
+  settings.backoff = spec.backoff;
+  settings.exact_gradient = true;
+  settings.kkt_tolerance = 1e-12;
+  settings.restarts = 1;
+  const NloptOutcome out = run_nlopt(s, p, spec.release - spec.start, settings);
+  EXPECT_TRUE(out.central_polish);
+  EXPECT_FALSE(out.converged);
+  EXPECT_TRUE(out.feasible);
+  EXPECT_EQ(out.restarts, 2 * settings.restarts + 1);  // rounds 0-1 exact, 2-3 central
+  // central differences cost 2n + 1 = 61 simulations a gradient on 16 stages
+  EXPECT_GT(out.simulations, out.iterations + 30);
+  const double e0 = simulate_profile(s, p).energy;
+  EXPECT_LE(out.evaluation.energy, e0 * (1 + 1e-3));
 }
 
 }  // namespace

@@ -111,7 +111,9 @@ ThrowSetup grid_setup(const ThrowSetup& setup, int first_stages, int stages) {
 
 // (over 60 lines, kept whole: the grids in order, each from the coarser one's answers)
 void refine_grids(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen::Vector2d& delta,
-                  const NloptSettings& settings, ThrowingResult& r) {
+                  const NloptSettings& first_settings, ThrowingResult& r) {
+  NloptSettings settings = first_settings;
+  settings.exact_gradient = first_settings.exact_gradient || spec.grid.exact_gradient;
   r.grids.clear();
   r.answer_steps_per_stage = setup.steps_per_stage;
   if (r.slsqp_best_start < 0) return;

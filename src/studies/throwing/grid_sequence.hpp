@@ -22,8 +22,10 @@ namespace armstudy::studies {
 /// Refines r's SLSQP answer (r.nlopt, r.nlopt_run, r.nlopt_check on the first grid, from
 /// run_slsqp_starts) over finer grids: fills r.grids, r.grid_*, r.first_grid(_check),
 /// r.answer_steps_per_stage, and replaces r.nlopt, r.nlopt_run, r.nlopt_check by the finest
-/// grid's answer. `setup` is the first grid's. Nothing is refined (one grid listed) when
-/// spec.grid.refinements is 0 or the first grid has no feasible throw.
+/// grid's answer. `setup` and `settings` are the first grid's; the finer grids' SLSQP uses
+/// exact derivatives when spec.grid.exact_gradient is set (or settings.exact_gradient). Nothing is
+/// refined (one grid listed) when spec.grid.refinements is 0 or the first grid has no feasible
+/// throw.
 void refine_grids(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen::Vector2d& delta,
                   const NloptSettings& settings, ThrowingResult& r);
 

@@ -296,6 +296,7 @@ NloptOutcome run_nlopt(const ThrowSetup& setup, const VelocityProfile& initial,
   // restart_gain: the constraints are maxima over samples, so the residual alone has a floor
   // of a few 1e-3 where samples tie, and an early stop can sit below kkt_tolerance
   double previous = NAN;
+  int last_round = settings.restarts;
   for (int round = 0;; ++round) {
     const int used = static_cast<int>(out.history.size());
     const int budget = settings.max_evaluations - used;
@@ -314,8 +315,16 @@ NloptOutcome run_nlopt(const ThrowSetup& setup, const VelocityProfile& initial,
     previous = energy;
     if (out.kkt_residual <= settings.kkt_tolerance && out.restart_gain <= settings.restart_gain)
       break;
-    if (round >= settings.restarts) break;
-    if (static_cast<int>(out.history.size()) == used) break;  // no progress possible
+    // out of restarts, or no progress possible
+    if (round < last_round && static_cast<int>(out.history.size()) != used) continue;
+    if (!pr.settings.exact_gradient || !derivatives_apply(setup)) break;
+    // exact derivatives see one side of a kink where a stage's samples tie (the first-order
+    // test's multiplier fit too): a run they leave short of the test is finished by central
+    // differences, which straddle it, with restarts of their own
+    pr.settings.exact_gradient = false;
+    pr.cached_x.clear();
+    out.central_polish = true;
+    last_round = round + 1 + settings.restarts;
   }
   out.return_code = code_name(r);
   out.best = to_profile(pr, x.data());

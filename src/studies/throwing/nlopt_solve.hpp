@@ -10,7 +10,8 @@
 ///   friction needed, tray angle, voltage, current, power; and the release angle).
 /// Gradients are central differences of the simulation (step `fd_step` rad/s), evaluated
 /// on `threads` threads, or (exact_gradient) the simulation's exact derivatives
-/// (throw_gradient.hpp).
+/// (throw_gradient.hpp); a run that exact derivatives leave short of the first-order test is
+/// finished by central differences (central_polish).
 ///
 /// Convergence is first order, not SLSQP's own stop: at the final point the routine solves
 /// for the Lagrange multipliers of the equalities and of the active inequalities
@@ -95,6 +96,9 @@ struct NloptOutcome {
   int iterations = 0;                ///< SLSQP evaluations
   long simulations = 0;
   double run_time = 0;  ///< s
+  /// exact_gradient: the run did not pass the first-order test with exact derivatives and was
+  /// finished by central differences (its verdict is theirs)
+  bool central_polish = false;
 };
 
 /// The first-order measure of run_nlopt (kkt_residual, active and binding constraints) at
