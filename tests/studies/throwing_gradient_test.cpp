@@ -147,17 +147,22 @@ TEST(ThrowGradient, EqualsCentralDifferencesAtTheSixtyFourStageAnswer) {
   EXPECT_LT(a.worst, 1e-6) << a.compared << " compared, " << a.skipped << " at kinks";
 }
 
+// the bundled case's SLSQP settings with exact derivatives
+NloptSettings exact_settings(const ThrowingSpec& spec) {
+  NloptSettings settings = spec.nlopt;
+  settings.backoff = spec.backoff;
+  settings.exact_gradient = true;
+  return settings;
+}
+
 // SLSQP with the exact derivatives (nlopt.exact_gradient) from the 16-stage answer of the
 // central differences stays there: feasible, first-order converged, the same energy to 0.1 %,
 // one simulation per gradient
 TEST(ThrowGradient, SlsqpWithExactDerivativesHoldsTheSixteenStageAnswer) {
   const ThrowingSpec spec;
-  const ThrowSetup s = make_throw_setup(spec);
   const VelocityProfile p = answer_profile(spec, kAnswer16);
-  NloptSettings settings = spec.nlopt;
-  settings.backoff = spec.backoff;
-  settings.exact_gradient = true;
-  const NloptOutcome out = run_nlopt(s, p, spec.release - spec.start, settings);
+  const ThrowSetup s = make_throw_setup(spec);
+  const NloptOutcome out = run_nlopt(s, p, spec.release - spec.start, exact_settings(spec));
   const double e0 = simulate_profile(s, p).energy;
   EXPECT_TRUE(out.feasible);
   EXPECT_TRUE(out.converged) << out.kkt_residual << " " << out.restart_gain;
@@ -173,9 +178,7 @@ TEST(ThrowGradient, ARunExactDerivativesLeaveShortOfTheTestIsFinishedByCentralDi
   const ThrowingSpec spec;
   const ThrowSetup s = make_throw_setup(spec);
   const VelocityProfile p = answer_profile(spec, kAnswer16);
-  NloptSettings settings = spec.nlopt;
-  settings.backoff = spec.backoff;
-  settings.exact_gradient = true;
+  NloptSettings settings = exact_settings(spec);
   settings.kkt_tolerance = 1e-12;
   settings.restarts = 1;
   const NloptOutcome out = run_nlopt(s, p, spec.release - spec.start, settings);
