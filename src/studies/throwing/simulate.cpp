@@ -191,6 +191,15 @@ std::array<double, kConstraintKinds> worst_constraints(const ThrowSetup& s,
   return w;
 }
 
+void reset_stage_extremes(int P, ProfileEvaluation& e) {
+  e.stage_theta4.assign(P, 0.0);
+  e.stage_voltage.assign(P, 0.0);
+  e.stage_current.assign(P, 0.0);
+  e.stage_power.assign(P, 0.0);
+  e.stage_normal.assign(P, INFINITY);
+  e.stage_friction.assign(P, -INFINITY);
+}
+
 void classify(const ThrowSetup& s, ProfileEvaluation& e, double backoff) {
   e.violation = 0.0;
   for (double g : constraint_values(s, e, backoff)) e.violation += std::max(0.0, g);
@@ -219,12 +228,7 @@ namespace {
 // state and the stages before it copied from its evaluation. Returns the first stage to run.
 int start_stages(int P, const SimulationCheckpoints* from, int first, ProfileEvaluation& ev,
                  OdeState& x) {
-  ev.stage_theta4.assign(P, 0.0);
-  ev.stage_voltage.assign(P, 0.0);
-  ev.stage_current.assign(P, 0.0);
-  ev.stage_power.assign(P, 0.0);
-  ev.stage_normal.assign(P, INFINITY);
-  ev.stage_friction.assign(P, -INFINITY);
+  reset_stage_extremes(P, ev);
   ev.max_friction_ratio = 0.0;
   if (!from) return 0;
   const int k0 = first;

@@ -113,6 +113,11 @@ std::vector<double> constraint_values(const ThrowSetup& setup, const ProfileEval
 std::array<double, kConstraintKinds> worst_constraints(const ThrowSetup& setup,
                                                        const ProfileEvaluation& e);
 
+/// The per-stage extremes of P stages at their neutral values (0 for the maxima, +infinity
+/// for the smallest normal force, -infinity for the friction excess): where a simulation of
+/// P stages starts them.
+void reset_stage_extremes(int P, ProfileEvaluation& e);
+
 /// Sets e.violation and e.feasible for the given backoff.
 void classify(const ThrowSetup& setup, ProfileEvaluation& e, double backoff);
 

@@ -262,12 +262,7 @@ ThrowDerivatives ThrowSensitivity::run(double backoff) {
   backoff_ = backoff;
   const int steps = std::max(1, s_.steps_per_stage);
   const double dt = h_ / steps;
-  ev_.stage_theta4.assign(P_, 0.0);
-  ev_.stage_voltage.assign(P_, 0.0);
-  ev_.stage_current.assign(P_, 0.0);
-  ev_.stage_power.assign(P_, 0.0);
-  ev_.stage_normal.assign(P_, INFINITY);
-  ev_.stage_friction.assign(P_, -INFINITY);
+  reset_stage_extremes(P_, ev_);
   worst_.assign(6 * size_t(P_), SensWorst{0.0, Eigen::RowVectorXd::Zero(n_)});
   for (int k = 0; k < P_; ++k) {
     worst_[6 * size_t(k)].value = INFINITY;
