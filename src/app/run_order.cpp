@@ -8,13 +8,16 @@
 namespace armstudy::app {
 
 double estimated_seconds(const LoadedCase& c, bool render, bool sensitivity) {
-  double solve = 0, frames = 0;
+  double solve = 0, base = 0, frames = 0;
   for (const cases::Demand& d : c.demands) {
-    if (d.work_per_second > 0) solve += d.work / d.work_per_second;
+    if (d.work_per_second > 0) {
+      solve += d.work / d.work_per_second;
+      base += (d.resolve_base > 0 ? d.resolve_base : d.work) / d.work_per_second;
+    }
     if (render) frames += d.frames_rendered / kFramesPerSecond;
   }
   const double resolves = sensitivity ? 2.0 * double(c.info.sensitivity.items.size()) : 0.0;
-  return solve * (1.0 + resolves * kSensitivityResolveFraction) + frames;
+  return solve + base * resolves * kSensitivityResolveFraction + frames;
 }
 
 double estimated_memory_bytes(const LoadedCase& c, bool render) {

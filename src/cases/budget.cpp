@@ -31,7 +31,8 @@ std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int 
                                     const Resolves& resolves) {
   std::vector<OverBudget> out;
   const std::string raise = "; reduce them, or pass --allow-large to run it anyway";
-  const double resolve_work = d.work * resolves.share();
+  const double base = d.resolve_base > 0 ? d.resolve_base : d.work;
+  const double resolve_work = base * resolves.share();
   if (d.work > d.work_budget) {
     out.push_back({false, d.what + " asks for about " + sci(d.work) + " " + d.unit + " (" +
                               d.detail + "), more than the budget of " + sci(d.work_budget) + " " +
@@ -45,7 +46,7 @@ std::vector<OverBudget> over_budget(const Demand& d, int frames, int width, int 
     out.push_back({false, "the sensitivity part of " + d.what + " asks for about " +
                               sci(resolve_work) + " " + d.unit + " (the 2 x " + n +
                               " re-solves of its " + n + " sensitivity keys, each about " + share +
-                              " of the solve's " + sci(d.work) + ": x " + factor +
+                              " of the solve's " + sci(base) + ": x " + factor +
                               "), more than the budget of " + sci(d.work_budget) + " " + d.unit +
                               " it has besides the solve's, set by the length of 'sensitivity' "
                               "and " +

@@ -34,6 +34,9 @@ struct Demand {
   double work = 0;     ///< in `unit`
   std::string unit;    ///< e.g. "trajectory samples"
   double work_budget = 0;
+  /// The part of `work` a warm re-solve of the sensitivity part stands in proportion to (0:
+  /// all of it): a study's global phase, which no re-solve repeats, left out.
+  double resolve_base = 0;
   /// About how much of `work` one core does per second (measured on the bundled cases);
   /// a run starts its longest cases first by it. 0 when unknown.
   double work_per_second = 0;

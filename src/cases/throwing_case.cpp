@@ -101,6 +101,9 @@ void read_nlopt(Map& n, studies::ThrowingSpec& s) {
   s.nlopt.restarts = n.integer_or("restarts", s.nlopt.restarts, 0, 100);
   s.nlopt.perturbed_starts = n.integer_or("perturbed_starts", s.nlopt.perturbed_starts, 0, 64);
   num(n, "perturbation_rad_s", s.nlopt.perturbation, NumberRule::positive("rad/s"));
+  s.nlopt.smooth_starts = n.integer_or("smooth_starts", s.nlopt.smooth_starts, 0, 64);
+  num(n, "smooth_amplitude_rad_s", s.nlopt.smooth_amplitude, NumberRule::positive("rad/s"));
+  s.nlopt.smooth_modes = n.integer_or("smooth_modes", s.nlopt.smooth_modes, 1, 16);
   s.nlopt.hops = n.integer_or("hops", s.nlopt.hops, 0, 64);
   num(n, "hop_size_rad_s", s.nlopt.hop_size, NumberRule::positive("rad/s"));
   n.finish();
@@ -152,9 +155,9 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
   const double steps = double(s.stages) * s.steps_per_stage;
   const double idp = double(s.idp.seeds) * s.idp.max_passes * s.idp.iterations * (s.stages - 1.0) *
                      s.idp.candidates;
-  // SLSQP: every start (the reference, IDP's, eq. 8's, the perturbed ones and the hops) with
-  // its budget of gradient evaluations
-  const double starts = 3.0 + s.nlopt.perturbed_starts + s.nlopt.hops;
+  // SLSQP: every start (the reference, IDP's, eq. 8's, the perturbed and smooth ones, the hops)
+  // with its budget of gradient evaluations
+  const double starts = 3.0 + s.nlopt.perturbed_starts + s.nlopt.smooth_starts + s.nlopt.hops;
   // then each finer grid (the same RK4 step, 2^l x the stages): refine_best starts on the
   // first, one on the others, each a gradient of 4 (stages - 1) + 1 simulations, or exact
   // (BM_ThrowGradient: about 12 + (stages - 1) / 8 simulations' time)
@@ -166,19 +169,21 @@ Demand throwing_demand(const studies::ThrowingSpec& s, const YAML::Mark& mark) {
   for (int l = 1; l <= s.grid.refinements; ++l)
     grids += (l == 1 ? s.grid.refine_best + 1.0 : 2.0) * s.nlopt.max_evaluations *
              gradient(s.stages << l, fine_exact);
-  const double nlopt =
-      s.run_nlopt
-          ? starts * s.nlopt.max_evaluations * gradient(s.stages, s.nlopt.exact_gradient) + grids
-          : 0.0;
+  const double start = s.nlopt.max_evaluations * gradient(s.stages, s.nlopt.exact_gradient);
+  const double nlopt = s.run_nlopt ? starts * start + grids : 0.0;
   Demand d;
   d.what = "the throwing optimisation";
   d.keys =
       "throwing.idp.seeds, throwing.idp.max_passes, throwing.idp.iterations, throwing.idp.stages, "
       "throwing.idp.candidates, "
       "throwing.idp.steps_per_stage, throwing.nlopt.max_evaluations, "
+      "throwing.nlopt.smooth_starts, throwing.nlopt.hops, "
       "throwing.nlopt.exact_gradient, throwing.grid.refinements and throwing.grid.exact_gradient";
   d.unit = "RK4 steps";
   d.work = (idp + nlopt) * steps;
+  // the sensitivity part's warm re-solves (app/run_order.hpp's fraction, measured before the
+  // global phase came) do not repeat its smooth starts
+  if (s.run_nlopt) d.resolve_base = (idp + nlopt - s.nlopt.smooth_starts * start) * steps;
   d.work_budget = 1e9;
   d.work_per_second = 7e6;  // the bundled cases: 3.1e7 and 2.3e7 steps in 4.6 and 3.8 s
   d.frames_rendered = (s.run_nlopt ? 2.0 : 1.0) * 45.0;  // each optimiser's throw

@@ -57,9 +57,15 @@ struct NloptSettings {
   int perturbed_starts = 0;     ///< starts beside the reference, IDP's and eq. 8's: the
                                 ///< reference with seeded uniform changes of its node rates
   double perturbation = 1.0;    ///< rad/s, half-width of those changes
-  int hops = 3;                 ///< then starts from the best local optimum so far, perturbed
-  double hop_size = 0.5;        ///< rad/s, half-width of a hop's changes
-  double fd_step = 1e-5;        ///< rad/s, central-difference step
+  /// starts of the global phase beside those: eq. 8 plus a seeded sum of `smooth_modes`
+  /// sine modes per joint (mode k's amplitude uniform in +-smooth_amplitude / k): whole-profile
+  /// changes that reach other basins, where node-by-node noise of that size is infeasible
+  int smooth_starts = 12;
+  double smooth_amplitude = 5.0;  ///< rad/s, the first mode's half-width
+  int smooth_modes = 4;           ///< sine modes per joint
+  int hops = 3;                   ///< then starts from the best local optimum so far, perturbed
+  double hop_size = 0.5;          ///< rad/s, half-width of a hop's changes
+  double fd_step = 1e-5;          ///< rad/s, central-difference step
   /// the energy's and the constraints' gradients exact (forward sensitivities of the RK4
   /// simulation, throw_gradient.hpp; one simulation with sensitivities in place of 2n + 1)
   /// instead of central differences; the violation objective keeps central differences
