@@ -24,7 +24,9 @@ inline constexpr double kSensitivityResolveFraction = 0.15;
 
 /// The case's time on one core estimated from its loader's demands: the work divided by
 /// the work a core does per second, plus, when `sensitivity`, its sensitivity part's
-/// re-solves (2 a key, kSensitivityResolveFraction of the solve each), plus, when `render`,
+/// re-solves (2 a key, each kSensitivityResolveFraction of the work it repeats: a demand's
+/// resolve_base where it names one, e.g. the throw without its global phase, else its work),
+/// plus, when `render`,
 /// the frames it renders at kFramesPerSecond. 0 when no demand says.
 double estimated_seconds(const LoadedCase& c, bool render, bool sensitivity = true);
 

@@ -187,6 +187,9 @@ void set_assumptions(const st::ThrowingSpec& spec, Results& j) {
                     "constraints.backoff"},
                    {"rotor inertia of each motor (not in Table 1)", a.rotor_inertia, "kg m^2",
                     "motors.rotor_inertia_kg_m2"},
+                   {"sign(qd) of the motors' Coulomb term taken as a smooth step within +-this "
+                    "rate (a numerical regularisation; 0: the exact sign)",
+                    spec.motor.coulomb_band, "rad/s", "motors.coulomb_band_rad_s"},
                    {"centre of the ball's circle from the tray hinge", a.circle_offset, "m",
                     "tray.circle_offset_m"}};
   j.limits = {spec.voltage_max,       spec.current_max,

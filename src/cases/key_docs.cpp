@@ -189,6 +189,10 @@ const std::vector<KeyDoc> kDocs = {
     {"throwing", "throwing.motors.resistance_ohm", "Armature resistance."},
     {"throwing", "throwing.motors.viscous_Nm_s_per_rad", "Viscous friction."},
     {"throwing", "throwing.motors.coulomb_Nm", "Coulomb friction."},
+    {"throwing", "throwing.motors.coulomb_band_rad_s",
+     "sign(qd) of the Coulomb term as the smooth step r (3 - r^2) / 2 of r = qd / band where "
+     "|qd| < band (0: the exact sign): a regularisation that keeps the sampled energy and "
+     "current smooth where a rate crosses 0 (docs/throwing.md)."},
     {"throwing", "throwing.motors.rotor_inertia_kg_m2", "Rotor inertia."},
     {"throwing", "throwing.motors.motor2",
      "Where motor 2 sits: on link 1 (drives theta2) or on the base (theta1 + theta2)."},

@@ -23,6 +23,7 @@ void read_motors(Map& m, studies::ThrowingSpec& s) {
   num(m, "resistance_ohm", s.motor.Ra, NumberRule::positive("ohm"));
   num(m, "viscous_Nm_s_per_rad", s.motor.Dm, NumberRule::non_negative("N m s/rad"));
   num(m, "coulomb_Nm", s.motor.tau_f, NumberRule::non_negative("N m"));
+  num(m, "coulomb_band_rad_s", s.motor.coulomb_band, NumberRule::range(0.0, 1.0, "rad/s"));
   num(m, "rotor_inertia_kg_m2", s.arm.rotor_inertia, NumberRule::non_negative("kg m^2"));
   if (const auto mount = m.choice("motor2", {"on_link1", "on_base"}))
     s.arm.motor2 =

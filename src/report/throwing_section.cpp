@@ -136,7 +136,8 @@ void add_method_paragraph(const Page& p, Section& method) {
         " in a row (budget " + as_text(idp.max_passes) + " passes), for " + as_text(idp.seeds) +
         " seeds." +
         (nl ? " The same constrained problem is solved by a gradient method (" + nl->algorithm +
-                  ") from several starts: the reference, IDP's optimum, the raw eq. 8 profile, "
+                  ") from several starts: the reference, IDP's optimum, the raw eq. 8 profile and "
+                  "seeded whole-profile changes of it (sums of sine modes: the global phase), "
                   "then seeded perturbations of the best local optimum so far. Each start runs "
                   "until SLSQP stops on a relative energy change of " +
                   format_sig(nl->ftol_rel, 2) + " / a relative step of " +

@@ -40,6 +40,7 @@ struct Model {
   double b_mount = 0;    // motor_torques' B(1, 0)
   // eq. 5-6 per motor: e = c_qd qd + c_qdd qdd + b3 tau + c_f sign(qd), i = (e - kv qd) / Ra
   double c_qd[2] = {}, c_qdd[2] = {}, b3[2] = {}, c_f[2] = {}, kv[2] = {}, Ra[2] = {};
+  double band[2] = {};  // coulomb_band (0: the exact sign)
   bool regeneration = true;
   double mu = 0;
   // stage_constraint_values
@@ -80,6 +81,7 @@ struct Model {
       c_qdd[m] = b * mo.Im;
       b3[m] = b;
       c_f[m] = b * mo.tau_f;
+      band[m] = mo.coulomb_band;
       kv[m] = mo.kv;
       Ra[m] = mo.Ra;
     }
@@ -392,7 +394,14 @@ class Kernel {
         rate += m.B[k][j] * w[j];
         acc_m += m.B[k][j] * qdd[j];
       }
-      const T sg = select(rate > 0.0, T(1.0), select(rate < 0.0, T(-1.0), T(0.0)));
+      // core::coulomb_sign's operations: a smooth step within the band, else the exact sign
+      T sg;
+      if (m.band[k] > 0) {
+        const T r = rate / m.band[k];
+        sg = select(r > 1.0, T(1.0), select(r < -1.0, T(-1.0), 0.5 * r * (3.0 - r * r)));
+      } else {
+        sg = select(rate > 0.0, T(1.0), select(rate < 0.0, T(-1.0), T(0.0)));
+      }
       const T e = m.c_qd[k] * rate + m.c_qdd[k] * acc_m + m.b3[k] * tau_m[k] + m.c_f[k] * sg;
       const T i = (e - m.kv[k] * rate) / m.Ra[k];
       const T p = e * i;

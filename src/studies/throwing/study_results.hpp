@@ -500,7 +500,9 @@ void fields(V& v, ThrowingStudyResults::Idp& x) {
 }
 template <class V>
 void fields(V& v, ThrowingStudyResults::Start& x) {
-  v("name", x.name, "where SLSQP started: reference, idp, eq8, or a hop from the best so far");
+  v("name", x.name,
+    "where SLSQP started: reference, idp, eq8, smooth N (eq. 8 changed by sine modes: the global "
+    "phase), or a hop from the best so far");
   v("energy_J", x.energy_J, "energy of the local optimum it reached");
   v("feasible", x.feasible, "meets every constraint");
   v("converged", x.converged, "feasible with its first-order residual within the tolerance");
