@@ -26,8 +26,7 @@ inline constexpr double kSensitivityResolveFraction = 0.15;
 /// the work a core does per second, plus, when `sensitivity`, its sensitivity part's
 /// re-solves (2 a key, each kSensitivityResolveFraction of the work it repeats: a demand's
 /// resolve_base where it names one, e.g. the throw without its global phase, else its work),
-/// plus, when `render`,
-/// the frames it renders at kFramesPerSecond. 0 when no demand says.
+/// plus, when `render`, the frames it renders at kFramesPerSecond. 0 when no demand says.
 double estimated_seconds(const LoadedCase& c, bool render, bool sensitivity = true);
 
 /// The memory the case holds at once, estimated from its loader's demands as the budget

@@ -31,9 +31,10 @@ struct DcMotor {
 };
 
 /// sign(qd) of the Coulomb term of `m`: within the band the cubic r (3 - r^2) / 2 of
-/// r = qd / coulomb_band (odd, continuous with its slope at r = +-1), outside it the exact
-/// sign (sign(0) = 0) outside it or when the band is 0; for any scalar type that compares
-/// with double (motor_electrics' instances).
+/// r = qd / coulomb_band (odd, continuous with its slope at r = +-1); the exact sign (sign(0)
+/// = 0) outside the band or when the band is 0. For any scalar type that compares with double
+/// (motor_electrics' instances); the SIMD kernel (simulate_kernel.cpp) writes the same
+/// operations with its lane selects.
 template <typename T>
 T coulomb_sign(const DcMotor& m, const T& qd) {
   if (m.coulomb_band > 0) {
