@@ -69,7 +69,7 @@ TEST(ArmModelMujoco, MjInverseOnTheUsersModelAndOnModelXmlEqualsTheChainsDynamic
   };
   // a horizontal SCARA (axes +z, gravity -z: none in the plane) and a vertical arm (axes
   // -y: gravity -z in the plane), from a URDF and an MJCF
-  const fs::path vertical_case = fs::temp_directory_path() / "armstudy_arm_model_vertical.yaml";
+  const fs::path vertical_case = testing::temp_path("arm_model_vertical.yaml");
   {
     std::string text = testing::slurp(kRepo / "reports/cases/time-optimal-3link.yaml");
     const size_t a = text.find("arm:\n"), t = text.find("time_optimal:\n");
@@ -134,8 +134,7 @@ TEST(ArmModelMujoco, MjInverseOnTheUsersModelAndOnModelXmlEqualsTheChainsDynamic
     }
     // MuJoCo's own round trip of model.xml (load, save with its writer, reload)
     if (std::system("command -v mujoco-testxml >/dev/null 2>&1") == 0) {
-      const fs::path dir =
-          fs::temp_directory_path() / ("armstudy_arm_model_" + std::string(arm.name));
+      const fs::path dir = testing::temp_path("arm_model_" + std::string(arm.name));
       fs::create_directories(dir);
       write_model_xml(dir, chain, sc.mjcf, {}, "no motion", "test");
       const std::string cmd = "cd " + dir.string() + " && mujoco-testxml model.xml >log.txt 2>&1";

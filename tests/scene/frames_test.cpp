@@ -9,6 +9,7 @@
 #include "scene/frames.hpp"
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
+#include "testing/files.hpp"
 
 namespace armstudy::scene {
 namespace {
@@ -60,7 +61,7 @@ TEST(Frames, PngRoundTripIsLossless) {
   for (int y = 0; y < 5; ++y)
     for (int x = 0; x < 7; ++x)
       img.set(x, y, {static_cast<std::uint8_t>(30 * x), static_cast<std::uint8_t>(40 * y), 77});
-  const auto p = std::filesystem::temp_directory_path() / "armstudy_png_roundtrip.png";
+  const auto p = testing::temp_path("png_roundtrip.png");
   write_png(p, img);
   const Image back = read_png(p);
   EXPECT_EQ(back.width, 7);

@@ -25,6 +25,7 @@
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
 #include "scene/study_frames.hpp"
+#include "testing/files.hpp"
 #include "testing/tray_poses.hpp"
 
 namespace armstudy::scene {
@@ -51,7 +52,7 @@ class EnvFor {
 };
 
 fs::path fresh(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "armstudy_watchdog_test" / name;
+  const fs::path d = testing::temp_path("watchdog_test") / name;
   fs::remove_all(d);
   fs::create_directories(d);
   return d;

@@ -17,6 +17,7 @@
 #include "scene/scene_error.hpp"
 #include "studies/throwing/solve.hpp"
 #include "testing/arms.hpp"
+#include "testing/files.hpp"
 
 namespace armstudy::scene {
 namespace {
@@ -124,7 +125,7 @@ TEST(Models, TrayModelCarriesTheBallsSpinInertiaOnItsOwnHinge) {
 }
 
 TEST(Models, BadModelFileGivesMujocosMessageWithTheFile) {
-  const fs::path p = fs::temp_directory_path() / "armstudy_bad_model.xml";
+  const fs::path p = testing::temp_path("bad_model.xml");
   std::ofstream(p) << "<mujoco><worldbody><body><joint type=\"hinge\"/><geom type=\"sphere\"/>"
                       "</body></worldbody></mujoco_broken>";
   try {

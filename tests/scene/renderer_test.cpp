@@ -23,6 +23,7 @@
 #include "scene/png_writer.hpp"
 #include "scene/scene_error.hpp"
 #include "testing/arms.hpp"
+#include "testing/files.hpp"
 
 namespace armstudy::scene {
 namespace {
@@ -30,7 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path out_dir() {
-  const fs::path d = fs::temp_directory_path() / "armstudy_scene_test";
+  const fs::path d = testing::temp_path("scene_test");
   fs::create_directories(d);
   return d;
 }

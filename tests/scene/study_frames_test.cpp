@@ -23,6 +23,7 @@
 #include "scene/time_optimal_frames.hpp"
 #include "studies/placement/solve.hpp"
 #include "testing/arms.hpp"
+#include "testing/files.hpp"
 
 namespace armstudy::scene {
 namespace {
@@ -30,7 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path out_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "armstudy_scene_test" / name;
+  const fs::path d = testing::temp_path("scene_test") / name;
   fs::remove_all(d);
   fs::create_directories(d);
   return d;

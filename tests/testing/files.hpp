@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace armstudy::testing {
 
 /// The source tree (the ARMSTUDY_SOURCE_DIR the test targets define).
@@ -28,9 +30,17 @@ inline void write_file(const std::filesystem::path& p, const std::string& text) 
   std::ofstream(p, std::ios::binary | std::ios::trunc) << text;
 }
 
-/// An empty folder `armstudy_<name>` under the system's temporary folder (removed first).
+/// `armstudy_<name>_<pid>` under the system's temporary folder. The process id keeps two test
+/// runs apart (scripts/test.sh runs the sanitizer tier beside the Release suite, and a fixed
+/// name let one run remove the other's folder mid-test).
+inline std::filesystem::path temp_path(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("armstudy_" + name + "_" + std::to_string(::getpid()));
+}
+
+/// An empty folder temp_path(name) (removed first).
 inline std::filesystem::path fresh_dir(const std::string& name) {
-  const std::filesystem::path d = std::filesystem::temp_directory_path() / ("armstudy_" + name);
+  const std::filesystem::path d = temp_path(name);
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;
