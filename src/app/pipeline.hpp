@@ -89,7 +89,20 @@ class StudyRun {
   /// After solve(): whether the answer came from the nominal one (a warm start that could not
   /// be used, e.g. a start outside a tightened constraint, solves from scratch).
   virtual bool warm_started() const { return false; }
+  /// After a sensitivity step solved `step` (this case with one key changed, `from` names the
+  /// step): when the step's answer also meets this case's limits and costs less than this
+  /// answer (by more than kOfferMargin of it), keeps it as a start of the next solve() and
+  /// returns true. A problem that is tighter, or that moves a key that does not bind, must
+  /// never answer below the case itself: the program then solves the case again with it
+  /// (app/run_case.cpp). Default: nothing is kept.
+  virtual bool offer_start(const StudyRun& step, const std::string& from) { return false; }
+  /// The starts kept by offer_start() since the last solve(), in words ("" none).
+  virtual std::string offered() const { return {}; }
 };
+
+/// A step's throw is kept as a start when it costs less than the answer by more than this share
+/// of it: above the optimisers' own spread between restarts (about 2e-5 on the bundled throw)
+inline constexpr double kOfferMargin = 1e-4;
 
 /// A study's sections of its case page, built from the whole results.json (the study's
 /// typed results read back from results[study]; report/study_sections.hpp).

@@ -257,6 +257,19 @@ void set_verdict(const LoadedCase& c, studies::Status status, const std::string&
   }
 }
 
+// the solved (or not) case's header, key figures and typed section into `r` and `section`
+// (again after a second solve: everything but what the caller adds later)
+void record_answer(const LoadedCase& c, const RunOptions& options, studies::Status status,
+                   report::ResultsRecord& r, nlohmann::json& section) {
+  r = results_header(c.info, status, c.run->message(), c.run->checks());
+  section = c.run->results();
+  if (status == studies::Status::kSolved)
+    for (const auto& k : c.run->key_figures())
+      r.key_figures.push_back({k.name, k.value, k.unit, k.label.empty() ? k.name : k.label});
+  // what decides whether a later run may keep this output (main.cpp, already_done)
+  r.run_options.render = options.render;
+}
+
 }  // namespace
 
 // the stages of one case in order (solve, sensitivity, render and exports, report,
@@ -277,20 +290,39 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
     // solve
     scene::take_phase_times();  // ARMSTUDY_PHASE_TIMES: this case's phases only
     std::optional<scene::PhaseScope> solve_phase(std::in_place, "solve");
-    const studies::Status status = c.run->solve(progress);
+    studies::Status status = c.run->solve(progress);
     solve_phase.reset();
-    const auto checks = c.run->checks();
-    report::ResultsRecord r = results_header(c.info, status, c.run->message(), checks);
-    const nlohmann::json section = c.run->results();
-    if (status == studies::Status::kSolved)
-      for (const auto& k : c.run->key_figures())
-        r.key_figures.push_back({k.name, k.value, k.unit, k.label.empty() ? k.name : k.label});
-    // what decides whether a later run may keep this output (main.cpp, already_done)
-    r.run_options.render = options.render;
+    report::ResultsRecord r;
+    nlohmann::json section;
+    record_answer(c, options, status, r, section);
     // the sensitivity part: the case re-solved at each key's steps (no rendering)
     if (status == studies::Status::kSolved && options.sensitivity && !c.info.sensitivity.empty()) {
       scene::PhaseScope phase("sensitivity");
-      r.sensitivity = run_sensitivity(c, progress, 0.975, 0.99);  // after the studies' 0.97
+      r.sensitivity = run_sensitivity(c, progress, 0.975, 0.985);  // after the studies' 0.97
+      // a step's answer met the case's own limits for less (StudyRun::offer_start): the case
+      // is solved again with it as a start, and the sensitivity part is redone around that
+      // answer; what a second round still finds below it is said, and fails a check
+      const std::string offered = c.run->offered();
+      if (r.sensitivity && !offered.empty()) {
+        const auto first_round = r.sensitivity;
+        status = c.run->solve([&](double f, std::string_view what) {
+          if (progress)
+            progress(0.985 + 0.005 * f, "solved again from a step's answer: " + std::string(what));
+        });
+        record_answer(c, options, status, r, section);
+        r.sensitivity = status == studies::Status::kSolved
+                            ? run_sensitivity(c, progress, 0.99, 0.995)
+                            : first_round;
+        if (r.sensitivity) {
+          r.sensitivity->resolved_from = offered;
+          r.sensitivity->undercut = c.run->offered();
+          r.checks.push_back(report::CheckRecord{
+              "sensitivity_steps_do_not_undercut_the_answer",
+              "no sensitivity step's answer meets the case's own limits for less than the "
+              "answer (after one more solve from such answers): 1 when one does",
+              r.sensitivity->undercut.empty() ? 0.0 : 1.0, 0.0, r.sensitivity->undercut.empty()});
+        }
+      }
     }
     // render and export only what was solved
     if (status == studies::Status::kSolved) render_and_export(c, options, tmp_dir, progress, r);

@@ -63,6 +63,7 @@ std::string side_text(const cases::SensitivityItem& it, int sign) {
 
 // one re-solve of the case with the key at `values`
 report::SensitivityStepRecord solve_step(const LoadedCase& nominal, const std::string& key,
+                                         const std::string& step_name,
                                          const std::vector<double>& values,
                                          const std::string& headline,
                                          const std::vector<std::string>& nominal_binding,
@@ -88,6 +89,9 @@ report::SensitivityStepRecord solve_step(const LoadedCase& nominal, const std::s
       if (s.value) s.change = *s.value - nominal_value;
       s.binding = c.run->binding();
       s.binding_changed = s.binding != nominal_binding;
+      // its answer, if it meets the case's own limits for less, is a start of the case's next
+      // solve (StudyRun::offer_start; run_case solves the case again)
+      nominal.run->offer_start(*c.run, "the sensitivity step " + key + " " + step_name);
     }
   } catch (const cases::CaseErrors& e) {
     s.status = "invalid";
@@ -167,7 +171,7 @@ std::optional<report::SensitivityRecord> run_sensitivity(const LoadedCase& nomin
       std::vector<double> values = it.nominal;
       for (double& v : values) v = it.relative ? v * (1 + sign * it.step) : v + sign * it.step;
       (sign < 0 ? k.minus : k.plus) =
-          solve_step(nominal, it.key, values, r.figure, r.binding, r.nominal);
+          solve_step(nominal, it.key, side_text(it, sign), values, r.figure, r.binding, r.nominal);
       ++done;
     }
     // central difference over the two steps; the key's relative change is 2 h (relative)

@@ -20,7 +20,8 @@ namespace armstudy::app {
 
 /// Runs the sensitivity part of `nominal` (solved; its `info.sensitivity` not empty).
 /// `progress` gets fractions from `from` to `to` and the step being solved. nullopt when
-/// the case lists no key or its study names no headline figure.
+/// the case lists no key or its study names no headline figure. Each step's answer is offered
+/// to nominal.run (StudyRun::offer_start: kept when it meets the case's own limits for less).
 std::optional<report::SensitivityRecord> run_sensitivity(const LoadedCase& nominal,
                                                          const studies::ProgressFn& progress,
                                                          double from = 0.95, double to = 0.99);

@@ -7,7 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
+#include <locale>
 #include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/export_records.hpp"
 #include "app/json_numbers.hpp"
@@ -427,7 +432,36 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
 
   st::Status solve(const st::ProgressFn& progress) override {
     result_ = warm_ ? st::solve_throwing_warm(spec_, *warm_) : st::solve_throwing(spec_, progress);
+    pending_.clear();
     return result_.status;
+  }
+
+  // a step's answer that meets this case's limits for less: SLSQP starts from it next solve()
+  bool offer_start(const StudyRun& step, const std::string& from) override {
+    const auto* s = dynamic_cast<const ThrowingRun*>(&step);
+    const auto& r = result_;
+    if (!s || warm_ || r.status != st::Status::kSolved || r.answer != "slsqp" ||
+        s->result_.status != st::Status::kSolved || s->result_.answer != "slsqp")
+      return false;
+    const st::JudgedThrow j = st::judge_throw(spec_, s->result_.nlopt.profile);
+    const double answer = r.nlopt.evaluation.energy;
+    // within the limits as the optimisers' answers are: the back-off kept (a throw that spends
+    // it is cheaper for that alone) and feasible in the re-check
+    if (!j.finite || !j.feasible || !j.keeps_backoff ||
+        !(j.energy < answer - kOfferMargin * std::abs(answer)))
+      return false;
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os << from << ": " << std::fixed << std::setprecision(6) << j.energy
+       << " J within this case's limits";
+    spec_.offered_starts.push_back({os.str(), s->result_.nlopt.profile});
+    pending_.push_back(os.str());
+    return true;
+  }
+  std::string offered() const override {
+    std::string t;
+    for (const auto& p : pending_) t += (t.empty() ? "" : "; ") + p;
+    return t;
   }
 
   // a sensitivity step: SLSQP from the nominal answer alone (studies/throwing/warm_solve.hpp)
@@ -575,6 +609,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
 
  private:
   std::optional<st::VelocityProfile> warm_;  ///< a sensitivity step's start (warm_start)
+  std::vector<std::string> pending_;         ///< offer_start's kept starts since solve()
 };
 
 }  // namespace

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright 2026 The armstudy authors
 // The sensitivity part (app/sensitivity.hpp): a closed-form elasticity, the bundled throwing
-// case's warm-started steps against cold-started re-solves, and the file:line:col errors of
-// a bad `sensitivity:` entry.
+// case's warm-started steps against cold-started re-solves, a step whose answer meets the
+// case's own limits for less (the case is solved again from it, and what is still below is a
+// failed check), and the file:line:col errors of a bad `sensitivity:` entry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <set>
 #include <string>
 
@@ -185,6 +189,67 @@ TEST(Sensitivity, ThrowingWarmStepsAgreeWithColdResolves) {
     EXPECT_LE(rel, kWarmExcess) << k.key << ": the warm step costs more than a cold solve";
   }
   EXPECT_EQ(cold_solved, 2) << "a cold key is no longer in the bundled case's sensitivity list";
+}
+
+// A throw whose search is cut short (3 SLSQP evaluations a start) and a key that does not
+// bind (a 1000 W power rating): each warm step goes on with the nominal's search and ends
+// below it, within the case's own limits. Such an answer is a start of the case's next solve
+// (StudyRun::offer_start), so the answer costs no more than the cheapest of them, the part
+// says which steps, the answer's grid names the offered start, and what the steps around the
+// new answer still find below it fails the check sensitivity_steps_do_not_undercut_the_answer
+// (a search cut short is not an optimum, and the page says so).
+TEST(Sensitivity, AStepAnswerWithinTheCaseLimitsForLessIsAStartOfTheAnswer) {
+  const std::filesystem::path out = testing::fresh_dir("sensitivity_offered");
+  const std::filesystem::path file = out / "offered.yaml";
+  testing::write_file(file, R"(study: throwing
+name: offered-start
+throwing:
+  motors: {power_max_W: 1000, current_max_A: 100}
+  constraints: {release_tolerance_deg: 30}
+  idp: {stages: 4, steps_per_stage: 20, iterations: 2, max_passes: 1, candidates: 3, seeds: 1}
+  nlopt: {max_evaluations: 3}
+  grid: {refinements: 0}
+  checks: {allow_not_converged: true}
+sensitivity:
+  - key: throwing.motors.power_max_W
+    why: "does not bind"
+)");
+  const testing::CliRun r =
+      testing::run_cli("run " + file.string() + " --no-render --out " + (out / "out").string());
+  const auto j = nlohmann::json::parse(testing::slurp(out / "out/offered-start/results.json"));
+  const auto& s = j["sensitivity"];
+  const std::string resolved = s["resolved_from"].get<std::string>();
+  ASSERT_NE(resolved.find("the sensitivity step throwing.motors.power_max_W"), std::string::npos)
+      << r.output;
+  // the cheapest offered energy, as the part quotes them ("...: 14.754626 J within ...")
+  double offered = INFINITY;
+  for (size_t at = resolved.find(": "); at != std::string::npos; at = resolved.find(": ", at + 1))
+    if (resolved.find(" J within", at) != std::string::npos)
+      offered = std::min(offered, std::strtod(resolved.c_str() + at + 2, nullptr));
+  ASSERT_TRUE(std::isfinite(offered)) << resolved;
+  double answer = NAN;
+  for (const auto& k : j["key_figures"])
+    if (k["name"] == "energy_J") answer = k["value"].get<double>();
+  EXPECT_LE(answer, offered + 5e-7) << resolved;  // the quote's 6 decimals
+  const std::string from = j["throwing"]["control_grids"]["grids"][0]["from"].get<std::string>();
+  EXPECT_EQ(from.rfind("offered: the sensitivity step", 0), 0u) << from;
+  // the steps around the new answer: each value recorded, and the check agrees with the part
+  const std::string undercut = s["undercut"].get<std::string>();
+  int found = 0;
+  for (const auto& c : j["checks"])
+    if (c["name"] == "sensitivity_steps_do_not_undercut_the_answer") {
+      ++found;
+      EXPECT_EQ(c["passed"].get<bool>(), undercut.empty()) << undercut;
+    }
+  EXPECT_EQ(found, 1);
+  EXPECT_EQ(r.exit_code, undercut.empty() ? 0 : 1) << r.output;
+  if (!undercut.empty()) {
+    EXPECT_NE(r.output.find("sensitivity_steps_do_not_undercut_the_answer"), std::string::npos)
+        << r.output;
+  }
+  const std::string page = testing::slurp(out / "out/offered-start/index.html");
+  EXPECT_NE(page.find("Solved again"), std::string::npos);
+  EXPECT_EQ(page.find("NOT the optimum") != std::string::npos, !undercut.empty());
 }
 
 }  // namespace armstudy::sensitivity_e2e

@@ -7,13 +7,17 @@
 // - on a small throw, each finer grid's energy is at most the coarser one's, the finest is
 //   the answer, and the verdict follows the tolerance: a tolerance no doubling can meet
 //   leaves the answer "not converged: still falling by X J per doubling", never a plain
-//   optimum; a loose one stops at the first doubling as converged.
+//   optimum; a loose one stops at the first doubling as converged;
+// - an offered start (a throw met elsewhere in the run that meets the limits, e.g. a
+//   sensitivity step's) on the answer's grid: the answer never costs more than it, it names
+//   it, and judge_throw judges it as the answer is judged.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "studies/throwing/grid_sequence.hpp"
 #include "studies/throwing/solve.hpp"
+#include "studies/throwing/warm_solve.hpp"
 
 namespace armstudy::studies {
 namespace {
@@ -131,6 +135,48 @@ TEST(ThrowingGrid, TheFinerGridsTakeExactDerivativesAndEndNoDearerThanCentralDif
   // the 0.5 % a last digit moves it)
   EXPECT_LE(re.grids[1].energy, 1.005 * rc.grids[1].energy)
       << re.grids[1].energy << " J exact against " << rc.grids[1].energy << " J central";
+}
+
+// A search cut short (3 SLSQP evaluations a start, one grid) against a throw of the same
+// problem found with a full budget: offered as a start, the short search's answer costs no
+// more than it and names it; a throw on another grid is not tried; judge_throw gives the
+// offered throw's energy as the answer's is computed and finds it within the limits and the
+// back-off.
+TEST(ThrowingGrid, AnOfferedThrowWithinTheLimitsIsNeverCheaperThanTheAnswer) {
+  ThrowingSpec s = small_grid_throw();
+  s.grid.refinements = 0;
+  s.nlopt.smooth_starts = 0;
+  s.nlopt.max_evaluations = 3;
+  s.allow_not_converged = true;
+  const ThrowingResult cut = solve_throwing(s);
+  ASSERT_EQ(cut.status, Status::kSolved) << cut.message;
+  ThrowingSpec full = s;
+  full.nlopt.max_evaluations = 1500;
+  const ThrowingResult better = solve_throwing(full);
+  ASSERT_EQ(better.status, Status::kSolved) << better.message;
+  const double e_better = better.nlopt.evaluation.energy;
+  ASSERT_LT(e_better, cut.nlopt.evaluation.energy * (1 - 1e-3))
+      << "the cut search is no longer worse: the test no longer tests";
+  const JudgedThrow j = judge_throw(s, better.nlopt.profile);
+  EXPECT_TRUE(j.finite);
+  EXPECT_TRUE(j.feasible);
+  EXPECT_TRUE(j.keeps_backoff);  // an optimiser's answer: it kept the back-off
+  EXPECT_DOUBLE_EQ(j.energy, e_better);
+
+  ThrowingSpec offered = s;
+  offered.offered_starts.push_back({"the full search", better.nlopt.profile});
+  // on twice the stages: another grid than the answer's, not tried
+  offered.offered_starts.push_back({"another grid", prolong_profile(better.nlopt.profile, 2)});
+  const ThrowingResult r = solve_throwing(offered);
+  ASSERT_EQ(r.status, Status::kSolved) << r.message;
+  EXPECT_LE(r.nlopt.evaluation.energy, e_better);
+  EXPECT_TRUE(r.nlopt_check.feasible);
+  ASSERT_EQ(r.grids.size(), 1u);
+  EXPECT_EQ(r.grids[0].from.rfind("offered: the full search", 0), 0u) << r.grids[0].from;
+  EXPECT_DOUBLE_EQ(r.grids[0].energy, r.nlopt.evaluation.energy);
+  EXPECT_DOUBLE_EQ(r.first_grid.evaluation.energy, r.nlopt.evaluation.energy);
+  for (const auto& run : r.grids[0].runs)
+    EXPECT_EQ(run.name.find("another grid"), std::string::npos) << run.name;
 }
 
 }  // namespace

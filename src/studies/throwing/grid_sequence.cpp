@@ -100,6 +100,59 @@ void estimate_error(const ThrowingSpec& spec, ThrowingResult& r) {
   r.grid_extrapolated = g[n - 1].energy - (last <= 0 ? remaining : -remaining);
 }
 
+// spec.offered_starts on the answer's grid: SLSQP from each and each unchanged (it meets the
+// limits: never worse than it); when the lowest of them is below the answer (or the grid had
+// no feasible throw), it becomes the answer and its grid's entry (the runs are listed in that
+// entry either way)
+void adopt_offered(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen::Vector2d& delta,
+                   const NloptSettings& settings, ThrowingResult& r) {
+  if (spec.offered_starts.empty() || r.grids.empty() || r.slsqp_best_start < 0) return;
+  const int stages = r.nlopt.profile.stages();
+  std::vector<std::pair<std::string, VelocityProfile>> starts;
+  for (const OfferedStart& o : spec.offered_starts)
+    if (o.profile.stages() == stages) starts.emplace_back("offered: " + o.name, o.profile);
+  if (starts.empty()) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  const ThrowSetup fine = grid_setup(setup, r.grids.front().stages, stages);
+  std::vector<ThrowingResult::SlsqpStart> runs;
+  run_slsqp_wave(fine, spec, starts, delta, settings, runs);
+  // each unchanged too, where it keeps the optimisers' back-off (keeps_backoff): an answer
+  // that spends it would be cheaper for that alone
+  for (const auto& [name, p] : starts) {
+    ThrowingResult::SlsqpStart u = unchanged(fine, spec, p, delta, settings, name);
+    u.run.feasible = u.run.feasible && keeps_backoff(fine, u.run.evaluation, settings.backoff);
+    u.run.converged = u.run.converged && u.run.feasible;
+    runs.push_back(std::move(u));
+  }
+  ThrowingResult::GridLevel& g = r.grids.back();
+  const int b = lowest(runs);
+  // (lower than the answer, or the answer's grid had no feasible throw)
+  const bool lower =
+      b >= 0 && (!g.feasible || runs[b].run.evaluation.energy < r.nlopt.evaluation.energy);
+  if (lower) {
+    const ThrowingResult::SlsqpStart& best = runs[b];
+    g.feasible = true;
+    g.energy = best.run.evaluation.energy;
+    g.converged = best.run.converged;
+    g.kkt_residual = best.run.kkt_residual;
+    g.from = best.name;
+    r.nlopt_run = best.run;
+    r.nlopt_check = best.check;
+    r.answer_steps_per_stage = fine.steps_per_stage;
+    r.nlopt = record_motion(fine, spec, best.run.best);
+    if (r.grids.size() == 1) {
+      r.first_grid = r.nlopt;
+      r.first_grid_check = r.nlopt_check;
+    }
+  }
+  for (auto& s : runs) {
+    g.simulations += s.run.simulations;
+    g.runs.push_back(std::move(s));
+  }
+  g.run_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (lower) estimate_error(spec, r);
+}
+
 }  // namespace
 
 ThrowSetup grid_setup(const ThrowSetup& setup, int first_stages, int stages) {
@@ -129,7 +182,8 @@ void refine_grids(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen
   first.from = r.slsqp_starts[r.slsqp_best_start].name;
   for (const auto& s : r.slsqp_starts) first.simulations += s.run.simulations;
   r.grids.push_back(first);
-  if (!first.feasible || spec.grid.refinements <= 0) return;
+  if (!first.feasible || spec.grid.refinements <= 0)
+    return adopt_offered(setup, spec, delta, settings, r);
 
   auto candidates = first_candidates(r, std::max(1, spec.grid.refine_best));
   ThrowSetup fine = setup;
@@ -167,6 +221,7 @@ void refine_grids(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen
     estimate_error(spec, r);
     if (r.grid_converged) break;
   }
+  adopt_offered(setup, spec, delta, settings, r);
 }
 
 }  // namespace armstudy::studies

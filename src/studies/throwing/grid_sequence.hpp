@@ -13,6 +13,9 @@
 /// and says by how much the energy still falls per doubling. The error estimate: the last
 /// change times rho / (1 - rho) when the changes fall geometrically (rho = last / previous
 /// change in (0, 1)), else the last change itself.
+/// Offered starts (spec.offered_starts: throws the run met elsewhere, e.g. a sensitivity step's,
+/// that meet these limits for less): on the answer's grid SLSQP starts from each, and the
+/// answer is the lowest of it and them (its grid's entry then names the offered start).
 
 #include "studies/throwing/result.hpp"
 #include "studies/throwing/spec.hpp"

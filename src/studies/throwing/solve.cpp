@@ -185,6 +185,13 @@ ThrowMotion record_motion(const ThrowSetup& setup, const ThrowingSpec& spec,
   return m;
 }
 
+bool keeps_backoff(const ThrowSetup& setup, const ProfileEvaluation& e, double backoff) {
+  if (!e.finite) return false;
+  for (double g : constraint_values(setup, e, 0.75 * backoff))
+    if (!(g <= 0.0)) return false;
+  return true;
+}
+
 Verification verify_profile(const ThrowSetup& setup, const VelocityProfile& profile,
                             int refinement) {
   Verification v;

@@ -19,6 +19,9 @@
 
 #include <Eigen/Dense>
 
+#include <string>
+#include <vector>
+
 #include "core/dc_motor.hpp"
 #include "core/types.hpp"
 #include "studies/throwing/idp.hpp"
@@ -41,6 +44,14 @@ struct GridSettings {
   /// warm step from an answer refined this way can end short of the first-order test
   /// (docs/throwing.md, "Exact derivatives")
   bool exact_gradient = false;
+};
+
+/// A throw met elsewhere in a run (a sensitivity step's answer, app/sensitivity.hpp) that meets
+/// the case's limits for less than its answer: the control grids try it too
+/// (grid_sequence.hpp, "offered starts"). No case key sets it; the program does.
+struct OfferedStart {
+  std::string name;         ///< where it was met, in words
+  VelocityProfile profile;  ///< its node rates (any grid)
 };
 
 /// Inputs of the throwing study (SI, radians). Defaults: Table 1 and Sec. 4 of 003, and
@@ -75,6 +86,9 @@ struct ThrowingSpec {
   double landing_height = 0.0;            ///< m, height (y) at which the flight ends
   double replay_tolerance = 2e-3;         ///< rad, open-loop replay vs plan (check)
   int threads = 2;                        ///< evaluation threads
+  /// throws the run met elsewhere that meet these limits for less than the answer (the
+  /// program's, not the case file's): SLSQP starts from each on the answer's control grid
+  std::vector<OfferedStart> offered_starts;
 };
 
 }  // namespace armstudy::studies

@@ -11,6 +11,36 @@
 #include "studies/throwing/solve.hpp"
 
 namespace armstudy::studies {
+namespace {
+
+// the case on `p`'s control grid, the RK4 step kept at most the case's (grid_setup's rule)
+ThrowingSpec spec_on_grid_of(const ThrowingSpec& case_spec, const VelocityProfile& p) {
+  ThrowingSpec spec = case_spec;
+  if (p.stages() >= 2 && p.stages() != spec.stages) {
+    const long steps = static_cast<long>(spec.steps_per_stage) * spec.stages;
+    spec.stages = p.stages();
+    spec.steps_per_stage = static_cast<int>(std::max(1L, (steps + spec.stages - 1) / spec.stages));
+  }
+  return spec;
+}
+
+}  // namespace
+
+JudgedThrow judge_throw(const ThrowingSpec& case_spec, const VelocityProfile& p) {
+  JudgedThrow j;
+  const ThrowingSpec spec = spec_on_grid_of(case_spec, p);
+  ThrowSetup setup;
+  VelocityProfile initial;
+  ThrowingResult scratch;
+  if (p.stages() < 2 || !prepare_throw(spec, setup, initial, scratch)) return j;
+  const ProfileEvaluation e = simulate_profile(setup, p);
+  if (!e.finite) return j;
+  j.finite = true;
+  j.energy = e.energy;
+  j.keeps_backoff = keeps_backoff(setup, e, spec.backoff);
+  j.feasible = verify_profile(setup, p, spec.check_refinement).feasible;
+  return j;
+}
 
 // (over 60 lines, kept whole: the warm re-solve's steps in order (set-up, repair, SLSQP, re-check),
 // as solve_throwing's)
@@ -21,12 +51,7 @@ ThrowingResult solve_throwing_warm(const ThrowingSpec& case_spec, const Velocity
   VelocityProfile initial;
   // the start's control grid (the nominal answer's finest), with the RK4 step kept at most
   // the case's (grid_setup)
-  ThrowingSpec spec = case_spec;
-  if (start.stages() >= 2 && start.stages() != spec.stages) {
-    const long steps = static_cast<long>(spec.steps_per_stage) * spec.stages;
-    spec.stages = start.stages();
-    spec.steps_per_stage = static_cast<int>(std::max(1L, (steps + spec.stages - 1) / spec.stages));
-  }
+  const ThrowingSpec spec = spec_on_grid_of(case_spec, start);
   const Eigen::Vector2d delta = spec.release - spec.start;
   if (!prepare_throw(spec, setup, initial, r)) return r;
   r.answer_steps_per_stage = spec.steps_per_stage;

@@ -22,4 +22,17 @@ namespace armstudy::studies {
 /// feasible but not first-order converged.
 ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfile& start);
 
+/// A throw judged against the case `spec`'s own limits and physics: `energy` on the throw's
+/// control grid with the case's RK4 step (as the answer's energy is; the grid of
+/// solve_throwing_warm), `feasible` in the re-check with spec.check_refinement x the steps
+/// (no back-off), `keeps_backoff` as the optimisers' answers do (keeps_backoff, spec.backoff),
+/// `finite` false when the set-up or the simulation failed.
+struct JudgedThrow {
+  double energy = 0;  ///< J
+  bool feasible = false;
+  bool keeps_backoff = false;
+  bool finite = false;
+};
+JudgedThrow judge_throw(const ThrowingSpec& spec, const VelocityProfile& p);
+
 }  // namespace armstudy::studies
