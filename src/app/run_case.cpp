@@ -315,12 +315,13 @@ CaseOutcome run_case(LoadedCase& c, const RunOptions& options,
                             : first_round;
         if (r.sensitivity) {
           r.sensitivity->resolved_from = offered;
-          r.sensitivity->undercut = c.run->offered();
+          const std::string still = c.run->offered();
+          if (!still.empty()) r.sensitivity->undercut = still;
           r.checks.push_back(report::CheckRecord{
               "sensitivity_steps_do_not_undercut_the_answer",
               "no sensitivity step's answer meets the case's own limits for less than the "
               "answer (after one more solve from such answers): 1 when one does",
-              r.sensitivity->undercut.empty() ? 0.0 : 1.0, 0.0, r.sensitivity->undercut.empty()});
+              still.empty() ? 0.0 : 1.0, 0.0, still.empty()});
         }
       }
     }

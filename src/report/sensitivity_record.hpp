@@ -49,11 +49,12 @@ struct SensitivityRecord {
   std::vector<SensitivityKeyRecord> keys;
   double seconds = 0;  ///< wall time of every re-solve
   /// the steps whose answers met the case's own limits for less than its first answer: the
-  /// case was solved again with them as starts, and this part is around that answer ("" none)
-  std::string resolved_from;
-  /// steps whose answers still met the case's limits for less than the answer it reports (""
-  /// none): the answer is then not the optimum of its problem, and the check says so
-  std::string undercut;
+  /// case was solved again with them as starts, and this part is around that answer (absent:
+  /// none)
+  std::optional<std::string> resolved_from;
+  /// steps whose answers still met the case's limits for less than the answer it reports
+  /// (absent: none): the answer is then not the optimum of its problem, and the check says so
+  std::optional<std::string> undercut;
 };
 
 template <class V>
@@ -92,12 +93,12 @@ void fields(V& v, SensitivityRecord& x) {
   v("binding", x.binding, "the constraints that bind the nominal answer");
   v("keys", x.keys, "every key of the case's sensitivity part, in its order");
   v("seconds", x.seconds, "wall time of every re-solve", {{"minimum", 0}});
-  v("resolved_from", x.resolved_from,
-    "the steps whose answers met the case's own limits for less than its first answer, with "
-    "their energies: the case was solved again from them (empty: none)");
-  v("undercut", x.undercut,
-    "steps whose answers still meet the case's limits for less than the reported answer "
-    "(empty: none; otherwise the answer is not the optimum of its problem)");
+  v.optional("resolved_from", x.resolved_from,
+             "the steps whose answers met the case's own limits for less than its first answer, "
+             "with their energies: the case was solved again from them (absent: none)");
+  v.optional("undercut", x.undercut,
+             "steps whose answers still meet the case's limits for less than the reported "
+             "answer (absent: none; otherwise the answer is not the optimum of its problem)");
 }
 
 }  // namespace armstudy::report

@@ -147,18 +147,18 @@ Section sensitivity_section(const SensitivityRecord& s) {
       "The binding constraints are those the study names for the answer at each step (" +
       list_words(s.binding) + " here); a step at which they differ is marked. Re-solves took " +
       format_sig(s.seconds, 3) + " s in all.");
-  if (!s.resolved_from.empty())
+  if (s.resolved_from)
     sec.paragraph(
         "Solved again: the answers of these steps met the case's own limits for less than its "
-        "first answer, so the case was solved again with them as starts, and the steps above "
-        "are around that answer: " +
-        s.resolved_from + ".");
-  if (!s.undercut.empty())
+        "first answer, so the case was solved again with them as starts, and the steps in the "
+        "table are around that answer: " +
+        *s.resolved_from + ".");
+  if (s.undercut)
     sec.paragraph(
         "NOT the optimum: after that, these steps still found answers within the case's own "
         "limits below the answer, and the check sensitivity_steps_do_not_undercut_the_answer "
         "fails: " +
-        s.undercut + ".");
+        *s.undercut + ".");
   Table t;
   t.caption = "Every key of the case's sensitivity part, largest influence first.";
   t.header = {"What is varied",   "Case key, value, step", "At -step",

@@ -76,10 +76,13 @@ void decide_answer(const ThrowingSpec& spec, ThrowingResult& r) {
   r.status = Status::kSolved;
   std::string eq8_words = "eq. 8 start " + fixed(e8, 3) + " J";
   if (!r.initial_feasible) eq8_words += ", which breaks " + broken_limits(r.initial.worst);
-  const std::string who = slsqp ? "SLSQP from " + std::to_string(r.slsqp_starts.size()) +
-                                      " starts (best from " +
-                                      r.slsqp_starts[r.slsqp_best_start].name + ")"
-                                : std::string("IDP");
+  // the answer's start: the first grid's best, or an offered start its grid took
+  std::string who = "IDP";
+  if (slsqp) {
+    const bool offered = !r.grids.empty() && r.grids.back().from.rfind("offered: ", 0) == 0;
+    who = "SLSQP from " + std::to_string(r.slsqp_starts.size()) + " starts (best from " +
+          (offered ? r.grids.back().from : r.slsqp_starts[r.slsqp_best_start].name) + ")";
+  }
   // the control grids: the answer of the continuous problem, or how far it still falls
   std::string lead = converged ? "lowest-energy throw found: " : "NOT converged: ";
   std::string grid_words;
