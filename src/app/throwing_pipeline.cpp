@@ -432,7 +432,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
 
   st::Status solve(const st::ProgressFn& progress) override {
     result_ = warm_ ? st::solve_throwing_warm(spec_, *warm_) : st::solve_throwing(spec_, progress);
-    pending_.clear();
+    offered_before_ = spec_.offered_starts.size();
     return result_.status;
   }
 
@@ -455,12 +455,13 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
     os << from << ": " << std::fixed << std::setprecision(6) << j.energy
        << " J within this case's limits";
     spec_.offered_starts.push_back({os.str(), s->result_.nlopt.profile});
-    pending_.push_back(os.str());
     return true;
   }
+  // the starts kept since the last solve() (those before it were its starts)
   std::string offered() const override {
     std::string t;
-    for (const auto& p : pending_) t += (t.empty() ? "" : "; ") + p;
+    for (size_t i = offered_before_; i < spec_.offered_starts.size(); ++i)
+      t += (t.empty() ? "" : "; ") + spec_.offered_starts[i].name;
     return t;
   }
 
@@ -609,7 +610,7 @@ class ThrowingRun final : public TypedStudyRun<st::ThrowingSpec, st::ThrowingRes
 
  private:
   std::optional<st::VelocityProfile> warm_;  ///< a sensitivity step's start (warm_start)
-  std::vector<std::string> pending_;         ///< offer_start's kept starts since solve()
+  size_t offered_before_ = 0;                ///< spec_.offered_starts at the last solve()
 };
 
 }  // namespace

@@ -100,6 +100,21 @@ void estimate_error(const ThrowingSpec& spec, ThrowingResult& r) {
   r.grid_extrapolated = g[n - 1].energy - (last <= 0 ? remaining : -remaining);
 }
 
+// `best`, a throw of the grid `g` (set up as `fine`), as that grid's entry and the answer
+void take_answer(const ThrowSetup& fine, const ThrowingSpec& spec,
+                 const ThrowingResult::SlsqpStart& best, ThrowingResult::GridLevel& g,
+                 ThrowingResult& r) {
+  g.energy = best.run.evaluation.energy;
+  g.feasible = true;
+  g.converged = best.run.converged;
+  g.kkt_residual = best.run.kkt_residual;
+  g.from = best.name;
+  r.nlopt_run = best.run;
+  r.nlopt_check = best.check;
+  r.answer_steps_per_stage = fine.steps_per_stage;
+  r.nlopt = record_motion(fine, spec, best.run.best);
+}
+
 // spec.offered_starts on the answer's grid: SLSQP from each and each unchanged (it meets the
 // limits: never worse than it); when the lowest of them is below the answer (or the grid had
 // no feasible throw), it becomes the answer and its grid's entry (the runs are listed in that
@@ -130,16 +145,7 @@ void adopt_offered(const ThrowSetup& setup, const ThrowingSpec& spec, const Eige
   const bool lower =
       b >= 0 && (!g.feasible || runs[b].run.evaluation.energy < r.nlopt.evaluation.energy);
   if (lower) {
-    const ThrowingResult::SlsqpStart& best = runs[b];
-    g.feasible = true;
-    g.energy = best.run.evaluation.energy;
-    g.converged = best.run.converged;
-    g.kkt_residual = best.run.kkt_residual;
-    g.from = best.name;
-    r.nlopt_run = best.run;
-    r.nlopt_check = best.check;
-    r.answer_steps_per_stage = fine.steps_per_stage;
-    r.nlopt = record_motion(fine, spec, best.run.best);
+    take_answer(fine, spec, runs[b], g, r);
     if (r.grids.size() == 1) {
       r.first_grid = r.nlopt;
       r.first_grid_check = r.nlopt_check;
@@ -201,22 +207,13 @@ void refine_grids(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen
     g.runs.push_back(unchanged(fine, spec, starts[0].second, delta, settings, starts[0].first));
     const int b = lowest(g.runs);
     if (b < 0) break;  // no throw of this grid is feasible in the re-check: stop refining
-    const ThrowingResult::SlsqpStart& best = g.runs[b];
-    g.energy = best.run.evaluation.energy;
-    g.feasible = true;
-    g.converged = best.run.converged;
-    g.kkt_residual = best.run.kkt_residual;
-    g.from = best.name;
+    take_answer(fine, spec, g.runs[b], g, r);
     for (const auto& s : g.runs) g.simulations += s.run.simulations;
     g.run_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.nlopt_run = best.run;
-    r.nlopt_check = best.check;
-    r.answer_steps_per_stage = fine.steps_per_stage;
-    r.nlopt = record_motion(fine, spec, best.run.best);
     // the first grid's start this throw descends from
     const std::string origin =
         b < static_cast<int>(candidates.size()) ? candidates[b].first : candidates[0].first;
-    candidates = {{origin, best.run.best}};
+    candidates = {{origin, g.runs[b].run.best}};
     r.grids.push_back(std::move(g));
     estimate_error(spec, r);
     if (r.grid_converged) break;

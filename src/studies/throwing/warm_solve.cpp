@@ -7,32 +7,22 @@
 #include <cmath>
 #include <locale>
 #include <sstream>
+#include <stdexcept>
 
+#include "studies/throwing/grid_sequence.hpp"
 #include "studies/throwing/solve.hpp"
 
 namespace armstudy::studies {
-namespace {
 
-// the case on `p`'s control grid, the RK4 step kept at most the case's (grid_setup's rule)
-ThrowingSpec spec_on_grid_of(const ThrowingSpec& case_spec, const VelocityProfile& p) {
-  ThrowingSpec spec = case_spec;
-  if (p.stages() >= 2 && p.stages() != spec.stages) {
-    const long steps = static_cast<long>(spec.steps_per_stage) * spec.stages;
-    spec.stages = p.stages();
-    spec.steps_per_stage = static_cast<int>(std::max(1L, (steps + spec.stages - 1) / spec.stages));
-  }
-  return spec;
-}
-
-}  // namespace
-
-JudgedThrow judge_throw(const ThrowingSpec& case_spec, const VelocityProfile& p) {
+JudgedThrow judge_throw(const ThrowingSpec& spec, const VelocityProfile& p) {
   JudgedThrow j;
-  const ThrowingSpec spec = spec_on_grid_of(case_spec, p);
+  if (p.stages() < 2) return j;
   ThrowSetup setup;
-  VelocityProfile initial;
-  ThrowingResult scratch;
-  if (p.stages() < 2 || !prepare_throw(spec, setup, initial, scratch)) return j;
+  try {
+    setup = grid_setup(make_throw_setup(spec), spec.stages, p.stages());
+  } catch (const std::invalid_argument&) {
+    return j;
+  }
   const ProfileEvaluation e = simulate_profile(setup, p);
   if (!e.finite) return j;
   j.finite = true;
@@ -51,7 +41,12 @@ ThrowingResult solve_throwing_warm(const ThrowingSpec& case_spec, const Velocity
   VelocityProfile initial;
   // the start's control grid (the nominal answer's finest), with the RK4 step kept at most
   // the case's (grid_setup)
-  const ThrowingSpec spec = spec_on_grid_of(case_spec, start);
+  ThrowingSpec spec = case_spec;
+  if (start.stages() >= 2 && start.stages() != spec.stages) {
+    const long steps = static_cast<long>(spec.steps_per_stage) * spec.stages;
+    spec.stages = start.stages();
+    spec.steps_per_stage = static_cast<int>(std::max(1L, (steps + spec.stages - 1) / spec.stages));
+  }
   const Eigen::Vector2d delta = spec.release - spec.start;
   if (!prepare_throw(spec, setup, initial, r)) return r;
   r.answer_steps_per_stage = spec.steps_per_stage;

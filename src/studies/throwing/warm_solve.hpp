@@ -23,10 +23,10 @@ namespace armstudy::studies {
 ThrowingResult solve_throwing_warm(const ThrowingSpec& spec, const VelocityProfile& start);
 
 /// A throw judged against the case `spec`'s own limits and physics: `energy` on the throw's
-/// control grid with the case's RK4 step (as the answer's energy is; the grid of
-/// solve_throwing_warm), `feasible` in the re-check with spec.check_refinement x the steps
-/// (no back-off), `keeps_backoff` as the optimisers' answers do (keeps_backoff, spec.backoff),
-/// `finite` false when the set-up or the simulation failed.
+/// control grid with the case's RK4 step (grid_setup, as the answer's energy is), `feasible` in the
+/// re-check with spec.check_refinement x the steps (no back-off), `keeps_backoff` as the
+/// optimisers' answers do (keeps_backoff, spec.backoff), `finite` false when the set-up or the
+/// simulation failed.
 struct JudgedThrow {
   double energy = 0;  ///< J
   bool feasible = false;
