@@ -161,10 +161,14 @@ void adopt_offered(const ThrowSetup& setup, const ThrowingSpec& spec, const Eige
 
 }  // namespace
 
+int steps_on_grid(int steps_per_stage, int first_stages, int stages) {
+  const long steps = static_cast<long>(steps_per_stage) * first_stages;
+  return static_cast<int>(std::max(1L, (steps + stages - 1) / stages));
+}
+
 ThrowSetup grid_setup(const ThrowSetup& setup, int first_stages, int stages) {
   ThrowSetup s = setup;
-  const long steps = static_cast<long>(setup.steps_per_stage) * first_stages;
-  s.steps_per_stage = static_cast<int>(std::max(1L, (steps + stages - 1) / stages));
+  s.steps_per_stage = steps_on_grid(setup.steps_per_stage, first_stages, stages);
   return s;
 }
 

@@ -32,8 +32,11 @@ namespace armstudy::studies {
 void refine_grids(const ThrowSetup& setup, const ThrowingSpec& spec, const Eigen::Vector2d& delta,
                   const NloptSettings& settings, ThrowingResult& r);
 
-/// The setup of `stages` stages whose RK4 step is at most the first grid's: steps per stage
-/// = ceil(setup.steps_per_stage x first_stages / stages).
+/// RK4 steps per stage on `stages` stages with the step at most that of `steps_per_stage`
+/// steps on `first_stages` stages: ceil(steps_per_stage x first_stages / stages), at least 1.
+int steps_on_grid(int steps_per_stage, int first_stages, int stages);
+
+/// The setup of `stages` stages whose RK4 step is at most the first grid's (steps_on_grid).
 ThrowSetup grid_setup(const ThrowSetup& setup, int first_stages, int stages);
 
 }  // namespace armstudy::studies

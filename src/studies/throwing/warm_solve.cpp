@@ -2,7 +2,6 @@
 // Copyright 2026 The armstudy authors
 #include "studies/throwing/warm_solve.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <locale>
@@ -40,12 +39,11 @@ ThrowingResult solve_throwing_warm(const ThrowingSpec& case_spec, const Velocity
   ThrowSetup setup;
   VelocityProfile initial;
   // the start's control grid (the nominal answer's finest), with the RK4 step kept at most
-  // the case's (grid_setup)
+  // the case's (steps_on_grid, grid_setup's rule)
   ThrowingSpec spec = case_spec;
   if (start.stages() >= 2 && start.stages() != spec.stages) {
-    const long steps = static_cast<long>(spec.steps_per_stage) * spec.stages;
+    spec.steps_per_stage = steps_on_grid(spec.steps_per_stage, spec.stages, start.stages());
     spec.stages = start.stages();
-    spec.steps_per_stage = static_cast<int>(std::max(1L, (steps + spec.stages - 1) / spec.stages));
   }
   const Eigen::Vector2d delta = spec.release - spec.start;
   if (!prepare_throw(spec, setup, initial, r)) return r;
